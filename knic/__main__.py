@@ -1,0 +1,5 @@
+import sys
+
+from knic.cli import main
+
+sys.exit(main())

@@ -1,0 +1,1 @@
+"""Benchmarks behind ``knic bench``: each measures real components and prints its figures."""

@@ -1,0 +1,75 @@
+"""The ``knic`` command line.
+
+Subcommands live in their own modules and are listed explicitly in :data:`COMMANDS`. Each module
+provides ``add_arguments(parser)`` and ``run(args) -> int`` and keeps heavy imports inside ``run`` so that
+``--help`` is fast. A :class:`~knic.errors.KnicError` becomes one line on stderr and the error's exit code.
+"""
+
+from __future__ import annotations
+
+import argparse
+import importlib
+import sys
+from collections.abc import Callable, Sequence
+
+from knic import __version__
+from knic.errors import KnicError
+
+#: name -> (module, one-line help)
+COMMANDS: dict[str, tuple[str, str]] = {
+    "run": ("knic.cli.run", "run the whole system in the simulated apartment"),
+    "plan": ("knic.cli.plan", "plan a PDDL problem"),
+    "facts": ("knic.cli.facts", "show the live or recorded fact base"),
+    "world": ("knic.cli.world", "check or render a world file"),
+    "goal": ("knic.cli.goal", "turn a text command into PDDL goals"),
+    "say": ("knic.cli.say", "turn a spoken command (WAV) into PDDL goals"),
+    "bench": ("knic.cli.bench", "run a benchmark and print its figures"),
+}
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = argparse.ArgumentParser(prog="knic", description="KnIC: knowledge inference and plan execution.")
+    parser.add_argument("--version", action="version", version=f"knic {__version__}")
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND", required=True)
+    add_command_modules(sub, COMMANDS)
+    return parser
+
+
+def add_command_modules(sub: argparse._SubParsersAction, registry: dict[str, tuple[str, str]]) -> None:
+    """Add one subparser per registry entry; a module that is missing is reported when the command is used."""
+    for name, (module_name, help_text) in registry.items():
+        command_parser = sub.add_parser(name, help=help_text, description=help_text)
+        try:
+            module = importlib.import_module(module_name)
+        except ModuleNotFoundError as exc:
+            if exc.name != module_name:
+                raise
+            command_parser.set_defaults(_run=_missing(name, module_name))
+            continue
+        module.add_arguments(command_parser)
+        command_parser.set_defaults(_run=module.run)
+
+
+def _missing(name: str, module_name: str) -> Callable[[argparse.Namespace], int]:
+    def run(args: argparse.Namespace) -> int:
+        raise KnicError(f"command {name!r} is not available in this build: module {module_name} is missing")
+
+    return run
+
+
+def main(argv: Sequence[str] | None = None) -> int:
+    parser = build_parser()
+    args = parser.parse_args(argv)
+    try:
+        code: int = args._run(args)
+    except KnicError as exc:
+        print(f"knic: error: {exc}", file=sys.stderr)
+        return exc.exit_code
+    except KeyboardInterrupt:
+        print("knic: interrupted", file=sys.stderr)
+        return 130
+    return code
+
+
+if __name__ == "__main__":
+    sys.exit(main())
