@@ -6,6 +6,7 @@
 ; actions whose effects only count once perception confirms them.
 (define (domain erl_home)
   (:requirements :strips :typing :negative-preconditions)
+  ; light_on / light_off are kept complementary by the actions and by the device KP'.
   (:types
     room furniture level sound device entity - object
     robot person item - entity
@@ -30,6 +31,7 @@
     (person_near ?p - person ?q - person)
     (sound_at ?s - sound ?l - room)
     (light_on ?d - light)
+    (light_off ?d - light)
     (device_level ?d - device ?v - level)
   )
 
@@ -40,12 +42,12 @@
 
   (:action search_object
     :parameters (?r - robot ?o - item ?l - room)
-    :precondition (and (robot_at ?r ?l) (possibly_at ?o ?l) (not (found ?o)))
+    :precondition (and (robot_at ?r ?l) (possibly_at ?o ?l) (not (found ?o)) (not (explored ?l)))
     :effect (and (found ?o) (object_at ?o ?l) (explored ?l)))
 
   (:action search_person
     :parameters (?r - robot ?p - person ?l - room)
-    :precondition (and (robot_at ?r ?l) (possibly_at ?p ?l) (not (found ?p)))
+    :precondition (and (robot_at ?r ?l) (possibly_at ?p ?l) (not (found ?p)) (not (explored ?l)))
     :effect (and (found ?p) (person_at ?p ?l) (explored ?l)))
 
   (:action pick
@@ -82,13 +84,13 @@
 
   (:action switch_on
     :parameters (?r - robot ?d - light)
-    :precondition (not (light_on ?d))
-    :effect (light_on ?d))
+    :precondition (light_off ?d)
+    :effect (and (light_on ?d) (not (light_off ?d))))
 
   (:action switch_off
     :parameters (?r - robot ?d - light)
     :precondition (light_on ?d)
-    :effect (not (light_on ?d)))
+    :effect (and (light_off ?d) (not (light_on ?d))))
 
   (:action set_level
     :parameters (?r - robot ?d - device ?from - level ?to - level)
