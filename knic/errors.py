@@ -44,6 +44,10 @@ class ActionError(KnicError):
     """An action implementation is missing or misconfigured."""
 
 
+class InferenceError(KnicError):
+    """A knowledge unit, a role file or the inference pipeline's configuration is invalid; nothing was changed."""
+
+
 class LanguageError(KnicError):
     """A text or spoken command was not understood; nothing was added."""
 

@@ -1,1 +1,26 @@
-"""knowledge_base package."""
+"""The knowledge base: PDDL model, instances, facts, goals, world-model anchors, provenance and history.
+
+Architecture (one module per concern):
+
+* :mod:`knowledge_base.model` -- value types: Fact, BeliefStatus, Provenance, Change, State.
+* :mod:`knowledge_base.domain` -- DomainModel: a PDDL domain through unified-planning plus its meta sidecar.
+* :mod:`knowledge_base.problem` -- checked loading of PDDL problems.
+* :mod:`knowledge_base.kb` -- KnowledgeBase: validated writes, queries, batches, subscribers.
+* :mod:`knowledge_base.journal` -- the append-only history (in memory or SQLite WAL), checkpoints, state_at.
+* :mod:`knowledge_base.export` -- to and from unified-planning problems and PDDL text.
+"""
+
+from knowledge_base.domain import DomainModel
+from knowledge_base.kb import KnowledgeBase
+from knowledge_base.model import BeliefStatus, Change, ChangeKind, Fact, Provenance, State
+
+__all__ = [
+    "BeliefStatus",
+    "Change",
+    "ChangeKind",
+    "DomainModel",
+    "Fact",
+    "KnowledgeBase",
+    "Provenance",
+    "State",
+]

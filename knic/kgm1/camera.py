@@ -1,0 +1,208 @@
+"""KGM-1 camera providers: objects and people from the robot's RGB-D camera.
+
+Each step reads the current frame (shared between the two KPs, see :class:`~knic.kgm1.sources.SharedCamera`),
+deprojects every relevant detection's mask into world-frame points with the frame's depth, and publishes one
+LLKU per detection; then it publishes a scan marker (:class:`Scan` on ``percept.vision.scan.<kind>``) so KGM-2
+knows the frame is complete and can count misses for what the frame could have seen but did not report.
+
+Object detections carry a class label only (``worlds.api.Detection.identity`` is None for objects); a class
+that names exactly one item of the world is recognised as that item's symbol. People are recognised when the
+detector says who they are; unrecognised people are published as anonymous ``person`` units.
+"""
+
+from __future__ import annotations
+
+from abc import abstractmethod
+from collections.abc import Mapping
+from dataclasses import dataclass
+from typing import TYPE_CHECKING
+
+import numpy as np
+
+from knic.bus import Bus
+from knic.kgm1.base import KnowledgeProvider
+from knic.kgm1.sources import CameraSource, FrameView
+from knic.units import LLKU, Kind
+
+if TYPE_CHECKING:
+    from knowledge_base import KnowledgeBase
+    from worlds.api import CameraFrame, Detection
+
+PERSON_LABEL = "person"
+
+
+@dataclass(frozen=True)
+class Scan:
+    """End of one frame's units of one kind: the frame's time stamp, and what it could see."""
+
+    kind: Kind
+    stamp: float
+    view: FrameView
+    sensor: str
+
+
+class CameraKP(KnowledgeProvider):
+    """Base of the camera KPs: frame reading, deprojection, scan markers.
+
+    Args:
+        name: component name.
+        camera: the frame source.
+        bus: where LLKUs go.
+        kb: knowledge base for first meetings (or None).
+        frequency: Hz of simulated time.
+        kind: which detections this KP reports.
+        max_points: most world points per detection.
+        detect_range: depth, metres, within which this kind is reliably detected (for the visibility test).
+        sensor: sensor name written into the units.
+    """
+
+    def __init__(
+        self,
+        name: str,
+        camera: CameraSource,
+        bus: Bus,
+        kb: KnowledgeBase | None,
+        *,
+        frequency: float,
+        kind: Kind,
+        max_points: int = 64,
+        detect_range: float = 3.0,
+        sensor: str = "head_camera",
+    ) -> None:
+        super().__init__(name, frequency, bus, kb, "vision")
+        self.camera = camera
+        self.kind = kind
+        self.max_points = max_points
+        self.detect_range = detect_range
+        self.sensor = sensor
+        self.frames = 0
+        self._last_stamp: float | None = None
+
+    def step(self, now: float) -> None:
+        """Read the current frame once and publish its units and the scan marker (a repeated frame:
+        nothing)."""
+        frame = self.camera.camera_frame()
+        if frame.stamp == self._last_stamp:
+            return
+        self._last_stamp = frame.stamp
+        self.frames += 1
+        origin = tuple(float(v) for v in frame.camera_pose.position)
+        for index, det in enumerate(frame.detections):
+            if not self.wants(det):
+                continue
+            points = frame.points_world(det, self.max_points, seed=index)
+            if len(points) == 0:
+                continue
+            centroid = np.median(points, axis=0)
+            unit = LLKU(
+                kind=self.kind,
+                label=det.label,
+                source=self.name,
+                sensor=self.sensor,
+                stamp=frame.stamp,
+                confidence=float(det.confidence),
+                position=(float(centroid[0]), float(centroid[1]), float(centroid[2])),
+                points=points,
+                sensor_origin=(origin[0], origin[1], origin[2]),
+                identity=self.identify(det),
+                attributes={"pixels": det.pixel_count},
+            )
+            if unit.identity is not None:
+                self.meet(self.pddl_type, unit.identity, frame.stamp, (unit.uid,))
+            self.publish(unit)
+        self.publish_scan(frame)
+
+    def publish_scan(self, frame: CameraFrame) -> None:
+        """Publish the end-of-frame marker for this KP's kind."""
+        scan = Scan(self.kind, frame.stamp, FrameView(frame, self.detect_range), self.sensor)
+        self.bus.publish(f"percept.vision.scan.{self.kind.value}", scan, source=self.name, stamp=frame.stamp)
+
+    #: PDDL type of the individuals this KP recognises (for first-meeting instances).
+    pddl_type = "entity"
+
+    @abstractmethod
+    def wants(self, det: Detection) -> bool:
+        """Whether this KP reports the detection."""
+
+    @abstractmethod
+    def identify(self, det: Detection) -> str | None:
+        """The PDDL symbol of the detected individual, or None."""
+
+
+class CameraObjectsKP(CameraKP):
+    """Objects (items) from the camera: every detection whose label is not ``person``.
+
+    Args:
+        class_symbols: detector class -> item symbol, for classes that name exactly one item.
+        Others as :class:`CameraKP`.
+    """
+
+    pddl_type = "item"
+
+    def __init__(
+        self,
+        camera: CameraSource,
+        bus: Bus,
+        kb: KnowledgeBase | None,
+        class_symbols: Mapping[str, str],
+        *,
+        frequency: float = 5.0,
+        name: str = "kp.camera_objects",
+        max_points: int = 64,
+        detect_range: float = 3.0,
+    ) -> None:
+        super().__init__(
+            name,
+            camera,
+            bus,
+            kb,
+            frequency=frequency,
+            kind=Kind.OBJECT,
+            max_points=max_points,
+            detect_range=detect_range,
+        )
+        self.class_symbols = dict(class_symbols)
+
+    def wants(self, det: Detection) -> bool:
+        """Every non-person detection."""
+        return det.label != PERSON_LABEL
+
+    def identify(self, det: Detection) -> str | None:
+        """The item named by the detection's class, when the class names exactly one item."""
+        return self.class_symbols.get(det.label)
+
+
+class CameraPeopleKP(CameraKP):
+    """People from the camera; recognised people carry their symbol as identity."""
+
+    pddl_type = "person"
+
+    def __init__(
+        self,
+        camera: CameraSource,
+        bus: Bus,
+        kb: KnowledgeBase | None,
+        *,
+        frequency: float = 5.0,
+        name: str = "kp.camera_people",
+        max_points: int = 64,
+        detect_range: float = 6.0,
+    ) -> None:
+        super().__init__(
+            name,
+            camera,
+            bus,
+            kb,
+            frequency=frequency,
+            kind=Kind.PERSON,
+            max_points=max_points,
+            detect_range=detect_range,
+        )
+
+    def wants(self, det: Detection) -> bool:
+        """Person detections only."""
+        return det.label == PERSON_LABEL
+
+    def identify(self, det: Detection) -> str | None:
+        """The recognised name, or None for an unrecognised person."""
+        return det.identity

@@ -1,0 +1,121 @@
+"""The sensor sources KGM-1 consumes, as small typed protocols over :mod:`worlds.api`'s reading types.
+
+A KP depends only on the protocol of its one sensor, so tests feed recorded or synthetic readings through a
+double that mypy checks against the same protocol; :class:`worlds.api.SimulationAPI` satisfies all of them.
+
+Also here: :class:`SharedCamera`, which renders a camera frame at most once per simulated instant for the two
+camera KPs, and :class:`FrameView`, the visibility test of one frame (what the camera could have seen, walls
+and furniture included) that KGM-2 uses to count misses.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import Protocol
+
+import numpy as np
+import numpy.typing as npt
+
+from worlds.api import CameraFrame, CameraIntrinsics, Pose2D, SoundEvent
+
+
+class CameraSource(Protocol):
+    """An RGB-D camera with detections (``SimulationAPI.camera_frame``)."""
+
+    def camera_frame(self) -> CameraFrame:
+        """The frame at the current simulated time."""
+        ...
+
+
+class PoseSource(Protocol):
+    """The robot's self-localisation (``SimulationAPI.robot_pose``)."""
+
+    def robot_pose(self) -> Pose2D:
+        """The pose estimate in the world frame, stamped in simulated seconds."""
+        ...
+
+
+class SoundSource(Protocol):
+    """The microphone's sound-event detector (``SimulationAPI.poll_sounds``)."""
+
+    def poll_sounds(self) -> list[SoundEvent]:
+        """Sounds heard since the previous call, oldest first, each once."""
+        ...
+
+
+class DeviceSource(Protocol):
+    """The home automation's device readings (``SimulationAPI.device_states``)."""
+
+    def device_states(self) -> dict[str, float | bool]:
+        """Every device's state: lights bool, dimmer and blinds percent 0-100, bell bool (ringing)."""
+        ...
+
+
+class SharedCamera:
+    """A :class:`CameraSource` that renders once per simulated instant and hands the same frame to every KP.
+
+    Args:
+        camera: the real source.
+        clock: simulated time now (``lambda: sim.time``); a new frame is rendered when it has changed.
+    """
+
+    def __init__(self, camera: CameraSource, clock: Callable[[], float]) -> None:
+        self._camera = camera
+        self._clock = clock
+        self._stamp: float | None = None
+        self._frame: CameraFrame | None = None
+        self.renders = 0
+
+    def camera_frame(self) -> CameraFrame:
+        """The frame of the current simulated instant (rendered on the first request at that instant)."""
+        now = self._clock()
+        if self._frame is None or self._stamp != now:
+            self._frame = self._camera.camera_frame()
+            self._stamp = now
+            self.renders += 1
+        return self._frame
+
+
+class FrameView:
+    """What one camera frame could see: the visibility test behind KGM-2's miss counter.
+
+    A world-frame point is visible when it projects inside the image, lies between the near plane and
+    ``max_range`` metres along the optical axis, and is not hidden: the frame's depth at its pixel is at least
+    the point's depth minus ``margin`` metres (a wall, a person or a closed cupboard in front hides it).
+
+    Args:
+        frame: the camera frame (its depth image, intrinsics and optical-frame pose are used).
+        max_range: farthest depth, metres, at which an entity of this kind is reliably detected.
+        margin: depth tolerance, metres.
+    """
+
+    def __init__(self, frame: CameraFrame, max_range: float, margin: float = 0.2) -> None:
+        self.stamp = frame.stamp
+        self.position = np.asarray(frame.camera_pose.position, dtype=np.float64)
+        self._rot = frame.camera_pose.rotation_matrix()
+        self._k: CameraIntrinsics = frame.intrinsics
+        self._depth = frame.depth
+        self.max_range = max_range
+        self.margin = margin
+
+    def optical_axis(self) -> npt.NDArray[np.float64]:
+        """The camera's viewing direction (optical z axis) in the world frame, a unit vector."""
+        return np.asarray(self._rot[:, 2], dtype=np.float64)
+
+    def visible(self, points: npt.NDArray[np.float64]) -> npt.NDArray[np.bool_]:
+        """Which of the world-frame points (N, 3) this frame could have seen."""
+        pts = np.asarray(points, dtype=np.float64).reshape(-1, 3)
+        optical = (pts - self.position) @ self._rot
+        z = optical[:, 2]
+        k = self._k
+        ok = (z > k.near) & (z <= self.max_range)
+        safe_z = np.where(ok, z, 1.0)
+        u = np.floor(k.fx * optical[:, 0] / safe_z + k.cx).astype(np.int64)
+        v = np.floor(k.fy * optical[:, 1] / safe_z + k.cy).astype(np.int64)
+        ok &= (u >= 0) & (u < k.width) & (v >= 0) & (v < k.height)
+        result = np.zeros(len(pts), dtype=bool)
+        idx = np.flatnonzero(ok)
+        if idx.size:
+            seen_depth = self._depth[v[idx], u[idx]].astype(np.float64)
+            result[idx] = seen_depth >= z[idx] - self.margin
+        return result

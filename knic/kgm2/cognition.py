@@ -1,0 +1,273 @@
+"""KGM-2, the cognitive model layer: LLKUs in, CKUs out, under the robot's role (seed 004, II.B and III.B).
+
+One :class:`CognitiveLayer` component drains every percept (``percept.#``) at each step and:
+
+* groups camera units by scan (a :class:`~knic.kgm1.camera.Scan` marker closes a frame) and, per entity
+  class, runs the class's :class:`~knic.kgm2.tracking.Tracker` when the role says the class is due (its
+  ``rate_hz`` for the room the camera is in; rate 0: not processed at all) in decreasing role priority;
+  matched and new tracks update their octomap and are published as CKUs on ``cognition.<kind>.<symbol>``;
+  tracks dropped after their misses are published once with ``attributes["lost"] = True`` and no keys;
+* passes robot pose, sound and device units through as CKUs (rate-limited by the role for their class);
+* turns each location unit into a location CKU carrying the room's octomap (``cognition.location.<room>``).
+
+Everything runs inside the component's ``step`` in simulated time: no threads, no wall clock.
+"""
+
+from __future__ import annotations
+
+from collections import defaultdict
+from collections.abc import Iterable
+from dataclasses import dataclass, field
+
+import numpy as np
+
+from knic.bus import Bus, Message, topic_level
+from knic.kgm1.camera import Scan
+from knic.kgm1.locations import LocationModel
+from knic.kgm2.roles import Policy, Role
+from knic.kgm2.spatial import DEFAULT_RESOLUTION, keys_of
+from knic.kgm2.tracking import Track, Tracker
+from knic.scheduler import Component
+from knic.units import CKU, LLKU, Kind
+
+#: tracker class of a person percept (people are one class; identity tells them apart)
+PERSON_CLASS = "person"
+
+
+@dataclass
+class TrackingConfig:
+    """Association parameters per kind: radius (metres), misses tolerated, octomap resolution (metres)."""
+
+    object_radius: float = 0.4
+    person_radius: float = 0.8
+    object_max_misses: int = 5
+    person_max_misses: int = 8
+    resolution: float = DEFAULT_RESOLUTION
+    max_range: float = -1.0
+
+
+@dataclass
+class CognitionStats:
+    """Counters: units processed, units skipped by the role's rates, CKUs published, tracks dropped."""
+
+    processed: int = 0
+    skipped: int = 0
+    published: int = 0
+    dropped: int = 0
+    by_class: dict[str, int] = field(default_factory=lambda: defaultdict(int))
+
+
+class CognitiveLayer(Component):
+    """The KGM-2 component (see the module docstring).
+
+    Args:
+        bus: input (``percept``) and output (``cognition``) bus.
+        role: the active role.
+        locations: the static spatial model (rooms for the role's room policies).
+        config: association parameters.
+        frequency: Hz of simulated time; should be at least the role's top rate.
+        name: component name (``source`` of the CKUs).
+    """
+
+    def __init__(
+        self,
+        bus: Bus,
+        role: Role,
+        locations: LocationModel,
+        *,
+        config: TrackingConfig | None = None,
+        frequency: float = 10.0,
+        name: str = "kgm2.cognition",
+    ) -> None:
+        self.name = name
+        self.frequency = frequency
+        self.bus = bus
+        self.role = role
+        self.locations = locations
+        self.config = config or TrackingConfig()
+        self.trackers: dict[str, Tracker] = {}
+        self.stats = CognitionStats()
+        self._inbox = bus.inbox("percept", capacity=20000)
+        self._last_run: dict[tuple[str, str], float] = {}
+
+    # ------------------------------------------------------------------ lifecycle
+
+    def step(self, now: float) -> None:
+        """Process every percept received since the previous step, in arrival order, scan by scan."""
+        pending: dict[Kind, list[LLKU]] = defaultdict(list)
+        for message in self._inbox.drain():
+            payload = message.payload
+            if isinstance(payload, Scan):
+                self._scan(payload, pending.pop(payload.kind, []))
+            elif isinstance(payload, LLKU):
+                if payload.kind in (Kind.OBJECT, Kind.PERSON):
+                    pending[payload.kind].append(payload)
+                else:
+                    self._passthrough(payload, message)
+        for units in pending.values():  # units whose scan marker has not arrived: associate without misses
+            if units:
+                self._associate_scan(units, units[0].stamp, None, units[0].kind)
+
+    def tracker(self, cls: str, kind: Kind) -> Tracker:
+        """The tracker of a class (created on first use)."""
+        found = self.trackers.get(cls)
+        if found is None:
+            cfg = self.config
+            person = kind is Kind.PERSON
+            found = Tracker(
+                cls,
+                radius=cfg.person_radius if person else cfg.object_radius,
+                max_misses=cfg.person_max_misses if person else cfg.object_max_misses,
+                resolution=cfg.resolution,
+                max_range=cfg.max_range,
+            )
+            self.trackers[cls] = found
+        return found
+
+    def tracks(self) -> Iterable[Track]:
+        """Every live track of every class."""
+        for tracker in self.trackers.values():
+            yield from tracker.tracks.values()
+
+    # ------------------------------------------------------------------ camera scans
+
+    def _scan(self, scan: Scan, units: list[LLKU]) -> None:
+        self._associate_scan(units, scan.stamp, scan, scan.kind)
+
+    def _associate_scan(self, units: list[LLKU], stamp: float, scan: Scan | None, kind: Kind) -> None:
+        by_class: dict[str, list[LLKU]] = defaultdict(list)
+        for unit in units:
+            by_class[PERSON_CLASS if kind is Kind.PERSON else unit.label].append(unit)
+        classes = set(by_class)
+        if scan is not None:
+            classes |= {c for c, t in self.trackers.items() if t.tracks and self._kind_of(c) is kind}
+        camera_room = None
+        if scan is not None:
+            pos = scan.view.position
+            camera_room = self.locations.room_at(float(pos[0]), float(pos[1]))
+        plans: list[tuple[Policy, str]] = []
+        for cls in classes:
+            dets = by_class.get(cls, [])
+            room = camera_room
+            if room is None and dets:
+                p = dets[0].position
+                room = self.locations.room_at(p[0], p[1])
+            plans.append((self.role.policy(cls, room), cls))
+        plans.sort(key=lambda pc: (-pc[0].priority, pc[1]))
+        for policy, cls in plans:
+            dets = by_class.get(cls, [])
+            if not self._due(cls, "scan", policy, stamp):
+                self.stats.skipped += len(dets)
+                continue
+            tracker = self.tracker(cls, kind)
+            visible = scan.view.visible if scan is not None else None
+            if dets:
+                result = tracker.associate(dets, stamp, visible)
+                for track, det in result.updated + result.created:
+                    self._publish_track(track, det, policy, stamp)
+                dropped = result.dropped
+            else:
+                dropped = tracker.miss_scan(visible) if scan is not None else []
+            self.stats.processed += len(dets)
+            self.stats.by_class[cls] += len(dets)
+            for track in dropped:
+                self._publish_lost(track, kind, stamp)
+
+    def _kind_of(self, cls: str) -> Kind:
+        return Kind.PERSON if cls == PERSON_CLASS else Kind.OBJECT
+
+    def _due(self, cls: str, stream: str, policy: Policy, stamp: float) -> bool:
+        if policy.rate_hz <= 0:
+            return False
+        key = (cls, stream)
+        last = self._last_run.get(key)
+        if last is not None and stamp - last < policy.period - 1e-6:
+            return False
+        self._last_run[key] = stamp
+        return True
+
+    def _publish_track(self, track: Track, det: LLKU, policy: Policy, stamp: float) -> None:
+        x, y, z = (float(v) for v in track.centroid)
+        cku = CKU(
+            symbol=track.symbol,
+            cls=track.cls,
+            kind=det.kind,
+            octomap=track.octomap.tree,
+            keys=track.keys,
+            position=(x, y, z),
+            role_priority=policy.priority,
+            stamp=stamp,
+            confidence=track.confidence,
+            support=(det.uid,),
+            track_id=track.track_id,
+            attributes={"identified": det.identity is not None, "hits": track.hits},
+        )
+        self._emit(cku)
+
+    def _publish_lost(self, track: Track, kind: Kind, stamp: float) -> None:
+        x, y, z = (float(v) for v in track.centroid)
+        self.stats.dropped += 1
+        cku = CKU(
+            symbol=track.symbol,
+            cls=track.cls,
+            kind=kind,
+            octomap=track.octomap.tree,
+            keys=np.zeros((0, 3), dtype=np.int64),
+            position=(x, y, z),
+            role_priority=0,
+            stamp=stamp,
+            confidence=track.confidence,
+            support=tuple(track.support),
+            track_id=track.track_id,
+            attributes={"lost": True, "last_keys": track.keys, "last_seen": track.last_seen},
+        )
+        self._emit(cku)
+
+    # ------------------------------------------------------------------ other units
+
+    def _passthrough(self, unit: LLKU, message: Message) -> None:
+        if unit.kind is Kind.LOCATION:
+            prism = unit.attributes.get("prism")
+            cku = CKU(
+                symbol=unit.symbol,
+                cls="room",
+                kind=Kind.LOCATION,
+                octomap=prism.octree() if prism is not None else None,
+                keys=np.zeros((0, 3), dtype=np.int64),
+                position=unit.position,
+                role_priority=self.role.policy("room", unit.symbol).priority,
+                stamp=unit.stamp,
+                confidence=1.0,
+                support=(unit.uid,),
+                attributes=dict(unit.attributes),
+            )
+            self._emit(cku)
+            return
+        cls = unit.label
+        room = self.locations.room_at(unit.position[0], unit.position[1])
+        policy = self.role.policy(cls, room)
+        # sounds are events: never rate-limited away
+        if unit.kind is not Kind.SOUND and not self._due(cls, unit.symbol, policy, unit.stamp):
+            self.stats.skipped += 1
+            return
+        self.stats.processed += 1
+        self.stats.by_class[cls] += 1
+        cku = CKU(
+            symbol=unit.symbol,
+            cls=cls,
+            kind=unit.kind,
+            octomap=None,
+            keys=keys_of(np.asarray([unit.position], dtype=np.float64), self.config.resolution),
+            position=unit.position,
+            role_priority=policy.priority,
+            stamp=unit.stamp,
+            confidence=unit.confidence,
+            support=(unit.uid,),
+            attributes=dict(unit.attributes),
+        )
+        self._emit(cku)
+
+    def _emit(self, cku: CKU) -> None:
+        topic = f"cognition.{cku.kind.value}.{topic_level(cku.symbol)}"
+        self.bus.publish(topic, cku, source=self.name, stamp=cku.stamp)
+        self.stats.published += 1

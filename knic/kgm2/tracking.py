@@ -1,0 +1,200 @@
+"""Association of percepts over time: seed 002's tracking component (Algorithm 2.1) per entity class.
+
+For every scan (one camera frame) the detections of one class are matched to the class's tracks:
+
+1. a detection that carries an identity (a recognised person, a segmented object with its symbol) updates the
+   track of that symbol wherever it is (a recognised entity that jumped has moved; its octomap restarts);
+2. the others are matched greedily by increasing centroid distance, a pair counting only within the radius
+   ``radius`` (metres) and each track and detection used once (lines 2.1.2-2.1.15);
+3. an unmatched detection starts a new track;
+4. a track not updated by the scan gets a miss when the scan could have seen it (``visible``; every scan
+when no
+   visibility test is given) and is dropped after more than ``max_misses`` consecutive misses (2.1.16-2.1.19).
+
+The centroid of a matched track moves to the weighted average of old and new (weight ``gain`` on the new one).
+Time stamps are simulated seconds.
+"""
+
+from __future__ import annotations
+
+import itertools
+from collections import deque
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass, field
+
+import numpy as np
+import numpy.typing as npt
+
+from knic.errors import InferenceError
+from knic.kgm2.spatial import DEFAULT_RESOLUTION, EntityOctomap
+from knic.units import LLKU, Keys
+
+#: Visibility test for a scan: world-frame points (N, 3) -> which of them the sensor could see.
+Visibility = Callable[[npt.NDArray[np.float64]], npt.NDArray[np.bool_]]
+
+_track_ids = itertools.count(1)
+
+
+@dataclass(eq=False)
+class Track:
+    """One tracked entity: its symbol, centroid (world frame, metres), octomap and counters."""
+
+    track_id: int
+    cls: str
+    symbol: str
+    centroid: npt.NDArray[np.float64]
+    octomap: EntityOctomap
+    first_seen: float
+    last_seen: float
+    confidence: float
+    hits: int = 1
+    misses: int = 0
+    support: deque[str] = field(default_factory=lambda: deque(maxlen=4))
+
+    @property
+    def keys(self) -> Keys:
+        """Voxel keys of the latest observation."""
+        return self.octomap.keys
+
+
+@dataclass
+class Association:
+    """What one scan did: tracks updated (with their detection), created and dropped."""
+
+    updated: list[tuple[Track, LLKU]] = field(default_factory=list)
+    created: list[tuple[Track, LLKU]] = field(default_factory=list)
+    dropped: list[Track] = field(default_factory=list)
+
+
+class Tracker:
+    """Tracks of one entity class.
+
+    Args:
+        cls: the class tracked (``"glasses"``, ``"person"``).
+        radius: association radius e_R, metres.
+        max_misses: threshold eta: a track is dropped after more than this many consecutive missed scans.
+        gain: weight of the new centroid in the weighted average.
+        resolution: octomap resolution of new tracks, metres.
+        max_range: ray-casting range of octomap insertion, metres (-1 unlimited).
+    """
+
+    def __init__(
+        self,
+        cls: str,
+        *,
+        radius: float = 0.5,
+        max_misses: int = 5,
+        gain: float = 0.8,
+        resolution: float = DEFAULT_RESOLUTION,
+        max_range: float = -1.0,
+    ) -> None:
+        if radius <= 0 or max_misses < 0 or not 0 < gain <= 1:
+            raise InferenceError(f"tracker {cls}: radius > 0, max_misses >= 0 and 0 < gain <= 1 required")
+        self.cls = cls
+        self.radius = radius
+        self.max_misses = max_misses
+        self.gain = gain
+        self.resolution = resolution
+        self.max_range = max_range
+        self.tracks: dict[int, Track] = {}
+
+    def by_symbol(self, symbol: str) -> Track | None:
+        """The live track of a symbol, if any."""
+        for track in self.tracks.values():
+            if track.symbol == symbol:
+                return track
+        return None
+
+    def associate(
+        self, detections: Sequence[LLKU], now: float, visible: Visibility | None = None
+    ) -> Association:
+        """Match one scan's detections of this class to the tracks, update octomaps and miss counters."""
+        result = Association()
+        used: set[int] = set()
+        pending: list[LLKU] = []
+        for det in detections:
+            track = self.by_symbol(det.identity) if det.identity else None
+            if track is not None and track.track_id not in used:
+                self._update(track, det, now)
+                used.add(track.track_id)
+                result.updated.append((track, det))
+            else:
+                pending.append(det)
+        free = [t for t in self.tracks.values() if t.track_id not in used and not self._claimed(t, pending)]
+        matched: set[int] = set()
+        if pending and free:
+            det_pos = np.array([d.position for d in pending])
+            trk_pos = np.array([t.centroid for t in free])
+            dist = np.linalg.norm(det_pos[:, None, :] - trk_pos[None, :, :], axis=2)
+            for flat in np.argsort(dist, axis=None):
+                i, j = divmod(int(flat), len(free))
+                if dist[i, j] >= self.radius:
+                    break
+                det = pending[i]
+                if i in matched or free[j].track_id in used:
+                    continue
+                if det.identity and det.identity != free[j].symbol:
+                    continue
+                self._update(free[j], det, now)
+                used.add(free[j].track_id)
+                matched.add(i)
+                result.updated.append((free[j], det))
+        for i, det in enumerate(pending):
+            if i not in matched:
+                track = self._create(det, now)
+                used.add(track.track_id)
+                result.created.append((track, det))
+        self._count_misses(used, visible, result)
+        return result
+
+    def miss_scan(self, visible: Visibility | None) -> list[Track]:
+        """A scan that saw nothing of this class: count misses; return the tracks dropped."""
+        result = Association()
+        self._count_misses(set(), visible, result)
+        return result.dropped
+
+    def _claimed(self, track: Track, pending: Sequence[LLKU]) -> bool:
+        # a track whose symbol is an identity of this scan belongs to that detection, not to a nearby
+        # anonymous one
+        return any(d.identity == track.symbol for d in pending)
+
+    def _count_misses(self, used: set[int], visible: Visibility | None, result: Association) -> None:
+        stale = [t for t in self.tracks.values() if t.track_id not in used]
+        if not stale:
+            return
+        if visible is None:
+            seen = np.ones(len(stale), dtype=bool)
+        else:
+            seen = visible(np.array([t.centroid for t in stale]))
+        for track, could_see in zip(stale, seen, strict=True):
+            if not could_see:
+                continue
+            track.misses += 1
+            if track.misses > self.max_misses:
+                del self.tracks[track.track_id]
+                result.dropped.append(track)
+
+    def _create(self, det: LLKU, now: float) -> Track:
+        tid = next(_track_ids)
+        octomap = EntityOctomap(self.resolution, reset_distance=self.radius, max_range=self.max_range)
+        centroid = np.asarray(det.position, dtype=np.float64)
+        octomap.update(det.points, centroid, det.sensor_origin)
+        track = Track(
+            tid, self.cls, det.identity or f"{self.cls}_{tid}", centroid, octomap, now, now, det.confidence
+        )
+        track.support.append(det.uid)
+        self.tracks[tid] = track
+        return track
+
+    def _update(self, track: Track, det: LLKU, now: float) -> None:
+        new = np.asarray(det.position, dtype=np.float64)
+        if float(np.linalg.norm(new - track.centroid)) >= self.radius:
+            track.centroid = new
+        else:
+            track.centroid = self.gain * new + (1.0 - self.gain) * track.centroid
+        track.octomap.update(det.points, track.centroid, det.sensor_origin)
+        track.last_seen = now
+        track.hits += 1
+        track.misses = 0
+        track.confidence = 0.5 * track.confidence + 0.5 * det.confidence
+        track.support.append(det.uid)

@@ -1,0 +1,312 @@
+"""KP' for where things are: ``robot_at``, ``object_at`` / ``object_on`` (+ ``found``), ``person_at`` (+
+``found``).
+
+Each consumes one CKU stream and intersects the entity's occupied voxel keys with the room prisms (the
+locations' octomaps) and the furniture support prisms (seed 004, III.C: "check the spatial intersection of
+each
+octomap of people with each octomap of locations"). The room holding most of an entity's voxels is where it
+is;
+an item whose voxels fall at least ``min_support_share`` into a surface's support prism is on that furniture.
+
+Retraction:
+
+* a confirmed new place retracts the old one (the predicates are single-valued);
+* a track KGM-2 dropped after repeated misses where the camera could see it (``attributes["lost"]``) retracts
+  the place it was believed at, and ``found``: the entity is not where we thought;
+* a room explored after the belief was made, without the entity being seen since, retracts it as well;
+* people not seen for the role's ``person_ttl_s`` lose the ``person_at`` this KP' wrote (they walk about).
+
+Items the robot holds or has given to someone are left to the actions that moved them.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from knic.bus import Bus
+from knic.kgm1.locations import LocationModel
+from knic.kgm3.base import Confirmer, KPPrime
+from knic.units import CKU
+from knowledge_base import BeliefStatus, Fact, KnowledgeBase
+
+
+class RobotAtKP(KPPrime):
+    """``(robot_at ?r ?room)`` from the localisation CKU and the room octomaps."""
+
+    def __init__(
+        self,
+        bus: Bus,
+        kb: KnowledgeBase,
+        locations: LocationModel,
+        *,
+        needed: int = 2,
+        frequency: float = 10.0,
+        name: str = "kp'.robot_at",
+    ) -> None:
+        super().__init__(name, frequency, bus, kb, "cognition.robot")
+        self.locations = locations
+        self.confirmer: Confirmer[str] = Confirmer(needed)
+
+    def step(self, now: float) -> None:
+        """Confirm the room of every pose received; write robot_at when it changes."""
+        assert self.inbox is not None
+        for message in self.inbox.drain():
+            cku: CKU = message.payload
+            x, y, _ = cku.position
+            room = self.locations.room_at(x, y)
+            if room is None or not self.is_a(cku.symbol, "robot"):
+                continue
+            current = self.value_of("robot_at", cku.symbol)
+            if self.confirmer.observe(cku.symbol, room, cku.confidence, current):
+                support = (cku.uid, *cku.support)
+                with self.kb.batch():
+                    self.assert_fact("robot_at", cku.symbol, room, at=cku.stamp, support=support)
+                    self.retract_all(
+                        "robot_at", cku.symbol, None, at=cku.stamp, keep=_fact("robot_at", cku.symbol, room)
+                    )
+            elif room == current:
+                self.assert_fact("robot_at", cku.symbol, room, at=cku.stamp, support=(cku.uid, *cku.support))
+
+
+def _fact(predicate: str, *args: str) -> Fact:
+    return Fact(predicate, tuple(args))
+
+
+class _EntityPlaceKP(KPPrime):
+    """Shared logic of the object and person place KP'."""
+
+    pddl_type = "entity"
+    place_predicate = "object_at"
+
+    def __init__(
+        self,
+        name: str,
+        frequency: float,
+        bus: Bus,
+        kb: KnowledgeBase,
+        pattern: str,
+        locations: LocationModel,
+        needed: int,
+        min_confidence: float,
+        explored_grace_s: float,
+    ) -> None:
+        super().__init__(name, frequency, bus, kb, pattern)
+        self.locations = locations
+        self.confirmer: Confirmer[tuple[str | None, str | None]] = Confirmer(needed, min_confidence)
+        self.last_seen: dict[str, float] = {}
+        self.last_position: dict[str, tuple[float, float, float]] = {}
+        self.explored_grace_s = explored_grace_s
+
+    def step(self, now: float) -> None:
+        """Process the CKUs received, then retract beliefs contradicted by explored rooms (and TTLs)."""
+        assert self.inbox is not None
+        for message in self.inbox.drain():
+            cku: CKU = message.payload
+            if not self.is_a(cku.symbol, self.pddl_type) or self.moved_by_action(cku.symbol):
+                continue
+            if cku.attributes.get("lost"):
+                self.lost(cku)
+            else:
+                self.seen(cku)
+        self.check_explored(now)
+
+    def moved_by_action(self, symbol: str) -> bool:
+        """True when an action, not perception, owns where the entity is (held or handed over)."""
+        return False
+
+    def place_of(self, cku: CKU) -> tuple[str | None, str | None]:
+        """(room, furniture or None) from the entity's voxels."""
+        room, _ = self.locations.rooms.best(cku.keys)
+        return room, None
+
+    def seen(self, cku: CKU) -> None:
+        """One observation of the entity."""
+        self.last_seen[cku.symbol] = cku.stamp
+        self.last_position[cku.symbol] = cku.position
+        room, furniture = self.place_of(cku)
+        if room is None:
+            return
+        current = (self.value_of(self.place_predicate, cku.symbol), self.current_support(cku.symbol))
+        support = (cku.uid, *cku.support)
+        if self.confirmer.observe(cku.symbol, (room, furniture), cku.confidence, current):
+            with self.kb.batch():
+                self.write_place(cku.symbol, room, furniture, cku.stamp, support, cku.confidence)
+        elif current == (room, furniture):
+            # the belief already holds (maybe as an action's effect): mark it observed, once
+            self.write_place(cku.symbol, room, furniture, cku.stamp, support, cku.confidence)
+
+    def current_support(self, symbol: str) -> str | None:
+        """The furniture the entity is believed on (None for people)."""
+        return None
+
+    def write_place(
+        self, symbol: str, room: str, furniture: str | None, at: float, support: tuple[str, ...], conf: float
+    ) -> None:
+        """Assert the entity's room (and furniture) and ``found``; retract the other places."""
+        self.assert_fact(self.place_predicate, symbol, room, at=at, support=support, confidence=conf)
+        keep = _fact(self.place_predicate, symbol, room)
+        self.retract_all(self.place_predicate, symbol, None, at=at, keep=keep, support=support)
+        self.assert_fact("found", symbol, at=at, support=support, confidence=conf)
+
+    def forget_place(self, symbol: str, at: float, support: tuple[str, ...]) -> None:
+        """The entity is no longer known to be where it was: retract its place and ``found``."""
+        with self.kb.batch():
+            self.retract_all(self.place_predicate, symbol, None, at=at, support=support)
+            self.retract_fact("found", symbol, at=at, support=support)
+        self.confirmer.forget(symbol)
+
+    def lost(self, cku: CKU) -> None:
+        """KGM-2 dropped the entity's track although the camera could see where it was."""
+        believed = self.value_of(self.place_predicate, cku.symbol)
+        last_keys = cku.attributes.get("last_keys")
+        keys = last_keys if isinstance(last_keys, np.ndarray) else cku.keys
+        room, _ = self.locations.rooms.best(keys)
+        if room is None:
+            room = self.locations.room_at(cku.position[0], cku.position[1])
+        if believed is not None and believed == room:
+            self.forget_place(cku.symbol, cku.stamp, (cku.uid, *cku.support))
+
+    def check_explored(self, now: float) -> None:
+        """Retract beliefs about rooms explored since, when the entity was not seen during the exploration."""
+        for fact in self.kb.facts(self.place_predicate):
+            symbol, room = fact.args
+            if self.moved_by_action(symbol):
+                continue
+            explored = self.kb.why(Fact("explored", (room,)))
+            belief = self.kb.why(fact)
+            if explored is None or belief is None or belief.since >= explored.since:
+                continue
+            seen = self.last_seen.get(symbol, float("-inf"))
+            if seen < explored.since - self.explored_grace_s:
+                self.forget_place(symbol, now, ())
+
+
+class ObjectPlaceKP(_EntityPlaceKP):
+    """``(object_at ?o ?room)``, ``(object_on ?o ?furniture)`` and ``(found ?o)`` for items.
+
+    Args:
+        min_support_share: least share of the item's voxels inside a surface's support prism for object_on.
+        anchors: also anchor the item's last known position in the knowledge base (``set_anchor``) when it
+            moved more than ``anchor_step`` metres.
+    """
+
+    pddl_type = "item"
+    place_predicate = "object_at"
+
+    def __init__(
+        self,
+        bus: Bus,
+        kb: KnowledgeBase,
+        locations: LocationModel,
+        *,
+        needed: int = 2,
+        min_confidence: float = 0.5,
+        min_support_share: float = 0.2,
+        explored_grace_s: float = 15.0,
+        anchors: bool = True,
+        anchor_step: float = 0.2,
+        frequency: float = 5.0,
+        name: str = "kp'.object_at",
+    ) -> None:
+        super().__init__(
+            name, frequency, bus, kb, "cognition.object", locations, needed, min_confidence, explored_grace_s
+        )
+        self.min_support_share = min_support_share
+        self.anchors = anchors
+        self.anchor_step = anchor_step
+        self._anchored: dict[str, tuple[float, float, float]] = {}
+
+    def moved_by_action(self, symbol: str) -> bool:
+        """Held by the robot or handed to a person: the actions own its place."""
+        return bool(self.kb.facts("holding", None, symbol) or self.kb.facts("has", None, symbol))
+
+    def place_of(self, cku: CKU) -> tuple[str | None, str | None]:
+        """(room, surface) from the item's voxels; the surface only if it stands in that room."""
+        room, _ = self.locations.rooms.best(cku.keys)
+        furniture, share = self.locations.furniture.best(cku.keys)
+        if furniture is not None and (
+            share < self.min_support_share or self.locations.furniture_room.get(furniture) != room
+        ):
+            furniture = None
+        return room, furniture
+
+    def current_support(self, symbol: str) -> str | None:
+        """The surface the item is believed on."""
+        return self.value_of("object_on", symbol)
+
+    def write_place(
+        self, symbol: str, room: str, furniture: str | None, at: float, support: tuple[str, ...], conf: float
+    ) -> None:
+        """Assert object_at, object_on (or retract it when on no surface) and found; anchor the position."""
+        super().write_place(symbol, room, furniture, at, support, conf)
+        if furniture is not None:
+            self.assert_fact("object_on", symbol, furniture, at=at, support=support, confidence=conf)
+            keep = _fact("object_on", symbol, furniture)
+            self.retract_all("object_on", symbol, None, at=at, keep=keep, support=support)
+        else:
+            self.retract_all("object_on", symbol, None, at=at, support=support)
+        self._anchor(symbol, at, support)
+
+    def forget_place(self, symbol: str, at: float, support: tuple[str, ...]) -> None:
+        """Retract object_at, object_on and found."""
+        with self.kb.batch():
+            super().forget_place(symbol, at, support)
+            self.retract_all("object_on", symbol, None, at=at, support=support)
+
+    def _anchor(self, symbol: str, at: float, support: tuple[str, ...]) -> None:
+        position = self.last_position.get(symbol)
+        if not self.anchors or position is None:
+            return
+        previous = self._anchored.get(symbol)
+        if previous is not None and float(np.linalg.norm(np.subtract(position, previous))) < self.anchor_step:
+            return
+        self._anchored[symbol] = position
+        self.kb.set_anchor(
+            symbol,
+            {"pose": {"position": list(position)}, "frame": "world"},
+            source=self.name,
+            at=at,
+            status=BeliefStatus.OBSERVED,
+            support=support,
+        )
+
+
+class PersonPlaceKP(_EntityPlaceKP):
+    """``(person_at ?p ?room)`` and ``(found ?p)`` for recognised people, with a time to live.
+
+    Args:
+        ttl_s: simulated seconds after the last sighting at which the person_at this KP' wrote is retracted
+            (the role's ``person_ttl_s``).
+    """
+
+    pddl_type = "person"
+    place_predicate = "person_at"
+
+    def __init__(
+        self,
+        bus: Bus,
+        kb: KnowledgeBase,
+        locations: LocationModel,
+        *,
+        ttl_s: float = 30.0,
+        needed: int = 2,
+        min_confidence: float = 0.5,
+        explored_grace_s: float = 15.0,
+        frequency: float = 5.0,
+        name: str = "kp'.person_at",
+    ) -> None:
+        super().__init__(
+            name, frequency, bus, kb, "cognition.person", locations, needed, min_confidence, explored_grace_s
+        )
+        self.ttl_s = ttl_s
+
+    def step(self, now: float) -> None:
+        """Process sightings, explored rooms, then expire people unseen for longer than the TTL."""
+        super().step(now)
+        for fact in self.kb.facts("person_at"):
+            symbol = fact.args[0]
+            prov = self.kb.why(fact)
+            if prov is None or prov.source != self.name:
+                continue
+            if now - self.last_seen.get(symbol, prov.since) > self.ttl_s:
+                self.forget_place(symbol, now, ())

@@ -1,0 +1,181 @@
+"""KP' for relations and states: ``person_near``, ``sound_at``, lights and levels of devices."""
+
+from __future__ import annotations
+
+import itertools
+import math
+
+from knic.bus import Bus
+from knic.kgm1.locations import LocationModel
+from knic.kgm3.base import Confirmer, KPPrime
+from knic.units import CKU
+from knowledge_base import BeliefStatus, Fact, KnowledgeBase
+
+#: device levels of the domain, percent -> constant
+LEVELS = {0: "l0", 25: "l25", 50: "l50", 75: "l75", 100: "l100"}
+
+
+class PersonNearKP(KPPrime):
+    """``(person_near ?p ?q)`` (both orders) for recognised people closer than ``near_m`` on the floor.
+
+    Hysteresis: a pair becomes near after ``needed`` consecutive evaluations closer than ``near_m - band`` and
+    stops being near after ``needed`` evaluations farther than ``near_m + band``; a pair whose members were
+    not
+    both seen within ``fresh_s`` is not evaluated, and the fact goes when one of them has not been seen for
+    ``ttl_s``.
+    """
+
+    def __init__(
+        self,
+        bus: Bus,
+        kb: KnowledgeBase,
+        *,
+        near_m: float = 1.5,
+        band_m: float = 0.1,
+        needed: int = 2,
+        fresh_s: float = 1.0,
+        ttl_s: float = 10.0,
+        frequency: float = 5.0,
+        name: str = "kp'.person_near",
+    ) -> None:
+        super().__init__(name, frequency, bus, kb, "cognition.person")
+        self.near_m, self.band_m, self.fresh_s, self.ttl_s = near_m, band_m, fresh_s, ttl_s
+        self.confirmer: Confirmer[bool] = Confirmer(needed)
+        self.latest: dict[str, CKU] = {}
+
+    def step(self, now: float) -> None:
+        """Update positions, evaluate each fresh pair, expire pairs with a member unseen for the TTL."""
+        assert self.inbox is not None
+        for message in self.inbox.drain():
+            cku: CKU = message.payload
+            if cku.attributes.get("lost"):
+                self.latest.pop(cku.symbol, None)
+            elif self.is_a(cku.symbol, "person"):
+                self.latest[cku.symbol] = cku
+        for p, q in itertools.combinations(sorted(self.latest), 2):
+            a, b = self.latest[p], self.latest[q]
+            if now - min(a.stamp, b.stamp) > self.fresh_s:
+                continue
+            d = math.hypot(a.position[0] - b.position[0], a.position[1] - b.position[1])
+            current = self.kb.holds("person_near", p, q)
+            if d < self.near_m - self.band_m:
+                value = True
+            elif d > self.near_m + self.band_m:
+                value = False
+            else:
+                continue
+            if self.confirmer.observe(f"{p}|{q}", value, 1.0, current):
+                self._write(p, q, value, now, (a.uid, b.uid))
+        for fact in self.kb.facts("person_near"):
+            p, q = fact.args
+            prov = self.kb.why(fact)
+            if prov is None or prov.source != self.name:
+                continue
+            stamps = [self.latest[s].stamp if s in self.latest else -math.inf for s in (p, q)]
+            if now - min(stamps) > self.ttl_s:
+                self._write(min(p, q), max(p, q), False, now, ())
+
+    def _write(self, p: str, q: str, near: bool, at: float, support: tuple[str, ...]) -> None:
+        with self.kb.batch():
+            for a, b in ((p, q), (q, p)):
+                if near:
+                    self.assert_fact("person_near", a, b, at=at, support=support)
+                else:
+                    self.retract_fact("person_near", a, b, at=at, support=support)
+
+
+class SoundAtKP(KPPrime):
+    """``(sound_at ?s ?room)``: the room holding the sound's source, for ``ttl_s`` seconds after it was
+    heard."""
+
+    def __init__(
+        self,
+        bus: Bus,
+        kb: KnowledgeBase,
+        locations: LocationModel,
+        *,
+        ttl_s: float = 2.0,
+        frequency: float = 10.0,
+        name: str = "kp'.sound_at",
+    ) -> None:
+        super().__init__(name, frequency, bus, kb, "cognition.sound")
+        self.locations = locations
+        self.ttl_s = ttl_s
+        self.heard: dict[tuple[str, str], float] = {}
+
+    def step(self, now: float) -> None:
+        """Assert sounds heard; retract those older than the TTL."""
+        assert self.inbox is not None
+        for message in self.inbox.drain():
+            cku: CKU = message.payload
+            room = self.locations.room_at(cku.position[0], cku.position[1])
+            if room is None or not self.is_a(cku.symbol, "sound"):
+                continue
+            self.heard[(cku.symbol, room)] = cku.stamp
+            self.assert_fact("sound_at", cku.symbol, room, at=cku.stamp, support=(cku.uid, *cku.support))
+        for (sound, room), stamp in list(self.heard.items()):
+            if now - stamp >= self.ttl_s:
+                del self.heard[(sound, room)]
+                self.retract_fact("sound_at", sound, room, at=now)
+
+
+def level_of(percent: float) -> str:
+    """The domain's level constant nearest to a percentage (0-100)."""
+    nearest = min(LEVELS, key=lambda p: abs(p - float(percent)))
+    return LEVELS[nearest]
+
+
+class DeviceStateKP(KPPrime):
+    """Lights (complementary ``light_on`` / ``light_off``) and ``device_level`` of dimmers and blinds.
+
+    Readings come from the home automation, so by default one reading is enough (``needed = 1``).
+    """
+
+    def __init__(
+        self,
+        bus: Bus,
+        kb: KnowledgeBase,
+        *,
+        needed: int = 1,
+        frequency: float = 2.0,
+        name: str = "kp'.devices",
+    ) -> None:
+        super().__init__(name, frequency, bus, kb, "cognition.device")
+        self.confirmer: Confirmer[str] = Confirmer(needed)
+
+    def step(self, now: float) -> None:
+        """Bring each device's facts in line with its reading."""
+        assert self.inbox is not None
+        for message in self.inbox.drain():
+            cku: CKU = message.payload
+            device, state = cku.symbol, cku.attributes.get("state")
+            support = (cku.uid, *cku.support)
+            if self.is_a(device, "light"):
+                value = "on" if state else "off"
+                current = "on" if self.kb.holds("light_on", device) else None
+                if current is None and self.kb.holds("light_off", device):
+                    current = "off"
+                if self.confirmer.observe(device, value, 1.0, current) or (
+                    value == current and self._stale(f"light_{value}", device)
+                ):
+                    other = "off" if value == "on" else "on"
+                    with self.kb.batch():
+                        self.assert_fact(f"light_{value}", device, at=cku.stamp, support=support)
+                        self.retract_fact(f"light_{other}", device, at=cku.stamp, support=support)
+            elif (
+                isinstance(state, int | float) and not isinstance(state, bool) and self.is_a(device, "device")
+            ):
+                if self.is_a(device, "bell"):
+                    continue
+                value = level_of(state)
+                current = self.value_of("device_level", device)
+                if self.confirmer.observe(device, value, 1.0, current) or (
+                    value == current and self._stale("device_level", device, value)
+                ):
+                    with self.kb.batch():
+                        self.assert_fact("device_level", device, value, at=cku.stamp, support=support)
+
+    def _stale(self, predicate: str, *args: str) -> bool:
+        """True while a fact that matches the reading is not yet marked observed (an action's effect)."""
+        prov = self.kb.why(Fact(predicate, tuple(args)))
+        return prov is not None and prov.status != BeliefStatus.OBSERVED

@@ -1,0 +1,245 @@
+"""KP' for searching: what has been explored, and where an entity of unknown location may be.
+
+:class:`ExploredKP` asserts ``(explored ?room)`` once the object camera has covered enough of the room:
+each room
+carries sample points on its floor and at table height (away from walls and furniture); a sample is covered
+when a frame taken from inside the room could see it (:class:`~knic.kgm1.sources.FrameView`: in the image,
+within detection range, not hidden). The room is explored when ``min_coverage`` of its samples are covered, or
+when the camera has looked in ``look_around_bins`` of 8 headings from inside it and ``min_look_coverage`` is
+covered. Every ``explored`` fact (whoever wrote it) expires ``ttl_s`` seconds after it was made, and the
+room's
+coverage starts again, so a place can be searched again for an object that moved.
+
+:class:`CandidatesKP` keeps ``(possibly_at ?e ?room)`` as ASSUMED facts for entities whose place is unknown
+(no
+``object_at`` / ``person_at``, not held, not handed over): the ``max_candidates`` likeliest unexplored
+rooms by
+the priors (for a person, the room where they were last seen first); when every prior room has been explored,
+the other unexplored rooms. Candidates go when the room gets explored without the entity being seen there and
+all of them go when the entity is observed anywhere. Entities considered: those with priors, those named in a
+goal, and those that were located once.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping, Sequence
+from typing import TYPE_CHECKING
+
+import numpy as np
+import numpy.typing as npt
+
+from knic.bus import Bus
+from knic.kgm1.camera import Scan
+from knic.kgm1.locations import LocationModel
+from knic.kgm2.spatial import points_in_polygon
+from knic.kgm3.base import KPPrime
+from knowledge_base import BeliefStatus, Fact, KnowledgeBase
+
+if TYPE_CHECKING:
+    from worlds.model import World
+
+#: entity -> ((room, probability), ...), likeliest first
+Priors = Mapping[str, Sequence[tuple[str, float]]]
+
+
+def room_samples(
+    polygon: npt.NDArray[np.float64],
+    obstacles: Sequence[npt.NDArray[np.float64]],
+    *,
+    spacing: float = 0.4,
+    inset: float = 0.2,
+    heights: Sequence[float] = (0.1, 0.75),
+) -> npt.NDArray[np.float64]:
+    """Sample points (N, 3) of a room: a grid at ``spacing`` metres inside the polygon, at least ``inset``
+    from
+    its bounding box edges and outside every obstacle footprint, at each height."""
+    lo, hi = polygon.min(axis=0) + inset, polygon.max(axis=0) - inset
+    xs = np.arange(lo[0], hi[0] + 1e-9, spacing)
+    ys = np.arange(lo[1], hi[1] + 1e-9, spacing)
+    gx, gy = np.meshgrid(xs, ys, indexing="ij")
+    xy = np.stack([gx.ravel(), gy.ravel()], axis=1)
+    keep = points_in_polygon(xy, polygon)
+    for footprint in obstacles:
+        keep &= ~points_in_polygon(xy, footprint)
+    xy = xy[keep]
+    return np.concatenate([np.column_stack([xy, np.full(len(xy), h)]) for h in heights], axis=0)
+
+
+class ExploredKP(KPPrime):
+    """``(explored ?room)`` from camera coverage, with a time to live (see the module docstring)."""
+
+    def __init__(
+        self,
+        bus: Bus,
+        kb: KnowledgeBase,
+        locations: LocationModel,
+        *,
+        min_coverage: float = 0.6,
+        look_around_bins: int = 7,
+        min_look_coverage: float = 0.25,
+        ttl_s: float = 120.0,
+        spacing: float = 0.4,
+        frequency: float = 5.0,
+        name: str = "kp'.explored",
+    ) -> None:
+        super().__init__(name, frequency, bus, kb, "percept.vision.scan.object")
+        self.locations = locations
+        self.min_coverage, self.look_around_bins, self.min_look_coverage = (
+            min_coverage,
+            look_around_bins,
+            min_look_coverage,
+        )
+        self.ttl_s = ttl_s
+        obstacles = list(locations.footprints.values())
+        self.samples = {
+            name: room_samples(prism.polygon, obstacles, spacing=spacing)
+            for name, prism in locations.rooms.prisms.items()
+        }
+        self._seen = {name: np.full(len(s), -math.inf) for name, s in self.samples.items()}
+        self._headings = {name: np.full(8, -math.inf) for name in self.samples}
+        self._epoch = dict.fromkeys(self.samples, -math.inf)
+
+    def coverage(self, room: str) -> float:
+        """Share of the room's samples covered since its coverage last started."""
+        seen = self._seen[room]
+        return float((seen > self._epoch[room]).mean()) if len(seen) else 0.0
+
+    def headings(self, room: str) -> int:
+        """How many of 8 heading sectors the camera has looked in from inside the room since then."""
+        return int((self._headings[room] > self._epoch[room]).sum())
+
+    def step(self, now: float) -> None:
+        """Accumulate coverage from the scans received; assert explored rooms; expire old explored facts."""
+        assert self.inbox is not None
+        for message in self.inbox.drain():
+            scan: Scan = message.payload
+            pos = scan.view.position
+            room = self.locations.room_at(float(pos[0]), float(pos[1]))
+            if room is None:
+                continue
+            visible = scan.view.visible(self.samples[room])
+            self._seen[room][visible] = scan.stamp
+            axis = scan.view.optical_axis()
+            sector = int(((math.atan2(axis[1], axis[0]) + math.pi) / (2 * math.pi) * 8) % 8)
+            self._headings[room][sector] = scan.stamp
+            if not self.kb.holds("explored", room) and self._covered(room):
+                self.assert_fact("explored", room, at=scan.stamp, confidence=self.coverage(room))
+        for fact in self.kb.facts("explored"):
+            prov = self.kb.why(fact)
+            if prov is not None and now - prov.since > self.ttl_s:
+                room = fact.args[0]
+                self.retract_fact("explored", room, at=now)
+                if room in self._epoch:
+                    self._epoch[room] = now
+
+    def _covered(self, room: str) -> bool:
+        cov = self.coverage(room)
+        if cov >= self.min_coverage:
+            return True
+        return self.headings(room) >= self.look_around_bins and cov >= self.min_look_coverage
+
+
+class CandidatesKP(KPPrime):
+    """``(possibly_at ?e ?room)`` search candidates, ASSUMED (see the module docstring).
+
+    Args:
+        priors: entity -> (room, probability) pairs.
+        rooms: every room, in the order fallback candidates are taken.
+        max_candidates: most candidate rooms asserted per entity at a time.
+    """
+
+    def __init__(
+        self,
+        bus: Bus,
+        kb: KnowledgeBase,
+        priors: Priors,
+        rooms: Sequence[str],
+        *,
+        max_candidates: int = 3,
+        frequency: float = 2.0,
+        name: str = "kp'.candidates",
+    ) -> None:
+        super().__init__(name, frequency, bus, kb, None)
+        self.priors = {e: sorted(p, key=lambda rp: -rp[1]) for e, p in priors.items()}
+        self.rooms = list(rooms)
+        self.max_candidates = max_candidates
+        self.last_room: dict[str, str] = {}
+        self._tracked: set[str] = set()
+
+    def wanted(self, entity: str) -> list[tuple[str, float]]:
+        """The candidate rooms an entity should have now, with their probabilities (empty when located)."""
+        if self.located(entity):
+            return []
+        ranked: list[tuple[str, float]] = []
+        last = self.last_room.get(entity)
+        if last is not None and self.is_a(entity, "person"):
+            ranked.append((last, 1.0))
+        ranked += list(self.priors.get(entity, ()))
+        seen: set[str] = set()
+        explored = {f.args[0] for f in self.kb.facts("explored")}
+        result: list[tuple[str, float]] = []
+        for room, p in ranked:
+            if room not in seen and room not in explored and self.is_a(room, "room"):
+                seen.add(room)
+                result.append((room, p))
+        if not result:
+            result = [(r, 0.0) for r in self.rooms if r not in explored and self.is_a(r, "room")]
+        return result[: self.max_candidates]
+
+    def located(self, entity: str) -> bool:
+        """Whether the knowledge base knows where the entity is (or who holds it)."""
+        place = self.kb.facts("person_at", entity) if self.is_a(entity, "person") else []
+        if self.is_a(entity, "item"):
+            place = self.kb.facts("object_at", entity)
+            if not place and (self.kb.facts("holding", None, entity) or self.kb.facts("has", None, entity)):
+                return True
+        if place:
+            self.last_room[entity] = place[0].args[1]
+            self._tracked.add(entity)
+            return True
+        return False
+
+    def entities(self) -> list[str]:
+        """Entities whose candidates this KP' maintains."""
+        names = set(self.priors) | self._tracked
+        for goal in self.kb.goals():
+            names |= {a for a in goal.args if self.is_a(a, "item") or self.is_a(a, "person")}
+        return sorted(n for n in names if self.is_a(n, "entity"))
+
+    def step(self, now: float) -> None:
+        """Bring every tracked entity's possibly_at facts in line with :meth:`wanted`."""
+        for entity in self.entities():
+            wanted = dict(self.wanted(entity))
+            current = {f.args[1] for f in self.kb.facts("possibly_at", entity)}
+            if all(self._assumed(entity, r) for r in wanted) and current == set(wanted):
+                continue
+            with self.kb.batch():
+                for room in sorted(current - set(wanted)):
+                    self.retract_fact("possibly_at", entity, room, at=now)
+                for room, p in wanted.items():
+                    self.assert_fact(
+                        "possibly_at",
+                        entity,
+                        room,
+                        at=now,
+                        confidence=p,
+                        assumed=True,
+                        support=(f"prior:{entity}",),
+                    )
+
+    def _assumed(self, entity: str, room: str) -> bool:
+        prov = self.kb.why(Fact("possibly_at", (entity, room)))
+        return prov is not None and prov.status == BeliefStatus.ASSUMED
+
+
+def priors_from_world(world: World) -> dict[str, list[tuple[str, float]]]:
+    """Entity -> (room, probability) pairs from the world's item and person priors."""
+    out: dict[str, list[tuple[str, float]]] = {}
+    for name, item in world.items.items():
+        if item.priors:
+            out[name] = [(p.room, float(p.probability)) for p in item.priors]
+    for name, person in world.people.items():
+        if person.priors:
+            out[name] = [(p.room, float(p.probability)) for p in person.priors]
+    return out

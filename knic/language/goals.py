@@ -1,0 +1,181 @@
+"""Command frames to PDDL goals, checked against the domain before they reach the knowledge base.
+
+Goals by request kind (the team's mapping for the ERL domain):
+
+=====================================  =====================================================
+frame                                  goal
+=====================================  =====================================================
+BRINGING theme X, beneficiary P        ``(has P X)`` ("me" is the speaker)
+BRINGING / PLACING theme X, goal room  ``(object_at X room)``
+BRINGING / PLACING theme X, goal f     ``(object_on X f)`` (f a piece of furniture)
+SEARCHING theme X                      ``(reported X)``
+MOTION goal room                       ``(robot_at R room)`` (R the world's robot)
+ACCOMPANYING theme P, goal room        ``(person_at P room)``
+OPERATING light(s), on / off           ``(light_on d)`` / ``(light_off d)`` for each light
+OPERATING blinds open / closed / half  ``(device_level d l100)`` / ``l0`` / ``l50``
+OPERATING dimmer or blinds N percent   ``(device_level d lN)``
+=====================================  =====================================================
+
+Every goal is checked against the domain's predicate signatures and the world's instances (predicate known,
+arity, each argument an instance or constant of the parameter's type), and the goals of one utterance must not
+contradict each other. Any failure raises :class:`~knic.errors.LanguageError` and no goal is produced.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Sequence
+from typing import Any, Protocol
+
+from knic.errors import KnicError, LanguageError
+from knic.language.frames import SPEAKER, CommandFrame
+from knic.language.vocabulary import Vocabulary
+from knowledge_base import Fact
+
+#: Blind positions as percentages (closed, half-open, open).
+BLIND_STATES = {"closed": 0, "half-open": 50, "open": 100}
+#: Predicates holding one value per first argument: two goals that differ there contradict each other.
+_SINGLE_VALUED = ("robot_at", "person_at", "object_at", "object_on", "device_level")
+_COMPLEMENTS = (("light_on", "light_off"),)
+
+
+def frames_to_goals(frames: Sequence[CommandFrame], vocabulary: Vocabulary, *, speaker: str) -> list[Fact]:
+    """The PDDL goals that satisfy the frames, in utterance order, without duplicates.
+
+    Args:
+        frames: understood actions (pronouns already resolved).
+        vocabulary: the world (instances, types, the domain's predicate signatures).
+        speaker: the person symbol that "me" stands for.
+
+    Raises:
+        LanguageError: a frame lacks an argument its kind needs, names something of the wrong type, asks
+            for a level the domain has no constant for, or the goals contradict each other.
+    """
+    speaker_type = vocabulary.type_of(speaker)
+    if speaker_type is None or not vocabulary.is_subtype(speaker_type, "person"):
+        raise LanguageError(f"speaker {speaker!r} is not a person of this world")
+    goals: list[Fact] = []
+    for frame in frames:
+        for goal in _frame_goals(frame, vocabulary, speaker):
+            validate_goal(goal, vocabulary)
+            if goal not in goals:
+                goals.append(goal)
+    _check_consistent(goals)
+    return goals
+
+
+def validate_goal(goal: Fact, vocabulary: Vocabulary) -> None:
+    """Check one goal against the domain: known predicate, arity, argument types.
+
+    Raises:
+        LanguageError: naming the goal and what is wrong with it.
+    """
+    signature = vocabulary.predicates.get(goal.predicate)
+    if signature is None:
+        raise LanguageError(f"goal {goal}: the domain has no predicate {goal.predicate!r}")
+    if len(signature) != len(goal.args):
+        raise LanguageError(f"goal {goal}: {goal.predicate} takes {len(signature)} argument(s)")
+    for arg, (param, param_type) in zip(goal.args, signature, strict=True):
+        arg_type = vocabulary.instances.get(arg)
+        if arg_type is None:
+            raise LanguageError(f"goal {goal}: the world has no {arg!r}")
+        if not vocabulary.is_subtype(arg_type, param_type):
+            raise LanguageError(f"goal {goal}: {arg} is a {arg_type}, {param} needs a {param_type}")
+
+
+def add_goals(kb: GoalSink, goals: Iterable[Fact], *, source: str = "language") -> list[Fact]:
+    """Add goals to a knowledge base in one batch: all of them or, on any refusal, none.
+
+    Returns:
+        The goals that were new.
+
+    Raises:
+        LanguageError: the knowledge base refused a goal (its message is kept); nothing was added.
+    """
+    added: list[Fact] = []
+    try:
+        with kb.batch():
+            for goal in goals:
+                if kb.add_goal(goal.predicate, *goal.args, source=source):
+                    added.append(goal)
+    except LanguageError:
+        raise
+    except KnicError as exc:
+        raise LanguageError(f"the knowledge base refused the goals: {exc}") from exc
+    return added
+
+
+class GoalSink(Protocol):
+    """The part of ``knowledge_base.KnowledgeBase`` that :func:`add_goals` writes to."""
+
+    def batch(self) -> Any:
+        """A context manager making the writes one all-or-nothing transaction."""
+
+    def add_goal(self, predicate: str, *args: str, source: str = ...) -> bool:
+        """Add one goal; True when it is new."""
+
+
+def _frame_goals(frame: CommandFrame, vocabulary: Vocabulary, speaker: str) -> list[Fact]:
+    def need(role: str) -> str:
+        value = frame.get(role)
+        if value is None:
+            raise LanguageError(f"{frame.kind} needs a {role}: {frame}")
+        return speaker if value == SPEAKER else value
+
+    kind = frame.kind
+    if kind in ("BRINGING", "PLACING"):
+        theme = need("theme")
+        if frame.get("goal") is not None:
+            place = need("goal")
+            if _is(vocabulary, place, "furniture"):
+                return [Fact("object_on", (theme, place))]
+            return [Fact("object_at", (theme, place))]
+        if kind == "PLACING":
+            raise LanguageError(f"PLACING needs a goal: {frame}")
+        return [Fact("has", (need("beneficiary"), theme))]
+    if kind == "SEARCHING":
+        return [Fact("reported", (need("theme"),))]
+    if kind == "MOTION":
+        if vocabulary.robot is None:
+            raise LanguageError("the world has no robot to move")
+        return [Fact("robot_at", (vocabulary.robot, need("goal")))]
+    if kind == "ACCOMPANYING":
+        return [Fact("person_at", (need("theme"), need("goal")))]
+    if kind == "OPERATING":
+        return _operating_goals(frame, vocabulary, need("device"), need("state"))
+    raise LanguageError(f"no goal for frame kind {kind!r}")
+
+
+def _operating_goals(frame: CommandFrame, vocabulary: Vocabulary, device: str, state: str) -> list[Fact]:
+    devices = vocabulary.members(device)
+    if state in ("on", "off"):
+        return [Fact(f"light_{state}", (d,)) for d in devices]
+    if state in BLIND_STATES:
+        percent = BLIND_STATES[state]
+    elif state.isdigit():
+        percent = int(state)
+    else:
+        raise LanguageError(f"unknown device state {state!r}: {frame}")
+    level = vocabulary.level(percent)
+    if level is None:
+        raise LanguageError(f"the domain has no level for {percent} percent: {frame}")
+    return [Fact("device_level", (d, level)) for d in devices]
+
+
+def _is(vocabulary: Vocabulary, symbol: str, type_name: str) -> bool:
+    symbol_type = vocabulary.type_of(symbol)
+    return symbol_type is not None and vocabulary.is_subtype(symbol_type, type_name)
+
+
+def _check_consistent(goals: Sequence[Fact]) -> None:
+    for i, first in enumerate(goals):
+        for second in goals[i + 1 :]:
+            clash = (
+                first.predicate == second.predicate
+                and first.predicate in _SINGLE_VALUED
+                and first.args[0] == second.args[0]
+            ) or any(
+                {first.predicate, second.predicate} == set(pair) and first.args == second.args
+                for pair in _COMPLEMENTS
+            )
+            if clash:
+                raise LanguageError(f"the goals {first} and {second} contradict each other")

@@ -1,0 +1,327 @@
+"""The command grammar: one definition for the text parser and for the speech recogniser's JSGF grammar.
+
+The grammar is a small tree of nodes (:class:`Words`, :class:`Seq`, :class:`Alt`, :class:`Opt`,
+:class:`Slot`, :class:`Bind`, :class:`Ref`, :class:`Frame`). Slots are filled from a
+:class:`~knic.language.vocabulary.Vocabulary`, so the same tree accepts exactly the objects, rooms, people and
+devices the world has. :mod:`knic.language.parser` walks the tree over typed text; :func:`to_jsgf` writes it
+as a JSGF grammar for pocketsphinx. Changing a rule here changes both.
+
+The ERL grammar (:func:`command_grammar`) covers the verb classes of the "Catering for Granny Annie's Comfort"
+task: searching, bringing, placing, accompanying, motion and device operation, up to three chained actions.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Iterator
+from dataclasses import dataclass
+
+from knic.language.vocabulary import Vocabulary
+
+
+@dataclass(frozen=True)
+class Words:
+    """Literal words, e.g. ``Words("look for")``."""
+
+    text: str
+
+
+@dataclass(frozen=True)
+class Seq:
+    """Parts in order."""
+
+    parts: tuple[Node, ...]
+
+
+@dataclass(frozen=True)
+class Alt:
+    """One of the options; the parser tries them in order."""
+
+    options: tuple[Node, ...]
+
+
+@dataclass(frozen=True)
+class Opt:
+    """The part or nothing."""
+
+    part: Node
+
+
+@dataclass(frozen=True)
+class Slot:
+    """A vocabulary phrase of one of ``categories`` (PDDL types) bound to the frame argument ``role``.
+
+    ``groups`` admits group phrases ("the lights") as well as single symbols.
+    """
+
+    role: str
+    categories: tuple[str, ...]
+    groups: bool = False
+
+    @property
+    def rule_name(self) -> str:
+        """The JSGF rule holding this slot's phrases."""
+        return "_".join(self.categories) + ("_groups" if self.groups else "")
+
+
+@dataclass(frozen=True)
+class Bind:
+    """Consumes nothing; sets the frame argument ``role`` to ``value`` (e.g. state "on" after "switch on")."""
+
+    role: str
+    value: str
+
+
+@dataclass(frozen=True)
+class Ref:
+    """A named rule of the grammar (a shared JSGF rule)."""
+
+    name: str
+
+
+@dataclass(frozen=True)
+class Frame:
+    """A command: its body's bindings become one command frame of kind ``kind`` (e.g. ``"BRINGING"``)."""
+
+    kind: str
+    body: Node
+
+
+Node = Words | Seq | Alt | Opt | Slot | Bind | Ref | Frame
+
+#: Markers a pronoun binds; :mod:`knic.language.frames` replaces them by the referent.
+PRONOUNS = ("it", "her", "him", "them")
+
+
+@dataclass(frozen=True)
+class Grammar:
+    """Named rules and the name of the top rule (the whole utterance)."""
+
+    rules: dict[str, Node]
+    top: str
+
+    def rule(self, name: str) -> Node:
+        """The named rule; KeyError names the rule when the grammar lacks it."""
+        return self.rules[name]
+
+
+def words(*texts: str) -> Node:
+    """One of several literal phrases."""
+    return Words(texts[0]) if len(texts) == 1 else Alt(tuple(Words(t) for t in texts))
+
+
+def tagged(role: str, choices: dict[str, str]) -> Node:
+    """One of several phrases, each binding ``role`` to its value: ``tagged("state", {"on": "on"})``."""
+    return Alt(tuple(Seq((Words(phrase), Bind(role, value))) for phrase, value in choices.items()))
+
+
+def seq(*parts: Node) -> Seq:
+    """Parts in order."""
+    return Seq(parts)
+
+
+def alt(*options: Node) -> Alt:
+    """One of the options, tried in order."""
+    return Alt(options)
+
+
+#: The ERL verb classes (each phrase is one alternative in the grammar).
+SEARCH_VERBS = ("find", "locate", "look for", "search for", "spot", "pinpoint")
+BRING_VERBS = ("bring", "get", "fetch", "give", "hand", "deliver", "take")
+PLACE_VERBS = ("put", "place")
+ACCOMPANY_VERBS = ("lead", "guide", "escort", "accompany", "take")
+MOTION_VERBS = ("go", "move", "navigate", "come")
+SWITCH_VERBS = ("switch", "turn")
+
+
+def command_grammar(max_actions: int = 3) -> Grammar:
+    """The ERL command grammar: up to ``max_actions`` chained actions, with polite openers.
+
+    Frame arguments bound by the rules: ``theme``, ``source``, ``goal``, ``ground``, ``beneficiary``,
+    ``device``, ``state``. "me" binds the literal ``"me"`` (the speaker); pronouns bind a marker from
+    :data:`PRONOUNS` that frames resolve to the previous action's theme.
+    """
+    det = Opt(words("the", "a", "an", "my", "some", "your"))
+
+    def item(role: str) -> Node:
+        return alt(seq(det, Slot(role, ("item",))), seq(Words("it"), Bind(role, "it")))
+
+    def person(role: str) -> Node:
+        return alt(
+            Slot(role, ("person",)),
+            seq(Words("me"), Bind(role, "me")),
+            seq(Words("her"), Bind(role, "her")),
+            seq(Words("him"), Bind(role, "him")),
+        )
+
+    def thing(role: str) -> Node:
+        return alt(
+            seq(det, Slot(role, ("item",))),
+            Slot(role, ("person",)),
+            seq(Words("it"), Bind(role, "it")),
+            seq(Words("her"), Bind(role, "her")),
+            seq(Words("him"), Bind(role, "him")),
+        )
+
+    def place(role: str) -> Node:
+        return seq(det, Slot(role, ("room", "furniture")))
+
+    def room(role: str) -> Node:
+        return seq(det, Slot(role, ("room",)))
+
+    source = Opt(seq(Words("from"), place("source")))
+    searching = Frame(
+        "SEARCHING",
+        alt(
+            seq(words(*SEARCH_VERBS), thing("theme"), Opt(seq(words("in", "on", "at"), place("ground")))),
+            seq(Words("where is"), thing("theme")),
+        ),
+    )
+    bringing = Frame(
+        "BRINGING",
+        alt(
+            seq(words(*BRING_VERBS), person("beneficiary"), item("theme"), source),
+            seq(words(*BRING_VERBS), item("theme"), source, Words("to"), person("beneficiary")),
+            seq(words(*BRING_VERBS), item("theme"), source, words("to", "into"), place("goal")),
+            seq(words("bring", "get", "fetch"), item("theme"), source, Bind("beneficiary", "me")),
+        ),
+    )
+    placing = Frame(
+        "PLACING",
+        seq(words(*PLACE_VERBS), item("theme"), words("on", "onto", "in", "into", "on top of"), place("goal")),
+    )
+    accompanying = Frame(
+        "ACCOMPANYING", seq(words(*ACCOMPANY_VERBS), person("theme"), words("to", "into"), room("goal"))
+    )
+    motion = Frame("MOTION", seq(words(*MOTION_VERBS), words("to", "into"), room("goal")))
+    on_off = tagged("state", {"on": "on", "off": "off"})
+    lights = seq(det, Slot("device", ("light",), groups=True))
+    operating = Frame(
+        "OPERATING",
+        alt(
+            seq(words(*SWITCH_VERBS), on_off, lights),
+            seq(words(*SWITCH_VERBS), lights, on_off),
+            seq(
+                tagged("state", {"open": "open", "close": "closed", "half open": "half-open"}),
+                det,
+                Slot("device", ("blinds",)),
+            ),
+            seq(
+                words("set", "dim", "turn"),
+                det,
+                Slot("device", ("dimmer", "blinds")),
+                words("to", "at"),
+                Slot("state", ("level",)),
+                Opt(Words("percent")),
+            ),
+        ),
+    )
+    rules: dict[str, Node] = {
+        "searching": searching,
+        "bringing": bringing,
+        "placing": placing,
+        "accompanying": accompanying,
+        "motion": motion,
+        "operating": operating,
+        "action": alt(*(Ref(n) for n in ("searching", "bringing", "placing", "accompanying", "motion", "operating"))),
+        "opener": words("please", "robot", "robot please", "could you", "could you please", "can you", "can you please"),
+        "joiner": words("and", "then", "and then"),
+    }
+    chain: Node = Ref("action")
+    for _ in range(max_actions - 1):
+        chain = seq(Ref("action"), Opt(seq(Opt(Ref("joiner")), chain)))
+    rules["command"] = seq(Opt(Ref("opener")), chain, Opt(Words("please")))
+    return Grammar(rules, "command")
+
+
+def slots(grammar: Grammar) -> list[Slot]:
+    """Every distinct slot of the grammar, in first-use order."""
+    found: dict[Slot, None] = {}
+    for node in grammar.rules.values():
+        for sub in _walk(node):
+            if isinstance(sub, Slot):
+                found.setdefault(Slot("", sub.categories, sub.groups), None)
+    return list(found)
+
+
+def grammar_words(grammar: Grammar) -> set[str]:
+    """Every literal word of the grammar (not counting vocabulary phrases)."""
+    return {w for node in grammar.rules.values() for sub in _walk(node) if isinstance(sub, Words) for w in sub.text.split()}
+
+
+def _walk(node: Node) -> Iterator[Node]:
+    yield node
+    if isinstance(node, Seq):
+        for part in node.parts:
+            yield from _walk(part)
+    elif isinstance(node, Alt):
+        for option in node.options:
+            yield from _walk(option)
+    elif isinstance(node, Opt):
+        yield from _walk(node.part)
+    elif isinstance(node, Frame):
+        yield from _walk(node.body)
+
+
+def to_jsgf(
+    grammar: Grammar,
+    vocabulary: Vocabulary,
+    *,
+    name: str = "knic",
+    garbage: Iterable[str] = (),
+    exclude_words: Iterable[str] = (),
+    filler_weight: float = 0.1,
+) -> str:
+    """Write the grammar as JSGF V1.0 with the vocabulary's phrases in the slot rules.
+
+    Args:
+        grammar: the command grammar.
+        vocabulary: the phrases for the slots; a slot with no phrase becomes ``<VOID>``.
+        name: the JSGF grammar name.
+        garbage: filler words; when given, the public rule also admits any sequence of them, so an utterance
+            outside the command grammar can be decoded as filler instead of being forced onto a command.
+        exclude_words: words the recogniser cannot pronounce; phrases containing them are left out.
+        filler_weight: the filler loop's JSGF weight against 1 for the command rule.
+
+    Returns:
+        The JSGF text; its public rule is ``<utterance>``.
+    """
+    excluded = set(exclude_words)
+    lines = ["#JSGF V1.0;", f"grammar {name};"]
+    top = f"<{grammar.top}>"
+    fillers = sorted({w for w in garbage if w not in excluded})
+    if fillers:
+        lines.append(f"public <utterance> = /1.0/ {top} | /{filler_weight:g}/ <filler>+;")
+        lines.append("<filler> = " + " | ".join(fillers) + ";")
+    else:
+        lines.append(f"public <utterance> = {top};")
+    for rule_name, node in grammar.rules.items():
+        lines.append(f"<{rule_name}> = {_jsgf(node)};")
+    for slot in slots(grammar):
+        phrases = sorted(
+            {
+                t.phrase
+                for t in vocabulary.terms_of(slot.categories, groups=slot.groups)
+                if not excluded.intersection(t.phrase.split())
+            }
+        )
+        lines.append(f"<{slot.rule_name}> = " + (" | ".join(phrases) if phrases else "<VOID>") + ";")
+    return "\n".join(lines) + "\n"
+
+
+def _jsgf(node: Node) -> str:
+    if isinstance(node, Words):
+        return node.text
+    if isinstance(node, Seq):
+        parts = [_jsgf(p) for p in node.parts if not isinstance(p, Bind)]
+        return " ".join(parts) if parts else "<NULL>"
+    if isinstance(node, Alt):
+        return "( " + " | ".join(_jsgf(o) for o in node.options) + " )"
+    if isinstance(node, Opt):
+        return f"[ {_jsgf(node.part)} ]"
+    if isinstance(node, Slot):
+        return f"<{node.rule_name}>"
+    if isinstance(node, Bind):
+        return "<NULL>"
+    if isinstance(node, Ref):
+        return f"<{node.name}>"
+    return _jsgf(node.body)

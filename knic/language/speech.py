@@ -1,0 +1,236 @@
+"""Spoken commands: WAV audio to a transcript with pocketsphinx and a JSGF grammar from the vocabulary.
+
+Audio: WAV files only (RIFF/WAVE, integer PCM of 8, 16, 24 or 32 bits or IEEE float of 32 or 64 bits, any
+rate, any channel count). Audio is mixed down to mono and resampled in-process to the acoustic model's 16 kHz
+(windowed-sinc low-pass, then linear interpolation), then padded with silence (0.2 s before, 0.5 s after: the
+grammar search needs trailing silence to finish the last word). Anything else raises
+:class:`~knic.errors.AudioError` before the decoder is touched.
+
+Recognition: pocketsphinx 5 with the default US English acoustic model and dictionary from the wheel, and a
+JSGF grammar written by :func:`knic.language.grammar.to_jsgf` from the same grammar and vocabulary the text
+parser uses. A grammar search always forces the audio onto some command, so the public rule also admits any
+sequence of filler words (:data:`FILLER_WORDS`, common English words outside the command grammar). Speech that
+is not a command decodes through the filler loop, the transcript then fails to parse, and the utterance is
+rejected instead of being forced onto the nearest command. ``filler_weight`` sets the filler loop's prior
+(measured with ``knic bench speech``).
+
+Lifecycle: build one :class:`Recognizer` per vocabulary (about 0.3 s: model load), then call
+:meth:`Recognizer.recognize` per utterance; a recogniser is not thread-safe.
+"""
+
+from __future__ import annotations
+
+import struct
+import time
+from dataclasses import dataclass
+from pathlib import Path
+
+import numpy as np
+import numpy.typing as npt
+
+from knic.errors import AudioError, LanguageError
+from knic.language.grammar import Grammar, grammar_words, to_jsgf
+from knic.language.vocabulary import Vocabulary
+
+#: The acoustic model's sample rate (Hz).
+MODEL_RATE = 16000
+#: Silence added before and after the audio (s).
+LEAD_SILENCE = 0.2
+TRAIL_SILENCE = 0.5
+
+#: Decoder options (pocketsphinx configuration names).
+DECODER_OPTIONS: dict[str, object] = {"cmn": "batch"}
+
+#: Filler words for out-of-grammar speech: frequent English words, phonetically varied, none of them a
+#: command word. Words that are also command or vocabulary words are removed when the grammar is written.
+FILLER_WORDS = (
+    "what weather like today tell joke play music call daughter front door how are you television newspaper "
+    "clean water plants dance make coffee time is it hello yes no okay thanks thank good morning night "
+    "radio phone news read book cook dinner lunch breakfast window car shop buy sing song ask answer "
+    "remember forget know think want need help stop wait sit stand walk run open close up down out "
+    "banana orange bread milk tea sugar chair table floor wall picture friend doctor nurse son wife "
+    "husband dog cat bird garden street city money paper letter mail box key bag shoe hat coat shirt"
+).split()
+
+
+@dataclass(frozen=True)
+class Transcript:
+    """What the recogniser heard.
+
+    Attributes:
+        text: the best hypothesis (lowercase words); "" when nothing matched the grammar at all.
+        in_grammar: False when the hypothesis went through the filler loop or nothing was decoded.
+        score: the decoder's path score for the hypothesis (log domain, larger is better; 0 when empty).
+        duration: audio length before padding (s).
+        decode_ms: wall-clock decoding time (ms).
+    """
+
+    text: str
+    in_grammar: bool
+    score: float
+    duration: float
+    decode_ms: float
+
+
+def read_wav(path: str | Path) -> tuple[npt.NDArray[np.float64], int]:
+    """Read a WAV file as float samples in [-1, 1], shape (frames, channels), and its sample rate (Hz).
+
+    Raises:
+        AudioError: the file is missing, not RIFF/WAVE, uses an unsupported encoding, or holds no samples.
+    """
+    path = Path(path)
+    try:
+        data = path.read_bytes()
+    except OSError as exc:
+        raise AudioError(f"{path}: cannot read audio file: {exc.strerror or exc}") from exc
+    if len(data) < 12 or data[:4] != b"RIFF" or data[8:12] != b"WAVE":
+        raise AudioError(f"{path}: not a WAV file (RIFF/WAVE header missing); only WAV audio is accepted")
+    fmt: tuple[int, int, int, int] | None = None
+    pcm: bytes | None = None
+    offset = 12
+    while offset + 8 <= len(data):
+        chunk_id, size = data[offset : offset + 4], struct.unpack("<I", data[offset + 4 : offset + 8])[0]
+        body = data[offset + 8 : offset + 8 + size]
+        if chunk_id == b"fmt " and len(body) >= 16:
+            tag, channels, rate, _, _, bits = struct.unpack("<HHIIHH", body[:16])
+            if tag == 0xFFFE and len(body) >= 26:  # WAVE_FORMAT_EXTENSIBLE: the sub-format's first two bytes
+                tag = struct.unpack("<H", body[24:26])[0]
+            fmt = (tag, channels, rate, bits)
+        elif chunk_id == b"data":
+            pcm = body
+        offset += 8 + size + (size & 1)
+    if fmt is None or pcm is None:
+        raise AudioError(f"{path}: WAV file without a 'fmt ' or 'data' chunk")
+    tag, channels, rate, bits = fmt
+    if channels < 1 or rate < 1000:
+        raise AudioError(f"{path}: implausible WAV header ({channels} channels, {rate} Hz)")
+    samples = _decode_samples(path, pcm, tag, bits)
+    usable = len(samples) - len(samples) % channels
+    if usable == 0:
+        raise AudioError(f"{path}: WAV file holds no audio samples")
+    return samples[:usable].reshape(-1, channels), rate
+
+
+def _decode_samples(path: Path, pcm: bytes, tag: int, bits: int) -> npt.NDArray[np.float64]:
+    if tag == 1 and bits == 8:
+        return (np.frombuffer(pcm, dtype=np.uint8).astype(np.float64) - 128.0) / 128.0
+    if tag == 1 and bits == 16:
+        return np.frombuffer(pcm[: len(pcm) // 2 * 2], dtype="<i2").astype(np.float64) / 32768.0
+    if tag == 1 and bits == 24:
+        raw = np.frombuffer(pcm[: len(pcm) // 3 * 3], dtype=np.uint8).reshape(-1, 3).astype(np.int32)
+        values = raw[:, 0] | (raw[:, 1] << 8) | (raw[:, 2] << 16)
+        values = np.where(values >= 1 << 23, values - (1 << 24), values)
+        return values.astype(np.float64) / float(1 << 23)
+    if tag == 1 and bits == 32:
+        return np.frombuffer(pcm[: len(pcm) // 4 * 4], dtype="<i4").astype(np.float64) / float(1 << 31)
+    if tag == 3 and bits in (32, 64):
+        dtype = "<f4" if bits == 32 else "<f8"
+        size = bits // 8
+        return np.clip(np.frombuffer(pcm[: len(pcm) // size * size], dtype=dtype).astype(np.float64), -1.0, 1.0)
+    raise AudioError(f"{path}: unsupported WAV encoding (format tag {tag}, {bits} bits); use PCM or float")
+
+
+def to_model_audio(samples: npt.NDArray[np.float64], rate: int) -> npt.NDArray[np.int16]:
+    """Mix down to mono, resample to :data:`MODEL_RATE` and convert to 16-bit PCM.
+
+    Args:
+        samples: float samples in [-1, 1], shape (frames,) or (frames, channels).
+        rate: their sample rate (Hz).
+    """
+    mono = samples.mean(axis=1) if samples.ndim == 2 else samples
+    if rate != MODEL_RATE:
+        mono = resample(mono, rate, MODEL_RATE)
+    return np.asarray(np.clip(np.round(mono * 32767.0), -32768, 32767), dtype=np.int16)
+
+
+def resample(signal: npt.NDArray[np.float64], rate: int, target: int) -> npt.NDArray[np.float64]:
+    """Resample a mono signal: windowed-sinc low-pass below the lower Nyquist rate, then linear interpolation."""
+    if rate == target or len(signal) == 0:
+        return signal
+    if target < rate:
+        cutoff = 0.45 * target / rate  # cycles per input sample, a little under the new Nyquist rate
+        taps = np.arange(-32, 33)
+        kernel = 2 * cutoff * np.sinc(2 * cutoff * taps) * np.hamming(len(taps))
+        signal = np.convolve(signal, kernel / kernel.sum(), mode="same")
+    count = max(1, int(round(len(signal) * target / rate)))
+    positions = np.arange(count) * (rate / target)
+    return np.interp(positions, np.arange(len(signal)), signal)
+
+
+def load_audio(path: str | Path) -> npt.NDArray[np.int16]:
+    """A WAV file as 16 kHz mono 16-bit samples ready for the decoder (no padding)."""
+    samples, rate = read_wav(path)
+    return to_model_audio(samples, rate)
+
+
+def pad(audio: npt.NDArray[np.int16]) -> npt.NDArray[np.int16]:
+    """Add :data:`LEAD_SILENCE` and :data:`TRAIL_SILENCE` of near-silence.
+
+    The padding is faint deterministic noise (about 3 LSB RMS), not digital zeros: all-zero frames have no
+    defined log energy and upset the decoder's cepstral normalisation.
+    """
+    rng = np.random.default_rng(0)
+    lead = rng.normal(0.0, 3.0, int(LEAD_SILENCE * MODEL_RATE))
+    trail = rng.normal(0.0, 3.0, int(TRAIL_SILENCE * MODEL_RATE))
+    return np.concatenate([lead.astype(np.int16), audio, trail.astype(np.int16)])
+
+
+class Recognizer:
+    """pocketsphinx decoding against the command grammar of one vocabulary.
+
+    Args:
+        grammar: the command grammar (the one the text parser uses).
+        vocabulary: the world's spoken names.
+        filler_weight: prior of the filler loop against the command grammar (0 disables the loop; larger
+            values reject more, including real commands).
+
+    Raises:
+        LanguageError: pocketsphinx is missing or refuses the generated grammar.
+    """
+
+    def __init__(self, grammar: Grammar, vocabulary: Vocabulary, *, filler_weight: float = 0.1):
+        try:
+            from pocketsphinx import Decoder, set_loglevel
+        except ImportError as exc:  # pragma: no cover - pocketsphinx is a declared dependency
+            raise LanguageError(f"speech recognition needs pocketsphinx: {exc}") from exc
+        set_loglevel("FATAL")
+        self._decoder = Decoder(lm=None, loglevel="FATAL", **DECODER_OPTIONS)
+        command_words = grammar_words(grammar) | vocabulary.words()
+        #: words of the grammar or vocabulary that the pronunciation dictionary lacks (left out of the JSGF).
+        self.unknown_words = sorted(w for w in command_words if self._decoder.lookup_word(w) is None)
+        fillers = [w for w in FILLER_WORDS if w not in command_words] if filler_weight > 0 else []
+        self.fillers = frozenset(fillers)
+        self.jsgf = to_jsgf(
+            grammar, vocabulary, garbage=fillers, exclude_words=self.unknown_words, filler_weight=filler_weight
+        )
+        try:
+            self._decoder.add_jsgf_string("command", self.jsgf)
+            self._decoder.activate_search("command")
+        except (RuntimeError, ValueError) as exc:
+            raise LanguageError(f"pocketsphinx refused the generated JSGF grammar: {exc}") from exc
+
+    def recognize(self, audio: str | Path | npt.NDArray[np.int16]) -> Transcript:
+        """Decode one utterance: a WAV file path or 16 kHz mono int16 samples.
+
+        Raises:
+            AudioError: the file is not usable audio (see :func:`read_wav`).
+        """
+        samples = audio if isinstance(audio, np.ndarray) else load_audio(audio)
+        started = time.perf_counter()
+        decoder = self._decoder
+        decoder.start_utt()
+        decoder.process_raw(pad(samples).tobytes(), full_utt=True)
+        decoder.end_utt()
+        hyp = decoder.hyp()
+        elapsed = (time.perf_counter() - started) * 1000.0
+        duration = len(samples) / MODEL_RATE
+        if hyp is None or not hyp.hypstr.strip():
+            return Transcript("", False, 0.0, duration, elapsed)
+        text = " ".join(hyp.hypstr.split())
+        in_grammar = not any(word in self.fillers for word in text.split())
+        return Transcript(text, in_grammar, float(hyp.best_score), duration, elapsed)
+
+
+def recognize(wav_path: str | Path, grammar: Grammar, vocabulary: Vocabulary) -> Transcript:
+    """One-shot recognition of a WAV file (builds a :class:`Recognizer`; reuse one for many files)."""
+    return Recognizer(grammar, vocabulary).recognize(wav_path)

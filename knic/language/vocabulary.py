@@ -1,0 +1,331 @@
+"""The spoken vocabulary of a world: which phrases name which knowledge-base symbols.
+
+A :class:`Vocabulary` is built once from a knowledge base (its instances by type, the domain's type hierarchy
+and its ``level`` constants) plus a lexicon of spoken names (``worlds/<world>/lexicon.yaml``). The grammar
+(:mod:`knic.language.grammar`) takes its noun phrases from here, for the text parser and for the JSGF
+grammar alike, so both accept exactly the things the world has. The vocabulary is an immutable snapshot:
+instances added to the knowledge base later need a new vocabulary.
+
+Phrases are normalised text: lowercase words separated by single spaces (see :func:`normalize`).
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterable, Mapping, Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any, Protocol
+
+import yaml
+
+from knic.errors import LanguageError
+
+#: Number words for 0..100, enough for percent levels.
+_UNITS = (
+    "zero one two three four five six seven eight nine ten eleven twelve thirteen fourteen fifteen sixteen "
+    "seventeen eighteen nineteen"
+).split()
+_TENS = "_ _ twenty thirty forty fifty sixty seventy eighty ninety".split()
+_LEVEL_CONSTANT = re.compile(r"^l(\d{1,3})$")
+
+
+def number_words(value: int) -> str:
+    """Spell an integer in 0..100 as spoken English ("twenty five", "one hundred").
+
+    Raises:
+        ValueError: the value is outside 0..100.
+    """
+    if not 0 <= value <= 100:
+        raise ValueError(f"number {value} is outside 0..100")
+    if value == 100:
+        return "one hundred"
+    if value < 20:
+        return _UNITS[value]
+    tens, unit = divmod(value, 10)
+    return _TENS[tens] if unit == 0 else f"{_TENS[tens]} {_UNITS[unit]}"
+
+
+def normalize(text: str) -> str:
+    """Normalise a typed or recognised command to the grammar's token form.
+
+    Lowercases, reads ``%`` as "percent", spells numbers 0..100 as words, turns hyphens and underscores into
+    spaces, drops other punctuation (commas and full stops separate nothing the grammar needs), and collapses
+    whitespace. ``normalize("Half-open the blinds, please!") == "half open the blinds please"``.
+    """
+    text = text.lower().replace("%", " percent ").replace("-", " ").replace("_", " ")
+    text = re.sub(r"\d+", lambda m: number_words(int(m.group())) if int(m.group()) <= 100 else m.group(), text)
+    text = re.sub(r"[^a-z0-9' ]+", " ", text)
+    return " ".join(text.split())
+
+
+class KnowledgeSource(Protocol):
+    """What the vocabulary reads from a knowledge base (a subset of ``knowledge_base.KnowledgeBase``)."""
+
+    @property
+    def domain(self) -> Any:
+        """The domain model: ``types`` ({type: parent}) and ``constants`` are read."""
+
+    def instances(self, type: str | None = None) -> list[str]:
+        """Instance names, of a type and its subtypes when given."""
+
+    def type_of(self, name: str) -> str | None:
+        """The declared type of an instance, or None."""
+
+
+@dataclass(frozen=True)
+class Term:
+    """One spoken phrase and what it names.
+
+    Attributes:
+        phrase: normalised spoken words, e.g. ``"reading glasses"``.
+        symbol: the knowledge-base symbol (``"glasses"``), or a group's name (``"all_lights"``).
+        type: the symbol's PDDL type (for a group: its members' common type).
+        members: the symbols a group stands for; ``(symbol,)`` for a plain term.
+    """
+
+    phrase: str
+    symbol: str
+    type: str
+    members: tuple[str, ...]
+
+    @property
+    def is_group(self) -> bool:
+        """True when the phrase names several symbols at once."""
+        return self.members != (self.symbol,)
+
+
+@dataclass(frozen=True)
+class GroupSpec:
+    """A lexicon group: a name, its phrases, and either a member type or explicit members."""
+
+    name: str
+    phrases: tuple[str, ...]
+    type: str | None = None
+    members: tuple[str, ...] = ()
+
+
+@dataclass(frozen=True)
+class Lexicon:
+    """Spoken names from a lexicon file: ``names`` {symbol: phrases} and ``groups``."""
+
+    names: Mapping[str, tuple[str, ...]] = field(default_factory=dict)
+    groups: tuple[GroupSpec, ...] = ()
+
+    @classmethod
+    def load(cls, path: str | Path) -> Lexicon:
+        """Read a lexicon YAML file (format in ``worlds/erl_home/lexicon.yaml``).
+
+        Raises:
+            LanguageError: the file is missing or malformed; the message names the file and the entry.
+        """
+        path = Path(path)
+        try:
+            data = yaml.safe_load(path.read_text(encoding="utf-8")) or {}
+        except (OSError, yaml.YAMLError) as exc:
+            raise LanguageError(f"{path}: cannot read lexicon: {exc}") from exc
+        if not isinstance(data, dict):
+            raise LanguageError(f"{path}: a lexicon is a mapping with 'names' and 'groups'")
+        names: dict[str, tuple[str, ...]] = {}
+        for symbol, phrases in (data.get("names") or {}).items():
+            if not isinstance(phrases, list) or not all(isinstance(p, str) for p in phrases):
+                raise LanguageError(f"{path}: names.{symbol} must be a list of phrases")
+            names[str(symbol)] = tuple(normalize(p) for p in phrases)
+        groups = []
+        for name, spec in (data.get("groups") or {}).items():
+            if not isinstance(spec, dict) or not spec.get("names") or ("type" in spec) == ("members" in spec):
+                raise LanguageError(f"{path}: groups.{name} needs 'names' and exactly one of 'type', 'members'")
+            groups.append(
+                GroupSpec(
+                    name=str(name),
+                    phrases=tuple(normalize(p) for p in spec["names"]),
+                    type=spec.get("type"),
+                    members=tuple(spec.get("members") or ()),
+                )
+            )
+        return cls(names=names, groups=tuple(groups))
+
+
+def level_percent(symbol: str) -> int | None:
+    """The percentage of a ``level`` constant named ``lNN`` (``"l50"`` -> 50), else None."""
+    match = _LEVEL_CONSTANT.match(symbol)
+    return int(match.group(1)) if match and int(match.group(1)) <= 100 else None
+
+
+class Vocabulary:
+    """Spoken phrases for a world's instances, with the type hierarchy to match them against slots.
+
+    Build with :meth:`from_knowledge_base` (normal use) or :meth:`from_instances` (tests, tools).
+    ``level`` constants named ``lNN`` become the spoken numbers "NN" so that "fifty percent" names ``l50``.
+    """
+
+    def __init__(
+        self,
+        terms: Iterable[Term],
+        types: Mapping[str, str | None],
+        instances: Mapping[str, str],
+        predicates: Mapping[str, tuple[tuple[str, str], ...]] | None = None,
+    ):
+        self._terms = tuple(terms)
+        self._types = dict(types)
+        self._instances = dict(instances)
+        #: predicate -> ((parameter, type), ...) from the domain; goals are checked against it.
+        self.predicates: dict[str, tuple[tuple[str, str], ...]] = dict(predicates or {})
+        robots = sorted(s for s, t in self._instances.items() if self.is_subtype(t, "robot"))
+        #: the robot that carries out commands (the first robot instance), or None.
+        self.robot: str | None = robots[0] if robots else None
+        by_first: dict[str, list[Term]] = {}
+        for term in self._terms:
+            by_first.setdefault(term.phrase.split()[0], []).append(term)
+        self._by_first = by_first
+
+    @classmethod
+    def from_instances(
+        cls,
+        instances: Mapping[str, str],
+        types: Mapping[str, str | None],
+        lexicon: Lexicon | None = None,
+        predicates: Mapping[str, tuple[tuple[str, str], ...]] | None = None,
+    ) -> Vocabulary:
+        """Build from ``{instance or constant: type}``, ``{type: parent type}`` and the domain's predicates.
+
+        Symbols get their lexicon phrases, or their own name spoken (underscores as spaces). Lexicon
+        entries for symbols not in ``instances`` are ignored. Groups whose members are all missing are left
+        out; members that are missing are dropped from the group.
+        """
+        lexicon = lexicon or Lexicon()
+        terms: list[Term] = []
+        for symbol, type_name in sorted(instances.items()):
+            if type_name == "level":
+                percent = level_percent(symbol)
+                phrases: tuple[str, ...] = (number_words(percent),) if percent is not None else ()
+            else:
+                phrases = lexicon.names.get(symbol) or (normalize(symbol),)
+            terms.extend(Term(p, symbol, type_name, (symbol,)) for p in phrases)
+        for group in lexicon.groups:
+            if group.type is not None:
+                members = tuple(s for s, t in sorted(instances.items()) if _is_subtype(types, t, group.type))
+                group_type = group.type
+            else:
+                members = tuple(m for m in group.members if m in instances)
+                kinds = {instances[m] for m in members}
+                group_type = kinds.pop() if len(kinds) == 1 else "device"
+            if members:
+                terms.extend(Term(p, group.name, group_type, members) for p in group.phrases)
+        return cls(terms, types, instances, predicates)
+
+    @classmethod
+    def from_knowledge_base(cls, kb: KnowledgeSource, lexicon: Lexicon | str | Path | None = None) -> Vocabulary:
+        """Build from a knowledge base's instances and its domain's ``level`` constants.
+
+        Args:
+            kb: the knowledge base (read once; later changes are not seen).
+            lexicon: a :class:`Lexicon`, a lexicon file, or None for spoken symbol names only.
+        """
+        if lexicon is not None and not isinstance(lexicon, Lexicon):
+            lexicon = Lexicon.load(lexicon)
+        domain = kb.domain
+        types: dict[str, str | None] = dict(getattr(domain, "types", {}) or {})
+        instances: dict[str, str] = {}
+        for name in kb.instances():
+            type_name = kb.type_of(name)
+            if type_name:
+                instances[name] = type_name
+        instances.update(_constants(getattr(domain, "constants", {})))
+        predicates = dict(getattr(domain, "predicates", {}) or {})
+        return cls.from_instances(instances, types, lexicon, predicates)
+
+    @property
+    def instances(self) -> dict[str, str]:
+        """Every instance and constant of the world: {symbol: type}."""
+        return dict(self._instances)
+
+    def level(self, percent: int) -> str | None:
+        """The ``level`` constant for a percentage (50 -> ``"l50"``), or None when the domain has none."""
+        for symbol, type_name in self._instances.items():
+            if type_name == "level" and level_percent(symbol) == percent:
+                return symbol
+        return None
+
+    @property
+    def terms(self) -> tuple[Term, ...]:
+        """Every phrase of the vocabulary."""
+        return self._terms
+
+    def is_subtype(self, type_name: str, ancestor: str) -> bool:
+        """True when ``type_name`` is ``ancestor`` or derives from it in the domain's hierarchy."""
+        return _is_subtype(self._types, type_name, ancestor)
+
+    def terms_of(self, categories: Sequence[str], *, groups: bool = False) -> list[Term]:
+        """The terms whose type falls under one of ``categories``; group terms only when ``groups``."""
+        return [
+            t
+            for t in self._terms
+            if (groups or not t.is_group) and any(self.is_subtype(t.type, c) for c in categories)
+        ]
+
+    def match(
+        self, tokens: Sequence[str], start: int, categories: Sequence[str], *, groups: bool = False
+    ) -> list[tuple[int, Term]]:
+        """Terms of ``categories`` spoken at ``tokens[start:]``, as (end index, term), longest first."""
+        if start >= len(tokens):
+            return []
+        found = []
+        for term in self._by_first.get(tokens[start], ()):
+            if (groups or not term.is_group) and any(self.is_subtype(term.type, c) for c in categories):
+                words = term.phrase.split()
+                if tuple(tokens[start : start + len(words)]) == tuple(words):
+                    found.append((start + len(words), term))
+        found.sort(key=lambda pair: -pair[0])
+        return found
+
+    def type_of(self, symbol: str) -> str | None:
+        """The type of an instance, constant or group name known to the vocabulary."""
+        if symbol in self._instances:
+            return self._instances[symbol]
+        for term in self._terms:
+            if term.symbol == symbol:
+                return term.type
+        return None
+
+    def members(self, symbol: str) -> tuple[str, ...]:
+        """The symbols a name stands for: the group's members, or ``(symbol,)``."""
+        for term in self._terms:
+            if term.symbol == symbol:
+                return term.members
+        return (symbol,)
+
+    def phrase_of(self, symbol: str) -> str:
+        """The first spoken phrase for a symbol (for replies), or the symbol spoken."""
+        for term in self._terms:
+            if term.symbol == symbol:
+                return term.phrase
+        return normalize(symbol)
+
+    def words(self) -> set[str]:
+        """Every word used by a phrase."""
+        return {w for t in self._terms for w in t.phrase.split()}
+
+
+def _is_subtype(types: Mapping[str, str | None], type_name: str, ancestor: str) -> bool:
+    seen = set()
+    current: str | None = type_name
+    while current is not None and current not in seen:
+        if current == ancestor:
+            return True
+        seen.add(current)
+        current = types.get(current)
+    return ancestor == "object"
+
+
+def _constants(constants: Any) -> dict[str, str]:
+    """Domain constants as {name: type}, from a mapping or from (name, type) pairs."""
+    if isinstance(constants, Mapping):
+        return {str(k): str(v) for k, v in constants.items()}
+    result = {}
+    for item in constants or ():
+        if isinstance(item, tuple) and len(item) == 2:
+            result[str(item[0])] = str(item[1])
+        elif hasattr(item, "name") and hasattr(item, "type"):
+            result[str(item.name)] = str(item.type)
+    return result

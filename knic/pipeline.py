@@ -1,0 +1,200 @@
+"""Assembly of the inference pipeline: KGM-1 providers, the KGM-2 cognitive layer and the KGM-3 KP'.
+
+Usage by the closed loop::
+
+    world = load_world("erl_home")
+    sim = Simulation(world, seed=3)
+    kb = KnowledgeBase.from_pddl(DOMAIN, clock=lambda: sim.time)
+    seed_kb_from_world(kb, world)
+    pipeline = build_pipeline(kb, sim, world, role="companion")
+    scheduler = Scheduler(real_time_factor=10.0)
+    for component in pipeline:
+        scheduler.add(component)
+    # loop: sim.step(dt); scheduler.tick(sim.time)
+
+Components are returned in data-flow order (providers, cognition, KP'), which is also the order the scheduler
+steps components due at the same instant, so a percept reaches the knowledge base within one tick.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import TYPE_CHECKING, Protocol
+
+from knic.bus import Bus
+from knic.kgm1.camera import CameraObjectsKP, CameraPeopleKP
+from knic.kgm1.locations import LocationModel, LocationsKP, build_location_model
+from knic.kgm1.providers import DeviceKP, RobotPoseKP, SoundKP
+from knic.kgm1.sources import SharedCamera
+from knic.kgm2.cognition import CognitiveLayer, TrackingConfig
+from knic.kgm2.roles import ROLES_FILE, Role, load_role
+from knic.kgm3.places import ObjectPlaceKP, PersonPlaceKP, RobotAtKP
+from knic.kgm3.relations import DeviceStateKP, PersonNearKP, SoundAtKP
+from knic.kgm3.search import CandidatesKP, ExploredKP, priors_from_world
+from knic.scheduler import Component
+from knowledge_base import KnowledgeBase
+from worlds.api import CameraFrame, Pose2D, SoundEvent
+
+if TYPE_CHECKING:
+    from worlds.model import World
+
+
+class SensorSuite(Protocol):
+    """Every sensor the pipeline reads, plus the simulated clock.
+
+    ``worlds.api.SimulationAPI`` satisfies it; tests pass doubles checked against it.
+    """
+
+    @property
+    def time(self) -> float:
+        """Simulated seconds since the start of the episode."""
+        ...
+
+    def camera_frame(self) -> CameraFrame:
+        """The camera frame now."""
+        ...
+
+    def robot_pose(self) -> Pose2D:
+        """The localisation estimate now."""
+        ...
+
+    def poll_sounds(self) -> list[SoundEvent]:
+        """Sounds heard since the previous call."""
+        ...
+
+    def device_states(self) -> dict[str, float | bool]:
+        """Every device's reading."""
+        ...
+
+
+@dataclass
+class PipelineOptions:
+    """Tunables of the pipeline (defaults suit the ERL apartment).
+
+    Attributes:
+        camera_hz: camera KP rate; None: the role's top rate for perceived classes.
+        object_detect_range: metres within which items are reliably detected (visibility for misses).
+        person_detect_range: the same for people.
+        needed: consecutive consistent observations before a place fact changes.
+        explored_ttl_s: seconds an ``explored`` fact lives.
+        max_candidates: candidate rooms per entity of unknown place.
+        tracking: association parameters.
+        roles_file: the role file.
+    """
+
+    camera_hz: float | None = None
+    object_detect_range: float = 4.0
+    person_detect_range: float = 6.0
+    needed: int = 2
+    explored_ttl_s: float = 120.0
+    max_candidates: int = 3
+    tracking: TrackingConfig = field(default_factory=TrackingConfig)
+    roles_file: Path = ROLES_FILE
+
+
+class Pipeline(list[Component]):
+    """The pipeline's components in data-flow order, plus handles on its parts for the loop and benchmarks."""
+
+    def __init__(
+        self,
+        components: list[Component],
+        *,
+        bus: Bus,
+        role: Role,
+        locations: LocationModel,
+        cognition: CognitiveLayer,
+        camera: SharedCamera,
+    ) -> None:
+        super().__init__(components)
+        self.bus = bus
+        self.role = role
+        self.locations = locations
+        self.cognition = cognition
+        self.camera = camera
+
+    def component(self, name: str) -> Component:
+        """The component of that name (KeyError when absent)."""
+        for c in self:
+            if c.name == name:
+                return c
+        raise KeyError(name)
+
+
+def build_pipeline(
+    kb: KnowledgeBase,
+    sim: SensorSuite,
+    world: World,
+    role: str | Role = "companion",
+    *,
+    robot: str | None = None,
+    options: PipelineOptions | None = None,
+    bus: Bus | None = None,
+) -> Pipeline:
+    """Build every KnIC inference component for one run (nothing is stepped yet).
+
+    Args:
+        kb: the knowledge base the KP' write (seed it first with :func:`knic.seed.seed_kb_from_world`).
+        sim: the sensors and the simulated clock.
+        world: the world data (room map, furniture, devices, priors).
+        role: a role name from the role file or a :class:`Role`.
+        robot: the robot's symbol (default: the world's robot).
+        options: tunables.
+        bus: the message bus (a new one by default).
+
+    Raises:
+        knic.errors.InferenceError: unknown role or malformed role file.
+    """
+    opts = options or PipelineOptions()
+    the_role = role if isinstance(role, Role) else load_role(role, opts.roles_file)
+    bus = bus or Bus()
+    robot_name = robot or world.robot.name
+    locations = build_location_model(world, entity_resolution=opts.tracking.resolution)
+    camera = SharedCamera(sim, lambda: sim.time)
+    camera_hz = opts.camera_hz or the_role.max_rate(exclude=("robot", "doorbell"))
+    class_symbols = _unique_classes(world)
+    providers: list[Component] = [
+        LocationsKP(locations, bus, kb),
+        RobotPoseKP(sim, bus, robot_name, frequency=10.0),
+        CameraObjectsKP(
+            camera, bus, kb, class_symbols, frequency=camera_hz, detect_range=opts.object_detect_range
+        ),
+        CameraPeopleKP(camera, bus, kb, frequency=camera_hz, detect_range=opts.person_detect_range),
+        SoundKP(sim, bus, kb, frequency=10.0),
+        DeviceKP(
+            sim,
+            bus,
+            {d.name: d.kind for d in world.devices.values()},
+            {d.name: d.position for d in world.devices.values()},
+            frequency=2.0,
+        ),
+    ]
+    cognition = CognitiveLayer(bus, the_role, locations, config=opts.tracking, frequency=10.0)
+    kp_primes: list[Component] = [
+        RobotAtKP(bus, kb, locations, needed=opts.needed),
+        ObjectPlaceKP(bus, kb, locations, needed=opts.needed),
+        PersonPlaceKP(bus, kb, locations, ttl_s=the_role.person_ttl_s, needed=opts.needed),
+        PersonNearKP(bus, kb, needed=opts.needed),
+        SoundAtKP(bus, kb, locations),
+        DeviceStateKP(bus, kb),
+        ExploredKP(bus, kb, locations, ttl_s=opts.explored_ttl_s),
+        CandidatesKP(
+            bus, kb, priors_from_world(world), list(world.rooms), max_candidates=opts.max_candidates
+        ),
+    ]
+    return Pipeline(
+        [*providers, cognition, *kp_primes],
+        bus=bus,
+        role=the_role,
+        locations=locations,
+        cognition=cognition,
+        camera=camera,
+    )
+
+
+def _unique_classes(world: World) -> dict[str, str]:
+    """Detector class -> item symbol for the classes that name exactly one item."""
+    by_class: dict[str, list[str]] = {}
+    for name, item in world.items.items():
+        by_class.setdefault(item.cls, []).append(name)
+    return {cls: names[0] for cls, names in by_class.items() if len(names) == 1}

@@ -1,0 +1,176 @@
+"""Knowledge units: what flows between the three knowledge generation mechanisms (seed 004, section II.A).
+
+* :class:`LLKU` (low-level knowledge unit), made by a KGM-1 knowledge provider (KP) from one sensor: one
+  perceived element (object, person, robot pose, sound, device reading, location) with its time stamp, the
+  sensor and provider it came from, a confidence and its geometry in the **world frame** (metres, the
+  simulator's global ``map`` frame; z up).
+* :class:`CKU` (cognitive knowledge unit), made by KGM-2: an LLKU put in context. It names the entity's PDDL
+  symbol, its class, the octomap that represents the space it occupies (in the world frame), the voxel keys
+  currently occupied in that octomap, the priority the robot's role gives it, and the ids of the LLKUs behind
+  it (for provenance: the KB's ``support``).
+
+Time stamps are **simulated seconds** (the scheduler's clock), never wall-clock time. Units are immutable once
+made; the arrays they carry are marked read-only so a consumer cannot change what another consumer sees.
+"""
+
+from __future__ import annotations
+
+import itertools
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from enum import StrEnum
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+import numpy.typing as npt
+
+from knic.errors import InferenceError
+
+if TYPE_CHECKING:
+    import pyoctomap
+
+#: Float arrays of world-frame points, shape (N, 3), metres.
+Points = npt.NDArray[np.float64]
+#: Integer arrays of octomap voxel keys, shape (N, 3) (octomap's 16-bit keys, stored as int64).
+Keys = npt.NDArray[np.int64]
+
+_EMPTY_POINTS: Points = np.zeros((0, 3), dtype=np.float64)
+_EMPTY_POINTS.setflags(write=False)
+_EMPTY_KEYS: Keys = np.zeros((0, 3), dtype=np.int64)
+_EMPTY_KEYS.setflags(write=False)
+
+_ids = itertools.count(1)
+
+
+def new_unit_id(prefix: str) -> str:
+    """Return a process-unique id such as ``"llku:17"``; ids are what fact provenance cites as support."""
+    return f"{prefix}:{next(_ids)}"
+
+
+class Kind(StrEnum):
+    """What a knowledge unit is about; also the second level of its bus topic (``percept.<kind>...``)."""
+
+    OBJECT = "object"
+    PERSON = "person"
+    ROBOT = "robot"
+    SOUND = "sound"
+    DEVICE = "device"
+    LOCATION = "location"
+
+
+def as_points(value: Any, where: str) -> Points:
+    """Return ``value`` as a read-only (N, 3) float64 array of finite world-frame points.
+
+    Raises:
+        InferenceError: the value is not an (N, 3) array of finite numbers; ``where`` names the caller.
+    """
+    if value is None:
+        return _EMPTY_POINTS
+    if isinstance(value, np.ndarray) and value.dtype == np.float64 and not value.flags.writeable:
+        arr: Points = value
+    else:
+        arr = np.array(value, dtype=np.float64)
+    if arr.size == 0:
+        return _EMPTY_POINTS
+    if arr.ndim != 2 or arr.shape[1] != 3:
+        raise InferenceError(f"{where}: points must have shape (N, 3), got {arr.shape}")
+    if not np.isfinite(arr).all():
+        raise InferenceError(f"{where}: points contain NaN or infinite values")
+    arr.setflags(write=False)
+    return arr
+
+
+@dataclass(frozen=True, eq=False)
+class LLKU:
+    """A low-level knowledge unit: one element perceived by one sensor at one instant.
+
+    Attributes:
+        kind: what was perceived.
+        label: its class as the sensor names it (``"glasses"``, ``"person"``, ``"doorbell"``, ``"robot"``).
+        source: the KP that made it (``"kp.camera_objects"``); the sensor is in ``sensor``.
+        sensor: the sensor the reading came from (``"head_camera"``, ``"microphone"``, ``"odometry"``).
+        stamp: simulated time of the reading, seconds.
+        confidence: the KP's confidence in [0, 1].
+        position: representative point in the world frame (centroid, pose or source position), metres.
+        points: world-frame points behind the unit, shape (N, 3); empty when the sensor gives none.
+        sensor_origin: world-frame position of the sensor when it measured ``points`` (for ray casting).
+        identity: the PDDL symbol of the individual when the sensor recognises it (``"jack"``), else None.
+        attributes: further readings (yaw in radians, a device's state, a room reported by the sensor ...).
+        uid: unique id, cited as provenance ``support``.
+    """
+
+    kind: Kind
+    label: str
+    source: str
+    sensor: str
+    stamp: float
+    confidence: float
+    position: tuple[float, float, float]
+    points: Points = field(default_factory=lambda: _EMPTY_POINTS)
+    sensor_origin: tuple[float, float, float] | None = None
+    identity: str | None = None
+    attributes: Mapping[str, Any] = field(default_factory=dict)
+    uid: str = field(default_factory=lambda: new_unit_id("llku"))
+
+    def __post_init__(self) -> None:
+        where = f"LLKU {self.kind.value}/{self.label} from {self.source}"
+        if not self.label:
+            raise InferenceError(f"{where}: empty label")
+        if not 0.0 <= self.confidence <= 1.0:
+            raise InferenceError(f"{where}: confidence {self.confidence} outside [0, 1]")
+        if len(self.position) != 3 or not all(np.isfinite(self.position)):
+            raise InferenceError(f"{where}: position {self.position!r} is not a finite 3D point")
+        object.__setattr__(self, "points", as_points(self.points, where))
+        object.__setattr__(self, "position", tuple(float(v) for v in self.position))
+
+    @property
+    def symbol(self) -> str:
+        """The symbol the unit names: its identity when recognised, else its class label."""
+        return self.identity or self.label
+
+
+@dataclass(frozen=True, eq=False)
+class CKU:
+    """A cognitive knowledge unit: a tracked entity or a location in its spatial and motivational context.
+
+    Attributes:
+        symbol: the entity's PDDL symbol (``"glasses"``, ``"jack"``, ``"kitchen"``, ``"r2d2"``).
+        cls: its class (``"glasses"``, ``"person"``, ``"room"``, ``"robot"``).
+        kind: what it is about.
+        octomap: the entity's ``pyoctomap.OcTree`` in the world frame (owned and updated by KGM-2; read it, do
+            not write), or None for units without volume (pose, sound, device).
+        keys: voxel keys occupied by the latest observation, in the octomap key space of
+            :data:`knic.kgm2.spatial.DEFAULT_RESOLUTION`; what KP' intersect with room and furniture volumes.
+        position: the entity's tracked centroid in the world frame, metres.
+        role_priority: priority the active role gives this class / room (higher first).
+        stamp: simulated time of the last update, seconds.
+        confidence: KGM-2's confidence in the association, in [0, 1].
+        support: ids of the LLKUs behind this update.
+        track_id: KGM-2's track id (stable while the entity is tracked).
+        attributes: copied from the LLKU (device state, sound source, yaw ...).
+        uid: unique id, cited as provenance ``support``.
+    """
+
+    symbol: str
+    cls: str
+    kind: Kind
+    octomap: pyoctomap.OcTree | None
+    keys: Keys
+    position: tuple[float, float, float]
+    role_priority: int
+    stamp: float
+    confidence: float
+    support: tuple[str, ...] = ()
+    track_id: int = 0
+    attributes: Mapping[str, Any] = field(default_factory=dict)
+    uid: str = field(default_factory=lambda: new_unit_id("cku"))
+
+    def __post_init__(self) -> None:
+        keys = np.asarray(self.keys, dtype=np.int64)
+        if keys.size == 0:
+            keys = _EMPTY_KEYS
+        elif keys.ndim != 2 or keys.shape[1] != 3:
+            raise InferenceError(f"CKU {self.symbol}: keys must have shape (N, 3), got {keys.shape}")
+        else:
+            keys.setflags(write=False)
+        object.__setattr__(self, "keys", keys)

@@ -1,0 +1,247 @@
+"""The PDDL domain as the knowledge base sees it: types, predicates, constants, functions, actions, metadata.
+
+A :class:`DomainModel` is built once from a domain file (or from the domain text stored in a journal) through
+unified-planning's ``PDDLReader`` and the optional ``<domain stem>.meta.yaml`` sidecar, which says in data what
+PDDL cannot: which predicates are single-valued (``single_valued: {robot_at: [0]}``) and which actions are
+sensing actions (``sensing: {search_object: [found, object_at]}``). It is immutable after construction and
+precomputes the per-predicate type tables that make validating a write a few dictionary look-ups.
+
+Failure behaviour: a file that does not parse raises :class:`~knic.errors.PDDLParseError` naming file, line,
+column and what the parser expected; a domain or sidecar that parses but is inconsistent raises
+:class:`~knic.errors.PDDLValidationError`.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+import yaml
+
+from knic.errors import PDDLParseError, PDDLValidationError
+
+__all__ = ["DomainModel", "meta_path_for", "parse_with_up"]
+
+#: Root of every PDDL type hierarchy.
+OBJECT = "object"
+
+
+def meta_path_for(domain_path: Path) -> Path:
+    """The sidecar path for a domain: ``worlds/erl_home/domain.pddl`` -> ``worlds/erl_home/domain.meta.yaml``."""
+    return domain_path.with_name(f"{domain_path.stem}.meta.yaml")
+
+
+def parse_with_up(domain_text: str, problem_text: str | None, domain_file: str, problem_file: str | None) -> Any:
+    """Parse PDDL text with unified-planning, turning its exceptions into the project's error tree.
+
+    Args:
+        domain_text: Domain PDDL.
+        problem_text: Problem PDDL, or None for the domain alone.
+        domain_file: Name used in messages for the domain.
+        problem_file: Name used in messages for the problem.
+
+    Returns:
+        The ``unified_planning.model.Problem``. With a problem, the domain must already be known to parse
+        (load it alone first), so that every error can be attributed to the right file.
+
+    Raises:
+        PDDLParseError: a syntax error (file, line, column, what was expected).
+        PDDLValidationError: unified-planning refused the content (undefined type, unknown symbol, ...).
+    """
+    import pyparsing
+    from unified_planning.io import PDDLReader
+
+    if problem_text is None:
+        try:
+            return PDDLReader().parse_problem_string(domain_text)
+        except pyparsing.ParseBaseException as exc:
+            raise _parse_error(domain_file, exc) from None
+        except Exception as exc:  # unified-planning raises SyntaxError, UPException, AssertionError...
+            raise PDDLValidationError(f"{domain_file}: {_first_line(exc)}") from None
+    # With a problem, the caller has already loaded the domain alone, so any error is the problem's.
+    try:
+        return PDDLReader().parse_problem_string(domain_text, problem_text)
+    except pyparsing.ParseBaseException as exc:
+        raise _parse_error(problem_file or "<problem>", exc) from None
+    except Exception as exc:
+        raise PDDLValidationError(f"{problem_file}: {_first_line(exc)}") from None
+
+
+def _parse_error(file: str, exc: Any) -> PDDLParseError:
+    return PDDLParseError(f"{file}:{exc.lineno}:{exc.col}: {exc.msg}, found {_found(exc)}")
+
+
+def _found(exc: Any) -> str:
+    text = exc.pstr[exc.loc : exc.loc + 20].split("\n")[0].strip()
+    return repr(text) if text else "end of file"
+
+
+def _first_line(exc: BaseException) -> str:
+    text = str(exc).replace("\n", " ").strip() or type(exc).__name__
+    return text
+
+
+@dataclass(frozen=True)
+class DomainModel:
+    """A parsed PDDL domain plus its metadata; immutable, shared by a knowledge base and its readers.
+
+    Attributes:
+        name: The domain's name.
+        types: Type -> parent type (``"object"`` for top-level types).
+        predicates: Predicate -> ((parameter, type), ...).
+        constants: Constant name -> type; constants are instances of every knowledge base on this domain.
+        functions: Numeric function -> ((parameter, type), ...).
+        actions: Action names (instantaneous and durative), in file order.
+        single_valued: Predicate -> argument positions that determine the rest.
+        sensing: Sensing action -> predicates of its effects that perception must confirm.
+        text: The domain PDDL text (stored in journals so a reader needs only the journal file).
+        meta_text: The sidecar YAML text ("" when there is none).
+        source: Where the domain came from (file path or "<journal>"), for messages.
+        up_domain: unified-planning ``Problem`` holding the domain (its objects are the constants).
+    """
+
+    name: str
+    types: Mapping[str, str]
+    predicates: Mapping[str, tuple[tuple[str, str], ...]]
+    constants: Mapping[str, str]
+    functions: Mapping[str, tuple[tuple[str, str], ...]]
+    actions: tuple[str, ...]
+    single_valued: Mapping[str, tuple[int, ...]]
+    sensing: Mapping[str, tuple[str, ...]]
+    text: str
+    meta_text: str
+    source: str
+    up_domain: Any = field(repr=False, compare=False)
+    _subtypes: Mapping[str, frozenset[str]] = field(repr=False, compare=False, default_factory=dict)
+
+    # ----------------------------------------------------------------- construction
+    @classmethod
+    def from_file(cls, domain_path: str | Path) -> DomainModel:
+        """Load a domain file and its ``<stem>.meta.yaml`` sidecar when present.
+
+        Raises:
+            PDDLParseError: the file is missing or does not parse.
+            PDDLValidationError: the domain or sidecar is inconsistent.
+        """
+        path = Path(domain_path)
+        try:
+            text = path.read_text(encoding="utf-8")
+        except OSError as exc:
+            raise PDDLParseError(f"{path}: cannot read domain file ({exc.strerror or exc})") from None
+        meta = meta_path_for(path)
+        meta_text = meta.read_text(encoding="utf-8") if meta.is_file() else ""
+        return cls.from_text(text, meta_text, source=str(path), meta_source=str(meta))
+
+    @classmethod
+    def from_text(
+        cls, text: str, meta_text: str = "", *, source: str = "<domain>", meta_source: str = "<meta>"
+    ) -> DomainModel:
+        """Build a domain model from PDDL text and sidecar YAML text (see :meth:`from_file`)."""
+        problem = parse_with_up(text, None, source, None)
+        types: dict[str, str] = {}
+        for t in problem.user_types:
+            types[t.name] = t.father.name if t.father is not None else OBJECT
+        predicates: dict[str, tuple[tuple[str, str], ...]] = {}
+        functions: dict[str, tuple[tuple[str, str], ...]] = {}
+        for fluent in problem.fluents:
+            sig = tuple((p.name, p.type.name if p.type.is_user_type() else str(p.type)) for p in fluent.signature)
+            if fluent.type.is_bool_type():
+                predicates[fluent.name] = sig
+            else:
+                functions[fluent.name] = sig
+        constants = {o.name: o.type.name for o in problem.all_objects}
+        actions = tuple(a.name for a in problem.actions)
+        single_valued, sensing = _parse_meta(meta_text, meta_source, predicates, actions)
+        subtypes = _subtype_closure(types)
+        return cls(
+            name=problem.name,
+            types=types,
+            predicates=predicates,
+            constants=constants,
+            functions=functions,
+            actions=actions,
+            single_valued=single_valued,
+            sensing=sensing,
+            text=text,
+            meta_text=meta_text,
+            source=source,
+            up_domain=problem,
+            _subtypes=subtypes,
+        )
+
+    # ----------------------------------------------------------------- queries
+    def is_type(self, name: str) -> bool:
+        """Whether ``name`` is a declared type (or ``object``)."""
+        return name == OBJECT or name in self.types
+
+    def is_subtype(self, type_name: str, ancestor: str) -> bool:
+        """Whether ``type_name`` equals ``ancestor`` or descends from it."""
+        return type_name in self._subtypes.get(ancestor, ())
+
+    def subtypes(self, type_name: str) -> frozenset[str]:
+        """``type_name`` and all its descendants (empty for an unknown type)."""
+        return self._subtypes.get(type_name, frozenset())
+
+    def signature(self, name: str) -> tuple[tuple[str, str], ...] | None:
+        """Parameters of a predicate or function, or None if neither exists."""
+        sig = self.predicates.get(name)
+        return sig if sig is not None else self.functions.get(name)
+
+
+def _subtype_closure(types: Mapping[str, str]) -> dict[str, frozenset[str]]:
+    children: dict[str, set[str]] = {}
+    for t, parent in types.items():
+        children.setdefault(parent, set()).add(t)
+
+    def collect(t: str) -> frozenset[str]:
+        out = {t}
+        for child in children.get(t, ()):
+            out |= collect(child)
+        return frozenset(out)
+
+    closure = {t: collect(t) for t in types}
+    closure[OBJECT] = collect(OBJECT)
+    return closure
+
+
+def _parse_meta(
+    meta_text: str,
+    meta_source: str,
+    predicates: Mapping[str, tuple[tuple[str, str], ...]],
+    actions: tuple[str, ...],
+) -> tuple[dict[str, tuple[int, ...]], dict[str, tuple[str, ...]]]:
+    if not meta_text.strip():
+        return {}, {}
+    try:
+        data = yaml.safe_load(meta_text) or {}
+    except yaml.YAMLError as exc:
+        mark = getattr(exc, "problem_mark", None)
+        where = f"{meta_source}:{mark.line + 1}" if mark is not None else meta_source
+        raise PDDLParseError(f"{where}: invalid YAML ({getattr(exc, 'problem', exc)})") from None
+    if not isinstance(data, dict):
+        raise PDDLValidationError(f"{meta_source}: expected a mapping with 'single_valued' and 'sensing'")
+    single: dict[str, tuple[int, ...]] = {}
+    for pred, positions in (data.get("single_valued") or {}).items():
+        if pred not in predicates:
+            raise PDDLValidationError(f"{meta_source}: single_valued names unknown predicate {pred!r}")
+        arity = len(predicates[pred])
+        if not isinstance(positions, list) or not all(
+            isinstance(p, int) and 0 <= p < arity for p in positions
+        ):
+            raise PDDLValidationError(
+                f"{meta_source}: single_valued {pred}: expected a list of argument positions 0..{arity - 1}"
+            )
+        if len(positions) >= arity:
+            raise PDDLValidationError(f"{meta_source}: single_valued {pred}: the key must leave an argument free")
+        single[pred] = tuple(positions)
+    sensing: dict[str, tuple[str, ...]] = {}
+    for action, preds in (data.get("sensing") or {}).items():
+        if action not in actions:
+            raise PDDLValidationError(f"{meta_source}: sensing names unknown action {action!r}")
+        unknown = [p for p in preds or () if p not in predicates]
+        if unknown:
+            raise PDDLValidationError(f"{meta_source}: sensing {action}: unknown predicate {unknown[0]!r}")
+        sensing[action] = tuple(preds or ())
+    return single, sensing

@@ -1,0 +1,329 @@
+"""The history journal: an append-only log of :class:`~knowledge_base.model.Change` events.
+
+Two implementations share one interface:
+
+* :class:`MemoryJournal` keeps the events in a list (a knowledge base without a path).
+* :class:`SqliteJournal` keeps them in a SQLite database in WAL mode, together with the domain text and its
+  metadata, so that a reader in another process needs nothing but the file.
+
+Both take periodic checkpoints (full state copies) so that :meth:`Journal.state_at` loads the nearest
+checkpoint and replays at most a checkpoint interval of events instead of the whole history. Checkpoints are
+derived data: losing one (say, to a crash) costs speed, never correctness.
+
+Time base: event times are the knowledge base's clock (wall or simulated seconds). ``state_at(t)`` is the
+state after the last event, in journal order, whose time is at most ``t``; this stays meaningful when the
+clock is switched once from wall time to simulated time after loading a problem.
+
+Durability: every :meth:`Journal.append` is one SQLite transaction. The database runs with
+``journal_mode=WAL`` and ``synchronous=NORMAL``: a commit writes the transaction to the WAL file before it
+returns, so it survives the writing process being killed (SIGKILL included); only an operating-system crash
+or power loss may lose the last transactions (``FULL`` would add an fsync per commit, which costs more than
+the whole write path, for a robot whose history is diagnostic). One process writes a journal; any number of
+processes may read it at the same time (WAL readers never block the writer).
+"""
+
+from __future__ import annotations
+
+import bisect
+import json
+import sqlite3
+from collections.abc import Iterable, Sequence
+from pathlib import Path
+from typing import Any
+
+from knic.errors import JournalError
+from knowledge_base.model import BeliefStatus, Change, ChangeKind, Fact, Provenance, State, apply_change
+
+__all__ = ["Journal", "MemoryJournal", "SqliteJournal"]
+
+#: Fewest events between two checkpoints; the interval grows with the state so checkpoints stay cheap.
+CHECKPOINT_MIN_EVENTS = 1000
+
+_KINDS = {k.value: k for k in ChangeKind}
+_STATUSES = {s.value: s for s in BeliefStatus}
+_SEP = "\x1f"  # separates support ids (which, unlike PDDL names, may hold spaces)
+
+
+class Journal:
+    """In-memory history; the base of the SQLite journal.
+
+    Lifecycle: created empty (or, for SQLite, opened on an existing file); :meth:`append` is called by the
+    knowledge base once per committed write or batch; :meth:`close` releases resources.
+
+    Args:
+        base: The state before the first event (the domain's constants as instances).
+    """
+
+    def __init__(self, base: State) -> None:
+        self._base = base.copy()
+        self._times: list[float] = []
+        self._monotone = True
+        self._checkpoint_seqs: list[int] = [0]
+        self._last_checkpoint = 0
+        self._memory_events: list[Change] = []
+        self._memory_checkpoints: list[State] = [self._base]
+
+    # ----------------------------------------------------------------- writing
+    @property
+    def last_seq(self) -> int:
+        """Sequence number of the last event (0 when empty)."""
+        return len(self._times)
+
+    def append(self, changes: Sequence[Change], state_after: State) -> None:
+        """Record ``changes`` (already applied to ``state_after``) as one atomic, durable unit.
+
+        Raises:
+            JournalError: the storage refused the write; nothing was recorded.
+        """
+        if not changes:
+            return
+        checkpoint = self._checkpoint_due(changes[-1].seq, state_after)
+        self._store(changes, state_after if checkpoint else None)
+        self._note_times(c.time for c in changes)
+        if checkpoint:
+            self._checkpoint_seqs.append(changes[-1].seq)
+            self._last_checkpoint = changes[-1].seq
+
+    def _checkpoint_due(self, seq: int, state: State) -> bool:
+        interval = max(CHECKPOINT_MIN_EVENTS, len(state.facts) + len(state.instances))
+        return seq - self._last_checkpoint >= interval
+
+    def _note_times(self, times: Iterable[float]) -> None:
+        for t in times:
+            if self._times and t < self._times[-1]:
+                self._monotone = False
+            self._times.append(t)
+
+    def _store(self, changes: Sequence[Change], checkpoint: State | None) -> None:
+        self._memory_events.extend(changes)
+        if checkpoint is not None:
+            self._memory_checkpoints.append(checkpoint.copy())
+
+    def close(self) -> None:
+        """Release resources (nothing for the in-memory journal)."""
+
+    # ----------------------------------------------------------------- reading
+    def changes(self, after: int = 0, upto: int | None = None) -> list[Change]:
+        """Events with ``after < seq <= upto`` (``upto`` None: to the end), in order."""
+        end = self.last_seq if upto is None else upto
+        return self._memory_events[after:end]
+
+    def _checkpoint(self, index: int) -> State:
+        return self._memory_checkpoints[index].copy()
+
+    def last_seq_at(self, t: float) -> int:
+        """Sequence number of the last event (journal order) with time <= ``t``; 0 if there is none."""
+        if self._monotone:
+            return bisect.bisect_right(self._times, t)
+        for i in range(len(self._times) - 1, -1, -1):
+            if self._times[i] <= t:
+                return i + 1
+        return 0
+
+    def state_at(self, t: float) -> State:
+        """The state as it was at clock time ``t`` (see the module docstring for the exact meaning)."""
+        return self.state_at_seq(self.last_seq_at(t))
+
+    def state_at_seq(self, seq: int) -> State:
+        """The state after event ``seq`` (0: the base state): nearest checkpoint plus replay."""
+        index = bisect.bisect_right(self._checkpoint_seqs, seq) - 1
+        state = self._checkpoint(index)
+        for change in self.changes(self._checkpoint_seqs[index], seq):
+            apply_change(state, change)
+        return state
+
+
+class SqliteJournal(Journal):
+    """The history in a SQLite database (WAL), with the domain text so the file is self-contained.
+
+    Args:
+        path: Database file; created when missing (unless ``read_only``).
+        base: State before the first event (domain constants).
+        domain_text: Domain PDDL stored in a new journal (ignored when opening an existing one).
+        meta_text: Domain sidecar YAML stored with it.
+        read_only: Open an existing journal for reading only (another process may be writing it).
+
+    Raises:
+        JournalError: the file cannot be opened, or is not a KnIC journal.
+    """
+
+    def __init__(
+        self,
+        path: str | Path,
+        base: State,
+        *,
+        domain_text: str = "",
+        meta_text: str = "",
+        read_only: bool = False,
+    ) -> None:
+        super().__init__(base)
+        self.path = Path(path)
+        self.read_only = read_only
+        try:
+            if read_only:
+                if not self.path.is_file():
+                    raise JournalError(f"{self.path}: no such journal file")
+                self._db = sqlite3.connect(f"file:{self.path}?mode=ro", uri=True, isolation_level=None)
+            else:
+                self._db = sqlite3.connect(self.path, isolation_level=None)
+                self._db.execute("PRAGMA journal_mode=WAL")
+                self._db.execute("PRAGMA synchronous=NORMAL")
+                self._create(domain_text, meta_text)
+            self.meta = dict(self._db.execute("SELECT key, value FROM meta").fetchall())
+        except sqlite3.DatabaseError as exc:
+            raise JournalError(f"{self.path}: not a readable KnIC journal ({exc})") from None
+        try:
+            times = self._db.execute("SELECT t FROM events ORDER BY seq").fetchall()
+        except sqlite3.DatabaseError as exc:
+            raise JournalError(f"{self.path}: not a readable KnIC journal ({exc})") from None
+        self._note_times(t for (t,) in times)
+        self._note_checkpoints()
+
+    @staticmethod
+    def read_meta(path: str | Path) -> dict[str, str]:
+        """The stored metadata (``domain_text``, ``meta_text``, ``domain_source``...) of a journal file.
+
+        Raises:
+            JournalError: missing file or not a KnIC journal.
+        """
+        p = Path(path)
+        if not p.is_file():
+            raise JournalError(f"{p}: no such journal file")
+        try:
+            db = sqlite3.connect(f"file:{p}?mode=ro", uri=True)
+            try:
+                return dict(db.execute("SELECT key, value FROM meta").fetchall())
+            finally:
+                db.close()
+        except sqlite3.DatabaseError as exc:
+            raise JournalError(f"{p}: not a readable KnIC journal ({exc})") from None
+
+    def _create(self, domain_text: str, meta_text: str) -> None:
+        db = self._db
+        db.execute("BEGIN IMMEDIATE")
+        db.execute("CREATE TABLE IF NOT EXISTS meta (key TEXT PRIMARY KEY, value TEXT NOT NULL)")
+        db.execute(
+            "CREATE TABLE IF NOT EXISTS events (seq INTEGER PRIMARY KEY, t REAL NOT NULL, kind TEXT NOT NULL,"
+            " name TEXT NOT NULL, args TEXT NOT NULL, value TEXT, source TEXT NOT NULL, status TEXT NOT NULL,"
+            " confidence REAL NOT NULL, support TEXT NOT NULL)"
+        )
+        db.execute("CREATE TABLE IF NOT EXISTS checkpoints (seq INTEGER PRIMARY KEY, state TEXT NOT NULL)")
+        db.execute("INSERT OR IGNORE INTO meta VALUES ('format', 'knic-journal-1')")
+        db.execute("INSERT OR IGNORE INTO meta VALUES ('domain_text', ?)", (domain_text,))
+        db.execute("INSERT OR IGNORE INTO meta VALUES ('meta_text', ?)", (meta_text,))
+        db.execute("COMMIT")
+
+    def refresh(self) -> list[Change]:
+        """Read events (and checkpoints) written since the last call, e.g. by another process.
+
+        Returns:
+            The new events, in order.
+        """
+        try:
+            rows = self._db.execute("SELECT * FROM events WHERE seq > ? ORDER BY seq", (self.last_seq,)).fetchall()
+        except sqlite3.DatabaseError as exc:
+            raise JournalError(f"{self.path}: cannot read journal ({exc})") from None
+        changes = [_row_to_change(r) for r in rows]
+        self._note_times(c.time for c in changes)
+        self._note_checkpoints()
+        return changes
+
+    def _note_checkpoints(self) -> None:
+        try:
+            cps = self._db.execute(
+                "SELECT seq FROM checkpoints WHERE seq > ? AND seq <= ? ORDER BY seq",
+                (self._checkpoint_seqs[-1], self.last_seq),
+            ).fetchall()
+        except sqlite3.DatabaseError as exc:
+            raise JournalError(f"{self.path}: cannot read journal ({exc})") from None
+        for (seq,) in cps:
+            self._checkpoint_seqs.append(seq)
+            self._last_checkpoint = seq
+
+    def _store(self, changes: Sequence[Change], checkpoint: State | None) -> None:
+        if self.read_only:
+            raise JournalError(f"{self.path}: journal is open read-only")
+        db = self._db
+        try:
+            db.execute("BEGIN")
+            try:
+                db.executemany(
+                    "INSERT INTO events VALUES (?,?,?,?,?,?,?,?,?,?)", [_change_to_row(c) for c in changes]
+                )
+                if checkpoint is not None:
+                    db.execute(
+                        "INSERT INTO checkpoints VALUES (?, ?)", (checkpoint.seq, _state_to_json(checkpoint))
+                    )
+                db.execute("COMMIT")
+            except BaseException:
+                db.execute("ROLLBACK")
+                raise
+        except sqlite3.DatabaseError as exc:
+            raise JournalError(f"{self.path}: cannot write journal ({exc})") from None
+
+    def changes(self, after: int = 0, upto: int | None = None) -> list[Change]:
+        end = self.last_seq if upto is None else upto
+        rows = self._db.execute(
+            "SELECT * FROM events WHERE seq > ? AND seq <= ? ORDER BY seq", (after, end)
+        ).fetchall()
+        return [_row_to_change(r) for r in rows]
+
+    def _checkpoint(self, index: int) -> State:
+        seq = self._checkpoint_seqs[index]
+        if seq == 0:
+            return self._base.copy()
+        row = self._db.execute("SELECT state FROM checkpoints WHERE seq = ?", (seq,)).fetchone()
+        return _state_from_json(row[0])
+
+    def close(self) -> None:
+        """Close the database connection (the data stays durable in the file)."""
+        self._db.close()
+
+
+# --------------------------------------------------------------------- encoding
+def _change_to_row(c: Change) -> tuple[Any, ...]:
+    p = c.provenance
+    value = None if c.value is None else json.dumps(c.value, separators=(",", ":"))
+    return (c.seq, c.time, c.kind.value, c.name, " ".join(c.args), value, p.source, p.status.value,
+            p.confidence, _SEP.join(p.support))  # fmt: skip
+
+
+def _row_to_change(r: tuple[Any, ...]) -> Change:
+    seq, t, kind, name, args, value, source, status, confidence, support = r
+    prov = Provenance(source, t, _STATUSES[status], confidence, tuple(support.split(_SEP)) if support else ())
+    return Change(seq, t, _KINDS[kind], name, tuple(args.split()) if args else (),
+                  None if value is None else json.loads(value), prov)  # fmt: skip
+
+
+def _prov_list(p: Provenance) -> list[Any]:
+    return [p.source, p.since, p.status.value, p.confidence, list(p.support)]
+
+
+def _prov_from(v: list[Any]) -> Provenance:
+    return Provenance(v[0], v[1], _STATUSES[v[2]], v[3], tuple(v[4]))
+
+
+def _state_to_json(s: State) -> str:
+    data = {
+        "seq": s.seq,
+        "time": s.time,
+        "instances": s.instances,
+        "facts": [[f.predicate, f.args, *_prov_list(p)] for f, p in s.facts.items()],
+        "goals": [[f.predicate, f.args, *_prov_list(p)] for f, p in s.goals.items()],
+        "functions": [[f.predicate, f.args, v] for f, v in s.functions.items()],
+        "anchors": [[k, g, *_prov_list(p)] for k, (g, p) in s.anchors.items()],
+    }
+    return json.dumps(data, separators=(",", ":"))
+
+
+def _state_from_json(text: str) -> State:
+    d = json.loads(text)
+    return State(
+        instances=d["instances"],
+        facts={Fact(v[0], tuple(v[1])): _prov_from(v[2:]) for v in d["facts"]},
+        goals={Fact(v[0], tuple(v[1])): _prov_from(v[2:]) for v in d["goals"]},
+        functions={Fact(v[0], tuple(v[1])): v[2] for v in d["functions"]},
+        anchors={v[0]: (v[1], _prov_from(v[2:])) for v in d["anchors"]},
+        seq=d["seq"],
+        time=d["time"],
+    )

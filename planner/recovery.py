@@ -1,0 +1,104 @@
+"""The recovery policy: what the dispatcher does after each kind of failure, as data.
+
+A policy maps each :class:`~actions.base.Outcome` to a :class:`RecoveryRule`: retry the same action up to
+``retries`` times (the at-start conditions are checked again before each try), then ``replan`` or
+``drop_goal`` (drop the goals the rest of the plan was to reach, replan for the others).
+``max_replans_per_goal`` bounds the replans any one goal may cause; past it the goal is dropped, so the
+dispatch loop never spins forever.
+
+Policies load from plain dicts (e.g. a YAML file)::
+
+    {"max_replans_per_goal": 5,
+     "rules": {"execution failure": {"retries": 1, "then": "replan"},
+               "timeout": {"retries": 0, "then": "drop_goal"}}}
+"""
+
+from __future__ import annotations
+
+import enum
+from collections.abc import Mapping
+from dataclasses import dataclass, field
+from typing import Any
+
+from actions.base import Outcome
+from knic.errors import KnicError
+
+
+class Recovery(enum.StrEnum):
+    """What to do after a failure once retries are used up."""
+
+    RETRY = "retry"
+    REPLAN = "replan"
+    DROP_GOAL = "drop_goal"
+
+
+@dataclass(frozen=True)
+class RecoveryRule:
+    """Retry the failed action ``retries`` times, then do ``then``."""
+
+    retries: int = 0
+    then: Recovery = Recovery.REPLAN
+
+
+def _default_rules() -> dict[Outcome, RecoveryRule]:
+    return {
+        Outcome.PRECONDITION_FAILURE: RecoveryRule(0, Recovery.REPLAN),
+        Outcome.ACTIVATION_FAILURE: RecoveryRule(1, Recovery.REPLAN),
+        Outcome.EXECUTION_FAILURE: RecoveryRule(1, Recovery.REPLAN),
+        Outcome.TIMEOUT: RecoveryRule(0, Recovery.REPLAN),
+        Outcome.DEACTIVATION_FAILURE: RecoveryRule(0, Recovery.REPLAN),
+        Outcome.POSTCONDITION_FAILURE: RecoveryRule(0, Recovery.REPLAN),
+        Outcome.CANCELLED: RecoveryRule(0, Recovery.REPLAN),
+    }
+
+
+@dataclass(frozen=True)
+class RecoveryPolicy:
+    """Per-outcome recovery rules plus the per-goal replan bound.
+
+    Attributes:
+        rules: outcome -> rule; outcomes not listed get ``RecoveryRule()`` (no retry, replan).
+        max_replans_per_goal: replans one goal may cause before it is dropped.
+    """
+
+    rules: Mapping[Outcome, RecoveryRule] = field(default_factory=_default_rules)
+    max_replans_per_goal: int = 5
+
+    def rule(self, outcome: Outcome) -> RecoveryRule:
+        """The rule for ``outcome``."""
+        return self.rules.get(outcome, RecoveryRule())
+
+    def decide(self, outcome: Outcome, failures: int) -> Recovery:
+        """What to do after the ``failures``-th consecutive failure (1-based) of the same plan step."""
+        rule = self.rule(outcome)
+        return Recovery.RETRY if failures <= rule.retries else rule.then
+
+    @classmethod
+    def from_dict(cls, data: Mapping[str, Any]) -> RecoveryPolicy:
+        """Build a policy from a plain dict (see the module docstring); unlisted outcomes keep the defaults.
+
+        Raises:
+            KnicError: unknown outcome name, unknown recovery, or a negative count.
+        """
+        rules = _default_rules()
+        for name, spec in dict(data.get("rules", {})).items():
+            try:
+                outcome = Outcome(name)
+                then = Recovery(spec.get("then", "replan"))
+            except ValueError as exc:
+                raise KnicError(f"recovery policy: {exc} (rule {name!r})") from None
+            retries = int(spec.get("retries", 0))
+            if retries < 0:
+                raise KnicError(f"recovery policy: retries for {name!r} must be >= 0, got {retries}")
+            rules[outcome] = RecoveryRule(retries, then)
+        bound = int(data.get("max_replans_per_goal", 5))
+        if bound < 0:
+            raise KnicError(f"recovery policy: max_replans_per_goal must be >= 0, got {bound}")
+        return cls(rules, bound)
+
+    def to_dict(self) -> dict[str, Any]:
+        """The policy as a plain dict (round-trips through :meth:`from_dict`)."""
+        return {
+            "max_replans_per_goal": self.max_replans_per_goal,
+            "rules": {o.value: {"retries": r.retries, "then": r.then.value} for o, r in self.rules.items()},
+        }

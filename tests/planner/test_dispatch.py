@@ -1,0 +1,248 @@
+"""Dispatch loop: trace events and the final knowledge base after failures, changes and impossible goals."""
+
+from __future__ import annotations
+
+from actions.base import Outcome
+from knowledge_base import BeliefStatus, Fact, KnowledgeBase
+from planner.dispatch import Dispatcher, DispatcherState
+from planner.engines import TaskPlanner
+from planner.recovery import Recovery, RecoveryPolicy, RecoveryRule
+from planner.trace import EventKind, Trace
+from tests.planner.doubles import PAPER_PROBLEM, SimClock, StubPlanner, World, erl_kb, scripted_registry
+
+
+def dispatcher(
+    kb: KnowledgeBase, world: World, planner: object | None = None, **kwargs: object
+) -> Dispatcher:
+    real = planner if planner is not None else TaskPlanner(engine="knic")
+    return Dispatcher(kb, real, scripted_registry(kb, world), trace=Trace(), **kwargs)  # type: ignore[arg-type]
+
+
+def kinds(d: Dispatcher) -> list[str]:
+    return [e.kind.value for e in d.trace.events]
+
+
+def test_plan_runs_and_effects_are_written_with_effect_status() -> None:
+    clock = SimClock()
+    kb = erl_kb(clock, goals=["(robot_at r2d2 kitchen)"])
+    d = dispatcher(kb, World())
+    report = d.run(max_ticks=200, on_tick=clock.tick)
+    assert report.state == DispatcherState.IDLE
+    assert report.achieved == ["(robot_at r2d2 kitchen)"]
+    assert kb.holds("robot_at", "r2d2", "kitchen") and not kb.holds("robot_at", "r2d2", "entrance_hall")
+    prov = kb.why(Fact("robot_at", ("r2d2", "kitchen")))
+    assert prov is not None and prov.status == BeliefStatus.EFFECT and prov.source == "dispatcher"
+    assert kinds(d) == [
+        "plan",
+        "dispatch",
+        "activation",
+        "success",
+        "dispatch",
+        "activation",
+        "success",
+        "goal_achieved",
+    ]
+    assert d.trace.events[0].plan == ("(move r2d2 entrance_hall hallway)", "(move r2d2 hallway kitchen)")
+
+
+def test_execution_failure_leads_to_replan_and_goal_is_reached() -> None:
+    clock = SimClock()
+    kb = erl_kb(clock, goals=["(object_at mug bedroom)"])
+    kb.add_fact("object_at", "mug", "kitchen", status=BeliefStatus.OBSERVED, source="kp_camera")
+    kb.add_fact("found", "mug", status=BeliefStatus.OBSERVED, source="kp_camera")
+    world = World(fail={"(pick r2d2 mug kitchen)": 1})
+    policy = RecoveryPolicy({Outcome.EXECUTION_FAILURE: RecoveryRule(0, Recovery.REPLAN)})
+    d = dispatcher(kb, world, policy=policy)
+    report = d.run(max_ticks=300, on_tick=clock.tick)
+    failures = d.trace.of_kind(EventKind.FAILURE)
+    assert [(f.action, f.outcome) for f in failures] == [("(pick r2d2 mug kitchen)", "execution failure")]
+    replans = d.trace.of_kind(EventKind.REPLAN)
+    assert len(replans) == 1 and replans[0].reason == "execution failure of (pick r2d2 mug kitchen)"
+    assert world.started.count("(pick r2d2 mug kitchen)") == 2
+    assert report.achieved == ["(object_at mug bedroom)"] and report.dropped == {}
+    assert kb.holds("object_at", "mug", "bedroom") and kb.holds("hand_empty", "r2d2")
+
+
+def test_retry_policy_retries_the_same_action_without_replanning() -> None:
+    clock = SimClock()
+    kb = erl_kb(clock, goals=["(light_on hallway_light)"])
+    world = World(fail={"(switch_on r2d2 hallway_light)": 2})
+    policy = RecoveryPolicy({Outcome.EXECUTION_FAILURE: RecoveryRule(2, Recovery.REPLAN)})
+    d = dispatcher(kb, world, policy=policy)
+    d.run(max_ticks=100, on_tick=clock.tick)
+    assert len(d.trace.of_kind(EventKind.FAILURE)) == 2
+    assert d.trace.of_kind(EventKind.REPLAN) == []
+    assert kb.holds("light_on", "hallway_light") and not kb.holds("light_off", "hallway_light")
+
+
+def test_door_closed_under_a_running_plan_leads_to_a_replan_around_it() -> None:
+    clock = SimClock()
+    kb = erl_kb(clock, goals=["(robot_at r2d2 kitchen)"])
+    d = dispatcher(kb, World(steps_per_action=3))
+
+    def close_door(tick: int) -> None:
+        clock.tick()
+        if tick == 2:  # first move is running: the hallway-kitchen door is found closed
+            kb.remove_fact("connected", "hallway", "kitchen", source="kp_door", status=BeliefStatus.OBSERVED)
+
+    report = d.run(max_ticks=300, on_tick=close_door)
+    replans = d.trace.of_kind(EventKind.REPLAN)
+    assert len(replans) == 1
+    assert replans[0].reason is not None and "knowledge change breaks the plan" in replans[0].reason
+    assert "(connected hallway kitchen)" in replans[0].reason
+    cancelled = [e for e in d.trace.of_kind(EventKind.FAILURE) if e.outcome == "cancelled"]
+    assert [e.action for e in cancelled] == ["(move r2d2 entrance_hall hallway)"]
+    second = d.trace.of_kind(EventKind.PLAN)[1].plan
+    assert second is not None and "(move r2d2 dining_room kitchen)" in second
+    assert report.achieved == ["(robot_at r2d2 kitchen)"]
+    assert kb.holds("robot_at", "r2d2", "kitchen")
+
+
+def test_change_that_keeps_the_plan_valid_does_not_replan() -> None:
+    clock = SimClock()
+    kb = erl_kb(clock, goals=["(robot_at r2d2 kitchen)"])
+    d = dispatcher(kb, World(steps_per_action=3))
+
+    def perceive(tick: int) -> None:
+        clock.tick()
+        if tick == 2:
+            kb.add_fact("person_at", "jack", "bathroom", source="kp_people", status=BeliefStatus.OBSERVED)
+
+    d.run(max_ticks=300, on_tick=perceive)
+    assert d.trace.of_kind(EventKind.REPLAN) == []
+    assert kb.holds("robot_at", "r2d2", "kitchen")
+
+
+def test_impossible_goal_is_dropped_by_name_and_the_others_achieved() -> None:
+    clock = SimClock()
+    kb = erl_kb(clock, goals=["(has annie tissues)", "(light_on hallway_light)", "(robot_at r2d2 bathroom)"])
+    d = dispatcher(kb, World())
+    report = d.run(max_ticks=300, on_tick=clock.tick)
+    dropped = d.trace.of_kind(EventKind.GOAL_DROPPED)
+    assert [e.goal for e in dropped] == ["(has annie tissues)"]
+    assert report.dropped.keys() == {"(has annie tissues)"}
+    assert report.achieved == ["(light_on hallway_light)", "(robot_at r2d2 bathroom)"]
+    assert kb.holds("light_on", "hallway_light") and kb.holds("robot_at", "r2d2", "bathroom")
+    assert report.state == DispatcherState.IDLE
+
+
+def test_unconfirmed_sensing_is_a_postcondition_failure_and_the_search_goes_on() -> None:
+    clock = SimClock()
+    kb = erl_kb(clock, problem=PAPER_PROBLEM)
+    world = World(where={"glasses": "entrance"})
+    d = dispatcher(kb, world)
+    report = d.run(max_ticks=500, on_tick=clock.tick)
+    post = [e for e in d.trace.of_kind(EventKind.FAILURE) if e.outcome == "postcondition failure"]
+    assert post, "at least one room searched in vain"
+    assert all(e.reason is not None and "not confirmed by perception" in e.reason for e in post)
+    assert all(e.action is not None and "entrance" not in e.action for e in post)
+    assert len(d.trace.of_kind(EventKind.REPLAN)) >= len(post)
+    assert report.achieved == ["(object_at glasses bedroom)"]
+    # the sensed facts come from perception, not from the dispatcher; explored is the dispatcher's effect
+    found = kb.why(Fact("found", ("glasses",)))
+    assert found is not None and found.source == "kp_camera" and found.status == BeliefStatus.OBSERVED
+    explored = kb.why(Fact("explored", ("entrance",)))
+    assert explored is not None and explored.status == BeliefStatus.EFFECT
+
+
+def test_timeouts_are_bounded_and_the_goal_is_dropped_eventually() -> None:
+    clock = SimClock(dt=1.0)
+    kb = erl_kb(clock, goals=["(light_on hallway_light)"])
+    world = World(never_finish={"switch_on"})
+    d = dispatcher(kb, world, time_limit=3.0, policy=RecoveryPolicy(max_replans_per_goal=2))
+    report = d.run(max_ticks=200, on_tick=clock.tick)
+    timeouts = [e for e in d.trace.of_kind(EventKind.FAILURE) if e.outcome == "timeout"]
+    assert len(timeouts) == 3  # first plan + two replans
+    assert report.dropped == {"(light_on hallway_light)": "gave up after 2 replans"}
+    assert report.state == DispatcherState.IDLE and report.ticks < 200
+    assert kb.holds("light_off", "hallway_light")
+
+
+def test_at_start_check_catches_a_change_the_dispatcher_did_not_hear_about() -> None:
+    clock = SimClock()
+    kb = erl_kb(clock, goals=["(robot_at r2d2 kitchen)"])
+    stub = StubPlanner(
+        [
+            ["(move r2d2 entrance_hall hallway)", "(move r2d2 hallway kitchen)"],
+            ["(move r2d2 bathroom hallway)", "(move r2d2 hallway kitchen)"],
+        ]
+    )
+    d = dispatcher(kb, World(steps_per_action=1), planner=stub)
+    d.close()  # no change notifications: only the at-start check can notice
+    d.step()  # plan, dispatch and activate the first move
+    d.step()  # first move done
+    kb.add_fact("robot_at", "r2d2", "bathroom", source="kp_localisation", status=BeliefStatus.OBSERVED)
+    d.run(max_ticks=100, on_tick=clock.tick)
+    failures = d.trace.of_kind(EventKind.FAILURE)
+    assert [(e.action, e.outcome) for e in failures] == [
+        ("(move r2d2 hallway kitchen)", "precondition failure")
+    ]
+    assert failures[0].reason == "at-start condition (robot_at r2d2 hallway) does not hold"
+    assert ("robot_at", "r2d2", "bathroom") in stub.tasks[1].facts
+    assert kb.holds("robot_at", "r2d2", "kitchen")
+
+
+def test_invalid_stub_plan_is_rejected_before_it_runs() -> None:
+    clock = SimClock()
+    kb = erl_kb(clock, goals=["(robot_at r2d2 kitchen)"])
+    world = World()
+    stub = StubPlanner(
+        [
+            ["(move r2d2 entrance_hall kitchen)"],
+            ["(move r2d2 entrance_hall hallway)", "(move r2d2 hallway kitchen)"],
+        ]
+    )
+    d = dispatcher(kb, world, planner=stub)
+    d.run(max_ticks=100, on_tick=clock.tick)
+    replans = d.trace.of_kind(EventKind.REPLAN)
+    assert replans[0].reason is not None and replans[0].reason.startswith("plan rejected by validation")
+    assert "(connected entrance_hall kitchen)" in replans[0].reason
+    assert "(move r2d2 entrance_hall kitchen)" not in world.started
+    assert kb.holds("robot_at", "r2d2", "kitchen")
+
+
+def test_removed_goal_cancels_the_running_action() -> None:
+    clock = SimClock()
+    kb = erl_kb(clock, goals=["(robot_at r2d2 kitchen)"])
+    d = dispatcher(kb, World(steps_per_action=5))
+
+    def withdraw(tick: int) -> None:
+        clock.tick()
+        if tick == 2:
+            kb.remove_goal("robot_at", "r2d2", "kitchen")
+
+    report = d.run(max_ticks=50, on_tick=withdraw)
+    assert [e.outcome for e in d.trace.of_kind(EventKind.FAILURE)] == ["cancelled"]
+    assert report.state == DispatcherState.IDLE and kb.holds("robot_at", "r2d2", "entrance_hall")
+
+
+def test_drop_goal_policy_drops_the_goals_of_the_failed_plan() -> None:
+    clock = SimClock()
+    kb = erl_kb(clock, goals=["(light_on hallway_light)", "(robot_at r2d2 hallway)"])
+    world = World(fail={"(switch_on r2d2 hallway_light)": 5})
+    policy = RecoveryPolicy({Outcome.EXECUTION_FAILURE: RecoveryRule(0, Recovery.DROP_GOAL)})
+    d = dispatcher(kb, world, policy=policy)
+    report = d.run(max_ticks=200, on_tick=clock.tick)
+    assert list(report.dropped) == ["(light_on hallway_light)"]
+    assert "execution failure" in report.dropped["(light_on hallway_light)"]
+    assert report.achieved == ["(robot_at r2d2 hallway)"]
+
+
+def test_trace_jsonl_and_readable_lines() -> None:
+    import io
+    import json
+
+    clock = SimClock()
+    kb = erl_kb(clock, goals=["(robot_at r2d2 hallway)"])
+    stream = io.StringIO()
+    printed = io.StringIO()
+    trace = Trace(jsonl=stream)
+    trace.print_to(printed)
+    d = Dispatcher(kb, TaskPlanner(engine="knic"), scripted_registry(kb, World()), trace=trace)
+    d.run(max_ticks=50, on_tick=clock.tick)
+    rows = [json.loads(line) for line in stream.getvalue().splitlines()]
+    assert [r["kind"] for r in rows] == ["plan", "dispatch", "activation", "success", "goal_achieved"]
+    assert rows[0]["plan"] == ["(move r2d2 entrance_hall hallway)"] and "planning_ms" in rows[0]["data"]
+    assert rows[-1]["goal"] == "(robot_at r2d2 hallway)"
+    lines = printed.getvalue().splitlines()
+    assert "success" in lines[3] and "(move r2d2 entrance_hall hallway)" in lines[3]

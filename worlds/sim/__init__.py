@@ -1,0 +1,1 @@
+"""Simulator internals: scene building (pybullet), navigation grid, camera, people, ground truth."""

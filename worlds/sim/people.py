@@ -1,0 +1,215 @@
+"""People in the apartment: where they are and what they do (walk, sit, carry an object, follow the robot).
+
+Each person runs a queue of small tasks (walk to points, sit on furniture, take or put an item, wait) filled by
+scenario events, by their behaviour (``wander``) or by the robot (escorting). People walk on the same grid map as
+the robot at a fixed speed, yield to the robot (they wait rather than walk into it), and are kinematic.
+"""
+
+from __future__ import annotations
+
+import math
+from collections import deque
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+from typing import Any, Protocol
+
+import numpy as np
+
+from worlds.geometry import Point, wrap_angle
+from worlds.model import Person, World
+from worlds.sim.navigation import GridMap
+
+WALK_SPEED = 0.8  # m/s
+FOLLOW_DISTANCE = 1.0  # metres behind the robot when escorted
+
+
+class PeopleHooks(Protocol):
+    """What people need from the simulation (implemented by :class:`worlds.simulation.Simulation`)."""
+
+    def person_take(self, person: str, item: str) -> bool:
+        """The person takes the item if it is within their reach and free."""
+        ...
+
+    def person_put(self, person: str, furniture: str) -> bool:
+        """The person puts what they carry on the furniture."""
+        ...
+
+    def approach_points(self, furniture: str, near: Point | None = None) -> list[Point]:
+        """Free points from which the furniture (or ``near`` on it) is within reach."""
+        ...
+
+
+@dataclass
+class PersonState:
+    """A person's true state (world frame).
+
+    Attributes:
+        name: PDDL symbol.
+        x: metres.
+        y: metres.
+        yaw: heading, radians.
+        on: furniture the person sits or lies on, or ``None``.
+        present: False while outside the apartment.
+        carrying: item the person holds, or ``None``.
+        following: True while escorted by the robot.
+    """
+
+    name: str
+    radius: float
+    height: float
+    x: float
+    y: float
+    behaviour: str
+    present: bool
+    on: str | None = None
+    yaw: float = 0.0
+    carrying: str | None = None
+    following: bool = False
+    tasks: deque[tuple[str, Any]] = field(default_factory=deque)
+    path: list[Point] = field(default_factory=list)
+    path_index: int = 0
+    wait_until: float = 0.0
+    replan_at: float = 0.0
+
+    def z_base(self, world: World) -> float:
+        """Height of the person's feet: the furniture top when sitting or lying, else 0."""
+        return world.furniture[self.on].height if self.on else 0.0
+
+
+class PeopleController:
+    """Moves every person one control period at a time (see module doc)."""
+
+    def __init__(self, world: World, grid: GridMap, hooks: PeopleHooks, rng: np.random.Generator) -> None:
+        self.world = world
+        self.grid = grid
+        self.hooks = hooks
+        self.rng = rng
+        self.people: dict[str, PersonState] = {
+            p.name: self._initial(p) for p in world.people.values()
+        }
+
+    @staticmethod
+    def _initial(p: Person) -> PersonState:
+        return PersonState(name=p.name, radius=p.radius, height=p.height, x=p.position[0], y=p.position[1],
+                           behaviour=p.behaviour, present=p.present, on=p.on)  # fmt: skip
+
+    def discs(self) -> list[tuple[str, float, float, float]]:
+        """``(name, x, y, radius)`` of the people present and standing (not on furniture)."""
+        return [(p.name, p.x, p.y, p.radius) for p in self.people.values() if p.present and p.on is None]
+
+    # ------------------------------------------------------------------------------------------ tasks
+
+    def go_to(self, name: str, points: Sequence[Point]) -> None:
+        """Queue a walk to the nearest reachable of ``points`` (after getting up if sitting)."""
+        self.people[name].tasks.append(("goto", list(points)))
+
+    def sit(self, name: str, furniture: str) -> None:
+        """Queue walking to the furniture and sitting (or lying) on it."""
+        self.go_to(name, self.hooks.approach_points(furniture))
+        self.people[name].tasks.append(("sit", furniture))
+
+    def enqueue(self, name: str, task: str, arg: Any) -> None:
+        """Queue a raw task: ``appear`` (x, y), ``straight`` (x, y), ``take`` item, ``put`` furniture, ``wait`` s."""
+        self.people[name].tasks.append((task, arg))
+
+    def teleport(self, name: str, x: float, y: float, on: str | None = None) -> None:
+        """Put a person somewhere at once (present), dropping their queued tasks."""
+        p = self.people[name]
+        p.tasks.clear()
+        p.path = []
+        p.x, p.y, p.on, p.present = x, y, on, True
+
+    # ------------------------------------------------------------------------------------------ update
+
+    def update(self, dt: float, now: float, robot: tuple[float, float, float]) -> None:
+        """Advance every person by ``dt`` seconds; ``robot`` is ``(x, y, radius)`` of the robot base."""
+        for p in self.people.values():
+            if not p.present and not p.tasks:
+                continue
+            if p.following:
+                self._follow(p, dt, now, robot)
+                continue
+            if now < p.wait_until:
+                continue
+            if not p.tasks and p.behaviour == "wander" and p.on is None:
+                room = self.world.rooms[sorted(self.world.rooms)[int(self.rng.integers(len(self.world.rooms)))]]
+                self.go_to(p.name, [room.waypoint])
+                p.tasks.append(("wait", float(self.rng.uniform(5.0, 20.0))))
+            if p.tasks:
+                self._run_task(p, dt, now, robot)
+
+    def _run_task(self, p: PersonState, dt: float, now: float, robot: tuple[float, float, float]) -> None:
+        kind, arg = p.tasks[0]
+        if kind == "appear":
+            p.x, p.y, p.present, p.on = arg[0], arg[1], True, None
+            p.tasks.popleft()
+        elif kind == "wait":
+            p.wait_until = now + float(arg)
+            p.tasks.popleft()
+        elif kind == "take":
+            self.hooks.person_take(p.name, arg)
+            p.tasks.popleft()
+        elif kind == "put":
+            self.hooks.person_put(p.name, arg)
+            p.tasks.popleft()
+        elif kind == "sit":
+            f = self.world.furniture[arg]
+            p.x, p.y, p.on = f.position[0], f.position[1], arg
+            p.tasks.popleft()
+        elif kind == "straight":
+            if self._walk_towards(p, arg, dt, robot):
+                p.tasks.popleft()
+        elif kind == "goto":
+            if p.on is not None:
+                self._stand_up(p)
+            if not p.path:
+                path = self.grid.plan((p.x, p.y), arg)
+                if path is None:  # nowhere to go: give the task up
+                    p.tasks.popleft()
+                    return
+                p.path, p.path_index = path, 1
+            if p.path_index >= len(p.path):
+                p.path = []
+                p.tasks.popleft()
+                return
+            if self._walk_towards(p, p.path[p.path_index], dt, robot):
+                p.path_index += 1
+
+    def _stand_up(self, p: PersonState) -> None:
+        if p.on is None:
+            return
+        spot = self.hooks.approach_points(p.on, (p.x, p.y))
+        if spot:
+            p.x, p.y = min(spot, key=lambda q: math.hypot(q[0] - p.x, q[1] - p.y))
+        p.on = None
+
+    def _walk_towards(self, p: PersonState, target: Point, dt: float, robot: tuple[float, float, float]) -> bool:
+        """One step towards ``target``; True when reached. Waits when the robot is in the way."""
+        dx, dy = target[0] - p.x, target[1] - p.y
+        dist = math.hypot(dx, dy)
+        if dist < 1e-6:
+            return True
+        step = min(WALK_SPEED * dt, dist)
+        nx, ny = p.x + dx / dist * step, p.y + dy / dist * step
+        rx, ry, rr = robot
+        if math.hypot(nx - rx, ny - ry) < rr + p.radius + 0.05 and math.hypot(nx - rx, ny - ry) < math.hypot(
+            p.x - rx, p.y - ry
+        ):
+            return False  # yield to the robot
+        p.x, p.y = nx, ny
+        p.yaw = wrap_angle(math.atan2(dy, dx))
+        return step >= dist - 1e-9
+
+    def _follow(self, p: PersonState, dt: float, now: float, robot: tuple[float, float, float]) -> None:
+        if p.on is not None:
+            self._stand_up(p)
+        rx, ry, _ = robot
+        if math.hypot(rx - p.x, ry - p.y) <= FOLLOW_DISTANCE:
+            p.path = []
+            return
+        if not p.path or now >= p.replan_at:
+            goal = self.grid.nearest_free(rx, ry, 0.5)
+            path = self.grid.plan((p.x, p.y), [goal]) if goal else None
+            p.path, p.path_index, p.replan_at = (path or []), 1, now + 1.0
+        if p.path_index < len(p.path) and self._walk_towards(p, p.path[p.path_index], dt, robot):
+            p.path_index += 1

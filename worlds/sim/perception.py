@@ -1,0 +1,113 @@
+"""Simulated object and person detector: turns a rendered segmentation into noisy :class:`Detection` s.
+
+The detector sees what the renderer saw (field of view and occlusion are real) and then applies the configured
+:class:`NoiseConfig`: misses, label confusion, unrecognised people, spurious detections, depth noise. All random
+draws come from the generator handed in, in a fixed order (instances sorted by name), so runs are reproducible.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+import numpy.typing as npt
+
+from worlds.api import Detection, NoiseConfig
+
+#: classes a detector plausibly mixes up (both directions)
+CONFUSABLE: dict[str, tuple[str, ...]] = {
+    "mug": ("cup", "glass"),
+    "cup": ("mug", "glass"),
+    "glass": ("cup", "water"),
+    "apple": ("lemon",),
+    "lemon": ("apple",),
+    "water": ("juice", "glass"),
+    "juice": ("water", "coke_can"),
+    "coke_can": ("juice",),
+    "remote": ("tablet",),
+    "tablet": ("remote",),
+    "sponge": ("soap",),
+    "soap": ("sponge",),
+    "tissues": ("cardboard_box",),
+    "cardboard_box": ("tissues",),
+}
+
+
+def detect(
+    segmentation: npt.NDArray[np.int32],
+    depth: npt.NDArray[np.float32],
+    instances: dict[int, tuple[str, str, bool]],
+    noise: NoiseConfig,
+    rng: np.random.Generator,
+    item_classes: list[str],
+) -> tuple[list[Detection], frozenset[str]]:
+    """Detections and ground-truth visible names of one frame.
+
+    Args:
+        segmentation: body id per pixel.
+        depth: metric depth per pixel (``inf`` for nothing), used for false-positive masks.
+        instances: body id -> ``(name, class label, is_person)`` for every world instance; furniture has
+            ``class label == ""`` and is never detected, only reported visible.
+        noise: the noise configuration.
+        rng: the detector's random generator.
+        item_classes: labels a false positive or confusion may take when no confusable class is listed.
+
+    Returns:
+        ``(detections, visible_instances)``.
+    """
+    ids, counts = np.unique(segmentation, return_counts=True)
+    visible: list[tuple[str, int, str, bool, int]] = []
+    for body, count in zip(ids.tolist(), counts.tolist(), strict=True):
+        if body in instances and count >= noise.min_pixels:
+            name, label, person = instances[body]
+            visible.append((name, body, label, person, count))
+    visible.sort()
+    lo, hi = noise.confidence_range
+    detections: list[Detection] = []
+    for name, body, label, person, count in visible:
+        if not label:
+            continue
+        if rng.random() < noise.miss_rate:
+            continue
+        identity = None
+        if person:
+            if count >= noise.min_person_id_pixels and rng.random() < noise.person_id_rate:
+                identity = name
+        elif rng.random() < noise.confusion_rate:
+            options = CONFUSABLE.get(label) or tuple(c for c in item_classes if c != label)
+            if options:
+                label = options[int(rng.integers(len(options)))]
+        conf = lo + (hi - lo) * min(1.0, count / 300.0) * float(rng.uniform(0.85, 1.0))
+        detections.append(
+            Detection(label=label, confidence=round(conf, 4), mask=segmentation == body, identity=identity,
+                      segmentation_id=body, true_instance=name)  # fmt: skip
+        )
+    if item_classes and rng.random() < noise.false_positive_rate:
+        fp = _false_positive(depth, rng, item_classes, lo, hi)
+        if fp is not None:
+            detections.append(fp)
+    return detections, frozenset(v[0] for v in visible)
+
+
+def _false_positive(
+    depth: npt.NDArray[np.float32], rng: np.random.Generator, item_classes: list[str], lo: float, hi: float
+) -> Detection | None:
+    rows, cols = np.nonzero(np.isfinite(depth))
+    if rows.size == 0:
+        return None
+    k = int(rng.integers(rows.size))
+    r, c = int(rows[k]), int(cols[k])
+    half = int(rng.integers(2, 6))
+    mask = np.zeros(depth.shape, dtype=bool)
+    mask[max(0, r - half) : r + half + 1, max(0, c - half) : c + half + 1] = True
+    mask &= np.isfinite(depth)
+    label = item_classes[int(rng.integers(len(item_classes)))]
+    conf = lo + (hi - lo) * 0.5 * float(rng.random())
+    return Detection(label=label, confidence=round(conf, 4), mask=mask)
+
+
+def add_depth_noise(depth: npt.NDArray[np.float32], sigma_per_metre: float, rng: np.random.Generator) -> None:
+    """Multiply finite depths by ``1 + N(0, sigma_per_metre)`` in place (sigma grows with range)."""
+    if sigma_per_metre <= 0:
+        return
+    finite = np.isfinite(depth)
+    noise = rng.normal(0.0, sigma_per_metre, size=depth.shape).astype(np.float32)
+    depth[finite] *= 1.0 + noise[finite]

@@ -1,0 +1,222 @@
+"""The pybullet scene built from world data, and the camera rendering.
+
+Every body is static and kinematic (mass 0, moved with ``resetBasePositionAndOrientation``); physics is never
+stepped, so a scene is exactly reproducible. pybullet is used for what it does well here: rendering RGB, depth
+and segmentation with real field of view and occlusion (``ER_TINY_RENDERER``, CPU, works in DIRECT mode).
+Each world instance is one body, so the segmentation value of a pixel is the body id of one instance.
+"""
+
+from __future__ import annotations
+
+import functools
+import math
+from typing import Any
+
+import numpy as np
+import numpy.typing as npt
+import pybullet as pb
+
+from worlds.api import CameraIntrinsics, Pose3D
+from worlds.geometry import Point
+from worlds.model import World
+from worlds.sim.navigation import wall_segments
+
+WALL_COLOR = (0.92, 0.9, 0.85, 1.0)
+FLOOR_COLOR = (0.75, 0.72, 0.65, 1.0)
+ROBOT_COLOR = (0.85, 0.85, 0.9, 1.0)
+WALL_PIECE = 1.0  # metres
+
+
+class Scene:
+    """pybullet bodies of a world: floor, walls, furniture, items, people, robot.
+
+    Lifecycle: built once from a :class:`World` (connects its own pybullet client, DIRECT unless ``gui``);
+    bodies are moved by the simulation; :meth:`close` disconnects.
+
+    Attributes:
+        body_of: instance name -> pybullet body id.
+        name_of: body id -> instance name (walls and floor are absent).
+    """
+
+    def __init__(self, world: World, *, gui: bool = False, render_floor: bool = True) -> None:
+        self.world = world
+        self.render_floor = render_floor
+        self._client: Any = _Client(pb.GUI if gui else pb.DIRECT)
+        self.body_of: dict[str, int] = {}
+        self.name_of: dict[int, str] = {}
+        self._build()
+
+    def close(self) -> None:
+        """Disconnect the pybullet client (idempotent)."""
+        if self._client is not None:
+            self._client.disconnect()
+            self._client = None
+
+    # ------------------------------------------------------------------------------------------ building
+
+    def _box(self, half: tuple[float, float, float], pos: tuple[float, float, float], yaw: float,
+             color: tuple[float, float, float, float]) -> int:  # fmt: skip
+        c = self._client
+        vis = c.createVisualShape(pb.GEOM_BOX, halfExtents=half, rgbaColor=color)
+        col = c.createCollisionShape(pb.GEOM_BOX, halfExtents=half)
+        return int(
+            c.createMultiBody(
+                baseMass=0,
+                baseCollisionShapeIndex=col,
+                baseVisualShapeIndex=vis,
+                basePosition=pos,
+                baseOrientation=c.getQuaternionFromEuler((0, 0, yaw)),
+            )
+        )
+
+    def _cylinder(self, radius: float, height: float, pos: tuple[float, float, float],
+                  color: tuple[float, float, float, float]) -> int:  # fmt: skip
+        c = self._client
+        vis = c.createVisualShape(pb.GEOM_CYLINDER, radius=radius, length=height, rgbaColor=color)
+        col = c.createCollisionShape(pb.GEOM_CYLINDER, radius=radius, height=height)
+        return int(c.createMultiBody(baseMass=0, baseCollisionShapeIndex=col, baseVisualShapeIndex=vis,
+                                     basePosition=pos))  # fmt: skip
+
+    def _wall_mesh(self, segments: list[tuple[Point, Point]], thickness: float, height: float) -> None:
+        """All walls as one mesh body: the two long faces and the end faces of each wall (no top/bottom).
+
+        One body with few triangles renders much faster in the tiny renderer than one box per wall.
+        """
+        verts: list[tuple[float, float, float]] = []
+        idx: list[int] = []
+        half = thickness / 2
+        for a, b in segments:
+            length = math.dist(a, b)
+            ux, uy = (b[0] - a[0]) / length, (b[1] - a[1]) / length
+            nx, ny = -uy * half, ux * half
+            ax, ay = a[0] - ux * half, a[1] - uy * half
+            bx, by = b[0] + ux * half, b[1] + uy * half
+            corners = [(ax + nx, ay + ny), (bx + nx, by + ny), (bx - nx, by - ny), (ax - nx, ay - ny)]
+            base = len(verts)
+            for cx, cy in corners:
+                verts.append((cx, cy, 0.0))
+            for cx, cy in corners:
+                verts.append((cx, cy, height))
+            for i in range(4):  # side face i: bottom i, bottom i+1, top i+1, top i (both windings)
+                j = (i + 1) % 4
+                q = (base + i, base + j, base + 4 + j, base + 4 + i)
+                idx += [q[0], q[2], q[1], q[0], q[3], q[2]]
+        c = self._client
+        vis = c.createVisualShape(pb.GEOM_MESH, vertices=verts, indices=idx, rgbaColor=WALL_COLOR)
+        c.createMultiBody(baseMass=0, baseVisualShapeIndex=vis, basePosition=(0, 0, 0))
+
+    def _register(self, name: str, body: int) -> None:
+        self.body_of[name] = body
+        self.name_of[body] = name
+
+    def _build(self) -> None:
+        w = self.world
+        xmin, ymin, xmax, ymax = w.bounds()
+        c = self._client
+        if self.render_floor:
+            floor = [(xmin, ymin, 0.0), (xmax, ymin, 0.0), (xmax, ymax, 0.0), (xmin, ymax, 0.0)]
+            vis = c.createVisualShape(pb.GEOM_MESH, vertices=floor, indices=[0, 1, 2, 0, 2, 3],
+                                      rgbaColor=FLOOR_COLOR)  # fmt: skip
+            c.createMultiBody(baseMass=0, baseVisualShapeIndex=vis, basePosition=(0, 0, 0))
+        t = w.wall_thickness
+        self._wall_mesh(wall_segments(w), t, w.wall_height)
+        for f in w.furniture.values():
+            sx, sy, h = f.size
+            body = self._box((sx / 2, sy / 2, h / 2), (f.position[0], f.position[1], h / 2), f.yaw, f.color)
+            self._register(f.name, body)
+        for it in w.items.values():
+            sx, sy, sz = it.size
+            self._register(it.name, self._box((sx / 2, sy / 2, sz / 2), it.position, 0.0, it.color))
+        for p in w.people.values():
+            self._register(p.name, self._cylinder(p.radius, p.height, (p.position[0], p.position[1], -50.0),
+                                                  p.color))  # fmt: skip
+        r = w.robot
+        self._register(r.name, self._cylinder(r.radius, r.height, (r.start[0], r.start[1], r.height / 2),
+                                              ROBOT_COLOR))  # fmt: skip
+
+    # ------------------------------------------------------------------------------------------ moving
+
+    def move(self, name: str, pos: tuple[float, float, float], yaw: float = 0.0) -> None:
+        """Place an instance's body at ``pos`` (body centre) with heading ``yaw``."""
+        c = self._client
+        c.resetBasePositionAndOrientation(self.body_of[name], pos, c.getQuaternionFromEuler((0, 0, yaw)))
+
+    # ------------------------------------------------------------------------------------------ camera
+
+    def render(
+        self, eye: tuple[float, float, float], yaw: float, pitch: float, width: int, height: int, fov_deg: float,
+        near: float = 0.1, far: float = 10.0,
+    ) -> tuple[npt.NDArray[np.uint8], npt.NDArray[np.float32], npt.NDArray[np.int32], CameraIntrinsics, Pose3D]:  # fmt: skip
+        """Render RGB, metric depth and segmentation from a camera at ``eye`` looking along yaw/pitch.
+
+        ``pitch`` is the downward tilt in radians. Depth beyond ``far`` (nothing hit) is ``inf``.
+        Returns ``(rgb, depth, segmentation, intrinsics, optical-frame pose)``.
+        """
+        c = self._client
+        fwd = np.array([math.cos(yaw) * math.cos(pitch), math.sin(yaw) * math.cos(pitch), -math.sin(pitch)])
+        left = np.array([-math.sin(yaw), math.cos(yaw), 0.0])
+        up = np.cross(fwd, left)
+        target = np.asarray(eye) + fwd
+        view = c.computeViewMatrix(eye, target.tolist(), up.tolist())
+        proj = c.computeProjectionMatrixFOV(fov_deg, width / height, near, far)
+        _, _, rgba, zbuf, seg = c.getCameraImage(
+            width, height, view, proj, renderer=pb.ER_TINY_RENDERER
+        )
+        rgb = np.asarray(rgba, dtype=np.uint8).reshape(height, width, 4)[:, :, :3].copy()
+        z = np.asarray(zbuf, dtype=np.float64).reshape(height, width)
+        depth = (far * near / (far - (far - near) * z)).astype(np.float32)
+        depth[z >= 1.0 - 1e-7] = np.inf
+        segm = np.asarray(seg, dtype=np.int32).reshape(height, width)
+        fy = (height / 2) / math.tan(math.radians(fov_deg) / 2)
+        intr = CameraIntrinsics(width=width, height=height, fx=fy, fy=fy, cx=width / 2, cy=height / 2,
+                                near=near, far=far)  # fmt: skip
+        # optical frame axes in the world: x right (= -left), y down (= -up), z forward
+        rot = np.stack([-left, -up, fwd], axis=1)
+        pose = Pose3D(position=(float(eye[0]), float(eye[1]), float(eye[2])), orientation=_quat_from_matrix(rot))
+        return rgb, depth, segm, intr, pose
+
+
+class _Client:
+    """One pybullet connection; attribute access returns pybullet functions bound to it.
+
+    (pybullet_utils' BulletClient passes ``options=''``, which makes pybullet print ``argv[0]=`` on stdout.)
+    """
+
+    def __init__(self, mode: int) -> None:
+        self._id = pb.connect(mode)
+        if self._id < 0:
+            raise RuntimeError("pybullet could not connect")
+
+    def __getattr__(self, name: str) -> Any:
+        attr = getattr(pb, name)
+        if callable(attr) and name not in ("connect",):
+            return functools.partial(attr, physicsClientId=self._id)
+        return attr
+
+    def disconnect(self) -> None:
+        """Close the connection (idempotent)."""
+        if self._id >= 0:
+            pb.disconnect(physicsClientId=self._id)
+            self._id = -1
+
+
+def _quat_from_matrix(m: npt.NDArray[np.float64]) -> tuple[float, float, float, float]:
+    """Unit quaternion ``(x, y, z, w)`` of a rotation matrix."""
+    tr = m[0, 0] + m[1, 1] + m[2, 2]
+    if tr > 0:
+        s = math.sqrt(tr + 1.0) * 2
+        w, x = 0.25 * s, (m[2, 1] - m[1, 2]) / s
+        y, z = (m[0, 2] - m[2, 0]) / s, (m[1, 0] - m[0, 1]) / s
+    elif m[0, 0] > m[1, 1] and m[0, 0] > m[2, 2]:
+        s = math.sqrt(1.0 + m[0, 0] - m[1, 1] - m[2, 2]) * 2
+        w, x = (m[2, 1] - m[1, 2]) / s, 0.25 * s
+        y, z = (m[0, 1] + m[1, 0]) / s, (m[0, 2] + m[2, 0]) / s
+    elif m[1, 1] > m[2, 2]:
+        s = math.sqrt(1.0 + m[1, 1] - m[0, 0] - m[2, 2]) * 2
+        w, x = (m[0, 2] - m[2, 0]) / s, (m[0, 1] + m[1, 0]) / s
+        y, z = 0.25 * s, (m[1, 2] + m[2, 1]) / s
+    else:
+        s = math.sqrt(1.0 + m[2, 2] - m[0, 0] - m[1, 1]) * 2
+        w, x = (m[1, 0] - m[0, 1]) / s, (m[0, 2] + m[2, 0]) / s
+        y, z = (m[1, 2] + m[2, 1]) / s, 0.25 * s
+    return (float(x), float(y), float(z), float(w))

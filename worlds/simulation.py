@@ -1,0 +1,621 @@
+"""The simulated apartment: :class:`Simulation` implements :class:`worlds.api.SimulationAPI`.
+
+One simulation owns one pybullet client (DIRECT by default, a GUI window with ``gui=True``) used for rendering
+the robot's camera; everything else (robot base, people, items, devices, events) is kinematic Python state
+advanced by :meth:`Simulation.step` in control periods of :data:`CONTROL_DT` seconds of simulated time.
+Randomness (sensor noise, people, scenario draws) comes from generators seeded by ``seed``, so a run is
+reproducible call for call.
+"""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import numpy as np
+
+from knic.errors import WorldError
+from worlds.api import (
+    ActionResult,
+    CameraFrame,
+    Counters,
+    NavStatus,
+    NoiseConfig,
+    Pose2D,
+    Pose3D,
+    SoundEvent,
+    Utterance,
+)
+from worlds.geometry import Point, segment_distance, wrap_angle
+from worlds.loader import load_world
+from worlds.model import Device, World
+from worlds.scenario import Event, Scenario, load_scenario
+from worlds.sim.items import ItemState, fall_step, free_spots
+from worlds.sim.navigation import GridMap, wall_segments
+from worlds.sim.people import PeopleController, PersonState
+from worlds.sim.perception import add_depth_noise, detect
+from worlds.sim.robot import BaseController
+from worlds.sim.scene import Scene
+from worlds.sim.truth import ground_truth
+
+CONTROL_DT = 0.05  # seconds per control period
+RING_SECONDS = 2.0  # how long the door bell rings
+PERSON_REACH = 0.8  # metres, how far people reach to take or put an item
+GIVE_REACH_EXTRA = 0.35  # the robot reaches a person's hand this much farther than its gripper reach
+CAMERA_FORWARD = 0.2  # metres from the base centre to the camera, along the pan direction
+PAN_LIMIT = math.pi / 2
+
+
+class Simulation:
+    """The simulated ERL apartment (see :class:`worlds.api.SimulationAPI` for the full contract).
+
+    Args:
+        world: a :class:`World`, a world name (``erl_home``, ``erl_home_paper``) or a world file path.
+        seed: seed of every random draw (noise, people, scenario).
+        scenario: a :class:`Scenario`, a shipped scenario name (``visitors``) or a scenario file path.
+        gui: open a pybullet GUI window (needs a display); headless DIRECT mode otherwise.
+        camera_hz: camera rate; :meth:`camera_frame` renders at most once per ``1 / camera_hz`` simulated
+            seconds and returns the cached frame in between.
+        camera_size: ``(width, height)`` in pixels.
+        noise: sensor noise (default :class:`NoiseConfig` defaults).
+        render_floor: draw the floor (costs about a third of the render time; without it floor pixels are
+            background: segmentation -1, depth inf).
+
+    Raises:
+        WorldError: invalid world or scenario.
+    """
+
+    def __init__(
+        self,
+        world: World | str | Path,
+        *,
+        seed: int = 0,
+        scenario: Scenario | str | Path | None = None,
+        gui: bool = False,
+        camera_hz: float = 10.0,
+        camera_size: tuple[int, int] = (160, 120),
+        noise: NoiseConfig | None = None,
+        render_floor: bool = False,
+    ) -> None:
+        self._world = world if isinstance(world, World) else load_world(world)
+        w = self._world
+        self._scenario = (
+            scenario if isinstance(scenario, Scenario) or scenario is None else load_scenario(scenario, w)
+        )
+        if camera_hz <= 0:
+            raise WorldError(f"camera_hz must be positive, got {camera_hz}")
+        self.seed = seed
+        self.noise = noise if noise is not None else NoiseConfig()
+        self.camera_hz = camera_hz
+        self.camera_size = camera_size
+        streams = np.random.SeedSequence(seed).spawn(4)
+        self._rng_camera, self._rng_pose, self._rng_people, self._rng_scenario = (
+            np.random.default_rng(s) for s in streams
+        )
+        self.grid = GridMap.from_world(w)
+        self._walls = wall_segments(w)
+        self._base = BaseController(w.robot, self.grid)
+        self._people = PeopleController(w, self.grid, self, self._rng_people)
+        self._items = {name: ItemState.from_item(it) for name, it in w.items.items()}
+        self._devices = {d.name: (d.initial if d.kind != "bell" else 0.0) for d in w.devices.values()}
+        self._scene = Scene(w, gui=gui, render_floor=render_floor)
+        self._instances = self._instance_table()
+        self._item_classes = sorted({it.cls for it in w.items.values()})
+        self._time = 0.0
+        self._pan = 0.0
+        self._held: str | None = None
+        self._ring_until = -1.0
+        self._sounds: list[SoundEvent] = []
+        self._heard: list[Utterance] = []
+        self._spoken: list[Utterance] = []
+        self._touching: set[str] = set()
+        self._bumps = self._hits = self._drops = 0
+        self._events = list(self._scenario.events) if self._scenario else []
+        self._frame: CameraFrame | None = None
+        self._closed = False
+        self._apply_due_events()
+
+    @classmethod
+    def from_world(cls, world: World | str | Path, **kwargs: object) -> Simulation:
+        """Same as the constructor (``Simulation.from_world("erl_home", seed=1)``)."""
+        return cls(world, **kwargs)  # type: ignore[arg-type]
+
+    def _instance_table(self) -> dict[int, tuple[str, str, bool]]:
+        w = self._world
+        table: dict[int, tuple[str, str, bool]] = {}
+        for name, body in self._scene.body_of.items():
+            if name in w.items:
+                table[body] = (name, w.items[name].cls, False)
+            elif name in w.people:
+                table[body] = (name, "person", True)
+            elif name in w.furniture:
+                table[body] = (name, "", False)
+        return table
+
+    # ------------------------------------------------------------------------------------------ properties
+
+    @property
+    def world(self) -> World:
+        """The world data."""
+        return self._world
+
+    @property
+    def scenario(self) -> Scenario | None:
+        """The scenario being played, if any."""
+        return self._scenario
+
+    @property
+    def time(self) -> float:
+        """Simulated seconds since the start."""
+        return self._time
+
+    @property
+    def robot_name(self) -> str:
+        """The robot's PDDL symbol."""
+        return self._world.robot.name
+
+    # ------------------------------------------------------------------------------------------ stepping
+
+    def step(self, dt: float = 0.1) -> None:
+        """Advance simulated time by ``dt`` seconds in control periods of at most :data:`CONTROL_DT`."""
+        if dt <= 0:
+            raise WorldError(f"step dt must be positive, got {dt}")
+        self._check_open()
+        n = max(1, math.ceil(dt / CONTROL_DT - 1e-9))
+        h = dt / n
+        for _ in range(n):
+            self._time += h
+            self._apply_due_events()
+            r = self._base
+            self._people.update(h, self._time, (r.x, r.y, self._world.robot.radius))
+            before = (r.x, r.y)
+            r.update(h, self._people.discs(), self._base_may_stand)
+            if (r.x, r.y) != before:
+                self._update_contacts()
+            for it in self._items.values():
+                if it.vz is not None:
+                    fall_step(self._world, it, h)
+                elif it.holder is not None:
+                    self._carry(it)
+
+    def _apply_due_events(self) -> None:
+        while self._events and self._events[0].at <= self._time + 1e-9:
+            self._apply_event(self._events.pop(0))
+
+    # ------------------------------------------------------------------------------------------ sensors
+
+    def camera_frame(self) -> CameraFrame:
+        """The robot camera's latest frame, rendered now if the cached one is older than one camera period."""
+        self._check_open()
+        if self._frame is not None and self._time - self._frame.stamp < 1.0 / self.camera_hz - 1e-9:
+            return self._frame
+        self._sync_bodies()
+        r, spec = self._base, self._world.robot
+        heading = r.yaw + self._pan
+        eye = (r.x + CAMERA_FORWARD * math.cos(heading), r.y + CAMERA_FORWARD * math.sin(heading),
+               spec.camera_height)  # fmt: skip
+        width, height = self.camera_size
+        rgb, depth, seg, intr, pose = self._scene.render(eye, heading, spec.camera_pitch, width, height,
+                                                         spec.camera_fov)  # fmt: skip
+        pose = Pose3D(pose.position, pose.orientation, self._time)
+        detections, visible = detect(seg, depth, self._instances, self.noise, self._rng_camera, self._item_classes)
+        add_depth_noise(depth, self.noise.depth_noise, self._rng_camera)
+        self._frame = CameraFrame(stamp=self._time, width=width, height=height, rgb=rgb, depth=depth,
+                                  segmentation=seg, intrinsics=intr, camera_pose=pose, detections=detections,
+                                  visible_instances=visible)  # fmt: skip
+        return self._frame
+
+    def robot_pose(self) -> Pose2D:
+        """Localisation: the true pose plus Gaussian noise (``noise.pose_noise_xy``, ``pose_noise_yaw``)."""
+        r, n = self._base, self.noise
+        dx, dy, dyaw = self._rng_pose.normal(0.0, 1.0, size=3)
+        return Pose2D(r.x + dx * n.pose_noise_xy, r.y + dy * n.pose_noise_xy,
+                      wrap_angle(r.yaw + dyaw * n.pose_noise_yaw), self._time)  # fmt: skip
+
+    def poll_sounds(self) -> list[SoundEvent]:
+        """Sounds since the previous call."""
+        out, self._sounds = self._sounds, []
+        return out
+
+    def poll_utterances(self) -> list[Utterance]:
+        """Speech by people since the previous call."""
+        out, self._heard = self._heard, []
+        return out
+
+    def device_states(self) -> dict[str, float | bool]:
+        """Lights: bool; dimmer and blinds: percent; bell: ringing now."""
+        out: dict[str, float | bool] = {}
+        for d in self._world.devices.values():
+            v = self._devices[d.name]
+            out[d.name] = v > 0.5 if d.kind == "light" else (self._time < self._ring_until if d.kind == "bell" else v)
+        return out
+
+    # ------------------------------------------------------------------------------------------ navigation
+
+    def navigate_to_point(self, x: float, y: float, yaw: float | None = None) -> int:
+        """Goal to a world point (nearest free point within 0.3 m); see the protocol."""
+        target = f"point ({x:.2f}, {y:.2f})"
+        goal = self.grid.nearest_free(x, y, 0.3)
+        if goal is None:
+            return self._base.fail_now(target, f"{target} is not free")
+        return self._base.start_goal(target, [goal], lambda _x, _y: yaw)
+
+    def navigate_to_room(self, room: str) -> int:
+        """Goal to a room's waypoint."""
+        if room not in self._world.rooms:
+            raise WorldError(f"navigate_to_room: unknown room {room!r}")
+        wx, wy = self._world.rooms[room].waypoint
+        goal = self.grid.nearest_free(wx, wy, 1.5)
+        if goal is None:
+            return self._base.fail_now(f"room {room}", f"no free pose near the waypoint of {room}")
+        return self._base.start_goal(f"room {room}", [goal], lambda _x, _y: None)
+
+    def navigate_to_furniture(self, furniture: str, near: tuple[float, float] | None = None) -> int:
+        """Goal to a free pose within reach of the furniture (of ``near`` on it when possible), facing it."""
+        if furniture not in self._world.furniture:
+            raise WorldError(f"navigate_to_furniture: unknown furniture {furniture!r}")
+        f = self._world.furniture[furniture]
+        points = self.approach_points(furniture, near, reach=self._world.robot.reach)
+        fx, fy = near if near is not None else f.position
+        return self._base.start_goal(f"furniture {furniture}", points,
+                                     lambda x, y: math.atan2(fy - y, fx - x))  # fmt: skip
+
+    def navigate_to_person(self, person: str) -> int:
+        """Goal to a free pose 0.5-1.0 m from the person (1.1 m if they sit or lie), facing them."""
+        p = self._person(person, "navigate_to_person")
+        if not p.present:
+            return self._base.fail_now(f"person {person}", f"{person} is not in the apartment")
+        far = 1.1 if p.on else 1.0
+        xs, ys, free = self._free_cells()
+        d = np.hypot(xs - p.x, ys - p.y)
+        sel = free & (d <= far) & (d >= 0.5)
+        pts = list(zip(xs[sel].tolist(), ys[sel].tolist(), strict=True))
+        return self._base.start_goal(f"person {person}", pts, lambda x, y: math.atan2(p.y - y, p.x - x))
+
+    def nav_status(self) -> NavStatus:
+        """Latest goal's status."""
+        return self._base.status()
+
+    def set_base_velocity(self, linear: float, angular: float) -> None:
+        """Drive directly (clipped to limits); cancels a goal."""
+        self._base.set_velocity(linear, angular)
+
+    def stop(self) -> None:
+        """Stop and cancel."""
+        self._base.stop()
+
+    def approach_points(self, furniture: str, near: Point | None = None, reach: float = PERSON_REACH) -> list[Point]:
+        """Free grid points within ``reach - 0.2`` m of the furniture (and of ``near`` when one qualifies)."""
+        f = self._world.furniture[furniture]
+        xs, ys, free = self._free_cells()
+        c, s = math.cos(f.yaw), math.sin(f.yaw)
+        lx, ly = c * (xs - f.position[0]) + s * (ys - f.position[1]), -s * (xs - f.position[0]) + c * (
+            ys - f.position[1]
+        )
+        dist = np.hypot(np.maximum(np.abs(lx) - f.size[0] / 2, 0), np.maximum(np.abs(ly) - f.size[1] / 2, 0))
+        sel = free & (dist <= reach - 0.2)
+        if near is not None:
+            close = sel & (np.hypot(xs - near[0], ys - near[1]) <= reach - 0.1)
+            if close.any():
+                sel = close
+        return list(zip(xs[sel].tolist(), ys[sel].tolist(), strict=True))
+
+    def _free_cells(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        g = self.grid
+        rows, cols = g.shape
+        xs = np.broadcast_to(g.origin[0] + (np.arange(cols) + 0.5) * g.resolution, (rows, cols))
+        ys = np.broadcast_to((g.origin[1] + (np.arange(rows) + 0.5) * g.resolution)[:, None], (rows, cols))
+        return xs, ys, ~g.blocked
+
+    # ------------------------------------------------------------------------------------------ gripper
+
+    def pick(self, item: str) -> ActionResult:
+        """Attach an item within reach to the empty gripper."""
+        it = self._item(item, "pick")
+        if self._held is not None:
+            return ActionResult(False, f"hand is not empty: holding {self._held}")
+        if it.holder is not None:
+            return ActionResult(False, f"{item} is held by {it.holder}")
+        d = math.hypot(it.x - self._base.x, it.y - self._base.y)
+        reach = self._world.robot.reach
+        if d > reach:
+            return ActionResult(False, f"{item} is {d:.2f} m away, reach is {reach:.2f} m")
+        if it.z > 1.6:
+            return ActionResult(False, f"{item} is too high ({it.z:.2f} m)")
+        it.holder, it.on, it.vz = self.robot_name, None, None
+        self._held = item
+        self._carry(it)
+        return ActionResult(True)
+
+    def place(self, furniture: str) -> ActionResult:
+        """Put the held item on the furniture at the free spot nearest the robot, within reach."""
+        if furniture not in self._world.furniture:
+            raise WorldError(f"place: unknown furniture {furniture!r}")
+        if self._held is None:
+            return ActionResult(False, "hand is empty")
+        f = self._world.furniture[furniture]
+        reach = self._world.robot.reach
+        if not f.surface:
+            return ActionResult(False, f"{furniture} has no surface to put things on")
+        d = f.distance(self._base.x, self._base.y)
+        if d > reach:
+            return ActionResult(False, f"{furniture} is {d:.2f} m away, reach is {reach:.2f} m")
+        it = self._items[self._held]
+        spot = self._nearest_spot(f.name, it, (self._base.x, self._base.y), reach)
+        if spot is None:
+            return ActionResult(False, f"no free spot on {furniture} within reach")
+        it.x, it.y, it.z = spot[0], spot[1], f.height + it.size[2] / 2
+        it.holder, it.on = None, furniture
+        self._held = None
+        return ActionResult(True)
+
+    def release(self) -> ActionResult:
+        """Open the gripper in mid-air: the item falls and counts as dropped."""
+        if self._held is None:
+            return ActionResult(False, "hand is empty")
+        it = self._items[self._held]
+        it.holder, it.on, it.vz = None, None, 0.0
+        self._held = None
+        self._drops += 1
+        return ActionResult(True)
+
+    def give(self, person: str) -> ActionResult:
+        """Hand the held item to a person within reach."""
+        p = self._person(person, "give")
+        if self._held is None:
+            return ActionResult(False, "hand is empty")
+        d = math.hypot(p.x - self._base.x, p.y - self._base.y)
+        reach = self._world.robot.reach + GIVE_REACH_EXTRA
+        if not p.present or d > reach:
+            return ActionResult(False, f"{person} is {d:.2f} m away, reach is {reach:.2f} m")
+        if p.carrying is not None:
+            return ActionResult(False, f"{person} already holds {p.carrying}")
+        it = self._items[self._held]
+        it.holder = person
+        p.carrying = it.name
+        self._held = None
+        self._carry(it)
+        return ActionResult(True)
+
+    def held_item(self) -> str | None:
+        """The item in the gripper."""
+        return self._held
+
+    def pan_camera(self, angle: float) -> None:
+        """Camera pan relative to the base, clipped to +-pi/2."""
+        self._pan = max(-PAN_LIMIT, min(PAN_LIMIT, angle))
+        self._frame = None
+
+    @property
+    def camera_pan(self) -> float:
+        """Current camera pan in radians."""
+        return self._pan
+
+    # ------------------------------------------------------------------------------------------ devices, speech
+
+    def set_light(self, device: str, on: bool) -> ActionResult:
+        """Switch a light."""
+        d = self._device(device, "set_light")
+        if d.kind != "light":
+            return ActionResult(False, f"{device} is a {d.kind}, not a light")
+        self._devices[device] = 1.0 if on else 0.0
+        return ActionResult(True)
+
+    def set_level(self, device: str, percent: float) -> ActionResult:
+        """Set a dimmer or blinds (percent, clipped to 0-100)."""
+        d = self._device(device, "set_level")
+        if d.kind not in ("dimmer", "blinds"):
+            return ActionResult(False, f"{device} is a {d.kind}, it has no level")
+        self._devices[device] = max(0.0, min(100.0, float(percent)))
+        return ActionResult(True)
+
+    def say(self, text: str) -> None:
+        """Record the robot's speech."""
+        r = self._base
+        self._spoken.append(Utterance(text=text, speaker=self.robot_name, stamp=self._time, position=(r.x, r.y, 1.0)))
+
+    def spoken(self) -> list[Utterance]:
+        """Everything the robot said."""
+        return list(self._spoken)
+
+    def hear(self, text: str, speaker: str = "annie", audio_path: str | None = None) -> None:
+        """A person says ``text`` now."""
+        p = self._person(speaker, "hear")
+        words = " ".join("".join(ch for ch in text.lower() if ch.isalnum() or ch in " '_").split())
+        self._heard.append(Utterance(text=words, speaker=speaker, stamp=self._time, audio_path=audio_path,
+                                     position=(p.x, p.y, p.z_base(self._world) + p.height * 0.9)))  # fmt: skip
+
+    def escort(self, person: str) -> ActionResult:
+        """Ask a person within 2 m to follow."""
+        p = self._person(person, "escort")
+        d = math.hypot(p.x - self._base.x, p.y - self._base.y)
+        if not p.present or d > 2.0:
+            return ActionResult(False, f"{person} is {d:.2f} m away, must be within 2.00 m")
+        for q in self._people.people.values():
+            q.following = False
+        p.following = True
+        p.tasks.clear()
+        return ActionResult(True)
+
+    def stop_escort(self) -> None:
+        """Nobody follows the robot any more."""
+        for q in self._people.people.values():
+            q.following = False
+            q.path = []
+
+    # ------------------------------------------------------------------------------------------ ground truth
+
+    def true_robot_pose(self) -> Pose2D:
+        """The robot's true pose."""
+        return self._base.pose(self._time)
+
+    def true_pose(self, name: str) -> Pose3D:
+        """True pose of any instance."""
+        w, t = self._world, self._time
+        if name == self.robot_name:
+            r = self._base
+            return Pose3D((r.x, r.y, 0.0), _yaw_quat(r.yaw), t)
+        if name in self._items:
+            it = self._items[name]
+            return Pose3D((it.x, it.y, it.z), (0.0, 0.0, 0.0, 1.0), t)
+        if name in self._people.people:
+            p = self._people.people[name]
+            return Pose3D((p.x, p.y, p.z_base(w)), _yaw_quat(p.yaw), t)
+        if name in w.furniture:
+            f = w.furniture[name]
+            return Pose3D((f.position[0], f.position[1], 0.0), _yaw_quat(f.yaw), t)
+        raise WorldError(f"true_pose: unknown instance {name!r}")
+
+    def person_present(self, name: str) -> bool:
+        """True when the person is inside the apartment."""
+        return self._person(name, "person_present").present
+
+    def ground_truth_facts(self, include_static: bool = False) -> set[tuple[str, ...]]:
+        """True facts now (see the protocol)."""
+        facts = ground_truth(self._world, (self._base.x, self._base.y), self._held, self._items,
+                             self._people.people, self._devices, self._time < self._ring_until)  # fmt: skip
+        if include_static:
+            facts |= self._world.static_facts()
+        return facts
+
+    def counters(self) -> Counters:
+        """Penalty counters."""
+        return Counters(bumps=self._bumps, person_hits=self._hits, drops=self._drops)
+
+    def close(self) -> None:
+        """Disconnect pybullet (idempotent)."""
+        if not self._closed:
+            self._scene.close()
+            self._closed = True
+
+    def __enter__(self) -> Simulation:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.close()
+
+    # ------------------------------------------------------------------------------------------ PeopleHooks
+
+    def person_take(self, person: str, item: str) -> bool:
+        """A person takes an item within their reach (scenario helper)."""
+        p, it = self._people.people[person], self._items[item]
+        if it.holder is not None or p.carrying is not None:
+            return False
+        if math.hypot(it.x - p.x, it.y - p.y) > PERSON_REACH + 0.3:
+            return False
+        it.holder, it.on, it.vz = person, None, None
+        p.carrying = item
+        self._carry(it)
+        return True
+
+    def person_put(self, person: str, furniture: str) -> bool:
+        """A person puts what they carry on the furniture (scenario helper)."""
+        p = self._people.people[person]
+        if p.carrying is None:
+            return False
+        it, f = self._items[p.carrying], self._world.furniture[furniture]
+        spot = self._nearest_spot(furniture, it, (p.x, p.y), PERSON_REACH + 0.3)
+        if spot is None:
+            return False
+        it.x, it.y, it.z = spot[0], spot[1], f.height + it.size[2] / 2
+        it.holder, it.on = None, furniture
+        p.carrying = None
+        return True
+
+    # ------------------------------------------------------------------------------------------ internals
+
+    def _nearest_spot(self, furniture: str, it: ItemState, origin: Point, reach: float) -> Point | None:
+        spots = free_spots(self._world.furniture[furniture], it, list(self._items.values()))
+        spots = [s for s in spots if math.dist(s, origin) <= reach]
+        return min(spots, key=lambda s: (math.dist(s, origin), s)) if spots else None
+
+    def _carry(self, it: ItemState) -> None:
+        if it.holder == self.robot_name:
+            r = self._base
+            it.x, it.y, it.z = r.x + 0.3 * math.cos(r.yaw), r.y + 0.3 * math.sin(r.yaw), 0.8
+        elif it.holder is not None:
+            p = self._people.people[it.holder]
+            it.x, it.y, it.z = p.x, p.y, p.z_base(self._world) + 0.9
+
+    def _clearance(self, x: float, y: float) -> tuple[float, str]:
+        """Distance from a point to the nearest furniture or wall, and its name (``"wall"``)."""
+        best = (math.inf, "")
+        for f in self._world.furniture.values():
+            d = f.distance(x, y)
+            if d < best[0]:
+                best = (d, f.name)
+        half = self._world.wall_thickness / 2
+        for a, b in self._walls:
+            d = segment_distance(x, y, a, b) - half
+            if d < best[0]:
+                best = (d, "wall")
+        return best
+
+    def _base_may_stand(self, x: float, y: float) -> bool:
+        """Velocity mode: the base may press 2 cm into an obstacle or person (bumper), no deeper."""
+        rad = self._world.robot.radius
+        if self._clearance(x, y)[0] < rad - 0.02:
+            return False
+        return all(math.hypot(x - px, y - py) >= rad + pr - 0.02 for _, px, py, pr in self._people.discs())
+
+    def _update_contacts(self) -> None:
+        x, y, rad = self._base.x, self._base.y, self._world.robot.radius
+        touching: set[str] = set()
+        for f in self._world.furniture.values():
+            if f.distance(x, y) < rad - 1e-6:
+                touching.add(f.name)
+        half = self._world.wall_thickness / 2
+        if any(segment_distance(x, y, a, b) - half < rad - 1e-6 for a, b in self._walls):
+            touching.add("wall")
+        for name, px, py, pr in self._people.discs():
+            if math.hypot(x - px, y - py) < rad + pr - 1e-6:
+                touching.add("person:" + name)
+        for new in touching - self._touching:
+            if new.startswith("person:"):
+                self._hits += 1
+            else:
+                self._bumps += 1
+        self._touching = touching
+
+    def _sync_bodies(self) -> None:
+        s, w = self._scene, self._world
+        r = self._base
+        s.move(self.robot_name, (r.x, r.y, w.robot.height / 2), r.yaw)
+        for p in self._people.people.values():
+            z = p.z_base(w) + p.height / 2 if p.present else -50.0
+            s.move(p.name, (p.x, p.y, z), p.yaw)
+        for it in self._items.values():
+            s.move(it.name, (it.x, it.y, it.z))
+
+    def _apply_event(self, ev: Event) -> None:
+        from worlds.sim.events import apply_event
+
+        apply_event(self, self._people, ev)
+
+    def _ring(self) -> None:
+        bell = next(d for d in self._world.devices.values() if d.kind == "bell")
+        self._ring_until = self._time + RING_SECONDS
+        self._sounds.append(SoundEvent(kind="doorbell", position=bell.position, stamp=self._time, source=bell.name))
+
+    def _check_open(self) -> None:
+        if self._closed:
+            raise WorldError("the simulation is closed")
+
+    def _item(self, name: str, what: str) -> ItemState:
+        if name not in self._items:
+            raise WorldError(f"{what}: unknown item {name!r}")
+        return self._items[name]
+
+    def _person(self, name: str, what: str) -> PersonState:
+        if name not in self._people.people:
+            raise WorldError(f"{what}: unknown person {name!r}")
+        return self._people.people[name]
+
+    def _device(self, name: str, what: str) -> Device:
+        if name not in self._world.devices:
+            raise WorldError(f"{what}: unknown device {name!r}")
+        return self._world.devices[name]
+
+
+def _yaw_quat(yaw: float) -> tuple[float, float, float, float]:
+    return (0.0, 0.0, math.sin(yaw / 2), math.cos(yaw / 2))
