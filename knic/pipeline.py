@@ -74,6 +74,7 @@ class PipelineOptions:
 
     Attributes:
         camera_hz: camera KP rate; None: the role's top rate for perceived classes.
+        points_per_detection: world points deprojected per detection (the density of the entity octomaps).
         object_detect_range: metres within which items are reliably detected (visibility for misses).
         person_detect_range: the same for people.
         needed: consecutive consistent observations before a place fact changes.
@@ -84,6 +85,7 @@ class PipelineOptions:
     """
 
     camera_hz: float | None = None
+    points_per_detection: int = 128
     object_detect_range: float = 4.0
     person_detect_range: float = 6.0
     needed: int = 2
@@ -157,9 +159,22 @@ def build_pipeline(
         LocationsKP(locations, bus, kb),
         RobotPoseKP(sim, bus, robot_name, frequency=10.0),
         CameraObjectsKP(
-            camera, bus, kb, class_symbols, frequency=camera_hz, detect_range=opts.object_detect_range
+            camera,
+            bus,
+            kb,
+            class_symbols,
+            frequency=camera_hz,
+            detect_range=opts.object_detect_range,
+            max_points=opts.points_per_detection,
         ),
-        CameraPeopleKP(camera, bus, kb, frequency=camera_hz, detect_range=opts.person_detect_range),
+        CameraPeopleKP(
+            camera,
+            bus,
+            kb,
+            frequency=camera_hz,
+            detect_range=opts.person_detect_range,
+            max_points=opts.points_per_detection,
+        ),
         SoundKP(sim, bus, kb, frequency=10.0),
         DeviceKP(
             sim,

@@ -1,12 +1,11 @@
-"""The component scheduler: BICA-style ``step()`` components at their own frequencies in simulated time
-(seed 001).
+"""The component scheduler: BICA-style ``step()`` components at their own frequencies in simulated time (seed
+001).
 
 Lifecycle of a :class:`Component`: construct it offline (no simulator needed), register it with
 :meth:`Scheduler.add`, and the scheduler calls ``step(now)`` whenever its period has elapsed in **simulated
 time**; removing it is a quiet shutdown: its ``step`` is simply not called any more, so a component never
-assumes
-it will be called again. There is one loop and one thread: steps never overlap, and a step that takes too long
-delays the others without cancelling any (graceful degradation).
+assumes it will be called again. There is one loop and one thread: steps never overlap, and a step that takes
+too long delays the others without cancelling any (graceful degradation).
 
 The scheduler reports two kinds of overrun as :class:`SchedulerEvent` (and a ``logging`` warning):
 

@@ -252,7 +252,7 @@ class TaskPlanner:
         for g in wanted:
             problem.add_goal(problem.fluent(g[0])(*(problem.object(a) for a in g[1:])))
         with OneshotPlanner(name=_UP_NAMES[engine]) as planner:
-            answer = planner.solve(problem, timeout=timeout)
+            answer = planner.solve(problem, timeout=None if engine == "tamer" else timeout)
         if answer.status == S.TIMEOUT:
             return PlanResult(
                 PlanStatus.TIMEOUT, goals=task.goals, engine=engine, message="time limit reached"
@@ -262,7 +262,7 @@ class TaskPlanner:
             problem.clear_goals()
             problem.add_quality_metric(Oversubscription(metric_goals))
             with OneshotPlanner(name=f"oversubscription[{_UP_NAMES[engine]}]") as planner:
-                answer = planner.solve(problem, timeout=timeout)
+                answer = planner.solve(problem, timeout=None if engine == "tamer" else timeout)
         if answer.plan is None:
             if answer.status in (S.UNSOLVABLE_PROVEN, S.UNSOLVABLE_INCOMPLETELY):
                 return PlanResult(PlanStatus.UNSOLVABLE, (), task.goals, task.goals, 0.0, engine)

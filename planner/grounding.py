@@ -133,7 +133,7 @@ class _Grounder:
             if new is not None:
                 yield from self.join(schema, rest, new, index)
 
-    def run(self) -> GroundedTask:
+    def run(self, relevance: bool = True) -> GroundedTask:
         task = self.task
         reach: set[Atom] = set(task.facts)
         index = _Index()
@@ -188,7 +188,7 @@ class _Grounder:
         generated = [a for a in actions.values() if a is not None]
         unreachable = tuple(g for g in task.goals if g not in reach)
         reachable_goals = [g for g in task.goals if g in reach]
-        relevant = relevant_actions(generated, reachable_goals)
+        relevant = relevant_actions(generated, reachable_goals) if relevance else generated
         return GroundedTask(task, reach, relevant, unreachable, len(generated))
 
 
@@ -217,9 +217,13 @@ def relevant_actions(actions: list[GroundAction], goals: list[Atom]) -> list[Gro
     return [a for i, a in enumerate(actions) if i in chosen]
 
 
-def ground_task(task: PlanningTask) -> GroundedTask:
+def ground_task(task: PlanningTask, *, relevance: bool = True) -> GroundedTask:
     """Ground ``task`` by relaxed reachability, then keep the actions relevant to its reachable goals.
+
+    Args:
+        task: the task.
+        relevance: apply backward relevance (switch off only to compare pruned with unpruned).
 
     Durative actions are not grounded here (temporal tasks go to unified-planning engines).
     """
-    return _Grounder(task).run()
+    return _Grounder(task).run(relevance)

@@ -9,7 +9,8 @@ Relevance pruning happens at two levels:
    with their facts. The kept set is the map (every object of a type related to itself by a static
    predicate, e.g. rooms joined by ``connected``), the constants, the goal objects, every object of an action
    parameter type that no kept object can fill (e.g. the robot, the furniture), and, transitively, the objects
-   that share a fact with a kept non-map object (e.g. an item the robot holds). A plan of the focused task
+   in facts whose first argument is a kept non-map object (e.g. ``(holding r2d2 mug)`` keeps the mug, while
+   ``(object_on mug table)`` does not make a table keep its mug). A plan of the focused task
    is a plan of the full task: a ground action's conditions and effects mention only its arguments and the
    constants, and the focused initial state is the full one restricted to the kept objects. The converse may
    fail (a goal might need an object that was dropped), so :class:`~planner.engines.TaskPlanner` plans the
@@ -116,8 +117,8 @@ def focus_objects(task: PlanningTask) -> set[str]:
                 seeds.update(members)
     facts_of: dict[str, list[Atom]] = {}
     for atom in task.facts:
-        for obj in atom[1:]:
-            facts_of.setdefault(obj, []).append(atom)
+        if len(atom) > 1:
+            facts_of.setdefault(atom[1], []).append(atom)
     kept.update(seeds)
     stack = [s for s in seeds if s not in hubs]
     while stack:

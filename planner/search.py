@@ -1,6 +1,6 @@
 """In-process heuristic search over a grounded STRIPS task (no subprocess, no files).
 
-Greedy best-first search with the FF heuristic (relaxed plan over h-add best supporters) and helpful actions
+Lazy greedy best-first search with the FF heuristic (relaxed plan over first achievers) and helpful actions
 (the relaxed plan's first-layer actions are tried in a preferred queue first, as in Fast Downward's
 ``lazy_greedy``/``eager_greedy`` with preferred operators). It is complete on finite tasks: when the search
 space is exhausted the goals are unreachable together. A node limit bounds the effort; reaching it raises
@@ -64,6 +64,12 @@ class StripsSearch:
             for p in op.pre:
                 self.pre_of.setdefault(p, []).append(i)
         self.no_pre = [i for i, op in enumerate(self.ops) if not op.pre]
+        self.pre_count = [len(op.pre) for op in self.ops]
+        # successor generation: candidates are the ops whose first precondition holds
+        self.by_first: dict[int, list[int]] = {}
+        for i, op in enumerate(self.ops):
+            if op.pre:
+                self.by_first.setdefault(op.pre[0], []).append(i)
         self.init_atoms = init
         self.init = frozenset(self.atom_ids[a] for a in init if a in self.atom_ids)
 
@@ -75,39 +81,42 @@ class StripsSearch:
         return found
 
     def heuristic(self, state: frozenset[int], goals: tuple[int, ...]) -> tuple[float, list[int]]:
-        """FF value of ``state`` and its helpful actions (relaxed-plan actions applicable in ``state``)."""
-        cost: dict[int, int] = dict.fromkeys(state, 0)
-        supporter: dict[int, int] = {}
-        remaining = [len(op.pre) for op in self.ops]
-        op_cost = [0] * len(self.ops)
-        heap: list[tuple[int, int]] = [(0, a) for a in state]
-        heapq.heapify(heap)
-        done: set[int] = set()
+        """FF value of ``state`` and its helpful actions (relaxed-plan actions applicable in ``state``).
+
+        The relaxed planning graph is built layer by layer (unit costs, each atom reached once, stopping as
+        soon as every goal is reached); the relaxed plan is extracted backwards from the first achievers.
+        """
+        remaining = self.pre_count[:]
+        achiever: dict[int, int] = {}
+        reached = set(state)
+        frontier = list(state)
+        pending = sum(1 for g in goals if g not in reached)
+        ops, pre_of = self.ops, self.pre_of
         for i in self.no_pre:
-            for q in self.ops[i].add:
-                if q not in cost or cost[q] > 1:
-                    cost[q] = 1
-                    supporter[q] = i
-                    heapq.heappush(heap, (1, q))
-        pending_goals = set(goals)
-        while heap and pending_goals:
-            c, p = heapq.heappop(heap)
-            if p in done or cost.get(p, INF) < c:
-                continue
-            done.add(p)
-            pending_goals.discard(p)
-            for i in self.pre_of.get(p, ()):
-                op_cost[i] += c
-                remaining[i] -= 1
-                if remaining[i] == 0:
-                    new = op_cost[i] + 1
-                    for q in self.ops[i].add:
-                        if new < cost.get(q, INF):
-                            cost[q] = new
-                            supporter[q] = i
-                            heapq.heappush(heap, (new, q))
-        if pending_goals:
-            return INF, []
+            for q in ops[i].add:
+                if q not in reached:
+                    reached.add(q)
+                    achiever[q] = i
+                    frontier.append(q)
+                    if q in goals:
+                        pending -= 1
+        while pending > 0:
+            if not frontier:
+                return INF, []
+            new: list[int] = []
+            for p in frontier:
+                for i in pre_of.get(p, ()):
+                    remaining[i] -= 1
+                    if remaining[i] == 0:
+                        for q in ops[i].add:
+                            if q not in reached:
+                                reached.add(q)
+                                achiever[q] = i
+                                new.append(q)
+            for q in new:
+                if q in goals:
+                    pending -= 1
+            frontier = new
         relaxed: set[int] = set()
         stack = [g for g in goals if g not in state]
         seen: set[int] = set()
@@ -116,25 +125,35 @@ class StripsSearch:
             if p in seen or p in state:
                 continue
             seen.add(p)
-            i = supporter[p]
+            i = achiever[p]
             if i not in relaxed:
                 relaxed.add(i)
-                stack.extend(self.ops[i].pre)
-        helpful = [i for i in relaxed if all(p in state for p in self.ops[i].pre)]
+                stack.extend(ops[i].pre)
+        helpful = [i for i in relaxed if all(p in state for p in ops[i].pre)]
         return float(len(relaxed)), helpful
 
-    def _applicable(self, i: int, state: frozenset[int]) -> bool:
-        op = self.ops[i]
-        return all(p in state for p in op.pre) and not any(n in state for n in op.neg)
+    def applicable(self, state: frozenset[int]) -> list[int]:
+        """Indices of the ops applicable in ``state``."""
+        ops = self.ops
+        out = [i for i in self.no_pre if not any(n in state for n in ops[i].neg)]
+        for atom in state:
+            for i in self.by_first.get(atom, ()):
+                op = ops[i]
+                if all(p in state for p in op.pre) and not any(n in state for n in op.neg):
+                    out.append(i)
+        return out
 
-    def solve(
-        self, goals: list[Atom], node_limit: int = 200_000, deadline: float | None = None
-    ) -> list[GroundAction] | None:
+    def solve(self, goals: list[Atom], node_limit: int = 200_000,
+              deadline: float | None = None) -> list[GroundAction] | None:
         """A plan reaching every atom in ``goals`` from the initial state, or ``None`` when none exists.
+
+        Lazy greedy best-first search as Fast Downward's ``lazy_greedy([ff], preferred=[ff])``: successors
+        are queued with their parent's value and evaluated when taken out; successors by helpful actions
+        go to a preferred queue that is served first after each improvement (boost) and alternately otherwise.
 
         Args:
             goals: positive goal atoms.
-            node_limit: most states to expand.
+            node_limit: most states to evaluate.
             deadline: ``time.perf_counter()`` value (wall clock) after which the search gives up.
 
         Raises:
@@ -144,59 +163,54 @@ class StripsSearch:
             return None
         goal_ids = tuple(self.atom_ids[g] for g in goals if g in self.atom_ids)
         start = self.init
-        if all(g in start for g in goal_ids):
-            return []
-        h0, helpful0 = self.heuristic(start, goal_ids)
-        if h0 == INF:
-            return None
         parents: dict[frozenset[int], tuple[frozenset[int] | None, int]] = {start: (None, -1)}
         counter = itertools.count()
-        # Two open lists as in FD's preferred-operator search: helpful successors first, then all.
-        preferred: list[tuple[float, int, frozenset[int]]] = []
-        regular: list[tuple[float, int, frozenset[int]]] = []
-        helpful_of: dict[frozenset[int], list[int]] = {start: helpful0}
-        heapq.heappush(regular, (h0, next(counter), start))
-        heapq.heappush(preferred, (h0, next(counter), start))
-        closed: set[frozenset[int]] = set()
-        expanded = 0
-        use_preferred = True
-        all_ops = range(len(self.ops))
+        preferred: list[tuple[float, int, frozenset[int], int]] = []
+        regular: list[tuple[float, int, frozenset[int], int]] = []
+        heapq.heappush(regular, (0.0, next(counter), start, -1))
+        best = INF
+        boost = 0
+        turn = 0
+        evaluated = 0
         while preferred or regular:
-            queue = preferred if (use_preferred and preferred) or not regular else regular
-            use_preferred = not use_preferred
-            _, _, state = heapq.heappop(queue)
-            if state in closed:
-                continue
-            closed.add(state)
-            expanded += 1
-            if expanded > node_limit:
+            if preferred and (boost > 0 or turn % 2 == 0 or not regular):
+                _, _, parent, op_index = heapq.heappop(preferred)
+                boost = max(boost - 1, 0)
+            else:
+                _, _, parent, op_index = heapq.heappop(regular)
+            turn += 1
+            if op_index < 0:
+                state = parent
+            else:
+                op = self.ops[op_index]
+                state = (parent - set(op.delete)) | set(op.add)
+                if state in parents:
+                    continue
+                parents[state] = (parent, op_index)
+            if all(g in state for g in goal_ids):
+                return self._extract(parents, state)
+            evaluated += 1
+            if evaluated > node_limit:
                 raise SearchLimitReached(f"node limit {node_limit} reached")
-            if deadline is not None and expanded % 64 == 0 and time.perf_counter() > deadline:
+            if deadline is not None and evaluated % 32 == 0 and time.perf_counter() > deadline:
                 raise SearchLimitReached("time limit reached", timeout=True)
-            helpful = set(helpful_of.pop(state, ()))
-            for i in all_ops:
-                if not self._applicable(i, state):
-                    continue
-                op = self.ops[i]
-                succ = (state - set(op.delete)) | set(op.add)
-                if succ in parents:
-                    continue
-                parents[succ] = (state, i)
-                if all(g in succ for g in goal_ids):
-                    return self._extract(parents, succ)
-                h, succ_helpful = self.heuristic(succ, goal_ids)
-                if h == INF:
-                    continue
-                helpful_of[succ] = succ_helpful
-                entry = (h, next(counter), succ)
-                heapq.heappush(regular, entry)
-                if i in helpful:
+            h, helpful = self.heuristic(state, goal_ids)
+            if h == INF:
+                continue
+            if h < best:
+                best = h
+                boost += 1000
+            helpful_set = set(helpful)
+            for i in self.applicable(state):
+                entry = (h, next(counter), state, i)
+                if i in helpful_set:
                     heapq.heappush(preferred, entry)
+                else:
+                    heapq.heappush(regular, entry)
         return None
 
-    def _extract(
-        self, parents: dict[frozenset[int], tuple[frozenset[int] | None, int]], state: frozenset[int]
-    ) -> list[GroundAction]:
+    def _extract(self, parents: dict[frozenset[int], tuple[frozenset[int] | None, int]],
+                 state: frozenset[int]) -> list[GroundAction]:
         steps: list[GroundAction] = []
         current: frozenset[int] | None = state
         while current is not None:

@@ -215,11 +215,11 @@ def _rooms(ctx: _Ctx, raw: list[Any]) -> dict[str, Room]:
         if len(poly_raw) < 3:
             raise ctx.fail(entry, "polygon needs at least 3 vertices")
         poly = tuple((p[0], p[1]) for p in (_vec(ctx, entry + ".polygon", v, 2) for v in poly_raw))
-        if abs(polygon_area(poly)) < 1e-6:
-            raise ctx.fail(entry, "polygon has no area")
         bad = self_intersection(poly)
         if bad is not None:
             raise ctx.fail(entry, f"polygon is self-intersecting (edges {bad[0]} and {bad[1]} cross)")
+        if abs(polygon_area(poly)) < 1e-6:
+            raise ctx.fail(entry, "polygon has no area")
         room = Room(name=name, polygon=poly, waypoint=(0.0, 0.0))
         wp = _vec(ctx, entry + ".waypoint", d["waypoint"], 2) if "waypoint" in d else room.centroid
         if not room.contains(wp[0], wp[1]):

@@ -164,7 +164,7 @@ class Simulation:
         n = max(1, math.ceil(dt / CONTROL_DT - 1e-9))
         h = dt / n
         for _ in range(n):
-            self._time += h
+            self._time = round(self._time + h, 9)
             self._apply_due_events()
             r = self._base
             self._people.update(h, self._time, (r.x, r.y, self._world.robot.radius))

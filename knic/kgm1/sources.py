@@ -10,6 +10,7 @@ and furniture included) that KGM-2 uses to count misses.
 
 from __future__ import annotations
 
+import time
 from collections.abc import Callable
 from typing import Protocol
 
@@ -65,12 +66,19 @@ class SharedCamera:
         self._stamp: float | None = None
         self._frame: CameraFrame | None = None
         self.renders = 0
+        self.render_wall_s = 0.0
 
     def camera_frame(self) -> CameraFrame:
-        """The frame of the current simulated instant (rendered on the first request at that instant)."""
+        """The frame of the current simulated instant (rendered on the first request at that instant).
+
+        :attr:`render_wall_s` accumulates the wall-clock seconds spent in the source (the simulator's
+        rendering), so a benchmark can tell the pipeline's own CPU from the simulator's.
+        """
         now = self._clock()
         if self._frame is None or self._stamp != now:
+            start = time.perf_counter()
             self._frame = self._camera.camera_frame()
+            self.render_wall_s += time.perf_counter() - start
             self._stamp = now
             self.renders += 1
         return self._frame

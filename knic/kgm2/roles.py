@@ -1,6 +1,5 @@
-"""Robot roles as data (seed 004's motivational principles): what the cognitive layer processes, how often,
-how
-urgently.
+"""Robot roles as data (seed 004's motivational principles): what the cognitive layer processes, how often and
+how urgently.
 
 A role file (default :data:`ROLES_FILE`, ``knic/roles.yaml``) maps role names to a default policy, per-class
 and per-room policies (``rate_hz`` in simulated time, ``priority``), the time to live of unseen people and two

@@ -1,8 +1,7 @@
 """Spatial abstraction with octomaps (seed 004, section III.B): rooms, furniture and tracked entities.
 
-Every location and every tracked entity is an octomap (``pyoctomap.OcTree``) in the **world frame** (metres,
-z up). Besides the OcTree itself each map keeps a numpy mirror of its occupied voxel keys so that KP'
-components
+Every location and every tracked entity is an octomap (``pyoctomap.OcTree``) in the **world frame** (metres, z
+up). Besides the OcTree itself each map keeps a numpy mirror of its occupied voxel keys so that KP' components
 can intersect maps with vectorised key operations instead of walking trees voxel by voxel.
 
 Key space: octomap's, ``key = floor(coordinate / resolution) + 32768`` per axis. Entities use
@@ -18,6 +17,7 @@ Key space: octomap's, ``key = floor(coordinate / resolution) + 32768`` per axis.
 
 from __future__ import annotations
 
+import math
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 
@@ -231,16 +231,26 @@ class EntityOctomap:
     """The octomap of one tracked entity in the world frame.
 
     ``update`` inserts a point cloud with ray casting from the sensor origin; when the new cloud's centroid is
-    more than ``reset_distance`` metres from the centroid the map was started at, the map is cleared first
-    (the
-    entity moved: its old voxels no longer describe it). :attr:`keys` mirrors the voxels hit by the latest
-    cloud.
+    more than ``reset_distance`` metres from the centroid the map was started at, the map is cleared
+    first (the entity moved: its old voxels no longer describe it). With ``discretize`` (the default)
+    octomap first reduces the cloud to distinct end voxels and casts one ray per voxel (octomap's own
+    discretised insertion: a voxel hit by several points of one cloud gets one hit update), which is cheaper
+    for dense depth clouds.
+
+    :attr:`keys` mirrors the voxels hit by the latest cloud: one key per point (a voxel hit by several points
+    appears several times; intersections count distinct voxels).
     """
 
     def __init__(
-        self, resolution: float = DEFAULT_RESOLUTION, *, reset_distance: float = 0.5, max_range: float = -1.0
+        self,
+        resolution: float = DEFAULT_RESOLUTION,
+        *,
+        reset_distance: float = 0.5,
+        max_range: float = -1.0,
+        discretize: bool = True,
     ) -> None:
         self.resolution = resolution
+        self.discretize = discretize
         self.reset_distance = reset_distance
         self.max_range = max_range
         self.tree = pyoctomap.OcTree(resolution)
@@ -253,7 +263,7 @@ class EntityOctomap:
         self, points: Points, centroid: npt.NDArray[np.float64], origin: Sequence[float] | None
     ) -> Keys:
         """Insert ``points`` (world frame) seen from ``origin``; return and keep the voxel keys they hit."""
-        if self.anchor is None or float(np.linalg.norm(centroid - self.anchor)) > self.reset_distance:
+        if self.anchor is None or math.dist(centroid, self.anchor) > self.reset_distance:
             if self.anchor is not None:
                 self.tree.clear()
                 self.resets += 1
@@ -262,8 +272,10 @@ class EntityOctomap:
             if origin is None:
                 self.tree.updateNodes(points, True)
             else:
-                self.tree.insertPointCloud(points, np.asarray(origin, dtype=np.float64), self.max_range)
-            self.keys = unique_keys(keys_of(points, self.resolution))
+                self.tree.insertPointCloud(
+                    points, np.asarray(origin, dtype=np.float64), self.max_range, False, self.discretize
+                )
+            self.keys = keys_of(points, self.resolution)
         else:
             self.keys = keys_of(centroid[None, :], self.resolution)
         self.updates += 1

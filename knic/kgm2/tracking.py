@@ -7,9 +7,9 @@ For every scan (one camera frame) the detections of one class are matched to the
 2. the others are matched greedily by increasing centroid distance, a pair counting only within the radius
    ``radius`` (metres) and each track and detection used once (lines 2.1.2-2.1.15);
 3. an unmatched detection starts a new track;
-4. a track not updated by the scan gets a miss when the scan could have seen it (``visible``; every scan
-when no
-   visibility test is given) and is dropped after more than ``max_misses`` consecutive misses (2.1.16-2.1.19).
+4. a track not updated by the scan gets a miss when the scan could have seen it (``visible``; every scan when
+   no visibility test is given) and is dropped after more than ``max_misses`` consecutive misses
+   (2.1.16-2.1.19).
 
 The centroid of a matched track moves to the weighted average of old and new (weight ``gain`` on the new one).
 Time stamps are simulated seconds.
@@ -18,6 +18,7 @@ Time stamps are simulated seconds.
 from __future__ import annotations
 
 import itertools
+import math
 from collections import deque
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
@@ -97,13 +98,11 @@ class Tracker:
         self.resolution = resolution
         self.max_range = max_range
         self.tracks: dict[int, Track] = {}
+        self._by_symbol: dict[str, Track] = {}
 
     def by_symbol(self, symbol: str) -> Track | None:
         """The live track of a symbol, if any."""
-        for track in self.tracks.values():
-            if track.symbol == symbol:
-                return track
-        return None
+        return self._by_symbol.get(symbol)
 
     def associate(
         self, detections: Sequence[LLKU], now: float, visible: Visibility | None = None
@@ -120,8 +119,12 @@ class Tracker:
                 result.updated.append((track, det))
             else:
                 pending.append(det)
-        free = [t for t in self.tracks.values() if t.track_id not in used and not self._claimed(t, pending)]
         matched: set[int] = set()
+        free = []
+        if pending:
+            free = [
+                t for t in self.tracks.values() if t.track_id not in used and not self._claimed(t, pending)
+            ]
         if pending and free:
             det_pos = np.array([d.position for d in pending])
             trk_pos = np.array([t.centroid for t in free])
@@ -172,6 +175,7 @@ class Tracker:
             track.misses += 1
             if track.misses > self.max_misses:
                 del self.tracks[track.track_id]
+                self._by_symbol.pop(track.symbol, None)
                 result.dropped.append(track)
 
     def _create(self, det: LLKU, now: float) -> Track:
@@ -184,11 +188,12 @@ class Tracker:
         )
         track.support.append(det.uid)
         self.tracks[tid] = track
+        self._by_symbol[track.symbol] = track
         return track
 
     def _update(self, track: Track, det: LLKU, now: float) -> None:
-        new = np.asarray(det.position, dtype=np.float64)
-        if float(np.linalg.norm(new - track.centroid)) >= self.radius:
+        new = np.array(det.position)
+        if math.dist(det.position, track.centroid) >= self.radius:
             track.centroid = new
         else:
             track.centroid = self.gain * new + (1.0 - self.gain) * track.centroid

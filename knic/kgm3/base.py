@@ -1,11 +1,10 @@
 """Common ground of the KGM-3 KP' components: CKU streams in, PDDL facts asserted and retracted in the KB.
 
 Lifecycle: construct with the bus, the knowledge base and the static spatial model; register with the
-scheduler;
-each ``step(now)`` drains the CKUs received since the previous step and writes what changed. A KP' writes only
-on change (re-asserting a fact that holds with the same status is not a write), with provenance: status
-OBSERVED (ASSUMED for search candidates), ``source`` = the KP' name, ``support`` = ids of the CKUs and LLKUs
-behind the fact, ``at`` = simulated time.
+scheduler; each ``step(now)`` drains the CKUs received since the previous step and writes what changed. A KP'
+writes only on change (re-asserting a fact that holds with the same status is not a write), with provenance:
+status OBSERVED (ASSUMED for search candidates), ``source`` = the KP' name, ``support`` = ids of the CKUs and
+LLKUs behind the fact, ``at`` = simulated time.
 
 Noise never flips a fact on one reading: a :class:`Confirmer` asks for ``needed`` consecutive consistent
 observations (with a mean confidence of at least ``min_confidence``) before a belief switches from what the

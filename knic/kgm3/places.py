@@ -3,10 +3,9 @@
 
 Each consumes one CKU stream and intersects the entity's occupied voxel keys with the room prisms (the
 locations' octomaps) and the furniture support prisms (seed 004, III.C: "check the spatial intersection of
-each
-octomap of people with each octomap of locations"). The room holding most of an entity's voxels is where it
-is;
-an item whose voxels fall at least ``min_support_share`` into a surface's support prism is on that furniture.
+each octomap of people with each octomap of locations"). The room holding most of an entity's voxels is where
+it is; an item whose voxels fall at least ``min_support_share`` into a surface's support prism is on that
+furniture.
 
 Retraction:
 

@@ -1,23 +1,19 @@
 """KP' for searching: what has been explored, and where an entity of unknown location may be.
 
-:class:`ExploredKP` asserts ``(explored ?room)`` once the object camera has covered enough of the room:
-each room
-carries sample points on its floor and at table height (away from walls and furniture); a sample is covered
-when a frame taken from inside the room could see it (:class:`~knic.kgm1.sources.FrameView`: in the image,
-within detection range, not hidden). The room is explored when ``min_coverage`` of its samples are covered, or
-when the camera has looked in ``look_around_bins`` of 8 headings from inside it and ``min_look_coverage`` is
-covered. Every ``explored`` fact (whoever wrote it) expires ``ttl_s`` seconds after it was made, and the
-room's
-coverage starts again, so a place can be searched again for an object that moved.
+:class:`ExploredKP` asserts ``(explored ?room)`` once the object camera has covered enough of the room: each
+room carries sample points on its floor and at table height (away from walls and furniture); a sample is
+covered when a frame taken from inside the room could see it (:class:`~knic.kgm1.sources.FrameView`: in the
+image, within detection range, not hidden). The room is explored when ``min_coverage`` of its samples are
+covered, or when the camera has looked in ``look_around_bins`` of 8 headings from inside it and
+``min_look_coverage`` is covered. Every ``explored`` fact (whoever wrote it) expires ``ttl_s`` seconds after
+it was made, and the room's coverage starts again, so a place can be searched again for an object that moved.
 
 :class:`CandidatesKP` keeps ``(possibly_at ?e ?room)`` as ASSUMED facts for entities whose place is unknown
-(no
-``object_at`` / ``person_at``, not held, not handed over): the ``max_candidates`` likeliest unexplored
-rooms by
-the priors (for a person, the room where they were last seen first); when every prior room has been explored,
-the other unexplored rooms. Candidates go when the room gets explored without the entity being seen there and
-all of them go when the entity is observed anywhere. Entities considered: those with priors, those named in a
-goal, and those that were located once.
+(no ``object_at`` / ``person_at``, not held, not handed over): the ``max_candidates`` likeliest unexplored
+rooms by the priors (for a person, the room where they were last seen first); when every prior room has been
+explored, the other unexplored rooms. Candidates go when the room gets explored without the entity being seen
+there and all of them go when the entity is observed anywhere. Entities considered: those with priors, those
+named in a goal, those that already have candidates, and those that were located once.
 """
 
 from __future__ import annotations
@@ -121,7 +117,9 @@ class ExploredKP(KPPrime):
             visible = scan.view.visible(self.samples[room])
             self._seen[room][visible] = scan.stamp
             axis = scan.view.optical_axis()
-            sector = int(((math.atan2(axis[1], axis[0]) + math.pi) / (2 * math.pi) * 8) % 8)
+            # eight sectors centred on the axes and diagonals
+            heading = (math.atan2(axis[1], axis[0]) + math.pi / 8) % (2 * math.pi)
+            sector = int(heading / (2 * math.pi) * 8) % 8
             self._headings[room][sector] = scan.stamp
             if not self.kb.holds("explored", room) and self._covered(room):
                 self.assert_fact("explored", room, at=scan.stamp, confidence=self.coverage(room))
@@ -202,7 +200,7 @@ class CandidatesKP(KPPrime):
 
     def entities(self) -> list[str]:
         """Entities whose candidates this KP' maintains."""
-        names = set(self.priors) | self._tracked
+        names = set(self.priors) | self._tracked | {f.args[0] for f in self.kb.facts("possibly_at")}
         for goal in self.kb.goals():
             names |= {a for a in goal.args if self.is_a(a, "item") or self.is_a(a, "person")}
         return sorted(n for n in names if self.is_a(n, "entity"))

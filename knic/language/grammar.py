@@ -79,6 +79,16 @@ class Ref:
 
 
 @dataclass(frozen=True)
+class Repeat:
+    """The part repeated 0 to ``most`` times. The JSGF form (``( part )*``) admits any count, which keeps
+    the speech decoder's graph small; the text parser enforces ``most``, so recognised speech with too many
+    repetitions is rejected when it is parsed."""
+
+    part: Node
+    most: int
+
+
+@dataclass(frozen=True)
 class Frame:
     """A command: its body's bindings become one command frame of kind ``kind`` (e.g. ``"BRINGING"``)."""
 
@@ -86,7 +96,7 @@ class Frame:
     body: Node
 
 
-Node = Words | Seq | Alt | Opt | Slot | Bind | Ref | Frame
+Node = Words | Seq | Alt | Opt | Slot | Bind | Ref | Repeat | Frame
 
 #: Markers a pronoun binds; :mod:`knic.language.frames` replaces them by the referent.
 PRONOUNS = ("it", "her", "him", "them")
@@ -138,9 +148,11 @@ def command_grammar(max_actions: int = 3) -> Grammar:
 
     Frame arguments bound by the rules: ``theme``, ``source``, ``goal``, ``ground``, ``beneficiary``,
     ``device``, ``state``. "me" binds the literal ``"me"`` (the speaker); pronouns bind a marker from
-    :data:`PRONOUNS` that frames resolve to the previous action's theme.
+    :data:`PRONOUNS` that frames resolve to the previous action's theme. A bringing request without a
+    destination ("bring the glasses") is for the speaker. The rules are left-factored (shared prefixes written
+    once) because the speech decoder's search graph grows with every inline copy of a vocabulary slot.
     """
-    det = Opt(words("the", "a", "an", "my", "some", "your"))
+    det = Opt(words("the", "a", "an", "my", "some"))
 
     def item(role: str) -> Node:
         return alt(seq(det, Slot(role, ("item",))), seq(Words("it"), Bind(role, "it")))
@@ -165,10 +177,6 @@ def command_grammar(max_actions: int = 3) -> Grammar:
     def place(role: str) -> Node:
         return seq(det, Slot(role, ("room", "furniture")))
 
-    def room(role: str) -> Node:
-        return seq(det, Slot(role, ("room",)))
-
-    source = Opt(seq(Words("from"), place("source")))
     searching = Frame(
         "SEARCHING",
         alt(
@@ -178,11 +186,19 @@ def command_grammar(max_actions: int = 3) -> Grammar:
     )
     bringing = Frame(
         "BRINGING",
-        alt(
-            seq(words(*BRING_VERBS), person("beneficiary"), item("theme"), source),
-            seq(words(*BRING_VERBS), item("theme"), source, Words("to"), person("beneficiary")),
-            seq(words(*BRING_VERBS), item("theme"), source, words("to", "into"), place("goal")),
-            seq(words("bring", "get", "fetch"), item("theme"), source, Bind("beneficiary", "me")),
+        seq(
+            words(*BRING_VERBS),
+            alt(
+                seq(person("beneficiary"), item("theme"), Opt(seq(Words("from"), place("source")))),
+                seq(
+                    item("theme"),
+                    Opt(seq(Words("from"), place("source"))),
+                    alt(
+                        seq(words("to", "into"), alt(person("beneficiary"), place("goal"))),
+                        Bind("beneficiary", "me"),
+                    ),
+                ),
+            ),
         ),
     )
     placing = Frame(
@@ -190,16 +206,16 @@ def command_grammar(max_actions: int = 3) -> Grammar:
         seq(words(*PLACE_VERBS), item("theme"), words("on", "onto", "in", "into", "on top of"), place("goal")),
     )
     accompanying = Frame(
-        "ACCOMPANYING", seq(words(*ACCOMPANY_VERBS), person("theme"), words("to", "into"), room("goal"))
+        "ACCOMPANYING",
+        seq(words(*ACCOMPANY_VERBS), person("theme"), words("to", "into"), det, Slot("goal", ("room",))),
     )
-    motion = Frame("MOTION", seq(words(*MOTION_VERBS), words("to", "into"), room("goal")))
+    motion = Frame("MOTION", seq(words(*MOTION_VERBS), words("to", "into"), det, Slot("goal", ("room",))))
     on_off = tagged("state", {"on": "on", "off": "off"})
     lights = seq(det, Slot("device", ("light",), groups=True))
     operating = Frame(
         "OPERATING",
         alt(
-            seq(words(*SWITCH_VERBS), on_off, lights),
-            seq(words(*SWITCH_VERBS), lights, on_off),
+            seq(words(*SWITCH_VERBS), alt(seq(on_off, lights), seq(lights, on_off))),
             seq(
                 tagged("state", {"open": "open", "close": "closed", "half open": "half-open"}),
                 det,
@@ -226,10 +242,12 @@ def command_grammar(max_actions: int = 3) -> Grammar:
         "opener": words("please", "robot", "robot please", "could you", "could you please", "can you", "can you please"),
         "joiner": words("and", "then", "and then"),
     }
-    chain: Node = Ref("action")
-    for _ in range(max_actions - 1):
-        chain = seq(Ref("action"), Opt(seq(Opt(Ref("joiner")), chain)))
-    rules["command"] = seq(Opt(Ref("opener")), chain, Opt(Words("please")))
+    rules["command"] = seq(
+        Opt(Ref("opener")),
+        Ref("action"),
+        Repeat(seq(Opt(Ref("joiner")), Ref("action")), max_actions - 1),
+        Opt(Words("please")),
+    )
     return Grammar(rules, "command")
 
 
@@ -256,7 +274,7 @@ def _walk(node: Node) -> Iterator[Node]:
     elif isinstance(node, Alt):
         for option in node.options:
             yield from _walk(option)
-    elif isinstance(node, Opt):
+    elif isinstance(node, Opt | Repeat):
         yield from _walk(node.part)
     elif isinstance(node, Frame):
         yield from _walk(node.body)
@@ -324,4 +342,6 @@ def _jsgf(node: Node) -> str:
         return "<NULL>"
     if isinstance(node, Ref):
         return f"<{node.name}>"
+    if isinstance(node, Repeat):
+        return f"( {_jsgf(node.part)} )*"
     return _jsgf(node.body)

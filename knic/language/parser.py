@@ -11,7 +11,7 @@ from __future__ import annotations
 from collections.abc import Iterator, Sequence
 from dataclasses import dataclass, field
 
-from knic.language.grammar import Alt, Bind, Frame, Grammar, Opt, Ref, Seq, Slot, Words
+from knic.language.grammar import Alt, Bind, Frame, Grammar, Opt, Ref, Repeat, Seq, Slot, Words
 from knic.language.vocabulary import Term, Vocabulary, level_percent
 
 #: How slot categories read in a reply.
@@ -131,6 +131,8 @@ class Parser:
                     progress.note(pos, f"<{category}>")
             for end, term in matches:
                 yield end, (("arg", node.role, term),)
+        elif isinstance(node, Repeat):
+            yield from self._repeat(node, node.most, toks, pos, progress)
         elif isinstance(node, Bind):
             yield pos, (("arg", node.role, node.value),)
         elif isinstance(node, Ref):
@@ -146,6 +148,16 @@ class Parser:
                 yield end, (("frame", RawFrame(node.kind, args)),)
         else:  # pragma: no cover - the Node union is closed
             raise TypeError(f"unknown grammar node {node!r}")
+
+    def _repeat(
+        self, node: Repeat, left: int, toks: tuple[str, ...], pos: int, progress: _Progress
+    ) -> Iterator[tuple[int, tuple[_Item, ...]]]:
+        if left > 0:
+            for mid, head in self._match(node.part, toks, pos, progress):
+                if mid > pos:
+                    for end, tail in self._repeat(node, left - 1, toks, mid, progress):
+                        yield end, head + tail
+        yield pos, ()
 
     def _seq(
         self, parts: tuple[object, ...], index: int, toks: tuple[str, ...], pos: int, progress: _Progress

@@ -21,6 +21,7 @@ Lifecycle: build one :class:`Recognizer` per vocabulary (about 0.3 s: model load
 from __future__ import annotations
 
 import struct
+import tempfile
 import time
 from dataclasses import dataclass
 from pathlib import Path
@@ -29,6 +30,7 @@ import numpy as np
 import numpy.typing as npt
 
 from knic.errors import AudioError, LanguageError
+from knic.language.fsg import compile_word_graph
 from knic.language.grammar import Grammar, grammar_words, to_jsgf
 from knic.language.vocabulary import Vocabulary
 
@@ -200,14 +202,20 @@ class Recognizer:
         self.unknown_words = sorted(w for w in command_words if self._decoder.lookup_word(w) is None)
         fillers = [w for w in FILLER_WORDS if w not in command_words] if filler_weight > 0 else []
         self.fillers = frozenset(fillers)
-        self.jsgf = to_jsgf(
-            grammar, vocabulary, garbage=fillers, exclude_words=self.unknown_words, filler_weight=filler_weight
+        #: the grammar as JSGF (for reading and for other recognisers; the decoder loads :attr:`graph`).
+        self.jsgf = to_jsgf(grammar, vocabulary, garbage=fillers, exclude_words=self.unknown_words)
+        #: the grammar as the epsilon-free word graph the decoder searches.
+        self.graph = compile_word_graph(
+            grammar, vocabulary, exclude_words=self.unknown_words, fillers=fillers, filler_weight=filler_weight
         )
-        try:
-            self._decoder.add_jsgf_string("command", self.jsgf)
-            self._decoder.activate_search("command")
-        except (RuntimeError, ValueError) as exc:
-            raise LanguageError(f"pocketsphinx refused the generated JSGF grammar: {exc}") from exc
+        with tempfile.TemporaryDirectory(prefix="knic-fsg-") as tmp:
+            fsg_path = Path(tmp) / "command.fsg"
+            fsg_path.write_text(self.graph.to_fsg(), encoding="utf-8")
+            try:
+                self._decoder.add_fsg("command", self._decoder.read_fsg(str(fsg_path)))
+                self._decoder.activate_search("command")
+            except (RuntimeError, ValueError) as exc:
+                raise LanguageError(f"pocketsphinx refused the command grammar: {exc}") from exc
 
     def recognize(self, audio: str | Path | npt.NDArray[np.int16]) -> Transcript:
         """Decode one utterance: a WAV file path or 16 kHz mono int16 samples.

@@ -5,7 +5,7 @@ from __future__ import annotations
 import pytest
 
 from knic.errors import InferenceError
-from knic.scheduler import Component, Scheduler
+from knic.scheduler import Component, Scheduler, SchedulerEvent
 
 
 class Recorder(Component):
@@ -35,7 +35,7 @@ def test_components_run_at_their_own_rates_in_registration_order() -> None:
 def test_slow_step_is_reported_against_the_scaled_budget() -> None:
     wall = iter([0.0, 0.03, 1.0, 1.001])  # first step takes 30 ms of wall time, the second 1 ms
     sched = Scheduler(real_time_factor=10.0, wall_clock=lambda: next(wall))
-    seen = []
+    seen: list[SchedulerEvent] = []
     sched.on_event = seen.append
     sched.add(Recorder("vision", 5.0, []))  # 0.2 s period / factor 10 = 20 ms budget
     sched.tick(0.0)

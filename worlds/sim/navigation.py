@@ -123,6 +123,7 @@ class GridMap:
     occupied: npt.NDArray[np.bool_]
     blocked: npt.NDArray[np.bool_]
     cost: npt.NDArray[np.float64]
+    _padded_cache: tuple[list[int], list[float]] | None = None
 
     @classmethod
     def from_world(
@@ -211,67 +212,82 @@ class GridMap:
     ) -> list[Point] | None:
         """Shortest path from ``start`` to the nearest of ``goals`` (world points), smoothed.
 
-        A start inside an obstacle (e.g. after a bump) is allowed: the search leaves it by the cheapest way.
-        Returns world waypoints ending at the reached goal cell centre, or ``None`` when no goal is reachable.
+        A* on the 8-connected grid, weighted by the cell costs; with several goals the heuristic is the
+        distance to the goals' centre less their spread (admissible). A start inside an obstacle (e.g. after
+        a bump) is allowed: the search leaves it by the cheapest way. Returns world waypoints ending at the
+        reached goal cell centre, or ``None`` when no goal is reachable.
         """
         grid = self.blocked if blocked is None else blocked
         rows, cols = self.shape
-        goal_cells = set()
+        width = cols + 2  # the search runs on a copy padded with one blocked cell all round
+        goal_cells: set[int] = set()
         for gx, gy in goals:
             r, c = self.cell(gx, gy)
             if self.in_grid(r, c) and not grid[r, c]:
-                goal_cells.add(r * cols + c)
+                goal_cells.add((r + 1) * width + c + 1)
         sr, sc = self.cell(*start)
         if not self.in_grid(sr, sc) or not goal_cells:
             return None
-        start_idx = sr * cols + sc
-        goal_pts = [(i // cols, i % cols) for i in goal_cells]
-        single = goal_pts[0] if len(goal_pts) == 1 else None
-
-        def h(r: int, c: int) -> float:
-            if single is None:
-                return 0.0
-            dr, dc = abs(r - single[0]), abs(c - single[1])
-            return (dr + dc) + (math.sqrt(2) - 2) * min(dr, dc)
-
-        flat_blocked = grid.ravel()
-        flat_cost = self.cost.ravel()
-        dist = {start_idx: 0.0}
+        flat_blocked, flat_cost = self._padded(grid)
+        start_idx = (sr + 1) * width + sc + 1
+        goal_rc = [divmod(i, width) for i in goal_cells]
+        gr = sum(r for r, _ in goal_rc) / len(goal_rc)
+        gc = sum(c for _, c in goal_rc) / len(goal_rc)
+        spread = max(math.hypot(r - gr, c - gc) for r, c in goal_rc)
+        diag = math.sqrt(2)
+        steps = [(-width - 1, diag), (-width, 1.0), (-width + 1, diag), (-1, 1.0), (1, 1.0),
+                 (width - 1, diag), (width, 1.0), (width + 1, diag)]  # fmt: skip
+        start_blocked = flat_blocked[start_idx] == 1
+        dist: dict[int, float] = {start_idx: 0.0}
         parent: dict[int, int] = {}
-        heap = [(h(sr, sc), 0.0, start_idx)]
-        steps = [(-1, -1, math.sqrt(2)), (-1, 0, 1.0), (-1, 1, math.sqrt(2)), (0, -1, 1.0), (0, 1, 1.0),
-                 (1, -1, math.sqrt(2)), (1, 0, 1.0), (1, 1, math.sqrt(2))]  # fmt: skip
-        start_blocked = bool(flat_blocked[start_idx])
+        heap = [(0.0, 0.0, start_idx)]
         found = -1
+        k = diag - 2.0
         while heap:
             _, g, idx = heapq.heappop(heap)
-            if g > dist.get(idx, math.inf):
+            if g > dist[idx]:
                 continue
             if idx in goal_cells:
                 found = idx
                 break
-            r, c = divmod(idx, cols)
-            here_blocked = bool(flat_blocked[idx])
-            for dr, dc, length in steps:
-                nr, nc = r + dr, c + dc
-                if nr < 0 or nc < 0 or nr >= rows or nc >= cols:
-                    continue
-                n = nr * cols + nc
-                if flat_blocked[n] and not (start_blocked and here_blocked):
-                    continue
-                ng = g + length * flat_cost[n] * (20.0 if flat_blocked[n] else 1.0)
+            here_blocked = flat_blocked[idx] == 1
+            for off, length in steps:
+                n = idx + off
+                nb = flat_blocked[n]
+                if nb:  # 1: obstacle, 2: the padding border
+                    if nb == 2 or not (start_blocked and here_blocked):
+                        continue
+                ng = g + length * flat_cost[n]
                 if ng < dist.get(n, math.inf):
                     dist[n] = ng
                     parent[n] = idx
-                    heapq.heappush(heap, (ng + h(nr, nc), ng, n))
+                    dr = abs(n // width - gr)
+                    dc = abs(n % width - gc)
+                    h = dr + dc + k * (dr if dr < dc else dc) - spread
+                    heapq.heappush(heap, (ng + (h if h > 0 else 0.0), ng, n))
         if found < 0:
             return None
         cells = [found]
         while cells[-1] != start_idx:
             cells.append(parent[cells[-1]])
         cells.reverse()
-        pts = [self.centre(*divmod(i, cols)) for i in cells]
+        pts = [self.centre(i // width - 1, i % width - 1) for i in cells]
         return self._smooth([start, *pts[1:]] if len(pts) > 1 else [start, pts[0]], grid)
+
+    def _padded(self, grid: npt.NDArray[np.bool_]) -> tuple[list[int], list[float]]:
+        """Flat lists of the grid padded by one border cell: blocked codes (0 free, 1 obstacle, 2 border)
+        and step costs (obstacle cells cost 20 times more, for leaving one). Cached for the map's own grid."""
+        if grid is self.blocked and self._padded_cache is not None:
+            return self._padded_cache
+        rows, cols = self.shape
+        codes = np.full((rows + 2, cols + 2), 2, dtype=np.int8)
+        codes[1:-1, 1:-1] = grid.astype(np.int8)
+        cost = np.ones((rows + 2, cols + 2))
+        cost[1:-1, 1:-1] = self.cost * np.where(grid, 20.0, 1.0)
+        out = (codes.ravel().tolist(), cost.ravel().tolist())
+        if grid is self.blocked:
+            self._padded_cache = out
+        return out
 
     def _smooth(self, pts: list[Point], grid: npt.NDArray[np.bool_]) -> list[Point]:
         """Drop waypoints while the straight line stays free and low-cost (string pulling)."""

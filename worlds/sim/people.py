@@ -70,6 +70,7 @@ class PersonState:
     path_index: int = 0
     wait_until: float = 0.0
     replan_at: float = 0.0
+    blocked_for: float = 0.0
 
     def z_base(self, world: World) -> float:
         """Height of the person's feet: the furniture top when sitting or lying, else 0."""
@@ -162,8 +163,11 @@ class PeopleController:
         elif kind == "goto":
             if p.on is not None:
                 self._stand_up(p)
-            if not p.path:
-                path = self.grid.plan((p.x, p.y), arg)
+            if not p.path or p.blocked_for > 2.0:
+                rx, ry, rr = robot
+                around = self.grid.with_discs([(rx, ry, rr + p.radius + 0.1)]) if p.blocked_for > 2.0 else None
+                p.blocked_for = 0.0
+                path = self.grid.plan((p.x, p.y), arg, around)
                 if path is None:  # nowhere to go: give the task up
                     p.tasks.popleft()
                     return
@@ -195,7 +199,9 @@ class PeopleController:
         if math.hypot(nx - rx, ny - ry) < rr + p.radius + 0.05 and math.hypot(nx - rx, ny - ry) < math.hypot(
             p.x - rx, p.y - ry
         ):
+            p.blocked_for += dt
             return False  # yield to the robot
+        p.blocked_for = 0.0
         p.x, p.y = nx, ny
         p.yaw = wrap_angle(math.atan2(dy, dx))
         return step >= dist - 1e-9

@@ -127,6 +127,15 @@ class BaseController:
         ny = self.y + self.v_cmd * math.sin(self.yaw) * dt
         if is_free(nx, ny):
             self.x, self.y = nx, ny
+            return
+        lo, hi = 0.0, 1.0  # move as far as the bumper allows
+        for _ in range(8):
+            mid = (lo + hi) / 2
+            if is_free(self.x + (nx - self.x) * mid, self.y + (ny - self.y) * mid):
+                lo = mid
+            else:
+                hi = mid
+        self.x, self.y = self.x + (nx - self.x) * lo, self.y + (ny - self.y) * lo
 
     def _plan(self, g: _Goal, people: Sequence[tuple[str, float, float, float]], around_people: bool) -> bool:
         blocked = None

@@ -24,7 +24,6 @@ from worlds.sim.navigation import wall_segments
 WALL_COLOR = (0.92, 0.9, 0.85, 1.0)
 FLOOR_COLOR = (0.75, 0.72, 0.65, 1.0)
 ROBOT_COLOR = (0.85, 0.85, 0.9, 1.0)
-WALL_PIECE = 1.0  # metres
 
 
 class Scene:
@@ -44,6 +43,7 @@ class Scene:
         self._client: Any = _Client(pb.GUI if gui else pb.DIRECT)
         self.body_of: dict[str, int] = {}
         self.name_of: dict[int, str] = {}
+        self._pose: dict[int, tuple[tuple[float, float, float], float]] = {}
         self._build()
 
     def close(self) -> None:
@@ -77,37 +77,32 @@ class Scene:
         return int(c.createMultiBody(baseMass=0, baseCollisionShapeIndex=col, baseVisualShapeIndex=vis,
                                      basePosition=pos))  # fmt: skip
 
-    def _wall_mesh(self, segments: list[tuple[Point, Point]], thickness: float, height: float) -> None:
-        """All walls as one mesh body: the two long faces and the end faces of each wall (no top/bottom).
+    def _wall_mesh(self, a: Point, b: Point, thickness: float, height: float) -> int:
+        """One wall as a mesh body: its two long faces and two end faces, outward facing (no top or bottom).
 
-        One body with few triangles renders much faster in the tiny renderer than one box per wall.
+        Fewer triangles than a box and nothing the robot's camera (below the wall tops) could see is lost.
         """
-        verts: list[tuple[float, float, float]] = []
-        idx: list[int] = []
         half = thickness / 2
-        for a, b in segments:
-            length = math.dist(a, b)
-            ux, uy = (b[0] - a[0]) / length, (b[1] - a[1]) / length
-            nx, ny = -uy * half, ux * half
-            ax, ay = a[0] - ux * half, a[1] - uy * half
-            bx, by = b[0] + ux * half, b[1] + uy * half
-            corners = [(ax + nx, ay + ny), (bx + nx, by + ny), (bx - nx, by - ny), (ax - nx, ay - ny)]
-            base = len(verts)
-            for cx, cy in corners:
-                verts.append((cx, cy, 0.0))
-            for cx, cy in corners:
-                verts.append((cx, cy, height))
-            for i in range(4):  # side face i: bottom i, bottom i+1, top i+1, top i (both windings)
-                j = (i + 1) % 4
-                q = (base + i, base + j, base + 4 + j, base + 4 + i)
-                idx += [q[0], q[2], q[1], q[0], q[3], q[2]]
+        length = math.dist(a, b)
+        ux, uy = (b[0] - a[0]) / length, (b[1] - a[1]) / length
+        nx, ny = -uy * half, ux * half
+        ax, ay = a[0] - ux * half, a[1] - uy * half
+        bx, by = b[0] + ux * half, b[1] + uy * half
+        corners = [(ax + nx, ay + ny), (bx + nx, by + ny), (bx - nx, by - ny), (ax - nx, ay - ny)]
+        verts = [(cx, cy, 0.0) for cx, cy in corners] + [(cx, cy, height) for cx, cy in corners]
+        idx: list[int] = []
+        for i in range(4):  # side face i: bottom i, bottom i+1, top i+1, top i
+            j = (i + 1) % 4
+            idx += [i, 4 + j, j, i, 4 + i, 4 + j]
         c = self._client
         vis = c.createVisualShape(pb.GEOM_MESH, vertices=verts, indices=idx, rgbaColor=WALL_COLOR)
-        c.createMultiBody(baseMass=0, baseVisualShapeIndex=vis, basePosition=(0, 0, 0))
+        return int(c.createMultiBody(baseMass=0, baseVisualShapeIndex=vis, basePosition=(0, 0, 0)))
 
     def _register(self, name: str, body: int) -> None:
         self.body_of[name] = body
         self.name_of[body] = name
+        pos, orn = self._client.getBasePositionAndOrientation(body)
+        self._pose[body] = (tuple(pos), self._client.getEulerFromQuaternion(orn)[2])
 
     def _build(self) -> None:
         w = self.world
@@ -118,8 +113,8 @@ class Scene:
             vis = c.createVisualShape(pb.GEOM_MESH, vertices=floor, indices=[0, 1, 2, 0, 2, 3],
                                       rgbaColor=FLOOR_COLOR)  # fmt: skip
             c.createMultiBody(baseMass=0, baseVisualShapeIndex=vis, basePosition=(0, 0, 0))
-        t = w.wall_thickness
-        self._wall_mesh(wall_segments(w), t, w.wall_height)
+        for a, b in wall_segments(w):
+            self._wall_mesh(a, b, w.wall_thickness, w.wall_height)
         for f in w.furniture.values():
             sx, sy, h = f.size
             body = self._box((sx / 2, sy / 2, h / 2), (f.position[0], f.position[1], h / 2), f.yaw, f.color)
@@ -137,11 +132,16 @@ class Scene:
     # ------------------------------------------------------------------------------------------ moving
 
     def move(self, name: str, pos: tuple[float, float, float], yaw: float = 0.0) -> None:
-        """Place an instance's body at ``pos`` (body centre) with heading ``yaw``."""
-        c = self._client
-        c.resetBasePositionAndOrientation(self.body_of[name], pos, c.getQuaternionFromEuler((0, 0, yaw)))
+        """Place an instance's body at ``pos`` (body centre) with heading ``yaw`` (no-op when unchanged)."""
+        body = self.body_of[name]
+        if self._pose.get(body) == (pos, yaw):
+            return
+        self._pose[body] = (pos, yaw)
+        self._place(body, pos, yaw)
 
-    # ------------------------------------------------------------------------------------------ camera
+    def _place(self, body: int, pos: tuple[float, float, float], yaw: float) -> None:
+        c = self._client
+        c.resetBasePositionAndOrientation(body, pos, c.getQuaternionFromEuler((0, 0, yaw)))
 
     def render(
         self, eye: tuple[float, float, float], yaw: float, pitch: float, width: int, height: int, fov_deg: float,

@@ -1,0 +1,114 @@
+"""The robot's actions for the ERL apartment domain (``worlds/erl_home/domain.pddl``).
+
+:func:`build_erl_registry` maps every action of the domain to its implementation:
+
+=================  =====================================  ==========================================
+PDDL action        module                                 what the robot does
+=================  =====================================  ==========================================
+move               :mod:`actions.erl.motion`              drive to the room's anchored waypoint
+meet, guide        :mod:`actions.erl.motion`              approach a perceived person; walk with them
+search_object      :mod:`actions.erl.search`              viewpoints and camera sweeps (sensing)
+search_person      :mod:`actions.erl.search`              the same, for a person (sensing)
+pick, place, give  :mod:`actions.erl.manipulation`        gripper actions at perceived poses
+report             :mod:`actions.erl.devices`             say where the entity was found
+switch_on/off      :mod:`actions.erl.devices`             light commands, confirmed by the reading
+set_level          :mod:`actions.erl.devices`             dimmer / blinds level, confirmed
+speak              :mod:`actions.erl.devices`             say the arguments (not a domain action)
+=================  =====================================  ==========================================
+
+Usage::
+
+    registry = build_erl_registry(sim, kb, bus=pipeline.bus)
+    dispatcher = Dispatcher(kb, planner, registry)
+"""
+
+from __future__ import annotations
+
+from actions.base import Action, ActionFactory, ActionRegistry
+from actions.erl.context import ErlContext, PerceivedEntities, RobotInterface
+from actions.erl.devices import DeviceAction, ReportAction, SpeakAction
+from actions.erl.manipulation import GiveAction, PickAction, PlaceAction
+from actions.erl.motion import GuideAction, MeetAction, MoveAction
+from actions.erl.search import SearchAction
+from knic.bus import Bus
+from knowledge_base import KnowledgeBase
+
+#: number of ground arguments of every registered action (checked at construction)
+ARITY = {
+    "move": 3,
+    "search_object": 3,
+    "search_person": 3,
+    "pick": 3,
+    "place": 4,
+    "give": 4,
+    "meet": 3,
+    "guide": 4,
+    "report": 2,
+    "switch_on": 2,
+    "switch_off": 2,
+    "set_level": 4,
+}
+
+
+def build_erl_registry(
+    sim: RobotInterface,
+    kb: KnowledgeBase,
+    *,
+    bus: Bus | None = None,
+    robot: str = "r2d2",
+    confirm_devices: bool | None = None,
+    context: ErlContext | None = None,
+) -> ActionRegistry:
+    """The ERL actions bound to one robot, knowledge base and perception bus.
+
+    Args:
+        sim: the robot's commands and sensors (the simulator satisfies :class:`RobotInterface`).
+        kb: the knowledge base (anchors, facts) the actions read.
+        bus: the KnIC bus whose ``cognition`` CKUs give perceived poses; None: knowledge-base anchors only.
+        robot: the robot's PDDL symbol.
+        confirm_devices: device actions wait for the device reading in the knowledge base; default: only when
+            a bus (hence a perception pipeline) is given.
+        context: a prepared context (overrides ``sim``, ``kb``, ``bus`` and ``robot``).
+
+    Returns:
+        A registry with every action of ``worlds/erl_home/domain.pddl`` plus ``speak``. Factories raise
+        ``ValueError`` (an :class:`~knic.errors.ActionError` through the registry) for a wrong argument count.
+    """
+    ctx = context or ErlContext(sim, kb, PerceivedEntities(kb, bus), robot_name=robot)
+    confirm = (bus is not None) if confirm_devices is None else confirm_devices
+
+    def checked(name: str, args: tuple[str, ...]) -> tuple[str, ...]:
+        if len(args) != ARITY[name]:
+            raise ValueError(f"{name} takes {ARITY[name]} arguments, got {len(args)}")
+        return args
+
+    registry = ActionRegistry()
+    registry.register("move", lambda a: MoveAction(checked("move", a), ctx))
+    registry.register(
+        "search_object", lambda a: SearchAction("search_object", checked("search_object", a), ctx)
+    )
+    registry.register(
+        "search_person", lambda a: SearchAction("search_person", checked("search_person", a), ctx)
+    )
+    registry.register("pick", lambda a: PickAction(checked("pick", a), ctx))
+    registry.register("place", lambda a: PlaceAction(checked("place", a), ctx))
+    registry.register("give", lambda a: GiveAction(checked("give", a), ctx))
+    registry.register("meet", lambda a: MeetAction(checked("meet", a), ctx))
+    registry.register("guide", lambda a: GuideAction(checked("guide", a), ctx))
+    registry.register("report", lambda a: ReportAction(checked("report", a), ctx))
+    for name in ("switch_on", "switch_off", "set_level"):
+        registry.register(name, _device_factory(name, ctx, confirm))
+    registry.register("speak", lambda a: SpeakAction(a, ctx))
+    return registry
+
+
+def _device_factory(name: str, ctx: ErlContext, confirm: bool) -> ActionFactory:
+    def factory(args: tuple[str, ...]) -> Action:
+        if len(args) != ARITY[name]:
+            raise ValueError(f"{name} takes {ARITY[name]} arguments, got {len(args)}")
+        return DeviceAction(name, args, ctx, confirm=confirm)
+
+    return factory
+
+
+__all__ = ["ErlContext", "PerceivedEntities", "RobotInterface", "build_erl_registry"]

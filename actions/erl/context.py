@@ -1,0 +1,327 @@
+"""What the ERL actions share: the robot interface they command, the perceived poses they steer by, the map.
+
+The actions of :mod:`actions.erl` decide *where to go* only from what the robot knows: the knowledge base's
+anchors (room regions and waypoints, furniture poses, written by :func:`knic.seed.seed_kb_from_world`; item
+positions anchored by the object KP') and the poses perception reports on the bus (``cognition.object.*`` and
+``cognition.person.*`` CKUs, see :class:`PerceivedEntities`). They never read the simulator's ground truth:
+the :class:`RobotInterface` they command deliberately has no ground-truth method.
+
+Frames and time: every position is in the world frame (metres, ``z`` up, yaw in radians counter-clockwise
+from ``+x``); every time is simulated seconds (``RobotInterface.time``).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+from typing import Any, Protocol
+
+from knic.bus import Bus, Message, Subscription
+from knic.units import CKU
+from knowledge_base import KnowledgeBase
+from worlds.api import ActionResult, NavStatus, Pose2D
+
+Point = tuple[float, float]
+
+#: PDDL level constant -> percent for dimmers and blinds
+LEVEL_PERCENT = {"l0": 0.0, "l25": 25.0, "l50": 50.0, "l75": 75.0, "l100": 100.0}
+
+
+class RobotInterface(Protocol):
+    """The commands and sensors the actions use: a subset of :class:`worlds.api.SimulationAPI` without any
+    ground truth (the simulator satisfies it; test doubles are checked against it by mypy)."""
+
+    @property
+    def time(self) -> float:
+        """Simulated seconds since the start of the episode."""
+        ...
+
+    def robot_pose(self) -> Pose2D:
+        """The localisation estimate (world frame)."""
+        ...
+
+    def navigate_to_point(self, x: float, y: float, yaw: float | None = None) -> int:
+        """Start a navigation goal to a world point; returns the goal id."""
+        ...
+
+    def navigate_to_furniture(self, furniture: str, near: tuple[float, float] | None = None) -> int:
+        """Start a goal to a pose within reach of a piece of furniture (near a point on it), facing it."""
+        ...
+
+    def nav_status(self) -> NavStatus:
+        """Status of the latest navigation goal."""
+        ...
+
+    def stop(self) -> None:
+        """Stop the base and cancel the goal."""
+        ...
+
+    def pick(self, item: str) -> ActionResult:
+        """Grasp an item within reach."""
+        ...
+
+    def place(self, furniture: str) -> ActionResult:
+        """Put the held item on a surface within reach."""
+        ...
+
+    def give(self, person: str) -> ActionResult:
+        """Hand the held item to a person within reach."""
+        ...
+
+    def held_item(self) -> str | None:
+        """The item in the gripper (the gripper's own sensor)."""
+        ...
+
+    def pan_camera(self, angle: float) -> None:
+        """Camera pan relative to the base heading, radians, clipped to +-pi/2."""
+        ...
+
+    def set_light(self, device: str, on: bool) -> ActionResult:
+        """Switch a light."""
+        ...
+
+    def set_level(self, device: str, percent: float) -> ActionResult:
+        """Set a dimmer or blinds to a percentage."""
+        ...
+
+    def say(self, text: str) -> None:
+        """Speak ``text``."""
+        ...
+
+    def escort(self, person: str) -> ActionResult:
+        """Ask a person within 2 m to follow the robot."""
+        ...
+
+    def stop_escort(self) -> None:
+        """The escorted person stops following."""
+        ...
+
+
+@dataclass
+class Sighting:
+    """The latest perceived state of one entity.
+
+    Attributes:
+        position: world-frame centroid in metres.
+        stamp: simulated time of the observation.
+        lost: True when KGM-2 dropped the entity's track (repeatedly missed where the camera could see it).
+    """
+
+    position: tuple[float, float, float]
+    stamp: float
+    lost: bool = False
+
+
+class PerceivedEntities:
+    """Latest perceived pose of every tracked item and person, from the cognitive layer's CKUs on the bus.
+
+    Lifecycle: construct with the run's bus (it subscribes at once); :meth:`close` unsubscribes. Without a
+    bus it only answers from the knowledge base's anchors. Updates happen synchronously when KGM-2 publishes,
+    inside the scheduler's single thread.
+
+    Args:
+        kb: the knowledge base, whose item anchors are the fallback when nothing was seen this run.
+        bus: the run's message bus, or None.
+    """
+
+    def __init__(self, kb: KnowledgeBase, bus: Bus | None = None) -> None:
+        self.kb = kb
+        self.sightings: dict[str, Sighting] = {}
+        self._subs: list[Subscription] = []
+        if bus is not None:
+            self._subs = [bus.subscribe(p, self._on_cku) for p in ("cognition.object", "cognition.person")]
+
+    def _on_cku(self, message: Message) -> None:
+        cku = message.payload
+        if not isinstance(cku, CKU):
+            return
+        x, y, z = (float(v) for v in cku.position)
+        self.sightings[cku.symbol] = Sighting((x, y, z), float(cku.stamp), bool(cku.attributes.get("lost")))
+
+    def sighting(self, symbol: str) -> Sighting | None:
+        """The latest sighting of ``symbol`` this run (lost or not), or None."""
+        return self.sightings.get(symbol)
+
+    def position(self, symbol: str) -> tuple[float, float, float] | None:
+        """Where ``symbol`` was last perceived: the latest live sighting, else its knowledge-base anchor."""
+        seen = self.sightings.get(symbol)
+        if seen is not None and not seen.lost:
+            return seen.position
+        return anchor_position(self.kb, symbol)
+
+    def seen_since(self, symbol: str, since: float) -> Sighting | None:
+        """The sighting of ``symbol`` if it was perceived (not lost) at or after simulated time ``since``."""
+        seen = self.sightings.get(symbol)
+        if seen is not None and not seen.lost and seen.stamp >= since - 1e-9:
+            return seen
+        return None
+
+    def lost_since(self, symbol: str, since: float) -> bool:
+        """True when perception dropped ``symbol``'s track at or after ``since``."""
+        seen = self.sightings.get(symbol)
+        return seen is not None and seen.lost and seen.stamp >= since - 1e-9
+
+    def close(self) -> None:
+        """Stop listening to the bus (idempotent)."""
+        for sub in self._subs:
+            sub.cancel()
+        self._subs = []
+
+
+def anchor_position(kb: KnowledgeBase, symbol: str) -> tuple[float, float, float] | None:
+    """The world-frame position in ``symbol``'s anchor (``pose.position`` or ``pose.x/y``), or None."""
+    geometry = kb.anchor(symbol)
+    if not geometry:
+        return None
+    pose = geometry.get("pose")
+    if not isinstance(pose, dict):
+        return None
+    if "position" in pose:
+        px, py, *rest = (float(v) for v in pose["position"])
+        return (px, py, rest[0] if rest else 0.0)
+    if "x" in pose and "y" in pose:
+        return (float(pose["x"]), float(pose["y"]), 0.0)
+    return None
+
+
+@dataclass(frozen=True)
+class RoomMap:
+    """A room as the robot knows it from its anchor: floor polygon and waypoints (world frame)."""
+
+    name: str
+    region: tuple[Point, ...]
+    waypoints: tuple[Point, ...]
+
+    def contains(self, x: float, y: float) -> bool:
+        """True when ``(x, y)`` lies inside the region (ray casting; boundary points may go either way)."""
+        inside = False
+        pts = self.region
+        for i, (ax, ay) in enumerate(pts):
+            bx, by = pts[i - 1]
+            if (ay > y) != (by > y) and x < (bx - ax) * (y - ay) / (by - ay) + ax:
+                inside = not inside
+        return inside
+
+    @property
+    def centre(self) -> Point:
+        """Mean of the region's vertices (a rough centre, enough to face into the room)."""
+        n = len(self.region)
+        return (sum(p[0] for p in self.region) / n, sum(p[1] for p in self.region) / n)
+
+
+@dataclass(frozen=True)
+class FurnitureMap:
+    """A piece of furniture as the robot knows it from its anchor."""
+
+    name: str
+    position: Point
+    size: tuple[float, float, float]
+    yaw: float
+    room: str
+
+    @property
+    def height(self) -> float:
+        """Height of its top surface, metres."""
+        return self.size[2]
+
+
+def room_map(kb: KnowledgeBase, room: str) -> RoomMap | None:
+    """The room's anchor as a :class:`RoomMap`, or None when it has no usable anchor."""
+    geometry = kb.anchor(room) or {}
+    region = geometry.get("region")
+    waypoints = geometry.get("waypoints") or []
+    if not region:
+        return None
+    poly = tuple((float(p[0]), float(p[1])) for p in region)
+    wps = tuple((float(p[0]), float(p[1])) for p in waypoints)
+    if not wps:
+        n = len(poly)
+        wps = ((sum(p[0] for p in poly) / n, sum(p[1] for p in poly) / n),)
+    return RoomMap(room, poly, wps)
+
+
+def furniture_map(kb: KnowledgeBase, name: str) -> FurnitureMap | None:
+    """The furniture's anchor as a :class:`FurnitureMap`, or None."""
+    geometry: dict[str, Any] = kb.anchor(name) or {}
+    pose = geometry.get("pose")
+    if not isinstance(pose, dict) or "x" not in pose:
+        return None
+    size = tuple(float(v) for v in geometry.get("size", (0.5, 0.5, 0.5)))
+    return FurnitureMap(
+        name,
+        (float(pose["x"]), float(pose["y"])),
+        (size[0], size[1], size[2]),
+        float(pose.get("yaw", 0.0)),
+        str(geometry.get("room", "")),
+    )
+
+
+def room_of(kb: KnowledgeBase, x: float, y: float) -> str | None:
+    """The room whose anchored region contains ``(x, y)``, or None."""
+    for room in kb.instances("room"):
+        known = room_map(kb, room)
+        if known is not None and known.contains(x, y):
+            return room
+    return None
+
+
+def bearing(pose: Pose2D, x: float, y: float) -> float:
+    """Angle in radians from the robot's heading to the point ``(x, y)``, in (-pi, pi]."""
+    return wrap(math.atan2(y - pose.y, x - pose.x) - pose.yaw)
+
+
+def wrap(angle: float) -> float:
+    """``angle`` wrapped to (-pi, pi]."""
+    a = math.fmod(angle + math.pi, 2 * math.pi)
+    if a <= 0:
+        a += 2 * math.pi
+    return a - math.pi
+
+
+def standoff_points(target: Point, distance: float, origin: Point, count: int = 12) -> list[Point]:
+    """``count`` points on a circle of ``distance`` metres around ``target``, nearest to ``origin`` first."""
+    pts = [
+        (
+            target[0] + distance * math.cos(2 * math.pi * i / count),
+            target[1] + distance * math.sin(2 * math.pi * i / count),
+        )
+        for i in range(count)
+    ]
+    return sorted(pts, key=lambda p: math.dist(p, origin))
+
+
+@dataclass
+class ErlContext:
+    """Everything an ERL action closes over: robot, knowledge base, perceived poses, tunables.
+
+    Attributes:
+        robot: the robot's commands and sensors (the simulator in the closed loop).
+        kb: the knowledge base (read only for the actions: the dispatcher writes the PDDL effects).
+        perceived: perceived entity poses (a KB-anchors-only instance when no bus is given).
+        robot_name: the robot's PDDL symbol.
+        dwell_s: seconds the camera rests at each pan angle while searching (>= 2 camera periods).
+        search_pans: camera pan angles (radians) swept at each search viewpoint.
+        look_timeout_s: seconds an action waits for perception to (re)confirm an entity before it acts.
+        follow_timeout_s: seconds ``guide`` waits for the escorted person to arrive.
+    """
+
+    robot: RobotInterface
+    kb: KnowledgeBase
+    perceived: PerceivedEntities
+    robot_name: str = "r2d2"
+    dwell_s: float = 0.7
+    search_pans: Sequence[float] = (-1.3, -0.65, 0.0, 0.65, 1.3)
+    look_timeout_s: float = 2.5
+    follow_timeout_s: float = 15.0
+    said: list[str] = field(default_factory=list)
+
+    @property
+    def now(self) -> float:
+        """Simulated seconds."""
+        return self.robot.time
+
+    def say(self, text: str) -> None:
+        """Speak through the robot and remember it."""
+        self.said.append(text)
+        self.robot.say(text)

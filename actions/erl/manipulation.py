@@ -1,0 +1,189 @@
+"""Actions with the gripper: ``pick`` an item, ``place`` it on a surface, ``give`` it to a person.
+
+Where to go comes from perception (the item's or person's perceived pose, the knowledge base's item anchor as
+fallback) and the furniture anchors; the gripper's own sensor (``held_item``) checks what is in the hand.
+Failure modes:
+
+* ``pick``: the item was never perceived (activation failure); the base cannot reach it; on arrival perception
+  drops the item's track or the knowledge base no longer holds it in the room ("not there"); the gripper
+  refuses (out of reach, held by someone), after one re-approach to a fresh sighting.
+* ``place``: the gripper does not hold the item (activation failure); the furniture cannot be reached; the
+  gripper refuses (no surface, out of reach, no free spot).
+* ``give``: the gripper does not hold the item, or the person was never perceived (activation failure); the
+  person cannot be approached; the hand-over is refused (out of reach, their hands full), after one
+  re-approach.
+"""
+
+from __future__ import annotations
+
+import math
+
+from actions.base import ActionStatus
+from actions.erl.common import ErlAction, NavGoal, to_furniture, to_point
+from actions.erl.context import ErlContext, bearing, standoff_points
+from actions.erl.motion import approach_person
+
+#: metres from a loose item (on no known furniture) at which the robot stops to grasp it
+GRASP_STANDOFF = 0.55
+#: metres a fresh sighting must differ from the target before the robot re-approaches
+MOVED_M = 0.15
+
+
+class PickAction(ErlAction):
+    """``(pick ?r ?o ?l)``: approach the perceived item, look at it, grasp it.
+
+    Phases: ``nav`` -> ``look`` (camera on the item until perception re-confirms it, or ``look_timeout_s``)
+    -> grasp (immediate). A grasp refused while a fresh sighting shows the item elsewhere leads to one
+    re-approach.
+    """
+
+    def __init__(self, args: tuple[str, ...], ctx: ErlContext) -> None:
+        super().__init__("pick", args, ctx)
+        _robot, self.item, self.room = args
+        self.nav: NavGoal | None = None
+        self.target: tuple[float, float, float] | None = None
+        self.attempts = 0
+
+    def activation(self) -> bool:
+        """Start driving to the item's perceived position."""
+        held = self.ctx.robot.held_item()
+        if held is not None:
+            return self.refuse(f"the gripper already holds {held}")
+        self.target = self.ctx.perceived.position(self.item)
+        if self.target is None:
+            return self.refuse(f"{self.item} has no perceived position to go to")
+        if not self._approach():
+            return self.refuse(self.nav.reason if self.nav else f"cannot approach {self.item}")
+        return True
+
+    def _approach(self) -> bool:
+        assert self.target is not None
+        x, y, _ = self.target
+        support = self._support()
+        if support is not None:
+            starts = [to_furniture(self.ctx, support, (x, y))]
+        else:
+            pose = self.ctx.robot.robot_pose()
+            starts = [
+                to_point(self.ctx, p, math.atan2(y - p[1], x - p[0]))
+                for p in standoff_points((x, y), GRASP_STANDOFF, (pose.x, pose.y))[:8]
+            ]
+        self.nav = NavGoal(self.ctx, starts, f"{self.item} ({support or 'floor'})")
+        self.attempts += 1
+        if not self.nav.start():
+            return False
+        self.enter("nav")
+        return True
+
+    def _support(self) -> str | None:
+        facts = self.ctx.kb.facts("object_on", self.item)
+        return facts[0].args[1] if facts else None
+
+    def step(self) -> ActionStatus:
+        """Drive, look, grasp (see the class docstring)."""
+        assert self.target is not None
+        if self.phase == "nav":
+            assert self.nav is not None
+            status = self.nav.poll()
+            if status is not ActionStatus.SUCCEEDED:
+                return self.fail(self.nav.reason) if status is ActionStatus.FAILED else status
+            pose = self.ctx.robot.robot_pose()
+            self.ctx.robot.pan_camera(bearing(pose, self.target[0], self.target[1]))
+            self.enter("look")
+            return ActionStatus.RUNNING
+        if self.ctx.perceived.lost_since(self.item, self.phase_since) or not self.ctx.kb.holds(
+            "object_at", self.item, self.room
+        ):
+            return self.fail(f"{self.item} is not where it was believed in {self.room}")
+        fresh = self.ctx.perceived.seen_since(self.item, self.phase_since)
+        if fresh is None and self.in_phase_for() < self.ctx.look_timeout_s:
+            return ActionStatus.RUNNING
+        result = self.ctx.robot.pick(self.item)
+        if result.ok and self.ctx.robot.held_item() == self.item:
+            return ActionStatus.SUCCEEDED
+        if (
+            fresh is not None
+            and self.attempts < 2
+            and math.dist(fresh.position[:2], self.target[:2]) > MOVED_M
+        ):
+            self.target = fresh.position
+            if self._approach():
+                return ActionStatus.RUNNING
+        return self.fail(f"grasping {self.item} failed: {result.reason or 'the gripper is empty'}")
+
+
+class PlaceAction(ErlAction):
+    """``(place ?r ?o ?f ?l)``: drive within reach of the furniture and put the held item on it.
+
+    Phases: ``nav`` -> put down (immediate).
+    """
+
+    def __init__(self, args: tuple[str, ...], ctx: ErlContext) -> None:
+        super().__init__("place", args, ctx)
+        _robot, self.item, self.furniture, self.room = args
+        self.nav: NavGoal | None = None
+
+    def activation(self) -> bool:
+        """Check the gripper holds the item and drive to the furniture."""
+        held = self.ctx.robot.held_item()
+        if held != self.item:
+            return self.refuse(f"the gripper holds {held or 'nothing'}, not {self.item}")
+        self.nav = NavGoal(self.ctx, [to_furniture(self.ctx, self.furniture)], self.furniture)
+        if not self.nav.start():
+            return self.refuse(self.nav.reason)
+        self.enter("nav")
+        return True
+
+    def step(self) -> ActionStatus:
+        """Drive, then put the item down."""
+        assert self.nav is not None
+        status = self.nav.poll()
+        if status is not ActionStatus.SUCCEEDED:
+            return self.fail(self.nav.reason) if status is ActionStatus.FAILED else status
+        result = self.ctx.robot.place(self.furniture)
+        if not result.ok:
+            return self.fail(f"placing {self.item} on {self.furniture} failed: {result.reason}")
+        return ActionStatus.SUCCEEDED
+
+
+class GiveAction(ErlAction):
+    """``(give ?r ?o ?p ?l)``: approach the perceived person and hand the item over.
+
+    Phases: ``nav`` -> hand over (immediate; one re-approach to a fresh sighting if refused).
+    """
+
+    def __init__(self, args: tuple[str, ...], ctx: ErlContext) -> None:
+        super().__init__("give", args, ctx)
+        _robot, self.item, self.person, self.room = args
+        self.nav: NavGoal | None = None
+        self.attempts = 0
+
+    def activation(self) -> bool:
+        """Check the gripper holds the item and approach the person."""
+        held = self.ctx.robot.held_item()
+        if held != self.item:
+            return self.refuse(f"the gripper holds {held or 'nothing'}, not {self.item}")
+        self.nav = approach_person(self.ctx, self.person, self.person)
+        if self.nav is None:
+            return self.refuse(f"cannot approach {self.person}: not perceived or no free pose around them")
+        self.attempts = 1
+        self.enter("nav")
+        return True
+
+    def step(self) -> ActionStatus:
+        """Approach, then hand over."""
+        assert self.nav is not None
+        status = self.nav.poll()
+        if status is not ActionStatus.SUCCEEDED:
+            return self.fail(self.nav.reason) if status is ActionStatus.FAILED else status
+        result = self.ctx.robot.give(self.person)
+        if result.ok:
+            return ActionStatus.SUCCEEDED
+        if self.attempts < 2:
+            self.attempts += 1
+            nav = approach_person(self.ctx, self.person, self.person)
+            if nav is not None:
+                self.nav = nav
+                self.enter("nav")
+                return ActionStatus.RUNNING
+        return self.fail(f"handing {self.item} to {self.person} failed: {result.reason}")

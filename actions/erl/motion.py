@@ -1,0 +1,179 @@
+"""Actions that move the robot: ``move`` to a room, ``meet`` a person, ``guide`` a person to a room.
+
+Targets come from the knowledge base's room anchors (waypoints, regions) and from perceived person poses
+(:class:`~actions.erl.context.PerceivedEntities`), never from the simulator's ground truth. Failure modes:
+
+* ``move``: the room has no anchor (activation failure); the base reports the path blocked or no path
+  (execution failure); the localisation ends outside the target room (execution failure).
+* ``meet``: the person was never perceived (activation failure); the person cannot be approached, or refuses
+  to be escorted because they are out of reach (execution failure, after one re-approach to a fresh sighting).
+* ``guide``: the person is not within escort distance at activation (activation failure); the path is blocked;
+  the person was not perceived inside the target room within ``follow_timeout_s`` of arrival.
+"""
+
+from __future__ import annotations
+
+import math
+
+from actions.base import ActionStatus
+from actions.erl.common import ErlAction, NavGoal, to_point
+from actions.erl.context import ErlContext, Point, room_map, standoff_points, wrap
+
+#: metres between the robot and a person it approaches
+PERSON_STANDOFF = 0.9
+
+
+class MoveAction(ErlAction):
+    """``(move ?r ?from ?to)``: drive to the waypoint of room ``to``.
+
+    Phases: ``nav`` (following the goal) -> done. Deactivation stops the base unless it succeeded.
+    """
+
+    def __init__(self, args: tuple[str, ...], ctx: ErlContext) -> None:
+        super().__init__("move", args, ctx)
+        _robot, self.origin, self.target = args
+        self.nav: NavGoal | None = None
+
+    def activation(self) -> bool:
+        """Send the base to the first reachable waypoint of the target room."""
+        room = room_map(self.ctx.kb, self.target)
+        if room is None:
+            return self.refuse(f"room {self.target} has no anchor (region, waypoints) in the knowledge base")
+        self.room = room
+        self.nav = NavGoal(self.ctx, [to_point(self.ctx, wp) for wp in room.waypoints], self.target)
+        if not self.nav.start():
+            return self.refuse(self.nav.reason)
+        self.enter("nav")
+        return True
+
+    def step(self) -> ActionStatus:
+        """Poll the navigation goal; on arrival check that the localisation is inside the room."""
+        assert self.nav is not None
+        status = self.nav.poll()
+        if status is ActionStatus.FAILED:
+            return self.fail(self.nav.reason)
+        if status is ActionStatus.RUNNING:
+            return status
+        pose = self.ctx.robot.robot_pose()
+        if not self.room.contains(pose.x, pose.y):
+            return self.fail(f"arrived at ({pose.x:.2f}, {pose.y:.2f}), which is outside {self.target}")
+        return ActionStatus.SUCCEEDED
+
+
+def approach_person(ctx: ErlContext, person: str, what: str) -> NavGoal | None:
+    """A started navigation goal to a free pose near the perceived person, facing them; None when the person
+    was never perceived or no pose around them is reachable."""
+    where = ctx.perceived.position(person)
+    if where is None:
+        return None
+    pose = ctx.robot.robot_pose()
+    target = (where[0], where[1])
+    starts = []
+    for p in standoff_points(target, PERSON_STANDOFF, (pose.x, pose.y), count=12)[:8]:
+        yaw = math.atan2(target[1] - p[1], target[0] - p[0])
+        starts.append(to_point(ctx, p, yaw))
+    nav = NavGoal(ctx, starts, what)
+    return nav if nav.start() else None
+
+
+class MeetAction(ErlAction):
+    """``(meet ?r ?p ?l)``: go to the perceived person and ask them to follow (effect: escorting).
+
+    Phases: ``nav`` -> ``escort`` (with at most one re-approach when a fresh sighting shows they moved).
+    """
+
+    def __init__(self, args: tuple[str, ...], ctx: ErlContext) -> None:
+        super().__init__("meet", args, ctx)
+        _robot, self.person, self.room = args
+        self.nav: NavGoal | None = None
+        self.reapproaches = 0
+
+    def activation(self) -> bool:
+        """Start approaching where the person was last perceived."""
+        self.nav = approach_person(self.ctx, self.person, self.person)
+        if self.nav is None:
+            return self.refuse(f"cannot approach {self.person}: not perceived or no free pose around them")
+        self.enter("nav")
+        return True
+
+    def step(self) -> ActionStatus:
+        """Approach, then ask the person to follow."""
+        assert self.nav is not None
+        status = self.nav.poll()
+        if status is ActionStatus.FAILED:
+            return self.fail(self.nav.reason)
+        if status is ActionStatus.RUNNING:
+            return status
+        result = self.ctx.robot.escort(self.person)
+        if result.ok:
+            return ActionStatus.SUCCEEDED
+        if self.reapproaches < 1:
+            self.reapproaches += 1
+            nav = approach_person(self.ctx, self.person, self.person)
+            if nav is not None:
+                self.nav = nav
+                return ActionStatus.RUNNING
+        return self.fail(f"{self.person} will not follow: {result.reason}")
+
+
+class GuideAction(ErlAction):
+    """``(guide ?r ?p ?from ?to)``: walk to room ``to`` with the person following.
+
+    Phases: ``nav`` (person following) -> ``turn`` (face back to see them) -> ``wait`` (until the person is
+    perceived inside ``to``). Deactivation ends the escort, so the person stays where they are.
+    """
+
+    def __init__(self, args: tuple[str, ...], ctx: ErlContext) -> None:
+        super().__init__("guide", args, ctx)
+        _robot, self.person, self.origin, self.target = args
+        self.nav: NavGoal | None = None
+
+    def activation(self) -> bool:
+        """Ask the person to follow, then head for the target room's waypoint."""
+        room = room_map(self.ctx.kb, self.target)
+        if room is None:
+            return self.refuse(f"room {self.target} has no anchor (region, waypoints) in the knowledge base")
+        self.room = room
+        result = self.ctx.robot.escort(self.person)
+        if not result.ok:
+            return self.refuse(f"{self.person} cannot be escorted: {result.reason}")
+        self.nav = NavGoal(self.ctx, [to_point(self.ctx, wp) for wp in room.waypoints], self.target)
+        if not self.nav.start():
+            self.ctx.robot.stop_escort()
+            return self.refuse(self.nav.reason)
+        self.enter("nav")
+        return True
+
+    def step(self) -> ActionStatus:
+        """Walk, turn round, and wait to see the person in the room."""
+        assert self.nav is not None
+        if self.phase in ("nav", "turn"):
+            status = self.nav.poll()
+            if status is ActionStatus.FAILED:
+                return self.fail(self.nav.reason)
+            if status is ActionStatus.RUNNING:
+                return status
+            if self.phase == "nav":
+                pose = self.ctx.robot.robot_pose()
+                back = wrap(pose.yaw + math.pi)
+                self.nav = NavGoal(self.ctx, [to_point(self.ctx, (pose.x, pose.y), back)], "turn round")
+                self.nav.start()
+                self.enter("turn")
+                return ActionStatus.RUNNING
+            self.enter("wait")
+        seen = self.ctx.perceived.seen_since(self.person, self.phase_since)
+        if seen is not None and self.room.contains(seen.position[0], seen.position[1]):
+            return ActionStatus.SUCCEEDED
+        if self.in_phase_for() > self.ctx.follow_timeout_s:
+            return self.fail(
+                f"{self.person} was not seen in {self.target} {self.ctx.follow_timeout_s:g} s after arrival"
+            )
+        return ActionStatus.RUNNING
+
+    def deactivation(self) -> bool:
+        """End the escort (the person stays), stop the base unless succeeded."""
+        self.ctx.robot.stop_escort()
+        return super().deactivation()
+
+
+__all__ = ["GuideAction", "MeetAction", "MoveAction", "Point", "approach_person"]

@@ -1,0 +1,158 @@
+"""Octomap throughput of KGM-2 against raw pyoctomap (``octomap_throughput_ratio``).
+
+Both sides insert the same camera-like point clouds (objects seen from a moving camera, each cloud one
+detection's deprojected points, ray cast from the camera) into one octree per object at the same resolution:
+
+* raw: ``OcTree.insertPointCloud`` called directly, cloud after cloud, with its default arguments (and once
+  more with ``discretize=True``, the mode KGM-2 uses, to isolate the cost of the Python around it);
+* KGM-2: the LLKUs of each frame published on the bus with their scan marker and processed by
+  :class:`~knic.kgm2.cognition.CognitiveLayer` (association, octomap update, key mirror, CKU
+  publication) under a role that processes every class at every frame, so nothing is skipped.
+
+The ratio is KGM-2 points per second over raw points per second (1.0: no overhead). Times are the process's
+CPU time (``time.process_time``), the two sides run interleaved, and the best of ``repeats`` runs of each side
+is kept, to damp the noise of other processes on a shared machine.
+"""
+
+from __future__ import annotations
+
+import time
+from typing import Any
+
+import numpy as np
+import pyoctomap
+
+from knic.bus import Bus
+from knic.kgm1.camera import Scan
+from knic.kgm1.locations import LocationModel
+from knic.kgm2.cognition import CognitiveLayer, TrackingConfig
+from knic.kgm2.roles import Policy, Role
+from knic.kgm2.spatial import DEFAULT_RESOLUTION, Prism, VolumeSet
+from knic.units import LLKU, Kind
+
+
+class _AllVisible:
+    """A frame view that sees everything (the benchmark's objects are never missed)."""
+
+    def __init__(self, position: np.ndarray) -> None:
+        self.position = position
+
+    def visible(self, points: np.ndarray) -> np.ndarray:
+        return np.ones(len(points), dtype=bool)
+
+
+def _scene(
+    objects: int, frames: int, points: int, seed: int
+) -> list[tuple[np.ndarray, list[tuple[str, np.ndarray]]]]:
+    """Per frame: the camera origin and (label, cloud) per object, world frame, metres."""
+    rng = np.random.default_rng(seed)
+    centres = np.column_stack(
+        [rng.uniform(1.0, 7.0, objects), rng.uniform(1.0, 7.0, objects), rng.uniform(0.4, 1.0, objects)]
+    )
+    out = []
+    for f in range(frames):
+        angle = 2 * np.pi * f / max(frames, 1)
+        origin = np.array([4.0 + 0.5 * np.cos(angle), 4.0 + 0.5 * np.sin(angle), 1.2])
+        clouds = []
+        for i, c in enumerate(centres):
+            cloud = c + rng.normal(0.0, 0.03, size=(points, 3))
+            clouds.append((f"class_{i}", cloud))
+        out.append((origin, clouds))
+    return out
+
+
+def _raw(
+    scene: list[tuple[np.ndarray, list[tuple[str, np.ndarray]]]], resolution: float, discretize: bool = False
+) -> float:
+    trees: dict[str, Any] = {}
+    start = time.process_time()
+    for origin, clouds in scene:
+        for label, cloud in clouds:
+            tree = trees.get(label)
+            if tree is None:
+                tree = trees[label] = pyoctomap.OcTree(resolution)
+            tree.insertPointCloud(cloud, origin, -1.0, False, discretize)
+    return time.process_time() - start
+
+
+def _kgm2(scene: list[tuple[np.ndarray, list[tuple[str, np.ndarray]]]], resolution: float) -> float:
+    bus = Bus()
+    room = Prism("room", np.array([[0.0, 0.0], [8.0, 0.0], [8.0, 8.0], [0.0, 8.0]]), 0.0, 2.5)
+    locations = LocationModel(VolumeSet([room], resolution), VolumeSet([], resolution))
+    role = Role("bench", "every class at every frame", Policy(1000.0, 1))
+    layer = CognitiveLayer(bus, role, locations, config=TrackingConfig(resolution=resolution))
+    units = [
+        (
+            origin,
+            [
+                LLKU(
+                    kind=Kind.OBJECT,
+                    label=label,
+                    source="bench",
+                    sensor="camera",
+                    stamp=0.1 * f,
+                    confidence=0.9,
+                    position=tuple(float(v) for v in np.median(cloud, axis=0)),  # type: ignore[arg-type]
+                    points=cloud,
+                    sensor_origin=(float(origin[0]), float(origin[1]), float(origin[2])),
+                    identity=label,
+                )
+                for label, cloud in clouds
+            ],
+        )
+        for f, (origin, clouds) in enumerate(scene)
+    ]
+    start = time.process_time()
+    for f, (origin, frame_units) in enumerate(units):
+        stamp = 0.1 * f
+        for unit in frame_units:
+            bus.publish(f"percept.vision.object.{unit.label}", unit, source="bench", stamp=stamp)
+        scan = Scan(Kind.OBJECT, stamp, _AllVisible(origin), "camera")  # type: ignore[arg-type]
+        bus.publish("percept.vision.scan.object", scan, source="bench", stamp=stamp)
+        layer.step(stamp)
+    elapsed = time.process_time() - start
+    if layer.stats.processed != sum(len(u) for _, u in units):
+        raise RuntimeError("benchmark role skipped units; the comparison would be unfair")
+    return elapsed
+
+
+def measure_octomap_throughput(
+    *,
+    objects: int = 8,
+    frames: int = 60,
+    points: int = 128,
+    repeats: int = 5,
+    resolution: float = DEFAULT_RESOLUTION,
+    seed: int = 0,
+) -> dict[str, float | int]:
+    """Measure points per second through KGM-2's update path and through raw ``insertPointCloud``.
+
+    Returns:
+        ``octomap_throughput_ratio`` (against default ``insertPointCloud``),
+        ``octomap_overhead_ratio_same_mode`` (against ``insertPointCloud(..., discretize=True)``, the
+        mode KGM-2 uses: what the Python around the insertion costs), ``kgm2_points_per_s``,
+        ``raw_points_per_s``, ``clouds``, ``points_per_cloud``, ``resolution_m``.
+    """
+    scene = _scene(objects, frames, points, seed)
+    total = objects * frames * points
+    raws, same, kgm2s = [], [], []
+    for _ in range(repeats):  # interleaved, so all sides see the same machine load
+        raws.append(_raw(scene, resolution))
+        same.append(_raw(scene, resolution, discretize=True))
+        kgm2s.append(_kgm2(scene, resolution))
+    raw, raw_same, kgm2 = min(raws), min(same), min(kgm2s)
+    return {
+        "octomap_throughput_ratio": round(raw / kgm2, 3),
+        "octomap_overhead_ratio_same_mode": round(raw_same / kgm2, 3),
+        "kgm2_points_per_s": round(total / kgm2),
+        "raw_points_per_s": round(total / raw),
+        "clouds": objects * frames,
+        "points_per_cloud": points,
+        "resolution_m": resolution,
+    }
+
+
+if __name__ == "__main__":  # pragma: no cover - manual run
+    import json
+
+    print(json.dumps(measure_octomap_throughput()))

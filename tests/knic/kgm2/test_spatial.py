@@ -1,0 +1,83 @@
+"""Octomaps of rooms (from the 2D map) and of tracked entities; key arithmetic against pyoctomap."""
+
+from __future__ import annotations
+
+import numpy as np
+import pyoctomap
+import pytest
+
+from knic.errors import InferenceError
+from knic.kgm1.locations import LocationModel
+from knic.kgm2.spatial import (
+    DEFAULT_RESOLUTION,
+    EntityOctomap,
+    Prism,
+    coarsen,
+    key_centers,
+    keys_of,
+    unique_keys,
+)
+from tests.knic.synthetic import blob
+
+
+def test_numpy_keys_match_octomap_keys() -> None:
+    tree = pyoctomap.OcTree(DEFAULT_RESOLUTION)
+    points = np.random.default_rng(1).uniform(-5, 9, size=(200, 3))
+    ours = keys_of(points)
+    theirs = np.array([list(tree.coordToKey(p)) for p in points])
+    assert (ours == theirs).all()
+    assert np.allclose(keys_of(key_centers(ours)), ours)
+    coarse = pyoctomap.OcTree(DEFAULT_RESOLUTION * 4)
+    assert (coarsen(ours, 2) == np.array([list(coarse.coordToKey(p)) for p in points])).all()
+    assert len(unique_keys(np.vstack([ours, ours]))) == len(unique_keys(ours))
+
+
+def test_one_octomap_per_room_from_the_2d_map(paper_locations: LocationModel) -> None:
+    rooms = paper_locations.rooms
+    assert rooms.names() == ["bedroom", "kitchen", "entrance", "living_room"]
+    for name, prism in rooms.prisms.items():
+        # 4 m x 4 m floor, 2.5 m walls, 0.1 m voxels
+        assert prism.voxel_count == 40 * 40 * 25
+        tree = prism.octree()
+        wx, wy = paper_locations.waypoints[name]
+        node = tree.search(np.array([wx, wy, 1.0]))
+        assert node is not None and tree.isNodeOccupied(node)
+        assert tree.search(np.array([wx + 10.0, wy, 1.0])) is None
+        assert paper_locations.room_at(wx, wy) == name
+    assert paper_locations.room_at(20.0, 20.0) is None
+
+
+def test_room_membership_by_voxel_intersection(paper_locations: LocationModel) -> None:
+    rooms = paper_locations.rooms
+    assert rooms.best(keys_of(blob((6.0, 6.6, 0.8)))) == ("kitchen", 1.0)
+    straddling = keys_of(blob((4.0, 6.0, 1.0), n=200, spread=0.3))
+    counts = rooms.overlaps(straddling)
+    assert set(counts) == {"bedroom", "kitchen"}
+    assert rooms.best(np.zeros((0, 3), dtype=np.int64)) == (None, 0.0)
+
+
+def test_furniture_support_volume(paper_locations: LocationModel) -> None:
+    on_shelf = keys_of(blob((7.75, 1.5, 0.92), spread=0.02))
+    assert paper_locations.furniture.best(on_shelf)[0] == "entrance_shelf"
+    on_floor = keys_of(blob((6.0, 2.0, 0.05), spread=0.02))
+    assert paper_locations.furniture.best(on_floor)[0] is None
+
+
+def test_entity_octomap_follows_the_entity() -> None:
+    octo = EntityOctomap(reset_distance=0.5)
+    origin = (0.0, 0.0, 1.2)
+    a = blob((2.0, 0.0, 0.8), spread=0.02)
+    octo.update(a, a.mean(axis=0), origin)
+    assert octo.occupied_at((2.0, 0.0, 0.8))
+    assert (octo.keys == keys_of(a)).all()
+    b = blob((3.5, 1.0, 0.8), spread=0.02)
+    octo.update(b, b.mean(axis=0), origin)
+    assert octo.resets == 1
+    assert octo.occupied_at((3.5, 1.0, 0.8)) and not octo.occupied_at((2.0, 0.0, 0.8))
+
+
+def test_bad_prisms_are_refused() -> None:
+    with pytest.raises(InferenceError, match="polygon"):
+        Prism("x", np.array([[0.0, 0.0], [1.0, 1.0]]), 0.0, 1.0)
+    with pytest.raises(InferenceError, match="z_max"):
+        Prism("x", np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0]]), 1.0, 1.0)

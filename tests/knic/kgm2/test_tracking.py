@@ -1,0 +1,53 @@
+"""Association over time with a radius and a miss counter (seed 002, Algorithm 2.1)."""
+
+from __future__ import annotations
+
+import numpy as np
+
+from knic.kgm2.tracking import Tracker
+from knic.units import Kind
+from tests.knic.synthetic import percept
+
+
+def test_same_object_across_frames_and_a_new_one_beyond_the_radius() -> None:
+    tracker = Tracker("mug", radius=0.4)
+    first = tracker.associate([percept(Kind.OBJECT, "mug", (2.0, 1.0, 0.8), 0.0)], 0.0)
+    ((track, _),) = first.created
+    again = tracker.associate([percept(Kind.OBJECT, "mug", (2.1, 1.05, 0.8), 0.2)], 0.2)
+    assert [t.track_id for t, _ in again.updated] == [track.track_id] and not again.created
+    assert np.linalg.norm(track.centroid - [2.08, 1.04, 0.8]) < 0.01  # weighted average, gain 0.8
+    other = tracker.associate(
+        [
+            percept(Kind.OBJECT, "mug", (2.1, 1.0, 0.8), 0.4),
+            percept(Kind.OBJECT, "mug", (3.5, 1.0, 0.8), 0.4),
+        ],
+        0.4,
+    )
+    assert [t.track_id for t, _ in other.updated] == [track.track_id]
+    assert len(other.created) == 1 and len(tracker.tracks) == 2
+    assert track.hits == 3 and track.misses == 0
+
+
+def test_dropped_after_more_than_max_misses_only_when_visible() -> None:
+    tracker = Tracker("mug", radius=0.4, max_misses=2)
+    tracker.associate([percept(Kind.OBJECT, "mug", (2.0, 1.0, 0.8), 0.0)], 0.0)
+    hidden = lambda pts: np.zeros(len(pts), dtype=bool)  # noqa: E731
+    shown = lambda pts: np.ones(len(pts), dtype=bool)  # noqa: E731
+    for _ in range(5):
+        assert tracker.miss_scan(hidden) == []
+    assert tracker.miss_scan(shown) == [] and tracker.miss_scan(shown) == []
+    dropped = tracker.miss_scan(shown)
+    assert [t.cls for t in dropped] == ["mug"] and tracker.tracks == {}
+
+
+def test_recognised_identity_follows_the_person_and_anonymous_detections_join_nearby_tracks() -> None:
+    tracker = Tracker("person", radius=0.8)
+    tracker.associate([percept(Kind.PERSON, "person", (1.0, 1.0, 1.0), 0.0, identity="jack")], 0.0)
+    jump = tracker.associate([percept(Kind.PERSON, "person", (5.0, 5.0, 1.0), 1.0, identity="jack")], 1.0)
+    ((track, _),) = jump.updated
+    assert track.symbol == "jack" and np.allclose(track.centroid, [5.0, 5.0, 1.0])
+    assert track.octomap.resets == 1
+    anon = tracker.associate([percept(Kind.PERSON, "person", (5.2, 5.0, 1.0), 1.2)], 1.2)
+    assert [t.symbol for t, _ in anon.updated] == ["jack"]
+    stranger = tracker.associate([percept(Kind.PERSON, "person", (0.0, 0.0, 1.0), 1.4)], 1.4)
+    assert [t.symbol for t, _ in stranger.created] == [f"person_{stranger.created[0][0].track_id}"]

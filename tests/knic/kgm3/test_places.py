@@ -1,0 +1,119 @@
+"""KP' for robot_at, object_at / object_on, person_at: assertion with hysteresis, retraction, TTL."""
+
+from __future__ import annotations
+
+from knic.bus import Bus
+from knic.kgm1.locations import LocationModel
+from knic.kgm3.places import ObjectPlaceKP, PersonPlaceKP, RobotAtKP
+from knic.units import Kind
+from knowledge_base import BeliefStatus, Fact, KnowledgeBase
+from tests.knic.kgm3.helpers import cku, send
+
+KITCHEN = (5.5, 5.3, 0.0)
+BEDROOM = (2.8, 5.3, 0.0)
+SHELF_TOP = (7.75, 1.5, 0.92)
+
+
+def test_robot_at_switches_after_consistent_readings_and_does_not_flap(
+    paper_kb: KnowledgeBase, paper_locations: LocationModel
+) -> None:
+    bus = Bus()
+    kp = RobotAtKP(bus, paper_kb, paper_locations, needed=2)
+    assert paper_kb.holds("robot_at", "r2d2", "bedroom")
+    t = 0.0
+    for place in (KITCHEN, BEDROOM, KITCHEN, BEDROOM, KITCHEN):  # noise alternating between two rooms
+        t += 0.1
+        send(bus, cku("r2d2", Kind.ROBOT, place, t, cls="robot"))
+        kp.step(t)
+        assert paper_kb.facts("robot_at") == [Fact("robot_at", ("r2d2", "bedroom"))]
+    send(bus, cku("r2d2", Kind.ROBOT, KITCHEN, 1.0, cls="robot"))
+    kp.step(1.0)
+    assert paper_kb.facts("robot_at") == [Fact("robot_at", ("r2d2", "kitchen"))]
+    why = paper_kb.why(Fact("robot_at", ("r2d2", "kitchen")))
+    assert why is not None
+    assert (why.source, why.status, why.since) == ("kp'.robot_at", BeliefStatus.OBSERVED, 1.0)
+    assert why.support[0].startswith("cku:") and "llku:test:r2d2:1.0" in why.support
+
+
+def test_object_on_furniture_found_and_anchored(
+    paper_kb: KnowledgeBase, paper_locations: LocationModel
+) -> None:
+    bus = Bus()
+    kp = ObjectPlaceKP(bus, paper_kb, paper_locations, needed=2)
+    send(bus, cku("glasses", Kind.OBJECT, SHELF_TOP, 1.0))
+    kp.step(1.0)
+    assert not paper_kb.facts("object_at", "glasses")  # one sighting is not enough
+    send(bus, cku("glasses", Kind.OBJECT, SHELF_TOP, 1.2))
+    kp.step(1.2)
+    assert paper_kb.holds("object_at", "glasses", "entrance")
+    assert paper_kb.holds("object_on", "glasses", "entrance_shelf")
+    assert paper_kb.holds("found", "glasses")
+    why = paper_kb.why(Fact("object_at", ("glasses", "entrance")))
+    assert why is not None and why.status is BeliefStatus.OBSERVED and why.source == "kp'.object_at"
+    anchor = paper_kb.anchor("glasses")
+    assert anchor is not None and abs(anchor["pose"]["position"][0] - 7.75) < 0.05
+
+
+def test_object_moved_to_another_room_retracts_the_old_place(
+    paper_kb: KnowledgeBase, paper_locations: LocationModel
+) -> None:
+    bus = Bus()
+    kp = ObjectPlaceKP(bus, paper_kb, paper_locations, needed=2)
+    for t in (1.0, 1.2):
+        send(bus, cku("glasses", Kind.OBJECT, SHELF_TOP, t))
+    kp.step(1.2)
+    for t in (5.0, 5.2):
+        send(bus, cku("glasses", Kind.OBJECT, (6.0, 6.6, 0.78), t))  # on the kitchen table
+    kp.step(5.2)
+    assert paper_kb.facts("object_at", "glasses") == [Fact("object_at", ("glasses", "kitchen"))]
+    assert paper_kb.facts("object_on", "glasses") == [Fact("object_on", ("glasses", "kitchen_table"))]
+
+
+def test_lost_track_retracts_place_and_found(paper_kb: KnowledgeBase, paper_locations: LocationModel) -> None:
+    bus = Bus()
+    kp = ObjectPlaceKP(bus, paper_kb, paper_locations, needed=2)
+    for t in (1.0, 1.2):
+        send(bus, cku("glasses", Kind.OBJECT, SHELF_TOP, t))
+    kp.step(1.2)
+    lost = cku("glasses", Kind.OBJECT, SHELF_TOP, 3.0, lost=True)
+    send(bus, lost)
+    kp.step(3.0)
+    assert not paper_kb.facts("object_at", "glasses") and not paper_kb.facts("object_on", "glasses")
+    assert not paper_kb.holds("found", "glasses")
+
+
+def test_explored_room_without_the_object_retracts_the_belief(
+    paper_kb: KnowledgeBase, paper_locations: LocationModel, clock: list[float]
+) -> None:
+    bus = Bus()
+    kp = ObjectPlaceKP(bus, paper_kb, paper_locations, needed=2, explored_grace_s=5.0)
+    paper_kb.add_fact("object_at", "glasses", "kitchen", source="problem", at=0.0)
+    paper_kb.add_fact("explored", "kitchen", source="kp'.explored", at=30.0, status=BeliefStatus.OBSERVED)
+    kp.step(30.0)
+    assert not paper_kb.facts("object_at", "glasses")
+
+
+def test_items_in_the_hand_are_left_to_the_actions(
+    paper_kb: KnowledgeBase, paper_locations: LocationModel
+) -> None:
+    bus = Bus()
+    kp = ObjectPlaceKP(bus, paper_kb, paper_locations, needed=1)
+    paper_kb.add_fact("holding", "r2d2", "glasses", source="dispatcher", at=0.0)
+    send(bus, cku("glasses", Kind.OBJECT, (5.5, 5.3, 0.9), 1.0))
+    kp.step(1.0)
+    assert not paper_kb.facts("object_at", "glasses")
+
+
+def test_person_at_with_time_to_live(paper_kb: KnowledgeBase, paper_locations: LocationModel) -> None:
+    bus = Bus()
+    kp = PersonPlaceKP(bus, paper_kb, paper_locations, ttl_s=30.0, needed=2)
+    for t in (1.0, 1.2):
+        send(bus, cku("annie", Kind.PERSON, (1.1, 6.6, 0.8), t, cls="person"))
+    send(bus, cku("person_7", Kind.PERSON, (6.0, 6.0, 1.0), 1.2, cls="person"))  # unrecognised: no fact
+    kp.step(1.2)
+    assert paper_kb.facts("person_at") == [Fact("person_at", ("annie", "bedroom"))]
+    assert paper_kb.holds("found", "annie")
+    kp.step(20.0)
+    assert paper_kb.holds("person_at", "annie", "bedroom")
+    kp.step(31.5)
+    assert not paper_kb.facts("person_at") and not paper_kb.holds("found", "annie")

@@ -1,0 +1,95 @@
+"""The camera sees what is in front of it and not what a wall hides; detections deproject to the object."""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from typing import Any
+
+import numpy as np
+import pytest
+
+from worlds.api import NoiseConfig
+from worlds.loader import world_from_dict
+from worlds.simulation import Simulation
+
+TWO_ROOMS: dict[str, Any] = {
+    "name": "two_rooms",
+    "rooms": [
+        {"name": "front", "polygon": [[0, 0], [4, 0], [4, 4], [0, 4]]},
+        {"name": "back", "polygon": [[4, 0], [8, 0], [8, 4], [4, 4]]},
+    ],
+    "doors": [{"rooms": ["front", "back"], "position": [4, 3.5], "width": 0.8}],
+    "furniture": [
+        {"name": "near_table", "room": "front", "position": [3.0, 1.0], "size": [0.6, 0.6, 0.7]},
+        {"name": "far_table", "room": "back", "position": [5.5, 1.0], "size": [0.6, 0.6, 0.7]},
+    ],
+    "items": [
+        {"name": "mug", "furniture": "near_table", "size": [0.1, 0.1, 0.12]},
+        {"name": "apple", "furniture": "far_table", "size": [0.1, 0.1, 0.1]},
+    ],
+    "people": [{"name": "annie", "position": [2.5, 2.6]}],
+    "robot": {"name": "r2d2", "start": [0.8, 1.0, 0]},
+}
+
+
+def _project(frame: Any, point: np.ndarray) -> tuple[float, float, float]:
+    """Pixel (u, v) and optical depth of a world point."""
+    rot = frame.camera_pose.rotation_matrix()
+    p = rot.T @ (point - np.asarray(frame.camera_pose.position))
+    k = frame.intrinsics
+    return (k.fx * p[0] / p[2] + k.cx, k.fy * p[1] / p[2] + k.cy, float(p[2]))
+
+
+def test_sees_the_object_in_front_not_the_one_behind_the_wall(make_sim: Callable[..., Simulation]) -> None:
+    sim = make_sim(world_from_dict(TWO_ROOMS, file="two_rooms.yaml"))
+    frame = sim.camera_frame()
+    assert "mug" in frame.visible_instances
+    assert "apple" not in frame.visible_instances
+    # the apple is inside the field of view: only the wall hides it
+    u, v, z = _project(frame, np.array(sim.true_pose("apple").position))
+    assert 0 <= u < frame.width and 0 <= v < frame.height and 0 < z < frame.intrinsics.far
+    labels = {d.label for d in frame.detections}
+    assert "mug" in labels and "apple" not in labels
+
+
+def test_detection_points_are_on_the_object_in_the_world_frame(make_sim: Callable[..., Simulation]) -> None:
+    sim = make_sim(world_from_dict(TWO_ROOMS, file="two_rooms.yaml"))
+    frame = sim.camera_frame()
+    mug = next(d for d in frame.detections if d.label == "mug")
+    pts = frame.points_world(mug, max_points=20)
+    assert 0 < len(pts) <= 20
+    true = np.array(sim.true_pose("mug").position)
+    assert np.all(np.linalg.norm(pts - true, axis=1) < 0.12)
+    assert frame.rgb.shape == (120, 160, 3) and frame.depth.shape == (120, 160)
+
+
+def test_people_are_recognised_and_pan_changes_the_view(make_sim: Callable[..., Simulation]) -> None:
+    sim = make_sim(world_from_dict(TWO_ROOMS, file="two_rooms.yaml"))
+    sim.pan_camera(np.pi / 4)  # annie is ahead to the left, the mug straight ahead
+    sim.step(0.1)
+    frame = sim.camera_frame()
+    person = [d for d in frame.detections if d.label == "person"]
+    assert [d.identity for d in person] == ["annie"]
+    assert "mug" not in frame.visible_instances
+
+
+def test_noise_misses_and_false_positives(make_sim: Callable[..., Simulation]) -> None:
+    world = world_from_dict(TWO_ROOMS, file="two_rooms.yaml")
+    blind = make_sim(world, noise=NoiseConfig(miss_rate=1.0, false_positive_rate=0.0))
+    assert blind.camera_frame().detections == []
+    assert "mug" in blind.camera_frame().visible_instances
+    noisy = make_sim(world, noise=NoiseConfig(miss_rate=0.0, false_positive_rate=1.0, confusion_rate=1.0))
+    frame = noisy.camera_frame()
+    spurious = [d for d in frame.detections if d.true_instance is None]
+    assert len(spurious) == 1 and spurious[0].mask.any()
+    confused = next(d for d in frame.detections if d.true_instance == "mug")
+    assert confused.label != "mug"
+
+
+def test_camera_rate_caches_frames(make_sim: Callable[..., Simulation]) -> None:
+    sim = make_sim(world_from_dict(TWO_ROOMS, file="two_rooms.yaml"), camera_hz=10.0)
+    first = sim.camera_frame()
+    sim.step(0.05)
+    assert sim.camera_frame() is first
+    sim.step(0.05)
+    assert sim.camera_frame().stamp == pytest.approx(0.1)
