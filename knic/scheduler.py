@@ -20,6 +20,7 @@ from __future__ import annotations
 import logging
 import time
 from abc import ABC, abstractmethod
+from collections import deque
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
@@ -95,6 +96,11 @@ class Scheduler:
             scales the wall-clock budget of a step (period / factor).
         on_event: called with every overrun event (besides the ``logging`` warning).
         wall_clock: wall-clock source in seconds (``time.perf_counter``); tests may substitute it.
+        max_events: how many recent overrun events :attr:`events` keeps (the counters in :meth:`stats` keep
+            counting).
+        warn_interval_s: simulated seconds between two logged warnings of one component and kind; the
+            overruns in between are counted and mentioned in the next warning (every event still reaches
+            :attr:`events` and ``on_event``).
     """
 
     def __init__(
@@ -103,13 +109,18 @@ class Scheduler:
         real_time_factor: float = 1.0,
         on_event: Callable[[SchedulerEvent], None] | None = None,
         wall_clock: Callable[[], float] = time.perf_counter,
+        max_events: int = 10000,
+        warn_interval_s: float = 10.0,
     ) -> None:
         if real_time_factor <= 0:
             raise InferenceError(f"scheduler real_time_factor must be > 0, got {real_time_factor}")
         self.real_time_factor = real_time_factor
         self.on_event = on_event
-        self.events: list[SchedulerEvent] = []
+        self.events: deque[SchedulerEvent] = deque(maxlen=max_events)
         self._wall = wall_clock
+        self.warn_interval_s = warn_interval_s
+        self._warned: dict[tuple[str, str], float] = {}
+        self._suppressed: dict[tuple[str, str], int] = {}
         self._entries: dict[str, _Entry] = {}
         self._running = False
 
@@ -159,7 +170,9 @@ class Scheduler:
                 if entry.next_due > now + 1e-9 or entry.component.name not in self._entries:
                     continue
                 missed = int((now - entry.next_due) / entry.period + 1e-9)
-                if missed >= 1:
+                if missed >= 1 and entry.stats.steps == 0:  # a late first tick is not an overrun
+                    entry.next_due = now + entry.period
+                elif missed >= 1:
                     entry.stats.behind += 1
                     self._report(
                         SchedulerEvent("behind", entry.component.name, now, entry.period, missed=missed)
@@ -211,8 +224,17 @@ class Scheduler:
 
     def _report(self, event: SchedulerEvent) -> None:
         self.events.append(event)
+        if self.on_event is not None:
+            self.on_event(event)
+        key = (event.component, event.kind)
+        last = self._warned.get(key)
+        if last is not None and event.now - last < self.warn_interval_s:
+            self._suppressed[key] = self._suppressed.get(key, 0) + 1
+            return
+        self._warned[key] = event.now
+        more = self._suppressed.pop(key, 0)
         log.warning(
-            "component %s overrun (%s) at t=%.3f: period %.3fs, wall %.4fs, budget %.4fs, missed %d",
+            "component %s overrun (%s) at t=%.3f: period %.3fs, wall %.4fs, budget %.4fs, missed %d%s",
             event.component,
             event.kind,
             event.now,
@@ -220,6 +242,5 @@ class Scheduler:
             event.wall_s,
             event.budget_s,
             event.missed,
+            f" ({more} more since the previous warning)" if more else "",
         )
-        if self.on_event is not None:
-            self.on_event(event)

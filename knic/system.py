@@ -39,6 +39,7 @@ from planner.recovery import RecoveryPolicy
 from planner.trace import EventKind, Trace, TraceEvent
 
 if TYPE_CHECKING:
+    from worlds.scenario import Scenario
     from worlds.simulation import Simulation
 
 DOMAIN = Path(__file__).resolve().parent.parent / "worlds" / "erl_home" / "domain.pddl"
@@ -124,7 +125,7 @@ class RunConfig:
 
     Attributes:
         world: world name (``erl_home``, ``erl_home_paper``) or world file.
-        scenario: scenario name or file, or None.
+        scenario: scenario name, file or :class:`~worlds.scenario.Scenario`, or None.
         seed: seed of the simulator's random draws.
         role: robot role name (``knic/roles.yaml``).
         max_sim_time: simulated seconds after which the run stops unfinished.
@@ -136,10 +137,11 @@ class RunConfig:
         goal_retries: times a goal the dispatcher dropped is handed back to it (perception may have learnt
             something since), each ``retry_after_s`` simulated seconds after the drop.
         retry_after_s: see ``goal_retries``.
+        real_time_factor: the scheduler's overrun budget is period / factor (wall seconds per step).
     """
 
     world: str | Path = "erl_home"
-    scenario: str | Path | None = None
+    scenario: str | Path | Scenario | None = None
     seed: int = 0
     role: str = "companion"
     max_sim_time: float = 600.0
@@ -149,6 +151,7 @@ class RunConfig:
     gui: bool = False
     check_period_s: float = 0.5
     goal_retries: int = 3
+    real_time_factor: float = 1.0
     retry_after_s: float = 3.0
 
 
@@ -218,7 +221,7 @@ class KnicSystem:
             )
             self._retries: dict[str, int] = {}
             self._dropped_at: dict[str, float] = {}
-            self.scheduler = Scheduler(real_time_factor=5.0)
+            self.scheduler = Scheduler(real_time_factor=cfg.real_time_factor)
             self.scheduler.add(SimulationComponent(self.sim))
             for component in self.pipeline:
                 self.scheduler.add(component)

@@ -29,7 +29,7 @@ from collections.abc import Sequence
 from typing import Any, Protocol
 
 from knic.errors import PlanningError
-from planner.grounding import ground_task
+from planner.grounding import GroundingCache, ground_task
 from planner.model import Atom, PlanningTask, atom_str
 from planner.plan import PlanResult, PlanStatus, PlanStep
 from planner.problem import focus_task, task_to_up
@@ -133,6 +133,7 @@ class TaskPlanner:
         self.timeout = timeout
         self.focus = focus
         self.node_limit = node_limit
+        self.cache = GroundingCache()
 
     def solve(self, task: PlanningTask, *, timeout: float | None = None) -> PlanResult:
         """Plan for ``task``; see the class docstring. Raises PlanningError only for unsupported features."""
@@ -200,7 +201,7 @@ class TaskPlanner:
         return result
 
     def _search(self, task: PlanningTask, deadline: float) -> PlanResult:
-        grounded = ground_task(task)
+        grounded = self.cache.ground(task)
         search = StripsSearch(grounded.actions, task.facts)
         unreachable = list(grounded.unreachable_goals)
         wanted = [g for g in task.goals if g not in set(unreachable)]

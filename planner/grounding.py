@@ -34,6 +34,8 @@ class GroundAction:
     pre_neg: tuple[Atom, ...]
     add: tuple[Atom, ...]
     delete: tuple[Atom, ...]
+    static_pos: tuple[Atom, ...] = ()
+    static_neg: tuple[Atom, ...] = ()
 
 
 @dataclass
@@ -156,13 +158,16 @@ class _Grounder:
                 actions[key] = None
                 return
             add = ground(schema.add, args)
+            pre_pos = ground(schema.pre_pos, args)
             act = GroundAction(
                 schema.name,
                 args,
-                tuple(a for a in ground(schema.pre_pos, args) if a[0] not in self.static),
+                tuple(a for a in pre_pos if a[0] not in self.static),
                 tuple(a for a in pre_neg if a[0] not in self.static),
                 tuple(add),
                 tuple(ground(schema.delete, args)),
+                tuple(a for a in pre_pos if a[0] in self.static),
+                tuple(a for a in pre_neg if a[0] in self.static),
             )
             actions[key] = act
             for atom in add:
@@ -227,3 +232,65 @@ def ground_task(task: PlanningTask, *, relevance: bool = True) -> GroundedTask:
     Durative actions are not grounded here (temporal tasks go to unified-planning engines).
     """
     return _Grounder(task).run(relevance)
+
+
+@dataclass
+class _CacheEntry:
+    static: frozenset[Atom]
+    reachable: set[Atom]
+    actions: list[GroundAction]
+
+
+class GroundingCache:
+    """Reuses a grounding for later tasks over the same objects (the dispatcher's replans).
+
+    A cached grounding of task T serves task T' when T' has the same objects, its static facts are a subset
+    of T's, and its changeable initial facts are all relaxed-reachable in T. Then everything relaxed-reachable
+    in T' is reachable in T (relaxed exploration is monotone), so T's actions whose static conditions still
+    hold in T' include every action T' can use: the result equals grounding T' afresh, up to extra actions
+    that no state of T' makes applicable. Doors found closed (static facts removed), objects seen elsewhere
+    and failed actions all keep the cache valid; new objects or new doors do not.
+
+    Args:
+        size: most groundings kept (least recently stored dropped first).
+    """
+
+    def __init__(self, size: int = 8) -> None:
+        self.size = size
+        self._entries: dict[tuple[int, frozenset[tuple[str, str]]], list[_CacheEntry]] = {}
+        self._order: list[tuple[tuple[int, frozenset[tuple[str, str]]], _CacheEntry]] = []
+        self.hits = 0
+        self.misses = 0
+
+    def ground(self, task: PlanningTask) -> GroundedTask:
+        """Like :func:`ground_task`, reusing a cached grounding when it is valid for ``task``."""
+        static_preds = task.domain.static_predicates
+        static = frozenset(a for a in task.facts if a[0] in static_preds)
+        changeable = [a for a in task.facts if a[0] not in static_preds]
+        key = (id(task.domain), frozenset(task.objects.items()))
+        for entry in self._entries.get(key, ()):
+            if static <= entry.static and all(a in entry.reachable for a in changeable):
+                self.hits += 1
+                actions = [
+                    a
+                    for a in entry.actions
+                    if all(p in static for p in a.static_pos) and not any(n in static for n in a.static_neg)
+                ]
+                return _finish(task, entry.reachable, actions)
+        self.misses += 1
+        full = _Grounder(task).run(relevance=False)
+        entry = _CacheEntry(static, full.reachable, full.actions)
+        self._entries.setdefault(key, []).append(entry)
+        self._order.append((key, entry))
+        if len(self._order) > self.size:
+            old_key, old = self._order.pop(0)
+            self._entries[old_key].remove(old)
+        return _finish(task, full.reachable, full.actions)
+
+
+def _finish(task: PlanningTask, reachable: set[Atom], actions: list[GroundAction]) -> GroundedTask:
+    unreachable = tuple(g for g in task.goals if g not in reachable)
+    reachable_goals = [g for g in task.goals if g in reachable]
+    return GroundedTask(
+        task, reachable, relevant_actions(actions, reachable_goals), unreachable, len(actions)
+    )

@@ -7,10 +7,10 @@ Relevance pruning happens at two levels:
 
 1. **Object focus** (:func:`focus_task`, here): keep the objects that the goals can involve and drop the rest
    with their facts. The kept set is the map (every object of a type related to itself by a static
-   predicate, e.g. rooms joined by ``connected``), the constants, the goal objects, every object of an action
-   parameter type that no kept object can fill (e.g. the robot, the furniture), and, transitively, the objects
-   in facts whose first argument is a kept non-map object (e.g. ``(holding r2d2 mug)`` keeps the mug, while
-   ``(object_on mug table)`` does not make a table keep its mug). A plan of the focused task
+   predicate that has facts, e.g. rooms joined by ``connected``), the constants, the goal objects, every
+   object of an action parameter type that no kept object can fill (e.g. the robot, the furniture), and,
+   transitively, the objects in facts whose first argument is a kept non-map object (``(holding r2d2 mug)``
+   keeps the mug; ``(object_on mug table)`` does not make a table keep its mug). A plan of the focused task
    is a plan of the full task: a ground action's conditions and effects mention only its arguments and the
    constants, and the focused initial state is the full one restricted to the kept objects. The converse may
    fail (a goal might need an object that was dropped), so :class:`~planner.engines.TaskPlanner` plans the
@@ -102,8 +102,9 @@ def focus_objects(task: PlanningTask) -> set[str]:
     dom = task.domain
     static = dom.static_predicates
     # Graph types: a static relation between two objects of one type (rooms joined by doors) is the map.
+    used_static = {atom[0] for atom in task.facts if atom[0] in static}
     graph_types: set[str] = set()
-    for pred in static:
+    for pred in used_static:
         arg_types = dom.predicates.get(pred, ())
         graph_types.update(t for t in arg_types if arg_types.count(t) > 1)
     kept: set[str] = set(dom.constants)

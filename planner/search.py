@@ -143,8 +143,9 @@ class StripsSearch:
                     out.append(i)
         return out
 
-    def solve(self, goals: list[Atom], node_limit: int = 200_000,
-              deadline: float | None = None) -> list[GroundAction] | None:
+    def solve(
+        self, goals: list[Atom], node_limit: int = 200_000, deadline: float | None = None
+    ) -> list[GroundAction] | None:
         """A plan reaching every atom in ``goals`` from the initial state, or ``None`` when none exists.
 
         Lazy greedy best-first search as Fast Downward's ``lazy_greedy([ff], preferred=[ff])``: successors
@@ -209,8 +210,9 @@ class StripsSearch:
                     heapq.heappush(regular, entry)
         return None
 
-    def _extract(self, parents: dict[frozenset[int], tuple[frozenset[int] | None, int]],
-                 state: frozenset[int]) -> list[GroundAction]:
+    def _extract(
+        self, parents: dict[frozenset[int], tuple[frozenset[int] | None, int]], state: frozenset[int]
+    ) -> list[GroundAction]:
         steps: list[GroundAction] = []
         current: frozenset[int] | None = state
         while current is not None:

@@ -2,7 +2,8 @@
 
 Everything the rest of KnIC (perception providers, robot actions, benchmarks) needs from the simulator is
 declared here: the sensor readings as dataclasses, the command results, the noise configuration and the
-:class:`SimulationAPI` protocol that :class:`worlds.simulation.Simulation` implements. Code outside ``worlds/``
+:class:`SimulationAPI` protocol that :class:`worlds.simulation.Simulation` implements. Code outside
+``worlds/``
 should import from this module (and construct the simulator through :func:`worlds.simulation.Simulation`),
 so that test doubles can satisfy the same protocol under mypy.
 
@@ -12,7 +13,8 @@ Conventions used throughout:
   from ``+x``, normalised to ``(-pi, pi]``.
 * **Time base**: simulated seconds since the start of the episode (:attr:`SimulationAPI.time`); every stamp in
   a reading is in that time base, never wall-clock time.
-* **Camera optical frame**: ``x`` right, ``y`` down, ``z`` forward (the pinhole convention); image rows go down,
+* **Camera optical frame**: ``x`` right, ``y`` down, ``z`` forward (the pinhole convention); image rows
+  go down,
   columns go right, pixel ``(u, v)`` = (column, row).
 * **Names**: instance names are exactly the PDDL symbols of the world (``glasses``, ``annie``, ``r2d2``,
   ``kitchen``, ``bedroom_left_light``); see ``/work/team/NOTES.md``.
@@ -70,7 +72,8 @@ def load_world(name_or_path: str | Path) -> World:
     """Load and validate a world.
 
     Args:
-        name_or_path: a world name (``"erl_home"``: the seven-room apartment; ``"erl_home_paper"``: the paper's
+        name_or_path: a world name (``"erl_home"``: the seven-room apartment; ``"erl_home_paper"``: the
+        paper's
             four-room variant) or the path of a world YAML file.
 
     Returns:
@@ -203,7 +206,8 @@ class CameraFrame:
         rgb: ``(height, width, 3)`` uint8 colour image.
         depth: ``(height, width)`` float32 depth in metres along the optical axis, with the configured depth
             noise; ``inf`` where nothing is within the far clipping distance.
-        segmentation: ``(height, width)`` int32 body ids (``-1``: background). Ground truth rendering, no noise.
+        segmentation: ``(height, width)`` int32 body ids (``-1``: background). Ground truth rendering,
+        no noise.
         intrinsics: the camera's pinhole intrinsics.
         camera_pose: pose of the **optical frame** (x right, y down, z forward) in the world frame.
         detections: detections of items and people after noise (misses, false positives, label confusion).
@@ -463,13 +467,15 @@ class SimulationAPI(Protocol):
         ...
 
     def device_states(self) -> dict[str, float | bool]:
-        """Every device's state: lights ``bool`` (on), dimmer and blinds ``float`` percent 0-100, bell ``bool``
+        """Every device's state: lights ``bool`` (on), dimmer and blinds ``float`` percent 0-100, bell
+        ``bool``
         (ringing now)."""
         ...
 
     # navigation
     def navigate_to_point(self, x: float, y: float, yaw: float | None = None) -> int:
-        """Start a goal to the world point ``(x, y)`` (final heading ``yaw`` if given). Returns the goal id."""
+        """Start a goal to the world point ``(x, y)`` (final heading ``yaw`` if given). Returns the goal
+        id."""
         ...
 
     def navigate_to_room(self, room: str) -> int:
@@ -501,7 +507,8 @@ class SimulationAPI(Protocol):
         ...
 
     def stop(self) -> None:
-        """Stop the base and cancel any navigation goal (its state becomes CANCELLED, reason ``"stopped"``)."""
+        """Stop the base and cancel any navigation goal (its state becomes CANCELLED, reason
+        ``"stopped"``)."""
         ...
 
     # manipulation and camera
@@ -510,7 +517,8 @@ class SimulationAPI(Protocol):
         ...
 
     def place(self, furniture: str) -> ActionResult:
-        """Put the held item on the furniture's surface at the free spot nearest the robot, if within reach."""
+        """Put the held item on the furniture's surface at the free spot nearest the robot, if within
+        reach."""
         ...
 
     def release(self) -> ActionResult:

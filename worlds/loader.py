@@ -36,8 +36,18 @@ WORLD_NAMES: dict[str, Path] = {
     "erl_home_paper": WORLDS_DIR / "erl_home" / "erl_home_paper.yaml",
 }
 
-_TOP = {"name", "rooms", "doors", "furniture", "items", "people", "devices", "robot", "wall_height",
-        "wall_thickness"}  # fmt: skip
+_TOP = {
+    "name",
+    "rooms",
+    "doors",
+    "furniture",
+    "items",
+    "people",
+    "devices",
+    "robot",
+    "wall_height",
+    "wall_thickness",
+}
 _ITEM_COLORS: dict[str, tuple[float, float, float, float]] = {
     "glasses": (0.1, 0.1, 0.1, 1.0),
     "apple": (0.8, 0.1, 0.1, 1.0),
@@ -113,8 +123,13 @@ def world_from_dict(data: Any, *, file: str = "<world>", source: Path | None = N
     devices = _devices(ctx, _list(ctx, "devices", data.get("devices", [])), rooms)
     robot = _robot(ctx, _req(ctx, "document", data, "robot"), rooms)
     names: dict[str, str] = {}
-    for kind, group in (("rooms", rooms), ("furniture", furniture), ("items", items), ("people", people),
-                        ("devices", devices)):  # fmt: skip
+    for kind, group in (
+        ("rooms", rooms),
+        ("furniture", furniture),
+        ("items", items),
+        ("people", people),
+        ("devices", devices),
+    ):
         for n in group:
             if n in names:
                 raise ctx.fail(f"{kind} {n!r}", f"name already used by {names[n]}")
@@ -448,8 +463,18 @@ def _devices(ctx: _Ctx, raw: list[Any], rooms: dict[str, Room]) -> dict[str, Dev
 
 def _robot(ctx: _Ctx, raw: Any, rooms: dict[str, Room]) -> RobotSpec:
     d = _map(ctx, "robot", raw)
-    fields = {"name", "start", "radius", "height", "max_linear", "max_angular", "reach", "camera_height",
-              "camera_pitch", "camera_fov"}  # fmt: skip
+    fields = {
+        "name",
+        "start",
+        "radius",
+        "height",
+        "max_linear",
+        "max_angular",
+        "reach",
+        "camera_height",
+        "camera_pitch",
+        "camera_fov",
+    }
     _no_unknown(ctx, "robot", d, fields)
     name = _str(ctx, "robot.name", _req(ctx, "robot", d, "name"))
     s = _vec(ctx, "robot.start", _req(ctx, "robot", d, "start"), 3)

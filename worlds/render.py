@@ -1,4 +1,5 @@
-"""Drawing a world's map as a PNG (Pillow): rooms, walls with door gaps, furniture, items, people, devices, robot."""
+"""Drawing a world's map as a PNG (Pillow): rooms, walls with door gaps, furniture, items, people,
+devices, robot."""
 
 from __future__ import annotations
 
@@ -10,8 +11,16 @@ from PIL import Image, ImageDraw, ImageFont
 from worlds.model import World
 from worlds.sim.navigation import wall_segments
 
-ROOM_COLORS = [(255, 244, 214), (224, 240, 255), (230, 250, 225), (255, 228, 225), (240, 230, 255),
-               (255, 250, 200), (220, 245, 245), (245, 235, 220)]  # fmt: skip
+ROOM_COLORS = [
+    (255, 244, 214),
+    (224, 240, 255),
+    (230, 250, 225),
+    (255, 228, 225),
+    (240, 230, 255),
+    (255, 250, 200),
+    (220, 245, 245),
+    (245, 235, 220),
+]
 DEVICE_LETTER = {"light": "L", "dimmer": "D", "blinds": "B", "bell": "ß"}
 
 
@@ -43,11 +52,14 @@ def render_map(world: World, out: Path, *, scale: float = 80.0, margin: float = 
         d.line([px(*a), px(*b)], fill=(60, 60, 60), width=wall_px)
     for door in world.doors:
         x, y = px(*door.position)
-        r = 4
+        r = 4.0
         d.ellipse([x - r, y - r, x + r, y + r], fill=(40, 160, 60))
     for f in world.furniture.values():
-        d.polygon([px(*p) for p in f.footprint()], fill=tuple(int(c * 255) for c in f.color[:3]),
-                  outline=(50, 40, 30))  # fmt: skip
+        d.polygon(
+            [px(*p) for p in f.footprint()],
+            fill=tuple(int(c * 255) for c in f.color[:3]),
+            outline=(50, 40, 30),
+        )
         fx, fy = px(*f.position)
         xs = [px(*p)[0] for p in f.footprint()]
         text_w = d.textbbox((0, 0), f.name, font=small)[2]
@@ -57,8 +69,10 @@ def render_map(world: World, out: Path, *, scale: float = 80.0, margin: float = 
         _label(d, (fx, fy - 8), f.name, small, (20, 20, 20), box=True)
     for it in world.items.values():
         x, y = px(it.position[0], it.position[1])
-        r = 5
-        d.ellipse([x - r, y - r, x + r, y + r], fill=tuple(int(c * 255) for c in it.color[:3]), outline=(0, 0, 0))
+        r = 5.0
+        d.ellipse(
+            [x - r, y - r, x + r, y + r], fill=tuple(int(c * 255) for c in it.color[:3]), outline=(0, 0, 0)
+        )
         _label(d, (x, y + 10), it.name, small, (0, 0, 120))
     for p in world.people.values():
         x, y = px(*p.position)
@@ -79,7 +93,9 @@ def render_map(world: World, out: Path, *, scale: float = 80.0, margin: float = 
     d.ellipse([x - r, y - r, x + r, y + r], fill=(200, 200, 215), outline=(0, 0, 90), width=2)
     d.line([(x, y), (x + r * 1.4 * math.cos(ryaw), y - r * 1.4 * math.sin(ryaw))], fill=(0, 0, 90), width=3)
     _label(d, (x, y + r + 9), world.robot.name, font, (0, 0, 90))
-    legend = "rooms (filled), walls (dark), doors (green dots), furniture (boxes), items (dots), people (discs), "
+    legend = (
+        "rooms (filled), walls (dark), doors (green dots), furniture (boxes), items (dots), people (discs), "
+    )
     legend += "devices (yellow: L light, D dimmer, B blinds, ß bell), robot (heading line); 1 m = "
     legend += f"{scale:.0f} px"
     d.text((8, height - 22), legend, fill=(40, 40, 40), font=small)

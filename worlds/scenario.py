@@ -4,7 +4,8 @@ A scenario file (``worlds/erl_home/scenarios/*.yaml``) has a ``name``, an option
 for, a ``description`` and a list of ``events``, each with ``at`` (simulated seconds) and a ``type``:
 
 * ``doorbell``: the door bell rings (a sound event at the bell); with ``visitor`` that person appears outside
-  the front door ``enter_after`` seconds later (default 5) and walks to room ``to`` (default: the bell's room).
+  the front door ``enter_after`` seconds later (default 5) and walks to room ``to`` (default: the bell's
+  room).
 * ``say``: ``person`` says ``text`` (optional ``audio``: a WAV path relative to the scenario file).
 * ``move_object``: ``person`` walks to ``item``, takes it, carries it to furniture ``to`` and puts it there.
 * ``person_to``: ``person`` walks to ``room`` or onto ``furniture`` (``teleport: true``: is there at once).
@@ -96,7 +97,9 @@ def load_scenario(name_or_path: str | Path, world: World) -> Scenario:
     return scenario_from_dict(data, world, file=path.name, source=path)
 
 
-def scenario_from_dict(data: Any, world: World, *, file: str = "<scenario>", source: Path | None = None) -> Scenario:
+def scenario_from_dict(
+    data: Any, world: World, *, file: str = "<scenario>", source: Path | None = None
+) -> Scenario:
     """Validate a parsed scenario document against ``world``."""
 
     def fail(entry: str, problem: str) -> WorldError:
@@ -133,11 +136,17 @@ def scenario_from_dict(data: Any, world: World, *, file: str = "<scenario>", sou
         _check_names(fail, entry, kind, args, world, source)
         events.append(Event(at=float(at), type=kind, args=args))
     events.sort(key=lambda e: e.at)
-    return Scenario(name=str(data["name"]), description=str(data.get("description", "")), events=tuple(events),
-                    source=source)  # fmt: skip
+    return Scenario(
+        name=str(data["name"]),
+        description=str(data.get("description", "")),
+        events=tuple(events),
+        source=source,
+    )
 
 
-def _check_names(fail: Any, entry: str, kind: str, args: dict[str, Any], world: World, source: Path | None) -> None:
+def _check_names(
+    fail: Any, entry: str, kind: str, args: dict[str, Any], world: World, source: Path | None
+) -> None:
     def need(key: str, group: dict[str, Any], what: str) -> None:
         if key in args and args[key] not in group:
             raise fail(entry, f"unknown {what} {args[key]!r}")

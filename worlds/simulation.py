@@ -192,25 +192,44 @@ class Simulation:
         self._sync_bodies()
         r, spec = self._base, self._world.robot
         heading = r.yaw + self._pan
-        eye = (r.x + CAMERA_FORWARD * math.cos(heading), r.y + CAMERA_FORWARD * math.sin(heading),
-               spec.camera_height)  # fmt: skip
+        eye = (
+            r.x + CAMERA_FORWARD * math.cos(heading),
+            r.y + CAMERA_FORWARD * math.sin(heading),
+            spec.camera_height,
+        )
         width, height = self.camera_size
-        rgb, depth, seg, intr, pose = self._scene.render(eye, heading, spec.camera_pitch, width, height,
-                                                         spec.camera_fov)  # fmt: skip
+        rgb, depth, seg, intr, pose = self._scene.render(
+            eye, heading, spec.camera_pitch, width, height, spec.camera_fov, exclude=(self.robot_name,)
+        )
         pose = Pose3D(pose.position, pose.orientation, self._time)
-        detections, visible = detect(seg, depth, self._instances, self.noise, self._rng_camera, self._item_classes)
+        detections, visible = detect(
+            seg, depth, self._instances, self.noise, self._rng_camera, self._item_classes
+        )
         add_depth_noise(depth, self.noise.depth_noise, self._rng_camera)
-        self._frame = CameraFrame(stamp=self._time, width=width, height=height, rgb=rgb, depth=depth,
-                                  segmentation=seg, intrinsics=intr, camera_pose=pose, detections=detections,
-                                  visible_instances=visible)  # fmt: skip
+        self._frame = CameraFrame(
+            stamp=self._time,
+            width=width,
+            height=height,
+            rgb=rgb,
+            depth=depth,
+            segmentation=seg,
+            intrinsics=intr,
+            camera_pose=pose,
+            detections=detections,
+            visible_instances=visible,
+        )
         return self._frame
 
     def robot_pose(self) -> Pose2D:
         """Localisation: the true pose plus Gaussian noise (``noise.pose_noise_xy``, ``pose_noise_yaw``)."""
         r, n = self._base, self.noise
         dx, dy, dyaw = self._rng_pose.normal(0.0, 1.0, size=3)
-        return Pose2D(r.x + dx * n.pose_noise_xy, r.y + dy * n.pose_noise_xy,
-                      wrap_angle(r.yaw + dyaw * n.pose_noise_yaw), self._time)  # fmt: skip
+        return Pose2D(
+            r.x + dx * n.pose_noise_xy,
+            r.y + dy * n.pose_noise_xy,
+            wrap_angle(r.yaw + dyaw * n.pose_noise_yaw),
+            self._time,
+        )
 
     def poll_sounds(self) -> list[SoundEvent]:
         """Sounds since the previous call."""
@@ -227,7 +246,9 @@ class Simulation:
         out: dict[str, float | bool] = {}
         for d in self._world.devices.values():
             v = self._devices[d.name]
-            out[d.name] = v > 0.5 if d.kind == "light" else (self._time < self._ring_until if d.kind == "bell" else v)
+            out[d.name] = (
+                v > 0.5 if d.kind == "light" else (self._time < self._ring_until if d.kind == "bell" else v)
+            )
         return out
 
     # ------------------------------------------------------------------------------------------ navigation
@@ -257,8 +278,9 @@ class Simulation:
         f = self._world.furniture[furniture]
         points = self.approach_points(furniture, near, reach=self._world.robot.reach)
         fx, fy = near if near is not None else f.position
-        return self._base.start_goal(f"furniture {furniture}", points,
-                                     lambda x, y: math.atan2(fy - y, fx - x))  # fmt: skip
+        return self._base.start_goal(
+            f"furniture {furniture}", points, lambda x, y: math.atan2(fy - y, fx - x)
+        )
 
     def navigate_to_person(self, person: str) -> int:
         """Goal to a free pose 0.5-1.0 m from the person (1.1 m if they sit or lie), facing them."""
@@ -284,13 +306,16 @@ class Simulation:
         """Stop and cancel."""
         self._base.stop()
 
-    def approach_points(self, furniture: str, near: Point | None = None, reach: float = PERSON_REACH) -> list[Point]:
+    def approach_points(
+        self, furniture: str, near: Point | None = None, reach: float = PERSON_REACH
+    ) -> list[Point]:
         """Free grid points within ``reach - 0.2`` m of the furniture (and of ``near`` when one qualifies)."""
         f = self._world.furniture[furniture]
         xs, ys, free = self._free_cells()
         c, s = math.cos(f.yaw), math.sin(f.yaw)
-        lx, ly = c * (xs - f.position[0]) + s * (ys - f.position[1]), -s * (xs - f.position[0]) + c * (
-            ys - f.position[1]
+        lx, ly = (
+            c * (xs - f.position[0]) + s * (ys - f.position[1]),
+            -s * (xs - f.position[0]) + c * (ys - f.position[1]),
         )
         dist = np.hypot(np.maximum(np.abs(lx) - f.size[0] / 2, 0), np.maximum(np.abs(ly) - f.size[1] / 2, 0))
         sel = free & (dist <= reach - 0.2)
@@ -391,7 +416,7 @@ class Simulation:
         """Current camera pan in radians."""
         return self._pan
 
-    # ------------------------------------------------------------------------------------------ devices, speech
+    # -------------------------------------------------------------------------------- devices, speech
 
     def set_light(self, device: str, on: bool) -> ActionResult:
         """Switch a light."""
@@ -412,7 +437,9 @@ class Simulation:
     def say(self, text: str) -> None:
         """Record the robot's speech."""
         r = self._base
-        self._spoken.append(Utterance(text=text, speaker=self.robot_name, stamp=self._time, position=(r.x, r.y, 1.0)))
+        self._spoken.append(
+            Utterance(text=text, speaker=self.robot_name, stamp=self._time, position=(r.x, r.y, 1.0))
+        )
 
     def spoken(self) -> list[Utterance]:
         """Everything the robot said."""
@@ -422,8 +449,15 @@ class Simulation:
         """A person says ``text`` now."""
         p = self._person(speaker, "hear")
         words = " ".join("".join(ch for ch in text.lower() if ch.isalnum() or ch in " '_").split())
-        self._heard.append(Utterance(text=words, speaker=speaker, stamp=self._time, audio_path=audio_path,
-                                     position=(p.x, p.y, p.z_base(self._world) + p.height * 0.9)))  # fmt: skip
+        self._heard.append(
+            Utterance(
+                text=words,
+                speaker=speaker,
+                stamp=self._time,
+                audio_path=audio_path,
+                position=(p.x, p.y, p.z_base(self._world) + p.height * 0.9),
+            )
+        )
 
     def escort(self, person: str) -> ActionResult:
         """Ask a person within 2 m to follow."""
@@ -472,8 +506,15 @@ class Simulation:
 
     def ground_truth_facts(self, include_static: bool = False) -> set[tuple[str, ...]]:
         """True facts now (see the protocol)."""
-        facts = ground_truth(self._world, (self._base.x, self._base.y), self._held, self._items,
-                             self._people.people, self._devices, self._time < self._ring_until)  # fmt: skip
+        facts = ground_truth(
+            self._world,
+            (self._base.x, self._base.y),
+            self._held,
+            self._items,
+            self._people.people,
+            self._devices,
+            self._time < self._ring_until,
+        )
         if include_static:
             facts |= self._world.static_facts()
         return facts
@@ -595,7 +636,9 @@ class Simulation:
     def _ring(self) -> None:
         bell = next(d for d in self._world.devices.values() if d.kind == "bell")
         self._ring_until = self._time + RING_SECONDS
-        self._sounds.append(SoundEvent(kind="doorbell", position=bell.position, stamp=self._time, source=bell.name))
+        self._sounds.append(
+            SoundEvent(kind="doorbell", position=bell.position, stamp=self._time, source=bell.name)
+        )
 
     def _check_open(self) -> None:
         if self._closed:

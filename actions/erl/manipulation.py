@@ -20,21 +20,35 @@ import math
 
 from actions.base import ActionStatus
 from actions.erl.common import ErlAction, NavGoal, to_furniture, to_point
-from actions.erl.context import ErlContext, bearing, standoff_points
+from actions.erl.context import ErlContext, FurnitureMap, bearing, furniture_map, standoff_points
 from actions.erl.motion import approach_person
 
 #: metres from a loose item (on no known furniture) at which the robot stops to grasp it
 GRASP_STANDOFF = 0.55
 #: metres a fresh sighting must differ from the target before the robot re-approaches
 MOVED_M = 0.15
+#: metres from the support's footprint beyond which a perceived point is not trusted to choose the approach
+OFF_SUPPORT_M = 0.4
+#: metres (horizontal) within which the robot tries to grasp at once
+REACH_M = 0.85
+#: camera pans (radians) tried on arrival when the item is not seen straight away
+LOOK_PANS = (-0.9, -0.45, 0.0, 0.45, 0.9)
+
+
+def footprint_distance(f: FurnitureMap, x: float, y: float) -> float:
+    """Horizontal distance in metres from ``(x, y)`` to the furniture's footprint (0 on it)."""
+    c, s = math.cos(f.yaw), math.sin(f.yaw)
+    dx, dy = x - f.position[0], y - f.position[1]
+    lx, ly = c * dx + s * dy, -s * dx + c * dy
+    return math.hypot(max(abs(lx) - f.size[0] / 2, 0.0), max(abs(ly) - f.size[1] / 2, 0.0))
 
 
 class PickAction(ErlAction):
     """``(pick ?r ?o ?l)``: approach the perceived item, look at it, grasp it.
 
-    Phases: ``nav`` -> ``look`` (camera on the item until perception re-confirms it, or ``look_timeout_s``)
-    -> grasp (immediate). A grasp refused while a fresh sighting shows the item elsewhere leads to one
-    re-approach.
+    Phases: ``nav`` -> ``look`` (camera on the item, then a little to each side, until perception
+    re-confirms it) -> grasp (immediate). A fresh sighting out of reach, or a refused grasp while a fresh
+    sighting shows the item elsewhere, leads to a re-approach (at most three approaches).
     """
 
     def __init__(self, args: tuple[str, ...], ctx: ErlContext) -> None:
@@ -43,6 +57,8 @@ class PickAction(ErlAction):
         self.nav: NavGoal | None = None
         self.target: tuple[float, float, float] | None = None
         self.attempts = 0
+        self.pans: list[float] = []
+        self.looking_since = ctx.now
 
     def activation(self) -> bool:
         """Start driving to the item's perceived position."""
@@ -57,11 +73,15 @@ class PickAction(ErlAction):
         return True
 
     def _approach(self) -> bool:
+        """Drive within reach of the item: to its support near the perceived point, or to the whole support
+        when the point is off it (a poor far-away estimate), or around the point when on no known support."""
         assert self.target is not None
         x, y, _ = self.target
         support = self._support()
         if support is not None:
-            starts = [to_furniture(self.ctx, support, (x, y))]
+            known = furniture_map(self.ctx.kb, support)
+            near = (x, y) if known is None or footprint_distance(known, x, y) <= OFF_SUPPORT_M else None
+            starts = [to_furniture(self.ctx, support, near)]
         else:
             pose = self.ctx.robot.robot_pose()
             starts = [
@@ -88,28 +108,42 @@ class PickAction(ErlAction):
             if status is not ActionStatus.SUCCEEDED:
                 return self.fail(self.nav.reason) if status is ActionStatus.FAILED else status
             pose = self.ctx.robot.robot_pose()
-            self.ctx.robot.pan_camera(bearing(pose, self.target[0], self.target[1]))
+            self.pans = [bearing(pose, self.target[0], self.target[1]), *LOOK_PANS]
+            self.ctx.robot.pan_camera(self.pans.pop(0))
             self.enter("look")
+            self.looking_since = self.ctx.now
             return ActionStatus.RUNNING
-        if self.ctx.perceived.lost_since(self.item, self.phase_since) or not self.ctx.kb.holds(
+        if self.ctx.perceived.lost_since(self.item, self.looking_since) or not self.ctx.kb.holds(
             "object_at", self.item, self.room
         ):
             return self.fail(f"{self.item} is not where it was believed in {self.room}")
-        fresh = self.ctx.perceived.seen_since(self.item, self.phase_since)
-        if fresh is None and self.in_phase_for() < self.ctx.look_timeout_s:
-            return ActionStatus.RUNNING
+        fresh = self.ctx.perceived.seen_since(self.item, self.looking_since)
+        if fresh is None:
+            if self.in_phase_for() < self.ctx.look_timeout_s / 2:
+                return ActionStatus.RUNNING
+            if self.pans:  # not seen yet: look a little to each side
+                self.ctx.robot.pan_camera(self.pans.pop(0))
+                self.enter("look")
+                return ActionStatus.RUNNING
+        pose = self.ctx.robot.robot_pose()
+        if fresh is not None and self.attempts < 3 and pose.distance_to(*fresh.position[:2]) > REACH_M:
+            self.target = fresh.position
+            return ActionStatus.RUNNING if self._approach() else self.fail(self._nav_reason())
         result = self.ctx.robot.pick(self.item)
         if result.ok and self.ctx.robot.held_item() == self.item:
             return ActionStatus.SUCCEEDED
         if (
             fresh is not None
-            and self.attempts < 2
+            and self.attempts < 3
             and math.dist(fresh.position[:2], self.target[:2]) > MOVED_M
         ):
             self.target = fresh.position
             if self._approach():
                 return ActionStatus.RUNNING
         return self.fail(f"grasping {self.item} failed: {result.reason or 'the gripper is empty'}")
+
+    def _nav_reason(self) -> str:
+        return self.nav.reason if self.nav is not None else f"cannot approach {self.item}"
 
 
 class PlaceAction(ErlAction):

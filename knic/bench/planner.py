@@ -1,4 +1,4 @@
-"""``knic bench planner``: replanning latency against naive re-planning, and the dispatcher's overhead per step.
+"""``knic bench planner``: replanning latency against naive re-planning; dispatch overhead per step.
 
 For each world (small: the seven-room apartment ``worlds/erl_home/erl_home_problem.pddl``; large: a generated
 house with 80 rooms and 200 objects on the same domain) and each kind of change that breaks the running plan
@@ -71,7 +71,11 @@ def generate_house(rooms: int = 80, objects: int = 200, seed: int = 1) -> tuple[
                 init.append(f"(possibly_at {item} {room})")
         else:
             k = rng.randrange(rooms)
-            init += [f"(object_at {item} {names[k]})", f"(object_on {item} {furniture[k]})", f"(found {item})"]
+            init += [
+                f"(object_at {item} {names[k]})",
+                f"(object_on {item} {furniture[k]})",
+                f"(found {item})",
+            ]
     for person in people:
         init.append(f"(person_at {person} {rng.choice(names)})")
     init += [f"(light_off {light})" for light in lights]
@@ -277,7 +281,10 @@ def run(args: argparse.Namespace) -> int:
     out["dispatch_overhead_us_per_step"] = round(_dispatch_overhead(), 3)
     out["speedup_small"] = round(small["naive_ms_median"] / small["replan_ms_median"], 1)
     out["detail"] = {"small": small, **({"large": large} if not args.skip_large else {})}
-    out["worlds"] = {"small": "worlds/erl_home/erl_home_problem.pddl", "large": "generated: 80 rooms, 200 objects"}
+    out["worlds"] = {
+        "small": "worlds/erl_home/erl_home_problem.pddl",
+        "large": "generated: 80 rooms, 200 objects",
+    }
     if args.json:
         print(json.dumps(out, sort_keys=True))
     else:

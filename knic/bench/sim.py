@@ -35,8 +35,14 @@ def run(args: argparse.Namespace) -> int:
         raise WorldError("--duration, --camera-hz, --width and --height must be positive")
     scenario = None if args.scenario == "none" else args.scenario
     build_start = time.perf_counter()
-    sim = Simulation(args.world, seed=args.seed, scenario=scenario, camera_hz=args.camera_hz,
-                     camera_size=(args.width, args.height), render_floor=args.floor)  # fmt: skip
+    sim = Simulation(
+        args.world,
+        seed=args.seed,
+        scenario=scenario,
+        camera_hz=args.camera_hz,
+        camera_size=(args.width, args.height),
+        render_floor=args.floor,
+    )
     build_s = time.perf_counter() - build_start
     rooms = sorted(sim.world.rooms)
     period = 1.0 / args.camera_hz

@@ -29,9 +29,13 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         choices=["auto", "knic", "fast-downward", "tamer"],
         help="planning engine (default: auto, chosen by the problem's features)",
     )
-    parser.add_argument("--timeout", type=float, default=60.0, help="planning time limit in seconds (default 60)")
+    parser.add_argument(
+        "--timeout", type=float, default=60.0, help="planning time limit in seconds (default 60)"
+    )
     parser.add_argument("--json", action="store_true", help="print one JSON object")
-    parser.add_argument("--no-focus", action="store_true", help="plan without object focusing (for comparison)")
+    parser.add_argument(
+        "--no-focus", action="store_true", help="plan without object focusing (for comparison)"
+    )
 
 
 def run(args: argparse.Namespace) -> int:
@@ -47,7 +51,9 @@ def run(args: argparse.Namespace) -> int:
     silence_up()
     kb = KnowledgeBase.from_pddl(args.domain, args.problem)
     task = task_from_kb(kb)
-    planner = TaskPlanner(kb.domain.up_domain, engine=args.engine, timeout=args.timeout, focus=not args.no_focus)
+    planner = TaskPlanner(
+        kb.domain.up_domain, engine=args.engine, timeout=args.timeout, focus=not args.no_focus
+    )
     result = planner.solve(task)
     if result.has_plan and not task.domain.temporal:
         reachable = PlanningTask(task.domain, task.objects, task.facts, result.reachable_goals)

@@ -66,8 +66,11 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
+    import logging
+
     from knic.system import KnicSystem, RunConfig
 
+    logging.getLogger("knic.scheduler").setLevel(logging.ERROR)  # overruns are counted, not printed
     if not args.goal and not args.speech:
         raise KnicError("knic run: give at least one --goal or --speech")
     if args.max_sim_time <= 0:

@@ -16,10 +16,17 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     sub = parser.add_subparsers(dest="world_command", metavar="ACTION", required=True)
     check = sub.add_parser("check", help="validate a world file", description="validate a world file")
     check.add_argument("file", metavar="FILE", help="world name (erl_home, erl_home_paper) or YAML path")
-    check.add_argument("--scenario", action="append", default=[], metavar="NAME_OR_FILE",
-                       help="also validate this scenario against the world (repeatable)")  # fmt: skip
+    check.add_argument(
+        "--scenario",
+        action="append",
+        default=[],
+        metavar="NAME_OR_FILE",
+        help="also validate this scenario against the world (repeatable)",
+    )
     check.add_argument("--json", action="store_true", help="print one JSON object")
-    render = sub.add_parser("render", help="draw a world's map as PNG", description="draw a world's map as PNG")
+    render = sub.add_parser(
+        "render", help="draw a world's map as PNG", description="draw a world's map as PNG"
+    )
     render.add_argument("file", metavar="FILE", help="world name or YAML path")
     render.add_argument("--out", required=True, type=Path, help="PNG file to write")
     render.add_argument("--scale", type=float, default=80.0, help="pixels per metre (default 80)")
@@ -53,7 +60,8 @@ def run(args: argparse.Namespace) -> int:
             print(
                 f"{world.name}: valid: {summary['rooms']} rooms, {summary['doors']} doors, "
                 f"{summary['furniture']} furniture, {summary['items']} items, {summary['people']} people, "
-                f"{summary['devices']} devices" + (f"; scenarios ok: {', '.join(scenarios)}" if scenarios else "")
+                f"{summary['devices']} devices"
+                + (f"; scenarios ok: {', '.join(scenarios)}" if scenarios else "")
             )
         return 0
     from worlds.render import render_map

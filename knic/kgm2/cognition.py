@@ -36,14 +36,15 @@ PERSON_CLASS = "person"
 
 @dataclass
 class TrackingConfig:
-    """Association parameters per kind: radius (metres), misses tolerated, octomap resolution (metres)."""
+    """Association parameters per kind: radius (metres), misses tolerated, octomap resolution (metres), length
+    of the rays cast into entity octomaps (metres, 0: from the sensor)."""
 
     object_radius: float = 0.4
     person_radius: float = 0.8
     object_max_misses: int = 5
     person_max_misses: int = 8
     resolution: float = DEFAULT_RESOLUTION
-    max_range: float = -1.0
+    ray_length: float = 1.0
 
 
 @dataclass
@@ -119,7 +120,7 @@ class CognitiveLayer(Component):
                 radius=cfg.person_radius if person else cfg.object_radius,
                 max_misses=cfg.person_max_misses if person else cfg.object_max_misses,
                 resolution=cfg.resolution,
-                max_range=cfg.max_range,
+                ray_length=cfg.ray_length,
             )
             self.trackers[cls] = found
         return found

@@ -221,8 +221,13 @@ class VolumeSet:
 
     def at_point(self, point: Sequence[float]) -> str | None:
         """The volume containing a world-frame point, or None."""
+        key = tuple(math.floor(float(v) / self.resolution) + KEY_OFFSET for v in point)
         for name, prism in self.prisms.items():
-            if prism.contains_point(point):
+            lo, hi = prism.key_min, prism.key_max
+            if (
+                all(lo[i] <= key[i] <= hi[i] for i in range(3))
+                and prism.mask[key[0] - lo[0], key[1] - lo[1], key[2] - lo[2]]
+            ):
                 return name
         return None
 
@@ -235,7 +240,10 @@ class EntityOctomap:
     first (the entity moved: its old voxels no longer describe it). With ``discretize`` (the default)
     octomap first reduces the cloud to distinct end voxels and casts one ray per voxel (octomap's own
     discretised insertion: a voxel hit by several points of one cloud gets one hit update), which is cheaper
-    for dense depth clouds.
+    for dense depth clouds. Rays are cast over the last ``ray_length`` metres before the entity only (from the
+    point that far from the centroid towards the sensor; 0 or less: from the sensor itself): an entity's own
+    octomap needs the free space around the entity, not along the whole line of sight, and long rays are what
+    insertion costs.
 
     :attr:`keys` mirrors the voxels hit by the latest cloud: one key per point (a voxel hit by several points
     appears several times; intersections count distinct voxels).
@@ -246,13 +254,13 @@ class EntityOctomap:
         resolution: float = DEFAULT_RESOLUTION,
         *,
         reset_distance: float = 0.5,
-        max_range: float = -1.0,
+        ray_length: float = 1.0,
         discretize: bool = True,
     ) -> None:
         self.resolution = resolution
         self.discretize = discretize
+        self.ray_length = ray_length
         self.reset_distance = reset_distance
-        self.max_range = max_range
         self.tree = pyoctomap.OcTree(resolution)
         self.keys: Keys = _EMPTY_KEYS
         self.anchor: npt.NDArray[np.float64] | None = None
@@ -273,13 +281,26 @@ class EntityOctomap:
                 self.tree.updateNodes(points, True)
             else:
                 self.tree.insertPointCloud(
-                    points, np.asarray(origin, dtype=np.float64), self.max_range, False, self.discretize
+                    points, self.ray_origin(centroid, origin), -1.0, False, self.discretize
                 )
             self.keys = keys_of(points, self.resolution)
         else:
             self.keys = keys_of(centroid[None, :], self.resolution)
         self.updates += 1
         return self.keys
+
+    def ray_origin(
+        self, centroid: npt.NDArray[np.float64], origin: Sequence[float]
+    ) -> npt.NDArray[np.float64]:
+        """Where rays start: the sensor, or the point ``ray_length`` metres from the centroid towards it."""
+        sensor = np.asarray(origin, dtype=np.float64)
+        if self.ray_length <= 0:
+            return sensor
+        offset = sensor - centroid
+        distance = math.sqrt(float(offset @ offset))
+        if distance <= self.ray_length:
+            return sensor
+        return np.asarray(centroid + offset * (self.ray_length / distance), dtype=np.float64)
 
     def occupied_at(self, point: Sequence[float]) -> bool:
         """Whether the octree holds an occupied voxel at a world-frame point (reads the tree itself)."""

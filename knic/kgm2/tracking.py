@@ -2,8 +2,10 @@
 
 For every scan (one camera frame) the detections of one class are matched to the class's tracks:
 
-1. a detection that carries an identity (a recognised person, a segmented object with its symbol) updates the
-   track of that symbol wherever it is (a recognised entity that jumped has moved; its octomap restarts);
+1. a detection that carries an identity (a recognised person, an object whose class names one item) updates
+   the track of that symbol wherever it is (a recognised entity that jumped has moved; its octomap restarts);
+   a symbol has at most one track, so only one detection per identity and scan is kept: the one nearest the
+   track;
 2. the others are matched greedily by increasing centroid distance, a pair counting only within the radius
    ``radius`` (metres) and each track and detection used once (lines 2.1.2-2.1.15);
 3. an unmatched detection starts a new track;
@@ -76,7 +78,7 @@ class Tracker:
         max_misses: threshold eta: a track is dropped after more than this many consecutive missed scans.
         gain: weight of the new centroid in the weighted average.
         resolution: octomap resolution of new tracks, metres.
-        max_range: ray-casting range of octomap insertion, metres (-1 unlimited).
+        ray_length: metres of each ray cast into a track's octomap (see :class:`EntityOctomap`).
     """
 
     def __init__(
@@ -87,7 +89,7 @@ class Tracker:
         max_misses: int = 5,
         gain: float = 0.8,
         resolution: float = DEFAULT_RESOLUTION,
-        max_range: float = -1.0,
+        ray_length: float = 1.0,
     ) -> None:
         if radius <= 0 or max_misses < 0 or not 0 < gain <= 1:
             raise InferenceError(f"tracker {cls}: radius > 0, max_misses >= 0 and 0 < gain <= 1 required")
@@ -96,9 +98,10 @@ class Tracker:
         self.max_misses = max_misses
         self.gain = gain
         self.resolution = resolution
-        self.max_range = max_range
+        self.ray_length = ray_length
         self.tracks: dict[int, Track] = {}
         self._by_symbol: dict[str, Track] = {}
+        self.duplicates = 0
 
     def by_symbol(self, symbol: str) -> Track | None:
         """The live track of a symbol, if any."""
@@ -111,9 +114,9 @@ class Tracker:
         result = Association()
         used: set[int] = set()
         pending: list[LLKU] = []
-        for det in detections:
+        for det in self._one_per_identity(detections):
             track = self.by_symbol(det.identity) if det.identity else None
-            if track is not None and track.track_id not in used:
+            if track is not None:
                 self._update(track, det, now)
                 used.add(track.track_id)
                 result.updated.append((track, det))
@@ -150,6 +153,32 @@ class Tracker:
         self._count_misses(used, visible, result)
         return result
 
+    def _one_per_identity(self, detections: Sequence[LLKU]) -> list[LLKU]:
+        """Keep one detection per identity: the one nearest the symbol's track (else the most confident).
+
+        A symbol names one individual, so it has at most one track; a second detection with the same identity
+        in one scan is a false positive or a confusion and is discarded (counted in :attr:`duplicates`).
+        """
+        best: dict[str, LLKU] = {}
+        out: list[LLKU] = []
+        for det in detections:
+            if det.identity is None:
+                out.append(det)
+                continue
+            other = best.get(det.identity)
+            if other is None:
+                best[det.identity] = det
+                continue
+            self.duplicates += 1
+            track = self._by_symbol.get(det.identity)
+            if track is not None:
+                closer = math.dist(det.position, track.centroid) < math.dist(other.position, track.centroid)
+            else:
+                closer = det.confidence > other.confidence
+            if closer:
+                best[det.identity] = det
+        return out + list(best.values())
+
     def miss_scan(self, visible: Visibility | None) -> list[Track]:
         """A scan that saw nothing of this class: count misses; return the tracks dropped."""
         result = Association()
@@ -180,7 +209,7 @@ class Tracker:
 
     def _create(self, det: LLKU, now: float) -> Track:
         tid = next(_track_ids)
-        octomap = EntityOctomap(self.resolution, reset_distance=self.radius, max_range=self.max_range)
+        octomap = EntityOctomap(self.resolution, reset_distance=self.radius, ray_length=self.ray_length)
         centroid = np.asarray(det.position, dtype=np.float64)
         octomap.update(det.points, centroid, det.sensor_origin)
         track = Track(

@@ -80,6 +80,7 @@ def compile_word_graph(
     exclude_words: Iterable[str] = (),
     fillers: Sequence[str] = (),
     filler_weight: float = 0.1,
+    branch_penalty: bool = True,
 ) -> WordGraph:
     """Compile the grammar's top rule with the vocabulary's phrases into an epsilon-free word graph.
 
@@ -90,6 +91,8 @@ def compile_word_graph(
         exclude_words: words the recogniser cannot pronounce; phrases containing them are left out.
         fillers: filler words for a parallel loop that absorbs speech outside the grammar.
         filler_weight: probability attached to each filler word.
+        branch_penalty: split each state's probability over its transitions (else every command transition
+            has probability 1 and the acoustics alone choose among them).
     """
     excluded = set(exclude_words)
     nfa = _Nfa()
@@ -136,11 +139,12 @@ def compile_word_graph(
         raise TypeError(f"unknown grammar node {node!r}")  # pragma: no cover - the Node union is closed
 
     accept = build(grammar.rule(grammar.top), start)
-    return _remove_epsilons(nfa, start, accept, [f for f in fillers if f not in excluded], filler_weight)
+    fillers = [f for f in fillers if f not in excluded]
+    return _remove_epsilons(nfa, start, accept, fillers, filler_weight, branch_penalty)
 
 
 def _remove_epsilons(
-    nfa: _Nfa, start: int, accept: int, fillers: Sequence[str], filler_weight: float
+    nfa: _Nfa, start: int, accept: int, fillers: Sequence[str], filler_weight: float, branch_penalty: bool
 ) -> WordGraph:
     closures: dict[int, set[int]] = {}
 
@@ -180,7 +184,8 @@ def _remove_epsilons(
     for src, _, _ in edges:
         degree[src] = degree.get(src, 0) + 1
     for src, dst, word in edges:
-        transitions.append((src, final if dst == -1 else dst, 1.0 / degree[src], word))
+        probability = 1.0 / degree[src] if branch_penalty else 1.0
+        transitions.append((src, final if dst == -1 else dst, probability, word))
     if fillers:
         loop = num_states
         num_states += 1

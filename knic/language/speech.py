@@ -190,7 +190,14 @@ class Recognizer:
         LanguageError: pocketsphinx is missing or refuses the generated grammar.
     """
 
-    def __init__(self, grammar: Grammar, vocabulary: Vocabulary, *, filler_weight: float = 0.1):
+    def __init__(
+        self,
+        grammar: Grammar,
+        vocabulary: Vocabulary,
+        *,
+        filler_weight: float = 0.1,
+        branch_penalty: bool = True,
+    ):
         try:
             from pocketsphinx import Decoder, set_loglevel
         except ImportError as exc:  # pragma: no cover - pocketsphinx is a declared dependency
@@ -206,7 +213,12 @@ class Recognizer:
         self.jsgf = to_jsgf(grammar, vocabulary, garbage=fillers, exclude_words=self.unknown_words)
         #: the grammar as the epsilon-free word graph the decoder searches.
         self.graph = compile_word_graph(
-            grammar, vocabulary, exclude_words=self.unknown_words, fillers=fillers, filler_weight=filler_weight
+            grammar,
+            vocabulary,
+            exclude_words=self.unknown_words,
+            fillers=fillers,
+            filler_weight=filler_weight,
+            branch_penalty=branch_penalty,
         )
         with tempfile.TemporaryDirectory(prefix="knic-fsg-") as tmp:
             fsg_path = Path(tmp) / "command.fsg"

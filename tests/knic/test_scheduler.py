@@ -29,7 +29,7 @@ def test_components_run_at_their_own_rates_in_registration_order() -> None:
     assert fast == pytest.approx([i / 10 for i in range(11)])
     assert slow == pytest.approx([0.0, 0.5, 1.0])
     assert log[:2] == [("fast", 0.0), ("slow", 0.0)]
-    assert sched.events == []
+    assert list(sched.events) == []
 
 
 def test_slow_step_is_reported_against_the_scaled_budget() -> None:
@@ -41,9 +41,10 @@ def test_slow_step_is_reported_against_the_scaled_budget() -> None:
     sched.tick(0.0)
     sched.tick(0.2)
     assert [(e.kind, e.component) for e in sched.events] == [("slow_step", "vision")]
+    assert isinstance(sched.events[0], SchedulerEvent)
     assert sched.events[0].budget_s == pytest.approx(0.02)
     assert sched.events[0].wall_s == pytest.approx(0.03)
-    assert seen == sched.events
+    assert seen == list(sched.events)
     assert sched.stats()["vision"].steps == 2 and sched.stats()["vision"].slow_steps == 1
 
 
@@ -56,6 +57,15 @@ def test_falling_behind_is_reported_and_missed_periods_are_skipped() -> None:
     sched.tick(1.05)  # not due yet: the next due time is 1.1, not a burst of catch-up steps
     assert [t for _, t in log] == [0.0, 1.0]
     assert [(e.kind, e.missed) for e in sched.events] == [("behind", 9)]
+
+
+def test_a_late_first_tick_is_not_an_overrun() -> None:
+    log: list[tuple[str, float]] = []
+    sched = Scheduler()
+    sched.add(Recorder("kp", 10.0, log))
+    sched.tick(0.1)  # the loop's first tick comes after its first simulation step
+    sched.tick(0.2)
+    assert [t for _, t in log] == [0.1, 0.2] and list(sched.events) == []
 
 
 def test_steps_never_overlap() -> None:
@@ -87,3 +97,15 @@ def test_quiet_shutdown_and_bad_registrations() -> None:
     assert sched.remove("a") and not sched.remove("a")
     sched.tick(5.0)
     assert log == [("a", 0.0)] and sched.next_due() is None
+
+
+def test_overrun_warnings_are_rate_limited_but_every_event_is_kept(caplog: pytest.LogCaptureFixture) -> None:
+    ticks = iter(float(i) for i in range(100))  # every step takes one wall second
+    sched = Scheduler(wall_clock=lambda: next(ticks), warn_interval_s=10.0)
+    sched.add(Recorder("slow", 1.0, []))
+    with caplog.at_level("WARNING", logger="knic.scheduler"):
+        for t in range(12):
+            sched.tick(float(t))
+    assert len(sched.events) == 12 and sched.stats()["slow"].slow_steps == 12
+    warnings = [r.getMessage() for r in caplog.records]
+    assert len(warnings) == 2 and "9 more since the previous warning" in warnings[1]

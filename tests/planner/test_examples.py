@@ -32,7 +32,7 @@ def test_known_plans_agree_with_unified_planning_validator(ex: Example) -> None:
 
 @pytest.mark.parametrize("ex", examples(), ids=IDS)
 def test_in_process_planner_solves_each_example_as_expected(ex: Example) -> None:
-    up_domain, up_problem, task = ex.load()
+    up_domain, _, task = ex.load()
     result = TaskPlanner(up_domain, engine="knic").solve(task)
     expected = {"yes": PlanStatus.SOLVED, "partial": PlanStatus.PARTIAL, "no": PlanStatus.UNSOLVABLE}
     assert result.status == expected[ex.solvable]

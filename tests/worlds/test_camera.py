@@ -93,3 +93,11 @@ def test_camera_rate_caches_frames(make_sim: Callable[..., Simulation]) -> None:
     assert sim.camera_frame() is first
     sim.step(0.05)
     assert sim.camera_frame().stamp == pytest.approx(0.1)
+
+
+def test_simulation_satisfies_the_api_protocol(make_sim: Callable[..., Simulation]) -> None:
+    from worlds.api import SimulationAPI
+
+    sim: SimulationAPI = make_sim(world_from_dict(TWO_ROOMS, file="two_rooms.yaml"))
+    assert isinstance(sim, SimulationAPI)
+    assert sim.robot_name == "r2d2" and sim.time == 0.0

@@ -19,8 +19,9 @@ def test_check_prints_a_summary(capsys: pytest.CaptureFixture[str]) -> None:
     assert out["valid"] and out["rooms"] == 7 and out["doors"] == 8 and out["scenarios"] == ["visitors"]
 
 
-def test_check_rejects_an_invalid_file(tmp_path: Path, doc: dict[str, Any],
-                                       capsys: pytest.CaptureFixture[str]) -> None:  # fmt: skip
+def test_check_rejects_an_invalid_file(
+    tmp_path: Path, doc: dict[str, Any], capsys: pytest.CaptureFixture[str]
+) -> None:
     doc["items"][0]["furniture"] = "fridge"
     bad = tmp_path / "bad_world.yaml"
     bad.write_text(yaml.safe_dump(doc))

@@ -53,6 +53,8 @@ def test_navigation_waits_for_people_rather_than_hitting_them(make_sim: Callable
     while sim.time < 150:
         sim.step(0.5)
         if sim.nav_status().state is not NavState.ACTIVE:
-            sim.navigate_to_room("entrance_hall" if sim.nav_status().target.endswith("living_room") else "living_room")
+            sim.navigate_to_room(
+                "entrance_hall" if sim.nav_status().target.endswith("living_room") else "living_room"
+            )
     assert sim.counters().person_hits == 0
     assert sim.counters().bumps == 0

@@ -20,15 +20,17 @@ def record(make_sim: Callable[..., Simulation], seed: int) -> list[Any]:
             goal += 1
         sim.step(0.5)
         frame = sim.camera_frame()
-        trace.append((
-            sim.time,
-            sim.robot_pose(),
-            sorted(sim.ground_truth_facts()),
-            [(d.label, d.identity, d.confidence, int(d.mask.sum())) for d in frame.detections],
-            float(frame.depth[frame.depth < 1e9].sum()),
-            sim.poll_sounds(),
-            sim.poll_utterances(),
-        ))  # fmt: skip
+        trace.append(
+            (
+                sim.time,
+                sim.robot_pose(),
+                sorted(sim.ground_truth_facts()),
+                [(d.label, d.identity, d.confidence, int(d.mask.sum())) for d in frame.detections],
+                float(frame.depth[frame.depth < 1e9].sum()),
+                sim.poll_sounds(),
+                sim.poll_utterances(),
+            )
+        )
     return trace
 
 

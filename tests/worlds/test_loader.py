@@ -1,4 +1,5 @@
-"""World files: the shipped worlds hold the shared symbols; invalid worlds are rejected with a clear message."""
+"""World files: the shipped worlds hold the shared symbols; invalid worlds are rejected with a clear
+message."""
 
 from __future__ import annotations
 
@@ -14,19 +15,53 @@ from worlds.model import World
 
 ROOMS = {"entrance_hall", "hallway", "living_room", "dining_room", "kitchen", "bedroom", "bathroom"}
 FURNITURE = {
-    "kitchen_counter", "kitchen_table", "kitchen_cabinet", "bin", "dining_table", "coffee_table", "side_table",
-    "tv_table", "bookshelf", "sofa", "armchair", "bed", "bedside_table", "closet", "bathroom_drawer", "plant",
+    "kitchen_counter",
+    "kitchen_table",
+    "kitchen_cabinet",
+    "bin",
+    "dining_table",
+    "coffee_table",
+    "side_table",
+    "tv_table",
+    "bookshelf",
+    "sofa",
+    "armchair",
+    "bed",
+    "bedside_table",
+    "closet",
+    "bathroom_drawer",
+    "plant",
     "entrance_shelf",
-}  # fmt: skip
+}
 ITEMS = {
-    "glasses", "mug", "cup", "glass", "coke_can", "water", "juice", "apple", "lemon", "candle", "cardboard_box",
-    "remote", "tablet", "sponge", "soap", "tissues",
-}  # fmt: skip
+    "glasses",
+    "mug",
+    "cup",
+    "glass",
+    "coke_can",
+    "water",
+    "juice",
+    "apple",
+    "lemon",
+    "candle",
+    "cardboard_box",
+    "remote",
+    "tablet",
+    "sponge",
+    "soap",
+    "tissues",
+}
 CONNECTED = {
     frozenset(p)
-    for p in [("entrance_hall", "hallway"), ("hallway", "living_room"), ("hallway", "kitchen"),
-              ("hallway", "bedroom"), ("hallway", "bathroom"), ("living_room", "dining_room"),
-              ("dining_room", "kitchen")]  # fmt: skip
+    for p in [
+        ("entrance_hall", "hallway"),
+        ("hallway", "living_room"),
+        ("hallway", "kitchen"),
+        ("hallway", "bedroom"),
+        ("hallway", "bathroom"),
+        ("living_room", "dining_room"),
+        ("dining_room", "kitchen"),
+    ]
 }
 
 
@@ -38,8 +73,14 @@ def test_erl_home_has_the_shared_symbols(erl_world: World) -> None:
     assert set(w.people) == {"annie", "tracy", "jack"}
     assert w.robot.name == "r2d2"
     kinds = {d.name: d.kind for d in w.devices.values()}
-    assert kinds == {"bedroom_left_light": "light", "bedroom_right_light": "light", "hallway_light": "light",
-                     "living_room_dimmer": "dimmer", "bedroom_blinds": "blinds", "door_bell": "bell"}  # fmt: skip
+    assert kinds == {
+        "bedroom_left_light": "light",
+        "bedroom_right_light": "light",
+        "hallway_light": "light",
+        "living_room_dimmer": "dimmer",
+        "bedroom_blinds": "blinds",
+        "door_bell": "bell",
+    }
     assert {frozenset(p) for p in w.connected()} == CONNECTED
     assert w.people["annie"].on in ("bed", "sofa")
     assert w.room_of(*w.robot.start[:2]) == "entrance_hall"
@@ -52,8 +93,13 @@ def test_paper_world(erl_world: World) -> None:
     w = load_world("erl_home_paper")
     assert set(w.rooms) == {"kitchen", "bedroom", "entrance", "living_room"}
     assert {frozenset(p) for p in w.connected()} == {
-        frozenset(p) for p in [("bedroom", "kitchen"), ("kitchen", "entrance"), ("entrance", "living_room"),
-                               ("living_room", "bedroom")]  # fmt: skip
+        frozenset(p)
+        for p in [
+            ("bedroom", "kitchen"),
+            ("kitchen", "entrance"),
+            ("entrance", "living_room"),
+            ("living_room", "bedroom"),
+        ]
     }
     assert w.room_of(*w.robot.start[:2]) == "bedroom"
     assert w.room_of(*w.people["annie"].position) == "bedroom"

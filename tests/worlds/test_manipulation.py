@@ -21,8 +21,11 @@ def about(sim: Simulation, item: str) -> set[tuple[str, ...]]:
 
 def test_pick_and_place(make_sim: Callable[..., Simulation]) -> None:
     sim = make_sim("erl_home")
-    assert about(sim, "glasses") == {("object_at", "glasses", "kitchen"), ("object_on", "glasses", "kitchen_table"),
-                                     ("hand_empty", "r2d2")}  # fmt: skip
+    assert about(sim, "glasses") == {
+        ("object_at", "glasses", "kitchen"),
+        ("object_on", "glasses", "kitchen_table"),
+        ("hand_empty", "r2d2"),
+    }
     far = sim.pick("glasses")
     assert not far.ok and "reach" in far.reason
     glasses = sim.true_pose("glasses").position
@@ -35,8 +38,11 @@ def test_pick_and_place(make_sim: Callable[..., Simulation]) -> None:
     assert not busy.ok and "not empty" in busy.reason
     sim.step(1.0)
     assert sim.place("kitchen_table").ok
-    assert about(sim, "glasses") == {("object_at", "glasses", "kitchen"), ("object_on", "glasses", "kitchen_table"),
-                                     ("hand_empty", "r2d2")}  # fmt: skip
+    assert about(sim, "glasses") == {
+        ("object_at", "glasses", "kitchen"),
+        ("object_on", "glasses", "kitchen_table"),
+        ("hand_empty", "r2d2"),
+    }
     far_place = sim.place("bed")
     assert not far_place.ok and "hand is empty" in far_place.reason
 
@@ -79,8 +85,12 @@ def test_devices(make_sim: Callable[..., Simulation]) -> None:
     assert sim.set_level("bedroom_blinds", 70).ok
     assert not sim.set_light("living_room_dimmer", True).ok
     facts = sim.ground_truth_facts()
-    assert {("light_on", "bedroom_left_light"), ("light_off", "bedroom_right_light"),
-            ("device_level", "living_room_dimmer", "l50"), ("device_level", "bedroom_blinds", "l75")} <= facts  # fmt: skip
+    assert {
+        ("light_on", "bedroom_left_light"),
+        ("light_off", "bedroom_right_light"),
+        ("device_level", "living_room_dimmer", "l50"),
+        ("device_level", "bedroom_blinds", "l75"),
+    } <= facts
     assert ("light_off", "bedroom_left_light") not in facts
     states = sim.device_states()
     assert states["bedroom_left_light"] is True and states["living_room_dimmer"] == 60.0

@@ -76,11 +76,16 @@ def test_random_placement_follows_the_seed(make_sim: Callable[..., Simulation]) 
 
 def test_invalid_scenarios_are_rejected(erl_world: World, tmp_path: Path) -> None:
     with pytest.raises(WorldError, match=r"bad.yaml: events\[0\]: unknown person 'nick'"):
-        scenario_from_dict({"name": "x", "events": [{"at": 1, "type": "say", "person": "nick", "text": "hi"}]},
-                           erl_world, file="bad.yaml")  # fmt: skip
+        scenario_from_dict(
+            {"name": "x", "events": [{"at": 1, "type": "say", "person": "nick", "text": "hi"}]},
+            erl_world,
+            file="bad.yaml",
+        )
     with pytest.raises(WorldError, match=r"events\[0\]: missing field 'to' for a move_object event"):
-        scenario_from_dict({"name": "x", "events": [{"at": 1, "type": "move_object", "person": "tracy",
-                                                     "item": "mug"}]}, erl_world)  # fmt: skip
+        scenario_from_dict(
+            {"name": "x", "events": [{"at": 1, "type": "move_object", "person": "tracy", "item": "mug"}]},
+            erl_world,
+        )
     with pytest.raises(WorldError, match="unknown scenario 'nope'"):
         load_scenario("nope", erl_world)
 

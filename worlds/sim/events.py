@@ -75,7 +75,10 @@ def _front_door(sim: Simulation) -> tuple[Point, Point]:
     door = next((d for d in w.doors if len(d.rooms) == 1), None)
     if door is None:  # no front door: visitors appear at the bell
         bell = next(d for d in w.devices.values() if d.kind == "bell")
-        p = sim.grid.nearest_free(bell.position[0], bell.position[1], 1.5) or (bell.position[0], bell.position[1])
+        p = sim.grid.nearest_free(bell.position[0], bell.position[1], 1.5) or (
+            bell.position[0],
+            bell.position[1],
+        )
         return p, p
     room = w.rooms[door.rooms[0]]
     cx, cy = room.centroid

@@ -67,9 +67,7 @@ def fall_step(world: World, it: ItemState, dt: float) -> bool:
     return False
 
 
-def free_spots(
-    f: Furniture, item: ItemState, others: list[ItemState], step: float = 0.05
-) -> list[Point]:
+def free_spots(f: Furniture, item: ItemState, others: list[ItemState], step: float = 0.05) -> list[Point]:
     """Points on the furniture top where ``item`` fits without touching the items already there."""
     hx = f.size[0] / 2 - max(item.size[0], item.size[1]) / 2 - 0.03
     hy = f.size[1] / 2 - max(item.size[0], item.size[1]) / 2 - 0.03

@@ -1,7 +1,9 @@
 """People in the apartment: where they are and what they do (walk, sit, carry an object, follow the robot).
 
-Each person runs a queue of small tasks (walk to points, sit on furniture, take or put an item, wait) filled by
-scenario events, by their behaviour (``wander``) or by the robot (escorting). People walk on the same grid map as
+Each person runs a queue of small tasks (walk to points, sit on furniture, take or put an item, wait)
+filled by
+scenario events, by their behaviour (``wander``) or by the robot (escorting). People walk on the same
+grid map as
 the robot at a fixed speed, yield to the robot (they wait rather than walk into it), and are kinematic.
 """
 
@@ -85,14 +87,20 @@ class PeopleController:
         self.grid = grid
         self.hooks = hooks
         self.rng = rng
-        self.people: dict[str, PersonState] = {
-            p.name: self._initial(p) for p in world.people.values()
-        }
+        self.people: dict[str, PersonState] = {p.name: self._initial(p) for p in world.people.values()}
 
     @staticmethod
     def _initial(p: Person) -> PersonState:
-        return PersonState(name=p.name, radius=p.radius, height=p.height, x=p.position[0], y=p.position[1],
-                           behaviour=p.behaviour, present=p.present, on=p.on)  # fmt: skip
+        return PersonState(
+            name=p.name,
+            radius=p.radius,
+            height=p.height,
+            x=p.position[0],
+            y=p.position[1],
+            behaviour=p.behaviour,
+            present=p.present,
+            on=p.on,
+        )
 
     def discs(self) -> list[tuple[str, float, float, float]]:
         """``(name, x, y, radius)`` of the people present and standing (not on furniture)."""
@@ -110,7 +118,8 @@ class PeopleController:
         self.people[name].tasks.append(("sit", furniture))
 
     def enqueue(self, name: str, task: str, arg: Any) -> None:
-        """Queue a raw task: ``appear`` (x, y), ``straight`` (x, y), ``take`` item, ``put`` furniture, ``wait`` s."""
+        """Queue a raw task: ``appear`` (x, y), ``straight`` (x, y), ``take`` item, ``put`` furniture,
+        ``wait`` s."""
         self.people[name].tasks.append((task, arg))
 
     def teleport(self, name: str, x: float, y: float, on: str | None = None) -> None:
@@ -133,7 +142,9 @@ class PeopleController:
             if now < p.wait_until:
                 continue
             if not p.tasks and p.behaviour == "wander" and p.on is None:
-                room = self.world.rooms[sorted(self.world.rooms)[int(self.rng.integers(len(self.world.rooms)))]]
+                room = self.world.rooms[
+                    sorted(self.world.rooms)[int(self.rng.integers(len(self.world.rooms)))]
+                ]
                 self.go_to(p.name, [room.waypoint])
                 p.tasks.append(("wait", float(self.rng.uniform(5.0, 20.0))))
             if p.tasks:
@@ -165,7 +176,9 @@ class PeopleController:
                 self._stand_up(p)
             if not p.path or p.blocked_for > 2.0:
                 rx, ry, rr = robot
-                around = self.grid.with_discs([(rx, ry, rr + p.radius + 0.1)]) if p.blocked_for > 2.0 else None
+                around = (
+                    self.grid.with_discs([(rx, ry, rr + p.radius + 0.1)]) if p.blocked_for > 2.0 else None
+                )
                 p.blocked_for = 0.0
                 path = self.grid.plan((p.x, p.y), arg, around)
                 if path is None:  # nowhere to go: give the task up
@@ -187,7 +200,9 @@ class PeopleController:
             p.x, p.y = min(spot, key=lambda q: math.hypot(q[0] - p.x, q[1] - p.y))
         p.on = None
 
-    def _walk_towards(self, p: PersonState, target: Point, dt: float, robot: tuple[float, float, float]) -> bool:
+    def _walk_towards(
+        self, p: PersonState, target: Point, dt: float, robot: tuple[float, float, float]
+    ) -> bool:
         """One step towards ``target``; True when reached. Waits when the robot is in the way."""
         dx, dy = target[0] - p.x, target[1] - p.y
         dist = math.hypot(dx, dy)

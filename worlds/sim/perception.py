@@ -1,8 +1,10 @@
 """Simulated object and person detector: turns a rendered segmentation into noisy :class:`Detection` s.
 
 The detector sees what the renderer saw (field of view and occlusion are real) and then applies the configured
-:class:`NoiseConfig`: misses, label confusion, unrecognised people, spurious detections, depth noise. All random
-draws come from the generator handed in, in a fixed order (instances sorted by name), so runs are reproducible.
+:class:`NoiseConfig`: misses, label confusion, unrecognised people, spurious detections, depth noise.
+All random
+draws come from the generator handed in, in a fixed order (instances sorted by name), so runs are
+reproducible.
 """
 
 from __future__ import annotations
@@ -77,8 +79,14 @@ def detect(
                 label = options[int(rng.integers(len(options)))]
         conf = lo + (hi - lo) * min(1.0, count / 300.0) * float(rng.uniform(0.85, 1.0))
         detections.append(
-            Detection(label=label, confidence=round(conf, 4), mask=segmentation == body, identity=identity,
-                      segmentation_id=body, true_instance=name)  # fmt: skip
+            Detection(
+                label=label,
+                confidence=round(conf, 4),
+                mask=segmentation == body,
+                identity=identity,
+                segmentation_id=body,
+                true_instance=name,
+            )
         )
     if item_classes and rng.random() < noise.false_positive_rate:
         fp = _false_positive(depth, rng, item_classes, lo, hi)

@@ -3,7 +3,8 @@
 The base is kinematic: every control period its pose is set from the commanded velocities (no dynamics), which
 keeps runs fast and exactly reproducible. Navigation goals are planned on the :class:`GridMap` and followed
 with a rotate-then-drive controller; people in the way make the robot wait and, after a while, replan around
-them; a goal fails with ``"path blocked"`` when no way around exists, ``"no path"`` when the goal is unreachable.
+them; a goal fails with ``"path blocked"`` when no way around exists, ``"no path"`` when the goal is
+unreachable.
 """
 
 from __future__ import annotations
@@ -61,7 +62,9 @@ class BaseController:
         """Status of the latest goal."""
         return self._status
 
-    def start_goal(self, target: str, goals: Sequence[Point], final_yaw: Callable[[float, float], float | None]) -> int:
+    def start_goal(
+        self, target: str, goals: Sequence[Point], final_yaw: Callable[[float, float], float | None]
+    ) -> int:
         """Start a goal to the nearest reachable of ``goals``; preempts an active goal. Returns its id."""
         self._cancel("preempted")
         self.v_cmd = self.w_cmd = 0.0
@@ -101,21 +104,27 @@ class BaseController:
         if g is None:
             return
         goal_pose = Pose2D(g.path[-1][0], g.path[-1][1], self.yaw) if g.path else None
-        self._status = NavStatus(state=state, goal_id=g.goal_id, target=g.target, reason=reason, goal=goal_pose,
-                                 path=tuple(g.path))  # fmt: skip
+        self._status = NavStatus(
+            state=state, goal_id=g.goal_id, target=g.target, reason=reason, goal=goal_pose, path=tuple(g.path)
+        )
         self._goal = None
         self.v_cmd = self.w_cmd = 0.0
 
     # ------------------------------------------------------------------------------------------ control
 
-    def update(self, dt: float, people: Sequence[tuple[str, float, float, float]],
-               is_free: Callable[[float, float], bool]) -> None:  # fmt: skip
+    def update(
+        self,
+        dt: float,
+        people: Sequence[tuple[str, float, float, float]],
+        is_free: Callable[[float, float], bool],
+    ) -> None:
         """Advance one control period of ``dt`` seconds.
 
         Args:
             dt: period in seconds.
             people: ``(name, x, y, radius)`` of people present, to wait for or plan around.
-            is_free: True when the base may stand at a point (used in velocity mode: the base stops at contact).
+            is_free: True when the base may stand at a point (used in velocity mode: the base stops at
+            contact).
         """
         if self._goal is not None:
             self._follow(dt, people)
@@ -146,8 +155,13 @@ class BaseController:
         if path is None:
             return False
         g.path, g.index, g.planned = path, 1, True
-        self._status = NavStatus(state=NavState.ACTIVE, goal_id=g.goal_id, target=g.target,
-                                 goal=Pose2D(path[-1][0], path[-1][1], 0.0), path=tuple(path))  # fmt: skip
+        self._status = NavStatus(
+            state=NavState.ACTIVE,
+            goal_id=g.goal_id,
+            target=g.target,
+            goal=Pose2D(path[-1][0], path[-1][1], 0.0),
+            path=tuple(path),
+        )
         return True
 
     def _follow(self, dt: float, people: Sequence[tuple[str, float, float, float]]) -> None:
@@ -181,7 +195,9 @@ class BaseController:
         ny = self.y + step * math.sin(nyaw)
         if abs(err) < 0.05:  # stay on the straight segment
             nx, ny = self.x + step * (tx - self.x) / dist, self.y + step * (ty - self.y) / dist
-        blocker = next((n for n, px, py, r in people if math.hypot(nx - px, ny - py) < r + s.radius + 0.1), None)
+        blocker = next(
+            (n for n, px, py, r in people if math.hypot(nx - px, ny - py) < r + s.radius + 0.1), None
+        )
         if blocker is not None:
             g.blocked_for += dt
             g.blocked_total += dt

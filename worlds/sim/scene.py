@@ -24,6 +24,8 @@ from worlds.sim.navigation import wall_segments
 WALL_COLOR = (0.92, 0.9, 0.85, 1.0)
 FLOOR_COLOR = (0.75, 0.72, 0.65, 1.0)
 ROBOT_COLOR = (0.85, 0.85, 0.9, 1.0)
+WALL_PIECE = 100.0  # metres; longer walls are split into pieces (one piece renders fastest here)
+HIDDEN_Z = -1000.0  # bodies left out of a picture wait this far below the floor
 
 
 class Scene:
@@ -44,6 +46,8 @@ class Scene:
         self.body_of: dict[str, int] = {}
         self.name_of: dict[int, str] = {}
         self._pose: dict[int, tuple[tuple[float, float, float], float]] = {}
+        self._version = 0  # counts body moves, so an unchanged scene is not rendered twice
+        self._last: tuple[tuple[Any, ...], tuple[Any, ...]] | None = None
         self._build()
 
     def close(self) -> None:
@@ -54,8 +58,13 @@ class Scene:
 
     # ------------------------------------------------------------------------------------------ building
 
-    def _box(self, half: tuple[float, float, float], pos: tuple[float, float, float], yaw: float,
-             color: tuple[float, float, float, float]) -> int:  # fmt: skip
+    def _box(
+        self,
+        half: tuple[float, float, float],
+        pos: tuple[float, float, float],
+        yaw: float,
+        color: tuple[float, float, float, float],
+    ) -> int:
         c = self._client
         vis = c.createVisualShape(pb.GEOM_BOX, halfExtents=half, rgbaColor=color)
         col = c.createCollisionShape(pb.GEOM_BOX, halfExtents=half)
@@ -69,18 +78,27 @@ class Scene:
             )
         )
 
-    def _cylinder(self, radius: float, height: float, pos: tuple[float, float, float],
-                  color: tuple[float, float, float, float]) -> int:  # fmt: skip
+    def _cylinder(
+        self,
+        radius: float,
+        height: float,
+        pos: tuple[float, float, float],
+        color: tuple[float, float, float, float],
+    ) -> int:
         c = self._client
         vis = c.createVisualShape(pb.GEOM_CYLINDER, radius=radius, length=height, rgbaColor=color)
         col = c.createCollisionShape(pb.GEOM_CYLINDER, radius=radius, height=height)
-        return int(c.createMultiBody(baseMass=0, baseCollisionShapeIndex=col, baseVisualShapeIndex=vis,
-                                     basePosition=pos))  # fmt: skip
+        return int(
+            c.createMultiBody(
+                baseMass=0, baseCollisionShapeIndex=col, baseVisualShapeIndex=vis, basePosition=pos
+            )
+        )
 
-    def _wall_mesh(self, a: Point, b: Point, thickness: float, height: float) -> int:
-        """One wall as a mesh body: its two long faces and two end faces, outward facing (no top or bottom).
+    def _wall_mesh(self, a: Point, b: Point, thickness: float, height: float) -> None:
+        """One wall as mesh bodies of at most :data:`WALL_PIECE` metres each, outward-facing faces only.
 
-        Fewer triangles than a box and nothing the robot's camera (below the wall tops) could see is lost.
+        Each piece has its two long faces; the two ends of the wall get end faces; no top or bottom (the
+        camera is below the wall tops). Short pieces let :meth:`render` leave out what is outside the view.
         """
         half = thickness / 2
         length = math.dist(a, b)
@@ -88,15 +106,25 @@ class Scene:
         nx, ny = -uy * half, ux * half
         ax, ay = a[0] - ux * half, a[1] - uy * half
         bx, by = b[0] + ux * half, b[1] + uy * half
-        corners = [(ax + nx, ay + ny), (bx + nx, by + ny), (bx - nx, by - ny), (ax - nx, ay - ny)]
-        verts = [(cx, cy, 0.0) for cx, cy in corners] + [(cx, cy, height) for cx, cy in corners]
-        idx: list[int] = []
-        for i in range(4):  # side face i: bottom i, bottom i+1, top i+1, top i
-            j = (i + 1) % 4
-            idx += [i, 4 + j, j, i, 4 + i, 4 + j]
+        pieces = max(1, math.ceil((length + thickness) / WALL_PIECE))
         c = self._client
-        vis = c.createVisualShape(pb.GEOM_MESH, vertices=verts, indices=idx, rgbaColor=WALL_COLOR)
-        return int(c.createMultiBody(baseMass=0, baseVisualShapeIndex=vis, basePosition=(0, 0, 0)))
+        for k in range(pieces):
+            t0, t1 = k / pieces, (k + 1) / pieces
+            p0 = (ax + (bx - ax) * t0, ay + (by - ay) * t0)
+            p1 = (ax + (bx - ax) * t1, ay + (by - ay) * t1)
+            mid = ((p0[0] + p1[0]) / 2, (p0[1] + p1[1]) / 2)
+            corners = [(p0[0] + nx, p0[1] + ny), (p1[0] + nx, p1[1] + ny), (p1[0] - nx, p1[1] - ny),
+                       (p0[0] - nx, p0[1] - ny)]  # fmt: skip
+            local = [(x - mid[0], y - mid[1]) for x, y in corners]
+            verts = [(x, y, 0.0) for x, y in local] + [(x, y, height) for x, y in local]
+            faces = [0, 2] + ([3] if k == 0 else []) + ([1] if k == pieces - 1 else [])
+            idx: list[int] = []
+            for i in faces:  # side face i: bottom i, bottom i+1, top i+1, top i
+                j = (i + 1) % 4
+                idx += [i, 4 + j, j, i, 4 + i, 4 + j]
+            vis = c.createVisualShape(pb.GEOM_MESH, vertices=verts, indices=idx, rgbaColor=WALL_COLOR)
+            body = int(c.createMultiBody(baseMass=0, baseVisualShapeIndex=vis, basePosition=(mid[0], mid[1], 0)))
+            self._pose[body] = ((mid[0], mid[1], 0.0), 0.0)
 
     def _register(self, name: str, body: int) -> None:
         self.body_of[name] = body
@@ -110,8 +138,9 @@ class Scene:
         c = self._client
         if self.render_floor:
             floor = [(xmin, ymin, 0.0), (xmax, ymin, 0.0), (xmax, ymax, 0.0), (xmin, ymax, 0.0)]
-            vis = c.createVisualShape(pb.GEOM_MESH, vertices=floor, indices=[0, 1, 2, 0, 2, 3],
-                                      rgbaColor=FLOOR_COLOR)  # fmt: skip
+            vis = c.createVisualShape(
+                pb.GEOM_MESH, vertices=floor, indices=[0, 1, 2, 0, 2, 3], rgbaColor=FLOOR_COLOR
+            )
             c.createMultiBody(baseMass=0, baseVisualShapeIndex=vis, basePosition=(0, 0, 0))
         for a, b in wall_segments(w):
             self._wall_mesh(a, b, w.wall_thickness, w.wall_height)
@@ -121,13 +150,15 @@ class Scene:
             self._register(f.name, body)
         for it in w.items.values():
             sx, sy, sz = it.size
-            self._register(it.name, self._box((sx / 2, sy / 2, sz / 2), it.position, 0.0, it.color))
+            body = self._box((sx / 2, sy / 2, sz / 2), it.position, 0.0, it.color)
+            self._register(it.name, body)
         for p in w.people.values():
-            self._register(p.name, self._cylinder(p.radius, p.height, (p.position[0], p.position[1], -50.0),
-                                                  p.color))  # fmt: skip
+            body = self._cylinder(p.radius, p.height, (p.position[0], p.position[1], -50.0), p.color)
+            self._register(p.name, body)
         r = w.robot
-        self._register(r.name, self._cylinder(r.radius, r.height, (r.start[0], r.start[1], r.height / 2),
-                                              ROBOT_COLOR))  # fmt: skip
+        body = self._cylinder(r.radius, r.height, (r.start[0], r.start[1], r.height / 2), ROBOT_COLOR)
+        self._register(r.name, body)
+
 
     # ------------------------------------------------------------------------------------------ moving
 
@@ -137,6 +168,7 @@ class Scene:
         if self._pose.get(body) == (pos, yaw):
             return
         self._pose[body] = (pos, yaw)
+        self._version += 1
         self._place(body, pos, yaw)
 
     def _place(self, body: int, pos: tuple[float, float, float], yaw: float) -> None:
@@ -144,36 +176,59 @@ class Scene:
         c.resetBasePositionAndOrientation(body, pos, c.getQuaternionFromEuler((0, 0, yaw)))
 
     def render(
-        self, eye: tuple[float, float, float], yaw: float, pitch: float, width: int, height: int, fov_deg: float,
-        near: float = 0.1, far: float = 10.0,
-    ) -> tuple[npt.NDArray[np.uint8], npt.NDArray[np.float32], npt.NDArray[np.int32], CameraIntrinsics, Pose3D]:  # fmt: skip
+        self,
+        eye: tuple[float, float, float],
+        yaw: float,
+        pitch: float,
+        width: int,
+        height: int,
+        fov_deg: float,
+        near: float = 0.1,
+        far: float = 10.0,
+        exclude: tuple[str, ...] = (),
+    ) -> tuple[
+        npt.NDArray[np.uint8], npt.NDArray[np.float32], npt.NDArray[np.int32], CameraIntrinsics, Pose3D
+    ]:
         """Render RGB, metric depth and segmentation from a camera at ``eye`` looking along yaw/pitch.
 
-        ``pitch`` is the downward tilt in radians. Depth beyond ``far`` (nothing hit) is ``inf``.
+        ``pitch`` is the downward tilt in radians. Depth beyond ``far`` (nothing hit) is ``inf``. Bodies
+        named in ``exclude`` (the robot carrying the camera) are left out.
         Returns ``(rgb, depth, segmentation, intrinsics, optical-frame pose)``.
         """
         c = self._client
+        key = (eye, yaw, pitch, width, height, fov_deg, near, far, exclude, self._version)
+        if self._last is not None and self._last[0] == key:  # nothing moved: the same picture
+            rgb0, depth0, seg0, intr0, pose0 = self._last[1]
+            return rgb0.copy(), depth0.copy(), seg0.copy(), intr0, pose0
+        hidden = [self.body_of[n] for n in exclude]
+        for body in hidden:
+            (x, y, _), byaw = self._pose[body]
+            self._place(body, (x, y, HIDDEN_Z), byaw)
         fwd = np.array([math.cos(yaw) * math.cos(pitch), math.sin(yaw) * math.cos(pitch), -math.sin(pitch)])
         left = np.array([-math.sin(yaw), math.cos(yaw), 0.0])
         up = np.cross(fwd, left)
         target = np.asarray(eye) + fwd
         view = c.computeViewMatrix(eye, target.tolist(), up.tolist())
         proj = c.computeProjectionMatrixFOV(fov_deg, width / height, near, far)
-        _, _, rgba, zbuf, seg = c.getCameraImage(
-            width, height, view, proj, renderer=pb.ER_TINY_RENDERER
-        )
+        _, _, rgba, zbuf, seg = c.getCameraImage(width, height, view, proj, renderer=pb.ER_TINY_RENDERER)
         rgb = np.asarray(rgba, dtype=np.uint8).reshape(height, width, 4)[:, :, :3].copy()
         z = np.asarray(zbuf, dtype=np.float64).reshape(height, width)
         depth = (far * near / (far - (far - near) * z)).astype(np.float32)
         depth[z >= 1.0 - 1e-7] = np.inf
         segm = np.asarray(seg, dtype=np.int32).reshape(height, width)
+        for body in hidden:
+            self._place(body, *self._pose[body])
         fy = (height / 2) / math.tan(math.radians(fov_deg) / 2)
-        intr = CameraIntrinsics(width=width, height=height, fx=fy, fy=fy, cx=width / 2, cy=height / 2,
-                                near=near, far=far)  # fmt: skip
+        intr = CameraIntrinsics(
+            width=width, height=height, fx=fy, fy=fy, cx=width / 2, cy=height / 2, near=near, far=far
+        )
         # optical frame axes in the world: x right (= -left), y down (= -up), z forward
         rot = np.stack([-left, -up, fwd], axis=1)
-        pose = Pose3D(position=(float(eye[0]), float(eye[1]), float(eye[2])), orientation=_quat_from_matrix(rot))
-        return rgb, depth, segm, intr, pose
+        pose = Pose3D(
+            position=(float(eye[0]), float(eye[1]), float(eye[2])), orientation=_quat_from_matrix(rot)
+        )
+        self._last = (key, (rgb, depth, segm, intr, pose))
+        return rgb.copy(), depth.copy(), segm.copy(), intr, pose
 
 
 class _Client:

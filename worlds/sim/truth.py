@@ -15,7 +15,7 @@ LEVELS = ("l0", "l25", "l50", "l75", "l100")
 
 def level_symbol(percent: float) -> str:
     """The level constant nearest to a percentage (0-100): 0-12.5 -> l0, ... 87.5-100 -> l100."""
-    idx = int(math.floor(max(0.0, min(100.0, percent)) / 25.0 + 0.5))
+    idx = math.floor(max(0.0, min(100.0, percent)) / 25.0 + 0.5)
     return LEVELS[min(idx, 4)]
 
 

@@ -51,3 +51,20 @@ def test_recognised_identity_follows_the_person_and_anonymous_detections_join_ne
     assert [t.symbol for t, _ in anon.updated] == ["jack"]
     stranger = tracker.associate([percept(Kind.PERSON, "person", (0.0, 0.0, 1.0), 1.4)], 1.4)
     assert [t.symbol for t, _ in stranger.created] == [f"person_{stranger.created[0][0].track_id}"]
+
+
+def test_one_track_per_identity_even_with_a_false_positive_of_the_same_class() -> None:
+    tracker = Tracker("glasses", radius=0.4, max_misses=1)
+    tracker.associate([percept(Kind.OBJECT, "glasses", (7.7, 1.5, 0.9), 0.0, identity="glasses")], 0.0)
+    for i in range(1, 6):  # the real glasses and a spurious "glasses" elsewhere in every frame
+        scan = tracker.associate(
+            [
+                percept(Kind.OBJECT, "glasses", (7.5, 1.1, 0.7), i, identity="glasses"),
+                percept(Kind.OBJECT, "glasses", (7.7, 1.5, 0.9), i, identity="glasses"),
+            ],
+            float(i),
+            lambda pts: np.ones(len(pts), dtype=bool),
+        )
+        assert not scan.created and not scan.dropped
+    (track,) = tracker.tracks.values()
+    assert np.allclose(track.centroid, (7.7, 1.5, 0.9), atol=0.05) and tracker.duplicates == 5
