@@ -22,6 +22,7 @@ hidden); the other subscribers of that message are not called.
 
 from __future__ import annotations
 
+import functools
 import itertools
 import re
 from collections import deque
@@ -66,6 +67,7 @@ def check_topic(topic: str) -> tuple[str, ...]:
     return levels
 
 
+@functools.lru_cache(maxsize=4096)
 def topic_level(name: str) -> str:
     """Turn a free name (a symbol, a class label) into a valid topic level (lower case, ``_`` for others)."""
     level = re.sub(r"[^a-z0-9_]", "_", name.lower())

@@ -45,7 +45,7 @@ class ActionError(KnicError):
 
 
 class InferenceError(KnicError):
-    """A knowledge unit, a role file or the inference pipeline's configuration is invalid; nothing was changed."""
+    """A knowledge unit, a role file or the inference pipeline's configuration is invalid; nothing changed."""
 
 
 class LanguageError(KnicError):

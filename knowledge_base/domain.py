@@ -13,6 +13,7 @@ column and what the parser expected; a domain or sidecar that parses but is inco
 
 from __future__ import annotations
 
+import functools
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -83,7 +84,7 @@ def _first_line(exc: BaseException) -> str:
     return text
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, eq=False)
 class DomainModel:
     """A parsed PDDL domain plus its metadata; immutable, shared by a knowledge base and its readers.
 
@@ -99,7 +100,8 @@ class DomainModel:
         text: The domain PDDL text (stored in journals so a reader needs only the journal file).
         meta_text: The sidecar YAML text ("" when there is none).
         source: Where the domain came from (file path or "<journal>"), for messages.
-        up_domain: unified-planning ``Problem`` holding the domain (its objects are the constants).
+        up_domain: unified-planning ``Problem`` holding the domain (its objects are the constants); parsed on
+            first use when the model was rebuilt from a journal's summary.
     """
 
     name: str
@@ -113,8 +115,15 @@ class DomainModel:
     text: str
     meta_text: str
     source: str
-    up_domain: Any = field(repr=False, compare=False)
+    _up: Any = field(repr=False, compare=False, default=None)
     _subtypes: Mapping[str, frozenset[str]] = field(repr=False, compare=False, default_factory=dict)
+
+    @property
+    def up_domain(self) -> Any:
+        """The unified-planning ``Problem`` of the domain alone (constants as its objects)."""
+        if self._up is None:
+            object.__setattr__(self, "_up", parse_with_up(self.text, None, self.source, None))
+        return self._up
 
     # ----------------------------------------------------------------- construction
     @classmethod
@@ -138,7 +147,15 @@ class DomainModel:
     def from_text(
         cls, text: str, meta_text: str = "", *, source: str = "<domain>", meta_source: str = "<meta>"
     ) -> DomainModel:
-        """Build a domain model from PDDL text and sidecar YAML text (see :meth:`from_file`)."""
+        """Build a domain model from PDDL text and sidecar YAML text (see :meth:`from_file`).
+
+        Models are immutable, so the same texts give the same (cached) model: loading one domain many times
+        (tests, tools) parses it once.
+        """
+        return _domain_from_text(text, meta_text, source, meta_source)
+
+    @classmethod
+    def _build(cls, text: str, meta_text: str, source: str, meta_source: str) -> DomainModel:
         problem = parse_with_up(text, None, source, None)
         types: dict[str, str] = {}
         for t in problem.user_types:
@@ -167,9 +184,52 @@ class DomainModel:
             text=text,
             meta_text=meta_text,
             source=source,
-            up_domain=problem,
+            _up=problem,
             _subtypes=subtypes,
         )
+
+    def to_summary(self) -> dict[str, Any]:
+        """The parsed symbols as JSON-able data (stored in journals so readers need not run the PDDL parser)."""
+        return {
+            "name": self.name,
+            "types": dict(self.types),
+            "predicates": {k: [list(p) for p in v] for k, v in self.predicates.items()},
+            "constants": dict(self.constants),
+            "functions": {k: [list(p) for p in v] for k, v in self.functions.items()},
+            "actions": list(self.actions),
+        }
+
+    @classmethod
+    def from_summary(
+        cls, summary: Mapping[str, Any], text: str, meta_text: str = "", *, source: str = "<journal>"
+    ) -> DomainModel:
+        """Rebuild a model from :meth:`to_summary` data and the texts, without parsing the PDDL again.
+
+        Raises:
+            PDDLValidationError: the summary is malformed or the sidecar does not fit it.
+        """
+        try:
+            predicates = {k: tuple((p, t) for p, t in v) for k, v in summary["predicates"].items()}
+            functions = {k: tuple((p, t) for p, t in v) for k, v in summary["functions"].items()}
+            types = dict(summary["types"])
+            actions = tuple(summary["actions"])
+            single_valued, sensing = _parse_meta(meta_text, f"{source}:meta", predicates, actions)
+            return cls(
+                name=str(summary["name"]),
+                types=types,
+                predicates=predicates,
+                constants=dict(summary["constants"]),
+                functions=functions,
+                actions=actions,
+                single_valued=single_valued,
+                sensing=sensing,
+                text=text,
+                meta_text=meta_text,
+                source=source,
+                _subtypes=_subtype_closure(types),
+            )
+        except (KeyError, TypeError, ValueError) as exc:
+            raise PDDLValidationError(f"{source}: malformed domain summary ({exc})") from None
 
     # ----------------------------------------------------------------- queries
     def is_type(self, name: str) -> bool:
@@ -188,6 +248,11 @@ class DomainModel:
         """Parameters of a predicate or function, or None if neither exists."""
         sig = self.predicates.get(name)
         return sig if sig is not None else self.functions.get(name)
+
+
+@functools.lru_cache(maxsize=16)
+def _domain_from_text(text: str, meta_text: str, source: str, meta_source: str) -> DomainModel:
+    return DomainModel._build(text, meta_text, source, meta_source)
 
 
 def _subtype_closure(types: Mapping[str, str]) -> dict[str, frozenset[str]]:

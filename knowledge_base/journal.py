@@ -85,7 +85,8 @@ class Journal:
             self._last_checkpoint = changes[-1].seq
 
     def _checkpoint_due(self, seq: int, state: State) -> bool:
-        interval = max(CHECKPOINT_MIN_EVENTS, len(state.facts) + len(state.instances))
+        # Replaying the events since a checkpoint should cost about as much as loading the checkpoint.
+        interval = max(CHECKPOINT_MIN_EVENTS, (len(state.facts) + len(state.instances)) // 2)
         return seq - self._last_checkpoint >= interval
 
     def _note_times(self, times: Iterable[float]) -> None:
@@ -141,6 +142,7 @@ class SqliteJournal(Journal):
         base: State before the first event (domain constants).
         domain_text: Domain PDDL stored in a new journal (ignored when opening an existing one).
         meta_text: Domain sidecar YAML stored with it.
+        domain_summary: JSON of ``DomainModel.to_summary()`` stored with it (readers skip the PDDL parser).
         read_only: Open an existing journal for reading only (another process may be writing it).
 
     Raises:
@@ -154,6 +156,7 @@ class SqliteJournal(Journal):
         *,
         domain_text: str = "",
         meta_text: str = "",
+        domain_summary: str = "",
         read_only: bool = False,
     ) -> None:
         super().__init__(base)
@@ -168,7 +171,7 @@ class SqliteJournal(Journal):
                 self._db = sqlite3.connect(self.path, isolation_level=None)
                 self._db.execute("PRAGMA journal_mode=WAL")
                 self._db.execute("PRAGMA synchronous=NORMAL")
-                self._create(domain_text, meta_text)
+                self._create(domain_text, meta_text, domain_summary)
             self.meta = dict(self._db.execute("SELECT key, value FROM meta").fetchall())
         except sqlite3.DatabaseError as exc:
             raise JournalError(f"{self.path}: not a readable KnIC journal ({exc})") from None
@@ -198,7 +201,7 @@ class SqliteJournal(Journal):
         except sqlite3.DatabaseError as exc:
             raise JournalError(f"{p}: not a readable KnIC journal ({exc})") from None
 
-    def _create(self, domain_text: str, meta_text: str) -> None:
+    def _create(self, domain_text: str, meta_text: str, domain_summary: str) -> None:
         db = self._db
         db.execute("BEGIN IMMEDIATE")
         db.execute("CREATE TABLE IF NOT EXISTS meta (key TEXT PRIMARY KEY, value TEXT NOT NULL)")
@@ -211,6 +214,7 @@ class SqliteJournal(Journal):
         db.execute("INSERT OR IGNORE INTO meta VALUES ('format', 'knic-journal-1')")
         db.execute("INSERT OR IGNORE INTO meta VALUES ('domain_text', ?)", (domain_text,))
         db.execute("INSERT OR IGNORE INTO meta VALUES ('meta_text', ?)", (meta_text,))
+        db.execute("INSERT OR IGNORE INTO meta VALUES ('domain_summary', ?)", (domain_summary,))
         db.execute("COMMIT")
 
     def refresh(self) -> list[Change]:

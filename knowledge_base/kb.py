@@ -114,7 +114,10 @@ class KnowledgeBase:
             kb = cls(domain, clock=clock)
         else:
             base = State(instances=dict(domain.constants))
-            store = SqliteJournal(journal, base, domain_text=domain.text, meta_text=domain.meta_text)
+            summary = json.dumps(domain.to_summary())
+            store = SqliteJournal(
+                journal, base, domain_text=domain.text, meta_text=domain.meta_text, domain_summary=summary
+            )
             if store.meta.get("domain_text") != domain.text:
                 store.close()
                 raise JournalError(f"{journal}: journal was written for another domain than {domain_path}")
@@ -138,9 +141,17 @@ class KnowledgeBase:
         meta = SqliteJournal.read_meta(path)
         if "domain_text" not in meta:
             raise JournalError(f"{path}: not a KnIC journal (no domain stored)")
-        domain = DomainModel.from_text(
-            meta["domain_text"], meta.get("meta_text", ""), source=f"{path}:domain", meta_source=f"{path}:meta"
-        )
+        source = f"{path}:domain"
+        if meta.get("domain_summary"):
+            try:
+                summary = json.loads(meta["domain_summary"])
+            except ValueError:
+                raise JournalError(f"{path}: corrupt domain summary") from None
+            domain = DomainModel.from_summary(summary, meta["domain_text"], meta.get("meta_text", ""), source=source)
+        else:
+            domain = DomainModel.from_text(
+                meta["domain_text"], meta.get("meta_text", ""), source=source, meta_source=f"{path}:meta"
+            )
         store = SqliteJournal(path, State(instances=dict(domain.constants)), read_only=read_only)
         return cls(domain, journal=store, clock=clock, read_only=read_only)
 
@@ -487,6 +498,12 @@ class KnowledgeBase:
         fixed = [(i, v) for i, v in enumerate(pattern) if v not in _WILDCARDS and not str(v).startswith("?")]
         if not fixed:
             return list(found)
+        positions = self._single.get(predicate)
+        if positions is not None and len(fixed) == len(positions) and all(i in positions for i, _ in fixed):
+            # the pattern fixes exactly the key of a single-valued predicate: one index look-up
+            key = tuple([v for _, v in sorted(fixed, key=lambda iv: positions.index(iv[0]))])
+            hit = self._sv_index.get((predicate, key))  # type: ignore[arg-type]
+            return [] if hit is None else [hit]
         return [f for f in found if all(f.args[i] == v for i, v in fixed)]
 
     def holds(self, predicate: str | Fact, *args: str) -> bool:

@@ -12,7 +12,9 @@ expected); inconsistencies raise :class:`~knic.errors.PDDLValidationError` namin
 
 from __future__ import annotations
 
+import functools
 import re
+from collections.abc import Mapping
 from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
@@ -43,10 +45,10 @@ class ProblemContent:
     """
 
     name: str
-    objects: dict[str, str]
-    facts: list[Fact]
-    functions: dict[Fact, float]
-    goals: list[Fact]
+    objects: Mapping[str, str]
+    facts: tuple[Fact, ...]
+    functions: Mapping[Fact, float]
+    goals: tuple[Fact, ...]
     source: str
 
 
@@ -66,7 +68,12 @@ def load_problem(domain: DomainModel, path: str | Path) -> ProblemContent:
 
 
 def parse_problem_text(domain: DomainModel, text: str, *, source: str = "<problem>") -> ProblemContent:
-    """Check and parse problem text (see :func:`load_problem`)."""
+    """Check and parse problem text (see :func:`load_problem`); the same texts give the same (cached) result."""
+    return _parse_cached(domain, text, source)
+
+
+@functools.lru_cache(maxsize=32)
+def _parse_cached(domain: DomainModel, text: str, source: str) -> ProblemContent:
     tree = _sexp(text)
     if tree is not None:
         _prescan(domain, tree, source)
@@ -95,7 +102,7 @@ def content_from_up(domain: DomainModel, problem: Any, source: str = "<up proble
     goals: list[Fact] = []
     for goal in problem.goals:
         _flatten_goal(goal, goals, source)
-    return ProblemContent(problem.name, objects, facts, functions, goals, source)
+    return ProblemContent(problem.name, objects, tuple(facts), functions, tuple(goals), source)
 
 
 def _flatten_goal(node: Any, out: list[Fact], source: str) -> None:

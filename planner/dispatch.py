@@ -28,7 +28,7 @@ from typing import Any
 
 from actions.base import Action, ActionRegistry, ActionStatus, Outcome
 from knic.errors import KnicError
-from knowledge_base import BeliefStatus, Change, KnowledgeBase
+from knowledge_base import BeliefStatus, Change, ChangeKind, KnowledgeBase
 from planner.engines import Planner
 from planner.model import ActionSchema, Atom, PlanningTask, atom_str, ground
 from planner.plan import PlanResult, PlanStatus, PlanStep
@@ -38,6 +38,7 @@ from planner.trace import EventKind, Trace, TraceEvent
 from planner.validate import apply, check_plan, unmet_conditions
 
 SOURCE = "dispatcher"
+_GOAL_CHANGES = (ChangeKind.ADD_GOAL, ChangeKind.REMOVE_GOAL)
 
 
 class DispatcherState(enum.StrEnum):
@@ -122,10 +123,11 @@ class Dispatcher:
         self._domain: Any = None
         self._planned_goals: frozenset[Atom] | None = None
         self._need_plan: str | None = None
-        self._dirty = False
+        self._dirty = True  # look at the knowledge base on the first step
         self._writing = False
         self._step_failures = 0
         self._replans_of: dict[Atom, int] = {}
+        self._goals: list[Atom] | None = None  # the knowledge base's goals, refreshed on goal changes
         self._unsubscribe = kb.subscribe(self._on_change)
 
     # -- public ---------------------------------------------------------------------------------------
@@ -133,20 +135,23 @@ class Dispatcher:
         """Do one bounded unit of work (see the module docstring) and return the resulting state."""
         if self.state == DispatcherState.STOPPED:
             return self.state
+        if self.state == DispatcherState.IDLE and not self._dirty and self._need_plan is None:
+            return self.state  # nothing changed since every goal was achieved or dropped
         goals = self._active_goals()
         if not goals:
+            self._dirty = False
             self._finish_idle()
             return self.state
-        self.state = DispatcherState.EXECUTING
         if self._dirty:
             self._dirty = False
             self._check_after_change(goals)
-        if self.current is None and self._need_plan is None and self._planned_goals is not None:
+        if self.current is None and self._need_plan is None:
             facts = self._facts()
             if all(g in facts for g in goals):
                 self._announce_achieved(goals, facts)
                 self._finish_idle()
                 return self.state
+        self.state = DispatcherState.EXECUTING
         if self._need_plan is not None or self._planned_goals is None:
             if self.current is not None:
                 self._cancel_current(self._need_plan or "replanning")
@@ -205,6 +210,8 @@ class Dispatcher:
 
     # -- knowledge-base changes ----------------------------------------------------------------------
     def _on_change(self, change: Change) -> None:
+        if change.kind in _GOAL_CHANGES:
+            self._goals = None
         if not self._writing:
             self._dirty = True
 
@@ -349,7 +356,11 @@ class Dispatcher:
                 self._failed(step, Outcome.EXECUTION_FAILURE, f"at-end condition {missing[0]} does not hold")
                 return
         sensed = self.sensing.get(step.name, frozenset())
-        self._write(schema.add, schema.delete, step, sensed)
+        try:
+            self._write(schema.add, schema.delete, step, sensed)
+        except KnicError as exc:  # the knowledge base refused an effect: nothing was written
+            self._failed(step, Outcome.EXECUTION_FAILURE, f"effects not written: {exc}")
+            return
         facts = self._facts()
         unconfirmed = [a for a in ground(schema.add, step.args) if a[0] in sensed and a not in facts]
         if unconfirmed:
@@ -419,15 +430,31 @@ class Dispatcher:
         self._need_plan = f"{outcome.value} of {step}"
 
     def _goals_served(self, facts: set[Atom]) -> list[Atom]:
-        """Goals false now that the rest of the plan (from the current step) would make true."""
-        state = set(facts)
-        for step in self.plan[self.index :]:
-            apply(self._strips().schemas[step.name], step.args, state)
-        return [g for g in self._active_goals() if g not in facts and g in state]
+        """Goals false now that the rest of the plan reaches only with its current step.
+
+        The rest of the plan is simulated twice from ``facts``, with and without the current step, skipping
+        steps whose at-start conditions fail; the goals reached only in the first run are the step's.
+        """
+        rest = self.plan[self.index :]
+
+        def reached(steps: tuple[PlanStep, ...]) -> set[Atom]:
+            state = set(facts)
+            for step in steps:
+                schema = self._strips().schemas[step.name]
+                if not unmet_conditions(schema, step.args, state, "start"):
+                    apply(schema, step.args, state)
+            return state
+
+        with_step, without = reached(rest), reached(rest[1:])
+        return [g for g in self._active_goals() if g not in facts and g in with_step and g not in without]
 
     # -- goals ---------------------------------------------------------------------------------------
     def _active_goals(self) -> list[Atom]:
-        goals = [(g.predicate, *g.args) for g in self.kb.goals()]
+        if self._goals is None:
+            self._goals = [(g.predicate, *g.args) for g in self.kb.goals()]
+        goals = self._goals
+        if not self.dropped:
+            return goals
         present = set(goals)
         for gone in [g for g in self.dropped if g not in present]:
             del self.dropped[gone]  # a goal removed and added again is a new goal

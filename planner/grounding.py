@@ -138,8 +138,9 @@ class _Grounder:
     def run(self, relevance: bool = True) -> GroundedTask:
         task = self.task
         reach: set[Atom] = set(task.facts)
+        ordered = sorted(task.facts)  # a fixed order makes grounding, and so plans, independent of hashing
         index = _Index()
-        for atom in task.facts:
+        for atom in ordered:
             index.add(atom)
         triggers: dict[str, list[tuple[ActionSchema, int]]] = {}
         schemas = [s for s in task.domain.schemas.values() if not s.durative]
@@ -147,7 +148,7 @@ class _Grounder:
             for i, (pred, _) in enumerate(schema.pre_pos):
                 triggers.setdefault(pred, []).append((schema, i))
         actions: dict[tuple[str, tuple[str, ...]], GroundAction | None] = {}
-        queue: deque[Atom] = deque(task.facts)
+        queue: deque[Atom] = deque(ordered)
 
         def emit(schema: ActionSchema, args: tuple[str, ...]) -> None:
             key = (schema.name, args)

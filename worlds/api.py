@@ -213,6 +213,8 @@ class CameraFrame:
         detections: detections of items and people after noise (misses, false positives, label confusion).
         visible_instances: names of the world instances actually visible (at least the configured minimum
             number of pixels). **For benchmarks and tests only.**
+
+    ``rgb`` and ``segmentation`` are read-only (frames of an unchanged scene share them); copy to modify.
     """
 
     stamp: float

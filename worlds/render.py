@@ -32,7 +32,7 @@ def render_map(world: World, out: Path, *, scale: float = 80.0, margin: float = 
     """
     xmin, ymin, xmax, ymax = world.bounds()
     width = int((xmax - xmin + 2 * margin) * scale)
-    height = int((ymax - ymin + 2 * margin) * scale) + 30
+    height = int((ymax - ymin + 2 * margin) * scale) + 40
     img = Image.new("RGB", (width, height), (250, 250, 250))
     d = ImageDraw.Draw(img)
     font = _font(13)
@@ -43,10 +43,14 @@ def render_map(world: World, out: Path, *, scale: float = 80.0, margin: float = 
 
     for i, room in enumerate(world.rooms.values()):
         d.polygon([px(*p) for p in room.polygon], fill=ROOM_COLORS[i % len(ROOM_COLORS)])
-    for room in world.rooms.values():  # room names along the bottom of each room
+    for room in world.rooms.values():  # room names along the bottom (else the top) of each room
         cx, _ = room.centroid
-        bottom = min(p[1] for p in room.polygon)
-        _label(d, px(cx, bottom + 0.3), room.name.upper(), font, (110, 110, 110))
+        ys = [p[1] for p in room.polygon]
+        spots = [(cx, min(ys) + 0.3), (cx, max(ys) - 0.3), room.waypoint]
+        spot = next(
+            (q for q in spots if all(f.distance(*q) > 0.6 for f in world.furniture.values())), spots[-1]
+        )
+        _label(d, px(*spot), room.name.upper(), font, (110, 110, 110))
     wall_px = max(2, int(world.wall_thickness * scale))
     for a, b in wall_segments(world):
         d.line([px(*a), px(*b)], fill=(60, 60, 60), width=wall_px)
@@ -54,6 +58,12 @@ def render_map(world: World, out: Path, *, scale: float = 80.0, margin: float = 
         x, y = px(*door.position)
         r = 4.0
         d.ellipse([x - r, y - r, x + r, y + r], fill=(40, 160, 60))
+    rx, ry, ryaw = world.robot.start
+    x, y = px(rx, ry)
+    r = world.robot.radius * scale
+    d.ellipse([x - r, y - r, x + r, y + r], fill=(200, 200, 215), outline=(0, 0, 90), width=2)
+    d.line([(x, y), (x + r * 1.4 * math.cos(ryaw), y - r * 1.4 * math.sin(ryaw))], fill=(0, 0, 90), width=3)
+    _label(d, (x, y + r + 9), world.robot.name, font, (0, 0, 90))
     for f in world.furniture.values():
         d.polygon(
             [px(*p) for p in f.footprint()],
@@ -82,23 +92,18 @@ def render_map(world: World, out: Path, *, scale: float = 80.0, margin: float = 
             d.ellipse([x - r, y - r, x + r, y + r], fill=color, outline=(0, 0, 0), width=2)
         else:
             d.ellipse([x - r, y - r, x + r, y + r], outline=color, width=3)
-        _label(d, (x, y - r - 9), p.name + ("" if p.present else " (outside)"), font, (120, 0, 60))
+        label_y = y + r + 9 if p.present else y - r - 9
+        _label(d, (x, label_y), p.name + ("" if p.present else " (outside)"), font, (120, 0, 60))
     for dev in world.devices.values():
         x, y = px(dev.position[0], dev.position[1])
         d.rectangle([x - 7, y - 7, x + 7, y + 7], fill=(255, 220, 0), outline=(0, 0, 0))
         _label(d, (x, y), DEVICE_LETTER.get(dev.kind, "?"), small, (0, 0, 0))
-    rx, ry, ryaw = world.robot.start
-    x, y = px(rx, ry)
-    r = world.robot.radius * scale
-    d.ellipse([x - r, y - r, x + r, y + r], fill=(200, 200, 215), outline=(0, 0, 90), width=2)
-    d.line([(x, y), (x + r * 1.4 * math.cos(ryaw), y - r * 1.4 * math.sin(ryaw))], fill=(0, 0, 90), width=3)
-    _label(d, (x, y + r + 9), world.robot.name, font, (0, 0, 90))
-    legend = (
-        "rooms (filled), walls (dark), doors (green dots), furniture (boxes), items (dots), people (discs), "
-    )
-    legend += "devices (yellow: L light, D dimmer, B blinds, ß bell), robot (heading line); 1 m = "
-    legend += f"{scale:.0f} px"
-    d.text((8, height - 22), legend, fill=(40, 40, 40), font=small)
+    legend = [
+        "rooms (filled), walls (dark), doors (green dots), furniture (boxes), items (dots), people (discs),",
+        f"devices (yellow: L light, D dimmer, B blinds, ß bell), robot (heading line); 1 m = {scale:.0f} px",
+    ]
+    for k, line in enumerate(legend):
+        d.text((8, height - 36 + 15 * k), line, fill=(40, 40, 40), font=small)
     out.parent.mkdir(parents=True, exist_ok=True)
     img.save(out)
     return img.size

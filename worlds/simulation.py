@@ -44,6 +44,7 @@ PERSON_REACH = 0.8  # metres, how far people reach to take or put an item
 GIVE_REACH_EXTRA = 0.35  # the robot reaches a person's hand this much farther than its gripper reach
 CAMERA_FORWARD = 0.2  # metres from the base centre to the camera, along the pan direction
 PAN_LIMIT = math.pi / 2
+ROOM_GOAL_RADIUS = 0.5  # metres: "go to a room" ends within this distance of the room's waypoint
 
 
 class Simulation:
@@ -205,7 +206,7 @@ class Simulation:
         detections, visible = detect(
             seg, depth, self._instances, self.noise, self._rng_camera, self._item_classes
         )
-        add_depth_noise(depth, self.noise.depth_noise, self._rng_camera)
+        depth = add_depth_noise(depth, self.noise.depth_noise, self._rng_camera)
         self._frame = CameraFrame(
             stamp=self._time,
             width=width,
@@ -262,14 +263,19 @@ class Simulation:
         return self._base.start_goal(target, [goal], lambda _x, _y: yaw)
 
     def navigate_to_room(self, room: str) -> int:
-        """Goal to a room's waypoint."""
+        """Goal to the room's waypoint: the nearest free point within :data:`ROOM_GOAL_RADIUS` of it."""
         if room not in self._world.rooms:
             raise WorldError(f"navigate_to_room: unknown room {room!r}")
         wx, wy = self._world.rooms[room].waypoint
-        goal = self.grid.nearest_free(wx, wy, 1.5)
-        if goal is None:
+        xs, ys, free = self._free_cells()
+        sel = free & (np.hypot(xs - wx, ys - wy) <= ROOM_GOAL_RADIUS)
+        goals = list(zip(xs[sel].tolist(), ys[sel].tolist(), strict=True))
+        if not goals:
+            near = self.grid.nearest_free(wx, wy, 1.5)
+            goals = [near] if near is not None else []
+        if not goals:
             return self._base.fail_now(f"room {room}", f"no free pose near the waypoint of {room}")
-        return self._base.start_goal(f"room {room}", [goal], lambda _x, _y: None)
+        return self._base.start_goal(f"room {room}", goals, lambda _x, _y: None)
 
     def navigate_to_furniture(self, furniture: str, near: tuple[float, float] | None = None) -> int:
         """Goal to a free pose within reach of the furniture (of ``near`` on it when possible), facing it."""

@@ -41,6 +41,14 @@ class _AllVisible:
     def visible(self, points: np.ndarray) -> np.ndarray:
         return np.ones(len(points), dtype=bool)
 
+    def optical_axis(self) -> np.ndarray:
+        return np.array([1.0, 0.0, 0.0])
+
+
+def _centre(cloud: np.ndarray) -> tuple[float, float, float]:
+    c = np.median(cloud, axis=0)
+    return (float(c[0]), float(c[1]), float(c[2]))
+
 
 def _scene(
     objects: int, frames: int, points: int, seed: int
@@ -107,7 +115,7 @@ def _kgm2(scene: list[tuple[np.ndarray, list[tuple[str, np.ndarray]]]], resoluti
                     sensor="camera",
                     stamp=0.1 * f,
                     confidence=0.9,
-                    position=tuple(float(v) for v in np.median(cloud, axis=0)),  # type: ignore[arg-type]
+                    position=_centre(cloud),
                     points=cloud,
                     sensor_origin=(float(origin[0]), float(origin[1]), float(origin[2])),
                     identity=label,
@@ -122,7 +130,7 @@ def _kgm2(scene: list[tuple[np.ndarray, list[tuple[str, np.ndarray]]]], resoluti
         stamp = 0.1 * f
         for unit in frame_units:
             bus.publish(f"percept.vision.object.{unit.label}", unit, source="bench", stamp=stamp)
-        scan = Scan(Kind.OBJECT, stamp, _AllVisible(origin), "camera")  # type: ignore[arg-type]
+        scan = Scan(Kind.OBJECT, stamp, _AllVisible(origin), "camera")
         bus.publish("percept.vision.scan.object", scan, source="bench", stamp=stamp)
         layer.step(stamp)
     elapsed = time.process_time() - start

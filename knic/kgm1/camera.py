@@ -21,7 +21,7 @@ import numpy as np
 
 from knic.bus import Bus
 from knic.kgm1.base import KnowledgeProvider
-from knic.kgm1.sources import CameraSource, FrameView
+from knic.kgm1.sources import CameraSource, FrameView, ViewModel
 from knic.units import LLKU, Kind
 
 if TYPE_CHECKING:
@@ -37,7 +37,7 @@ class Scan:
 
     kind: Kind
     stamp: float
-    view: FrameView
+    view: ViewModel
     sensor: str
 
 

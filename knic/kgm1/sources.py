@@ -52,6 +52,20 @@ class DeviceSource(Protocol):
         ...
 
 
+class ViewModel(Protocol):
+    """What one scan could see (:class:`FrameView` for camera frames; doubles in tests and benchmarks)."""
+
+    position: npt.NDArray[np.float64]
+
+    def visible(self, points: npt.NDArray[np.float64]) -> npt.NDArray[np.bool_]:
+        """Which of the world-frame points (N, 3) the scan could have seen."""
+        ...
+
+    def optical_axis(self) -> npt.NDArray[np.float64]:
+        """The viewing direction in the world frame (unit vector)."""
+        ...
+
+
 class SharedCamera:
     """A :class:`CameraSource` that renders once per simulated instant and hands the same frame to every KP.
 

@@ -263,12 +263,12 @@ class EntityOctomap:
         self.reset_distance = reset_distance
         self.tree = pyoctomap.OcTree(resolution)
         self.keys: Keys = _EMPTY_KEYS
-        self.anchor: npt.NDArray[np.float64] | None = None
+        self.anchor: tuple[float, float, float] | None = None
         self.updates = 0
         self.resets = 0
 
     def update(
-        self, points: Points, centroid: npt.NDArray[np.float64], origin: Sequence[float] | None
+        self, points: Points, centroid: tuple[float, float, float], origin: Sequence[float] | None
     ) -> Keys:
         """Insert ``points`` (world frame) seen from ``origin``; return and keep the voxel keys they hit."""
         if self.anchor is None or math.dist(centroid, self.anchor) > self.reset_distance:
@@ -285,22 +285,17 @@ class EntityOctomap:
                 )
             self.keys = keys_of(points, self.resolution)
         else:
-            self.keys = keys_of(centroid[None, :], self.resolution)
+            self.keys = keys_of(np.array([centroid], dtype=np.float64), self.resolution)
         self.updates += 1
         return self.keys
 
-    def ray_origin(
-        self, centroid: npt.NDArray[np.float64], origin: Sequence[float]
-    ) -> npt.NDArray[np.float64]:
+    def ray_origin(self, centroid: Sequence[float], origin: Sequence[float]) -> npt.NDArray[np.float64]:
         """Where rays start: the sensor, or the point ``ray_length`` metres from the centroid towards it."""
-        sensor = np.asarray(origin, dtype=np.float64)
-        if self.ray_length <= 0:
-            return sensor
-        offset = sensor - centroid
-        distance = math.sqrt(float(offset @ offset))
-        if distance <= self.ray_length:
-            return sensor
-        return np.asarray(centroid + offset * (self.ray_length / distance), dtype=np.float64)
+        distance = math.dist(origin, centroid)
+        if self.ray_length <= 0 or distance <= self.ray_length:
+            return np.array(origin, dtype=np.float64)
+        f = self.ray_length / distance
+        return np.array([c + (o - c) * f for c, o in zip(centroid, origin, strict=True)], dtype=np.float64)
 
     def occupied_at(self, point: Sequence[float]) -> bool:
         """Whether the octree holds an occupied voxel at a world-frame point (reads the tree itself)."""

@@ -5,7 +5,7 @@ For every scan (one camera frame) the detections of one class are matched to the
 1. a detection that carries an identity (a recognised person, an object whose class names one item) updates
    the track of that symbol wherever it is (a recognised entity that jumped has moved; its octomap restarts);
    a symbol has at most one track, so only one detection per identity and scan is kept: the one nearest the
-   track;
+   track; a sighting far from the track moves it only once seen again there (``jump_confirm``);
 2. the others are matched greedily by increasing centroid distance, a pair counting only within the radius
    ``radius`` (metres) and each track and detection used once (lines 2.1.2-2.1.15);
 3. an unmatched detection starts a new track;
@@ -45,7 +45,7 @@ class Track:
     track_id: int
     cls: str
     symbol: str
-    centroid: npt.NDArray[np.float64]
+    centroid: tuple[float, float, float]
     octomap: EntityOctomap
     first_seen: float
     last_seen: float
@@ -53,6 +53,8 @@ class Track:
     hits: int = 1
     misses: int = 0
     support: deque[str] = field(default_factory=lambda: deque(maxlen=4))
+    #: an unconfirmed far sighting of this identity: (position, sightings, last stamp)
+    jump: tuple[tuple[float, float, float], int, float] | None = None
 
     @property
     def keys(self) -> Keys:
@@ -79,6 +81,8 @@ class Tracker:
         gain: weight of the new centroid in the weighted average.
         resolution: octomap resolution of new tracks, metres.
         ray_length: metres of each ray cast into a track's octomap (see :class:`EntityOctomap`).
+        jump_confirm: sightings near one far spot needed before an identified track jumps there (1: at once).
+        jump_window_s: most simulated seconds between two of those sightings.
     """
 
     def __init__(
@@ -90,6 +94,8 @@ class Tracker:
         gain: float = 0.8,
         resolution: float = DEFAULT_RESOLUTION,
         ray_length: float = 1.0,
+        jump_confirm: int = 2,
+        jump_window_s: float = 2.0,
     ) -> None:
         if radius <= 0 or max_misses < 0 or not 0 < gain <= 1:
             raise InferenceError(f"tracker {cls}: radius > 0, max_misses >= 0 and 0 < gain <= 1 required")
@@ -99,9 +105,12 @@ class Tracker:
         self.gain = gain
         self.resolution = resolution
         self.ray_length = ray_length
+        self.jump_confirm = max(1, jump_confirm)
+        self.jump_window_s = jump_window_s
         self.tracks: dict[int, Track] = {}
         self._by_symbol: dict[str, Track] = {}
         self.duplicates = 0
+        self.jumps_set_aside = 0
 
     def by_symbol(self, symbol: str) -> Track | None:
         """The live track of a symbol, if any."""
@@ -116,12 +125,12 @@ class Tracker:
         pending: list[LLKU] = []
         for det in self._one_per_identity(detections):
             track = self.by_symbol(det.identity) if det.identity else None
-            if track is not None:
+            if track is None:
+                pending.append(det)
+            elif self._jump_confirmed(track, det, now):
                 self._update(track, det, now)
                 used.add(track.track_id)
                 result.updated.append((track, det))
-            else:
-                pending.append(det)
         matched: set[int] = set()
         free = []
         if pending:
@@ -152,6 +161,30 @@ class Tracker:
                 result.created.append((track, det))
         self._count_misses(used, visible, result)
         return result
+
+    def _jump_confirmed(self, track: Track, det: LLKU, now: float) -> bool:
+        """Whether an identified detection may update its track: near it, or a far sighting seen again.
+
+        A recognised entity far from its track (beyond the radius) has either moved or is a false positive or
+        a label confusion; the track moves only after ``jump_confirm`` sightings near the same far spot, each
+        within ``jump_window_s`` of the previous one. Until then the detection is set aside.
+        """
+        if math.dist(det.position, track.centroid) < self.radius:
+            track.jump = None
+            return True
+        if self.jump_confirm <= 1:
+            return True
+        seen = 1
+        if track.jump is not None:
+            where, count, last = track.jump
+            if math.dist(det.position, where) < self.radius and now - last <= self.jump_window_s:
+                seen = count + 1
+        if seen >= self.jump_confirm:
+            track.jump = None
+            return True
+        track.jump = (det.position, seen, now)
+        self.jumps_set_aside += 1
+        return False
 
     def _one_per_identity(self, detections: Sequence[LLKU]) -> list[LLKU]:
         """Keep one detection per identity: the one nearest the symbol's track (else the most confident).
@@ -210,7 +243,7 @@ class Tracker:
     def _create(self, det: LLKU, now: float) -> Track:
         tid = next(_track_ids)
         octomap = EntityOctomap(self.resolution, reset_distance=self.radius, ray_length=self.ray_length)
-        centroid = np.asarray(det.position, dtype=np.float64)
+        centroid = det.position
         octomap.update(det.points, centroid, det.sensor_origin)
         track = Track(
             tid, self.cls, det.identity or f"{self.cls}_{tid}", centroid, octomap, now, now, det.confidence
@@ -221,11 +254,16 @@ class Tracker:
         return track
 
     def _update(self, track: Track, det: LLKU, now: float) -> None:
-        new = np.array(det.position)
-        if math.dist(det.position, track.centroid) >= self.radius:
+        new = det.position
+        if math.dist(new, track.centroid) >= self.radius:
             track.centroid = new
         else:
-            track.centroid = self.gain * new + (1.0 - self.gain) * track.centroid
+            g, old = self.gain, track.centroid
+            track.centroid = (
+                g * new[0] + (1.0 - g) * old[0],
+                g * new[1] + (1.0 - g) * old[1],
+                g * new[2] + (1.0 - g) * old[2],
+            )
         track.octomap.update(det.points, track.centroid, det.sensor_origin)
         track.last_seen = now
         track.hits += 1

@@ -7,9 +7,10 @@ status OBSERVED (ASSUMED for search candidates), ``source`` = the KP' name, ``su
 LLKUs behind the fact, ``at`` = simulated time.
 
 Noise never flips a fact on one reading: a :class:`Confirmer` asks for ``needed`` consecutive consistent
-observations (with a mean confidence of at least ``min_confidence``) before a belief switches from what the
-knowledge base holds to something else. A write the knowledge base refuses (an unknown symbol) is logged and
-counted, never raised into the loop: perception goes on.
+observations, each within ``window_s`` of the previous one (with a mean confidence of at least
+``min_confidence``), before a belief switches from what the knowledge base holds to something else. A write
+the knowledge base refuses (an unknown symbol) is logged and counted, never raised into the loop: perception
+goes on.
 """
 
 from __future__ import annotations
@@ -33,6 +34,7 @@ class _Candidate(Generic[V]):
     value: V
     count: int
     confidence_sum: float
+    last: float
 
 
 class Confirmer(Generic[V]):
@@ -41,26 +43,34 @@ class Confirmer(Generic[V]):
     Args:
         needed: consecutive observations of a new value needed before it replaces the current one (>= 1).
         min_confidence: least mean confidence of those observations.
+        window_s: most simulated seconds between two observations that count as consecutive; sporadic
+            false positives far apart in time never add up (None: no limit).
     """
 
-    def __init__(self, needed: int = 2, min_confidence: float = 0.0) -> None:
+    def __init__(self, needed: int = 2, min_confidence: float = 0.0, window_s: float | None = 2.0) -> None:
         if needed < 1:
             raise ValueError("Confirmer needs needed >= 1")
         self.needed = needed
         self.min_confidence = min_confidence
+        self.window_s = window_s
         self._pending: dict[str, _Candidate[V]] = {}
 
-    def observe(self, subject: str, value: V, confidence: float, current: V | None) -> bool:
-        """Record one observation; True when ``value`` is now confirmed and differs from ``current``."""
+    def observe(
+        self, subject: str, value: V, confidence: float, current: V | None, stamp: float = 0.0
+    ) -> bool:
+        """Record one observation made at simulated time ``stamp``; True when ``value`` is now confirmed and
+        differs from ``current``."""
         if value == current:
             self._pending.pop(subject, None)
             return False
         cand = self._pending.get(subject)
-        if cand is not None and cand.value == value:
+        fresh = cand is not None and (self.window_s is None or stamp - cand.last <= self.window_s)
+        if cand is not None and fresh and cand.value == value:
             cand.count += 1
             cand.confidence_sum += confidence
+            cand.last = stamp
         else:
-            cand = _Candidate(value, 1, confidence)
+            cand = _Candidate(value, 1, confidence, stamp)
             self._pending[subject] = cand
         if cand.count >= self.needed and cand.confidence_sum / cand.count >= self.min_confidence:
             del self._pending[subject]

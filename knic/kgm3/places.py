@@ -56,7 +56,7 @@ class RobotAtKP(KPPrime):
             if room is None or not self.is_a(cku.symbol, "robot"):
                 continue
             current = self.value_of("robot_at", cku.symbol)
-            if self.confirmer.observe(cku.symbol, room, cku.confidence, current):
+            if self.confirmer.observe(cku.symbol, room, cku.confidence, current, cku.stamp):
                 support = (cku.uid, *cku.support)
                 with self.kb.batch():
                     self.assert_fact("robot_at", cku.symbol, room, at=cku.stamp, support=support)
@@ -127,7 +127,7 @@ class _EntityPlaceKP(KPPrime):
             return
         current = (self.value_of(self.place_predicate, cku.symbol), self.current_support(cku.symbol))
         support = (cku.uid, *cku.support)
-        if self.confirmer.observe(cku.symbol, (room, furniture), cku.confidence, current):
+        if self.confirmer.observe(cku.symbol, (room, furniture), cku.confidence, current, cku.stamp):
             with self.kb.batch():
                 self.write_place(cku.symbol, room, furniture, cku.stamp, support, cku.confidence)
         elif current == (room, furniture):

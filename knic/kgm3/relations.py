@@ -64,7 +64,7 @@ class PersonNearKP(KPPrime):
                 value = False
             else:
                 continue
-            if self.confirmer.observe(f"{p}|{q}", value, 1.0, current):
+            if self.confirmer.observe(f"{p}|{q}", value, 1.0, current, now):
                 self._write(p, q, value, now, (a.uid, b.uid))
         for fact in self.kb.facts("person_near"):
             p, q = fact.args
@@ -155,7 +155,7 @@ class DeviceStateKP(KPPrime):
                 current = "on" if self.kb.holds("light_on", device) else None
                 if current is None and self.kb.holds("light_off", device):
                     current = "off"
-                if self.confirmer.observe(device, value, 1.0, current) or (
+                if self.confirmer.observe(device, value, 1.0, current, cku.stamp) or (
                     value == current and self._stale(f"light_{value}", device)
                 ):
                     other = "off" if value == "on" else "on"
@@ -169,7 +169,7 @@ class DeviceStateKP(KPPrime):
                     continue
                 value = level_of(state)
                 current = self.value_of("device_level", device)
-                if self.confirmer.observe(device, value, 1.0, current) or (
+                if self.confirmer.observe(device, value, 1.0, current, cku.stamp) or (
                     value == current and self._stale("device_level", device, value)
                 ):
                     with self.kb.batch():

@@ -176,7 +176,8 @@ def _describe(expected: Sequence[str], vocabulary: Vocabulary) -> str:
     categories = [_CATEGORY_NAMES.get(e[1:-1], e[1:-1]) for e in expected if e.startswith("<")]
     if "<level>" in expected:
         levels = sorted(vocabulary.terms_of(("level",)), key=lambda t: level_percent(t.symbol) or 0)
-        categories.append("(" + ", ".join(t.phrase for t in levels) + ")")
+        named = _CATEGORY_NAMES["level"] + " (" + ", ".join(t.phrase for t in levels) + ")"
+        categories = [named if c == _CATEGORY_NAMES["level"] else c for c in categories]
     literals = [e for e in expected if not e.startswith("<")]
     if categories:
         return " or ".join(dict.fromkeys(categories))

@@ -203,6 +203,7 @@ class Recognizer:
         except ImportError as exc:  # pragma: no cover - pocketsphinx is a declared dependency
             raise LanguageError(f"speech recognition needs pocketsphinx: {exc}") from exc
         set_loglevel("FATAL")
+        self.filler_weight = filler_weight
         self._decoder = Decoder(lm=None, loglevel="FATAL", **DECODER_OPTIONS)
         command_words = grammar_words(grammar) | vocabulary.words()
         #: words of the grammar or vocabulary that the pronunciation dictionary lacks (left out of the JSGF).

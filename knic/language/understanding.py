@@ -10,7 +10,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from functools import lru_cache
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from knic.errors import LanguageError
 from knic.language.frames import CommandFrame, build_frames
@@ -19,6 +19,9 @@ from knic.language.grammar import Grammar, command_grammar, grammar_words
 from knic.language.parser import ParseFailure, Parser
 from knic.language.vocabulary import Vocabulary, normalize
 from knowledge_base import Fact
+
+if TYPE_CHECKING:
+    from knic.language.speech import Transcript
 
 DEFAULT_SPEAKER = "annie"
 
@@ -93,3 +96,25 @@ def understand(
     except LanguageError as exc:
         return Understanding(text, tuple(frames), reason=str(exc), speaker=speaker)
     return Understanding(text, tuple(frames), tuple(goals), accepted=True, speaker=speaker)
+
+
+def understand_transcript(
+    transcript: Transcript, vocabulary: Vocabulary, *, speaker: str = DEFAULT_SPEAKER, grammar: Grammar | None = None
+) -> Understanding:
+    """Understand what the recogniser heard; speech outside the grammar is rejected, not forced onto a command.
+
+    The result's ``extra`` carries ``transcript`` (the words heard) and ``audio`` (duration and decoding time),
+    which appear in its JSON form.
+    """
+    extra = {
+        "transcript": transcript.text,
+        "audio": {"duration_s": round(transcript.duration, 3), "decode_ms": round(transcript.decode_ms, 1)},
+    }
+    if not transcript.text or not transcript.in_grammar:
+        heard = f" (heard: '{transcript.text}')" if transcript.text else ""
+        reason = f"the speech matched no command{heard}"
+        return Understanding(transcript.text, reason=reason, speaker=speaker, extra=extra)
+    result = understand(transcript.text, vocabulary, speaker=speaker, grammar=grammar)
+    return Understanding(
+        result.text, result.frames, result.goals, result.accepted, result.reason, result.speaker, extra
+    )

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import itertools
 import math
+from collections.abc import Sequence
 from pathlib import Path
 
 import numpy as np
@@ -49,7 +50,7 @@ def frame(
     camera: tuple[float, float, float, float],
     *,
     depth: float = math.inf,
-    boxes: list[tuple[str, tuple[int, int, int, int], float, str | None]] = (),  # type: ignore[assignment]
+    boxes: Sequence[tuple[str, tuple[int, int, int, int], float, str | None]] = (),
 ) -> CameraFrame:
     """A frame from a camera at (x, y, z, yaw): uniform ``depth`` everywhere except the detection boxes.
 

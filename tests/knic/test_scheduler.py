@@ -101,7 +101,7 @@ def test_quiet_shutdown_and_bad_registrations() -> None:
 
 def test_overrun_warnings_are_rate_limited_but_every_event_is_kept(caplog: pytest.LogCaptureFixture) -> None:
     ticks = iter(float(i) for i in range(100))  # every step takes one wall second
-    sched = Scheduler(wall_clock=lambda: next(ticks), warn_interval_s=10.0)
+    sched = Scheduler(real_time_factor=2.0, wall_clock=lambda: next(ticks), warn_interval_s=10.0)
     sched.add(Recorder("slow", 1.0, []))
     with caplog.at_level("WARNING", logger="knic.scheduler"):
         for t in range(12):

@@ -41,7 +41,7 @@ def test_bumps_into_furniture_are_counted(make_sim: Callable[..., Simulation]) -
 def test_hits_on_people_are_counted(make_sim: Callable[..., Simulation]) -> None:
     sim = make_sim("erl_home")
     tracy = sim.true_pose("tracy").position
-    face(sim, tracy[0], tracy[1] + 1.3, -math.pi / 2)
+    face(sim, tracy[0], tracy[1] - 1.3, math.pi / 2)
     drive(sim, 0.5, 3.0)
     assert sim.counters().person_hits == 1
     assert sim.counters().bumps == 0

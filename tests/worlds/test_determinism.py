@@ -14,7 +14,7 @@ def record(make_sim: Callable[..., Simulation], seed: int) -> list[Any]:
     trace: list[Any] = []
     rooms = ["kitchen", "living_room", "bedroom"]
     goal = 0
-    while sim.time < 60:
+    while sim.time < 40:
         if sim.nav_status().state is not NavState.ACTIVE:
             sim.navigate_to_room(rooms[goal % len(rooms)])
             goal += 1

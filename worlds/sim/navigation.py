@@ -330,14 +330,17 @@ class GridMap:
         return out
 
     def _line_ok(self, a: Point, b: Point, grid: npt.NDArray[np.bool_]) -> bool:
+        """True when the straight line a-b stays on free cells no costlier than the cell at ``a``."""
         n = max(2, int(math.dist(a, b) / (self.resolution / 2)))
-        ca = self.cost[self.cell(*a)] if self.in_grid(*self.cell(*a)) else 1.0
-        for k in range(1, n):
-            t = k / n
-            r, c = self.cell(a[0] + (b[0] - a[0]) * t, a[1] + (b[1] - a[1]) * t)
-            if not self.in_grid(r, c) or grid[r, c] or self.cost[r, c] > ca:
-                return False
-        return True
+        rows, cols = self.occupied.shape
+        ra, ca_ = self.cell(*a)
+        cost_a = self.cost[ra, ca_] if 0 <= ra < rows and 0 <= ca_ < cols else 1.0
+        t = np.arange(1, n) / n
+        r = np.floor((a[1] + (b[1] - a[1]) * t - self.origin[1]) / self.resolution).astype(int)
+        c = np.floor((a[0] + (b[0] - a[0]) * t - self.origin[0]) / self.resolution).astype(int)
+        if r.min() < 0 or c.min() < 0 or r.max() >= rows or c.max() >= cols:
+            return False
+        return not bool(grid[r, c].any() or (self.cost[r, c] > cost_a).any())
 
 
 def _polygon_mask(

@@ -174,23 +174,43 @@ class PeopleController:
         elif kind == "goto":
             if p.on is not None:
                 self._stand_up(p)
-            if not p.path or p.blocked_for > 2.0:
-                rx, ry, rr = robot
-                around = (
-                    self.grid.with_discs([(rx, ry, rr + p.radius + 0.1)]) if p.blocked_for > 2.0 else None
-                )
-                p.blocked_for = 0.0
-                path = self.grid.plan((p.x, p.y), arg, around)
+            if not p.path:
+                path = self.grid.plan((p.x, p.y), arg)
                 if path is None:  # nowhere to go: give the task up
                     p.tasks.popleft()
                     return
                 p.path, p.path_index = path, 1
+            elif p.blocked_for > 2.0:  # the robot is in the way: try to walk around it, else keep waiting
+                rx, ry, rr = robot
+                p.blocked_for = 0.0
+                around = self.grid.plan(
+                    (p.x, p.y), arg, self.grid.with_discs([(rx, ry, rr + p.radius + 0.1)])
+                )
+                if around is not None:
+                    p.path, p.path_index = around, 1
+                else:  # no way around (a doorway): step aside, then go on
+                    aside = self._aside_points(p, robot)
+                    if aside:
+                        p.path = []
+                        p.tasks.appendleft(("goto", aside))
             if p.path_index >= len(p.path):
                 p.path = []
                 p.tasks.popleft()
                 return
             if self._walk_towards(p, p.path[p.path_index], dt, robot):
                 p.path_index += 1
+
+    def _aside_points(self, p: PersonState, robot: tuple[float, float, float]) -> list[Point]:
+        """Free points 0.8-1.6 m from the person and at least 1.3 m from the robot, to make way."""
+        rx, ry, _ = robot
+        out = []
+        for k in range(16):
+            ang = 2 * math.pi * k / 16
+            for dist in (0.8, 1.2, 1.6):
+                x, y = p.x + dist * math.cos(ang), p.y + dist * math.sin(ang)
+                if math.hypot(x - rx, y - ry) >= 1.3 and self.grid.is_free(x, y):
+                    out.append((x, y))
+        return out
 
     def _stand_up(self, p: PersonState) -> None:
         if p.on is None:

@@ -55,9 +55,10 @@ def detect(
     Returns:
         ``(detections, visible_instances)``.
     """
-    ids, counts = np.unique(segmentation, return_counts=True)
+    counts = np.bincount(segmentation.ravel() + 1)  # body ids are small; -1 (background) -> bin 0
     visible: list[tuple[str, int, str, bool, int]] = []
-    for body, count in zip(ids.tolist(), counts.tolist(), strict=True):
+    for body in np.flatnonzero(counts[1:]).tolist():
+        count = int(counts[body + 1])
         if body in instances and count >= noise.min_pixels:
             name, label, person = instances[body]
             visible.append((name, body, label, person, count))
@@ -112,10 +113,14 @@ def _false_positive(
     return Detection(label=label, confidence=round(conf, 4), mask=mask)
 
 
-def add_depth_noise(depth: npt.NDArray[np.float32], sigma_per_metre: float, rng: np.random.Generator) -> None:
-    """Multiply finite depths by ``1 + N(0, sigma_per_metre)`` in place (sigma grows with range)."""
+def add_depth_noise(
+    depth: npt.NDArray[np.float32], sigma_per_metre: float, rng: np.random.Generator
+) -> npt.NDArray[np.float32]:
+    """A copy of ``depth`` with finite depths multiplied by ``1 + N(0, sigma_per_metre)`` (grows with range)."""
     if sigma_per_metre <= 0:
-        return
-    finite = np.isfinite(depth)
-    noise = rng.normal(0.0, sigma_per_metre, size=depth.shape).astype(np.float32)
-    depth[finite] *= 1.0 + noise[finite]
+        return depth.copy()
+    factor = rng.standard_normal(size=depth.shape, dtype=np.float32)
+    factor *= np.float32(sigma_per_metre)
+    factor += np.float32(1.0)
+    factor *= depth  # inf stays inf
+    return factor

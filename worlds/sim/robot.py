@@ -149,7 +149,7 @@ class BaseController:
     def _plan(self, g: _Goal, people: Sequence[tuple[str, float, float, float]], around_people: bool) -> bool:
         blocked = None
         if around_people:
-            discs = [(x, y, r + self.spec.radius + 0.05) for _, x, y, r in people]
+            discs = [(x, y, r + self.spec.radius + 0.15) for _, x, y, r in people]
             blocked = self.grid.with_discs(discs)
         path = self.grid.plan((self.x, self.y), g.goals, blocked)
         if path is None:

@@ -123,7 +123,9 @@ class Scene:
                 j = (i + 1) % 4
                 idx += [i, 4 + j, j, i, 4 + i, 4 + j]
             vis = c.createVisualShape(pb.GEOM_MESH, vertices=verts, indices=idx, rgbaColor=WALL_COLOR)
-            body = int(c.createMultiBody(baseMass=0, baseVisualShapeIndex=vis, basePosition=(mid[0], mid[1], 0)))
+            body = int(
+                c.createMultiBody(baseMass=0, baseVisualShapeIndex=vis, basePosition=(mid[0], mid[1], 0))
+            )
             self._pose[body] = ((mid[0], mid[1], 0.0), 0.0)
 
     def _register(self, name: str, body: int) -> None:
@@ -159,7 +161,6 @@ class Scene:
         body = self._cylinder(r.radius, r.height, (r.start[0], r.start[1], r.height / 2), ROBOT_COLOR)
         self._register(r.name, body)
 
-
     # ------------------------------------------------------------------------------------------ moving
 
     def move(self, name: str, pos: tuple[float, float, float], yaw: float = 0.0) -> None:
@@ -191,6 +192,7 @@ class Scene:
     ]:
         """Render RGB, metric depth and segmentation from a camera at ``eye`` looking along yaw/pitch.
 
+        The arrays are read-only (an unchanged scene returns the same ones again).
         ``pitch`` is the downward tilt in radians. Depth beyond ``far`` (nothing hit) is ``inf``. Bodies
         named in ``exclude`` (the robot carrying the camera) are left out.
         Returns ``(rgb, depth, segmentation, intrinsics, optical-frame pose)``.
@@ -198,8 +200,7 @@ class Scene:
         c = self._client
         key = (eye, yaw, pitch, width, height, fov_deg, near, far, exclude, self._version)
         if self._last is not None and self._last[0] == key:  # nothing moved: the same picture
-            rgb0, depth0, seg0, intr0, pose0 = self._last[1]
-            return rgb0.copy(), depth0.copy(), seg0.copy(), intr0, pose0
+            return self._last[1]
         hidden = [self.body_of[n] for n in exclude]
         for body in hidden:
             (x, y, _), byaw = self._pose[body]
@@ -227,8 +228,10 @@ class Scene:
         pose = Pose3D(
             position=(float(eye[0]), float(eye[1]), float(eye[2])), orientation=_quat_from_matrix(rot)
         )
+        for array in (rgb, depth, segm):  # shared with later calls while nothing moves
+            array.flags.writeable = False
         self._last = (key, (rgb, depth, segm, intr, pose))
-        return rgb.copy(), depth.copy(), segm.copy(), intr, pose
+        return rgb, depth, segm, intr, pose
 
 
 class _Client:

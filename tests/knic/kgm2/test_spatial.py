@@ -67,11 +67,11 @@ def test_entity_octomap_follows_the_entity() -> None:
     octo = EntityOctomap(reset_distance=0.5)
     origin = (0.0, 0.0, 1.2)
     a = blob((2.0, 0.0, 0.8), spread=0.02)
-    octo.update(a, a.mean(axis=0), origin)
+    octo.update(a, (2.0, 0.0, 0.8), origin)
     assert octo.occupied_at((2.0, 0.0, 0.8))
     assert (octo.keys == keys_of(a)).all()
     b = blob((3.5, 1.0, 0.8), spread=0.02)
-    octo.update(b, b.mean(axis=0), origin)
+    octo.update(b, (3.5, 1.0, 0.8), origin)
     assert octo.resets == 1
     assert octo.occupied_at((3.5, 1.0, 0.8)) and not octo.occupied_at((2.0, 0.0, 0.8))
 

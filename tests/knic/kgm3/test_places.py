@@ -117,3 +117,17 @@ def test_person_at_with_time_to_live(paper_kb: KnowledgeBase, paper_locations: L
     assert paper_kb.holds("person_at", "annie", "bedroom")
     kp.step(31.5)
     assert not paper_kb.facts("person_at") and not paper_kb.holds("found", "annie")
+
+
+def test_sporadic_false_sightings_far_apart_in_time_never_add_up(
+    paper_kb: KnowledgeBase, paper_locations: LocationModel
+) -> None:
+    bus = Bus()
+    kp = ObjectPlaceKP(bus, paper_kb, paper_locations, needed=2)
+    for t in (1.0, 1.2):
+        send(bus, cku("glasses", Kind.OBJECT, SHELF_TOP, t))
+    kp.step(1.2)
+    for t in (10.0, 30.0, 50.0):  # one spurious "glasses" on the kitchen table every 20 s
+        send(bus, cku("glasses", Kind.OBJECT, (6.0, 6.6, 0.78), t))
+        kp.step(t)
+    assert paper_kb.facts("object_at", "glasses") == [Fact("object_at", ("glasses", "entrance"))]

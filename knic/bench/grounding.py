@@ -1,0 +1,345 @@
+"""``knic bench grounding``: how true the knowledge base stays against the simulator's ground truth.
+
+One episode of ``--duration`` simulated seconds (default 600) in the seven-room apartment: the robot
+patrols the rooms (a waypoint per room, a camera sweep on arrival) while people walk between rooms, a visitor
+rings and objects are moved (:func:`bench_scenario`). The whole KnIC pipeline runs in the run's scheduler; no
+goals, so the dispatcher is not stepped. Measured, in simulated time:
+
+* every simulated second, the knowledge base's dynamic facts (``COMPARED`` predicates) against the ground
+  truth: ``precision`` (share of believed facts that are true) and ``recall`` (share of true facts the robot
+  could have perceived that are believed). A true fact about an item or person counts as perceivable once the
+  entity was in a camera frame (``CameraFrame.visible_instances``) after the fact became true; the robot's
+  room, devices and sounds always count.
+* ``staleness_median_s``: for each change of a perceivable true fact (appearing or disappearing, sampled at
+  5 Hz), the time until the knowledge base made the same change; changes it never made are counted in
+  ``changes_unreflected``.
+* the same episode under the companion role and under ``all_top_rate`` (every class at the top rate):
+  ``cpu_s_*`` is the process CPU time spent in the pipeline's components (KGM-1, KGM-2, KGM-3; camera
+  rendering included), ``priority_staleness_*_s`` the median staleness of the companion's priority facts
+  (people, and the glasses, remote and tablet).
+* ``octomap_throughput_ratio`` from :mod:`knic.bench.octomap`.
+
+Figures that could not be measured (no sample) are ``null``.
+Precision, recall and staleness are those of the companion episode (the default role of ``knic run``).
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import logging
+import math
+import statistics
+import time
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from typing import Any
+
+from knic.scheduler import Component
+
+#: predicates compared with the ground truth
+COMPARED = frozenset(
+    {
+        "robot_at",
+        "person_at",
+        "object_at",
+        "object_on",
+        "person_near",
+        "sound_at",
+        "light_on",
+        "light_off",
+        "device_level",
+    }
+)
+#: the companion role's priority entities (besides every person)
+PRIORITY_ITEMS = frozenset({"glasses", "remote", "tablet"})
+Atom = tuple[str, ...]
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--duration", type=float, default=600.0, help="simulated seconds per episode (600)")
+    parser.add_argument("--seed", type=int, default=0, help="simulation seed (default 0)")
+    parser.add_argument("--skip-octomap", action="store_true", help="do not measure the octomap ratio")
+    parser.add_argument("--json", action="store_true", help="print one JSON object")
+
+
+def run(args: argparse.Namespace) -> int:
+    from knic.errors import KnicError
+
+    if args.duration <= 0:
+        raise KnicError(f"knic bench grounding: --duration must be positive, got {args.duration}")
+    logging.getLogger("knic.scheduler").setLevel(logging.ERROR)
+    figures = measure_grounding(duration=args.duration, seed=args.seed, octomap=not args.skip_octomap)
+    if args.json:
+        print(json.dumps(figures, sort_keys=True))
+    else:
+        for key, value in sorted(figures.items()):
+            print(f"{key:34s} {value}")
+    return 0
+
+
+def measure_grounding(*, duration: float = 600.0, seed: int = 0, octomap: bool = True) -> dict[str, Any]:
+    """Run the companion and the all-top-rate episodes and return the figures (see the module docstring)."""
+    companion = run_episode("companion", duration=duration, seed=seed)
+    top = run_episode("all_top_rate", duration=duration, seed=seed)
+    figures: dict[str, Any] = {
+        "duration_s": duration,
+        "precision": companion["precision"],
+        "recall": companion["recall"],
+        "staleness_median_s": companion["staleness_median_s"],
+        "changes_reflected": companion["changes_reflected"],
+        "changes_unreflected": companion["changes_unreflected"],
+        "samples": companion["samples"],
+        "cpu_s_companion": companion["cpu_s"],
+        "cpu_s_all_top_rate": top["cpu_s"],
+        "priority_staleness_companion_s": companion["priority_staleness_s"],
+        "priority_staleness_all_s": top["priority_staleness_s"],
+        "precision_all_top_rate": top["precision"],
+        "recall_all_top_rate": top["recall"],
+        "wall_s": round(companion["wall_s"] + top["wall_s"], 1),
+    }
+    if octomap:
+        from knic.bench.octomap import measure_octomap_throughput
+
+        figures["octomap_throughput_ratio"] = measure_octomap_throughput()["octomap_throughput_ratio"]
+    return figures
+
+
+def bench_scenario(duration: float) -> dict[str, Any]:
+    """The episode's events as a scenario document: people walking, a visitor, objects moved, a dimmer set."""
+    rooms = ("kitchen", "living_room", "bedroom", "dining_room", "hallway", "bathroom")
+    events: list[dict[str, Any]] = [
+        {"at": 0, "type": "person_to", "person": "annie", "furniture": "sofa", "teleport": True},
+        {"at": 30, "type": "doorbell", "visitor": "jack", "to": "living_room"},
+        {"at": 60, "type": "set_device", "device": "living_room_dimmer", "value": 50},
+    ]
+    moves = [
+        ("mug", "dining_table"),
+        ("remote", "tv_table"),
+        ("glasses", "coffee_table"),
+        ("apple", "dining_table"),
+    ]
+    t, i = 20.0, 0
+    while t < duration - 20:
+        person = "tracy" if i % 2 == 0 else "jack"
+        events.append({"at": t, "type": "person_to", "person": person, "room": rooms[i % len(rooms)]})
+        if i % 3 == 1:
+            item, to = moves[(i // 3) % len(moves)]
+            events.append({"at": t + 5, "type": "move_object", "person": "tracy", "item": item, "to": to})
+        t += 45.0
+        i += 1
+    return {"name": "grounding_bench", "description": "people walking, objects moved", "events": events}
+
+
+class _Timed(Component):
+    """Runs a component and adds the process CPU time of its steps to a shared counter."""
+
+    def __init__(self, inner: Component, total: list[float]) -> None:
+        self.inner = inner
+        self.name = inner.name
+        self.frequency = inner.frequency
+        self.total = total
+
+    def step(self, now: float) -> None:
+        start = time.process_time()
+        self.inner.step(now)
+        self.total[0] += time.process_time() - start
+
+
+@dataclass
+class _Change:
+    fact: Atom
+    appeared: bool
+    at: float
+    entities: tuple[str, ...]
+    reflected_at: float | None = None
+
+
+@dataclass
+class _Recorder:
+    """Samples truth and beliefs; keeps the visibility history and the changes awaiting the knowledge base."""
+
+    entities: frozenset[str]
+    seen: dict[str, list[float]] = field(default_factory=dict)
+    truth_since: dict[Atom, float] = field(default_factory=dict)
+    pending: list[_Change] = field(default_factory=list)
+    done: list[_Change] = field(default_factory=list)
+    precision: list[float] = field(default_factory=list)
+    recall: list[float] = field(default_factory=list)
+
+    def visible_since(self, name: str, t: float) -> bool:
+        stamps = self.seen.get(name)
+        return bool(stamps) and stamps[-1] >= t - 1e-9  # type: ignore[index]
+
+    def perceivable(self, fact: Atom, since: float) -> bool:
+        names = [a for a in fact[1:] if a in self.entities]
+        return all(self.visible_since(n, since) for n in names)
+
+
+def run_episode(role: str, *, duration: float, seed: int) -> dict[str, Any]:
+    """One patrolling episode under ``role``; returns precision, recall, staleness and CPU figures."""
+    from knic.system import KnicSystem, RunConfig
+    from worlds.api import load_world
+    from worlds.scenario import scenario_from_dict
+
+    world = load_world("erl_home")
+    scenario = scenario_from_dict(bench_scenario(duration), world)
+    system = KnicSystem(RunConfig(world=world.name, scenario=scenario, seed=seed, role=role))
+    try:
+        return _episode(system, duration)
+    finally:
+        system.close()
+
+
+def _episode(system: Any, duration: float) -> dict[str, Any]:
+    sim, kb, scheduler = system.sim, system.kb, system.scheduler
+    world = system.world
+    entities = frozenset(world.items) | frozenset(world.people)
+    rec = _Recorder(entities)
+    cpu = [0.0]
+    camera_hz = system.pipeline.component("kp.camera_objects").frequency
+    for component in list(scheduler.components):
+        if component.name not in ("sim", "dispatcher"):
+            scheduler.remove(component.name)
+            scheduler.add(_Timed(component, cpu))
+    scheduler.remove("dispatcher")
+    scheduler.add(_Patrol(system))
+    scheduler.add(_Probe("bench.visibility", camera_hz, lambda now: _see(sim, rec)))
+    scheduler.add(_Probe("bench.changes", 5.0, lambda now: _changes(sim, kb, rec, now)))
+    scheduler.add(_Probe("bench.compare", 1.0, lambda now: _compare(sim, kb, rec, now)))
+
+    def reflect(change: Any) -> None:
+        if change.kind.value not in ("add_fact", "remove_fact"):
+            return
+        atom = (change.name, *change.args)
+        added = change.kind.value == "add_fact"
+        for ch in rec.pending:
+            if ch.fact == atom and ch.appeared == added and ch.reflected_at is None:
+                ch.reflected_at = change.time
+
+    unsubscribe = kb.subscribe(reflect)
+    wall0 = time.perf_counter()
+    while True:
+        due = scheduler.next_due()
+        if due is None or due > duration:
+            break
+        scheduler.tick(due)
+    unsubscribe()
+    changes = rec.done + rec.pending
+    counted = [c for c in changes if c.reflected_at is not None or rec.perceivable(c.fact, c.at)]
+    reflected = [c for c in counted if c.reflected_at is not None]
+    delays = [c.reflected_at - c.at for c in reflected if c.reflected_at is not None]
+    priority = [
+        c.reflected_at - c.at
+        for c in reflected
+        if c.reflected_at is not None and any(e in PRIORITY_ITEMS or e in world.people for e in c.entities)
+    ]
+    return {
+        "precision": round(statistics.fmean(rec.precision), 4) if rec.precision else None,
+        "recall": round(statistics.fmean(rec.recall), 4) if rec.recall else None,
+        "staleness_median_s": round(statistics.median(delays), 3) if delays else None,
+        "priority_staleness_s": round(statistics.median(priority), 3) if priority else None,
+        "changes_reflected": len(reflected),
+        "changes_unreflected": len(counted) - len(reflected),
+        "samples": len(rec.precision),
+        "cpu_s": round(cpu[0], 2),
+        "wall_s": time.perf_counter() - wall0,
+    }
+
+
+class _Probe(Component):
+    """A measuring component: calls ``fn(now)`` at ``frequency`` (registered after the pipeline)."""
+
+    def __init__(self, name: str, frequency: float, fn: Callable[[float], None]) -> None:
+        self.name = name
+        self.frequency = frequency
+        self.fn = fn
+
+    def step(self, now: float) -> None:
+        self.fn(now)
+
+
+class _Patrol(Component):
+    """Drives the robot from room waypoint to room waypoint (knowledge-base anchors), sweeping the camera
+    for ``sweep_s`` on arrival."""
+
+    name = "bench.patrol"
+    frequency = 5.0
+
+    def __init__(self, system: Any, sweep_s: float = 5.0) -> None:
+        from actions.erl.context import room_map
+
+        self.sim = system.sim
+        tour = (
+            "living_room",
+            "dining_room",
+            "kitchen",
+            "hallway",
+            "bedroom",
+            "bathroom",
+            "hallway",
+            "entrance_hall",
+        )
+        maps = [room_map(system.kb, r) for r in tour]
+        self.waypoints = [m.waypoints[0] for m in maps if m is not None]
+        self.index = 0
+        self.sweep_s = sweep_s
+        self.arrived: float | None = None
+        self.goal = -1
+
+    def step(self, now: float) -> None:
+        from worlds.api import NavState
+
+        status = self.sim.nav_status()
+        if self.goal < 0 or (status.goal_id == self.goal and status.state is not NavState.ACTIVE):
+            if self.arrived is None and self.goal >= 0:
+                self.arrived = now
+            if self.arrived is not None and now - self.arrived < self.sweep_s:
+                self.sim.pan_camera(1.3 * math.sin(2 * math.pi * (now - self.arrived) / self.sweep_s))
+                return
+            self.sim.pan_camera(0.0)
+            x, y = self.waypoints[self.index % len(self.waypoints)]
+            self.index += 1
+            self.goal = self.sim.navigate_to_point(x, y)
+            self.arrived = None
+
+
+def _see(sim: Any, rec: _Recorder) -> None:
+    frame = sim.camera_frame()  # the frame the camera KP used at this instant (cached by the simulator)
+    for name in frame.visible_instances:
+        rec.seen.setdefault(name, []).append(frame.stamp)
+
+
+def _truth(sim: Any) -> set[Atom]:
+    return {f for f in sim.ground_truth_facts() if f[0] in COMPARED}
+
+
+def _beliefs(kb: Any) -> set[Atom]:
+    return {(f.predicate, *f.args) for f in kb.facts() if f.predicate in COMPARED}
+
+
+def _changes(sim: Any, kb: Any, rec: _Recorder, now: float) -> None:
+    truth = _truth(sim)
+    beliefs = _beliefs(kb)
+    for fact in truth - set(rec.truth_since):
+        rec.truth_since[fact] = now
+        if now > 0 and fact not in beliefs:
+            rec.pending.append(_Change(fact, True, now, tuple(a for a in fact[1:] if a in rec.entities)))
+    for fact in set(rec.truth_since) - truth:
+        del rec.truth_since[fact]
+        if fact in beliefs:
+            rec.pending.append(_Change(fact, False, now, tuple(a for a in fact[1:] if a in rec.entities)))
+    still: list[_Change] = []
+    for ch in rec.pending:
+        (rec.done if ch.reflected_at is not None else still).append(ch)
+    rec.pending = still
+
+
+def _compare(sim: Any, kb: Any, rec: _Recorder, now: float) -> None:
+    truth = _truth(sim)
+    beliefs = _beliefs(kb)
+    if beliefs:
+        rec.precision.append(len(beliefs & truth) / len(beliefs))
+    perceivable = {f for f in truth if rec.perceivable(f, rec.truth_since.get(f, now))}
+    if perceivable:
+        rec.recall.append(len(beliefs & perceivable) / len(perceivable))

@@ -1,0 +1,166 @@
+"""``knic bench kb``: knowledge-base write, query and history throughput on the ERL apartment.
+
+Figures (wall-clock time on this machine; query and state_at figures are medians):
+
+* ``memory_changes_per_s`` -- validated writes (add_fact / remove_fact, single-valued retraction included)
+  per second, in-memory journal.
+* ``durable_changes_per_s`` -- the same writes journaled to SQLite (WAL), one transaction per tick of
+  ``tick_changes`` writes (``batch()``).
+* ``query_ms_10k_facts`` -- a full-state query (``snapshot()``: every fact with its provenance, goals,
+  instances) with 10,000 facts; ``facts_list_ms_10k_facts`` is ``facts()`` alone.
+* ``state_at_ms_100k_events`` -- ``state_at(t)`` at random past times on a SQLite journal of 100,000 events
+  (median).
+
+``--quick`` shrinks every size (for tests); the sizes used are in the output.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import random
+import statistics
+import tempfile
+import time
+from pathlib import Path
+from typing import Any
+
+TARGETS = {
+    "memory_changes_per_s": (">=", 50_000.0),
+    "durable_changes_per_s": (">=", 20_000.0),
+    "query_ms_10k_facts": ("<", 5.0),
+    "state_at_ms_100k_events": ("<", 50.0),
+}
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--json", action="store_true", help="print one JSON object")
+    parser.add_argument("--quick", action="store_true", help="small sizes (seconds, not representative)")
+    parser.add_argument("--seed", type=int, default=0, help="random seed for the workload")
+
+
+def run(args: argparse.Namespace) -> int:
+    figures = measure(quick=args.quick, seed=args.seed)
+    if args.json:
+        print(json.dumps(figures))
+    else:
+        for key, value in figures.items():
+            print(f"{key:28s} {value}")
+    return 0
+
+
+class _SimClock:
+    """Simulated seconds advanced by the workload (the closed loop's time base)."""
+
+    def __init__(self) -> None:
+        self.t = 0.0
+
+    def __call__(self) -> float:
+        return self.t
+
+
+def measure(*, quick: bool = False, seed: int = 0) -> dict[str, Any]:
+    """Run every measurement and return the figures (see the module docstring)."""
+    from knowledge_base import KnowledgeBase
+
+    root = Path(__file__).resolve().parents[2] / "worlds" / "erl_home"
+    domain, problem = root / "domain.pddl", root / "erl_home_problem.pddl"
+    sizes = {
+        "memory_changes": 20_000 if quick else 200_000,
+        "durable_changes": 10_000 if quick else 100_000,
+        "tick_changes": 100,
+        "query_facts": 10_000,
+        "state_at_events": 10_000 if quick else 100_000,
+    }
+    rng = random.Random(seed)
+    out: dict[str, Any] = {}
+    clock = _SimClock()
+    kb = KnowledgeBase.from_pddl(domain, problem, clock=clock)
+    out["memory_changes_per_s"] = round(_write_rate(kb, clock, sizes["memory_changes"], 0, rng), 1)
+
+    with tempfile.TemporaryDirectory(prefix="knic-bench-kb-") as tmp:
+        clock = _SimClock()
+        kb = KnowledgeBase.from_pddl(domain, problem, Path(tmp) / "durable.sqlite", clock=clock)
+        out["durable_changes_per_s"] = round(
+            _write_rate(kb, clock, sizes["durable_changes"], sizes["tick_changes"], rng), 1
+        )
+        kb.close()
+
+        query_kb = _with_facts(KnowledgeBase.from_pddl(domain, problem, clock=_SimClock()), sizes["query_facts"])
+        out["query_facts"] = len(query_kb.facts())
+        out["query_ms_10k_facts"] = round(_median_ms(query_kb.snapshot, 30), 3)
+        out["facts_list_ms_10k_facts"] = round(_median_ms(query_kb.facts, 30), 3)
+
+        clock = _SimClock()
+        history = KnowledgeBase.from_pddl(domain, problem, Path(tmp) / "history.sqlite", clock=clock)
+        _write_rate(history, clock, sizes["state_at_events"], sizes["tick_changes"], rng)
+        events = history.journal.last_seq
+        times = [rng.uniform(0.0, clock.t) for _ in range(15)]
+        samples = []
+        for t in times:
+            start = time.perf_counter()
+            state = history.state_at(t)
+            samples.append((time.perf_counter() - start) * 1000.0)
+            assert state.time <= t
+        out["state_at_events"] = events
+        out["state_at_ms_100k_events"] = round(statistics.median(samples), 3)
+        out["state_at_ms_max"] = round(max(samples), 3)
+        history.close()
+    out.update({f"size_{k}": v for k, v in sizes.items()})
+    out["meets_targets"] = all(
+        (out[k] >= bound) if op == ">=" else (out[k] < bound) for k, (op, bound) in TARGETS.items()
+    )
+    return out
+
+
+def _write_rate(kb: Any, clock: _SimClock, n: int, tick: int, rng: random.Random) -> float:
+    """Validated writes per second: the robot moving, candidates appearing and going, rooms explored."""
+    rooms = kb.instances("room")
+    items = kb.instances("item")
+    ops = []
+    for _ in range(n):
+        r = rng.random()
+        room = rooms[rng.randrange(len(rooms))]
+        if r < 0.2:
+            ops.append(("robot_at", ("r2d2", room), True))
+        elif r < 0.6:
+            ops.append(("possibly_at", (items[rng.randrange(len(items))], room), rng.random() < 0.5))
+        else:
+            ops.append(("explored", (room,), rng.random() < 0.5))
+    add, remove = kb.add_fact, kb.remove_fact
+    start = time.perf_counter()
+    if tick:
+        for i in range(0, n, tick):
+            clock.t += 0.1
+            with kb.batch():
+                for predicate, args, assert_it in ops[i : i + tick]:
+                    (add if assert_it else remove)(predicate, *args, source="bench", status="observed")
+    else:
+        for i, (predicate, args, assert_it) in enumerate(ops):
+            if i % 100 == 0:
+                clock.t += 0.1
+            (add if assert_it else remove)(predicate, *args, source="bench", status="observed")
+    return n / (time.perf_counter() - start)
+
+
+def _with_facts(kb: Any, n: int) -> Any:
+    """Add items and rooms until ``n`` facts hold (possibly_at item room over a grid)."""
+    per_side = int(n**0.5) + 1
+    missing = n - len(kb.facts())
+    with kb.batch():
+        for i in range(per_side):
+            kb.add_instance("item", f"bench_item{i}")
+            kb.add_instance("room", f"bench_room{i}")
+        for k in range(missing):
+            i, j = divmod(k, per_side)
+            kb.add_fact("possibly_at", f"bench_item{i}", f"bench_room{j}", status="assumed")
+    return kb
+
+
+def _median_ms(fn: Any, repeat: int) -> float:
+    samples = []
+    for _ in range(repeat):
+        start = time.perf_counter()
+        fn()
+        samples.append(time.perf_counter() - start)
+    return statistics.median(samples) * 1000.0

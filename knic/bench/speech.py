@@ -1,0 +1,128 @@
+"""``knic bench speech``: speech recognition and command understanding on the shipped test set.
+
+The test set is ``tests/fixtures/speech``: WAV files synthesised with espeak-ng in several voices and speeds and
+``gold.json`` with each file's transcription, whether the command grammar covers it, and its gold frames.
+Figures (wall-clock time; the decoder is built once before timing):
+
+* ``wer`` -- word error rate of the transcripts of in-grammar utterances (edit distance / gold words);
+* ``frame_accuracy`` -- share of in-grammar utterances whose frame kinds are all right, in order;
+* ``frame_argument_accuracy`` -- share whose frames are right with every argument;
+* ``oog_rejection`` -- share of out-of-grammar utterances rejected (not accepted as a command);
+* ``false_rejection`` -- share of in-grammar utterances rejected;
+* ``ms_per_utterance`` -- mean recognition plus understanding time per utterance.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import time
+from pathlib import Path
+from typing import Any
+
+from knic.errors import KnicError
+
+FIXTURES = Path(__file__).resolve().parents[2] / "tests" / "fixtures" / "speech"
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--json", action="store_true", help="print one JSON object")
+    parser.add_argument("--fixtures", default=str(FIXTURES), help="folder with gold.json and the WAV files")
+    parser.add_argument("--limit", type=int, default=0, help="use only the first N utterances (0: all)")
+    parser.add_argument("--filler-weight", type=float, default=None, help="filler loop prior (default: built in)")
+    parser.add_argument("--verbose", action="store_true", help="list every utterance that went wrong")
+
+
+def word_errors(reference: list[str], hypothesis: list[str]) -> int:
+    """Word-level edit distance (substitutions, insertions, deletions)."""
+    previous = list(range(len(hypothesis) + 1))
+    for i, ref_word in enumerate(reference, start=1):
+        current = [i] + [0] * len(hypothesis)
+        for j, hyp_word in enumerate(hypothesis, start=1):
+            current[j] = min(previous[j] + 1, current[j - 1] + 1, previous[j - 1] + (ref_word != hyp_word))
+        previous = current
+    return previous[-1]
+
+
+def evaluate(fixtures: Path, limit: int = 0, filler_weight: float | None = None) -> dict[str, Any]:
+    """Run the test set and return the figures plus the per-utterance mistakes under ``"errors"``.
+
+    Raises:
+        KnicError: the gold file is missing or malformed.
+    """
+    from knic.language.frames import CommandFrame
+    from knic.language.speech import Recognizer, load_audio
+    from knic.language.understanding import default_grammar, understand_transcript
+    from knic.language.world import load_world
+
+    try:
+        gold = json.loads((fixtures / "gold.json").read_text(encoding="utf-8"))
+        utterances = gold["utterances"][: limit or None]
+    except (OSError, ValueError, KeyError) as exc:
+        raise KnicError(f"{fixtures / 'gold.json'}: cannot read the speech test set: {exc}") from exc
+    _, vocabulary = load_world()
+    speaker = gold.get("speaker", "annie")
+    started = time.perf_counter()
+    options = {} if filler_weight is None else {"filler_weight": filler_weight}
+    recognizer = Recognizer(default_grammar(), vocabulary, **options)
+    setup_ms = (time.perf_counter() - started) * 1000.0
+    errors_total = words_total = kinds_ok = args_ok = rejected_in = rejected_oog = n_in = n_oog = 0
+    elapsed: list[float] = []
+    durations: list[float] = []
+    mistakes: list[dict[str, Any]] = []
+    for entry in utterances:
+        audio = load_audio(fixtures / entry["file"])
+        started = time.perf_counter()
+        result = understand_transcript(recognizer.recognize(audio), vocabulary, speaker=speaker)
+        elapsed.append((time.perf_counter() - started) * 1000.0)
+        durations.append(len(audio) / 16000.0)
+        heard = str(result.extra.get("transcript", ""))
+        if entry["in_grammar"]:
+            n_in += 1
+            reference = entry["text"].split()
+            errors_total += word_errors(reference, heard.split())
+            words_total += len(reference)
+            expected = [CommandFrame.from_dict(f) for f in entry["frames"]]
+            got = list(result.frames) if result.accepted else []
+            kinds_ok += [f.kind for f in got] == [f.kind for f in expected]
+            right = [f.to_dict() for f in got] == [f.to_dict() for f in expected]
+            args_ok += right
+            rejected_in += not result.accepted
+            if not right:
+                mistakes.append({"file": entry["file"], "text": entry["text"], "heard": heard, "reason": result.reason})
+        else:
+            n_oog += 1
+            rejected_oog += not result.accepted
+            if result.accepted:
+                mistakes.append({"file": entry["file"], "text": entry["text"], "heard": heard, "accepted": True})
+    return {
+        "utterances": n_in + n_oog,
+        "in_grammar": n_in,
+        "out_of_grammar": n_oog,
+        "wer": round(errors_total / words_total, 4) if words_total else None,
+        "frame_accuracy": round(kinds_ok / n_in, 4) if n_in else None,
+        "frame_argument_accuracy": round(args_ok / n_in, 4) if n_in else None,
+        "oog_rejection": round(rejected_oog / n_oog, 4) if n_oog else None,
+        "false_rejection": round(rejected_in / n_in, 4) if n_in else None,
+        "ms_per_utterance": round(sum(elapsed) / len(elapsed), 1) if elapsed else None,
+        "audio_s_per_utterance": round(sum(durations) / len(durations), 3) if durations else None,
+        "decoder_setup_ms": round(setup_ms, 1),
+        "filler_weight": recognizer.filler_weight,
+        "errors": mistakes,
+    }
+
+
+def run(args: argparse.Namespace) -> int:
+    figures = evaluate(Path(args.fixtures), args.limit, args.filler_weight)
+    mistakes = figures.pop("errors")
+    if args.verbose:
+        figures["errors"] = mistakes
+    if args.json:
+        print(json.dumps(figures))
+    else:
+        for key, value in figures.items():
+            if key != "errors":
+                print(f"{key}: {value}")
+        for mistake in figures.get("errors", []):
+            print(f"  {mistake['file']}: said '{mistake['text']}', heard '{mistake['heard']}'")
+    return 0

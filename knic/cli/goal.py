@@ -1,0 +1,61 @@
+"""``knic goal TEXT``: understand a typed command and print its frames and PDDL goals.
+
+Nothing is added to any knowledge base: the command shows what ``knic run --goal TEXT`` would add. A command
+that is not understood prints its reason (in the JSON object with ``--json``) and exits with code 4.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+from typing import Any
+
+from knic.errors import LanguageError
+
+
+def add_world_arguments(parser: argparse.ArgumentParser) -> None:
+    """Options shared by ``knic goal`` and ``knic say``: the world and the speaker."""
+    parser.add_argument("--json", action="store_true", help="print one JSON object")
+    parser.add_argument("--speaker", default="annie", help="the person 'me' refers to (default: annie)")
+    parser.add_argument("--domain", help="PDDL domain (default: worlds/erl_home/domain.pddl)")
+    parser.add_argument("--problem", help="PDDL problem (default: worlds/erl_home/erl_home_problem.pddl)")
+    parser.add_argument("--lexicon", help="spoken names (default: lexicon.yaml beside the problem or domain)")
+
+
+def load_vocabulary(args: argparse.Namespace) -> Any:
+    """The vocabulary of the world chosen by the options."""
+    from knic.language.world import DEFAULT_DOMAIN, DEFAULT_PROBLEM, load_world
+
+    domain = args.domain or DEFAULT_DOMAIN
+    problem = args.problem or (DEFAULT_PROBLEM if args.domain is None else None)
+    return load_world(domain, problem, args.lexicon)[1]
+
+
+def print_understanding(data: dict[str, Any], as_json: bool) -> None:
+    """Print an understanding as JSON or as readable lines; raise LanguageError (exit 4) when rejected."""
+    if as_json:
+        print(json.dumps(data))
+    else:
+        if "transcript" in data:
+            print(f"heard: {data['transcript'] or '(nothing)'}")
+        for frame in data["frames"]:
+            args = ", ".join(f"{k}: {v}" for k, v in frame.items() if k != "frame")
+            print(f"frame: {frame['frame']}({args})")
+        for goal in data["goals"]:
+            print(f"goal: {goal}")
+    if not data["accepted"]:
+        raise LanguageError(f"not understood: {data['reason']}")
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("text", help='the command, e.g. "bring me my glasses"')
+    add_world_arguments(parser)
+
+
+def run(args: argparse.Namespace) -> int:
+    from knic.language.understanding import understand
+
+    vocabulary = load_vocabulary(args)
+    result = understand(args.text, vocabulary, speaker=args.speaker)
+    print_understanding(result.to_dict(), args.json)
+    return 0

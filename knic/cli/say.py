@@ -1,0 +1,28 @@
+"""``knic say FILE.wav``: recognise a spoken command and print its transcript, frames and PDDL goals.
+
+WAV files of any rate and channel count are converted in-process; other formats are refused (exit 2). Speech
+that matches no command is rejected with its reason (exit 4), never forced onto the nearest command.
+"""
+
+from __future__ import annotations
+
+import argparse
+
+from knic.cli.goal import add_world_arguments, load_vocabulary, print_understanding
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("wav", help="the spoken command as a WAV file")
+    add_world_arguments(parser)
+
+
+def run(args: argparse.Namespace) -> int:
+    from knic.language.speech import Recognizer, load_audio
+    from knic.language.understanding import default_grammar, understand_transcript
+
+    audio = load_audio(args.wav)  # refuse a bad file before loading the world
+    vocabulary = load_vocabulary(args)
+    transcript = Recognizer(default_grammar(), vocabulary).recognize(audio)
+    result = understand_transcript(transcript, vocabulary, speaker=args.speaker)
+    print_understanding(result.to_dict(), args.json)
+    return 0

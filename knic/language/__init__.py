@@ -1,0 +1,38 @@
+"""Language understanding: typed and spoken commands to validated PDDL goals.
+
+Pipeline (one module per step; the grammar is defined once and shared by text and speech):
+
+* :mod:`~knic.language.vocabulary` -- spoken names of a world's instances (knowledge base + lexicon).
+* :mod:`~knic.language.grammar` -- the ERL command grammar and its JSGF form.
+* :mod:`~knic.language.parser` -- deterministic parsing of text against the grammar.
+* :mod:`~knic.language.frames` -- command frames (BRINGING, SEARCHING, ...) with pronouns resolved.
+* :mod:`~knic.language.goals` -- frames to PDDL goals checked against the domain; adding them to a KB.
+* :mod:`~knic.language.understanding` -- :func:`understand`: text to :class:`Understanding`.
+* :mod:`~knic.language.fsg` / :mod:`~knic.language.speech` -- WAV audio to a transcript with pocketsphinx.
+* :mod:`~knic.language.dialogue` -- repeating back, yes/no confirmation, espeak-ng or printed replies.
+* :mod:`~knic.language.world` -- loading a world's knowledge base and vocabulary for the command line.
+
+Typical use::
+
+    kb, vocabulary = knic.language.world.load_world()
+    result = knic.language.understand("bring me my glasses", vocabulary, speaker="annie")
+    if result.accepted:
+        knic.language.add_goals(kb, result.goals, source="speech")
+"""
+
+from knic.language.frames import CommandFrame
+from knic.language.goals import add_goals
+from knic.language.grammar import command_grammar, to_jsgf
+from knic.language.understanding import Understanding, understand
+from knic.language.vocabulary import Lexicon, Vocabulary
+
+__all__ = [
+    "CommandFrame",
+    "Lexicon",
+    "Understanding",
+    "Vocabulary",
+    "add_goals",
+    "command_grammar",
+    "to_jsgf",
+    "understand",
+]

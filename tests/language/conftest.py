@@ -1,0 +1,30 @@
+"""Fixtures for the language tests: the ERL apartment's knowledge base and vocabulary, loaded once."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+from knic.language.vocabulary import Vocabulary
+from knic.language.world import load_world
+
+SPEECH_FIXTURES = Path(__file__).resolve().parents[1] / "fixtures" / "speech"
+
+
+@pytest.fixture(scope="session")
+def erl_world() -> tuple[Any, Vocabulary]:
+    """(knowledge base, vocabulary) of worlds/erl_home (read-only: tests that write build their own KB)."""
+    return load_world()
+
+
+@pytest.fixture(scope="session")
+def vocabulary(erl_world: tuple[Any, Vocabulary]) -> Vocabulary:
+    return erl_world[1]
+
+
+@pytest.fixture()
+def fresh_kb() -> Any:
+    """A new knowledge base of the ERL apartment, for tests that add goals."""
+    return load_world()[0]

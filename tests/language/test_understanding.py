@@ -1,0 +1,191 @@
+"""Text commands to frames and goals over the ERL apartment: phrasings, chaining, pronouns, rejections."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import pytest
+
+from knic.errors import LanguageError
+from knic.language import add_goals, understand
+from knic.language.frames import CommandFrame
+from knic.language.goals import validate_goal
+from knic.language.vocabulary import Vocabulary
+from knowledge_base import Fact
+
+# text -> (frames as "KIND role=value ...", goals)
+ACCEPTED = [
+    ("bring me my glasses", ["BRINGING theme=glasses beneficiary=me"], ["(has annie glasses)"]),
+    ("Bring me my reading glasses, please!", ["BRINGING theme=glasses beneficiary=me"], ["(has annie glasses)"]),
+    ("fetch the glasses", ["BRINGING theme=glasses beneficiary=me"], ["(has annie glasses)"]),
+    ("hand me the remote control", ["BRINGING theme=remote beneficiary=me"], ["(has annie remote)"]),
+    ("give jack the coke can", ["BRINGING theme=coke_can beneficiary=jack"], ["(has jack coke_can)"]),
+    ("deliver the tablet to Tracy", ["BRINGING theme=tablet beneficiary=tracy"], ["(has tracy tablet)"]),
+    (
+        "get me a cup from the kitchen cabinet",
+        ["BRINGING theme=cup source=kitchen_cabinet beneficiary=me"],
+        ["(has annie cup)"],
+    ),
+    ("take the mug to the kitchen", ["BRINGING theme=mug goal=kitchen"], ["(object_at mug kitchen)"]),
+    ("bring the apple to the dining table", ["BRINGING theme=apple goal=dining_table"], ["(object_on apple dining_table)"]),
+    ("put the mug on the kitchen table", ["PLACING theme=mug goal=kitchen_table"], ["(object_on mug kitchen_table)"]),
+    ("place the candle in the living room", ["PLACING theme=candle goal=living_room"], ["(object_at candle living_room)"]),
+    ("find my glasses", ["SEARCHING theme=glasses"], ["(reported glasses)"]),
+    ("look for the tablet in the living room", ["SEARCHING theme=tablet ground=living_room"], ["(reported tablet)"]),
+    ("search for jack", ["SEARCHING theme=jack"], ["(reported jack)"]),
+    ("spot the sponge", ["SEARCHING theme=sponge"], ["(reported sponge)"]),
+    ("pinpoint the soap", ["SEARCHING theme=soap"], ["(reported soap)"]),
+    ("where is the remote?", ["SEARCHING theme=remote"], ["(reported remote)"]),
+    ("lead Tracy to the bedroom", ["ACCOMPANYING theme=tracy goal=bedroom"], ["(person_at tracy bedroom)"]),
+    ("guide granny annie to the kitchen", ["ACCOMPANYING theme=annie goal=kitchen"], ["(person_at annie kitchen)"]),
+    ("escort jack to the entrance", ["ACCOMPANYING theme=jack goal=entrance_hall"], ["(person_at jack entrance_hall)"]),
+    ("take me to the living room", ["ACCOMPANYING theme=me goal=living_room"], ["(person_at annie living_room)"]),
+    ("go to the kitchen", ["MOTION goal=kitchen"], ["(robot_at r2d2 kitchen)"]),
+    ("robot, move to the bathroom", ["MOTION goal=bathroom"], ["(robot_at r2d2 bathroom)"]),
+    ("switch on the left light", ["OPERATING device=bedroom_left_light state=on"], ["(light_on bedroom_left_light)"]),
+    ("turn the right light off", ["OPERATING device=bedroom_right_light state=off"], ["(light_off bedroom_right_light)"]),
+    (
+        "turn off all the lights",
+        ["OPERATING device=all_lights state=off"],
+        ["(light_off bedroom_left_light)", "(light_off bedroom_right_light)", "(light_off hallway_light)"],
+    ),
+    (
+        "switch on the bedroom lights",
+        ["OPERATING device=bedroom_lights state=on"],
+        ["(light_on bedroom_left_light)", "(light_on bedroom_right_light)"],
+    ),
+    ("open the blinds", ["OPERATING device=bedroom_blinds state=open"], ["(device_level bedroom_blinds l100)"]),
+    ("close the blinds", ["OPERATING device=bedroom_blinds state=closed"], ["(device_level bedroom_blinds l0)"]),
+    ("half-open the blinds", ["OPERATING device=bedroom_blinds state=half-open"], ["(device_level bedroom_blinds l50)"]),
+    ("set the dimmer to 75%", ["OPERATING device=living_room_dimmer state=75"], ["(device_level living_room_dimmer l75)"]),
+    (
+        "set the dimmer to twenty five percent",
+        ["OPERATING device=living_room_dimmer state=25"],
+        ["(device_level living_room_dimmer l25)"],
+    ),
+    (
+        "locate the tablet and bring it to me",
+        ["SEARCHING theme=tablet", "BRINGING theme=tablet beneficiary=me"],
+        ["(reported tablet)", "(has annie tablet)"],
+    ),
+    (
+        "Locate Tracy, lead her to the bedroom, and bring me an apple from the kitchen cabinet",
+        [
+            "SEARCHING theme=tracy",
+            "ACCOMPANYING theme=tracy goal=bedroom",
+            "BRINGING theme=apple source=kitchen_cabinet beneficiary=me",
+        ],
+        ["(reported tracy)", "(person_at tracy bedroom)", "(has annie apple)"],
+    ),
+    (
+        "find jack then guide him to the dining room",
+        ["SEARCHING theme=jack", "ACCOMPANYING theme=jack goal=dining_room"],
+        ["(reported jack)", "(person_at jack dining_room)"],
+    ),
+    (
+        "switch off the hallway light and close the blinds",
+        ["OPERATING device=hallway_light state=off", "OPERATING device=bedroom_blinds state=closed"],
+        ["(light_off hallway_light)", "(device_level bedroom_blinds l0)"],
+    ),
+]
+
+
+def frame(spec: str) -> dict[str, str]:
+    kind, *pairs = spec.split()
+    return {"frame": kind, **dict(pair.split("=", 1) for pair in pairs)}
+
+
+@pytest.mark.parametrize(("text", "frames", "goals"), ACCEPTED, ids=[a[0] for a in ACCEPTED])
+def test_accepted_commands_give_frames_and_goals(
+    vocabulary: Vocabulary, text: str, frames: list[str], goals: list[str]
+) -> None:
+    result = understand(text, vocabulary)
+    assert result.accepted, result.reason
+    assert [f.to_dict() for f in result.frames] == [frame(f) for f in frames]
+    assert [str(g) for g in result.goals] == goals
+
+
+REJECTED = [
+    ("bring me the banana", "banana"),  # an object the world does not have
+    ("find the television", "television"),
+    ("juggle the glasses", "juggle"),  # unknown verb
+    ("tell me a joke", "command"),
+    ("colorless green ideas sleep furiously", "colorless"),  # nonsense
+    ("", "empty"),
+    ("bring me", "too early"),
+    ("set the dimmer to 30 percent", "thirty"),  # a level the domain has no constant for
+    ("lead the mug to the kitchen", "mug"),  # wrong kind of thing
+    ("bring it to me", "'it'"),  # pronoun without a referent
+    ("go to the kitchen and go to the bedroom", "contradict"),
+    ("find the mug and find the cup and find the apple and find the lemon", "lemon"),  # four actions
+    ("switch on the left light and switch it off", "it"),
+]
+
+
+@pytest.mark.parametrize(("text", "clue"), REJECTED, ids=[r[0] or "empty" for r in REJECTED])
+def test_rejected_commands_say_what_was_not_understood(vocabulary: Vocabulary, text: str, clue: str) -> None:
+    result = understand(text, vocabulary)
+    assert not result.accepted
+    assert result.goals == ()
+    assert clue in result.reason
+    assert result.to_dict()["reason"] == result.reason
+
+
+def test_unknown_object_reply_names_the_word_and_the_expected_kind(vocabulary: Vocabulary) -> None:
+    reason = understand("bring me the banana", vocabulary).reason
+    assert reason == "I do not know the word 'banana' (after 'bring me the'); expected an object"
+
+
+def test_speaker_is_who_me_refers_to(vocabulary: Vocabulary) -> None:
+    result = understand("bring me my glasses", vocabulary, speaker="tracy")
+    assert [str(g) for g in result.goals] == ["(has tracy glasses)"]
+    assert result.frames[0]["beneficiary"] == "me"
+    bad = understand("bring me my glasses", vocabulary, speaker="glasses")
+    assert not bad.accepted and "speaker" in bad.reason
+
+
+def test_json_form(vocabulary: Vocabulary) -> None:
+    data = understand("bring me my glasses", vocabulary).to_dict()
+    assert data == {
+        "text": "bring me my glasses",
+        "frames": [{"frame": "BRINGING", "theme": "glasses", "beneficiary": "me"}],
+        "goals": ["(has annie glasses)"],
+        "accepted": True,
+    }
+
+
+def test_frame_dict_round_trip() -> None:
+    original = CommandFrame("BRINGING", {"theme": "glasses", "beneficiary": "me"})
+    assert CommandFrame.from_dict(original.to_dict()) == original
+    assert str(original) == 'BRINGING(theme:"glasses", beneficiary:"me")'
+    with pytest.raises(LanguageError, match="unknown command frame"):
+        CommandFrame.from_dict({"frame": "DANCING"})
+    with pytest.raises(LanguageError, match="unknown argument"):
+        CommandFrame.from_dict({"frame": "MOTION", "speed": "fast"})
+
+
+def test_goals_are_checked_against_the_domain(vocabulary: Vocabulary) -> None:
+    validate_goal(Fact("has", ("annie", "glasses")), vocabulary)
+    with pytest.raises(LanguageError, match="no predicate 'owns'"):
+        validate_goal(Fact("owns", ("annie", "glasses")), vocabulary)
+    with pytest.raises(LanguageError, match="takes 2 argument"):
+        validate_goal(Fact("has", ("annie",)), vocabulary)
+    with pytest.raises(LanguageError, match="glasses is a item"):
+        validate_goal(Fact("has", ("glasses", "glasses")), vocabulary)
+    with pytest.raises(LanguageError, match="no 'banana'"):
+        validate_goal(Fact("has", ("annie", "banana")), vocabulary)
+
+
+def test_accepted_goals_reach_the_knowledge_base(fresh_kb: Any, vocabulary: Vocabulary) -> None:
+    result = understand("locate the tablet and bring it to me", vocabulary)
+    added = add_goals(fresh_kb, result.goals, source="test")
+    assert added == list(result.goals)
+    assert set(fresh_kb.goals()) >= {Fact("reported", ("tablet",)), Fact("has", ("annie", "tablet"))}
+
+
+def test_a_refused_goal_adds_nothing(fresh_kb: Any) -> None:
+    before = list(fresh_kb.goals())
+    goals = [Fact("reported", ("tablet",)), Fact("has", ("annie", "banana"))]
+    with pytest.raises(LanguageError, match="refused"):
+        add_goals(fresh_kb, goals)
+    assert list(fresh_kb.goals()) == before
