@@ -22,7 +22,7 @@ from __future__ import annotations
 
 import time
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import TYPE_CHECKING, TextIO
 
@@ -34,7 +34,9 @@ from knic.scheduler import Component, Scheduler
 from knic.seed import seed_kb_from_world
 from knowledge_base import BeliefStatus, Fact, KnowledgeBase
 from planner.dispatch import Dispatcher, DispatcherState
-from planner.engines import TaskPlanner, silence_up
+from planner.engines import Planner, TaskPlanner, silence_up
+from planner.model import PlanningTask
+from planner.plan import PlanResult
 from planner.recovery import RecoveryPolicy
 from planner.trace import EventKind, Trace, TraceEvent
 
@@ -75,6 +77,29 @@ ACTION_TIME_LIMITS = {
     "meet": 90.0,
     "guide": 150.0,
 }
+
+
+class SurfaceAwarePlanner:
+    """The planner, told which furniture can carry items (map knowledge the PDDL domain does not express).
+
+    ``place`` only needs ``(furniture_in ?f ?l)``, so a planner would happily put the glasses "on" the bin.
+    Before each call the ``furniture_in`` facts of furniture without a surface are left out of the *planning
+    task* (the knowledge base keeps them: the bin is in the kitchen); plans are otherwise the wrapped
+    planner's.
+
+    Args:
+        planner: the wrapped planner (:class:`planner.engines.TaskPlanner`).
+        no_surface: furniture symbols that items cannot be put on.
+    """
+
+    def __init__(self, planner: Planner, no_surface: frozenset[str]) -> None:
+        self.planner = planner
+        self.no_surface = no_surface
+
+    def solve(self, task: PlanningTask, *, timeout: float | None = None) -> PlanResult:
+        """Plan for ``task`` without the surfaceless furniture as places."""
+        facts = frozenset(a for a in task.facts if not (a[0] == "furniture_in" and a[1] in self.no_surface))
+        return self.planner.solve(replace(task, facts=facts), timeout=timeout)
 
 
 class SimulationComponent(Component):
@@ -213,7 +238,10 @@ class KnicSystem:
             self.trace = Trace(cfg.trace_stream)
             self.dispatcher = Dispatcher(
                 self.kb,
-                TaskPlanner(self.kb.domain.up_domain),
+                SurfaceAwarePlanner(
+                    TaskPlanner(self.kb.domain.up_domain),
+                    frozenset(f.name for f in self.world.furniture.values() if not f.surface),
+                ),
                 self.registry,
                 policy=RecoveryPolicy(max_replans_per_goal=12),
                 trace=self.trace,

@@ -1,9 +1,9 @@
 """The PDDL domain as the knowledge base sees it: types, predicates, constants, functions, actions, metadata.
 
 A :class:`DomainModel` is built once from a domain file (or from the domain text stored in a journal) through
-unified-planning's ``PDDLReader`` and the optional ``<domain stem>.meta.yaml`` sidecar, which says in data what
-PDDL cannot: which predicates are single-valued (``single_valued: {robot_at: [0]}``) and which actions are
-sensing actions (``sensing: {search_object: [found, object_at]}``). It is immutable after construction and
+unified-planning's ``PDDLReader`` and the optional ``<domain stem>.meta.yaml`` sidecar, which says in data
+what PDDL cannot: which predicates are single-valued (``single_valued: {robot_at: [0]}``) and which actions
+are sensing actions (``sensing: {search_object: [found, object_at]}``). It is immutable after construction and
 precomputes the per-predicate type tables that make validating a write a few dictionary look-ups.
 
 Failure behaviour: a file that does not parse raises :class:`~knic.errors.PDDLParseError` naming file, line,
@@ -30,11 +30,13 @@ OBJECT = "object"
 
 
 def meta_path_for(domain_path: Path) -> Path:
-    """The sidecar path for a domain: ``worlds/erl_home/domain.pddl`` -> ``worlds/erl_home/domain.meta.yaml``."""
+    """The sidecar of a domain: ``worlds/erl_home/domain.pddl`` -> ``worlds/erl_home/domain.meta.yaml``."""
     return domain_path.with_name(f"{domain_path.stem}.meta.yaml")
 
 
-def parse_with_up(domain_text: str, problem_text: str | None, domain_file: str, problem_file: str | None) -> Any:
+def parse_with_up(
+    domain_text: str, problem_text: str | None, domain_file: str, problem_file: str | None
+) -> Any:
     """Parse PDDL text with unified-planning, turning its exceptions into the project's error tree.
 
     Args:
@@ -163,7 +165,9 @@ class DomainModel:
         predicates: dict[str, tuple[tuple[str, str], ...]] = {}
         functions: dict[str, tuple[tuple[str, str], ...]] = {}
         for fluent in problem.fluents:
-            sig = tuple((p.name, p.type.name if p.type.is_user_type() else str(p.type)) for p in fluent.signature)
+            sig = tuple(
+                (p.name, p.type.name if p.type.is_user_type() else str(p.type)) for p in fluent.signature
+            )
             if fluent.type.is_bool_type():
                 predicates[fluent.name] = sig
             else:
@@ -189,7 +193,7 @@ class DomainModel:
         )
 
     def to_summary(self) -> dict[str, Any]:
-        """The parsed symbols as JSON-able data (stored in journals so readers need not run the PDDL parser)."""
+        """The parsed symbols as JSON-able data (journals store it: readers need not run the PDDL parser)."""
         return {
             "name": self.name,
             "types": dict(self.types),
@@ -299,7 +303,9 @@ def _parse_meta(
                 f"{meta_source}: single_valued {pred}: expected a list of argument positions 0..{arity - 1}"
             )
         if len(positions) >= arity:
-            raise PDDLValidationError(f"{meta_source}: single_valued {pred}: the key must leave an argument free")
+            raise PDDLValidationError(
+                f"{meta_source}: single_valued {pred}: the key must leave an argument free"
+            )
         single[pred] = tuple(positions)
     sensing: dict[str, tuple[str, ...]] = {}
     for action, preds in (data.get("sensing") or {}).items():

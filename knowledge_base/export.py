@@ -43,7 +43,7 @@ def state_to_up(domain: DomainModel, state: State, name: str) -> Any:
 
 
 def state_from_up(domain: DomainModel, problem: Any) -> ProblemContent:
-    """Objects, facts, functions and goals of a unified-planning ``Problem`` (inverse of :func:`state_to_up`)."""
+    """Objects, facts, functions and goals of a unified-planning ``Problem`` (inverse of ``state_to_up``)."""
     return content_from_up(domain, problem)
 
 

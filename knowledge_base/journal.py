@@ -2,7 +2,7 @@
 
 Two implementations share one interface:
 
-* :class:`MemoryJournal` keeps the events in a list (a knowledge base without a path).
+* :class:`Journal` keeps the events in a list (a knowledge base without a path).
 * :class:`SqliteJournal` keeps them in a SQLite database in WAL mode, together with the domain text and its
   metadata, so that a reader in another process needs nothing but the file.
 
@@ -34,7 +34,7 @@ from typing import Any
 from knic.errors import JournalError
 from knowledge_base.model import BeliefStatus, Change, ChangeKind, Fact, Provenance, State, apply_change
 
-__all__ = ["Journal", "MemoryJournal", "SqliteJournal"]
+__all__ = ["Journal", "SqliteJournal"]
 
 #: Fewest events between two checkpoints; the interval grows with the state so checkpoints stay cheap.
 CHECKPOINT_MIN_EVENTS = 1000
@@ -77,9 +77,16 @@ class Journal:
         """
         if not changes:
             return
-        checkpoint = self._checkpoint_due(changes[-1].seq, state_after)
+        last = changes[-1].seq
+        checkpoint = last - self._last_checkpoint >= CHECKPOINT_MIN_EVENTS and self._checkpoint_due(
+            last, state_after
+        )
         self._store(changes, state_after if checkpoint else None)
-        self._note_times(c.time for c in changes)
+        times = self._times
+        for c in changes:
+            if times and c.time < times[-1]:
+                self._monotone = False
+            times.append(c.time)
         if checkpoint:
             self._checkpoint_seqs.append(changes[-1].seq)
             self._last_checkpoint = changes[-1].seq
@@ -224,7 +231,9 @@ class SqliteJournal(Journal):
             The new events, in order.
         """
         try:
-            rows = self._db.execute("SELECT * FROM events WHERE seq > ? ORDER BY seq", (self.last_seq,)).fetchall()
+            rows = self._db.execute(
+                "SELECT * FROM events WHERE seq > ? ORDER BY seq", (self.last_seq,)
+            ).fetchall()
         except sqlite3.DatabaseError as exc:
             raise JournalError(f"{self.path}: cannot read journal ({exc})") from None
         changes = [_row_to_change(r) for r in rows]

@@ -1,9 +1,10 @@
-"""The knowledge base: the robot's symbolic world (instances, facts, goals, functions, anchors) and its history.
+"""The knowledge base: the robot's symbolic world (instances, facts, goals, functions, anchors), its history.
 
 Lifecycle: build it with :meth:`KnowledgeBase.from_pddl` (domain, optional problem, optional journal path) or
 reopen a journal with :meth:`KnowledgeBase.from_journal`; write with the paper's operations
-(``add_instance``, ``add_fact``, ``remove_fact``, ``add_goal``, ...), read with the queries, and ``close()`` it
-when done. It is single-threaded: one thread writes and reads; other processes read the journal file.
+(``add_instance``, ``add_fact``, ``remove_fact``, ``add_goal``, ...), read with the queries, and
+``close()`` it when done. It is single-threaded: one thread writes and reads; other processes read the
+journal file.
 
 Every write is validated against the domain before anything changes (unknown predicate, function or type,
 wrong arity, unknown instance, argument of the wrong type, removing an instance still in use, bad
@@ -25,12 +26,13 @@ import time
 from collections.abc import Callable, Iterator, Sequence
 from contextlib import contextmanager
 from pathlib import Path
-from typing import Any, NoReturn
+from typing import Any
 
 from knic.errors import JournalError, KnowledgeBaseError
 from knowledge_base.domain import DomainModel
 from knowledge_base.journal import Journal, SqliteJournal
 from knowledge_base.model import BeliefStatus, Change, ChangeKind, Fact, Provenance, State
+from knowledge_base.store import IndexedState
 
 __all__ = ["KnowledgeBase"]
 
@@ -47,7 +49,7 @@ _SET_FUNCTION, _SET_ANCHOR = ChangeKind.SET_FUNCTION, ChangeKind.SET_ANCHOR
 _WILDCARDS = (None, "?")
 
 
-class KnowledgeBase:
+class KnowledgeBase(IndexedState):
     """The PDDL model of the world as the robot believes it, with provenance and history.
 
     Args:
@@ -83,7 +85,9 @@ class KnowledgeBase:
         self._pred_types = {
             p: tuple(domain.subtypes(t) for _, t in sig) for p, sig in domain.predicates.items()
         }
-        self._func_types = {f: tuple(domain.subtypes(t) for _, t in sig) for f, sig in domain.functions.items()}
+        self._func_types = {
+            f: tuple(domain.subtypes(t) for _, t in sig) for f, sig in domain.functions.items()
+        }
         self._single = dict(domain.single_valued)
         self._rebuild_indexes()
 
@@ -147,7 +151,9 @@ class KnowledgeBase:
                 summary = json.loads(meta["domain_summary"])
             except ValueError:
                 raise JournalError(f"{path}: corrupt domain summary") from None
-            domain = DomainModel.from_summary(summary, meta["domain_text"], meta.get("meta_text", ""), source=source)
+            domain = DomainModel.from_summary(
+                summary, meta["domain_text"], meta.get("meta_text", ""), source=source
+            )
         else:
             domain = DomainModel.from_text(
                 meta["domain_text"], meta.get("meta_text", ""), source=source, meta_source=f"{path}:meta"
@@ -193,7 +199,7 @@ class KnowledgeBase:
     # ================================================================= writes
     def add_instance(
         self,
-        type: str,  # noqa: A002 - the contract's name
+        type: str,
         name: str,
         *,
         source: str = "user",
@@ -215,7 +221,9 @@ class KnowledgeBase:
         if current == type:
             return False
         if current is not None:
-            raise KnowledgeBaseError(f"add_instance {name} - {type}: {name!r} is already an instance of {current!r}")
+            raise KnowledgeBaseError(
+                f"add_instance {name} - {type}: {name!r} is already an instance of {current!r}"
+            )
         prov = self._prov(source, at, status, confidence, support)
         self._commit([self._change(prov, _ADD_INSTANCE, type, (name,))])
         return True
@@ -239,7 +247,9 @@ class KnowledgeBase:
         if type_name is None:
             return False
         if name in self.domain.constants:
-            raise KnowledgeBaseError(f"remove_instance {name}: {name!r} is a constant of domain {self.domain.name}")
+            raise KnowledgeBaseError(
+                f"remove_instance {name}: {name!r} is a constant of domain {self.domain.name}"
+            )
         if self._uses.get(name, 0):
             raise KnowledgeBaseError(f"remove_instance {name}: still used by {self._user_of(name)}")
         prov = self._prov(source, at, status, confidence, support)
@@ -266,7 +276,14 @@ class KnowledgeBase:
             KnowledgeBaseError: unknown predicate, wrong arity, unknown instance, wrong argument type, bad
                 provenance.
         """
-        self._check(predicate, args, self._pred_types, "predicate")
+        # validation inlined (hot path): same checks as _check
+        allowed = self._pred_types.get(predicate)
+        if allowed is None or len(allowed) != len(args):
+            self._explain(predicate, args, self._pred_types, "predicate")
+        instances = self._state.instances
+        for arg, types in zip(args, allowed, strict=True):
+            if instances.get(arg) not in types:
+                self._explain(predicate, args, self._pred_types, "predicate")
         prov = self._prov(source, at, status, confidence, support)
         fact = Fact(predicate, args)
         old = self._state.facts.get(fact)
@@ -370,7 +387,9 @@ class KnowledgeBase:
         except (TypeError, ValueError):
             number = math.nan
         if not math.isfinite(number):
-            raise KnowledgeBaseError(f"set_function {Fact(name, args)}: value {value!r} is not a finite number")
+            raise KnowledgeBaseError(
+                f"set_function {Fact(name, args)}: value {value!r} is not a finite number"
+            )
         if self._state.functions.get(Fact(name, args)) == number:
             return False
         prov = self._prov(source, at, status, confidence, support)
@@ -401,7 +420,9 @@ class KnowledgeBase:
                 raise TypeError("not a dict")
             copy = json.loads(json.dumps(geometry, allow_nan=False))
         except (TypeError, ValueError) as exc:
-            raise KnowledgeBaseError(f"set_anchor {symbol}: geometry must be a JSON-able dict ({exc})") from None
+            raise KnowledgeBaseError(
+                f"set_anchor {symbol}: geometry must be a JSON-able dict ({exc})"
+            ) from None
         prov = self._prov(source, at, status, confidence, support)
         self._commit([self._change(prov, _SET_ANCHOR, symbol, (), copy)])
 
@@ -460,7 +481,7 @@ class KnowledgeBase:
         return changes
 
     # ================================================================= queries
-    def instances(self, type: str | None = None) -> list[str]:  # noqa: A002 - the contract's name
+    def instances(self, type: str | None = None) -> list[str]:
         """Instance names, optionally of one type including its subtypes (constants included).
 
         Raises:
@@ -491,7 +512,9 @@ class KnowledgeBase:
         if sig is None:
             raise KnowledgeBaseError(f"facts: unknown predicate {predicate!r}")
         if len(pattern) > len(sig):
-            raise KnowledgeBaseError(f"facts: pattern for {predicate} has {len(pattern)} items, arity {len(sig)}")
+            raise KnowledgeBaseError(
+                f"facts: pattern for {predicate} has {len(pattern)} items, arity {len(sig)}"
+            )
         found = self._by_pred.get(predicate)
         if not found:
             return []
@@ -502,7 +525,7 @@ class KnowledgeBase:
         if positions is not None and len(fixed) == len(positions) and all(i in positions for i, _ in fixed):
             # the pattern fixes exactly the key of a single-valued predicate: one index look-up
             key = tuple([v for _, v in sorted(fixed, key=lambda iv: positions.index(iv[0]))])
-            hit = self._sv_index.get((predicate, key))  # type: ignore[arg-type]
+            hit = self._sv_index.get((predicate, key))
             return [] if hit is None else [hit]
         return [f for f in found if all(f.args[i] == v for i, v in fixed)]
 
@@ -526,7 +549,7 @@ class KnowledgeBase:
         return self._state.functions.get(Fact(name, args))
 
     def why(self, fact: Fact | str) -> Provenance | None:
-        """Why the knowledge base believes a fact (source, since, status, confidence, support); None if not."""
+        """Why a fact is believed (source, since, status, confidence, support); None if it does not hold."""
         if isinstance(fact, str):
             fact = Fact.parse(fact)
         return self._state.facts.get(fact)
@@ -561,38 +584,17 @@ class KnowledgeBase:
         return state_to_pddl(self.domain, self._state, self.problem_name)
 
     # ================================================================= internals
-    def _check(self, name: str, args: tuple[str, ...], table: dict[str, tuple[frozenset[str], ...]], what: str) -> None:
-        allowed = table.get(name)
-        if allowed is None or len(allowed) != len(args):
-            self._explain(name, args, table, what)
-        instances = self._state.instances
-        for arg, types in zip(args, allowed, strict=True):  # type: ignore[arg-type]
-            if instances.get(arg) not in types:
-                self._explain(name, args, table, what)
-
-    def _explain(self, name: str, args: tuple[str, ...], table: dict[str, Any], what: str) -> NoReturn:
-        atom = str(Fact(name, tuple(str(a) for a in args)))
-        sig = self.domain.signature(name)
-        if name not in table or sig is None:
-            raise KnowledgeBaseError(f"{atom}: unknown {what} {name!r} in domain {self.domain.name}")
-        if len(sig) != len(args):
-            raise KnowledgeBaseError(f"{atom}: {name} takes {len(sig)} arguments, got {len(args)}")
-        for (param, type_name), arg in zip(sig, args, strict=True):
-            actual = self._state.instances.get(arg) if isinstance(arg, str) else None
-            if actual is None:
-                raise KnowledgeBaseError(f"{atom}: unknown instance {arg!r}")
-            if not self.domain.is_subtype(actual, type_name):
-                raise KnowledgeBaseError(
-                    f"{atom}: argument ?{param} must be of type {type_name}, {arg!r} is a {actual}"
-                )
-        raise KnowledgeBaseError(f"{atom}: invalid")  # pragma: no cover - the checks above are exhaustive
-
     def _prov(
         self, source: str, at: float | None, status: Any, confidence: float, support: Sequence[str]
     ) -> Provenance:
         belief = _STATUSES.get(status)
+        if belief is not None and confidence == 1.0 and not support and source.__class__ is str and source:
+            # the common case, checked cheaply
+            return Provenance(source, self._clock() if at is None else float(at), belief, 1.0, ())
         if belief is None:
-            raise KnowledgeBaseError(f"unknown belief status {status!r}: use one of {[s.value for s in BeliefStatus]}")
+            raise KnowledgeBaseError(
+                f"unknown belief status {status!r}: use one of {[s.value for s in BeliefStatus]}"
+            )
         if not 0.0 <= confidence <= 1.0:
             raise KnowledgeBaseError(f"confidence {confidence!r} is outside 0..1")
         if not isinstance(source, str) or not source:
@@ -625,6 +627,8 @@ class KnowledgeBase:
         self._notify(changes)
 
     def _notify(self, changes: Sequence[Change]) -> None:
+        if not self._subscribers:
+            return
         for callback in list(self._subscribers):
             for change in changes:
                 try:
@@ -640,116 +644,3 @@ class KnowledgeBase:
         self._seq = seq
         self._state.seq = seq
         self._state.time = stamp
-
-    # state mutation with derived indexes (facts by predicate, single-valued keys, instance use counts)
-    def _rebuild_indexes(self) -> None:
-        self._by_pred: dict[str, dict[Fact, None]] = {}
-        self._sv_index: dict[tuple[str, tuple[str, ...]], Fact] = {}
-        self._uses: dict[str, int] = {}
-        facts = dict(self._state.facts)
-        self._state.facts.clear()
-        for fact, prov in facts.items():
-            self._put_fact(fact, prov)
-        for fact in list(self._state.goals) + list(self._state.functions):
-            self._use(fact.args, 1)
-
-    def _use(self, args: tuple[str, ...], delta: int) -> None:
-        uses = self._uses
-        for a in args:
-            uses[a] = uses.get(a, 0) + delta
-
-    def _put_fact(self, fact: Fact, prov: Provenance) -> Provenance | None:
-        facts = self._state.facts
-        old = facts.get(fact)
-        facts[fact] = prov
-        if old is None:
-            self._by_pred.setdefault(fact.predicate, {})[fact] = None
-            positions = self._single.get(fact.predicate)
-            if positions is not None:
-                self._sv_index[(fact.predicate, tuple([fact.args[i] for i in positions]))] = fact
-            self._use(fact.args, 1)
-        return old
-
-    def _drop_fact(self, fact: Fact) -> Provenance | None:
-        old = self._state.facts.pop(fact, None)
-        if old is not None:
-            del self._by_pred[fact.predicate][fact]
-            positions = self._single.get(fact.predicate)
-            if positions is not None:
-                self._sv_index.pop((fact.predicate, tuple([fact.args[i] for i in positions])), None)
-            self._use(fact.args, -1)
-        return old
-
-    def _apply(self, c: Change) -> Any:
-        """Apply a change to the live state; return what :meth:`_revert` needs to undo it."""
-        state = self._state
-        kind = c.kind
-        old: Any = None
-        if kind is _ADD_FACT:
-            old = self._put_fact(Fact(c.name, c.args), c.provenance)
-        elif kind is _REMOVE_FACT:
-            old = self._drop_fact(Fact(c.name, c.args))
-        elif kind is _ADD_INSTANCE:
-            state.instances[c.args[0]] = c.name
-        elif kind is _REMOVE_INSTANCE:
-            old = (state.instances.pop(c.args[0]), state.anchors.pop(c.args[0], None))
-        elif kind is _ADD_GOAL:
-            state.goals[Fact(c.name, c.args)] = c.provenance
-            self._use(c.args, 1)
-        elif kind is _REMOVE_GOAL:
-            old = state.goals.pop(Fact(c.name, c.args))
-            self._use(c.args, -1)
-        elif kind is _SET_FUNCTION:
-            key = Fact(c.name, c.args)
-            old = state.functions.get(key)
-            state.functions[key] = c.value
-            if old is None:
-                self._use(c.args, 1)
-        elif kind is _SET_ANCHOR:
-            old = state.anchors.get(c.name)
-            state.anchors[c.name] = (c.value, c.provenance)
-        state.seq = c.seq
-        state.time = c.time
-        return old
-
-    def _revert(self, c: Change, old: Any) -> None:
-        state = self._state
-        kind = c.kind
-        if kind is _ADD_FACT:
-            if old is None:
-                self._drop_fact(Fact(c.name, c.args))
-            else:
-                state.facts[Fact(c.name, c.args)] = old
-        elif kind is _REMOVE_FACT:
-            self._put_fact(Fact(c.name, c.args), old)
-        elif kind is _ADD_INSTANCE:
-            del state.instances[c.args[0]]
-        elif kind is _REMOVE_INSTANCE:
-            state.instances[c.args[0]] = old[0]
-            if old[1] is not None:
-                state.anchors[c.args[0]] = old[1]
-        elif kind is _ADD_GOAL:
-            del state.goals[Fact(c.name, c.args)]
-            self._use(c.args, -1)
-        elif kind is _REMOVE_GOAL:
-            state.goals[Fact(c.name, c.args)] = old
-            self._use(c.args, 1)
-        elif kind is _SET_FUNCTION:
-            key = Fact(c.name, c.args)
-            if old is None:
-                del state.functions[key]
-                self._use(c.args, -1)
-            else:
-                state.functions[key] = old
-        elif kind is _SET_ANCHOR:
-            if old is None:
-                del state.anchors[c.name]
-            else:
-                state.anchors[c.name] = old
-
-    def _user_of(self, name: str) -> str:
-        for kind, items in (("fact", self._state.facts), ("goal", self._state.goals), ("function", self._state.functions)):
-            for fact in items:
-                if name in fact.args:
-                    return f"{kind} {fact}"
-        return "another record"  # pragma: no cover - use counts and contents agree

@@ -58,23 +58,24 @@ class Fact(NamedTuple):
         """
         match = _ATOM_RE.match(text.strip())
         if match is None or match.group(1).startswith("?"):
-            raise KnowledgeBaseError(f"cannot parse fact {text!r}: expected a ground atom like '(pred arg1 arg2)'")
+            raise KnowledgeBaseError(
+                f"cannot parse fact {text!r}: expected a ground atom like '(pred arg1 arg2)'"
+            )
         args = tuple(a.lower() for a in match.group(2).split())
         if any(a.startswith("?") for a in args):
-            raise KnowledgeBaseError(f"cannot parse fact {text!r}: variables ('?x') are not allowed in a fact")
+            raise KnowledgeBaseError(
+                f"cannot parse fact {text!r}: variables ('?x') are not allowed in a fact"
+            )
         return cls(match.group(1).lower(), args)
 
 
-class BeliefStatus(str, enum.Enum):
+class BeliefStatus(enum.StrEnum):
     """Why a fact is believed: given (problem file, user), observed (perception), assumed (prior), effect."""
 
     GIVEN = "given"
     OBSERVED = "observed"
     ASSUMED = "assumed"
     EFFECT = "effect"
-
-    def __str__(self) -> str:
-        return self.value
 
 
 class Provenance(NamedTuple):
@@ -95,7 +96,7 @@ class Provenance(NamedTuple):
     support: tuple[str, ...]
 
 
-class ChangeKind(str, enum.Enum):
+class ChangeKind(enum.StrEnum):
     """The kinds of events in the history journal."""
 
     ADD_INSTANCE = "add_instance"
@@ -106,9 +107,6 @@ class ChangeKind(str, enum.Enum):
     REMOVE_GOAL = "remove_goal"
     SET_FUNCTION = "set_function"
     SET_ANCHOR = "set_anchor"
-
-    def __str__(self) -> str:
-        return self.value
 
 
 class Change(NamedTuple):
@@ -153,7 +151,9 @@ class Change(NamedTuple):
         return f"t={self.time:.2f} {self.kind.value} {what} by {prov.source} [{prov.status.value}]"
 
 
-_FACT_KINDS = frozenset({ChangeKind.ADD_FACT, ChangeKind.REMOVE_FACT, ChangeKind.ADD_GOAL, ChangeKind.REMOVE_GOAL})
+_FACT_KINDS = frozenset(
+    {ChangeKind.ADD_FACT, ChangeKind.REMOVE_FACT, ChangeKind.ADD_GOAL, ChangeKind.REMOVE_GOAL}
+)
 
 
 @dataclass

@@ -68,7 +68,7 @@ def load_problem(domain: DomainModel, path: str | Path) -> ProblemContent:
 
 
 def parse_problem_text(domain: DomainModel, text: str, *, source: str = "<problem>") -> ProblemContent:
-    """Check and parse problem text (see :func:`load_problem`); the same texts give the same (cached) result."""
+    """Check and parse problem text (see :func:`load_problem`); the same texts give the same cached result."""
     return _parse_cached(domain, text, source)
 
 
@@ -118,7 +118,7 @@ def _flatten_goal(node: Any, out: list[Fact], source: str) -> None:
 
 
 # --------------------------------------------------------------------- s-expressions with line numbers
-class _List(list):  # type: ignore[type-arg]
+class _List(list):
     """A parenthesised list remembering the line it starts on."""
 
     line = 0
@@ -170,7 +170,8 @@ def _prescan(domain: DomainModel, tree: _List, source: str) -> None:
     dom = _section(tree, ":domain")
     if dom is not None and len(dom) == 2 and dom[1] != domain.name:
         raise PDDLValidationError(
-            f"{source}:{dom.line}: problem is for domain {str(dom[1])!r}, but the domain loaded is {domain.name!r}"
+            f"{source}:{dom.line}: problem is for domain {str(dom[1])!r}, "
+            f"but the domain loaded is {domain.name!r}"
         )
     objects = dict(domain.constants)
     section = _section(tree, ":objects")

@@ -243,6 +243,7 @@ class Dispatcher:
             if not goals:
                 return
         task = task_from_kb(self.kb, goals)
+        self.achieved.difference_update(g for g in goals if g not in task.facts)  # to be achieved again
         result = self.planner.solve(task, timeout=self.planning_timeout)
         self.last_result = result
         self.plans += 1
@@ -253,6 +254,7 @@ class Dispatcher:
             return
         for goal in result.unreachable_goals:
             self._drop(goal, "unreachable: no plan reaches it from what the robot knows", now)
+        self._planned_goals = frozenset(self._active_goals())
         if not result.has_plan:
             return
         check = check_plan(task.domain, task.facts, result.plan, result.reachable_goals, task.objects)
@@ -476,6 +478,7 @@ class Dispatcher:
                 self.achieved.discard(goal)
 
     def _finish_idle(self) -> None:
+        self._replans_of.clear()
         if self.current is None:
             self.state = DispatcherState.IDLE
             self.plan, self.index, self._planned_goals = (), 0, None

@@ -38,6 +38,7 @@ from planner.validate import check_plan, validate_with_up
 
 ENGINES = ("auto", "knic", "fast-downward", "tamer")
 _UP_NAMES = {"fast-downward": "fast-downward", "tamer": "tamer"}
+QUICK_EVALUATIONS = 20  # states the first all-goals-at-once try may evaluate
 
 
 class Planner(Protocol):
@@ -205,7 +206,7 @@ class TaskPlanner:
         search = StripsSearch(grounded.actions, task.facts)
         unreachable = list(grounded.unreachable_goals)
         wanted = [g for g in task.goals if g not in set(unreachable)]
-        steps = search.solve(wanted, self.node_limit, deadline)
+        steps = self._solve_all(search, wanted, deadline)
         if steps is None and wanted:
             steps, wanted = self._greedy_subset(search, wanted, deadline)
             unreachable = [g for g in task.goals if g not in set(wanted)]
@@ -220,6 +221,26 @@ class TaskPlanner:
         else:
             status = PlanStatus.PARTIAL if unreachable else PlanStatus.SOLVED
         return PlanResult(status, plan, task.goals, tuple(unreachable), 0.0, "knic", "", stats)
+
+    def _solve_all(self, search: StripsSearch, goals: list[Atom], deadline: float) -> list[Any] | None:
+        """All goals at once on a small budget, then goal by goal (FF's goal agenda), then all at once.
+
+        The small first try keeps plans short where that is easy (interleaving goals); the goal agenda is what
+        makes long navigation tasks with several goals fast.
+
+        ``None`` means the goals are unreachable together. Raises SearchLimitReached when the node budget
+        runs out (the caller falls back to Fast Downward) or on timeout.
+        """
+        if len(goals) >= 2:
+            try:
+                return search.solve(goals, QUICK_EVALUATIONS, deadline)
+            except SearchLimitReached as exc:
+                if exc.timeout:
+                    raise
+            serial = search.solve_serially(goals, self.node_limit, deadline)
+            if serial is not None:
+                return serial
+        return search.solve(goals, self.node_limit, deadline)
 
     def _greedy_subset(
         self, search: StripsSearch, goals: list[Atom], deadline: float

@@ -144,9 +144,13 @@ class StripsSearch:
         return out
 
     def solve(
-        self, goals: list[Atom], node_limit: int = 200_000, deadline: float | None = None
+        self,
+        goals: list[Atom],
+        node_limit: int = 200_000,
+        deadline: float | None = None,
+        start: frozenset[int] | None = None,
     ) -> list[GroundAction] | None:
-        """A plan reaching every atom in ``goals`` from the initial state, or ``None`` when none exists.
+        """A plan reaching every atom in ``goals`` from ``start`` (default: the initial state), or ``None``.
 
         Lazy greedy best-first search as Fast Downward's ``lazy_greedy([ff], preferred=[ff])``: successors
         are queued with their parent's value and evaluated when taken out; successors by helpful actions
@@ -163,7 +167,7 @@ class StripsSearch:
         if any(g not in self.atom_ids and g not in self.init_atoms for g in goals):
             return None
         goal_ids = tuple(self.atom_ids[g] for g in goals if g in self.atom_ids)
-        start = self.init
+        start = self.init if start is None else start
         parents: dict[frozenset[int], tuple[frozenset[int] | None, int]] = {start: (None, -1)}
         counter = itertools.count()
         preferred: list[tuple[float, int, frozenset[int], int]] = []
@@ -209,6 +213,37 @@ class StripsSearch:
                 else:
                     heapq.heappush(regular, entry)
         return None
+
+    def solve_serially(
+        self, goals: list[Atom], node_limit: int, deadline: float | None = None
+    ) -> list[GroundAction] | None:
+        """Reach the goals one more at a time (FF's goal agenda): plan for the first goal, then from the
+        state reached for the first two, and so on. Returns the concatenated plan, or ``None`` when a stage
+        fails (the caller then searches for all goals at once). Raises SearchLimitReached only on timeout.
+        """
+        state = self.init
+        plan: list[GroundAction] = []
+        for i in range(1, len(goals) + 1):
+            try:
+                part = self.solve(goals[:i], node_limit, deadline, start=state)
+            except SearchLimitReached as exc:
+                if exc.timeout:
+                    raise
+                return None
+            if part is None:
+                return None
+            state = self.apply_all(state, part)
+            plan += part
+        return plan
+
+    def apply_all(self, state: frozenset[int], actions: list[GroundAction]) -> frozenset[int]:
+        """The state reached by applying ``actions`` (assumed applicable) from ``state``."""
+        ids = self.atom_ids
+        current = set(state)
+        for action in actions:
+            current.difference_update(ids[a] for a in action.delete)
+            current.update(ids[a] for a in action.add)
+        return frozenset(current)
 
     def _extract(
         self, parents: dict[frozenset[int], tuple[frozenset[int] | None, int]], state: frozenset[int]

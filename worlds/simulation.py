@@ -26,12 +26,13 @@ from worlds.api import (
     SoundEvent,
     Utterance,
 )
-from worlds.geometry import Point, segment_distance, wrap_angle
+from worlds.geometry import Point, wrap_angle
 from worlds.loader import load_world
 from worlds.model import Device, World
 from worlds.scenario import Event, Scenario, load_scenario
+from worlds.sim.contacts import ContactMonitor
 from worlds.sim.items import ItemState, fall_step, free_spots
-from worlds.sim.navigation import GridMap, wall_segments
+from worlds.sim.navigation import GridMap
 from worlds.sim.people import PeopleController, PersonState
 from worlds.sim.perception import add_depth_noise, detect
 from worlds.sim.robot import BaseController
@@ -94,7 +95,7 @@ class Simulation:
             np.random.default_rng(s) for s in streams
         )
         self.grid = GridMap.from_world(w)
-        self._walls = wall_segments(w)
+        self._contacts = ContactMonitor(w)
         self._base = BaseController(w.robot, self.grid)
         self._people = PeopleController(w, self.grid, self, self._rng_people)
         self._items = {name: ItemState.from_item(it) for name, it in w.items.items()}
@@ -109,8 +110,7 @@ class Simulation:
         self._sounds: list[SoundEvent] = []
         self._heard: list[Utterance] = []
         self._spoken: list[Utterance] = []
-        self._touching: set[str] = set()
-        self._bumps = self._hits = self._drops = 0
+        self._drops = 0
         self._events = list(self._scenario.events) if self._scenario else []
         self._frame: CameraFrame | None = None
         self._closed = False
@@ -170,9 +170,11 @@ class Simulation:
             r = self._base
             self._people.update(h, self._time, (r.x, r.y, self._world.robot.radius))
             before = (r.x, r.y)
-            r.update(h, self._people.discs(), self._base_may_stand)
+            r.update(
+                h, self._people.discs(), lambda x, y: self._contacts.may_stand(x, y, self._people.discs())
+            )
             if (r.x, r.y) != before:
-                self._update_contacts()
+                self._contacts.update(r.x, r.y, self._people.discs())
             for it in self._items.values():
                 if it.vz is not None:
                     fall_step(self._world, it, h)
@@ -269,6 +271,8 @@ class Simulation:
         wx, wy = self._world.rooms[room].waypoint
         xs, ys, free = self._free_cells()
         sel = free & (np.hypot(xs - wx, ys - wy) <= ROOM_GOAL_RADIUS)
+        for _, px, py, pr in self._people.discs():  # not where somebody stands
+            sel &= np.hypot(xs - px, ys - py) > pr + self._world.robot.radius + 0.15
         goals = list(zip(xs[sel].tolist(), ys[sel].tolist(), strict=True))
         if not goals:
             near = self.grid.nearest_free(wx, wy, 1.5)
@@ -527,7 +531,8 @@ class Simulation:
 
     def counters(self) -> Counters:
         """Penalty counters."""
-        return Counters(bumps=self._bumps, person_hits=self._hits, drops=self._drops)
+        c = self._contacts
+        return Counters(bumps=c.bumps, person_hits=c.hits, drops=self._drops)
 
     def close(self) -> None:
         """Disconnect pybullet (idempotent)."""
@@ -583,46 +588,6 @@ class Simulation:
         elif it.holder is not None:
             p = self._people.people[it.holder]
             it.x, it.y, it.z = p.x, p.y, p.z_base(self._world) + 0.9
-
-    def _clearance(self, x: float, y: float) -> tuple[float, str]:
-        """Distance from a point to the nearest furniture or wall, and its name (``"wall"``)."""
-        best = (math.inf, "")
-        for f in self._world.furniture.values():
-            d = f.distance(x, y)
-            if d < best[0]:
-                best = (d, f.name)
-        half = self._world.wall_thickness / 2
-        for a, b in self._walls:
-            d = segment_distance(x, y, a, b) - half
-            if d < best[0]:
-                best = (d, "wall")
-        return best
-
-    def _base_may_stand(self, x: float, y: float) -> bool:
-        """Velocity mode: the base may press 2 cm into an obstacle or person (bumper), no deeper."""
-        rad = self._world.robot.radius
-        if self._clearance(x, y)[0] < rad - 0.02:
-            return False
-        return all(math.hypot(x - px, y - py) >= rad + pr - 0.02 for _, px, py, pr in self._people.discs())
-
-    def _update_contacts(self) -> None:
-        x, y, rad = self._base.x, self._base.y, self._world.robot.radius
-        touching: set[str] = set()
-        for f in self._world.furniture.values():
-            if f.distance(x, y) < rad - 1e-6:
-                touching.add(f.name)
-        half = self._world.wall_thickness / 2
-        if any(segment_distance(x, y, a, b) - half < rad - 1e-6 for a, b in self._walls):
-            touching.add("wall")
-        for name, px, py, pr in self._people.discs():
-            if math.hypot(x - px, y - py) < rad + pr - 1e-6:
-                touching.add("person:" + name)
-        for new in touching - self._touching:
-            if new.startswith("person:"):
-                self._hits += 1
-            else:
-                self._bumps += 1
-        self._touching = touching
 
     def _sync_bodies(self) -> None:
         s, w = self._scene, self._world

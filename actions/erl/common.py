@@ -62,12 +62,17 @@ class NavGoal:
         starts: callables that each send one goal to the base and return its id, best first. The next one is
             tried when a goal fails before the base moved (its target is not free, no path to it).
         what: words for failure messages (``"kitchen"``).
+        retry_blocked: also try the next alternative when the base reports the path blocked (a person
+            standing where the robot wants to be), not only when a target is unreachable.
     """
 
-    def __init__(self, ctx: ErlContext, starts: Sequence[Callable[[], int]], what: str) -> None:
+    def __init__(
+        self, ctx: ErlContext, starts: Sequence[Callable[[], int]], what: str, *, retry_blocked: bool = False
+    ) -> None:
         self.ctx = ctx
         self.starts = list(starts)
         self.what = what
+        self.retry_blocked = retry_blocked
         self.goal_id = -1
         self.reason = ""
         self._tried = 0
@@ -90,7 +95,8 @@ class NavGoal:
         """RUNNING while the goal is active; SUCCEEDED on arrival; FAILED (see :attr:`reason`) otherwise.
 
         A goal that fails with "no path" or an unfree target is replaced by the next alternative; "path
-        blocked" (a person or an obstacle in the way for too long) is a failure of the action.
+        blocked" (a person or an obstacle in the way for too long) is a failure of the action unless
+        ``retry_blocked``.
         """
         status = self.ctx.robot.nav_status()
         if status.goal_id != self.goal_id:
@@ -100,7 +106,8 @@ class NavGoal:
             return ActionStatus.SUCCEEDED
         if status.state in (NavState.ACTIVE, NavState.IDLE):
             return ActionStatus.RUNNING
-        if status.state is NavState.FAILED and "blocked" not in status.reason and self.start():
+        blocked = "blocked" in status.reason and not self.retry_blocked
+        if status.state is NavState.FAILED and not blocked and self.start():
             return ActionStatus.RUNNING
         self.reason = f"navigation to {self.what} {status.state.value}: {status.reason or 'no reason given'}"
         return ActionStatus.FAILED

@@ -82,13 +82,15 @@ class PickAction(ErlAction):
             known = furniture_map(self.ctx.kb, support)
             near = (x, y) if known is None or footprint_distance(known, x, y) <= OFF_SUPPORT_M else None
             starts = [to_furniture(self.ctx, support, near)]
+            if near is not None:  # someone may stand there: then any side of the support
+                starts.append(to_furniture(self.ctx, support))
         else:
             pose = self.ctx.robot.robot_pose()
             starts = [
                 to_point(self.ctx, p, math.atan2(y - p[1], x - p[0]))
                 for p in standoff_points((x, y), GRASP_STANDOFF, (pose.x, pose.y))[:8]
             ]
-        self.nav = NavGoal(self.ctx, starts, f"{self.item} ({support or 'floor'})")
+        self.nav = NavGoal(self.ctx, starts, f"{self.item} ({support or 'floor'})", retry_blocked=True)
         self.attempts += 1
         if not self.nav.start():
             return False

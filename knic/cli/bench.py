@@ -13,7 +13,6 @@ BENCHES: dict[str, tuple[str, str]] = {
     "sim": ("knic.bench.sim", "simulator real-time factor and camera frame time"),
     "speech": ("knic.bench.speech", "speech recognition and command understanding on the shipped test set"),
     "grounding": ("knic.bench.grounding", "knowledge-base truth against the simulator's ground truth"),
-    "granny-annie": ("knic.bench.granny_annie", "the ERL Granny Annie task benchmark with its score sheet"),
 }
 
 

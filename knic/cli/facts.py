@@ -37,10 +37,15 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--predicate", metavar="P", help="only facts of predicate P")
     parser.add_argument("--json", action="store_true", help="print JSON (a list of fact objects)")
     parser.add_argument("--at", metavar="TIME", help="the fact base as it was at clock time TIME (seconds)")
-    parser.add_argument("--why", metavar="FACT", help='why a fact is believed, e.g. "(object_at glasses kitchen)"')
+    parser.add_argument(
+        "--why", metavar="FACT", help='why a fact is believed, e.g. "(object_at glasses kitchen)"'
+    )
     parser.add_argument("--watch", action="store_true", help="follow the journal live, printing every change")
     parser.add_argument(
-        "--watch-seconds", type=float, metavar="N", help="with --watch: stop after N seconds (default: until ^C)"
+        "--watch-seconds",
+        type=float,
+        metavar="N",
+        help="with --watch: stop after N seconds (default: until ^C)",
     )
     parser.add_argument("--poll", type=float, default=0.2, metavar="S", help="with --watch: poll period (s)")
 
@@ -91,6 +96,19 @@ def _record(fact: Fact, prov: Provenance) -> dict[str, Any]:
     }
 
 
+def _change_record(change: Change) -> dict[str, Any]:
+    return {
+        "seq": change.seq,
+        "time": change.time,
+        "change": change.kind.value,
+        "name": change.name,
+        "arguments": list(change.args),
+        "value": change.value,
+        "author": change.provenance.source,
+        "status": change.provenance.status.value,
+    }
+
+
 def _print_facts(state: State, predicate: str | None, as_json: bool) -> None:
     items = sorted(
         ((f, p) for f, p in state.facts.items() if predicate is None or f.predicate == predicate),
@@ -100,7 +118,9 @@ def _print_facts(state: State, predicate: str | None, as_json: bool) -> None:
         print(json.dumps([_record(f, p) for f, p in items]))
         return
     rows = [("PREDICATE", "ARGUMENTS", "STATUS", "AUTHOR", "SINCE")]
-    rows += [(f.predicate, " ".join(f.args), p.status.value, p.source, _format_time(p.since)) for f, p in items]
+    rows += [
+        (f.predicate, " ".join(f.args), p.status.value, p.source, _format_time(p.since)) for f, p in items
+    ]
     widths = [max(len(r[i]) for r in rows) for i in range(5)]
     for row in rows:
         print("  ".join(cell.ljust(w) for cell, w in zip(row, widths, strict=True)).rstrip())
@@ -111,16 +131,20 @@ def _why(kb: KnowledgeBase, state: State, fact: Fact, as_json: bool) -> int:
     if fact.predicate not in kb.domain.predicates:
         raise KnicError(f"--why {fact}: unknown predicate {fact.predicate!r} in domain {kb.domain.name}")
     prov = state.facts.get(fact)
-    history = [c for c in kb.changes() if c.fact == fact and c.seq <= state.seq and c.kind.value.endswith("_fact")]
+    history = [
+        c for c in kb.changes() if c.fact == fact and c.seq <= state.seq and c.kind.value.endswith("_fact")
+    ]
     if as_json:
         out: dict[str, Any] = {"fact": str(fact), "holds": prov is not None}
         if prov is not None:
             out.update(_record(fact, prov))
-        out["history"] = [{"seq": c.seq, "time": c.time, "change": c.kind.value, "author": c.provenance.source,
-                           "status": c.provenance.status.value} for c in history]  # fmt: skip
+        out["history"] = [_change_record(c) for c in history]
         print(json.dumps(out))
     elif prov is None:
-        print(f"{fact} is not believed" + (f" (last retracted at {_format_time(history[-1].time)})" if history else ""))
+        print(
+            f"{fact} is not believed"
+            + (f" (last retracted at {_format_time(history[-1].time)})" if history else "")
+        )
     else:
         support = f", supported by {', '.join(prov.support)}" if prov.support else ""
         print(
@@ -137,9 +161,7 @@ def _watch(kb: KnowledgeBase, args: argparse.Namespace) -> None:
         if args.predicate is not None and change.name != args.predicate:
             return
         if args.json:
-            print(json.dumps({"seq": change.seq, "time": change.time, "change": change.kind.value,
-                              "name": change.name, "arguments": list(change.args), "value": change.value,
-                              "author": change.provenance.source, "status": change.provenance.status.value}))  # fmt: skip
+            print(json.dumps(_change_record(change)))
         else:
             print(change.describe())
         sys.stdout.flush()

@@ -26,6 +26,9 @@ ITEMS = ("glasses", "remote", "mug", "tablet", "apple", "juice", "candle", "coke
 #: rooms items are brought to, in seed order (one outside the item's priors is taken)
 ROOMS = ("bedroom", "living_room", "kitchen", "dining_room")
 MOVE_AT_S = 20.0
+#: furniture reached through one narrow corridor: a person who puts an item there stays standing in it and
+#: blocks the robot for good (simulated people never step aside), so the sweep does not send Tracy there
+CORNERED = frozenset({"side_table", "bedside_table"})
 
 
 @dataclass(frozen=True)
@@ -51,10 +54,9 @@ def fetch_case(seed: int) -> FetchCase:
     room = rooms[seed % len(rooms)]
     moved_to = None
     if seed % 2 == 1:
-        places = [
-            p.furniture for p in sorted(world.items[item].priors, key=lambda p: p.probability) if p.furniture
-        ]
-        moved_to = places[(seed // 2) % len(places)]  # least likely first: rarely where the item already is
+        ranked = sorted(world.items[item].priors, key=lambda p: p.probability)  # least likely first
+        places = [p.furniture for p in ranked if p.furniture and p.furniture not in CORNERED]
+        moved_to = places[(seed // 2) % len(places)] if places else None
     return FetchCase(seed, item, room, moved_to)
 
 

@@ -1,4 +1,4 @@
-"""The history journal: replay, state_at with checkpoints, reopening, concurrent readers, SIGKILL durability."""
+"""The history journal: replay, state_at, checkpoints, reopening, concurrent readers, SIGKILL durability."""
 
 from __future__ import annotations
 
@@ -43,7 +43,9 @@ def small_checkpoints(monkeypatch: pytest.MonkeyPatch) -> None:
 
 
 @pytest.mark.parametrize("on_disk", [False, True])
-def test_state_at_matches_replay_across_checkpoints(tmp_path: Path, small_checkpoints: None, on_disk: bool) -> None:
+def test_state_at_matches_replay_across_checkpoints(
+    tmp_path: Path, small_checkpoints: None, on_disk: bool
+) -> None:
     clock = FakeClock(100.0)
     path = tmp_path / "kb.sqlite" if on_disk else None
     kb = KnowledgeBase.from_pddl(ERL_DOMAIN, PAPER_PROBLEM, path, clock=clock)

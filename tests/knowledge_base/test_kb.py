@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
+
 import pytest
 
 from knic.errors import KnowledgeBaseError
@@ -9,7 +11,7 @@ from knowledge_base import BeliefStatus, Change, Fact, KnowledgeBase
 from knowledge_base.domain import DomainModel
 from knowledge_base.model import ChangeKind
 
-from .conftest import DELIVERY_DOMAIN, DELIVERY_PROBLEM, PAPER_PROBLEM, ERL_DOMAIN, FakeClock
+from .conftest import DELIVERY_DOMAIN, DELIVERY_PROBLEM, ERL_DOMAIN, PAPER_PROBLEM, FakeClock
 
 
 def test_problem_loads_objects_facts_goals_with_provenance(kb: KnowledgeBase) -> None:
@@ -50,10 +52,16 @@ def test_add_instance_and_fact_with_subtype_argument(kb: KnowledgeBase) -> None:
         (lambda kb: kb.add_fact("robot_in", "r2d2", "kitchen"), "unknown predicate 'robot_in'"),
         (lambda kb: kb.add_fact("robot_at", "r2d2"), "robot_at takes 2 arguments, got 1"),
         (lambda kb: kb.add_fact("robot_at", "r2d2", "garage"), "unknown instance 'garage'"),
-        (lambda kb: kb.add_fact("robot_at", "annie", "kitchen"), "must be of type robot, 'annie' is a person"),
+        (
+            lambda kb: kb.add_fact("robot_at", "annie", "kitchen"),
+            "must be of type robot, 'annie' is a person",
+        ),
         (lambda kb: kb.add_fact("hand_empty", "r2d2", status="guessed"), "unknown belief status"),
         (lambda kb: kb.add_fact("hand_empty", "r2d2", confidence=1.5), "outside 0..1"),
-        (lambda kb: kb.add_goal("object_at", "glasses", "sofa"), "must be of type room, 'sofa' is a furniture"),
+        (
+            lambda kb: kb.add_goal("object_at", "glasses", "sofa"),
+            "must be of type room, 'sofa' is a furniture",
+        ),
         (lambda kb: kb.remove_fact("found", "kitchen"), "must be of type entity, 'kitchen' is a room"),
         (lambda kb: kb.add_instance("robt", "r3"), "unknown type 'robt'"),
         (lambda kb: kb.add_instance("person", "r2d2"), "already an instance of 'robot'"),
@@ -65,7 +73,9 @@ def test_add_instance_and_fact_with_subtype_argument(kb: KnowledgeBase) -> None:
         (lambda kb: kb.set_anchor("kitchen", {"pose": object()}), "JSON-able"),
     ],
 )
-def test_refused_write_raises_and_changes_nothing(kb: KnowledgeBase, call, message: str) -> None:  # type: ignore[no-untyped-def]
+def test_refused_write_raises_and_changes_nothing(
+    kb: KnowledgeBase, call: Callable[[KnowledgeBase], object], message: str
+) -> None:
     before = kb.snapshot()
     seen: list[Change] = []
     kb.subscribe(seen.append)
@@ -80,7 +90,9 @@ def test_single_valued_predicate_retracts_the_others(kb: KnowledgeBase, clock: F
     clock.t = 20.0
     seen: list[Change] = []
     kb.subscribe(seen.append)
-    assert kb.add_fact("robot_at", "r2d2", "kitchen", source="kp.pose", status="observed", support=("llku:7",))
+    assert kb.add_fact(
+        "robot_at", "r2d2", "kitchen", source="kp.pose", status="observed", support=("llku:7",)
+    )
     assert kb.facts("robot_at", "r2d2") == [Fact("robot_at", ("r2d2", "kitchen"))]
     assert [(c.kind, c.fact) for c in seen] == [
         (ChangeKind.REMOVE_FACT, Fact("robot_at", ("r2d2", "bedroom"))),
@@ -88,12 +100,19 @@ def test_single_valued_predicate_retracts_the_others(kb: KnowledgeBase, clock: F
     ]
     prov = kb.why("(robot_at r2d2 kitchen)")
     assert prov is not None
-    assert (prov.source, prov.since, prov.status, prov.support) == ("kp.pose", 20.0, BeliefStatus.OBSERVED, ("llku:7",))
+    assert (prov.source, prov.since, prov.status, prov.support) == (
+        "kp.pose",
+        20.0,
+        BeliefStatus.OBSERVED,
+        ("llku:7",),
+    )
     # not single-valued: possibly_at keeps every candidate
     assert len(kb.facts("possibly_at", "glasses")) == 3
 
 
-def test_reassert_same_fact_is_no_change_but_new_status_refreshes(kb: KnowledgeBase, clock: FakeClock) -> None:
+def test_reassert_same_fact_is_no_change_but_new_status_refreshes(
+    kb: KnowledgeBase, clock: FakeClock
+) -> None:
     seq = kb.journal.last_seq
     assert not kb.add_fact("robot_at", "r2d2", "bedroom", source="problem")
     assert kb.journal.last_seq == seq
@@ -118,7 +137,11 @@ def test_remove_fact_and_goals(kb: KnowledgeBase) -> None:
 
 
 def test_fact_patterns(kb: KnowledgeBase) -> None:
-    assert {f.args[1] for f in kb.facts("possibly_at", "glasses", "?")} == {"kitchen", "entrance", "living_room"}
+    assert {f.args[1] for f in kb.facts("possibly_at", "glasses", "?")} == {
+        "kitchen",
+        "entrance",
+        "living_room",
+    }
     assert kb.facts("connected", None, "kitchen") == [
         Fact("connected", ("bedroom", "kitchen")),
         Fact("connected", ("entrance", "kitchen")),
@@ -199,7 +222,10 @@ def test_anchors_are_copied_and_journaled(kb: KnowledgeBase) -> None:
     geometry = {"region": [[0.0, 0.0], [4.0, 0.0], [4.0, 3.0], [0.0, 3.0]], "waypoints": [[2.0, 1.5]]}
     kb.set_anchor("kitchen", geometry, source="map")
     geometry["waypoints"].append([9.0, 9.0])
-    assert kb.anchor("kitchen") == {"region": [[0.0, 0.0], [4.0, 0.0], [4.0, 3.0], [0.0, 3.0]], "waypoints": [[2.0, 1.5]]}
+    assert kb.anchor("kitchen") == {
+        "region": [[0.0, 0.0], [4.0, 0.0], [4.0, 3.0], [0.0, 3.0]],
+        "waypoints": [[2.0, 1.5]],
+    }
     assert kb.changes()[-1].kind is ChangeKind.SET_ANCHOR
     assert kb.state_at(10.0).anchors["kitchen"][0]["waypoints"] == [[2.0, 1.5]]
 

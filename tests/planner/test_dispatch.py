@@ -246,3 +246,35 @@ def test_trace_jsonl_and_readable_lines() -> None:
     assert rows[-1]["goal"] == "(robot_at r2d2 hallway)"
     lines = printed.getvalue().splitlines()
     assert "success" in lines[3] and "(move r2d2 entrance_hall hallway)" in lines[3]
+
+
+def test_idle_dispatcher_wakes_up_when_a_goal_stops_holding() -> None:
+    clock = SimClock()
+    kb = erl_kb(clock, goals=["(robot_at r2d2 hallway)"])
+    d = dispatcher(kb, World(steps_per_action=1))
+    d.run(max_ticks=50, on_tick=clock.tick)
+    plans = len(d.trace.of_kind(EventKind.PLAN))
+    for _ in range(5):  # idle ticks do nothing
+        assert d.step() == DispatcherState.IDLE
+    assert len(d.trace.of_kind(EventKind.PLAN)) == plans
+    kb.add_fact("robot_at", "r2d2", "kitchen", source="kp_localisation", status=BeliefStatus.OBSERVED)
+    d.run(max_ticks=50, on_tick=clock.tick)
+    assert len(d.trace.of_kind(EventKind.PLAN)) == plans + 1
+    assert kb.holds("robot_at", "r2d2", "hallway")
+    assert [e.goal for e in d.trace.of_kind(EventKind.GOAL_ACHIEVED)] == ["(robot_at r2d2 hallway)"] * 2
+
+
+def test_after_dropping_a_goal_unrelated_changes_do_not_replan() -> None:
+    clock = SimClock()
+    kb = erl_kb(clock, goals=["(has annie tissues)", "(robot_at r2d2 kitchen)"])
+    d = dispatcher(kb, World(steps_per_action=3))
+
+    def perceive(tick: int) -> None:
+        clock.tick()
+        if tick == 2:
+            kb.add_fact("person_at", "jack", "bathroom", source="kp_people", status=BeliefStatus.OBSERVED)
+
+    report = d.run(max_ticks=100, on_tick=perceive)
+    assert list(report.dropped) == ["(has annie tissues)"]
+    assert d.trace.of_kind(EventKind.REPLAN) == []
+    assert report.achieved == ["(robot_at r2d2 kitchen)"]

@@ -51,3 +51,15 @@ def test_domain_reads_schemas_static_predicates_and_constants() -> None:
     search = dom.schemas["search_object"]
     assert ("found", (1,)) in search.pre_neg and ("explored", (2,)) in search.pre_neg
     assert dom.is_subtype("light", "device") and not dom.is_subtype("room", "entity")
+
+
+@pytest.mark.parametrize("ex", examples(), ids=[e.name for e in examples()])
+def test_every_fixture_writes_to_pddl_and_parses_back(ex: Example) -> None:
+    from unified_planning.io import PDDLReader, PDDLWriter
+
+    up_domain, _, task = ex.load()
+    writer = PDDLWriter(task_to_up(task, up_domain))
+    again = task_from_up(PDDLReader().parse_problem_string(writer.get_domain(), writer.get_problem()))
+    assert again.objects == task.objects
+    assert again.facts == task.facts
+    assert again.goals == task.goals

@@ -264,7 +264,7 @@ class GridMap:
             (width, 1.0),
             (width + 1, diag),
         ]
-        start_blocked = flat_blocked[start_idx] == 1
+        start_code = flat_blocked[start_idx]
         dist: dict[int, float] = {start_idx: 0.0}
         parent: dict[int, int] = {}
         heap = [(0.0, 0.0, start_idx)]
@@ -277,11 +277,13 @@ class GridMap:
             if idx in goal_cells:
                 found = idx
                 break
-            here_blocked = flat_blocked[idx] == 1
+            here = flat_blocked[idx]
             for off, length in steps:
                 n = idx + off
                 nb = flat_blocked[n]
-                if nb and (nb == 2 or not (start_blocked and here_blocked)):  # 1: obstacle, 2: border
+                # codes: 0 free, 1 map obstacle, 2 border, 3 extra obstacle (a person); a blocked start may
+                # only be left across cells of its own kind (or any obstacle, if it is a map obstacle)
+                if nb and (nb == 2 or not here or (nb == 1 and start_code != 1) or not start_code):
                     continue
                 ng = g + length * flat_cost[n]
                 if ng < dist.get(n, math.inf):
@@ -301,13 +303,14 @@ class GridMap:
         return self._smooth([start, *pts[1:]] if len(pts) > 1 else [start, pts[0]], grid)
 
     def _padded(self, grid: npt.NDArray[np.bool_]) -> tuple[list[int], list[float]]:
-        """Flat lists of the grid padded by one border cell: blocked codes (0 free, 1 obstacle, 2 border)
-        and step costs (obstacle cells cost 20 times more, for leaving one). Cached for the map's own grid."""
+        """Flat lists of the grid padded by one border cell: cell codes (0 free, 1 map obstacle, 2 border,
+        3 obstacle added to the map's own, e.g. a person) and step costs (obstacle cells cost 20 times more,
+        for leaving one). Cached for the map's own grid."""
         if grid is self.blocked and self._padded_cache is not None:
             return self._padded_cache
         rows, cols = self.shape
         codes = np.full((rows + 2, cols + 2), 2, dtype=np.int8)
-        codes[1:-1, 1:-1] = grid.astype(np.int8)
+        codes[1:-1, 1:-1] = np.where(self.blocked, 1, np.where(grid, 3, 0))
         cost = np.ones((rows + 2, cols + 2))
         cost[1:-1, 1:-1] = self.cost * np.where(grid, 20.0, 1.0)
         out = (codes.ravel().tolist(), cost.ravel().tolist())

@@ -180,19 +180,13 @@ class PeopleController:
                     p.tasks.popleft()
                     return
                 p.path, p.path_index = path, 1
-            elif p.blocked_for > 2.0:  # the robot is in the way: try to walk around it, else keep waiting
-                rx, ry, rr = robot
+            elif p.blocked_for > 2.0:  # the robot is in the way: step back out of its way, then go on
                 p.blocked_for = 0.0
-                around = self.grid.plan(
-                    (p.x, p.y), arg, self.grid.with_discs([(rx, ry, rr + p.radius + 0.1)])
-                )
-                if around is not None:
-                    p.path, p.path_index = around, 1
-                else:  # no way around (a doorway): step aside, then go on
-                    aside = self._aside_points(p, robot)
-                    if aside:
-                        p.path = []
-                        p.tasks.appendleft(("goto", aside))
+                aside = self._aside_points(p, robot)
+                if aside:
+                    p.path = []
+                    p.tasks.appendleft(("goto", aside))
+                    return
             if p.path_index >= len(p.path):
                 p.path = []
                 p.tasks.popleft()
@@ -201,14 +195,15 @@ class PeopleController:
                 p.path_index += 1
 
     def _aside_points(self, p: PersonState, robot: tuple[float, float, float]) -> list[Point]:
-        """Free points 0.8-1.6 m from the person and at least 1.3 m from the robot, to make way."""
+        """Free points 0.8-1.6 m away from the person, away from the robot and 1.3 m or more from it."""
         rx, ry, _ = robot
         out = []
         for k in range(16):
             ang = 2 * math.pi * k / 16
             for dist in (0.8, 1.2, 1.6):
                 x, y = p.x + dist * math.cos(ang), p.y + dist * math.sin(ang)
-                if math.hypot(x - rx, y - ry) >= 1.3 and self.grid.is_free(x, y):
+                away = (x - p.x) * (p.x - rx) + (y - p.y) * (p.y - ry) > 0
+                if away and math.hypot(x - rx, y - ry) >= 1.3 and self.grid.is_free(x, y):
                     out.append((x, y))
         return out
 

@@ -116,7 +116,7 @@ def _false_positive(
 def add_depth_noise(
     depth: npt.NDArray[np.float32], sigma_per_metre: float, rng: np.random.Generator
 ) -> npt.NDArray[np.float32]:
-    """A copy of ``depth`` with finite depths multiplied by ``1 + N(0, sigma_per_metre)`` (grows with range)."""
+    """A copy of ``depth``, finite depths multiplied by ``1 + N(0, sigma_per_metre)`` (grows with range)."""
     if sigma_per_metre <= 0:
         return depth.copy()
     factor = rng.standard_normal(size=depth.shape, dtype=np.float32)

@@ -149,7 +149,7 @@ class BaseController:
     def _plan(self, g: _Goal, people: Sequence[tuple[str, float, float, float]], around_people: bool) -> bool:
         blocked = None
         if around_people:
-            discs = [(x, y, r + self.spec.radius + 0.15) for _, x, y, r in people]
+            discs = [(x, y, r + self.spec.radius + 0.1) for _, x, y, r in people]
             blocked = self.grid.with_discs(discs)
         path = self.grid.plan((self.x, self.y), g.goals, blocked)
         if path is None:
@@ -196,7 +196,13 @@ class BaseController:
         if abs(err) < 0.05:  # stay on the straight segment
             nx, ny = self.x + step * (tx - self.x) / dist, self.y + step * (ty - self.y) / dist
         blocker = next(
-            (n for n, px, py, r in people if math.hypot(nx - px, ny - py) < r + s.radius + 0.1), None
+            (
+                n
+                for n, px, py, r in people
+                if math.hypot(nx - px, ny - py) < r + s.radius + 0.05
+                and math.hypot(nx - px, ny - py) < math.hypot(self.x - px, self.y - py)
+            ),
+            None,
         )
         if blocker is not None:
             g.blocked_for += dt

@@ -10,12 +10,14 @@ from __future__ import annotations
 
 import functools
 import math
+import os
 from typing import Any
 
 import numpy as np
 import numpy.typing as npt
 import pybullet as pb
 
+from knic.errors import WorldError
 from worlds.api import CameraIntrinsics, Pose3D
 from worlds.geometry import Point
 from worlds.model import World
@@ -241,9 +243,12 @@ class _Client:
     """
 
     def __init__(self, mode: int) -> None:
+        name = "GUI" if mode == pb.GUI else "DIRECT"
+        if mode == pb.GUI and not (os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY")):
+            raise WorldError("gui=True needs a display (DISPLAY is not set); use the default DIRECT mode")
         self._id = pb.connect(mode)
         if self._id < 0:
-            raise RuntimeError("pybullet could not connect")
+            raise WorldError(f"pybullet cannot connect in {name} mode")
 
     def __getattr__(self, name: str) -> Any:
         attr = getattr(pb, name)

@@ -1,0 +1,96 @@
+"""One grammar for text and speech: the JSGF form, the decoder's word graph and the parser agree."""
+
+from __future__ import annotations
+
+import pytest
+
+from knic.language.fsg import WordGraph, compile_word_graph
+from knic.language.grammar import command_grammar, to_jsgf
+from knic.language.parser import Parser
+from knic.language.vocabulary import Lexicon, Vocabulary, normalize, number_words
+
+from .test_understanding import ACCEPTED, REJECTED
+
+
+def accepts(graph: WordGraph, text: str) -> bool:
+    states = {graph.start}
+    for word in text.split():
+        states = {d for s, d, _, w in graph.transitions if s in states and w == word}
+    return graph.final in states
+
+
+def test_jsgf_names_the_worlds_things(vocabulary: Vocabulary) -> None:
+    jsgf = to_jsgf(command_grammar(), vocabulary)
+    assert jsgf.startswith("#JSGF V1.0;")
+    assert "public <utterance> = <command>;" in jsgf
+    item_rule = next(line for line in jsgf.splitlines() if line.startswith("<item> ="))
+    assert "reading glasses" in item_rule and "coke can" in item_rule and "banana" not in item_rule
+    assert "<light_groups> = " in jsgf and "all the lights" in jsgf
+    for verb in ("pinpoint", "look for", "deliver", "escort", "half open"):
+        assert verb in jsgf
+
+
+def test_jsgf_loads_in_pocketsphinx(vocabulary: Vocabulary, tmp_path: object) -> None:
+    from pocketsphinx import Jsgf
+
+    path = f"{tmp_path}/command.gram"
+    with open(path, "w", encoding="utf-8") as handle:
+        handle.write(to_jsgf(command_grammar(), vocabulary, garbage=["weather", "joke"]))
+    grammar = Jsgf(path)
+    assert grammar.get_rule("knic.utterance") is not None
+
+
+@pytest.mark.parametrize("text", [a[0] for a in ACCEPTED])
+def test_word_graph_accepts_what_the_parser_accepts(vocabulary: Vocabulary, text: str) -> None:
+    graph = compile_word_graph(command_grammar(), vocabulary)
+    assert accepts(graph, normalize(text))
+
+
+def test_word_graph_rejects_what_the_grammar_does_not_cover(vocabulary: Vocabulary) -> None:
+    graph = compile_word_graph(command_grammar(), vocabulary)
+    parser = Parser(command_grammar(), vocabulary)
+    for text, _ in REJECTED[:8]:
+        words = normalize(text)
+        assert not accepts(graph, words)
+        assert not isinstance(parser.parse(words.split()), list)
+
+
+def test_filler_loop_runs_beside_the_commands(vocabulary: Vocabulary) -> None:
+    graph = compile_word_graph(command_grammar(), vocabulary, fillers=["weather", "joke"], filler_weight=0.05)
+    assert accepts(graph, "weather joke weather") and accepts(graph, "bring me my glasses")
+    assert not accepts(graph, "bring me joke")
+    assert "FSG_BEGIN" in graph.to_fsg() and "TRANSITION" in graph.to_fsg()
+
+
+def test_vocabulary_from_lexicon(vocabulary: Vocabulary) -> None:
+    phrases = {t.phrase: t.symbol for t in vocabulary.terms}
+    assert phrases["reading glasses"] == "glasses" and phrases["glasses"] == "glasses"
+    assert phrases["living room"] == "living_room" and phrases["granny annie"] == "annie"
+    assert phrases["left light"] == "bedroom_left_light" and phrases["cardboard box"] == "cardboard_box"
+    assert vocabulary.members("all_lights") == ("bedroom_left_light", "bedroom_right_light", "hallway_light")
+    assert vocabulary.level(50) == "l50" and vocabulary.level(30) is None
+    assert vocabulary.robot == "r2d2"
+    assert "entrance" not in {t.symbol for t in vocabulary.terms}  # lexicon entry for a symbol not in the world
+
+
+def test_vocabulary_of_a_smaller_world() -> None:
+    lexicon = Lexicon(names={"glasses": ("reading glasses",), "sofa": ("couch",)})
+    small = Vocabulary.from_instances(
+        {"glasses": "item", "kitchen": "room", "r2d2": "robot"},
+        {"item": "entity", "room": "object", "robot": "entity", "entity": "object"},
+        lexicon,
+    )
+    assert [(t.phrase, t.symbol) for t in small.terms_of(("item",))] == [("reading glasses", "glasses")]
+    assert small.terms_of(("furniture",)) == []
+
+
+def test_normalize_and_numbers() -> None:
+    assert normalize("Half-open the Blinds, please!") == "half open the blinds please"
+    assert normalize("set the dimmer to 75%") == "set the dimmer to seventy five percent"
+    assert [number_words(n) for n in (0, 13, 40, 99, 100)] == [
+        "zero",
+        "thirteen",
+        "forty",
+        "ninety nine",
+        "one hundred",
+    ]
