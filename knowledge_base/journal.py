@@ -62,6 +62,7 @@ class Journal:
         self._last_checkpoint = 0
         self._memory_events: list[Change] = []
         self._memory_checkpoints: list[State] = [self._base]
+        self.meta: dict[str, str] = {}
 
     # ----------------------------------------------------------------- writing
     @property
@@ -106,6 +107,10 @@ class Journal:
         self._memory_events.extend(changes)
         if checkpoint is not None:
             self._memory_checkpoints.append(checkpoint.copy())
+
+    def set_meta(self, key: str, value: str) -> None:
+        """Record a piece of metadata (e.g. the problem name) with the history."""
+        self.meta[key] = value
 
     def close(self) -> None:
         """Release resources (nothing for the in-memory journal)."""
@@ -273,6 +278,15 @@ class SqliteJournal(Journal):
                 raise
         except sqlite3.DatabaseError as exc:
             raise JournalError(f"{self.path}: cannot write journal ({exc})") from None
+
+    def set_meta(self, key: str, value: str) -> None:
+        if self.read_only:
+            raise JournalError(f"{self.path}: journal is open read-only")
+        try:
+            self._db.execute("INSERT OR REPLACE INTO meta VALUES (?, ?)", (key, value))
+        except sqlite3.DatabaseError as exc:
+            raise JournalError(f"{self.path}: cannot write journal ({exc})") from None
+        self.meta[key] = value
 
     def changes(self, after: int = 0, upto: int | None = None) -> list[Change]:
         end = self.last_seq if upto is None else upto

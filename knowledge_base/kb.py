@@ -70,11 +70,12 @@ class KnowledgeBase(IndexedState):
         read_only: bool = False,
     ) -> None:
         self.domain = domain
-        self.problem_name = f"{domain.name}_problem"
         self.read_only = read_only
         self._clock: Clock = clock or time.time
         base = State(instances=dict(domain.constants))
         self._journal = journal if journal is not None else Journal(base)
+        #: Name used when exporting the state as a PDDL problem (the loaded problem's, kept in the journal).
+        self.problem_name = self._journal.meta.get("problem_name") or f"{domain.name}_problem"
         self._state = self._journal.state_at_seq(self._journal.last_seq)
         self._seq = self._state.seq
         self._subscribers: list[Subscriber] = []
@@ -168,7 +169,6 @@ class KnowledgeBase(IndexedState):
             problem: A :class:`knowledge_base.problem.ProblemContent`.
             source: Provenance source of these writes.
         """
-        self.problem_name = problem.name
         with self.batch():
             for name, type_name in problem.objects.items():
                 self.add_instance(type_name, name, source=source)
@@ -178,6 +178,8 @@ class KnowledgeBase(IndexedState):
                 self.set_function(fact.predicate, *fact.args, value=value, source=source)
             for fact in problem.goals:
                 self.add_goal(fact.predicate, *fact.args, source=source)
+        self.problem_name = problem.name
+        self._journal.set_meta("problem_name", problem.name)
 
     def set_clock(self, clock: Clock) -> None:
         """Stamp later writes with ``clock()`` (e.g. ``sim.time`` for simulated seconds)."""

@@ -88,6 +88,7 @@ def test_reopen_restores_exact_state(tmp_path: Path, small_checkpoints: None) ->
     # with the problem again: the journal already holds it, so it is not loaded twice
     again = KnowledgeBase.from_pddl(ERL_DOMAIN, PAPER_PROBLEM, path)
     assert again.snapshot() == expected
+    assert again.problem_name == "erl_paper_glasses"
     assert again.goals() == [Fact("object_at", ("glasses", "bedroom")), Fact("found", ("glasses",))]
     again.add_fact("found", "glasses")
     assert again.changes()[-1].seq == expected.seq + 1

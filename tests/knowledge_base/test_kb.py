@@ -261,3 +261,13 @@ def test_from_pddl_defaults_to_wall_clock_and_set_clock_switches() -> None:
     assert kb.why("(found glasses)").since == 5.0  # type: ignore[union-attr]
     assert kb.domain.single_valued["robot_at"] == (0,)
     assert kb.domain.sensing["search_object"] == ("found", "object_at")
+
+
+def test_fact_text_round_trip() -> None:
+    fact = Fact.parse("  ( Object_At glasses  KITCHEN ) ")
+    assert fact == Fact("object_at", ("glasses", "kitchen")) and str(fact) == "(object_at glasses kitchen)"
+    assert str(Fact.parse("(hand_empty r2d2)")) == "(hand_empty r2d2)" and str(Fact("total", ())) == "(total)"
+    for bad in ("object_at glasses", "(object_at (glasses) kitchen)", "(?p a)", "(object_at ?o kitchen)", ""):
+        with pytest.raises(KnowledgeBaseError, match="cannot parse fact"):
+            Fact.parse(bad)
+    assert BeliefStatus("assumed") is BeliefStatus.ASSUMED and str(BeliefStatus.EFFECT) == "effect"
