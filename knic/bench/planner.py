@@ -289,10 +289,9 @@ def run(args: argparse.Namespace) -> int:
     out["dispatch_overhead_us_per_step"] = round(_dispatch_overhead(), 3)
     out["speedup_small"] = round(small["naive_ms_median"] / small["replan_ms_median"], 1)
     out["detail"] = {"small": small, **({"large": large} if not args.skip_large else {})}
-    out["worlds"] = {
-        "small": "worlds/erl_home/erl_home_problem.pddl",
-        "large": "generated: 80 rooms, 200 objects",
-    }
+    out["worlds"] = {"small": "worlds/erl_home/erl_home_problem.pddl"}
+    if not args.skip_large:
+        out["worlds"]["large"] = f"generated (seed {args.seed}): 80 rooms, 200 objects"
     if args.json:
         print(json.dumps(out, sort_keys=True))
     else:

@@ -18,7 +18,7 @@ ROOMS = ("kitchen", "bedroom", "entrance", "living_room")
 
 def main() -> None:
     batch = int(sys.argv[2]) if len(sys.argv) > 2 else 1
-    limit = int(sys.argv[3]) if len(sys.argv) > 3 else 20000
+    limit = int(sys.argv[3]) if len(sys.argv) > 3 else 100_000
     kb = KnowledgeBase.from_journal(sys.argv[1])
     print("ready", flush=True)
     i = 0
