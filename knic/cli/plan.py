@@ -25,9 +25,10 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("problem", metavar="PROBLEM.pddl", help="PDDL problem file")
     parser.add_argument(
         "--engine",
-        default="auto",
+        default=None,
         choices=["auto", "knic", "fast-downward", "tamer"],
-        help="planning engine (default: auto, chosen by the problem's features)",
+        help="planning engine (default: fast-downward, or tamer for durative domains; auto: the in-process "
+        "knic search with fast-downward as fall-back, as the dispatcher uses it)",
     )
     parser.add_argument(
         "--timeout", type=float, default=60.0, help="planning time limit in seconds (default 60)"
@@ -51,8 +52,9 @@ def run(args: argparse.Namespace) -> int:
     silence_up()
     kb = KnowledgeBase.from_pddl(args.domain, args.problem)
     task = task_from_kb(kb)
+    engine = args.engine or ("tamer" if task.domain.temporal else "fast-downward")
     planner = TaskPlanner(
-        kb.domain.up_domain, engine=args.engine, timeout=args.timeout, focus=not args.no_focus
+        kb.domain.up_domain, engine=engine, timeout=args.timeout, focus=not args.no_focus
     )
     result = planner.solve(task)
     if result.has_plan and not task.domain.temporal:
