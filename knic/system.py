@@ -175,9 +175,9 @@ class RunConfig:
     trace_stream: TextIO | None = None
     gui: bool = False
     check_period_s: float = 0.5
-    goal_retries: int = 3
+    goal_retries: int = 20
     real_time_factor: float = 1.0
-    retry_after_s: float = 3.0
+    retry_after_s: float = 10.0
 
 
 @dataclass

@@ -203,6 +203,13 @@ class RoomMap:
                 inside = not inside
         return inside
 
+    def inner_points(self, share: float = 0.5) -> list[Point]:
+        """Points inside the room besides its waypoints: the centre, and each corner pulled ``share`` of the
+        way towards the centre (alternative targets when a waypoint is taken), those inside the region."""
+        cx, cy = self.centre
+        pts = [(cx, cy)] + [(x + (cx - x) * share, y + (cy - y) * share) for x, y in self.region]
+        return [p for p in pts if self.contains(*p)]
+
     @property
     def centre(self) -> Point:
         """Mean of the region's vertices (a rough centre, enough to face into the room)."""

@@ -26,7 +26,9 @@ PERSON_STANDOFF = 0.9
 class MoveAction(ErlAction):
     """``(move ?r ?from ?to)``: drive to the waypoint of room ``to``.
 
-    Phases: ``nav`` (following the goal) -> done. Deactivation stops the base unless it succeeded.
+    Phases: ``nav`` (following the goal) -> done. When the base cannot reach the waypoint (someone stands on
+    it, the way there is blocked), other points inside the room are tried in turn. Deactivation stops the
+    base unless it succeeded.
     """
 
     def __init__(self, args: tuple[str, ...], ctx: ErlContext) -> None:
@@ -40,7 +42,9 @@ class MoveAction(ErlAction):
         if room is None:
             return self.refuse(f"room {self.target} has no anchor (region, waypoints) in the knowledge base")
         self.room = room
-        self.nav = NavGoal(self.ctx, [to_point(self.ctx, wp) for wp in room.waypoints], self.target)
+        targets = [*room.waypoints, *room.inner_points()]
+        starts = [to_point(self.ctx, p) for p in targets]
+        self.nav = NavGoal(self.ctx, starts, self.target, retry_blocked=True)
         if not self.nav.start():
             return self.refuse(self.nav.reason)
         self.enter("nav")

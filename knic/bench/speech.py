@@ -1,7 +1,7 @@
 """``knic bench speech``: speech recognition and command understanding on the shipped test set.
 
-The test set is ``tests/fixtures/speech``: WAV files synthesised with espeak-ng in several voices and speeds and
-``gold.json`` with each file's transcription, whether the command grammar covers it, and its gold frames.
+The test set is ``tests/fixtures/speech``: WAV files synthesised with espeak-ng in several voices and speeds
+and ``gold.json`` with each file's transcription, whether the command grammar covers it, and its gold frames.
 Figures (wall-clock time; the decoder is built once before timing):
 
 * ``wer`` -- word error rate of the transcripts of in-grammar utterances (edit distance / gold words);
@@ -29,7 +29,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--json", action="store_true", help="print one JSON object")
     parser.add_argument("--fixtures", default=str(FIXTURES), help="folder with gold.json and the WAV files")
     parser.add_argument("--limit", type=int, default=0, help="use only the first N utterances (0: all)")
-    parser.add_argument("--filler-weight", type=float, default=None, help="filler loop prior (default: built in)")
+    parser.add_argument(
+        "--filler-weight", type=float, default=None, help="filler loop prior (default: built in)"
+    )
     parser.add_argument("--verbose", action="store_true", help="list every utterance that went wrong")
 
 
@@ -63,8 +65,10 @@ def evaluate(fixtures: Path, limit: int = 0, filler_weight: float | None = None)
     _, vocabulary = load_world()
     speaker = gold.get("speaker", "annie")
     started = time.perf_counter()
-    options = {} if filler_weight is None else {"filler_weight": filler_weight}
-    recognizer = Recognizer(default_grammar(), vocabulary, **options)
+    if filler_weight is None:
+        recognizer = Recognizer(default_grammar(), vocabulary)
+    else:
+        recognizer = Recognizer(default_grammar(), vocabulary, filler_weight=filler_weight)
     setup_ms = (time.perf_counter() - started) * 1000.0
     errors_total = words_total = kinds_ok = args_ok = rejected_in = rejected_oog = n_in = n_oog = 0
     elapsed: list[float] = []
@@ -89,12 +93,16 @@ def evaluate(fixtures: Path, limit: int = 0, filler_weight: float | None = None)
             args_ok += right
             rejected_in += not result.accepted
             if not right:
-                mistakes.append({"file": entry["file"], "text": entry["text"], "heard": heard, "reason": result.reason})
+                mistakes.append(
+                    {"file": entry["file"], "text": entry["text"], "heard": heard, "reason": result.reason}
+                )
         else:
             n_oog += 1
             rejected_oog += not result.accepted
             if result.accepted:
-                mistakes.append({"file": entry["file"], "text": entry["text"], "heard": heard, "accepted": True})
+                mistakes.append(
+                    {"file": entry["file"], "text": entry["text"], "heard": heard, "accepted": True}
+                )
     return {
         "utterances": n_in + n_oog,
         "in_grammar": n_in,

@@ -1,10 +1,10 @@
 """Dialogue around a command: repeat back what was understood, ask for yes or no, speak or print.
 
-ERL practice: the robot repeats the request and, in the semi-autonomous role, waits for a yes or no before the
-goals reach the knowledge base. :class:`Dialogue` does that with two pluggable ends: a :class:`Voice` that says
-things (:class:`EspeakVoice` when ``espeak-ng`` is installed, else :class:`PrintVoice`) and a listener that
-returns the user's answer as text (typed, or a transcript from :mod:`knic.language.speech`; the module provides
-:data:`YES_NO_GRAMMAR` for a recogniser restricted to answers).
+ERL practice: the robot repeats the request and, in the semi-autonomous role, waits for a yes or no before
+the goals reach the knowledge base. :class:`Dialogue` does that with two pluggable ends: a :class:`Voice` that
+says things (:class:`EspeakVoice` when ``espeak-ng`` is installed, else :class:`PrintVoice`) and a listener
+that returns the user's answer as text (typed, or a transcript from :mod:`knic.language.speech`; the module
+provides :data:`YES_NO_GRAMMAR` for a recogniser restricted to answers).
 """
 
 from __future__ import annotations
@@ -19,7 +19,9 @@ from knic.language.frames import SPEAKER, CommandFrame
 from knic.language.understanding import Understanding
 from knic.language.vocabulary import Vocabulary, normalize
 
-YES_WORDS = frozenset({"yes", "yeah", "yep", "correct", "right", "sure", "okay", "ok", "affirmative", "do it"})
+YES_WORDS = frozenset(
+    {"yes", "yeah", "yep", "correct", "right", "sure", "okay", "ok", "affirmative", "do it"}
+)
 NO_WORDS = frozenset({"no", "nope", "wrong", "cancel", "stop", "negative", "don't"})
 #: JSGF grammar for a yes/no answer.
 YES_NO_GRAMMAR = (
@@ -58,7 +60,9 @@ class EspeakVoice:
     def say(self, sentence: str) -> None:
         """Speak one sentence; on any espeak-ng failure print it instead."""
         try:
-            subprocess.run([self.executable, "-v", self.voice, sentence], check=True, capture_output=True, timeout=30)
+            subprocess.run(
+                [self.executable, "-v", self.voice, sentence], check=True, capture_output=True, timeout=30
+            )
         except (OSError, subprocess.SubprocessError):
             self.fallback.say(sentence)
 
@@ -107,7 +111,8 @@ def describe(frame: CommandFrame, vocabulary: Vocabulary | None = None) -> str:
         return f"set the {name('device')} to {state} percent"
     if state in ("on", "off"):
         return f"switch {state} the {name('device')}"
-    return f"{'half-open' if state == 'half-open' else 'open' if state == 'open' else 'close'} the {name('device')}"
+    verb = {"half-open": "half-open", "open": "open"}.get(state, "close")
+    return f"{verb} the {name('device')}"
 
 
 def repeat_back(understanding: Understanding, vocabulary: Vocabulary | None = None) -> str:

@@ -2,7 +2,7 @@
 
 pocketsphinx turns a JSGF grammar into a finite-state grammar with many null (epsilon) transitions: every
 optional word, rule reference and alternative adds some, and it precomputes their closure. For the ERL grammar
-that is about 30,000 null transitions against 1,300 word transitions, and decoding costs seconds per utterance.
+that is about 30,000 null transitions against 1,300 word transitions, and decoding took seconds per utterance.
 This module builds the same language from the same grammar tree (:mod:`knic.language.grammar`) and removes the
 epsilons itself, so the decoder sees only word transitions and decodes in real time. :func:`to_jsgf` remains
 the readable, portable form of the grammar; this is the form the recogniser loads.

@@ -203,7 +203,9 @@ def command_grammar(max_actions: int = 3) -> Grammar:
     )
     placing = Frame(
         "PLACING",
-        seq(words(*PLACE_VERBS), item("theme"), words("on", "onto", "in", "into", "on top of"), place("goal")),
+        seq(
+            words(*PLACE_VERBS), item("theme"), words("on", "onto", "in", "into", "on top of"), place("goal")
+        ),
     )
     accompanying = Frame(
         "ACCOMPANYING",
@@ -238,8 +240,12 @@ def command_grammar(max_actions: int = 3) -> Grammar:
         "accompanying": accompanying,
         "motion": motion,
         "operating": operating,
-        "action": alt(*(Ref(n) for n in ("searching", "bringing", "placing", "accompanying", "motion", "operating"))),
-        "opener": words("please", "robot", "robot please", "could you", "could you please", "can you", "can you please"),
+        "action": alt(
+            *(Ref(n) for n in ("searching", "bringing", "placing", "accompanying", "motion", "operating"))
+        ),
+        "opener": words(
+            "please", "robot", "robot please", "could you", "could you please", "can you", "can you please"
+        ),
         "joiner": words("and", "then", "and then"),
     }
     rules["command"] = seq(
@@ -263,7 +269,13 @@ def slots(grammar: Grammar) -> list[Slot]:
 
 def grammar_words(grammar: Grammar) -> set[str]:
     """Every literal word of the grammar (not counting vocabulary phrases)."""
-    return {w for node in grammar.rules.values() for sub in _walk(node) if isinstance(sub, Words) for w in sub.text.split()}
+    return {
+        w
+        for node in grammar.rules.values()
+        for sub in _walk(node)
+        if isinstance(sub, Words)
+        for w in sub.text.split()
+    }
 
 
 def _walk(node: Node) -> Iterator[Node]:

@@ -2,7 +2,7 @@
 
 The parser walks the grammar tree by backtracking over the token list and returns the first complete parse in
 rule order (the grammar lists its alternatives from most to least specific). No evaluation of user text, no
-statistics: the same text always gives the same frames. When no parse covers the whole text, the parser reports
+statistics: the same text always gives the same frames. When no parse covers the whole text, it reports
 the furthest token it could not fit and what the grammar expected there, which becomes the user's reply.
 """
 
@@ -24,7 +24,7 @@ _CATEGORY_NAMES = {
     "dimmer": "a dimmer",
     "blinds": "the blinds",
     "level": "a level in percent",
-    "command": "a command such as 'bring me ...', 'find ...', 'go to ...', 'lead ... to ...', 'switch on ...'",
+    "command": "a command such as 'bring me ...', 'find ...', 'go to ...', 'lead ... to ...', 'switch on'",
 }
 
 Value = Term | str
@@ -63,7 +63,9 @@ class ParseFailure:
         where = f"after '{before}'" if before else "at the start"
         if not known:
             return f"I do not know the word '{word}' ({where}); expected {expected}"
-        return f"I did not understand '{' '.join(self.tokens[self.position :])}' ({where}); expected {expected}"
+        return (
+            f"I did not understand '{' '.join(self.tokens[self.position :])}' ({where}); expected {expected}"
+        )
 
 
 @dataclass
@@ -78,8 +80,8 @@ class _Progress:
             self.expected.append(what)
 
 
-# A parse item: ("arg", role, value) inside a frame, or ("frame", RawFrame) once the frame is complete.
-_Item = tuple[str, str, Value] | tuple[str, RawFrame]
+# A parse item: a (role, value) binding inside a frame, or a RawFrame once the frame is complete.
+_Item = tuple[str, Value] | RawFrame
 
 
 class Parser:
@@ -103,7 +105,7 @@ class Parser:
         if toks:
             for end, items in self._match(self.grammar.rule(self.grammar.top), toks, 0, progress):
                 if end == len(toks):
-                    return [item[1] for item in items if item[0] == "frame"]  # type: ignore[misc]
+                    return [item for item in items if isinstance(item, RawFrame)]
                 progress.note(end, "the end of the command or 'and'")
         return ParseFailure(max(progress.position, 0), tuple(progress.expected), toks)
 
@@ -130,11 +132,11 @@ class Parser:
                 for category in node.categories:
                     progress.note(pos, f"<{category}>")
             for end, term in matches:
-                yield end, (("arg", node.role, term),)
+                yield end, ((node.role, term),)
         elif isinstance(node, Repeat):
             yield from self._repeat(node, node.most, toks, pos, progress)
         elif isinstance(node, Bind):
-            yield pos, (("arg", node.role, node.value),)
+            yield pos, ((node.role, node.value),)
         elif isinstance(node, Ref):
             produced = False
             for result in self._match(self.grammar.rule(node.name), toks, pos, progress):
@@ -144,8 +146,8 @@ class Parser:
                 progress.note(pos, "<command>")
         elif isinstance(node, Frame):
             for end, items in self._match(node.body, toks, pos, progress):
-                args = tuple((item[1], item[2]) for item in items if item[0] == "arg")  # type: ignore[misc]
-                yield end, (("frame", RawFrame(node.kind, args)),)
+                args = tuple(item for item in items if not isinstance(item, RawFrame))
+                yield end, (RawFrame(node.kind, args),)
         else:  # pragma: no cover - the Node union is closed
             raise TypeError(f"unknown grammar node {node!r}")
 

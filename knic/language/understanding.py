@@ -48,7 +48,10 @@ class Understanding:
     extra: dict[str, Any] = field(default_factory=dict, compare=False)
 
     def to_dict(self) -> dict[str, Any]:
-        """The JSON form printed by ``knic goal --json``: text, frames, goals (PDDL strings), accepted, reason."""
+        """The JSON form printed by ``knic goal --json``.
+
+        Keys: text, frames, goals (PDDL strings), accepted, reason (only when rejected), and ``extra``'s keys.
+        """
         data: dict[str, Any] = {
             "text": self.text,
             "frames": [f.to_dict() for f in self.frames],
@@ -99,12 +102,16 @@ def understand(
 
 
 def understand_transcript(
-    transcript: Transcript, vocabulary: Vocabulary, *, speaker: str = DEFAULT_SPEAKER, grammar: Grammar | None = None
+    transcript: Transcript,
+    vocabulary: Vocabulary,
+    *,
+    speaker: str = DEFAULT_SPEAKER,
+    grammar: Grammar | None = None,
 ) -> Understanding:
-    """Understand what the recogniser heard; speech outside the grammar is rejected, not forced onto a command.
+    """Understand what the recogniser heard; speech outside the grammar is rejected, never forced onto one.
 
-    The result's ``extra`` carries ``transcript`` (the words heard) and ``audio`` (duration and decoding time),
-    which appear in its JSON form.
+    The result's ``extra`` carries ``transcript`` (the words heard) and ``audio`` (duration and decoding
+    time), which appear in its JSON form.
     """
     extra = {
         "transcript": transcript.text,

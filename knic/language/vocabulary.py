@@ -22,11 +22,29 @@ import yaml
 from knic.errors import LanguageError
 
 #: Number words for 0..100, enough for percent levels.
-_UNITS = (
-    "zero one two three four five six seven eight nine ten eleven twelve thirteen fourteen fifteen sixteen "
-    "seventeen eighteen nineteen"
-).split()
-_TENS = "_ _ twenty thirty forty fifty sixty seventy eighty ninety".split()
+_UNITS = [
+    "zero",
+    "one",
+    "two",
+    "three",
+    "four",
+    "five",
+    "six",
+    "seven",
+    "eight",
+    "nine",
+    "ten",
+    "eleven",
+    "twelve",
+    "thirteen",
+    "fourteen",
+    "fifteen",
+    "sixteen",
+    "seventeen",
+    "eighteen",
+    "nineteen",
+]
+_TENS = ["_", "_", "twenty", "thirty", "forty", "fifty", "sixty", "seventy", "eighty", "ninety"]
 _LEVEL_CONSTANT = re.compile(r"^l(\d{1,3})$")
 
 
@@ -54,7 +72,9 @@ def normalize(text: str) -> str:
     whitespace. ``normalize("Half-open the blinds, please!") == "half open the blinds please"``.
     """
     text = text.lower().replace("%", " percent ").replace("-", " ").replace("_", " ")
-    text = re.sub(r"\d+", lambda m: number_words(int(m.group())) if int(m.group()) <= 100 else m.group(), text)
+    text = re.sub(
+        r"\d+", lambda m: number_words(int(m.group())) if int(m.group()) <= 100 else m.group(), text
+    )
     text = re.sub(r"[^a-z0-9' ]+", " ", text)
     return " ".join(text.split())
 
@@ -134,7 +154,9 @@ class Lexicon:
         groups = []
         for name, spec in (data.get("groups") or {}).items():
             if not isinstance(spec, dict) or not spec.get("names") or ("type" in spec) == ("members" in spec):
-                raise LanguageError(f"{path}: groups.{name} needs 'names' and exactly one of 'type', 'members'")
+                raise LanguageError(
+                    f"{path}: groups.{name} needs 'names' and exactly one of 'type', 'members'"
+                )
             groups.append(
                 GroupSpec(
                     name=str(name),
@@ -215,7 +237,9 @@ class Vocabulary:
         return cls(terms, types, instances, predicates)
 
     @classmethod
-    def from_knowledge_base(cls, kb: KnowledgeSource, lexicon: Lexicon | str | Path | None = None) -> Vocabulary:
+    def from_knowledge_base(
+        cls, kb: KnowledgeSource, lexicon: Lexicon | str | Path | None = None
+    ) -> Vocabulary:
         """Build from a knowledge base's instances and its domain's ``level`` constants.
 
         Args:

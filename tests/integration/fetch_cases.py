@@ -81,7 +81,7 @@ def case_scenario(case: FetchCase) -> Scenario:
     return scenario_from_dict(data, load_world("erl_home"))
 
 
-def run_case(case: FetchCase, max_sim_time: float = 420.0) -> tuple[RunResult, bool]:
+def run_case(case: FetchCase, max_sim_time: float = 600.0) -> tuple[RunResult, bool]:
     """Run one case; return the result and whether the ground truth has the item in the room at the end."""
     config = RunConfig(
         world="erl_home", scenario=case_scenario(case), seed=case.seed, max_sim_time=max_sim_time

@@ -31,7 +31,9 @@ def test_goal_rejected_prints_json_then_exits_4(capsys: pytest.CaptureFixture[st
     assert captured.err.startswith("knic: error: not understood:") and captured.err.count("\n") == 1
 
 
-def test_say_refuses_non_wav_before_loading_anything(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+def test_say_refuses_non_wav_before_loading_anything(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
     text_file = tmp_path / "command.txt"
     text_file.write_text("bring me my glasses")
     assert main(["say", str(text_file), "--json"]) == 2

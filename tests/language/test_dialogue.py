@@ -4,8 +4,10 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
+import pytest
+
 from knic.language import understand
-from knic.language.dialogue import Dialogue, PrintVoice, YES_NO_GRAMMAR, parse_answer, repeat_back
+from knic.language.dialogue import YES_NO_GRAMMAR, Dialogue, PrintVoice, parse_answer, repeat_back
 from knic.language.vocabulary import Vocabulary
 
 
@@ -31,30 +33,45 @@ def test_parse_answer() -> None:
 
 def test_repeat_back(vocabulary: Vocabulary) -> None:
     chained = understand("locate the tablet and bring it to me", vocabulary)
-    assert repeat_back(chained, vocabulary) == "You asked me to find the tablet and then bring the tablet to you."
+    assert (
+        repeat_back(chained, vocabulary)
+        == "You asked me to find the tablet and then bring the tablet to you."
+    )
     lights = understand("turn off all the lights", vocabulary)
     assert repeat_back(lights, vocabulary) == "You asked me to switch off the lights."
     rejected = understand("bring me the banana", vocabulary)
-    assert repeat_back(rejected, vocabulary).startswith("Sorry, I did not understand. I do not know the word 'banana'")
+    assert repeat_back(rejected, vocabulary).startswith(
+        "Sorry, I did not understand. I do not know the word 'banana'"
+    )
 
 
 def test_confirmation_yes_no_and_silence(vocabulary: Vocabulary) -> None:
     command = understand("bring me my glasses", vocabulary)
-    for replies, expected in [(("yes",), True), (("no",), False), (("hmm", "yes"), True), ((None, None), False)]:
+    for replies, expected in [
+        (("yes",), True),
+        (("no",), False),
+        (("hmm", "yes"), True),
+        ((None, None), False),
+    ]:
         voice = RecordingVoice()
-        stream = answers(*replies)
-        assert Dialogue(lambda: next(stream), voice=voice, vocabulary=vocabulary).confirm(command) is expected
+        listen = answers(*replies).__next__
+        assert Dialogue(listen, voice=voice, vocabulary=vocabulary).confirm(command) is expected
         assert voice.said[0] == "You asked me to bring the reading glasses to you. Is that right?"
 
 
 def test_a_rejected_command_is_never_confirmed(vocabulary: Vocabulary) -> None:
     voice = RecordingVoice()
     asked: list[int] = []
-    dialogue = Dialogue(lambda: asked.append(1) or "yes", voice=voice)
+
+    def listen() -> str:
+        asked.append(1)
+        return "yes"
+
+    dialogue = Dialogue(listen, voice=voice)
     assert dialogue.confirm(understand("dance for me", vocabulary)) is False
     assert asked == [] and voice.said[0].startswith("Sorry")
 
 
-def test_print_voice(capsys) -> None:  # type: ignore[no-untyped-def]
+def test_print_voice(capsys: pytest.CaptureFixture[str]) -> None:
     PrintVoice().say("Hello Annie.")
     assert capsys.readouterr().out == "robot: Hello Annie.\n"

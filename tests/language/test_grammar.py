@@ -70,7 +70,9 @@ def test_vocabulary_from_lexicon(vocabulary: Vocabulary) -> None:
     assert vocabulary.members("all_lights") == ("bedroom_left_light", "bedroom_right_light", "hallway_light")
     assert vocabulary.level(50) == "l50" and vocabulary.level(30) is None
     assert vocabulary.robot == "r2d2"
-    assert "entrance" not in {t.symbol for t in vocabulary.terms}  # lexicon entry for a symbol not in the world
+    assert "entrance" not in {
+        t.symbol for t in vocabulary.terms
+    }  # lexicon entry for a symbol not in the world
 
 
 def test_vocabulary_of_a_smaller_world() -> None:

@@ -17,7 +17,7 @@ from .conftest import SPEECH_FIXTURES
 
 def write_wav(path: Path, samples: np.ndarray, rate: int, *, tag: int = 1, bits: int = 16) -> Path:
     """Write a RIFF/WAVE file by hand (any tag and width), samples shaped (frames, channels) in [-1, 1]."""
-    frames, channels = samples.shape
+    _, channels = samples.shape
     if tag == 3:
         data = samples.astype("<f4" if bits == 32 else "<f8").tobytes()
     elif bits == 8:
@@ -29,7 +29,9 @@ def write_wav(path: Path, samples: np.ndarray, rate: int, *, tag: int = 1, bits:
         data = np.round(samples * (2 ** (bits - 1) - 1)).astype(f"<i{bits // 8}").tobytes()
     block = channels * bits // 8
     fmt = struct.pack("<HHIIHH", tag, channels, rate, rate * block, block, bits)
-    body = b"WAVE" + b"fmt " + struct.pack("<I", len(fmt)) + fmt + b"data" + struct.pack("<I", len(data)) + data
+    body = (
+        b"WAVE" + b"fmt " + struct.pack("<I", len(fmt)) + fmt + b"data" + struct.pack("<I", len(data)) + data
+    )
     path.write_bytes(b"RIFF" + struct.pack("<I", len(body)) + body)
     return path
 
