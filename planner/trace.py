@@ -73,7 +73,7 @@ class TraceEvent:
         return json.dumps(self.to_dict(), sort_keys=True)
 
     def __str__(self) -> str:
-        head = f"{self.time:9.2f}  {self.kind.value:<13}"
+        head = f"{self.time:9.2f}  {self.kind.value:<13} "
         if self.kind == EventKind.PLAN and self.plan is not None:
             extra = f" ({self.data['planning_ms']:.1f} ms)" if "planning_ms" in self.data else ""
             body = f"{len(self.plan)} steps{extra}: " + " ".join(self.plan)
