@@ -77,6 +77,11 @@ class PipelineOptions:
         points_per_detection: world points deprojected per detection (the density of the entity octomaps).
         object_detect_range: metres within which items are reliably detected (visibility for misses).
         person_detect_range: the same for people.
+        object_min_pixels: least mask size, pixels, of an item detection that counts as a sighting.
+        person_min_pixels: the same for people.
+        miss_range_share: share of the detect range within which an undetected tracked entity counts as
+            missed (near the range limit entities shrink under the pixel gate).
+        edge_px: image border, pixels, where an undetected entity does not count as missed.
         needed: consecutive consistent observations before a place fact changes.
         explored_ttl_s: seconds an ``explored`` fact lives.
         max_candidates: candidate rooms per entity of unknown place.
@@ -88,6 +93,10 @@ class PipelineOptions:
     points_per_detection: int = 128
     object_detect_range: float = 4.0
     person_detect_range: float = 6.0
+    object_min_pixels: int = 6
+    person_min_pixels: int = 30
+    miss_range_share: float = 0.8
+    edge_px: int = 3
     needed: int = 2
     explored_ttl_s: float = 120.0
     max_candidates: int = 3
@@ -166,6 +175,9 @@ def build_pipeline(
             frequency=camera_hz,
             detect_range=opts.object_detect_range,
             max_points=opts.points_per_detection,
+            min_pixels=opts.object_min_pixels,
+            miss_range=opts.miss_range_share * opts.object_detect_range,
+            edge_px=opts.edge_px,
         ),
         CameraPeopleKP(
             camera,
@@ -174,6 +186,9 @@ def build_pipeline(
             frequency=camera_hz,
             detect_range=opts.person_detect_range,
             max_points=opts.points_per_detection,
+            min_pixels=opts.person_min_pixels,
+            miss_range=opts.miss_range_share * opts.person_detect_range,
+            edge_px=opts.edge_px,
         ),
         SoundKP(sim, bus, kb, frequency=10.0),
         DeviceKP(

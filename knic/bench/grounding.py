@@ -19,6 +19,11 @@ goals, so the dispatcher is not stepped. Measured, in simulated time:
   (people, and the glasses, remote and tablet).
 * ``octomap_throughput_ratio`` from :mod:`knic.bench.octomap`.
 
+* ``by_predicate_companion``: per compared predicate, over the companion episode's one-second samples, how
+  many believed facts there were (``believed_samples``), how many of them were false (``false_samples``), how
+  many true facts were perceivable (``perceivable_samples``) and how many of those were not believed
+  (``missed_samples``): which fact kinds cost precision and recall.
+
 Figures that could not be measured (no sample) are ``null``.
 Precision, recall and staleness are those of the companion episode (the default role of ``knic run``).
 """
@@ -96,6 +101,7 @@ def measure_grounding(*, duration: float = 600.0, seed: int = 0, octomap: bool =
         "priority_staleness_all_s": top["priority_staleness_s"],
         "precision_all_top_rate": top["precision"],
         "recall_all_top_rate": top["recall"],
+        "by_predicate_companion": companion["by_predicate"],
         "wall_s": round(companion["wall_s"] + top["wall_s"], 1),
     }
     if octomap:
@@ -166,6 +172,12 @@ class _Recorder:
     done: list[_Change] = field(default_factory=list)
     precision: list[float] = field(default_factory=list)
     recall: list[float] = field(default_factory=list)
+    #: predicate -> [believed, believed but false, perceivable true, perceivable true but not believed]
+    by_predicate: dict[str, list[int]] = field(default_factory=dict)
+
+    def tally(self, facts: set[Atom], slot: int) -> None:
+        for fact in facts:
+            self.by_predicate.setdefault(fact[0], [0, 0, 0, 0])[slot] += 1
 
     def visible_since(self, name: str, t: float) -> bool:
         stamps = self.seen.get(name)
@@ -244,6 +256,15 @@ def _episode(system: Any, duration: float) -> dict[str, Any]:
         "samples": len(rec.precision),
         "cpu_s": round(cpu[0], 2),
         "wall_s": time.perf_counter() - wall0,
+        "by_predicate": {
+            pred: {
+                "believed_samples": n[0],
+                "false_samples": n[1],
+                "perceivable_samples": n[2],
+                "missed_samples": n[3],
+            }
+            for pred, n in sorted(rec.by_predicate.items())
+        },
     }
 
 
@@ -343,3 +364,7 @@ def _compare(sim: Any, kb: Any, rec: _Recorder, now: float) -> None:
     perceivable = {f for f in truth if rec.perceivable(f, rec.truth_since.get(f, now))}
     if perceivable:
         rec.recall.append(len(beliefs & perceivable) / len(perceivable))
+    rec.tally(beliefs, 0)
+    rec.tally(beliefs - truth, 1)
+    rec.tally(perceivable, 2)
+    rec.tally(perceivable - beliefs, 3)

@@ -53,9 +53,7 @@ def run(args: argparse.Namespace) -> int:
     kb = KnowledgeBase.from_pddl(args.domain, args.problem)
     task = task_from_kb(kb)
     engine = args.engine or ("tamer" if task.domain.temporal else "fast-downward")
-    planner = TaskPlanner(
-        kb.domain.up_domain, engine=engine, timeout=args.timeout, focus=not args.no_focus
-    )
+    planner = TaskPlanner(kb.domain.up_domain, engine=engine, timeout=args.timeout, focus=not args.no_focus)
     result = planner.solve(task)
     if result.has_plan and not task.domain.temporal:
         reachable = PlanningTask(task.domain, task.objects, task.facts, result.reachable_goals)

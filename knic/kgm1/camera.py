@@ -18,6 +18,7 @@ from dataclasses import dataclass
 from typing import TYPE_CHECKING
 
 import numpy as np
+import numpy.typing as npt
 
 from knic.bus import Bus
 from knic.kgm1.base import KnowledgeProvider
@@ -52,8 +53,20 @@ class CameraKP(KnowledgeProvider):
         frequency: Hz of simulated time.
         kind: which detections this KP reports.
         max_points: most world points per detection.
-        detect_range: depth, metres, within which this kind is reliably detected (for the visibility test).
+        detect_range: depth, metres, within which this kind is reliably detected: a detection whose median
+            depth is farther is not a sighting (nothing is published), and the visibility test behind KGM-2's
+            miss counter uses ``miss_range``.
+        min_pixels: least mask size, pixels, of a detection that counts as a sighting (smaller: ignored).
+        miss_range: depth, metres, within which a tracked entity that is not detected counts as missed
+            (default ``0.8 * detect_range``: near the range limit an entity may fall under ``min_pixels``).
+        edge_px: pixels at each image border where an entity counts as not visible (a partly visible entity
+            at the frame edge may be missed without having gone).
         sensor: sensor name written into the units.
+
+    Deprojection: the mask's pixels (at most ``max_points``) become world points; points whose depth lies
+    farther than ``depth_tolerance`` metres (or three median absolute deviations, whichever is larger) from
+    the median depth are rejected (background seen through or beside a thin object, depth noise), and the
+    unit's position is the median of the points kept.
     """
 
     def __init__(
@@ -67,6 +80,10 @@ class CameraKP(KnowledgeProvider):
         kind: Kind,
         max_points: int = 64,
         detect_range: float = 3.0,
+        min_pixels: int = 1,
+        miss_range: float | None = None,
+        edge_px: int = 0,
+        depth_tolerance: float = 0.15,
         sensor: str = "head_camera",
     ) -> None:
         super().__init__(name, frequency, bus, kb, "vision")
@@ -74,8 +91,13 @@ class CameraKP(KnowledgeProvider):
         self.kind = kind
         self.max_points = max_points
         self.detect_range = detect_range
+        self.min_pixels = min_pixels
+        self.miss_range = 0.8 * detect_range if miss_range is None else miss_range
+        self.edge_px = edge_px
+        self.depth_tolerance = depth_tolerance
         self.sensor = sensor
         self.frames = 0
+        self.gated = 0
         self._last_stamp: float | None = None
 
     def step(self, now: float) -> None:
@@ -90,10 +112,16 @@ class CameraKP(KnowledgeProvider):
         for index, det in enumerate(frame.detections):
             if not self.wants(det):
                 continue
-            points = frame.points_world(det, self.max_points, seed=index)
+            if det.pixel_count < self.min_pixels:
+                self.gated += 1
+                continue
+            points = self.filter_points(frame.points_world(det, self.max_points, seed=index), origin)
             if len(points) == 0:
                 continue
             centroid = np.median(points, axis=0)
+            if float(np.linalg.norm(centroid - np.asarray(origin))) > self.detect_range:
+                self.gated += 1
+                continue
             unit = LLKU(
                 kind=self.kind,
                 label=det.label,
@@ -112,9 +140,22 @@ class CameraKP(KnowledgeProvider):
             self.publish(unit)
         self.publish_scan(frame)
 
+    def filter_points(
+        self, points: npt.NDArray[np.float64], origin: tuple[float, ...]
+    ) -> npt.NDArray[np.float64]:
+        """The points whose range from the sensor is consistent with the detection's median range."""
+        if len(points) < 3:
+            return points
+        ranges = np.linalg.norm(points - np.asarray(origin), axis=1)
+        median = float(np.median(ranges))
+        mad = float(np.median(np.abs(ranges - median)))
+        keep = np.abs(ranges - median) <= max(self.depth_tolerance, 3.0 * 1.4826 * mad)
+        return points[keep]
+
     def publish_scan(self, frame: CameraFrame) -> None:
         """Publish the end-of-frame marker for this KP's kind."""
-        scan = Scan(self.kind, frame.stamp, FrameView(frame, self.detect_range), self.sensor)
+        view = FrameView(frame, self.miss_range, edge_px=self.edge_px)
+        scan = Scan(self.kind, frame.stamp, view, self.sensor)
         self.bus.publish(f"percept.vision.scan.{self.kind.value}", scan, source=self.name, stamp=frame.stamp)
 
     #: PDDL type of the individuals this KP recognises (for first-meeting instances).
@@ -150,6 +191,9 @@ class CameraObjectsKP(CameraKP):
         name: str = "kp.camera_objects",
         max_points: int = 64,
         detect_range: float = 3.0,
+        min_pixels: int = 1,
+        miss_range: float | None = None,
+        edge_px: int = 0,
     ) -> None:
         super().__init__(
             name,
@@ -160,6 +204,9 @@ class CameraObjectsKP(CameraKP):
             kind=Kind.OBJECT,
             max_points=max_points,
             detect_range=detect_range,
+            min_pixels=min_pixels,
+            miss_range=miss_range,
+            edge_px=edge_px,
         )
         self.class_symbols = dict(class_symbols)
 
@@ -187,6 +234,9 @@ class CameraPeopleKP(CameraKP):
         name: str = "kp.camera_people",
         max_points: int = 64,
         detect_range: float = 6.0,
+        min_pixels: int = 1,
+        miss_range: float | None = None,
+        edge_px: int = 0,
     ) -> None:
         super().__init__(
             name,
@@ -197,6 +247,9 @@ class CameraPeopleKP(CameraKP):
             kind=Kind.PERSON,
             max_points=max_points,
             detect_range=detect_range,
+            min_pixels=min_pixels,
+            miss_range=miss_range,
+            edge_px=edge_px,
         )
 
     def wants(self, det: Detection) -> bool:

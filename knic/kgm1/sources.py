@@ -109,9 +109,11 @@ class FrameView:
         frame: the camera frame (its depth image, intrinsics and optical-frame pose are used).
         max_range: farthest depth, metres, at which an entity of this kind is reliably detected.
         margin: depth tolerance, metres.
+        edge_px: pixels at each image border treated as outside the image (an entity there is only partly in
+            view and may not be detected).
     """
 
-    def __init__(self, frame: CameraFrame, max_range: float, margin: float = 0.2) -> None:
+    def __init__(self, frame: CameraFrame, max_range: float, margin: float = 0.2, edge_px: int = 0) -> None:
         self.stamp = frame.stamp
         self.position = np.asarray(frame.camera_pose.position, dtype=np.float64)
         self._rot = frame.camera_pose.rotation_matrix()
@@ -119,6 +121,7 @@ class FrameView:
         self._depth = frame.depth
         self.max_range = max_range
         self.margin = margin
+        self.edge_px = max(0, edge_px)
 
     def optical_axis(self) -> npt.NDArray[np.float64]:
         """The camera's viewing direction (optical z axis) in the world frame, a unit vector."""
@@ -134,7 +137,8 @@ class FrameView:
         safe_z = np.where(ok, z, 1.0)
         u = np.floor(k.fx * optical[:, 0] / safe_z + k.cx).astype(np.int64)
         v = np.floor(k.fy * optical[:, 1] / safe_z + k.cy).astype(np.int64)
-        ok &= (u >= 0) & (u < k.width) & (v >= 0) & (v < k.height)
+        e = self.edge_px
+        ok &= (u >= e) & (u < k.width - e) & (v >= e) & (v < k.height - e)
         result = np.zeros(len(pts), dtype=bool)
         idx = np.flatnonzero(ok)
         if idx.size:

@@ -36,8 +36,12 @@ PERSON_CLASS = "person"
 
 @dataclass
 class TrackingConfig:
-    """Association parameters per kind: radius (metres), misses tolerated, octomap resolution (metres), length
-    of the rays cast into entity octomaps (metres, 0: from the sensor)."""
+    """Association parameters per kind.
+
+    Radius (metres), misses tolerated, octomap resolution (metres), length of the rays cast into entity
+    octomaps (metres, 0: from the sensor), least simulated seconds unseen before a missed track is dropped,
+    and sightings near one far spot before a recognised entity's track jumps there.
+    """
 
     object_radius: float = 0.4
     person_radius: float = 0.8
@@ -45,6 +49,10 @@ class TrackingConfig:
     person_max_misses: int = 8
     resolution: float = DEFAULT_RESOLUTION
     ray_length: float = 1.0
+    object_min_lost_s: float = 2.5
+    person_min_lost_s: float = 2.5
+    object_jump_confirm: int = 3
+    person_jump_confirm: int = 2
 
 
 @dataclass
@@ -121,6 +129,8 @@ class CognitiveLayer(Component):
                 max_misses=cfg.person_max_misses if person else cfg.object_max_misses,
                 resolution=cfg.resolution,
                 ray_length=cfg.ray_length,
+                min_lost_s=cfg.person_min_lost_s if person else cfg.object_min_lost_s,
+                jump_confirm=cfg.person_jump_confirm if person else cfg.object_jump_confirm,
             )
             self.trackers[cls] = found
         return found
@@ -168,7 +178,7 @@ class CognitiveLayer(Component):
                     self._publish_track(track, det, policy, stamp)
                 dropped = result.dropped
             else:
-                dropped = tracker.miss_scan(visible) if scan is not None else []
+                dropped = tracker.miss_scan(visible, stamp) if scan is not None else []
             self.stats.processed += len(dets)
             self.stats.by_class[cls] += len(dets)
             for track in dropped:

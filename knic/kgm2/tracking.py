@@ -11,7 +11,9 @@ For every scan (one camera frame) the detections of one class are matched to the
 3. an unmatched detection starts a new track;
 4. a track not updated by the scan gets a miss when the scan could have seen it (``visible``; every scan when
    no visibility test is given) and is dropped after more than ``max_misses`` consecutive misses
-   (2.1.16-2.1.19).
+   (2.1.16-2.1.19) spanning at least ``min_lost_s`` simulated seconds since it was last seen (a brief
+   occlusion or a fast approach never drops a track: the retraction it causes needs evidence as strong as the
+   assertion did).
 
 The centroid of a matched track moves to the weighted average of old and new (weight ``gain`` on the new one).
 Time stamps are simulated seconds.
@@ -83,6 +85,7 @@ class Tracker:
         ray_length: metres of each ray cast into a track's octomap (see :class:`EntityOctomap`).
         jump_confirm: sightings near one far spot needed before an identified track jumps there (1: at once).
         jump_window_s: most simulated seconds between two of those sightings.
+        min_lost_s: least simulated seconds since the last sighting before a missed track is dropped.
     """
 
     def __init__(
@@ -96,6 +99,7 @@ class Tracker:
         ray_length: float = 1.0,
         jump_confirm: int = 2,
         jump_window_s: float = 2.0,
+        min_lost_s: float = 0.0,
     ) -> None:
         if radius <= 0 or max_misses < 0 or not 0 < gain <= 1:
             raise InferenceError(f"tracker {cls}: radius > 0, max_misses >= 0 and 0 < gain <= 1 required")
@@ -107,6 +111,7 @@ class Tracker:
         self.ray_length = ray_length
         self.jump_confirm = max(1, jump_confirm)
         self.jump_window_s = jump_window_s
+        self.min_lost_s = min_lost_s
         self.tracks: dict[int, Track] = {}
         self._by_symbol: dict[str, Track] = {}
         self.duplicates = 0
@@ -159,7 +164,7 @@ class Tracker:
                 track = self._create(det, now)
                 used.add(track.track_id)
                 result.created.append((track, det))
-        self._count_misses(used, visible, result)
+        self._count_misses(used, visible, result, now)
         return result
 
     def _jump_confirmed(self, track: Track, det: LLKU, now: float) -> bool:
@@ -212,10 +217,11 @@ class Tracker:
                 best[det.identity] = det
         return out + list(best.values())
 
-    def miss_scan(self, visible: Visibility | None) -> list[Track]:
-        """A scan that saw nothing of this class: count misses; return the tracks dropped."""
+    def miss_scan(self, visible: Visibility | None, now: float | None = None) -> list[Track]:
+        """A scan (at simulated time ``now``; None: no time condition) that saw nothing of this class: count
+        misses; return the tracks dropped."""
         result = Association()
-        self._count_misses(set(), visible, result)
+        self._count_misses(set(), visible, result, now)
         return result.dropped
 
     def _claimed(self, track: Track, pending: Sequence[LLKU]) -> bool:
@@ -223,7 +229,9 @@ class Tracker:
         # anonymous one
         return any(d.identity == track.symbol for d in pending)
 
-    def _count_misses(self, used: set[int], visible: Visibility | None, result: Association) -> None:
+    def _count_misses(
+        self, used: set[int], visible: Visibility | None, result: Association, now: float | None = None
+    ) -> None:
         stale = [t for t in self.tracks.values() if t.track_id not in used]
         if not stale:
             return
@@ -235,7 +243,8 @@ class Tracker:
             if not could_see:
                 continue
             track.misses += 1
-            if track.misses > self.max_misses:
+            long_enough = now is None or now - track.last_seen >= self.min_lost_s
+            if track.misses > self.max_misses and long_enough:
                 del self.tracks[track.track_id]
                 self._by_symbol.pop(track.symbol, None)
                 result.dropped.append(track)

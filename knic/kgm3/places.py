@@ -76,6 +76,8 @@ class _EntityPlaceKP(KPPrime):
 
     pddl_type = "entity"
     place_predicate = "object_at"
+    #: least track hits of a sighting whose position becomes the entity's last known position
+    min_hits_for_position = 2
 
     def __init__(
         self,
@@ -121,7 +123,10 @@ class _EntityPlaceKP(KPPrime):
     def seen(self, cku: CKU) -> None:
         """One observation of the entity."""
         self.last_seen[cku.symbol] = cku.stamp
-        self.last_position[cku.symbol] = cku.position
+        if int(cku.attributes.get("hits", self.min_hits_for_position)) >= self.min_hits_for_position:
+            # a track's first sighting (a false positive or a label confusion more often than not) never
+            # moves the entity's anchored position
+            self.last_position[cku.symbol] = cku.position
         room, furniture = self.place_of(cku)
         if room is None:
             return

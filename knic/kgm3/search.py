@@ -3,9 +3,10 @@
 :class:`ExploredKP` asserts ``(explored ?room)`` once the object camera has covered enough of the room: each
 room carries sample points on its floor and at table height (away from walls and furniture); a sample is
 covered when a frame taken from inside the room could see it (:class:`~knic.kgm1.sources.FrameView`: in the
-image, within detection range, not hidden). The room is explored when ``min_coverage`` of its samples are
-covered, or when the camera has looked in ``look_around_bins`` of 8 headings from inside it and
-``min_look_coverage`` is covered. Every ``explored`` fact (whoever wrote it) expires ``ttl_s`` seconds after
+image, within the miss range, not hidden). The room is explored when the camera has looked in
+``look_around_bins`` of 8 headings from inside it and ``min_look_coverage`` of the samples is covered (a
+search: sweeps and a half turn), or when ``min_coverage`` is covered from at least ``min_headings`` headings.
+Driving through a room looks one or two ways and covers part of it, so it rarely counts as exploring it. Every ``explored`` fact (whoever wrote it) expires ``ttl_s`` seconds after
 it was made, and the room's coverage starts again, so a place can be searched again for an object that moved.
 
 :class:`CandidatesKP` keeps ``(possibly_at ?e ?room)`` as ASSUMED facts for entities whose place is unknown
@@ -71,7 +72,8 @@ class ExploredKP(KPPrime):
         kb: KnowledgeBase,
         locations: LocationModel,
         *,
-        min_coverage: float = 0.6,
+        min_coverage: float = 0.9,
+        min_headings: int = 4,
         look_around_bins: int = 7,
         min_look_coverage: float = 0.25,
         ttl_s: float = 120.0,
@@ -86,6 +88,7 @@ class ExploredKP(KPPrime):
             look_around_bins,
             min_look_coverage,
         )
+        self.min_headings = min_headings
         self.ttl_s = ttl_s
         obstacles = list(locations.footprints.values())
         self.samples = {
@@ -133,9 +136,10 @@ class ExploredKP(KPPrime):
 
     def _covered(self, room: str) -> bool:
         cov = self.coverage(room)
-        if cov >= self.min_coverage:
+        headings = self.headings(room)
+        if cov >= self.min_coverage and headings >= self.min_headings:
             return True
-        return self.headings(room) >= self.look_around_bins and cov >= self.min_look_coverage
+        return headings >= self.look_around_bins and cov >= self.min_look_coverage
 
 
 class CandidatesKP(KPPrime):
@@ -163,7 +167,9 @@ class CandidatesKP(KPPrime):
         self.rooms = list(rooms)
         self.max_candidates = max_candidates
         self.last_room: dict[str, str] = {}
+        self.lost_at: dict[str, float] = {}
         self._tracked: set[str] = set()
+        self._now = 0.0
 
     def wanted(self, entity: str) -> list[tuple[str, float]]:
         """The candidate rooms an entity should have now, with their probabilities (empty when located)."""
@@ -175,7 +181,7 @@ class CandidatesKP(KPPrime):
             ranked.append((last, 1.0))
         ranked += list(self.priors.get(entity, ()))
         seen: set[str] = set()
-        explored = {f.args[0] for f in self.kb.facts("explored")}
+        explored = self.explored_for(entity)
         result: list[tuple[str, float]] = []
         for room, p in ranked:
             if room not in seen and room not in explored and self.is_a(room, "room"):
@@ -184,6 +190,23 @@ class CandidatesKP(KPPrime):
         if not result:
             result = [(r, 0.0) for r in self.rooms if r not in explored and self.is_a(r, "room")]
         return result[: self.max_candidates]
+
+    def explored_for(self, entity: str) -> set[str]:
+        """Rooms whose exploration rules them out for the entity.
+
+        For a person, only explorations made after they were lost count: people walk about, so a room
+        explored before the person went out of sight (often the room they were last seen in) may hold them
+        again.
+        """
+        rooms: set[str] = set()
+        since = self.lost_at.get(entity) if self.is_a(entity, "person") else None
+        for fact in self.kb.facts("explored"):
+            if since is not None:
+                prov = self.kb.why(fact)
+                if prov is not None and prov.since < since:
+                    continue
+            rooms.add(fact.args[0])
+        return rooms
 
     def located(self, entity: str) -> bool:
         """Whether the knowledge base knows where the entity is (or who holds it)."""
@@ -195,7 +218,10 @@ class CandidatesKP(KPPrime):
         if place:
             self.last_room[entity] = place[0].args[1]
             self._tracked.add(entity)
+            self.lost_at.pop(entity, None)
             return True
+        if entity in self.last_room:
+            self.lost_at.setdefault(entity, self._now)
         return False
 
     def entities(self) -> list[str]:
@@ -207,6 +233,7 @@ class CandidatesKP(KPPrime):
 
     def step(self, now: float) -> None:
         """Bring every tracked entity's possibly_at facts in line with :meth:`wanted`."""
+        self._now = now
         for entity in self.entities():
             wanted = dict(self.wanted(entity))
             current = {f.args[1] for f in self.kb.facts("possibly_at", entity)}
