@@ -95,7 +95,7 @@ class PipelineOptions:
     person_detect_range: float = 6.0
     object_min_pixels: int = 6
     person_min_pixels: int = 30
-    miss_range_share: float = 0.8
+    miss_range_share: float = 0.95
     edge_px: int = 3
     needed: int = 2
     explored_ttl_s: float = 120.0

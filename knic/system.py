@@ -126,8 +126,8 @@ class SimulationComponent(Component):
 class DispatcherComponent(Component):
     """Steps the plan dispatcher once per period (after perception at the same instant).
 
-    While the dispatcher is idle and every goal already holds in the knowledge base there is nothing to do, so
-    the step is skipped (the dispatcher would otherwise plan an empty plan again at every other tick).
+    An idle dispatcher's step costs nothing until the goals change or a goal stops holding (see
+    :mod:`planner.dispatch`), so it is stepped unconditionally.
     """
 
     name = "dispatcher"
@@ -138,10 +138,7 @@ class DispatcherComponent(Component):
 
     def step(self, now: float) -> None:
         """One bounded unit of dispatch work (plan, start, advance or finish an action)."""
-        d = self.dispatcher
-        if d.state == DispatcherState.IDLE and d.current is None and d.kb.goals_hold():
-            return
-        d.step()
+        self.dispatcher.step()
 
 
 @dataclass
@@ -365,7 +362,7 @@ class KnicSystem:
                 continue
             self._retries[goal] = count + 1
             del self._dropped_at[goal]
-            del self.dispatcher.dropped[atom]
+            self.dispatcher.retry(atom)
             reason = f"retrying goal {goal} ({count + 1}/{self.config.goal_retries}) dropped for: {why}"
             self.trace.emit(TraceEvent(EventKind.REPLAN, now, reason=reason, goal=goal))
 

@@ -6,11 +6,16 @@ action fails or when a knowledge-base change breaks the rest of the plan. See :m
 
 Each :meth:`Dispatcher.step` does a bounded amount of work, in this order:
 
+0. while IDLE (every goal achieved or dropped), nothing at all unless something that matters changed: the
+   goals (added, removed, a dropped goal handed back with :meth:`Dispatcher.retry`) or a fact that is a goal
+   (a goal stopped holding); other knowledge-base changes are not even looked at, so an idle dispatcher
+   costs nothing per tick and never plans when there is nothing to do;
 1. if the knowledge base changed since the last step: replan when the goals changed, or when the rest of the
    plan (with the running action's effects assumed) no longer reaches the goals from the current facts;
    a running action is then cancelled (``deactivation`` with ending "cancelled");
-2. plan when there is no plan (the plan is validated against the current facts before it runs; goals the
-   planner proves unreachable are dropped and reported by name);
+2. when no action is running and every goal holds: go IDLE (no plan is made, even after a failure);
+   otherwise plan when there is no plan (the plan is validated against the current facts before it runs;
+   goals the planner proves unreachable are dropped and reported by name);
 3. either start the next action -- check its at-start conditions, ``activation()`` -- or advance the running
    one -- check the time limit and the over-all conditions, ``step()``; when it finishes: ``deactivation()``,
    at-end conditions, write the effects (belief status "effect", source "dispatcher"), check the sensed
@@ -39,6 +44,7 @@ from planner.validate import apply, check_plan, unmet_conditions
 
 SOURCE = "dispatcher"
 _GOAL_CHANGES = (ChangeKind.ADD_GOAL, ChangeKind.REMOVE_GOAL)
+_FACT_CHANGES = (ChangeKind.ADD_FACT, ChangeKind.REMOVE_FACT)
 
 
 class DispatcherState(enum.StrEnum):
@@ -124,10 +130,12 @@ class Dispatcher:
         self._planned_goals: frozenset[Atom] | None = None
         self._need_plan: str | None = None
         self._dirty = True  # look at the knowledge base on the first step
+        self._wake = True  # while IDLE: something that matters changed (goals, or a fact that is a goal)
         self._writing = False
         self._step_failures = 0
         self._replans_of: dict[Atom, int] = {}
         self._goals: list[Atom] | None = None  # the knowledge base's goals, refreshed on goal changes
+        self._goal_set: frozenset[Atom] = frozenset()  # the same, as a set
         self._unsubscribe = kb.subscribe(self._on_change)
 
     # -- public ---------------------------------------------------------------------------------------
@@ -135,8 +143,9 @@ class Dispatcher:
         """Do one bounded unit of work (see the module docstring) and return the resulting state."""
         if self.state == DispatcherState.STOPPED:
             return self.state
-        if self.state == DispatcherState.IDLE and not self._dirty and self._need_plan is None:
-            return self.state  # nothing changed since every goal was achieved or dropped
+        if self._asleep():
+            return self.state  # nothing that matters changed since every goal was achieved or dropped
+        self._wake = False
         goals = self._active_goals()
         if not goals:
             self._dirty = False
@@ -145,9 +154,9 @@ class Dispatcher:
         if self._dirty:
             self._dirty = False
             self._check_after_change(goals)
-        if self.current is None and self._need_plan is None:
+        if self.current is None:
             facts = self._facts()
-            if all(g in facts for g in goals):
+            if all(g in facts for g in goals):  # nothing to do, whatever was pending: no (empty) plan
                 self._announce_achieved(goals, facts)
                 self._finish_idle()
                 return self.state
@@ -183,7 +192,7 @@ class Dispatcher:
             ticks += 1
             if on_tick is not None:
                 on_tick(ticks)
-            if state in (DispatcherState.IDLE, DispatcherState.STOPPED) and not self._dirty:
+            if state == DispatcherState.STOPPED or self._asleep():
                 break
         return self.report(ticks)
 
@@ -204,16 +213,41 @@ class Dispatcher:
             self._cancel_current(reason)
         self.state = DispatcherState.STOPPED
 
+    def retry(self, goal: Atom) -> bool:
+        """Hand a dropped goal back: forget why it was dropped, so the next step plans for it again.
+
+        Args:
+            goal: the goal as an atom, ``("object_at", "glasses", "bedroom")``.
+
+        Returns:
+            False (and nothing changes) when the goal was not dropped.
+        """
+        if self.dropped.pop(goal, None) is None:
+            return False
+        self._replans_of.pop(goal, None)
+        self._wake = self._dirty = True  # the active goals changed: an idle or running dispatcher must look
+        return True
+
     def close(self) -> None:
         """Stop listening to the knowledge base."""
         self._unsubscribe()
 
     # -- knowledge-base changes ----------------------------------------------------------------------
+    def _asleep(self) -> bool:
+        """IDLE and nothing that matters happened since: the step has nothing to do."""
+        return self.state == DispatcherState.IDLE and not self._wake and self._need_plan is None
+
     def _on_change(self, change: Change) -> None:
         if change.kind in _GOAL_CHANGES:
             self._goals = None
-        if not self._writing:
-            self._dirty = True
+            self._wake = True
+        if self._writing:
+            return
+        self._dirty = True
+        if change.kind in _FACT_CHANGES and (
+            self._goals is None or (change.name, *change.args) in self._goal_set
+        ):
+            self._wake = True  # a goal started or stopped holding
 
     def _check_after_change(self, goals: list[Atom]) -> None:
         if self._planned_goals is None or self._need_plan is not None:
@@ -454,6 +488,7 @@ class Dispatcher:
     def _active_goals(self) -> list[Atom]:
         if self._goals is None:
             self._goals = [(g.predicate, *g.args) for g in self.kb.goals()]
+            self._goal_set = frozenset(self._goals)
         goals = self._goals
         if not self.dropped:
             return goals
@@ -479,6 +514,7 @@ class Dispatcher:
 
     def _finish_idle(self) -> None:
         self._replans_of.clear()
+        self._need_plan = None  # whatever was pending is moot: no goal left to plan for
         if self.current is None:
             self.state = DispatcherState.IDLE
             self.plan, self.index, self._planned_goals = (), 0, None

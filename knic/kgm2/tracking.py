@@ -57,6 +57,8 @@ class Track:
     support: deque[str] = field(default_factory=lambda: deque(maxlen=4))
     #: an unconfirmed far sighting of this identity: (position, sightings, last stamp)
     jump: tuple[tuple[float, float, float], int, float] | None = None
+    #: sightings behind the latest update: 1, or the sightings that confirmed a jump to a far spot
+    sightings: int = 1
 
     @property
     def keys(self) -> Keys:
@@ -174,6 +176,7 @@ class Tracker:
         a label confusion; the track moves only after ``jump_confirm`` sightings near the same far spot, each
         within ``jump_window_s`` of the previous one. Until then the detection is set aside.
         """
+        track.sightings = 1
         if math.dist(det.position, track.centroid) < self.radius:
             track.jump = None
             return True
@@ -186,6 +189,7 @@ class Tracker:
                 seen = count + 1
         if seen >= self.jump_confirm:
             track.jump = None
+            track.sightings = seen
             return True
         track.jump = (det.position, seen, now)
         self.jumps_set_aside += 1

@@ -56,21 +56,32 @@ class Confirmer(Generic[V]):
         self._pending: dict[str, _Candidate[V]] = {}
 
     def observe(
-        self, subject: str, value: V, confidence: float, current: V | None, stamp: float = 0.0
+        self,
+        subject: str,
+        value: V,
+        confidence: float,
+        current: V | None,
+        stamp: float = 0.0,
+        weight: int = 1,
     ) -> bool:
         """Record one observation made at simulated time ``stamp``; True when ``value`` is now confirmed and
-        differs from ``current``."""
+        differs from ``current``.
+
+        ``weight`` is how many consistent sightings the observation stands for (KGM-2 moves a recognised
+        entity's track to a far spot only after several sightings there; they count here too).
+        """
         if value == current:
             self._pending.pop(subject, None)
             return False
         cand = self._pending.get(subject)
         fresh = cand is not None and (self.window_s is None or stamp - cand.last <= self.window_s)
+        weight = max(1, weight)
         if cand is not None and fresh and cand.value == value:
-            cand.count += 1
-            cand.confidence_sum += confidence
+            cand.count += weight
+            cand.confidence_sum += confidence * weight
             cand.last = stamp
         else:
-            cand = _Candidate(value, 1, confidence, stamp)
+            cand = _Candidate(value, weight, confidence * weight, stamp)
             self._pending[subject] = cand
         if cand.count >= self.needed and cand.confidence_sum / cand.count >= self.min_confidence:
             del self._pending[subject]

@@ -24,6 +24,7 @@ import numpy as np
 
 from knic.bus import Bus
 from knic.kgm1.locations import LocationModel
+from knic.kgm2.spatial import points_in_polygon
 from knic.kgm3.base import Confirmer, KPPrime
 from knic.units import CKU
 from knowledge_base import BeliefStatus, Fact, KnowledgeBase
@@ -132,7 +133,8 @@ class _EntityPlaceKP(KPPrime):
             return
         current = (self.value_of(self.place_predicate, cku.symbol), self.current_support(cku.symbol))
         support = (cku.uid, *cku.support)
-        if self.confirmer.observe(cku.symbol, (room, furniture), cku.confidence, current, cku.stamp):
+        weight = int(cku.attributes.get("sightings", 1))
+        if self.confirmer.observe(cku.symbol, (room, furniture), cku.confidence, current, cku.stamp, weight):
             with self.kb.batch():
                 self.write_place(cku.symbol, room, furniture, cku.stamp, support, cku.confidence)
         elif current == (room, furniture):
@@ -232,6 +234,18 @@ class ObjectPlaceKP(_EntityPlaceKP):
             share < self.min_support_share or self.locations.furniture_room.get(furniture) != room
         ):
             furniture = None
+        if furniture is None and room is not None:
+            # hysteresis: a partial view (the item at the frame edge, half hidden) that puts few voxels on the
+            # surface it is believed on does not take it off while its centre stays over that surface
+            believed = self.current_support(cku.symbol)
+            footprint = self.locations.footprints.get(believed) if believed else None
+            if (
+                believed is not None
+                and footprint is not None
+                and self.locations.furniture_room.get(believed) == room
+                and bool(points_in_polygon(np.array([cku.position[:2]]), footprint)[0])
+            ):
+                furniture = believed
         return room, furniture
 
     def current_support(self, symbol: str) -> str | None:

@@ -6,15 +6,17 @@ covered when a frame taken from inside the room could see it (:class:`~knic.kgm1
 image, within the miss range, not hidden). The room is explored when the camera has looked in
 ``look_around_bins`` of 8 headings from inside it and ``min_look_coverage`` of the samples is covered (a
 search: sweeps and a half turn), or when ``min_coverage`` is covered from at least ``min_headings`` headings.
-Driving through a room looks one or two ways and covers part of it, so it rarely counts as exploring it. Every ``explored`` fact (whoever wrote it) expires ``ttl_s`` seconds after
-it was made, and the room's coverage starts again, so a place can be searched again for an object that moved.
+Driving through a room looks one or two ways and covers part of it, so it rarely counts as exploring it.
+Every ``explored`` fact (whoever wrote it) expires ``ttl_s`` seconds after it was made, and the room's
+coverage starts again, so a place can be searched again for an object that moved.
 
 :class:`CandidatesKP` keeps ``(possibly_at ?e ?room)`` as ASSUMED facts for entities whose place is unknown
 (no ``object_at`` / ``person_at``, not held, not handed over): the ``max_candidates`` likeliest unexplored
-rooms by the priors (for a person, the room where they were last seen first); when every prior room has been
-explored, the other unexplored rooms. Candidates go when the room gets explored without the entity being seen
-there and all of them go when the entity is observed anywhere. Entities considered: those with priors, those
-named in a goal, those that already have candidates, and those that were located once.
+rooms by the priors (for a person, the room where they were last seen first; rooms explored before the
+person was lost do not rule them out); when every prior room has been explored, the other unexplored rooms.
+Candidates go when the room gets explored without the entity being seen there, and all of them go when the
+entity is observed anywhere. Entities considered: those with priors, those named in a goal, those that
+already have candidates, and those that were located once.
 """
 
 from __future__ import annotations

@@ -6,6 +6,8 @@ from actions.base import Outcome
 from knowledge_base import BeliefStatus, Fact, KnowledgeBase
 from planner.dispatch import Dispatcher, DispatcherState
 from planner.engines import TaskPlanner
+from planner.model import PlanningTask
+from planner.plan import PlanResult
 from planner.recovery import Recovery, RecoveryPolicy, RecoveryRule
 from planner.trace import EventKind, Trace
 from tests.planner.doubles import PAPER_PROBLEM, SimClock, StubPlanner, World, erl_kb, scripted_registry
@@ -278,3 +280,80 @@ def test_after_dropping_a_goal_unrelated_changes_do_not_replan() -> None:
     assert list(report.dropped) == ["(has annie tissues)"]
     assert d.trace.of_kind(EventKind.REPLAN) == []
     assert report.achieved == ["(robot_at r2d2 kitchen)"]
+
+
+class _CountingPlanner:
+    """The real planner, counting its calls (an idle dispatcher must not call it)."""
+
+    def __init__(self) -> None:
+        self.inner = TaskPlanner(engine="knic")
+        self.calls = 0
+
+    def solve(self, task: PlanningTask, *, timeout: float | None = None) -> PlanResult:
+        self.calls += 1
+        return self.inner.solve(task, timeout=timeout)
+
+
+def test_idle_with_goals_holding_never_plans_while_perception_writes() -> None:
+    clock = SimClock()
+    kb = erl_kb(clock, goals=["(robot_at r2d2 hallway)", "(light_on hallway_light)"])
+    planner = _CountingPlanner()
+    d = dispatcher(kb, World(steps_per_action=1), planner=planner)
+    d.run(max_ticks=100, on_tick=clock.tick)
+    assert d.state == DispatcherState.IDLE and kb.goals_hold()
+    plans, calls = len(d.trace.of_kind(EventKind.PLAN)), planner.calls
+    events = len(d.trace.events)
+    rooms = ["bathroom", "kitchen", "bedroom"]
+    for tick in range(300):  # perception keeps writing, goal facts re-asserted: nothing that matters changes
+        kb.add_fact("person_at", "jack", rooms[tick % 3], source="kp_people", status=BeliefStatus.OBSERVED)
+        kb.add_fact("robot_at", "r2d2", "hallway", source="kp_localisation", status=BeliefStatus.OBSERVED)
+        assert d.step() == DispatcherState.IDLE
+        clock.tick()
+    assert planner.calls == calls and len(d.trace.of_kind(EventKind.PLAN)) == plans
+    assert len(d.trace.events) == events  # no event at all over the idle ticks
+    # a goal stops holding: the dispatcher wakes up, plans once and achieves it again
+    kb.add_fact("light_off", "hallway_light", source="kp_devices", status=BeliefStatus.OBSERVED)
+    kb.remove_fact("light_on", "hallway_light", source="kp_devices", status=BeliefStatus.OBSERVED)
+    d.step()
+    new_plans = d.trace.of_kind(EventKind.PLAN)[plans:]
+    assert [e.plan for e in new_plans] == [("(switch_on r2d2 hallway_light)",)]
+    d.run(max_ticks=50, on_tick=clock.tick)
+    assert kb.holds("light_on", "hallway_light") and d.state == DispatcherState.IDLE
+    assert planner.calls == calls + 1
+
+
+def test_goal_made_true_by_perception_after_a_failure_is_not_planned_again() -> None:
+    clock = SimClock()
+    kb = erl_kb(clock, goals=["(light_on hallway_light)"])
+    world = World(fail={"(switch_on r2d2 hallway_light)": 1})
+    planner = _CountingPlanner()
+    policy = RecoveryPolicy({Outcome.EXECUTION_FAILURE: RecoveryRule(0, Recovery.REPLAN)})
+    d = dispatcher(kb, world, planner=planner, policy=policy)
+
+    def someone_else_switches_it_on(tick: int) -> None:
+        clock.tick()
+        if d.trace.of_kind(EventKind.FAILURE) and not kb.holds("light_on", "hallway_light"):
+            kb.add_fact("light_on", "hallway_light", source="kp_devices", status=BeliefStatus.OBSERVED)
+
+    report = d.run(max_ticks=100, on_tick=someone_else_switches_it_on)
+    assert [e.outcome for e in d.trace.of_kind(EventKind.FAILURE)] == ["execution failure"]
+    assert planner.calls == 1 and len(d.trace.of_kind(EventKind.PLAN)) == 1  # no empty plan after the failure
+    assert report.achieved == ["(light_on hallway_light)"] and report.state == DispatcherState.IDLE
+
+
+def test_a_dropped_goal_handed_back_is_planned_for_again() -> None:
+    clock = SimClock()
+    kb = erl_kb(clock, goals=["(light_on hallway_light)"])
+    world = World(fail={"(switch_on r2d2 hallway_light)": 1})
+    policy = RecoveryPolicy({Outcome.EXECUTION_FAILURE: RecoveryRule(0, Recovery.DROP_GOAL)})
+    d = dispatcher(kb, world, policy=policy)
+    report = d.run(max_ticks=100, on_tick=clock.tick)
+    assert list(report.dropped) == ["(light_on hallway_light)"] and report.state == DispatcherState.IDLE
+    for _ in range(10):  # dropped: idle ticks do nothing
+        assert d.step() == DispatcherState.IDLE
+    assert len(d.trace.of_kind(EventKind.PLAN)) == 1
+    assert d.retry(("light_on", "hallway_light")) and not d.retry(("light_on", "hallway_light"))
+    report = d.run(max_ticks=100, on_tick=clock.tick)
+    assert len(d.trace.of_kind(EventKind.PLAN)) == 2
+    assert report.dropped == {} and report.achieved == ["(light_on hallway_light)"]
+    assert kb.holds("light_on", "hallway_light")
