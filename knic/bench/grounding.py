@@ -58,11 +58,21 @@ COMPARED = frozenset(
 )
 #: the companion role's priority entities (besides every person)
 PRIORITY_ITEMS = frozenset({"glasses", "remote", "tablet"})
+#: the episodes of the benchmark, by role
+EPISODE_ROLES = ("companion", "all_top_rate")
 Atom = tuple[str, ...]
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("--duration", type=float, default=600.0, help="simulated seconds per episode (600)")
+    parser.add_argument(
+        "--duration", "--sim-seconds", type=float, default=600.0, help="simulated seconds per episode (600)"
+    )
+    parser.add_argument(
+        "--roles",
+        default=",".join(EPISODE_ROLES),
+        help="comma-separated episodes to run, of companion and all_top_rate (default both); the figures of"
+        " an episode not run are null (a short smoke run: --sim-seconds 60 --roles companion)",
+    )
     parser.add_argument("--seed", type=int, default=0, help="simulation seed (default 0)")
     parser.add_argument("--skip-octomap", action="store_true", help="do not measure the octomap ratio")
     parser.add_argument("--json", action="store_true", help="print one JSON object")
@@ -73,8 +83,17 @@ def run(args: argparse.Namespace) -> int:
 
     if args.duration <= 0:
         raise KnicError(f"knic bench grounding: --duration must be positive, got {args.duration}")
+    roles = tuple(r.strip() for r in args.roles.split(",") if r.strip())
+    unknown = sorted(set(roles) - set(EPISODE_ROLES))
+    if not roles or unknown:
+        raise KnicError(
+            f"knic bench grounding: --roles {args.roles!r}: expected a comma-separated subset of"
+            f" {', '.join(EPISODE_ROLES)}" + (f"; unknown: {', '.join(unknown)}" if unknown else "")
+        )
     logging.getLogger("knic.scheduler").setLevel(logging.ERROR)
-    figures = measure_grounding(duration=args.duration, seed=args.seed, octomap=not args.skip_octomap)
+    figures = measure_grounding(
+        duration=args.duration, seed=args.seed, octomap=not args.skip_octomap, roles=roles
+    )
     if args.json:
         print(json.dumps(figures, sort_keys=True))
     else:
@@ -83,10 +102,20 @@ def run(args: argparse.Namespace) -> int:
     return 0
 
 
-def measure_grounding(*, duration: float = 600.0, seed: int = 0, octomap: bool = True) -> dict[str, Any]:
-    """Run the companion and the all-top-rate episodes and return the figures (see the module docstring)."""
-    companion = run_episode("companion", duration=duration, seed=seed)
-    top = run_episode("all_top_rate", duration=duration, seed=seed)
+def measure_grounding(
+    *,
+    duration: float = 600.0,
+    seed: int = 0,
+    octomap: bool = True,
+    roles: tuple[str, ...] = EPISODE_ROLES,
+) -> dict[str, Any]:
+    """Run the companion and the all-top-rate episodes and return the figures (see the module docstring).
+
+    Args:
+        roles: the episodes to run (of :data:`EPISODE_ROLES`); the figures of an episode not run are None.
+    """
+    companion = _episode_of("companion", roles, duration, seed)
+    top = _episode_of("all_top_rate", roles, duration, seed)
     figures: dict[str, Any] = {
         "duration_s": duration,
         "precision": companion["precision"],
@@ -109,6 +138,20 @@ def measure_grounding(*, duration: float = 600.0, seed: int = 0, octomap: bool =
 
         figures["octomap_throughput_ratio"] = measure_octomap_throughput()["octomap_throughput_ratio"]
     return figures
+
+
+class _NotRun(dict[str, Any]):
+    """The figures of an episode that was not run: None for every figure, 0 wall-clock seconds."""
+
+    def __missing__(self, key: str) -> Any:
+        return None
+
+
+def _episode_of(role: str, roles: tuple[str, ...], duration: float, seed: int) -> dict[str, Any]:
+    """The episode of ``role`` when it is in ``roles``, else :class:`_NotRun` figures."""
+    if role in roles:
+        return run_episode(role, duration=duration, seed=seed)
+    return _NotRun(wall_s=0.0)
 
 
 def bench_scenario(duration: float) -> dict[str, Any]:

@@ -9,7 +9,12 @@ Figures (wall-clock time; the decoder is built once before timing):
 * ``frame_argument_accuracy`` -- share whose frames are right with every argument;
 * ``oog_rejection`` -- share of out-of-grammar utterances rejected (not accepted as a command);
 * ``false_rejection`` -- share of in-grammar utterances rejected;
-* ``ms_per_utterance`` -- mean recognition plus understanding time per utterance.
+* ``ms_per_utterance`` -- mean recognition plus understanding time per utterance;
+* ``by_voice`` -- frame-with-arguments accuracy of the in-grammar utterances of each voice in ``gold.json``.
+
+``--fixtures DIR`` runs another set in the same layout (e.g. a held-out development set synthesised with other
+sentences and voices, to tune on without touching the shipped one); ``--option KEY=VALUE`` (repeatable) and
+``--no-branch-penalty`` change the decoder for that run only.
 """
 
 from __future__ import annotations
@@ -33,6 +38,41 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         "--filler-weight", type=float, default=None, help="filler loop prior (default: built in)"
     )
     parser.add_argument("--verbose", action="store_true", help="list every utterance that went wrong")
+    parser.add_argument(
+        "--option",
+        action="append",
+        default=[],
+        metavar="KEY=VALUE",
+        help="pocketsphinx option for this run, e.g. beam=1e-60 (repeatable)",
+    )
+    parser.add_argument(
+        "--no-branch-penalty", action="store_true", help="do not split grammar probability over branches"
+    )
+
+
+def parse_options(pairs: list[str]) -> dict[str, object]:
+    """``["beam=1e-60", "bestpath=false"]`` -> ``{"beam": 1e-60, "bestpath": False}`` (int, float, bool, str).
+
+    Raises:
+        KnicError: an item is not KEY=VALUE.
+    """
+    options: dict[str, object] = {}
+    for pair in pairs:
+        key, sep, text = pair.partition("=")
+        if not sep or not key.strip():
+            raise KnicError(f"--option {pair!r}: expected KEY=VALUE, e.g. beam=1e-60")
+        value: object = text
+        if text.lower() in ("true", "false"):
+            value = text.lower() == "true"
+        else:
+            for kind in (int, float):
+                try:
+                    value = kind(text)
+                    break
+                except ValueError:
+                    continue
+        options[key.strip()] = value
+    return options
 
 
 def word_errors(reference: list[str], hypothesis: list[str]) -> int:
@@ -46,11 +86,25 @@ def word_errors(reference: list[str], hypothesis: list[str]) -> int:
     return previous[-1]
 
 
-def evaluate(fixtures: Path, limit: int = 0, filler_weight: float | None = None) -> dict[str, Any]:
+def evaluate(
+    fixtures: Path,
+    limit: int = 0,
+    filler_weight: float | None = None,
+    *,
+    decoder_options: dict[str, object] | None = None,
+    branch_penalty: bool = True,
+) -> dict[str, Any]:
     """Run the test set and return the figures plus the per-utterance mistakes under ``"errors"``.
 
+    Args:
+        fixtures: folder with ``gold.json`` and the WAV files it names.
+        limit: use only the first ``limit`` utterances (0: all).
+        filler_weight: filler loop prior (None: the recogniser's default).
+        decoder_options: pocketsphinx options for this run over the module defaults.
+        branch_penalty: passed to :class:`~knic.language.speech.Recognizer`.
+
     Raises:
-        KnicError: the gold file is missing or malformed.
+        KnicError: the gold file is missing or malformed, or the decoder refuses an option.
     """
     from knic.language.frames import CommandFrame
     from knic.language.speech import Recognizer, load_audio
@@ -65,15 +119,16 @@ def evaluate(fixtures: Path, limit: int = 0, filler_weight: float | None = None)
     _, vocabulary = load_world()
     speaker = gold.get("speaker", "annie")
     started = time.perf_counter()
-    if filler_weight is None:
-        recognizer = Recognizer(default_grammar(), vocabulary)
-    else:
-        recognizer = Recognizer(default_grammar(), vocabulary, filler_weight=filler_weight)
+    extra: dict[str, Any] = {"decoder_options": decoder_options, "branch_penalty": branch_penalty}
+    if filler_weight is not None:
+        extra["filler_weight"] = filler_weight
+    recognizer = Recognizer(default_grammar(), vocabulary, **extra)
     setup_ms = (time.perf_counter() - started) * 1000.0
     errors_total = words_total = kinds_ok = args_ok = rejected_in = rejected_oog = n_in = n_oog = 0
     elapsed: list[float] = []
     durations: list[float] = []
     mistakes: list[dict[str, Any]] = []
+    voices: dict[str, list[int]] = {}
     for entry in utterances:
         audio = load_audio(fixtures / entry["file"])
         started = time.perf_counter()
@@ -91,6 +146,9 @@ def evaluate(fixtures: Path, limit: int = 0, filler_weight: float | None = None)
             kinds_ok += [f.kind for f in got] == [f.kind for f in expected]
             right = [f.to_dict() for f in got] == [f.to_dict() for f in expected]
             args_ok += right
+            tally = voices.setdefault(str(entry.get("voice", "?")), [0, 0])
+            tally[0] += right
+            tally[1] += 1
             rejected_in += not result.accepted
             if not right:
                 mistakes.append(
@@ -116,12 +174,19 @@ def evaluate(fixtures: Path, limit: int = 0, filler_weight: float | None = None)
         "audio_s_per_utterance": round(sum(durations) / len(durations), 3) if durations else None,
         "decoder_setup_ms": round(setup_ms, 1),
         "filler_weight": recognizer.filler_weight,
+        "by_voice": {voice: round(ok / n, 4) for voice, (ok, n) in sorted(voices.items())},
         "errors": mistakes,
     }
 
 
 def run(args: argparse.Namespace) -> int:
-    figures = evaluate(Path(args.fixtures), args.limit, args.filler_weight)
+    figures = evaluate(
+        Path(args.fixtures),
+        args.limit,
+        args.filler_weight,
+        decoder_options=parse_options(args.option),
+        branch_penalty=not args.no_branch_penalty,
+    )
     mistakes = figures.pop("errors")
     if args.verbose:
         figures["errors"] = mistakes

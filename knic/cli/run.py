@@ -5,8 +5,21 @@ English such as ``"bring me my glasses"``, understood by :mod:`knic.language`) a
 (repeatable: recognised with pocketsphinx against the command grammar, then understood). The execution
 trace is printed as it happens (plans, dispatches, outcomes, replans, goals), together with what perception
 asserts or retracts about the entities named in the goals. Exit status 0 when every goal holds in the
-knowledge base and in the simulator's ground truth; 1 with a one-line reason on stderr otherwise; 4 when a
-command was not understood; 2 for other user errors.
+knowledge base and in the simulator's ground truth; 1 with a one-line reason on stderr otherwise (also when
+a goal was not confirmed); 4 when a command was not understood; 2 for other user errors.
+
+Roles (``knic/roles.yaml``) decide what happens before the goals reach the knowledge base:
+
+* a role with ``confirm_actions`` (service_semi_autonomous): the robot repeats each command back
+  (:class:`knic.language.dialogue.Dialogue`) and waits for yes or no before any goal is added. The answer
+  comes from ``--confirm yes|no`` (scripted: the same answer to every question), from ``--confirm-speech
+  FILE.wav`` (one recorded answer per question, recognised with pocketsphinx against a yes/no grammar), or
+  typed on stdin when it is a terminal; with none of these the run is refused before anything is built. A
+  command not confirmed with a clear yes adds no goal at all and the run ends with exit status 1.
+* a role with ``operator_only`` (teleoperated): the robot acts only on operator commands; the goals given on
+  the command line are the operator's (provenance source ``operator``) and run as usual, with the perception
+  pipeline grounding the knowledge base at the role's rates.
+* other roles: the robot repeats each command back and goes ahead.
 """
 
 from __future__ import annotations
@@ -14,12 +27,15 @@ from __future__ import annotations
 import argparse
 import json
 import sys
+from collections.abc import Callable
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, TextIO
 
 from knic.errors import KnicError, LanguageError
 
 if TYPE_CHECKING:
+    from knic.kgm2.roles import Role
+    from knic.language.dialogue import Dialogue
     from knic.system import KnicSystem
     from knowledge_base import Change, Fact
 
@@ -32,6 +48,10 @@ class RunFailed(KnicError):
     """The run ended without every goal holding."""
 
     exit_code = 1
+
+
+class NotConfirmed(RunFailed):
+    """A command was not confirmed with a clear yes (semi-autonomous role): no goal was added."""
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -53,6 +73,18 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--role", default="companion", help="robot role from knic/roles.yaml (default companion)"
     )
+    parser.add_argument(
+        "--confirm",
+        choices=("yes", "no"),
+        help="scripted answer to every confirmation question (roles with confirm_actions)",
+    )
+    parser.add_argument(
+        "--confirm-speech",
+        action="append",
+        default=[],
+        metavar="FILE.wav",
+        help="a spoken yes or no, one per confirmation question, in order (repeatable)",
+    )
     parser.add_argument("--seed", type=int, default=0, help="seed of the simulation (default 0)")
     parser.add_argument("--trace", type=Path, metavar="FILE.jsonl", help="write the trace as JSON lines")
     parser.add_argument(
@@ -68,6 +100,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 def run(args: argparse.Namespace) -> int:
     import logging
 
+    from knic.kgm2.roles import load_role
     from knic.system import KnicSystem, RunConfig
 
     logging.getLogger("knic.scheduler").setLevel(logging.ERROR)  # overruns are counted, not printed
@@ -75,9 +108,12 @@ def run(args: argparse.Namespace) -> int:
         raise KnicError("knic run: give at least one --goal or --speech")
     if args.max_sim_time <= 0:
         raise KnicError(f"knic run: --max-sim-time must be positive, got {args.max_sim_time}")
-    for wav in args.speech:
-        if not Path(wav).is_file():
-            raise KnicError(f"knic run: --speech {wav}: no such file")
+    for option, wavs in (("--speech", args.speech), ("--confirm-speech", args.confirm_speech)):
+        for wav in wavs:
+            if not Path(wav).is_file():
+                raise KnicError(f"knic run: {option} {wav}: no such file")
+    role = load_role(args.role)
+    listen = answer_source(args, role)  # refuses before anything is built when it cannot ask
     trace_file = args.trace.open("w", encoding="utf-8") if args.trace else None
     try:
         config = RunConfig(
@@ -91,7 +127,19 @@ def run(args: argparse.Namespace) -> int:
             gui=args.gui,
         )
         with KnicSystem(config) as system:
-            texts = add_goals(system, args.goal, args.speech, args.speaker, quiet=args.json)
+            dialogue = None
+            if listen is not None:
+                dialogue = run_dialogue(system, listen, sys.stderr if args.json else sys.stdout)
+            source = "operator" if role.operator_only else "user"
+            texts = add_goals(
+                system,
+                args.goal,
+                args.speech,
+                args.speaker,
+                quiet=args.json,
+                dialogue=dialogue,
+                source=source,
+            )
             goals = system.kb.goals()
             if not args.json:
                 print(f"knic run: world {args.world}, seed {args.seed}, role {args.role}")
@@ -116,19 +164,37 @@ def run(args: argparse.Namespace) -> int:
 
 
 def add_goals(
-    system: KnicSystem, goals: list[str], speech: list[str], speaker: str, *, quiet: bool = False
+    system: KnicSystem,
+    goals: list[str],
+    speech: list[str],
+    speaker: str,
+    *,
+    quiet: bool = False,
+    dialogue: Dialogue | None = None,
+    source: str = "user",
 ) -> list[dict[str, Any]]:
     """Add every ``--goal`` and ``--speech`` goal to the system's knowledge base; all or nothing.
 
-    Returns one record per natural-language command (text, goals). The robot repeats what it understood.
+    Every command is understood first. Without ``dialogue`` the robot repeats each natural-language command
+    and the goals are added. With ``dialogue`` (roles with ``confirm_actions``) the robot repeats each
+    command, PDDL goals included, and asks for yes or no; the goals are added only when every command is
+    confirmed.
+
+    Args:
+        source: provenance source of the goals (``operator`` under an operator-only role).
+
+    Returns:
+        One record per natural-language command (text, goals).
 
     Raises:
         LanguageError: a command was not understood (its reason); nothing is added.
-        KnowledgeBaseError: a PDDL goal is malformed or names unknown symbols.
+        KnowledgeBaseError: a PDDL goal is malformed or names unknown symbols; nothing is added.
+        NotConfirmed: a command was answered no, or not clearly; nothing is added.
     """
+    from knic.language.understanding import Understanding
     from knic.system import parse_goal
 
-    pending: list[Fact] = []
+    commands: list[tuple[str, Understanding | None, list[Fact]]] = []
     records: list[dict[str, Any]] = []
     vocabulary: list[Any] = []
 
@@ -139,24 +205,196 @@ def add_goals(
 
     for text in goals:
         if text.strip().startswith("("):
-            pending.append(parse_goal(text))
+            fact = parse_goal(text)
+            commands.append((text, None, [fact]))
         else:
-            facts = understand_text(vocab(), text, speaker)
-            records.append({"text": text, "goals": [str(f) for f in facts]})
-            pending += facts
+            understood = understand_text(vocab(), text, speaker)
+            records.append({"text": text, "goals": [str(f) for f in understood.goals]})
+            commands.append((text, understood, list(understood.goals)))
     for wav in speech:
         text = recognise(vocab(), wav)
-        facts = understand_text(vocab(), text, speaker)
-        records.append({"speech": str(wav), "text": text, "goals": [str(f) for f in facts]})
-        pending += facts
-    with system.kb.batch():
-        for fact in pending:
-            system.add_goal(fact)
-    for record in records:
-        system.context.say(f"You asked me to {record['text']}.")
-        if not quiet:
+        understood = understand_text(vocab(), text, speaker)
+        records.append({"speech": str(wav), "text": text, "goals": [str(f) for f in understood.goals]})
+        commands.append((text, understood, list(understood.goals)))
+    if not quiet:
+        for record in records:
             print(f'understood "{record["text"]}" as ' + " ".join(record["goals"]))
+    if dialogue is not None:
+        for text, understood, facts in commands:
+            if not confirm_command(dialogue, understood, facts):
+                raise NotConfirmed(f'knic run: "{text}" was not confirmed with a yes; no goal was added')
+    with system.kb.batch():
+        for _, _, facts in commands:
+            for fact in facts:
+                system.add_goal(fact, source=source)
+    if dialogue is None:
+        for record in records:
+            system.context.say(f"You asked me to {record['text']}.")
     return records
+
+
+def confirm_command(dialogue: Dialogue, understood: Any, facts: list[Fact]) -> bool:
+    """Repeat one command back and wait for yes or no; a PDDL goal is repeated as its atoms.
+
+    Returns:
+        True only for a clear yes (see :meth:`knic.language.dialogue.Dialogue.confirm`).
+    """
+    from knic.language.dialogue import parse_answer
+
+    if understood is not None:
+        return bool(dialogue.confirm(understood))
+    dialogue.voice.say(
+        "You asked me to make " + " and ".join(str(f) for f in facts) + " true. Is that right?"
+    )
+    for attempt in range(dialogue.max_asks):
+        answer = dialogue.listen()
+        verdict = parse_answer(answer) if answer else None
+        if verdict is not None:
+            dialogue.voice.say("Okay, I will do it." if verdict else "Okay, I will not do it.")
+            return verdict
+        if attempt + 1 < dialogue.max_asks:
+            dialogue.voice.say("Please answer yes or no.")
+    dialogue.voice.say("I did not get an answer, so I will not do it.")
+    return False
+
+
+def answer_source(args: argparse.Namespace, role: Role) -> Callable[[], str | None] | None:
+    """Where the answers to confirmation questions come from, for a role that asks; None for other roles.
+
+    ``--confirm`` first, then ``--confirm-speech`` files, then stdin when it is a terminal.
+
+    Raises:
+        KnicError: the role asks but there is no way to get an answer (no --confirm and no terminal).
+    """
+    if not role.confirm_actions:
+        return None
+    if args.confirm is not None:
+        answer: str = args.confirm
+        return lambda: answer
+    if args.confirm_speech:
+        return SpokenAnswers(args.confirm_speech)
+    if sys.stdin is not None and sys.stdin.isatty():
+        return typed_answer
+    raise KnicError(
+        f"knic run: role {role.name} asks for yes or no before adding a goal and stdin is not a terminal;"
+        " pass --confirm yes|no (or --confirm-speech FILE.wav)"
+    )
+
+
+def typed_answer() -> str | None:
+    """One answer typed on stdin (None at end of input)."""
+    try:
+        return input("yes or no? ")
+    except EOFError:
+        return None
+
+
+class SpokenAnswers:
+    """Recorded answers, recognised one per question with pocketsphinx against a yes/no grammar.
+
+    The grammar admits the answer words of :mod:`knic.language.dialogue` (optionally "please") or a run of
+    at least three filler words, so longer speech that is not an answer comes out as fillers and counts as
+    no answer rather than being forced onto yes or no. Built lazily on the first question (model load about
+    0.3 s). After the last file, there is no answer (None).
+
+    Args:
+        wavs: WAV files, in the order of the questions.
+
+    Raises:
+        LanguageError: pocketsphinx refused the grammar (on the first question).
+        AudioError: a file is not usable audio (on its question).
+    """
+
+    def __init__(self, wavs: list[str]) -> None:
+        self.wavs = list(wavs)
+        self._decoder: Any = None
+        self._answer_words: frozenset[str] = frozenset()
+
+    def __call__(self) -> str | None:
+        from knic.language.speech import load_audio, pad
+
+        if not self.wavs:
+            return None
+        audio = pad(load_audio(self.wavs.pop(0)))
+        decoder = self._decoder or self._build()
+        decoder.start_utt()
+        decoder.process_raw(audio.tobytes(), full_utt=True)
+        decoder.end_utt()
+        hyp = decoder.hyp()
+        words = hyp.hypstr.split() if hyp is not None else []
+        return " ".join(words) if set(words) <= self._answer_words else ""
+
+    def _build(self) -> Any:
+        from knic.language.dialogue import NO_WORDS, YES_WORDS
+        from knic.language.speech import FILLER_WORDS
+
+        try:
+            from pocketsphinx import Decoder
+        except ImportError as exc:  # pragma: no cover - pocketsphinx is a declared dependency
+            raise LanguageError(f"spoken answers need pocketsphinx: {exc}") from exc
+        decoder = Decoder(lm=None, loglevel="FATAL", bestpath=False, wip=0.2)  # as knic.language.speech
+        answers = sorted(
+            w for w in YES_WORDS | NO_WORDS if " " not in w and "'" not in w and decoder.lookup_word(w)
+        )
+        fillers = sorted(
+            w for w in FILLER_WORDS if w not in answers and w != "please" and decoder.lookup_word(w)
+        )
+        self._answer_words = frozenset(answers) | {"please"}
+        jsgf = (
+            "#JSGF V1.0;\ngrammar answer;\n"
+            "public <answer> = <reply> | <filler> <filler> <filler> <filler>*;\n"
+            f"<reply> = ( {' | '.join(answers)} ) [ {' | '.join(answers)} ] [ please ];\n"
+            f"<filler> = {' | '.join(fillers)};\n"
+        )
+        try:
+            decoder.add_jsgf_string("answer", jsgf)
+            decoder.activate_search("answer")
+        except (RuntimeError, ValueError) as exc:
+            raise LanguageError(f"pocketsphinx refused the yes/no grammar: {exc}") from exc
+        self._decoder = decoder
+        return decoder
+
+
+class _Silent:
+    """A voice that says nothing (espeak-ng's fallback when the sentence is printed anyway)."""
+
+    def say(self, sentence: str) -> None:
+        """Nothing."""
+
+
+class RobotVoice:
+    """What the robot says in a run: said in the simulation (the robot's speech) and printed ``robot: ...``.
+
+    Args:
+        system: the run (its ERL context speaks in the simulator).
+        stream: where the sentence is printed.
+        aloud: also speak through this voice (espeak-ng for a person at the terminal), or None.
+    """
+
+    def __init__(self, system: KnicSystem, stream: TextIO, aloud: Any = None) -> None:
+        self.system = system
+        self.stream = stream
+        self.aloud = aloud
+
+    def say(self, sentence: str) -> None:
+        """Say one sentence (blocks while espeak-ng speaks, when used)."""
+        self.system.context.say(sentence)
+        print(f"robot: {sentence}", file=self.stream, flush=True)
+        if self.aloud is not None:
+            self.aloud.say(sentence)
+
+
+def run_dialogue(system: KnicSystem, listen: Callable[[], str | None], stream: TextIO) -> Dialogue:
+    """The confirmation dialogue of a run: the robot's voice, the answer source, the world's spoken names."""
+    import shutil
+
+    from knic.language.dialogue import Dialogue, EspeakVoice
+
+    aloud = None
+    espeak = shutil.which("espeak-ng")
+    if listen is typed_answer and espeak:  # someone is at the terminal: speak aloud too (printed anyway)
+        aloud = EspeakVoice(espeak, fallback=_Silent())
+    return Dialogue(listen, voice=RobotVoice(system, stream, aloud), vocabulary=world_vocabulary(system))
 
 
 def world_vocabulary(system: KnicSystem) -> Any:
@@ -166,8 +404,9 @@ def world_vocabulary(system: KnicSystem) -> Any:
     return Vocabulary.from_knowledge_base(system.kb, LEXICON if LEXICON.is_file() else None)
 
 
-def understand_text(vocabulary: Any, text: str, speaker: str) -> list[Fact]:
-    """PDDL goals of an English command, against the run's knowledge base vocabulary.
+def understand_text(vocabulary: Any, text: str, speaker: str) -> Any:
+    """The :class:`~knic.language.understanding.Understanding` of an English command (accepted), against the
+    run's knowledge base vocabulary; its ``goals`` are the PDDL goals.
 
     Raises:
         LanguageError: the command was not understood or names what the world does not have.
@@ -177,7 +416,7 @@ def understand_text(vocabulary: Any, text: str, speaker: str) -> list[Fact]:
     result = understand(text, vocabulary, speaker=speaker)
     if not result.accepted:
         raise LanguageError(f'"{text}" not understood: {result.reason}')
-    return list(result.goals)
+    return result
 
 
 def recognise(vocabulary: Any, wav: str) -> str:

@@ -103,6 +103,9 @@ class CognitiveLayer(Component):
         self._last_run: dict[tuple[str, str], float] = {}
         #: hits after which a track counts as settled (see :meth:`_unsettled`)
         self.settled_hits = 3
+        #: a label confusion is suspected only on a track seen this recently (simulated seconds): an object
+        #: misread while the camera looks at it; a stale track of an object since moved away blocks nothing
+        self.confusion_recent_s = 3.0
 
     # ------------------------------------------------------------------ lifecycle
 
@@ -196,10 +199,11 @@ class CognitiveLayer(Component):
     def _set_aside_confusions(self, by_class: dict[str, list[LLKU]]) -> None:
         """Drop the object detections that are most likely another object under a confused label.
 
-        A detection of class X lying on a settled track of another class Y (within Y's radius), away from X's
-        own tracks, while no detection of Y explains Y's track in this scan, is Y seen under the wrong label:
-        it must neither start an X track nor move X's track there. When both X and Y are detected at the spot
-        (two objects side by side) the detection stands. Counted in ``stats.confusions``.
+        A detection of class X lying on a settled track of another class Y (within Y's radius), seen in the
+        last ``confusion_recent_s``, away from X's own tracks, while no detection of Y explains Y's track in
+        this scan, is Y seen under the wrong label: it must neither start an X track nor move X's track
+        there. When both X and Y are detected at the spot (two objects side by side) the detection stands.
+        Counted in ``stats.confusions``.
         """
         for cls, dets in list(by_class.items()):
             kept: list[LLKU] = []
@@ -222,6 +226,7 @@ class CognitiveLayer(Component):
             for track in tracker.tracks.values():
                 if (
                     track.hits < self.settled_hits
+                    or det.stamp - track.last_seen > self.confusion_recent_s
                     or math.dist(det.position, track.centroid) >= tracker.radius
                 ):
                     continue

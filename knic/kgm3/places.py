@@ -5,20 +5,26 @@ Each consumes one CKU stream and intersects the entity's occupied voxel keys wit
 locations' octomaps) and the furniture support prisms (seed 004, III.C: "check the spatial intersection of
 each octomap of people with each octomap of locations"). The room holding most of an entity's voxels is where
 it is; an item whose voxels fall at least ``min_support_share`` into a surface's support prism is on that
-furniture.
+furniture. Once an item is believed on a surface, a view that puts too few of its voxels on it (the item at
+the frame edge or half hidden) keeps it there while the item's centre stays over the surface's footprint.
 
 Retraction:
 
 * a confirmed new place retracts the old one (the predicates are single-valued);
-* a track KGM-2 dropped after repeated misses where the camera could see it (``attributes["lost"]``) retracts
+* a track KGM-2 dropped after repeated misses where the camera could see it (``attributes["lost"]``; KGM-2
+  drops a track only after several misses over seconds, so a brief occlusion retracts nothing) retracts
   the place it was believed at, and ``found``: the entity is not where we thought;
 * a room explored after the belief was made, without the entity being seen since, retracts it as well;
-* people not seen for the role's ``person_ttl_s`` lose the ``person_at`` this KP' wrote (they walk about).
+* people not seen for the role's ``person_ttl_s`` lose the ``person_at`` this KP' wrote (they walk about);
+  people last seen walking lose it sooner (``moving_ttl_s``).
 
 Items the robot holds or has given to someone are left to the actions that moved them.
 """
 
 from __future__ import annotations
+
+import math
+from collections import deque
 
 import numpy as np
 
@@ -98,6 +104,8 @@ class _EntityPlaceKP(KPPrime):
         self.last_seen: dict[str, float] = {}
         self.last_position: dict[str, tuple[float, float, float]] = {}
         self.explored_grace_s = explored_grace_s
+        #: simulated seconds after a room becomes explored before beliefs in it are checked against it
+        self.explored_settle_s = 3.0
 
     def step(self, now: float) -> None:
         """Process the CKUs received, then retract beliefs contradicted by explored rooms (and TTLs)."""
@@ -182,6 +190,8 @@ class _EntityPlaceKP(KPPrime):
             belief = self.kb.why(fact)
             if explored is None or belief is None or belief.since >= explored.since:
                 continue
+            if now - explored.since < self.explored_settle_s:
+                continue  # the camera is still in the room: let the sightings of this instant come in
             seen = self.last_seen.get(symbol, float("-inf"))
             if seen < explored.since - self.explored_grace_s:
                 self.forget_place(symbol, now, ())
@@ -294,7 +304,9 @@ class PersonPlaceKP(_EntityPlaceKP):
 
     Args:
         ttl_s: simulated seconds after the last sighting at which the person_at this KP' wrote is retracted
-            (the role's ``person_ttl_s``).
+            (the role's ``person_ttl_s``), for a person who stood still when last seen.
+        moving_ttl_s: the same for a person who was walking when last seen (faster than ``walking_speed``
+            m/s over the last ``speed_window_s`` seconds of sightings): they are likely elsewhere soon.
     """
 
     pddl_type = "person"
@@ -310,6 +322,9 @@ class PersonPlaceKP(_EntityPlaceKP):
         needed: int = 2,
         min_confidence: float = 0.5,
         explored_grace_s: float = 15.0,
+        moving_ttl_s: float = 10.0,
+        walking_speed: float = 0.3,
+        speed_window_s: float = 1.5,
         frequency: float = 5.0,
         name: str = "kp'.person_at",
     ) -> None:
@@ -317,6 +332,32 @@ class PersonPlaceKP(_EntityPlaceKP):
             name, frequency, bus, kb, "cognition.person", locations, needed, min_confidence, explored_grace_s
         )
         self.ttl_s = ttl_s
+        self.moving_ttl_s = min(moving_ttl_s, ttl_s)
+        self.walking_speed = walking_speed
+        self.speed_window_s = speed_window_s
+        self._trail: dict[str, deque[tuple[float, tuple[float, float, float]]]] = {}
+
+    def seen(self, cku: CKU) -> None:
+        """One sighting: remember the recent trail (for the walking test), then as for every entity."""
+        trail = self._trail.setdefault(cku.symbol, deque())
+        trail.append((cku.stamp, cku.position))
+        while len(trail) > 2 and cku.stamp - trail[1][0] >= self.speed_window_s:
+            trail.popleft()
+        super().seen(cku)
+
+    def walking(self, symbol: str) -> bool:
+        """Whether the person moved faster than ``walking_speed`` over their last sightings."""
+        trail = self._trail.get(symbol)
+        if not trail or len(trail) < 2:
+            return False
+        (t0, p0), (t1, p1) = trail[0], trail[-1]
+        if t1 - t0 < 0.5 * self.speed_window_s:
+            return False
+        return math.dist(p0[:2], p1[:2]) / (t1 - t0) > self.walking_speed
+
+    def ttl_of(self, symbol: str) -> float:
+        """Seconds the person's place lives after their last sighting."""
+        return self.moving_ttl_s if self.walking(symbol) else self.ttl_s
 
     def step(self, now: float) -> None:
         """Process sightings, explored rooms, then expire people unseen for longer than the TTL."""
@@ -326,5 +367,5 @@ class PersonPlaceKP(_EntityPlaceKP):
             prov = self.kb.why(fact)
             if prov is None or prov.source != self.name:
                 continue
-            if now - self.last_seen.get(symbol, prov.since) > self.ttl_s:
+            if now - self.last_seen.get(symbol, prov.since) > self.ttl_of(symbol):
                 self.forget_place(symbol, now, ())

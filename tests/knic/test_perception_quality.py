@@ -17,7 +17,7 @@ from knic.kgm1.sources import FrameView
 from knic.kgm2.cognition import CognitiveLayer
 from knic.kgm2.roles import load_role
 from knic.kgm2.tracking import Tracker
-from knic.kgm3.places import ObjectPlaceKP
+from knic.kgm3.places import ObjectPlaceKP, PersonPlaceKP
 from knic.kgm3.search import CandidatesKP, ExploredKP
 from knic.units import LLKU, Kind
 from knowledge_base import BeliefStatus, KnowledgeBase
@@ -178,3 +178,38 @@ def test_a_confused_label_on_another_settled_object_moves_nothing(paper_location
         t += 0.2
     track = layer.trackers["sponge"].by_symbol("sponge")
     assert track is not None and math.dist(track.centroid, sponge) < 0.1
+
+
+def test_a_partial_view_does_not_take_an_item_off_its_surface(
+    paper_kb: KnowledgeBase, paper_locations: LocationModel
+) -> None:
+    bus = Bus()
+    places = ObjectPlaceKP(bus, paper_kb, paper_locations, needed=2)
+    for t in (1.0, 1.2):
+        send(bus, cku("glasses", Kind.OBJECT, (7.75, 1.5, 0.92), t, hits=3))
+    places.step(1.2)
+    assert paper_kb.holds("object_on", "glasses", "entrance_shelf")
+    # seen low over the shelf's footprint (voxels under its top) in several frames: still on the shelf
+    for t in (1.4, 1.6, 1.8):
+        send(bus, cku("glasses", Kind.OBJECT, (7.75, 1.5, 0.4), t, hits=4))
+    places.step(1.8)
+    assert paper_kb.holds("object_on", "glasses", "entrance_shelf") and places.writes.retracted == 0
+
+
+def test_a_person_last_seen_walking_expires_sooner(
+    paper_kb: KnowledgeBase, paper_locations: LocationModel
+) -> None:
+    bus = Bus()
+    paper_kb.add_instance("person", "tracy")
+    kp = PersonPlaceKP(bus, paper_kb, paper_locations, ttl_s=30.0, moving_ttl_s=8.0, needed=2)
+    for i in range(6):  # annie sits still; tracy walks along the bedroom at 1 m/s
+        t = 1.0 + 0.4 * i
+        send(bus, cku("annie", Kind.PERSON, (1.1, 6.6, 0.8), t, cls="person"))
+        send(bus, cku("tracy", Kind.PERSON, (0.5 + 0.4 * i, 7.5, 0.9), t, cls="person"))
+    kp.step(3.0)
+    assert kp.walking("tracy") and not kp.walking("annie")
+    assert {f.args[0] for f in paper_kb.facts("person_at")} == {"annie", "tracy"}
+    kp.step(12.0)
+    assert {f.args[0] for f in paper_kb.facts("person_at")} == {"annie"}
+    kp.step(33.5)
+    assert paper_kb.facts("person_at") == []

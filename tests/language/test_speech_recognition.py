@@ -51,3 +51,60 @@ def test_the_recogniser_knows_every_word_of_the_grammar(recognizer: Recognizer) 
     assert "public <utterance>" in recognizer.jsgf and "<filler>" in recognizer.jsgf
     assert "glasses" in recognizer.graph.words()
     assert all(" " not in w for w in recognizer.unknown_words)
+
+
+def test_decoder_options_override_the_defaults_for_one_recogniser(
+    recognizer: Recognizer, vocabulary: Vocabulary
+) -> None:
+    from knic.language.speech import DECODER_OPTIONS
+
+    tuned = Recognizer(default_grammar(), vocabulary, decoder_options={"beam": 1e-40})
+    assert tuned.decoder_options["beam"] == 1e-40 and tuned.decoder_options["lw"] == DECODER_OPTIONS["lw"]
+    assert "beam" not in DECODER_OPTIONS and "beam" not in recognizer.decoder_options
+    transcript = tuned.recognize(SPEECH_FIXTURES / "cmd_011.wav")
+    assert transcript.text == "bring me my glasses"
+
+
+def test_an_option_the_decoder_does_not_know_is_refused(vocabulary: Vocabulary) -> None:
+    from knic.errors import LanguageError
+
+    with pytest.raises(LanguageError, match="no_such_option"):
+        Recognizer(default_grammar(), vocabulary, decoder_options={"no_such_option": 1})
+
+
+def test_bench_options_are_typed_from_their_text() -> None:
+    from knic.bench.speech import parse_options
+    from knic.errors import KnicError
+
+    assert parse_options(["beam=1e-60", "topn=2", "bestpath=false", "cmn=batch"]) == {
+        "beam": 1e-60,
+        "topn": 2,
+        "bestpath": False,
+        "cmn": "batch",
+    }
+    with pytest.raises(KnicError, match="KEY=VALUE"):
+        parse_options(["beam"])
+
+
+@pytest.mark.parametrize(
+    ("phones", "variant"),
+    [
+        ("W AO T ER", "W AO T AH"),  # final ER
+        ("D AO R", "D AO"),  # R after a vowel at the end
+        ("K AA R D B AO R D", "K AA D B AO D"),  # R before a consonant
+        ("AA R M CH EH R", "AA M CH EH AH"),  # EH + R becomes a centring diphthong
+        ("B EH D R UW M", "B EH D R UW M"),  # R before a vowel stays
+        ("F AO R AH", "F AO R AH"),  # linking R stays
+    ],
+)
+def test_non_rhotic_variants_drop_r_only_where_a_british_speaker_does(phones: str, variant: str) -> None:
+    from knic.language.speech import non_rhotic
+
+    assert non_rhotic(phones) == variant
+
+
+def test_the_recogniser_adds_non_rhotic_alternatives_for_command_words(recognizer: Recognizer) -> None:
+    added = recognizer.added_pronunciations
+    assert added["water(2)"] == "W AO T AH"
+    assert {"search(2)", "turn(2)", "percent(2)"} <= set(added)
+    assert all(recognizer._decoder.lookup_word(name) == phones for name, phones in added.items())
