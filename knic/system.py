@@ -369,13 +369,26 @@ class KnicSystem:
     def holds_in_truth(self, goal: Fact) -> bool:
         """Whether the simulator's ground truth agrees with ``goal`` (goals it cannot judge count as true).
 
-        ``reported`` is judged from what the robot said: a sentence naming the entity.
+        ``reported`` is judged from what the robot said: a report ("I found the ...") naming the entity and
+        the room where it truly is, or the gripper when the robot holds it.
         """
+        truth = self.sim.ground_truth_facts()
         if goal.predicate in TRUTH_PREDICATES:
-            return (goal.predicate, *goal.args) in self.sim.ground_truth_facts()
+            return (goal.predicate, *goal.args) in truth
         if goal.predicate == "reported":
-            name = spoken(goal.args[0])
-            return any(name in u.text for u in self.sim.spoken())
+            entity = goal.args[0]
+            places = [
+                f"in the {spoken(f[2])}"
+                for f in truth
+                if f[0] in ("object_at", "person_at") and f[1] == entity
+            ]
+            if any(f[0] == "holding" and f[2] == entity for f in truth):
+                places.append("in my gripper")
+            claim = f"i found the {spoken(entity)}"
+            return any(
+                u.text.lower().startswith(claim) and any(p in u.text.lower() for p in places)
+                for u in self.sim.spoken()
+            )
         return True
 
     def unconfirmed(self) -> list[Fact]:
