@@ -130,6 +130,12 @@ def _print_facts(state: State, predicate: str | None, as_json: bool) -> None:
 def _why(kb: KnowledgeBase, state: State, fact: Fact, as_json: bool) -> int:
     if fact.predicate not in kb.domain.predicates:
         raise KnicError(f"--why {fact}: unknown predicate {fact.predicate!r} in domain {kb.domain.name}")
+    arity = len(kb.domain.predicates[fact.predicate])
+    if len(fact.args) != arity:
+        raise KnicError(f"--why {fact}: {fact.predicate} takes {arity} argument(s), got {len(fact.args)}")
+    for arg in fact.args:
+        if arg not in state.instances and arg not in kb.domain.constants:
+            raise KnicError(f"--why {fact}: {arg!r} is not an instance known to this journal")
     prov = state.facts.get(fact)
     history = [
         c for c in kb.changes() if c.fact == fact and c.seq <= state.seq and c.kind.value.endswith("_fact")

@@ -87,6 +87,8 @@ def test_why(journal: Path, capsys: pytest.CaptureFixture[str]) -> None:
         (["--journal", "missing.sqlite"], "missing.sqlite: no such journal file"),
         (["--why", "object_at glasses"], "cannot parse fact 'object_at glasses'"),
         (["--why", "(teleported glasses)"], "unknown predicate 'teleported'"),
+        (["--why", "(object_at glasses moon)"], "'moon' is not an instance"),
+        (["--why", "(object_at glasses)"], "object_at takes 2 argument(s), got 1"),
         (["--predicate", "teleported"], "unknown predicate 'teleported'"),
         (["--at", "yesterday"], "--at: expected a time in seconds"),
     ],
