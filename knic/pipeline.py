@@ -87,6 +87,10 @@ class PipelineOptions:
         max_candidates: candidate rooms per entity of unknown place.
         tracking: association parameters.
         roles_file: the role file.
+        early_role_filter: let the camera KPs skip, before deprojection, the classes the role does not process
+            in this frame (CognitiveLayer.admits). Measured with ``knic bench grounding``: about 10-20 % less
+            pipeline CPU under the companion role, for about 0.01 less precision and recall on non-priority
+            objects (picked up at their class rate instead of at once), so it is off by default.
     """
 
     camera_hz: float | None = None
@@ -102,6 +106,7 @@ class PipelineOptions:
     max_candidates: int = 3
     tracking: TrackingConfig = field(default_factory=TrackingConfig)
     roles_file: Path = ROLES_FILE
+    early_role_filter: bool = False
 
 
 class Pipeline(list[Component]):
@@ -200,6 +205,9 @@ def build_pipeline(
         ),
     ]
     cognition = CognitiveLayer(bus, the_role, locations, config=opts.tracking, frequency=10.0)
+    for provider in providers:  # the role's filter runs before deprojection, in the camera KPs
+        if opts.early_role_filter and isinstance(provider, CameraObjectsKP | CameraPeopleKP):
+            provider.gate = cognition.admits
     kp_primes: list[Component] = [
         RobotAtKP(bus, kb, locations, needed=opts.needed),
         ObjectPlaceKP(bus, kb, locations, needed=opts.needed),

@@ -13,8 +13,8 @@ detector says who they are; unrecognised people are published as anonymous ``per
 from __future__ import annotations
 
 from abc import abstractmethod
-from collections.abc import Mapping
-from dataclasses import dataclass
+from collections.abc import Callable, Mapping
+from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -32,14 +32,25 @@ if TYPE_CHECKING:
 PERSON_LABEL = "person"
 
 
+#: Early role filter of a camera KP: (tracker class, camera position in the world frame (metres), frame stamp)
+#: -> whether that class's detections are wanted from this frame. Asked at most once per class and frame,
+#: before any deprojection (see :attr:`CameraKP.gate`).
+ClassGate = Callable[[str, tuple[float, float, float], float], bool]
+
+
 @dataclass(frozen=True)
 class Scan:
-    """End of one frame's units of one kind: the frame's time stamp, and what it could see."""
+    """End of one frame's units of one kind: the frame's time stamp, and what it could see.
+
+    ``withheld`` names the tracker classes whose detections the KP neither deprojected nor published for this
+    frame because the gate said they were not due: KGM-2 must not associate them nor count misses for them.
+    """
 
     kind: Kind
     stamp: float
     view: ViewModel
     sensor: str
+    withheld: frozenset[str] = field(default_factory=frozenset)
 
 
 class CameraKP(KnowledgeProvider):
@@ -98,6 +109,11 @@ class CameraKP(KnowledgeProvider):
         self.sensor = sensor
         self.frames = 0
         self.gated = 0
+        #: detections withheld by :attr:`gate` (never deprojected)
+        self.withheld = 0
+        #: the role's early filter (None: every wanted detection is processed); set by the pipeline to
+        #: :meth:`knic.kgm2.cognition.CognitiveLayer.admits`
+        self.gate: ClassGate | None = None
         self._last_stamp: float | None = None
 
     def step(self, now: float) -> None:
@@ -109,9 +125,18 @@ class CameraKP(KnowledgeProvider):
         self._last_stamp = frame.stamp
         self.frames += 1
         origin = tuple(float(v) for v in frame.camera_pose.position)
+        decided: dict[str, bool] = {}
         for index, det in enumerate(frame.detections):
             if not self.wants(det):
                 continue
+            if self.gate is not None:
+                cls = self.track_class(det)
+                admitted = decided.get(cls)
+                if admitted is None:
+                    admitted = decided[cls] = self.gate(cls, (origin[0], origin[1], origin[2]), frame.stamp)
+                if not admitted:
+                    self.withheld += 1
+                    continue
             if det.pixel_count < self.min_pixels:
                 self.gated += 1
                 continue
@@ -138,7 +163,11 @@ class CameraKP(KnowledgeProvider):
             if unit.identity is not None:
                 self.meet(self.pddl_type, unit.identity, frame.stamp, (unit.uid,))
             self.publish(unit)
-        self.publish_scan(frame)
+        self.publish_scan(frame, frozenset(c for c, ok in decided.items() if not ok))
+
+    def track_class(self, det: Detection) -> str:
+        """The KGM-2 tracker class of a detection (its label; every person is one class)."""
+        return det.label
 
     def filter_points(
         self, points: npt.NDArray[np.float64], origin: tuple[float, ...]
@@ -152,10 +181,10 @@ class CameraKP(KnowledgeProvider):
         keep = np.abs(ranges - median) <= max(self.depth_tolerance, 3.0 * 1.4826 * mad)
         return points[keep]
 
-    def publish_scan(self, frame: CameraFrame) -> None:
-        """Publish the end-of-frame marker for this KP's kind."""
+    def publish_scan(self, frame: CameraFrame, withheld: frozenset[str] = frozenset()) -> None:
+        """Publish the end-of-frame marker for this KP's kind (``withheld``: classes the gate held back)."""
         view = FrameView(frame, self.miss_range, edge_px=self.edge_px)
-        scan = Scan(self.kind, frame.stamp, view, self.sensor)
+        scan = Scan(self.kind, frame.stamp, view, self.sensor, withheld)
         self.bus.publish(f"percept.vision.scan.{self.kind.value}", scan, source=self.name, stamp=frame.stamp)
 
     #: PDDL type of the individuals this KP recognises (for first-meeting instances).
@@ -255,6 +284,10 @@ class CameraPeopleKP(CameraKP):
     def wants(self, det: Detection) -> bool:
         """Person detections only."""
         return det.label == PERSON_LABEL
+
+    def track_class(self, det: Detection) -> str:
+        """Every person is tracked in the one ``person`` class."""
+        return PERSON_LABEL
 
     def identify(self, det: Detection) -> str | None:
         """The recognised name, or None for an unrecognised person."""

@@ -101,6 +101,8 @@ class CognitiveLayer(Component):
         self.stats = CognitionStats()
         self._inbox = bus.inbox("percept", capacity=20000)
         self._last_run: dict[tuple[str, str], float] = {}
+        #: class -> stamp of the latest frame :meth:`admits` let through (the scan then processes it)
+        self._admitted: dict[str, float] = {}
         #: hits after which a track counts as settled (see :meth:`_unsettled`)
         self.settled_hits = 3
         #: a label confusion is suspected only on a track seen this recently (simulated seconds): an object
@@ -150,6 +152,37 @@ class CognitiveLayer(Component):
 
     # ------------------------------------------------------------------ camera scans
 
+    def admits(self, cls: str, camera_position: tuple[float, float, float], stamp: float) -> bool:
+        """The role's early filter, asked by a camera KP before it deprojects a frame's detections of ``cls``.
+
+        True when the class is due under the role for the room the camera is in (its ``rate_hz``), or when
+        its knowledge is unsettled (a first sighting, a young, missed or jumping track: evidence is processed
+        at the camera's rate until it settles); always True when the camera is outside every room (the
+        detection's own room then decides, in :meth:`step`); False for a class the role does not process.
+        A frame let through is processed by the scan whatever the rate says; a class withheld is neither
+        associated nor missed for that frame. ``camera_position``: world frame, metres; ``stamp``: the
+        frame's simulated time.
+        """
+        room = self.locations.room_at(camera_position[0], camera_position[1])
+        if room is None:
+            return True
+        policy = self.role.policy(cls, room)
+        if policy.rate_hz <= 0:
+            return False
+        tracker = self.trackers.get(cls)
+        admitted = (
+            self._due(cls, "scan", policy, stamp)
+            or tracker is None
+            or not tracker.tracks
+            or any(
+                t.misses > 0 or t.jump is not None or t.hits < self.settled_hits
+                for t in tracker.tracks.values()
+            )
+        )
+        if admitted:
+            self._admitted[cls] = stamp
+        return admitted
+
     def _scan(self, scan: Scan, units: list[LLKU]) -> None:
         self._associate_scan(units, scan.stamp, scan, scan.kind)
 
@@ -157,11 +190,13 @@ class CognitiveLayer(Component):
         by_class: dict[str, list[LLKU]] = defaultdict(list)
         for unit in units:
             by_class[PERSON_CLASS if kind is Kind.PERSON else unit.label].append(unit)
+        withheld = scan.withheld if scan is not None else frozenset()
         if kind is Kind.OBJECT:
-            self._set_aside_confusions(by_class)
+            self._set_aside_confusions(by_class, withheld)
         classes = set(by_class)
         if scan is not None:
             classes |= {c for c, t in self.trackers.items() if t.tracks and self._kind_of(c) is kind}
+        classes -= withheld
         camera_room = None
         if scan is not None:
             pos = scan.view.position
@@ -178,8 +213,11 @@ class CognitiveLayer(Component):
         for policy, cls in plans:
             dets = by_class.get(cls, [])
             tracker = self.tracker(cls, kind)
-            if not self._due(cls, "scan", policy, stamp) and not (
-                policy.rate_hz > 0 and self._unsettled(tracker, dets)
+            admitted = self._admitted.get(cls) == stamp
+            if (
+                not admitted
+                and not self._due(cls, "scan", policy, stamp)
+                and not (policy.rate_hz > 0 and self._unsettled(tracker, dets))
             ):
                 self.stats.skipped += len(dets)
                 continue
@@ -196,32 +234,37 @@ class CognitiveLayer(Component):
             for track in dropped:
                 self._publish_lost(track, kind, stamp)
 
-    def _set_aside_confusions(self, by_class: dict[str, list[LLKU]]) -> None:
+    def _set_aside_confusions(
+        self, by_class: dict[str, list[LLKU]], withheld: frozenset[str] = frozenset()
+    ) -> None:
         """Drop the object detections that are most likely another object under a confused label.
 
         A detection of class X lying on a settled track of another class Y (within Y's radius), seen in the
         last ``confusion_recent_s``, away from X's own tracks, while no detection of Y explains Y's track in
         this scan, is Y seen under the wrong label: it must neither start an X track nor move X's track
-        there. When both X and Y are detected at the spot (two objects side by side) the detection stands.
+        there. When both X and Y are detected at the spot (two objects side by side) the detection stands; so
+        does it when Y's detections were ``withheld`` by the camera's role filter (nothing is known of Y).
         Counted in ``stats.confusions``.
         """
         for cls, dets in list(by_class.items()):
             kept: list[LLKU] = []
             for det in dets:
-                if self._confused(cls, det, by_class):
+                if self._confused(cls, det, by_class, withheld):
                     self.stats.confusions += 1
                 else:
                     kept.append(det)
             by_class[cls] = kept
 
-    def _confused(self, cls: str, det: LLKU, by_class: dict[str, list[LLKU]]) -> bool:
+    def _confused(
+        self, cls: str, det: LLKU, by_class: dict[str, list[LLKU]], withheld: frozenset[str]
+    ) -> bool:
         own = self.trackers.get(cls)
         if own is not None and any(
             math.dist(det.position, t.centroid) < own.radius for t in own.tracks.values()
         ):
             return False
         for other_cls, tracker in self.trackers.items():
-            if other_cls in (cls, PERSON_CLASS):
+            if other_cls in (cls, PERSON_CLASS) or other_cls in withheld:
                 continue
             for track in tracker.tracks.values():
                 if (

@@ -28,6 +28,7 @@ FLOOR_COLOR = (0.75, 0.72, 0.65, 1.0)
 ROBOT_COLOR = (0.85, 0.85, 0.9, 1.0)
 WALL_PIECE = 100.0  # metres; longer walls are split into pieces (one piece renders fastest here)
 HIDDEN_Z = -1000.0  # bodies left out of a picture wait this far below the floor
+FAR_Z = np.float32(1.0 - 2.0**-24)  # depth-buffer values from here up (the top two float32s) hit nothing
 
 
 class Scene:
@@ -50,6 +51,10 @@ class Scene:
         self._pose: dict[int, tuple[tuple[float, float, float], float]] = {}
         self._version = 0  # counts body moves, so an unchanged scene is not rendered twice
         self._last: tuple[tuple[Any, ...], tuple[Any, ...]] | None = None
+        # Headless, only pictures look at the bodies, so a body left out of one stays parked below the floor
+        # until a picture wants it (saves moving it away and back every frame); a GUI window shows it.
+        self._park = not gui
+        self._parked: set[int] = set()
         self._build()
 
     def close(self) -> None:
@@ -140,18 +145,9 @@ class Scene:
         w = self.world
         xmin, ymin, xmax, ymax = w.bounds()
         c = self._client
-        if self.render_floor:
-            floor = [(xmin, ymin, 0.0), (xmax, ymin, 0.0), (xmax, ymax, 0.0), (xmin, ymax, 0.0)]
-            vis = c.createVisualShape(
-                pb.GEOM_MESH, vertices=floor, indices=[0, 1, 2, 0, 2, 3], rgbaColor=FLOOR_COLOR
-            )
-            c.createMultiBody(baseMass=0, baseVisualShapeIndex=vis, basePosition=(0, 0, 0))
-        for a, b in wall_segments(w):
-            self._wall_mesh(a, b, w.wall_thickness, w.wall_height)
-        for f in w.furniture.values():
-            sx, sy, h = f.size
-            body = self._box((sx / 2, sy / 2, h / 2), (f.position[0], f.position[1], h / 2), f.yaw, f.color)
-            self._register(f.name, body)
+        # The tiny renderer draws bodies in creation order and shades a pixel only when it passes the depth
+        # test, so small things that usually stand in front (items, people, furniture) come first and the
+        # walls and floor they hide are not shaded under them. The picture is the same in any order.
         for it in w.items.values():
             sx, sy, sz = it.size
             body = self._box((sx / 2, sy / 2, sz / 2), it.position, 0.0, it.color)
@@ -162,6 +158,18 @@ class Scene:
         r = w.robot
         body = self._cylinder(r.radius, r.height, (r.start[0], r.start[1], r.height / 2), ROBOT_COLOR)
         self._register(r.name, body)
+        for f in w.furniture.values():
+            sx, sy, h = f.size
+            body = self._box((sx / 2, sy / 2, h / 2), (f.position[0], f.position[1], h / 2), f.yaw, f.color)
+            self._register(f.name, body)
+        for a, b in wall_segments(w):
+            self._wall_mesh(a, b, w.wall_thickness, w.wall_height)
+        if self.render_floor:
+            floor = [(xmin, ymin, 0.0), (xmax, ymin, 0.0), (xmax, ymax, 0.0), (xmin, ymax, 0.0)]
+            vis = c.createVisualShape(
+                pb.GEOM_MESH, vertices=floor, indices=[0, 1, 2, 0, 2, 3], rgbaColor=FLOOR_COLOR
+            )
+            c.createMultiBody(baseMass=0, baseVisualShapeIndex=vis, basePosition=(0, 0, 0))
 
     # ------------------------------------------------------------------------------------------ moving
 
@@ -172,7 +180,8 @@ class Scene:
             return
         self._pose[body] = (pos, yaw)
         self._version += 1
-        self._place(body, pos, yaw)
+        if body not in self._parked:  # a parked body is put in place when a picture wants it again
+            self._place(body, pos, yaw)
 
     def _place(self, body: int, pos: tuple[float, float, float], yaw: float) -> None:
         c = self._client
@@ -196,31 +205,40 @@ class Scene:
 
         The arrays are read-only (an unchanged scene returns the same ones again).
         ``pitch`` is the downward tilt in radians. Depth beyond ``far`` (nothing hit) is ``inf``. Bodies
-        named in ``exclude`` (the robot carrying the camera) are left out.
+        named in ``exclude`` (the robot carrying the camera) are left out; headless, they stay parked below
+        the floor until a later call no longer excludes them (a GUI scene puts them back at once).
         Returns ``(rgb, depth, segmentation, intrinsics, optical-frame pose)``.
         """
         c = self._client
         key = (eye, yaw, pitch, width, height, fov_deg, near, far, exclude, self._version)
         if self._last is not None and self._last[0] == key:  # nothing moved: the same picture
             return self._last[1]
-        hidden = [self.body_of[n] for n in exclude]
-        for body in hidden:
+        hidden = {self.body_of[n] for n in exclude}
+        for body in self._parked - hidden:
+            self._place(body, *self._pose[body])
+        for body in hidden - self._parked:
             (x, y, _), byaw = self._pose[body]
             self._place(body, (x, y, HIDDEN_Z), byaw)
-        fwd = np.array([math.cos(yaw) * math.cos(pitch), math.sin(yaw) * math.cos(pitch), -math.sin(pitch)])
-        left = np.array([-math.sin(yaw), math.cos(yaw), 0.0])
-        up = np.cross(fwd, left)
-        target = np.asarray(eye) + fwd
-        view = c.computeViewMatrix(eye, target.tolist(), up.tolist())
+        self._parked = hidden
+        cy, sy, cp, sp = math.cos(yaw), math.sin(yaw), math.cos(pitch), math.sin(pitch)
+        fwd = np.array([cy * cp, sy * cp, -sp])
+        left = np.array([-sy, cy, 0.0])
+        up = np.array([sp * cy, sp * sy, cp])  # fwd x left
+        target = (eye[0] + cy * cp, eye[1] + sy * cp, eye[2] - sp)
+        view = c.computeViewMatrix(eye, target, up.tolist())
         proj = c.computeProjectionMatrixFOV(fov_deg, width / height, near, far)
         _, _, rgba, zbuf, seg = c.getCameraImage(width, height, view, proj, renderer=pb.ER_TINY_RENDERER)
-        rgb = np.asarray(rgba, dtype=np.uint8).reshape(height, width, 4)[:, :, :3].copy()
-        z = np.asarray(zbuf, dtype=np.float64).reshape(height, width)
-        depth = (far * near / (far - (far - near) * z)).astype(np.float32)
-        depth[z >= 1.0 - 1e-7] = np.inf
+        rgb = np.asarray(rgba, dtype=np.uint8).reshape(height, width, 4)[:, :, :3]  # a view, not a copy
+        z = np.asarray(zbuf, dtype=np.float32).reshape(height, width)
+        depth = z * np.float32(far - near)  # linear depth from the [0, 1] buffer, in place, float32
+        np.subtract(np.float32(far), depth, out=depth)
+        np.divide(np.float32(far * near), depth, out=depth)
+        depth[z >= FAR_Z] = np.inf
         segm = np.asarray(seg, dtype=np.int32).reshape(height, width)
-        for body in hidden:
-            self._place(body, *self._pose[body])
+        if not self._park:
+            for body in hidden:
+                self._place(body, *self._pose[body])
+            self._parked = set()
         fy = (height / 2) / math.tan(math.radians(fov_deg) / 2)
         intr = CameraIntrinsics(
             width=width, height=height, fx=fy, fy=fy, cx=width / 2, cy=height / 2, near=near, far=far

@@ -124,3 +124,31 @@ def test_locations_kp_publishes_one_octomap_per_room_once(paper_locations: Locat
     assert [m.payload.identity for m in got] == ["bedroom", "kitchen", "entrance", "living_room"]
     prism = got[0].payload.attributes["prism"]
     assert prism.octree().getNumLeafNodes() > 0
+
+
+def test_camera_gate_withholds_classes_before_deprojection(paper_kb: KnowledgeBase) -> None:
+    sensors = FakeSensors()
+    sensors.next_frame = frame(
+        3.0,
+        CAMERA,
+        boxes=[
+            ("glasses", CENTRE_BOX, 2.0, None),
+            ("mug", (10, 10, 14, 14), 2.0, None),
+            ("mug", (50, 10, 54, 14), 2.0, None),
+        ],
+    )
+    bus = Bus()
+    got = collect(bus, "percept.vision")
+    asked: list[tuple[str, float]] = []
+
+    def gate(cls: str, position: tuple[float, float, float], stamp: float) -> bool:
+        assert position == (5.0, 2.0, 1.2)
+        asked.append((cls, stamp))
+        return cls != "mug"
+
+    kp = CameraObjectsKP(sensors, bus, paper_kb, {"glasses": "glasses"})
+    kp.gate = gate
+    kp.step(3.0)
+    assert [m.topic for m in got] == ["percept.vision.object.glasses", "percept.vision.scan.object"]
+    assert sorted(asked) == [("glasses", 3.0), ("mug", 3.0)]  # one question per class and frame
+    assert got[1].payload.withheld == frozenset({"mug"}) and kp.withheld == 2

@@ -102,3 +102,42 @@ def test_cku_carries_octomap_keys_and_support(paper_locations: LocationModel) ->
     assert tree is not None
     node = tree.search(unit.points[0])
     assert node is not None and tree.isNodeOccupied(node)
+
+
+def gated_feed(
+    role: Role, locations: LocationModel, seconds: float = 2.0
+) -> tuple[dict[str, int], CognitiveLayer]:
+    """As :func:`feed`, but the 10 Hz frames go through the layer's early filter as a camera KP would ask it:
+    per class, before the units exist. Returns the units admitted per class and the layer."""
+    bus = Bus()
+    layer = CognitiveLayer(bus, role, locations)
+    view = FrameView(frame(0.0, (5.0, 2.0, 1.2, 0.0)), max_range=4.0)
+    admitted: dict[str, int] = {"glasses": 0, "mug": 0}
+    for i in range(int(seconds * 10)):
+        t = i / 10
+        withheld = set()
+        for unit in (
+            percept(Kind.OBJECT, "glasses", (7.75, 1.5, 0.92), t, identity="glasses"),
+            percept(Kind.OBJECT, "mug", (7.7, 2.0, 0.92), t, identity="mug"),
+        ):
+            if not layer.admits(unit.label, (5.0, 2.0, 1.2), t):
+                withheld.add(unit.label)
+                continue
+            admitted[unit.label] += 1
+            bus.publish(f"percept.vision.object.{unit.label}", unit, source="kp", stamp=t)
+        scan = Scan(Kind.OBJECT, t, view, "cam", frozenset(withheld))
+        bus.publish("percept.vision.scan.object", scan, source="kp", stamp=t)
+        layer.step(t)
+    return admitted, layer
+
+
+def test_early_filter_admits_what_the_role_processes(paper_locations: LocationModel) -> None:
+    companion, layer = gated_feed(load_role("companion"), paper_locations)
+    top, _ = gated_feed(load_role("all_top_rate"), paper_locations)
+    # as test_roles_change_what_is_processed, but the mug's units are never made when not due: 3 frames to
+    # settle (0, 0.1, 0.2), then 1 Hz (1.0); the glasses and the all-top-rate role at the role's 5 Hz
+    assert companion == {"glasses": 11, "mug": 4} and top == {"glasses": 11, "mug": 11}
+    # a withheld frame is no miss: the mug's track stays settled, unmissed
+    (mug,) = layer.trackers["mug"].tracks.values()
+    assert mug.misses == 0 and mug.hits == 4
+    assert layer.stats.processed == 15
