@@ -37,6 +37,21 @@ class ErlAction(Action):
         self.failure_reason = reason
         return False
 
+    def drive(self, nav: NavGoal) -> ActionStatus | None:
+        """Poll ``nav``: None once the base has arrived, else what :meth:`step` returns now (RUNNING, or
+        FAILED with the navigation's reason)."""
+        status = nav.poll()
+        if status is ActionStatus.FAILED:
+            return self.fail(nav.reason)
+        return None if status is ActionStatus.SUCCEEDED else status
+
+    def holds_or_refuse(self, item: str) -> bool:
+        """True when the gripper holds ``item``; else record why and return False (for :meth:`activation`)."""
+        held = self.ctx.robot.held_item()
+        if held != item:
+            return self.refuse(f"the gripper holds {held or 'nothing'}, not {item}")
+        return True
+
     def enter(self, phase: str) -> None:
         """Switch to ``phase`` and note when (simulated seconds)."""
         self.phase = phase

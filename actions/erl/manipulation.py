@@ -106,9 +106,9 @@ class PickAction(ErlAction):
         assert self.target is not None
         if self.phase == "nav":
             assert self.nav is not None
-            status = self.nav.poll()
-            if status is not ActionStatus.SUCCEEDED:
-                return self.fail(self.nav.reason) if status is ActionStatus.FAILED else status
+            waiting = self.drive(self.nav)
+            if waiting is not None:
+                return waiting
             pose = self.ctx.robot.robot_pose()
             self.pans = [bearing(pose, self.target[0], self.target[1]), *LOOK_PANS]
             self.ctx.robot.pan_camera(self.pans.pop(0))
@@ -161,9 +161,8 @@ class PlaceAction(ErlAction):
 
     def activation(self) -> bool:
         """Check the gripper holds the item and drive to the furniture."""
-        held = self.ctx.robot.held_item()
-        if held != self.item:
-            return self.refuse(f"the gripper holds {held or 'nothing'}, not {self.item}")
+        if not self.holds_or_refuse(self.item):
+            return False
         self.nav = NavGoal(self.ctx, [to_furniture(self.ctx, self.furniture)], self.furniture)
         if not self.nav.start():
             return self.refuse(self.nav.reason)
@@ -173,9 +172,9 @@ class PlaceAction(ErlAction):
     def step(self) -> ActionStatus:
         """Drive, then put the item down."""
         assert self.nav is not None
-        status = self.nav.poll()
-        if status is not ActionStatus.SUCCEEDED:
-            return self.fail(self.nav.reason) if status is ActionStatus.FAILED else status
+        waiting = self.drive(self.nav)
+        if waiting is not None:
+            return waiting
         result = self.ctx.robot.place(self.furniture)
         if not result.ok:
             return self.fail(f"placing {self.item} on {self.furniture} failed: {result.reason}")
@@ -196,9 +195,8 @@ class GiveAction(ErlAction):
 
     def activation(self) -> bool:
         """Check the gripper holds the item and approach the person."""
-        held = self.ctx.robot.held_item()
-        if held != self.item:
-            return self.refuse(f"the gripper holds {held or 'nothing'}, not {self.item}")
+        if not self.holds_or_refuse(self.item):
+            return False
         self.nav = approach_person(self.ctx, self.person, self.person)
         if self.nav is None:
             return self.refuse(f"cannot approach {self.person}: not perceived or no free pose around them")
@@ -209,9 +207,9 @@ class GiveAction(ErlAction):
     def step(self) -> ActionStatus:
         """Approach, then hand over."""
         assert self.nav is not None
-        status = self.nav.poll()
-        if status is not ActionStatus.SUCCEEDED:
-            return self.fail(self.nav.reason) if status is ActionStatus.FAILED else status
+        waiting = self.drive(self.nav)
+        if waiting is not None:
+            return waiting
         result = self.ctx.robot.give(self.person)
         if result.ok:
             return ActionStatus.SUCCEEDED

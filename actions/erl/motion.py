@@ -53,11 +53,9 @@ class MoveAction(ErlAction):
     def step(self) -> ActionStatus:
         """Poll the navigation goal; on arrival check that the localisation is inside the room."""
         assert self.nav is not None
-        status = self.nav.poll()
-        if status is ActionStatus.FAILED:
-            return self.fail(self.nav.reason)
-        if status is ActionStatus.RUNNING:
-            return status
+        waiting = self.drive(self.nav)
+        if waiting is not None:
+            return waiting
         pose = self.ctx.robot.robot_pose()
         if not self.room.contains(pose.x, pose.y):
             return self.fail(f"arrived at ({pose.x:.2f}, {pose.y:.2f}), which is outside {self.target}")
@@ -103,11 +101,9 @@ class MeetAction(ErlAction):
     def step(self) -> ActionStatus:
         """Approach, then ask the person to follow."""
         assert self.nav is not None
-        status = self.nav.poll()
-        if status is ActionStatus.FAILED:
-            return self.fail(self.nav.reason)
-        if status is ActionStatus.RUNNING:
-            return status
+        waiting = self.drive(self.nav)
+        if waiting is not None:
+            return waiting
         result = self.ctx.robot.escort(self.person)
         if result.ok:
             return ActionStatus.SUCCEEDED
@@ -152,11 +148,9 @@ class GuideAction(ErlAction):
         """Walk, turn round, and wait to see the person in the room."""
         assert self.nav is not None
         if self.phase in ("nav", "turn"):
-            status = self.nav.poll()
-            if status is ActionStatus.FAILED:
-                return self.fail(self.nav.reason)
-            if status is ActionStatus.RUNNING:
-                return status
+            waiting = self.drive(self.nav)
+            if waiting is not None:
+                return waiting
             if self.phase == "nav":
                 pose = self.ctx.robot.robot_pose()
                 back = wrap(pose.yaw + math.pi)
