@@ -12,9 +12,10 @@ Figures (wall-clock time; the decoder is built once before timing):
 * ``ms_per_utterance`` -- mean recognition plus understanding time per utterance;
 * ``by_voice`` -- frame-with-arguments accuracy of the in-grammar utterances of each voice in ``gold.json``.
 
-``--fixtures DIR`` runs another set in the same layout (e.g. a held-out development set synthesised with other
-sentences and voices, to tune on without touching the shipped one); ``--option KEY=VALUE`` (repeatable) and
-``--no-branch-penalty`` change the decoder for that run only.
+``--fixtures DIR`` runs another set in the same layout, e.g. ``tests/fixtures/speech_dev``, the dev set
+(other sentences and voices, to tune on without touching the test set); ``--option KEY=VALUE`` (repeatable),
+``--no-branch-penalty`` and ``--acoustic-model NAME|DIR`` (``espeak``, the default, or ``base``, the
+unadapted model: see :mod:`knic.language.acoustic`) change the recogniser for that run only.
 """
 
 from __future__ import annotations
@@ -25,6 +26,7 @@ import time
 from pathlib import Path
 from typing import Any
 
+from knic.cli.say import add_acoustic_argument
 from knic.errors import KnicError
 
 FIXTURES = Path(__file__).resolve().parents[2] / "tests" / "fixtures" / "speech"
@@ -48,6 +50,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--no-branch-penalty", action="store_true", help="do not split grammar probability over branches"
     )
+    add_acoustic_argument(parser)
 
 
 def parse_options(pairs: list[str]) -> dict[str, object]:
@@ -93,6 +96,7 @@ def evaluate(
     *,
     decoder_options: dict[str, object] | None = None,
     branch_penalty: bool = True,
+    acoustic_model: str = "espeak",
 ) -> dict[str, Any]:
     """Run the test set and return the figures plus the per-utterance mistakes under ``"errors"``.
 
@@ -102,6 +106,7 @@ def evaluate(
         filler_weight: filler loop prior (None: the recogniser's default).
         decoder_options: pocketsphinx options for this run over the module defaults.
         branch_penalty: passed to :class:`~knic.language.speech.Recognizer`.
+        acoustic_model: passed to :class:`~knic.language.speech.Recognizer`.
 
     Raises:
         KnicError: the gold file is missing or malformed, or the decoder refuses an option.
@@ -119,7 +124,11 @@ def evaluate(
     _, vocabulary = load_world()
     speaker = gold.get("speaker", "annie")
     started = time.perf_counter()
-    extra: dict[str, Any] = {"decoder_options": decoder_options, "branch_penalty": branch_penalty}
+    extra: dict[str, Any] = {
+        "decoder_options": decoder_options,
+        "branch_penalty": branch_penalty,
+        "acoustic_model": acoustic_model,
+    }
     if filler_weight is not None:
         extra["filler_weight"] = filler_weight
     recognizer = Recognizer(default_grammar(), vocabulary, **extra)
@@ -174,6 +183,7 @@ def evaluate(
         "audio_s_per_utterance": round(sum(durations) / len(durations), 3) if durations else None,
         "decoder_setup_ms": round(setup_ms, 1),
         "filler_weight": recognizer.filler_weight,
+        "acoustic_model": acoustic_model,
         "by_voice": {voice: round(ok / n, 4) for voice, (ok, n) in sorted(voices.items())},
         "errors": mistakes,
     }
@@ -186,6 +196,7 @@ def run(args: argparse.Namespace) -> int:
         args.filler_weight,
         decoder_options=parse_options(args.option),
         branch_penalty=not args.no_branch_penalty,
+        acoustic_model=args.acoustic_model,
     )
     mistakes = figures.pop("errors")
     if args.verbose:

@@ -31,6 +31,7 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, TextIO
 
+from knic.cli.say import add_acoustic_argument
 from knic.errors import KnicError, LanguageError
 
 if TYPE_CHECKING:
@@ -85,6 +86,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         metavar="FILE.wav",
         help="a spoken yes or no, one per confirmation question, in order (repeatable)",
     )
+    add_acoustic_argument(parser)
     parser.add_argument("--seed", type=int, default=0, help="seed of the simulation (default 0)")
     parser.add_argument("--trace", type=Path, metavar="FILE.jsonl", help="write the trace as JSON lines")
     parser.add_argument(
@@ -139,6 +141,7 @@ def run(args: argparse.Namespace) -> int:
                 quiet=args.json,
                 dialogue=dialogue,
                 source=source,
+                acoustic_model=args.acoustic_model,
             )
             goals = system.kb.goals()
             if not args.json:
@@ -172,6 +175,7 @@ def add_goals(
     quiet: bool = False,
     dialogue: Dialogue | None = None,
     source: str = "user",
+    acoustic_model: str = "espeak",
 ) -> list[dict[str, Any]]:
     """Add every ``--goal`` and ``--speech`` goal to the system's knowledge base; all or nothing.
 
@@ -182,6 +186,7 @@ def add_goals(
 
     Args:
         source: provenance source of the goals (``operator`` under an operator-only role).
+        acoustic_model: the recogniser's acoustic model for ``speech`` (see :mod:`knic.language.acoustic`).
 
     Returns:
         One record per natural-language command (text, goals).
@@ -212,7 +217,7 @@ def add_goals(
             records.append({"text": text, "goals": [str(f) for f in understood.goals]})
             commands.append((text, understood, list(understood.goals)))
     for wav in speech:
-        text = recognise(vocab(), wav)
+        text = recognise(vocab(), wav, acoustic_model)
         understood = understand_text(vocab(), text, speaker)
         records.append({"speech": str(wav), "text": text, "goals": [str(f) for f in understood.goals]})
         commands.append((text, understood, list(understood.goals)))
@@ -272,7 +277,7 @@ def answer_source(args: argparse.Namespace, role: Role) -> Callable[[], str | No
         answer: str = args.confirm
         return lambda: answer
     if args.confirm_speech:
-        return SpokenAnswers(args.confirm_speech)
+        return SpokenAnswers(args.confirm_speech, acoustic_model=args.acoustic_model)
     if sys.stdin is not None and sys.stdin.isatty():
         return typed_answer
     raise KnicError(
@@ -299,14 +304,16 @@ class SpokenAnswers:
 
     Args:
         wavs: WAV files, in the order of the questions.
+        acoustic_model: the acoustic model (see :mod:`knic.language.acoustic`).
 
     Raises:
         LanguageError: pocketsphinx refused the grammar (on the first question).
         AudioError: a file is not usable audio (on its question).
     """
 
-    def __init__(self, wavs: list[str]) -> None:
+    def __init__(self, wavs: list[str], *, acoustic_model: str = "espeak") -> None:
         self.wavs = list(wavs)
+        self.acoustic_model = acoustic_model
         self._decoder: Any = None
         self._answer_words: frozenset[str] = frozenset()
 
@@ -325,6 +332,7 @@ class SpokenAnswers:
         return " ".join(words) if set(words) <= self._answer_words else ""
 
     def _build(self) -> Any:
+        from knic.language.acoustic import acoustic_model_options
         from knic.language.dialogue import NO_WORDS, YES_WORDS
         from knic.language.speech import FILLER_WORDS
 
@@ -332,7 +340,10 @@ class SpokenAnswers:
             from pocketsphinx import Decoder
         except ImportError as exc:  # pragma: no cover - pocketsphinx is a declared dependency
             raise LanguageError(f"spoken answers need pocketsphinx: {exc}") from exc
-        decoder = Decoder(lm=None, loglevel="FATAL", bestpath=False, wip=0.2)  # as knic.language.speech
+        model = acoustic_model_options(self.acoustic_model)
+        decoder = Decoder(
+            lm=None, loglevel="FATAL", bestpath=False, wip=0.2, **model
+        )  # as knic.language.speech
         answers = sorted(
             w for w in YES_WORDS | NO_WORDS if " " not in w and "'" not in w and decoder.lookup_word(w)
         )
@@ -419,7 +430,7 @@ def understand_text(vocabulary: Any, text: str, speaker: str) -> Any:
     return result
 
 
-def recognise(vocabulary: Any, wav: str) -> str:
+def recognise(vocabulary: Any, wav: str, acoustic_model: str = "espeak") -> str:
     """The words of a spoken command (pocketsphinx with the grammar of the run's vocabulary).
 
     Raises:
@@ -429,7 +440,7 @@ def recognise(vocabulary: Any, wav: str) -> str:
     from knic.language.speech import Recognizer
     from knic.language.understanding import default_grammar
 
-    transcript = Recognizer(default_grammar(), vocabulary).recognize(wav)
+    transcript = Recognizer(default_grammar(), vocabulary, acoustic_model=acoustic_model).recognize(wav)
     if not transcript.text or not transcript.in_grammar:
         heard = f' (heard "{transcript.text}")' if transcript.text else ""
         raise LanguageError(f"{wav}: no command recognised{heard}")

@@ -14,6 +14,18 @@ from knic.cli.goal import add_world_arguments, load_vocabulary, print_understand
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("wav", help="the spoken command as a WAV file")
     add_world_arguments(parser)
+    add_acoustic_argument(parser)
+
+
+def add_acoustic_argument(parser: argparse.ArgumentParser) -> None:
+    """``--acoustic-model NAME|DIR`` (shared by the commands that listen)."""
+    parser.add_argument(
+        "--acoustic-model",
+        default="espeak",
+        metavar="NAME|DIR",
+        help="espeak (adapted to synthetic voices, default), base (the unadapted US English model), or a "
+        "folder built by python -m knic.language.acoustic.build",
+    )
 
 
 def run(args: argparse.Namespace) -> int:
@@ -22,7 +34,9 @@ def run(args: argparse.Namespace) -> int:
 
     audio = load_audio(args.wav)  # refuse a bad file before loading the world
     vocabulary = load_vocabulary(args)
-    transcript = Recognizer(default_grammar(), vocabulary).recognize(audio)
+    transcript = Recognizer(default_grammar(), vocabulary, acoustic_model=args.acoustic_model).recognize(
+        audio
+    )
     result = understand_transcript(transcript, vocabulary, speaker=args.speaker)
     print_understanding(result.to_dict(), args.json)
     return 0

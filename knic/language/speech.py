@@ -38,6 +38,7 @@ import numpy as np
 import numpy.typing as npt
 
 from knic.errors import AudioError, LanguageError
+from knic.language.acoustic import DEFAULT_ACOUSTIC_MODEL, acoustic_model_options
 from knic.language.fsg import compile_word_graph
 from knic.language.grammar import Grammar, grammar_words, to_jsgf
 from knic.language.vocabulary import Vocabulary
@@ -319,10 +320,13 @@ class Recognizer:
             :func:`~knic.language.fsg.compile_word_graph`).
         decoder_options: pocketsphinx configuration values that replace or extend :data:`DECODER_OPTIONS`
             for this recogniser (for measurements, e.g. ``{"beam": 1e-60}``); the module default is untouched.
+        acoustic_model: a name from :data:`~knic.language.acoustic.ACOUSTIC_MODELS` (``"espeak"``: adapted
+            to synthetic speech, the default; ``"base"``: the wheel's model unchanged) or a folder holding
+            adapted ``means``, ``variances`` and ``sendump`` files for the wheel's model.
 
     Raises:
         LanguageError: pocketsphinx is missing, refuses a decoder option (unknown name or unusable value), or
-            refuses the generated grammar.
+            refuses the generated grammar; the acoustic model is unknown or incomplete.
     """
 
     def __init__(
@@ -333,6 +337,7 @@ class Recognizer:
         filler_weight: float = FILLER_WEIGHT,
         branch_penalty: bool = True,
         decoder_options: Mapping[str, object] | None = None,
+        acoustic_model: str | Path = DEFAULT_ACOUSTIC_MODEL,
     ):
         try:
             from pocketsphinx import Decoder, set_loglevel
@@ -340,7 +345,9 @@ class Recognizer:
             raise LanguageError(f"speech recognition needs pocketsphinx: {exc}") from exc
         set_loglevel("FATAL")
         self.filler_weight = filler_weight
-        options = {**DECODER_OPTIONS, **(decoder_options or {})}
+        #: the acoustic model's files that replace the wheel's (empty for the unadapted model).
+        self.acoustic_model = acoustic_model_options(acoustic_model)
+        options = {**DECODER_OPTIONS, **self.acoustic_model, **(decoder_options or {})}
         #: the decoder options in force (module defaults plus this recogniser's overrides).
         self.decoder_options: dict[str, object] = options
         try:
