@@ -23,6 +23,7 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "world": ("knic.cli.world", "check or render a world file"),
     "goal": ("knic.cli.goal", "turn a text command into PDDL goals"),
     "say": ("knic.cli.say", "turn a spoken command (WAV) into PDDL goals"),
+    "listen": ("knic.cli.listen", "listen to a microphone or stream and print the commands heard"),
     "bench": ("knic.cli.bench", "run a benchmark and print its figures"),
 }
 

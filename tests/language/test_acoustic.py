@@ -1,0 +1,87 @@
+"""The shipped acoustic adaptation: it loads, recognises what the wheel's model misses; bad names fail."""
+
+from __future__ import annotations
+
+import struct
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from knic.cli import main
+from knic.errors import LanguageError
+from knic.language.acoustic import MODEL_DIR, acoustic_model_options, wheel_model_dir
+from knic.language.speech import Recognizer
+from knic.language.understanding import default_grammar
+from knic.language.vocabulary import Vocabulary
+
+from .conftest import SPEECH_FIXTURES
+
+# Utterances the unadapted model gets wrong (it heard "what want", nothing, and "money are tea are sit").
+HARD = [
+    ("cmd_006.wav", "pinpoint the sponge"),
+    ("cmd_043.wav", "half open the blinds"),
+    ("cmd_022.wav", "give granny annie the glass"),
+]
+
+
+def test_named_models_resolve_to_files_or_to_the_wheel_model() -> None:
+    options = acoustic_model_options("espeak")
+    assert options == {
+        "mean": str(MODEL_DIR / "means"),
+        "var": str(MODEL_DIR / "variances"),
+        "sendump": str(MODEL_DIR / "sendump"),
+    }
+    assert all(Path(str(p)).stat().st_size > 100_000 for p in options.values())
+    assert acoustic_model_options("base") == {}
+
+
+def test_an_unknown_model_or_an_incomplete_folder_is_refused(tmp_path: Path) -> None:
+    with pytest.raises(
+        LanguageError, match=r"unknown acoustic model 'klingon': expected one of base, espeak"
+    ):
+        acoustic_model_options("klingon")
+    (tmp_path / "means").write_bytes(b"x")
+    with pytest.raises(LanguageError, match="missing variances, sendump"):
+        acoustic_model_options(tmp_path)
+
+
+def test_the_adapted_model_recognises_what_the_wheel_model_does_not(vocabulary: Vocabulary) -> None:
+    adapted = Recognizer(default_grammar(), vocabulary)
+    base = Recognizer(default_grammar(), vocabulary, acoustic_model="base")
+    assert base.acoustic_model == {} and adapted.acoustic_model == acoustic_model_options("espeak")
+    for name, words in HARD:
+        assert adapted.recognize(SPEECH_FIXTURES / name).text == words
+    assert base.recognize(SPEECH_FIXTURES / HARD[0][0]).text != HARD[0][1]
+
+
+def test_say_with_an_unknown_acoustic_model_exits_with_one_line(capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["say", str(SPEECH_FIXTURES / "cmd_011.wav"), "--acoustic-model", "klingon"]) == 4
+    err = capsys.readouterr().err
+    assert "unknown acoustic model 'klingon'" in err and err.count("\n") == 1
+
+
+def test_say_with_the_base_model(capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["say", str(SPEECH_FIXTURES / "cmd_011.wav"), "--acoustic-model", "base", "--json"]) == 0
+    assert '"goals": ["(has annie glasses)"]' in capsys.readouterr().out
+
+
+def test_sendump_expands_to_normalised_mixture_weights(tmp_path: Path) -> None:
+    from knic.language.acoustic.build import sendump_to_mixw
+
+    target = tmp_path / "mixture_weights"
+    senones, streams, densities = sendump_to_mixw(wheel_model_dir() / "en-us" / "sendump", target)
+    assert (senones, streams, densities) == (5126, 3, 128)
+    data = target.read_bytes()
+    start = data.index(b"endhdr\n") + len(b"endhdr\n")
+    assert start % 4 == 0  # sphinxtrain reads the data 4-byte aligned
+    magic, d1, d2, d3, count = struct.unpack_from("<5I", data, start)
+    assert (magic, d1, d2, d3, count) == (
+        0x11223344,
+        senones,
+        streams,
+        densities,
+        senones * streams * densities,
+    )
+    weights = np.frombuffer(data, dtype="<f4", offset=start + 20).reshape(d1, d2, d3)
+    assert np.allclose(weights.sum(axis=2), 1.0, atol=1e-4) and weights.min() >= 0.0
