@@ -3,9 +3,9 @@
 Audio comes from the default microphone (ALSA's ``arecord``), from standard input (``--stdin``: raw
 16 kHz mono signed 16-bit PCM from any recorder) or from a WAV file replayed as a live stream (``--wav``).
 Voice activity detection cuts it into utterances (:mod:`knic.language.listen`); each is recognised and
-understood as ``knic say`` would. An utterance that is not a command is printed as rejected and listening goes on. ``--json``
-prints one JSON object per utterance (JSON Lines) with its start and end time in the stream. It stops at the
-end of the stream, after ``--count`` utterances, or on Ctrl-C.
+understood as ``knic say`` would. An utterance that is not a command is printed as rejected and listening
+goes on. ``--json`` prints one JSON object per utterance (JSON Lines) with its start and end time in the
+stream. It stops at the end of the stream, after ``--count`` utterances, or on Ctrl-C.
 """
 
 from __future__ import annotations
