@@ -61,6 +61,7 @@ VOICES = [
     "en-gb-x-gbclan+m6",
     "en-us-nyc+f2",
 ]
+#: sox effects trimming silence (below 0.5 % of full scale) from the start, then (reversed) from the end.
 TRIM_BOTH_ENDS = ["silence", "1", "0.02", "0.5%", "reverse", "silence", "1", "0.02", "0.5%", "reverse"]
 
 
@@ -92,6 +93,8 @@ def sample_sentences(count: int, exclude: set[str], seed: int = 7) -> list[str]:
 
 
 def synthesize(text: str, voice: str, speed: int, target: Path) -> None:
+    """espeak-ng to a temporary WAV, then sox to 16 kHz mono 16-bit with silence trimmed at both ends (no
+    random dither, so the same espeak-ng version gives the same file)."""
     with tempfile.TemporaryDirectory() as tmp:
         raw = Path(tmp) / "raw.wav"
         subprocess.run(["espeak-ng", "-v", voice, "-s", str(speed), "-w", str(raw), text], check=True)
