@@ -8,11 +8,11 @@ grammar search needs trailing silence to finish the last word). Anything else ra
 
 Recognition: pocketsphinx 5 with the US English acoustic model and dictionary from the wheel, by default
 MAP-adapted to espeak-ng speech (:mod:`knic.language.acoustic`: the simulated apartment's people speak with
-espeak-ng voices), and a JSGF grammar written by :func:`knic.language.grammar.to_jsgf` from the same grammar and vocabulary the text
-parser uses. A grammar search always forces the audio onto some command, so the public rule also admits any
-sequence of filler words (:data:`FILLER_WORDS`, common English words outside the command grammar). Speech that
-is not a command decodes through the filler loop, the transcript then fails to parse, and the utterance is
-rejected instead of being forced onto the nearest command. ``filler_weight`` sets the filler loop's prior
+espeak-ng voices), and a JSGF grammar written by :func:`knic.language.grammar.to_jsgf` from the same
+grammar and vocabulary the text parser uses. A grammar search always forces the audio onto some command, so
+the public rule also admits any sequence of filler words (:data:`FILLER_WORDS`, common English words outside
+the command grammar). Speech that is not a command decodes through the filler loop, the transcript then fails
+to parse, and the utterance is rejected instead of being forced onto the nearest command. ``filler_weight`` sets the filler loop's prior
 (measured with ``knic bench speech``).
 
 Pronunciations: the wheel's dictionary is American (rhotic). For every command word the recogniser adds a
@@ -59,8 +59,9 @@ TRAIL_SILENCE = 0.5
 #: bestpath off: the lattice best-path pass of pocketsphinx 5 can return a partial path that does not reach
 #: the grammar's final state even when the first pass found a complete one.
 #: lw (grammar weight, default 6.5) and wip (word insertion penalty, default 0.65) were tuned with the
-#: unadapted model on the shipped test set with ``knic bench speech``: a weaker grammar weight lets the acoustics choose among the many
-#: similar commands, and a lower insertion penalty suppresses spurious short words ("a", "an").
+#: unadapted model on the shipped test set with ``knic bench speech``: a weaker grammar weight lets the
+#: acoustics choose among the many similar commands, and a lower insertion penalty suppresses spurious short
+#: words ("a", "an").
 #: On a held-out espeak-ng set (other sentences, voices and speeds) frame-with-arguments accuracy is far lower
 #: (about 0.51 against 0.74), and no setting of lw, wip, pip, topn, silprob, fillprob, the beams, the filler
 #: prior, remove_noise or per-utterance CMN moved it by more than one utterance in 80 (measured with
