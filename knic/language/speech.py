@@ -12,8 +12,8 @@ espeak-ng voices), and a JSGF grammar written by :func:`knic.language.grammar.to
 grammar and vocabulary the text parser uses. A grammar search always forces the audio onto some command, so
 the public rule also admits any sequence of filler words (:data:`FILLER_WORDS`, common English words outside
 the command grammar). Speech that is not a command decodes through the filler loop, the transcript then fails
-to parse, and the utterance is rejected instead of being forced onto the nearest command. ``filler_weight`` sets the filler loop's prior
-(measured with ``knic bench speech``).
+to parse, and the utterance is rejected instead of being forced onto the nearest command. ``filler_weight``
+sets the filler loop's prior (measured with ``knic bench speech``).
 
 Pronunciations: the wheel's dictionary is American (rhotic). For every command word the recogniser adds a
 non-rhotic alternative derived by rule from the dictionary's own entries (:func:`non_rhotic`: "water"
