@@ -10,7 +10,9 @@ Figures (wall-clock time; the decoder is built once before timing):
 * ``oog_rejection`` -- share of out-of-grammar utterances rejected (not accepted as a command);
 * ``false_rejection`` -- share of in-grammar utterances rejected;
 * ``ms_per_utterance`` -- mean recognition plus understanding time per utterance;
-* ``by_voice`` -- frame-with-arguments accuracy of the in-grammar utterances of each voice in ``gold.json``.
+* ``by_voice`` -- frame-with-arguments accuracy of the in-grammar utterances of each voice in ``gold.json``;
+* ``answer_accuracy`` -- share of ``tests/fixtures/speech_answers`` (spoken yes, no, and speech that is no
+  answer) that the confirmation recogniser takes as the right answer, or as no answer.
 
 ``--fixtures DIR`` runs another set in the same layout, e.g. ``tests/fixtures/speech_dev``, the dev set
 (other sentences and voices, to tune on without touching the test set); ``--option KEY=VALUE`` (repeatable),
@@ -30,6 +32,7 @@ from knic.cli.say import add_acoustic_argument
 from knic.errors import KnicError
 
 FIXTURES = Path(__file__).resolve().parents[2] / "tests" / "fixtures" / "speech"
+ANSWERS = FIXTURES.parent / "speech_answers"
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -51,6 +54,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         "--no-branch-penalty", action="store_true", help="do not split grammar probability over branches"
     )
     add_acoustic_argument(parser)
+    parser.add_argument(
+        "--answers", default=str(ANSWERS), help="folder with the yes/no answer set ('' skips)"
+    )
 
 
 def parse_options(pairs: list[str]) -> dict[str, object]:
@@ -189,6 +195,30 @@ def evaluate(
     }
 
 
+def evaluate_answers(folder: Path, acoustic_model: str = "espeak") -> tuple[float, list[dict[str, Any]]]:
+    """Share of the answer set understood right (yes, no, or no answer), and the mistakes.
+
+    Raises:
+        KnicError: the gold file is missing or malformed.
+    """
+    from knic.language.dialogue import parse_answer
+    from knic.language.speech import AnswerRecognizer
+
+    try:
+        entries = json.loads((folder / "gold.json").read_text(encoding="utf-8"))["utterances"]
+    except (OSError, ValueError, KeyError) as exc:
+        raise KnicError(f"{folder / 'gold.json'}: cannot read the answer set: {exc}") from exc
+    recognizer = AnswerRecognizer(acoustic_model=acoustic_model)
+    mistakes: list[dict[str, Any]] = []
+    for entry in entries:
+        heard = recognizer.recognize(folder / entry["file"])
+        verdict = parse_answer(heard) if heard else None
+        got = None if verdict is None else ("yes" if verdict else "no")
+        if got != entry["answer"]:
+            mistakes.append({"file": entry["file"], "text": entry["text"], "heard": heard})
+    return round(1 - len(mistakes) / len(entries), 4) if entries else 0.0, mistakes
+
+
 def run(args: argparse.Namespace) -> int:
     figures = evaluate(
         Path(args.fixtures),
@@ -199,6 +229,9 @@ def run(args: argparse.Namespace) -> int:
         acoustic_model=args.acoustic_model,
     )
     mistakes = figures.pop("errors")
+    if args.answers:
+        figures["answer_accuracy"], wrong = evaluate_answers(Path(args.answers), args.acoustic_model)
+        mistakes += wrong
     if args.verbose:
         figures["errors"] = mistakes
     if args.json:

@@ -314,56 +314,17 @@ class SpokenAnswers:
     def __init__(self, wavs: list[str], *, acoustic_model: str = "espeak") -> None:
         self.wavs = list(wavs)
         self.acoustic_model = acoustic_model
-        self._decoder: Any = None
-        self._answer_words: frozenset[str] = frozenset()
+        self._recognizer: Any = None
 
     def __call__(self) -> str | None:
-        from knic.language.speech import load_audio, pad
+        from knic.language.speech import AnswerRecognizer, load_audio
 
         if not self.wavs:
             return None
-        audio = pad(load_audio(self.wavs.pop(0)))
-        decoder = self._decoder or self._build()
-        decoder.start_utt()
-        decoder.process_raw(audio.tobytes(), full_utt=True)
-        decoder.end_utt()
-        hyp = decoder.hyp()
-        words = hyp.hypstr.split() if hyp is not None else []
-        return " ".join(words) if set(words) <= self._answer_words else ""
-
-    def _build(self) -> Any:
-        from knic.language.acoustic import acoustic_model_options
-        from knic.language.dialogue import NO_WORDS, YES_WORDS
-        from knic.language.speech import FILLER_WORDS
-
-        try:
-            from pocketsphinx import Decoder
-        except ImportError as exc:  # pragma: no cover - pocketsphinx is a declared dependency
-            raise LanguageError(f"spoken answers need pocketsphinx: {exc}") from exc
-        model = acoustic_model_options(self.acoustic_model)
-        decoder = Decoder(
-            lm=None, loglevel="FATAL", bestpath=False, wip=0.2, **model
-        )  # as knic.language.speech
-        answers = sorted(
-            w for w in YES_WORDS | NO_WORDS if " " not in w and "'" not in w and decoder.lookup_word(w)
-        )
-        fillers = sorted(
-            w for w in FILLER_WORDS if w not in answers and w != "please" and decoder.lookup_word(w)
-        )
-        self._answer_words = frozenset(answers) | {"please"}
-        jsgf = (
-            "#JSGF V1.0;\ngrammar answer;\n"
-            "public <answer> = <reply> | <filler> <filler> <filler> <filler>*;\n"
-            f"<reply> = ( {' | '.join(answers)} ) [ {' | '.join(answers)} ] [ please ];\n"
-            f"<filler> = {' | '.join(fillers)};\n"
-        )
-        try:
-            decoder.add_jsgf_string("answer", jsgf)
-            decoder.activate_search("answer")
-        except (RuntimeError, ValueError) as exc:
-            raise LanguageError(f"pocketsphinx refused the yes/no grammar: {exc}") from exc
-        self._decoder = decoder
-        return decoder
+        audio = load_audio(self.wavs.pop(0))
+        if self._recognizer is None:
+            self._recognizer = AnswerRecognizer(acoustic_model=self.acoustic_model)
+        return str(self._recognizer.recognize(audio))
 
 
 class _Silent:

@@ -194,3 +194,24 @@ def _remove_epsilons(
             transitions.append((0, final, filler_weight, word))
             transitions.append((loop, final, filler_weight, word))
     return WordGraph(num_states, 0, final, tuple(transitions))
+
+
+def answer_graph(answers: Sequence[str], fillers: Sequence[str], filler_weight: float) -> WordGraph:
+    """The yes/no answer grammar as an epsilon-free word graph.
+
+    One or two answer words, optionally followed by "please"; in parallel, three or more filler words, each
+    costing ``filler_weight``, so speech that is not an answer comes out as fillers instead of being forced
+    onto yes or no.
+    """
+    start, one, two, final, f1, f2, f3 = range(7)
+    share = 1.0 / max(1, len(answers))
+    transitions: list[tuple[int, int, float, str]] = []
+    for word in answers:
+        transitions += [(start, one, share, word), (start, final, share, word)]
+        transitions += [(one, two, share, word), (one, final, share, word)]
+    transitions += [(one, final, 1.0, "please"), (two, final, 1.0, "please")]
+    for word in fillers:
+        transitions += [(start, f1, filler_weight, word), (f1, f2, filler_weight, word)]
+        transitions += [(f2, f3, filler_weight, word), (f2, final, filler_weight, word)]
+        transitions += [(f3, f3, filler_weight, word), (f3, final, filler_weight, word)]
+    return WordGraph(7, start, final, tuple(transitions))
