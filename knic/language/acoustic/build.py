@@ -161,6 +161,21 @@ def run(cmd: list[str], log: Path) -> None:
         subprocess.run(cmd, check=True, stdout=handle, stderr=subprocess.STDOUT)
 
 
+#: The model files a round reads and writes, and the sphinxtrain flag of each (``-meanfn``, ``-mapmeanfn``).
+MODEL_FILES = {
+    "means": "meanfn",
+    "variances": "varfn",
+    "mixture_weights": "mixwfn",
+    "transition_matrices": "tmatfn",
+}
+SPHINXTRAIN = Path("/usr/lib/sphinxtrain")
+
+
+def model_flags(files: dict[str, Path], prefix: str = "") -> list[str]:
+    """``["-meanfn", ".../means", "-varfn", ...]`` (with ``prefix="map"``: ``-mapmeanfn`` ...)."""
+    return [item for name, flag in MODEL_FILES.items() for item in (f"-{prefix}{flag}", str(files[name]))]
+
+
 def adapt_once(
     work: Path, model: dict[str, Path], target: Path, dictionary: Path, tau: float, log: Path
 ) -> tuple[dict[str, Path], int]:
@@ -172,77 +187,39 @@ def adapt_once(
     acc = work / "acc"
     shutil.rmtree(acc, ignore_errors=True)
     acc.mkdir()
-    hmm = dictionary / "en-us"
+    common = ["-moddeffn", str(work / "mdef.txt"), "-ts2cbfn", ".ptm.", *model_flags(model)]
+    features = ["-feat", "1s_c_d_dd", "-svspec", "0-12/13-25/26-38", "-cmn", "batch", "-agc", "none"]
+    lexicon = [
+        "-dictfn",
+        str(dictionary / "cmudict-en-us.dict"),
+        "-fdictfn",
+        str(dictionary / "en-us" / "noisedict"),
+    ]
+    corpus = [
+        "-ctlfn",
+        str(work / "fileids"),
+        "-lsnfn",
+        str(work / "transcription"),
+        "-cepdir",
+        str(work / "mfc"),
+    ]
     before = log.read_text().count(" ignored") if log.exists() else 0
+    run([str(SPHINXTRAIN / "bw"), *common, *features, *lexicon, *corpus, "-accumdir", str(acc)], log)
+    skipped = log.read_text().count(" ignored") - before
+    target.mkdir(parents=True, exist_ok=True)
+    updated = {name: target / name for name in MODEL_FILES}
+    tau_flags = ["-fixedtau", "yes", "-tau", str(tau)] if tau > 0 else []
     run(
         [
-            "/usr/lib/sphinxtrain/bw",
-            "-moddeffn",
-            str(work / "mdef.txt"),
-            "-meanfn",
-            str(model["means"]),
-            "-varfn",
-            str(model["variances"]),
-            "-tmatfn",
-            str(model["transition_matrices"]),
-            "-mixwfn",
-            str(model["mixture_weights"]),
-            "-ts2cbfn",
-            ".ptm.",
-            "-feat",
-            "1s_c_d_dd",
-            "-svspec",
-            "0-12/13-25/26-38",
-            "-cmn",
-            "batch",
-            "-agc",
-            "none",
-            "-dictfn",
-            str(dictionary / "cmudict-en-us.dict"),
-            "-fdictfn",
-            str(hmm / "noisedict"),
-            "-ctlfn",
-            str(work / "fileids"),
-            "-lsnfn",
-            str(work / "transcription"),
-            "-cepdir",
-            str(work / "mfc"),
+            str(SPHINXTRAIN / "map_adapt"),
+            *common,
             "-accumdir",
             str(acc),
+            *model_flags(updated, "map"),
+            *tau_flags,
         ],
         log,
     )
-    skipped = log.read_text().count(" ignored") - before
-    target.mkdir(parents=True, exist_ok=True)
-    updated = {name: target / name for name in model}
-    cmd = [
-        "/usr/lib/sphinxtrain/map_adapt",
-        "-moddeffn",
-        str(work / "mdef.txt"),
-        "-ts2cbfn",
-        ".ptm.",
-        "-meanfn",
-        str(model["means"]),
-        "-varfn",
-        str(model["variances"]),
-        "-mixwfn",
-        str(model["mixture_weights"]),
-        "-tmatfn",
-        str(model["transition_matrices"]),
-        "-accumdir",
-        str(acc),
-        "-mapmeanfn",
-        str(updated["means"]),
-        "-mapvarfn",
-        str(updated["variances"]),
-        "-mapmixwfn",
-        str(updated["mixture_weights"]),
-        "-maptmatfn",
-        str(updated["transition_matrices"]),
-    ]
-    if tau > 0:
-        cmd += ["-fixedtau", "yes", "-tau", str(tau)]
-    run(cmd, log)
     total = len((work / "fileids").read_text().split())
     return updated, total - skipped
 
@@ -331,7 +308,7 @@ def main(argv: list[str] | None = None) -> int:
         aligned.append(count)
     run(
         [
-            "/usr/lib/sphinxtrain/mk_s2sendump",
+            str(SPHINXTRAIN / "mk_s2sendump"),
             "-pocketsphinx",
             "yes",
             "-moddeffn",
