@@ -33,7 +33,7 @@ from worlds.scenario import Event, Scenario, load_scenario
 from worlds.sim.contacts import ContactMonitor
 from worlds.sim.items import ItemState, fall_step, free_spots
 from worlds.sim.navigation import GridMap
-from worlds.sim.people import MAKE_WAY_AFTER, PeopleController, PersonState
+from worlds.sim.people import PeopleController, PersonState
 from worlds.sim.perception import add_depth_noise, detect
 from worlds.sim.robot import BaseController
 from worlds.sim.scene import Scene
@@ -168,10 +168,7 @@ class Simulation:
             self._time = round(self._time + h, 9)
             self._apply_due_events()
             r = self._base
-            make_way = None
-            if r.waiting_for is not None and r.waiting_s >= MAKE_WAY_AFTER:
-                make_way = (r.waiting_for, r.remaining_path())
-            self._people.update(h, self._time, (r.x, r.y, self._world.robot.radius), make_way)
+            self._people.update(h, self._time, (r.x, r.y, self._world.robot.radius))
             before = (r.x, r.y)
             r.update(
                 h, self._people.discs(), lambda x, y: self._contacts.may_stand(x, y, self._people.discs())

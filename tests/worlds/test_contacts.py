@@ -58,18 +58,3 @@ def test_navigation_waits_for_people_rather_than_hitting_them(make_sim: Callable
             )
     assert sim.counters().person_hits == 0
     assert sim.counters().bumps == 0
-
-
-def test_a_person_standing_in_a_doorway_makes_way_for_the_waiting_robot(
-    make_sim: Callable[..., Simulation],
-) -> None:
-    sim = make_sim("erl_home")
-    doorway = (4.33, 6.68)  # on the way from the entrance to the bedroom; no way around a person there
-    sim._people.teleport("tracy", *doorway)  # placing a person for the test (no scenario needed)
-    sim.navigate_to_room("bedroom")
-    while sim.nav_status().state is NavState.ACTIVE and sim.time < 120:
-        sim.step(0.5)
-    assert sim.nav_status().state is NavState.SUCCEEDED, sim.nav_status().reason
-    tracy = sim.true_pose("tracy").position
-    assert math.hypot(tracy[0] - doorway[0], tracy[1] - doorway[1]) > 0.5  # she stepped aside
-    assert sim.counters().person_hits == 0 and sim.counters().bumps == 0

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from collections.abc import Callable
 from pathlib import Path
 
@@ -72,6 +73,18 @@ def test_random_placement_follows_the_seed(make_sim: Callable[..., Simulation]) 
     for item in sim.world.items.values():
         on = [f[2] for f in sim.ground_truth_facts() if f[0] == "object_on" and f[1] == item.name]
         assert on and on[0] in {p.furniture for p in item.priors}
+
+
+def test_randomly_placed_items_are_within_the_robots_reach(make_sim: Callable[..., Simulation]) -> None:
+    for seed in (11, 12, 13):
+        sim = make_sim("erl_home", scenario="random_placement", seed=seed)
+        reach = sim.world.robot.reach
+        for fact in sim.ground_truth_facts():
+            if fact[0] != "object_on":
+                continue
+            x, y, _ = sim.true_pose(fact[1]).position
+            stands = sim.approach_points(fact[2], reach=reach)
+            assert min(math.hypot(sx - x, sy - y) for sx, sy in stands) <= reach - 0.1, (seed, fact)
 
 
 def test_invalid_scenarios_are_rejected(erl_world: World, tmp_path: Path) -> None:

@@ -5,6 +5,8 @@ from __future__ import annotations
 import math
 from typing import TYPE_CHECKING
 
+import numpy as np
+
 from worlds.geometry import Point
 from worlds.scenario import Event
 from worlds.sim.people import PeopleController
@@ -90,8 +92,25 @@ def _front_door(sim: Simulation) -> tuple[Point, Point]:
     return outside, inside
 
 
+#: how far inside the robot's reach a placed item must lie from some free spot beside its furniture (m)
+REACH_MARGIN = 0.1
+
+
+def reachable(sim: Simulation, furniture: str, spots: list[Point]) -> list[Point]:
+    """The spots on ``furniture`` the robot can grasp from a free point beside it (ERL places objects where a
+    robot can take them; the middle of a deep sofa against a wall may be out of an arm's reach)."""
+    reach = sim.world.robot.reach
+    stands = sim.approach_points(furniture, reach=reach)
+    if not stands or not spots:
+        return []
+    xs, ys = zip(*stands, strict=True)
+    sx, sy = np.asarray(xs), np.asarray(ys)
+    return [p for p in spots if float(np.min(np.hypot(sx - p[0], sy - p[1]))) <= reach - REACH_MARGIN]
+
+
 def _place_items(sim: Simulation, names: list[str]) -> None:
-    """Put each item on furniture drawn from its priors (weighted), at a random free spot (seeded)."""
+    """Put each item on furniture drawn from its priors (weighted), at a random free spot within the robot's
+    reach (seeded)."""
     rng = sim._rng_scenario
     for name in names:
         item = sim.world.items[name]
@@ -110,7 +129,7 @@ def _place_items(sim: Simulation, names: list[str]) -> None:
         it.on = None  # do not count the item as an obstacle to itself
         from worlds.sim.items import free_spots
 
-        spots = free_spots(f, it, list(sim._items.values()))
+        spots = reachable(sim, furniture, free_spots(f, it, list(sim._items.values())))
         if not spots:
             it.on = item.on
             continue

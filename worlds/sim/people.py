@@ -5,16 +5,10 @@ filled by
 scenario events, by their behaviour (``wander``) or by the robot (escorting). People walk on the same
 grid map as
 the robot at a fixed speed, yield to the robot (they wait rather than walk into it), and are kinematic.
-
-Making way: a standing person the robot has been waiting for (:attr:`BaseController.waiting_for
-<worlds.sim.robot.BaseController.waiting_for>`, for :data:`MAKE_WAY_AFTER` seconds) steps to the nearest free
-point clear of the robot's remaining path, then carries on with what they were doing (the rest of a wait
-included), as people do when a robot stops in front of them in a corridor. People sitting or lying stay put.
 """
 
 from __future__ import annotations
 
-import itertools
 import math
 from collections import deque
 from collections.abc import Sequence
@@ -29,8 +23,6 @@ from worlds.sim.navigation import GridMap
 
 WALK_SPEED = 0.8  # m/s
 FOLLOW_DISTANCE = 1.0  # metres behind the robot when escorted
-MAKE_WAY_AFTER = 1.0  # seconds the robot waits in front of a standing person before they step aside
-PATH_CLEARANCE = 0.15  # metres between a person who made way and the robot passing on its path
 
 
 class PeopleHooks(Protocol):
@@ -81,7 +73,6 @@ class PersonState:
     wait_until: float = 0.0
     replan_at: float = 0.0
     blocked_for: float = 0.0
-    making_way_until: float = 0.0
 
     def z_base(self, world: World) -> float:
         """Height of the person's feet: the furniture top when sitting or lying, else 0."""
@@ -140,20 +131,8 @@ class PeopleController:
 
     # ------------------------------------------------------------------------------------------ update
 
-    def update(
-        self,
-        dt: float,
-        now: float,
-        robot: tuple[float, float, float],
-        make_way: tuple[str, Sequence[Point]] | None = None,
-    ) -> None:
-        """Advance every person by ``dt`` seconds; ``robot`` is ``(x, y, radius)`` of the robot base.
-
-        Args:
-            make_way: the person the robot waits for and the robot's remaining path, when it waits.
-        """
-        if make_way is not None:
-            self._make_way(self.people.get(make_way[0]), make_way[1], now, robot)
+    def update(self, dt: float, now: float, robot: tuple[float, float, float]) -> None:
+        """Advance every person by ``dt`` seconds; ``robot`` is ``(x, y, radius)`` of the robot base."""
         for p in self.people.values():
             if not p.present and not p.tasks:
                 continue
@@ -214,50 +193,6 @@ class PeopleController:
                 return
             if self._walk_towards(p, p.path[p.path_index], dt, robot):
                 p.path_index += 1
-
-    def _make_way(
-        self, p: PersonState | None, path: Sequence[Point], now: float, robot: tuple[float, float, float]
-    ) -> None:
-        """Walk a standing person the robot waits for to a point clear of its path, around the robot; then
-        resume what they were doing. In a dead end behind them there is no such way: they stay."""
-        if p is None or not p.present or p.on is not None or p.following or now < p.making_way_until:
-            return
-        spots = self._clear_points(p, path, robot[2] + p.radius + PATH_CLEARANCE, robot)
-        around_robot = self.grid.with_discs([(robot[0], robot[1], robot[2] + p.radius + 0.05)])
-        route = self.grid.plan((p.x, p.y), spots, around_robot) if spots else None
-        if route is None:
-            p.making_way_until = now + 2.0 * MAKE_WAY_AFTER  # ask again a little later
-            return
-        remaining_wait = max(0.0, p.wait_until - now)
-        p.wait_until = now
-        if remaining_wait > 0:
-            p.tasks.appendleft(("wait", remaining_wait))
-        p.tasks.appendleft(("goto", [route[-1]]))
-        p.path, p.path_index = route, 1
-        length = sum(math.hypot(b[0] - a[0], b[1] - a[1]) for a, b in itertools.pairwise(route))
-        p.making_way_until = now + length / WALK_SPEED + 2.0 * MAKE_WAY_AFTER
-
-    def _clear_points(
-        self, p: PersonState, path: Sequence[Point], clearance: float, robot: tuple[float, float, float]
-    ) -> list[Point]:
-        """Free points up to 3 m from the person, ``clearance`` or more from every point of ``path`` (densely
-        sampled) and from the robot; the nearest first."""
-        dense: list[Point] = []
-        for a, b in itertools.pairwise(path):
-            n = max(1, int(math.hypot(b[0] - a[0], b[1] - a[1]) / 0.1))
-            dense += [(a[0] + (b[0] - a[0]) * i / n, a[1] + (b[1] - a[1]) * i / n) for i in range(n)]
-        dense += [*path[-1:], (robot[0], robot[1])]
-        track = np.asarray(dense)
-        out: list[tuple[float, Point]] = []
-        for k in range(24):
-            ang = 2 * math.pi * k / 24
-            for dist in (0.6, 0.9, 1.2, 1.6, 2.0, 2.5, 3.0):
-                x, y = p.x + dist * math.cos(ang), p.y + dist * math.sin(ang)
-                if not self.grid.is_free(x, y):
-                    continue
-                if float(np.min(np.hypot(track[:, 0] - x, track[:, 1] - y))) >= clearance:
-                    out.append((dist, (x, y)))
-        return [point for _, point in sorted(out)[:12]]
 
     def _aside_points(self, p: PersonState, robot: tuple[float, float, float]) -> list[Point]:
         """Free points 0.8-1.6 m away from the person, away from the robot and 1.3 m or more from it."""

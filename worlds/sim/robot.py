@@ -3,9 +3,8 @@
 The base is kinematic: every control period its pose is set from the commanded velocities (no dynamics), which
 keeps runs fast and exactly reproducible. Navigation goals are planned on the :class:`GridMap` and followed
 with a rotate-then-drive controller; people in the way make the robot wait and, after a while, replan around
-them. While it waits, :attr:`BaseController.waiting_for` names the person in the way (the simulation asks them
-to make way); a goal fails with ``"path blocked"`` when the way is still blocked after :data:`GIVE_UP_AFTER`
-seconds, ``"no path"`` when the goal is unreachable.
+them; a goal fails with ``"path blocked"`` when no way around exists, ``"no path"`` when the goal is
+unreachable.
 """
 
 from __future__ import annotations
@@ -52,10 +51,6 @@ class BaseController:
         self._goal: _Goal | None = None
         self._status = NavStatus(state=NavState.IDLE)
         self._next_id = 1
-        #: the person standing in the way of the current goal, while the robot waits for them (else None)
-        self.waiting_for: str | None = None
-        #: how long the robot has waited for :attr:`waiting_for` without a break (s)
-        self.waiting_s = 0.0
 
     # ------------------------------------------------------------------------------------------ commands
 
@@ -105,7 +100,6 @@ class BaseController:
         self._goal = None
 
     def _finish(self, state: NavState, reason: str = "") -> None:
-        self.waiting_for, self.waiting_s = None, 0.0
         g = self._goal
         if g is None:
             return
@@ -151,13 +145,6 @@ class BaseController:
             else:
                 hi = mid
         self.x, self.y = self.x + (nx - self.x) * lo, self.y + (ny - self.y) * lo
-
-    def remaining_path(self) -> list[Point]:
-        """The points the robot still has to pass on its way to the current goal (empty without a goal)."""
-        g = self._goal
-        if g is None or not g.path:
-            return []
-        return [(self.x, self.y), *g.path[g.index :]]
 
     def _plan(self, g: _Goal, people: Sequence[tuple[str, float, float, float]], around_people: bool) -> bool:
         blocked = None
@@ -218,16 +205,14 @@ class BaseController:
             None,
         )
         if blocker is not None:
-            self.waiting_s = self.waiting_s + dt if blocker == self.waiting_for else dt
-            self.waiting_for = blocker
             g.blocked_for += dt
             g.blocked_total += dt
             if g.blocked_total > GIVE_UP_AFTER:
                 self._finish(NavState.FAILED, f"path blocked by {blocker}")
             elif g.blocked_for > WAIT_BEFORE_REPLAN:
                 g.blocked_for = 0.0
-                self._plan(g, people, around_people=True)  # no way around: wait for them to make way
+                if not self._plan(g, people, around_people=True):
+                    self._finish(NavState.FAILED, f"path blocked by {blocker}")
             return
-        self.waiting_for, self.waiting_s = None, 0.0
         g.blocked_for = 0.0
         self.x, self.y, self.yaw = nx, ny, nyaw
