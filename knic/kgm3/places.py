@@ -236,6 +236,14 @@ class ObjectPlaceKP(_EntityPlaceKP):
         """Held by the robot or handed to a person: the actions own its place."""
         return bool(self.kb.facts("holding", None, symbol) or self.kb.facts("has", None, symbol))
 
+    def step(self, now: float) -> None:
+        """As for every entity, then: an item held or handed over is on no furniture any more."""
+        super().step(now)
+        for predicate in ("holding", "has"):
+            for fact in self.kb.facts(predicate):
+                # the pick's PDDL effects cannot name the furniture the item left, so its object_on stays
+                self.retract_all("object_on", fact.args[1], None, at=now)
+
     def place_of(self, cku: CKU) -> tuple[str | None, str | None]:
         """(room, surface) from the item's voxels; the surface only if it stands in that room."""
         room, _ = self.locations.rooms.best(cku.keys)

@@ -196,6 +196,23 @@ def test_a_partial_view_does_not_take_an_item_off_its_surface(
     assert paper_kb.holds("object_on", "glasses", "entrance_shelf") and places.writes.retracted == 0
 
 
+def test_an_item_picked_up_is_on_no_furniture_any_more(
+    paper_kb: KnowledgeBase, paper_locations: LocationModel
+) -> None:
+    bus = Bus()
+    places = ObjectPlaceKP(bus, paper_kb, paper_locations, needed=2)
+    for t in (1.0, 1.2):
+        send(bus, cku("glasses", Kind.OBJECT, (7.75, 1.5, 0.92), t, hits=3))
+    places.step(1.2)
+    assert paper_kb.holds("object_on", "glasses", "entrance_shelf")
+    # the pick's effects as the dispatcher writes them: holding, and no object_at (it cannot name the shelf)
+    paper_kb.remove_fact("hand_empty", "r2d2", source="dispatcher", at=2.0)
+    paper_kb.add_fact("holding", "r2d2", "glasses", source="dispatcher", at=2.0)
+    paper_kb.remove_fact("object_at", "glasses", "entrance", source="dispatcher", at=2.0)
+    places.step(2.1)
+    assert not paper_kb.facts("object_on", "glasses") and paper_kb.holds("holding", "r2d2", "glasses")
+
+
 def test_a_person_last_seen_walking_expires_sooner(
     paper_kb: KnowledgeBase, paper_locations: LocationModel
 ) -> None:
