@@ -180,15 +180,21 @@ def test_a_confused_label_on_another_settled_object_moves_nothing(paper_location
     assert track is not None and math.dist(track.centroid, sponge) < 0.1
 
 
-def test_a_partial_view_does_not_take_an_item_off_its_surface(
-    paper_kb: KnowledgeBase, paper_locations: LocationModel
-) -> None:
+def glasses_on_the_shelf(kb: KnowledgeBase, locations: LocationModel) -> tuple[Bus, ObjectPlaceKP]:
+    """The object place KP' after two sightings of the glasses on the entrance shelf (t = 1.0 and 1.2)."""
     bus = Bus()
-    places = ObjectPlaceKP(bus, paper_kb, paper_locations, needed=2)
+    places = ObjectPlaceKP(bus, kb, locations, needed=2)
     for t in (1.0, 1.2):
         send(bus, cku("glasses", Kind.OBJECT, (7.75, 1.5, 0.92), t, hits=3))
     places.step(1.2)
-    assert paper_kb.holds("object_on", "glasses", "entrance_shelf")
+    assert kb.holds("object_on", "glasses", "entrance_shelf")
+    return bus, places
+
+
+def test_a_partial_view_does_not_take_an_item_off_its_surface(
+    paper_kb: KnowledgeBase, paper_locations: LocationModel
+) -> None:
+    bus, places = glasses_on_the_shelf(paper_kb, paper_locations)
     # seen low over the shelf's footprint (voxels under its top) in several frames: still on the shelf
     for t in (1.4, 1.6, 1.8):
         send(bus, cku("glasses", Kind.OBJECT, (7.75, 1.5, 0.4), t, hits=4))
@@ -199,12 +205,7 @@ def test_a_partial_view_does_not_take_an_item_off_its_surface(
 def test_an_item_picked_up_is_on_no_furniture_any_more(
     paper_kb: KnowledgeBase, paper_locations: LocationModel
 ) -> None:
-    bus = Bus()
-    places = ObjectPlaceKP(bus, paper_kb, paper_locations, needed=2)
-    for t in (1.0, 1.2):
-        send(bus, cku("glasses", Kind.OBJECT, (7.75, 1.5, 0.92), t, hits=3))
-    places.step(1.2)
-    assert paper_kb.holds("object_on", "glasses", "entrance_shelf")
+    _, places = glasses_on_the_shelf(paper_kb, paper_locations)
     # the pick's effects as the dispatcher writes them: holding, and no object_at (it cannot name the shelf)
     paper_kb.remove_fact("hand_empty", "r2d2", source="dispatcher", at=2.0)
     paper_kb.add_fact("holding", "r2d2", "glasses", source="dispatcher", at=2.0)
