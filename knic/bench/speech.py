@@ -11,6 +11,8 @@ Figures (wall-clock time; the decoder is built once before timing):
 * ``false_rejection`` -- share of in-grammar utterances rejected;
 * ``ms_per_utterance`` -- mean recognition plus understanding time per utterance;
 * ``by_voice`` -- frame-with-arguments accuracy of the in-grammar utterances of each voice in ``gold.json``;
+* ``dev`` -- the same main figures on the development set (``tests/fixtures/speech_dev``: voices and sentences
+  the test set does not have), to see how far the figures carry to unseen voices;
 * ``answer_accuracy`` -- share of ``tests/fixtures/speech_answers`` (spoken yes, no, and speech that is no
   answer) that the confirmation recogniser takes as the right answer, or as no answer.
 
@@ -33,6 +35,9 @@ from knic.errors import KnicError
 
 FIXTURES = Path(__file__).resolve().parents[2] / "tests" / "fixtures" / "speech"
 ANSWERS = FIXTURES.parent / "speech_answers"
+DEV = FIXTURES.parent / "speech_dev"
+#: the development set's figures printed under ``"dev"``
+DEV_FIGURES = ("wer", "frame_accuracy", "frame_argument_accuracy", "oog_rejection", "ms_per_utterance")
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -57,6 +62,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--answers", default=str(ANSWERS), help="folder with the yes/no answer set ('' skips)"
     )
+    parser.add_argument("--dev", default=str(DEV), help="folder with the development set ('' skips)")
 
 
 def parse_options(pairs: list[str]) -> dict[str, object]:
@@ -229,6 +235,16 @@ def run(args: argparse.Namespace) -> int:
         acoustic_model=args.acoustic_model,
     )
     mistakes = figures.pop("errors")
+    if args.dev and Path(args.dev).resolve() != Path(args.fixtures).resolve():
+        dev = evaluate(
+            Path(args.dev),
+            args.limit,
+            args.filler_weight,
+            decoder_options=parse_options(args.option),
+            branch_penalty=not args.no_branch_penalty,
+            acoustic_model=args.acoustic_model,
+        )
+        figures["dev"] = {key: dev[key] for key in DEV_FIGURES}
     if args.answers:
         figures["answer_accuracy"], wrong = evaluate_answers(Path(args.answers), args.acoustic_model)
         mistakes += wrong

@@ -108,3 +108,22 @@ def test_the_recogniser_adds_non_rhotic_alternatives_for_command_words(recognize
     assert added["water(2)"] == "W AO T AH"
     assert {"search(2)", "turn(2)", "percent(2)"} <= set(added)
     assert all(recognizer._decoder.lookup_word(name) == phones for name, phones in added.items())
+
+
+def test_the_speech_bench_prints_its_figures(capsys: pytest.CaptureFixture[str]) -> None:
+    import json
+
+    from knic.cli import main
+
+    assert main(["bench", "speech", "--json", "--limit", "4", "--answers", ""]) == 0
+    figures = json.loads(capsys.readouterr().out)
+    assert figures["utterances"] == 4 and figures["acoustic_model"] == "espeak"
+    assert figures["frame_argument_accuracy"] == 1.0 and figures["wer"] == 0.0  # the first four, all right
+    assert set(figures["dev"]) == {
+        "wer",
+        "frame_accuracy",
+        "frame_argument_accuracy",
+        "oog_rejection",
+        "ms_per_utterance",
+    }
+    assert 0.0 <= figures["dev"]["frame_argument_accuracy"] <= 1.0 and figures["ms_per_utterance"] > 0
