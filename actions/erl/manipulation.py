@@ -21,7 +21,7 @@ import math
 from actions.base import ActionStatus
 from actions.erl.common import ErlAction, NavGoal, to_furniture, to_point
 from actions.erl.context import ErlContext, FurnitureMap, bearing, furniture_map, standoff_points
-from actions.erl.motion import approach_person
+from actions.erl.motion import PersonApproachAction
 
 #: metres from a loose item (on no known furniture) at which the robot stops to grasp it
 GRASP_STANDOFF = 0.55
@@ -181,7 +181,7 @@ class PlaceAction(ErlAction):
         return ActionStatus.SUCCEEDED
 
 
-class GiveAction(ErlAction):
+class GiveAction(PersonApproachAction):
     """``(give ?r ?o ?p ?l)``: approach the perceived person and hand the item over.
 
     Phases: ``nav`` -> hand over (immediate; one re-approach to a fresh sighting if refused).
@@ -195,13 +195,9 @@ class GiveAction(ErlAction):
 
     def activation(self) -> bool:
         """Check the gripper holds the item and approach the person."""
-        if not self.holds_or_refuse(self.item):
+        if not self.holds_or_refuse(self.item) or not self.approach_or_refuse():
             return False
-        self.nav = approach_person(self.ctx, self.person, self.person)
-        if self.nav is None:
-            return self.refuse(f"cannot approach {self.person}: not perceived or no free pose around them")
         self.attempts = 1
-        self.enter("nav")
         return True
 
     def step(self) -> ActionStatus:
@@ -215,9 +211,6 @@ class GiveAction(ErlAction):
             return ActionStatus.SUCCEEDED
         if self.attempts < 2:
             self.attempts += 1
-            nav = approach_person(self.ctx, self.person, self.person)
-            if nav is not None:
-                self.nav = nav
-                self.enter("nav")
+            if self.reapproach():
                 return ActionStatus.RUNNING
         return self.fail(f"handing {self.item} to {self.person} failed: {result.reason}")

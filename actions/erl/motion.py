@@ -78,7 +78,31 @@ def approach_person(ctx: ErlContext, person: str, what: str) -> NavGoal | None:
     return nav if nav.start() else None
 
 
-class MeetAction(ErlAction):
+class PersonApproachAction(ErlAction):
+    """An action that first drives up to a perceived person, ``self.person`` (``meet``, ``give``)."""
+
+    person: str
+    nav: NavGoal | None
+
+    def approach_or_refuse(self) -> bool:
+        """Start the approach; refuse (False) when the person was never perceived or cannot be reached."""
+        self.nav = approach_person(self.ctx, self.person, self.person)
+        if self.nav is None:
+            return self.refuse(f"cannot approach {self.person}: not perceived or no free pose around them")
+        self.enter("nav")
+        return True
+
+    def reapproach(self) -> bool:
+        """Approach the person again (they may have moved); False when that cannot start."""
+        nav = approach_person(self.ctx, self.person, self.person)
+        if nav is None:
+            return False
+        self.nav = nav
+        self.enter("nav")
+        return True
+
+
+class MeetAction(PersonApproachAction):
     """``(meet ?r ?p ?l)``: go to the perceived person and ask them to follow (effect: escorting).
 
     Phases: ``nav`` -> ``escort`` (with at most one re-approach when a fresh sighting shows they moved).
@@ -92,11 +116,7 @@ class MeetAction(ErlAction):
 
     def activation(self) -> bool:
         """Start approaching where the person was last perceived."""
-        self.nav = approach_person(self.ctx, self.person, self.person)
-        if self.nav is None:
-            return self.refuse(f"cannot approach {self.person}: not perceived or no free pose around them")
-        self.enter("nav")
-        return True
+        return self.approach_or_refuse()
 
     def step(self) -> ActionStatus:
         """Approach, then ask the person to follow."""
@@ -109,9 +129,7 @@ class MeetAction(ErlAction):
             return ActionStatus.SUCCEEDED
         if self.reapproaches < 1:
             self.reapproaches += 1
-            nav = approach_person(self.ctx, self.person, self.person)
-            if nav is not None:
-                self.nav = nav
+            if self.reapproach():
                 return ActionStatus.RUNNING
         return self.fail(f"{self.person} will not follow: {result.reason}")
 

@@ -226,24 +226,20 @@ def evaluate_answers(folder: Path, acoustic_model: str = "espeak") -> tuple[floa
 
 
 def run(args: argparse.Namespace) -> int:
-    figures = evaluate(
-        Path(args.fixtures),
-        args.limit,
-        args.filler_weight,
-        decoder_options=parse_options(args.option),
-        branch_penalty=not args.no_branch_penalty,
-        acoustic_model=args.acoustic_model,
-    )
-    mistakes = figures.pop("errors")
-    if args.dev and Path(args.dev).resolve() != Path(args.fixtures).resolve():
-        dev = evaluate(
-            Path(args.dev),
+    def evaluate_set(folder: str) -> dict[str, Any]:
+        return evaluate(
+            Path(folder),
             args.limit,
             args.filler_weight,
             decoder_options=parse_options(args.option),
             branch_penalty=not args.no_branch_penalty,
             acoustic_model=args.acoustic_model,
         )
+
+    figures = evaluate_set(args.fixtures)
+    mistakes = figures.pop("errors")
+    if args.dev and Path(args.dev).resolve() != Path(args.fixtures).resolve():
+        dev = evaluate_set(args.dev)
         figures["dev"] = {key: dev[key] for key in DEV_FIGURES}
     if args.answers:
         figures["answer_accuracy"], wrong = evaluate_answers(Path(args.answers), args.acoustic_model)

@@ -244,23 +244,11 @@ def confirm_command(dialogue: Dialogue, understood: Any, facts: list[Fact]) -> b
     Returns:
         True only for a clear yes (see :meth:`knic.language.dialogue.Dialogue.confirm`).
     """
-    from knic.language.dialogue import parse_answer
-
     if understood is not None:
         return bool(dialogue.confirm(understood))
-    dialogue.voice.say(
+    return dialogue.ask(
         "You asked me to make " + " and ".join(str(f) for f in facts) + " true. Is that right?"
     )
-    for attempt in range(dialogue.max_asks):
-        answer = dialogue.listen()
-        verdict = parse_answer(answer) if answer else None
-        if verdict is not None:
-            dialogue.voice.say("Okay, I will do it." if verdict else "Okay, I will not do it.")
-            return verdict
-        if attempt + 1 < dialogue.max_asks:
-            dialogue.voice.say("Please answer yes or no.")
-    dialogue.voice.say("I did not get an answer, so I will not do it.")
-    return False
 
 
 def answer_source(args: argparse.Namespace, role: Role) -> Callable[[], str | None] | None:

@@ -161,7 +161,15 @@ class Dialogue:
         if not understanding.accepted:
             self.acknowledge(understanding)
             return False
-        self.voice.say(repeat_back(understanding, self.vocabulary) + " Is that right?")
+        return self.ask(repeat_back(understanding, self.vocabulary) + " Is that right?")
+
+    def ask(self, question: str) -> bool:
+        """Ask a yes/no question and wait for a clear answer, asking again up to ``max_asks`` times.
+
+        Returns:
+            True for yes; False for no, and when no clear answer came.
+        """
+        self.voice.say(question)
         for attempt in range(self.max_asks):
             answer = self.listen()
             verdict = parse_answer(answer) if answer else None
