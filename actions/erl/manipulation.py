@@ -22,6 +22,7 @@ from actions.base import ActionStatus
 from actions.erl.common import ErlAction, NavGoal, to_furniture, to_point
 from actions.erl.context import ErlContext, FurnitureMap, bearing, furniture_map, standoff_points
 from actions.erl.motion import PersonApproachAction
+from worlds.api import ActionResult
 
 #: metres from a loose item (on no known furniture) at which the robot stops to grasp it
 GRASP_STANDOFF = 0.55
@@ -190,27 +191,14 @@ class GiveAction(PersonApproachAction):
     def __init__(self, args: tuple[str, ...], ctx: ErlContext) -> None:
         super().__init__("give", args, ctx)
         _robot, self.item, self.person, self.room = args
-        self.nav: NavGoal | None = None
-        self.attempts = 0
 
     def activation(self) -> bool:
         """Check the gripper holds the item and approach the person."""
-        if not self.holds_or_refuse(self.item) or not self.approach_or_refuse():
-            return False
-        self.attempts = 1
-        return True
+        return self.holds_or_refuse(self.item) and self.approach_or_refuse()
 
-    def step(self) -> ActionStatus:
-        """Approach, then hand over."""
-        assert self.nav is not None
-        waiting = self.drive(self.nav)
-        if waiting is not None:
-            return waiting
-        result = self.ctx.robot.give(self.person)
-        if result.ok:
-            return ActionStatus.SUCCEEDED
-        if self.attempts < 2:
-            self.attempts += 1
-            if self.reapproach():
-                return ActionStatus.RUNNING
-        return self.fail(f"handing {self.item} to {self.person} failed: {result.reason}")
+    def act(self) -> ActionResult:
+        """Hand the item over."""
+        return self.ctx.robot.give(self.person)
+
+    def refused(self, reason: str) -> str:
+        return f"handing {self.item} to {self.person} failed: {reason}"

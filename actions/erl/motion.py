@@ -18,6 +18,7 @@ import math
 from actions.base import ActionStatus
 from actions.erl.common import ErlAction, NavGoal, to_point
 from actions.erl.context import ErlContext, Point, room_map, standoff_points, wrap
+from worlds.api import ActionResult
 
 #: metres between the robot and a person it approaches
 PERSON_STANDOFF = 0.9
@@ -79,10 +80,35 @@ def approach_person(ctx: ErlContext, person: str, what: str) -> NavGoal | None:
 
 
 class PersonApproachAction(ErlAction):
-    """An action that first drives up to a perceived person, ``self.person`` (``meet``, ``give``)."""
+    """An action that drives up to a perceived person, ``self.person``, then does :meth:`act` with them
+    (``meet``, ``give``); when that is refused, it approaches once more (they may have moved) and retries."""
 
     person: str
-    nav: NavGoal | None
+    nav: NavGoal | None = None
+    reapproaches = 0
+
+    def act(self) -> ActionResult:
+        """What the action does once beside the person."""
+        raise NotImplementedError
+
+    def refused(self, reason: str) -> str:
+        """The failure reason when :meth:`act` was refused after the re-approach."""
+        raise NotImplementedError
+
+    def step(self) -> ActionStatus:
+        """Approach, then act; one re-approach when the person refuses."""
+        assert self.nav is not None
+        waiting = self.drive(self.nav)
+        if waiting is not None:
+            return waiting
+        result = self.act()
+        if result.ok:
+            return ActionStatus.SUCCEEDED
+        if self.reapproaches < 1:
+            self.reapproaches += 1
+            if self.reapproach():
+                return ActionStatus.RUNNING
+        return self.fail(self.refused(result.reason))
 
     def approach_or_refuse(self) -> bool:
         """Start the approach; refuse (False) when the person was never perceived or cannot be reached."""
@@ -111,27 +137,17 @@ class MeetAction(PersonApproachAction):
     def __init__(self, args: tuple[str, ...], ctx: ErlContext) -> None:
         super().__init__("meet", args, ctx)
         _robot, self.person, self.room = args
-        self.nav: NavGoal | None = None
-        self.reapproaches = 0
 
     def activation(self) -> bool:
         """Start approaching where the person was last perceived."""
         return self.approach_or_refuse()
 
-    def step(self) -> ActionStatus:
-        """Approach, then ask the person to follow."""
-        assert self.nav is not None
-        waiting = self.drive(self.nav)
-        if waiting is not None:
-            return waiting
-        result = self.ctx.robot.escort(self.person)
-        if result.ok:
-            return ActionStatus.SUCCEEDED
-        if self.reapproaches < 1:
-            self.reapproaches += 1
-            if self.reapproach():
-                return ActionStatus.RUNNING
-        return self.fail(f"{self.person} will not follow: {result.reason}")
+    def act(self) -> ActionResult:
+        """Ask the person to follow."""
+        return self.ctx.robot.escort(self.person)
+
+    def refused(self, reason: str) -> str:
+        return f"{self.person} will not follow: {reason}"
 
 
 class GuideAction(ErlAction):
