@@ -35,7 +35,7 @@ import enum
 from abc import ABC, abstractmethod
 from collections.abc import Callable, Iterable, Mapping
 
-from knic.errors import ActionError
+from core.errors import ActionError
 
 
 class ActionStatus(enum.StrEnum):

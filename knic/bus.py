@@ -30,7 +30,7 @@ from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 from typing import Any
 
-from knic.errors import InferenceError
+from core.errors import InferenceError
 
 _LEVEL = re.compile(r"^[a-z0-9_]+$")
 

@@ -159,7 +159,7 @@ def build_pipeline(
         bus: the message bus (a new one by default).
 
     Raises:
-        knic.errors.InferenceError: unknown role or malformed role file.
+        core.errors.InferenceError: unknown role or malformed role file.
     """
     opts = options or PipelineOptions()
     the_role = role if isinstance(role, Role) else load_role(role, opts.roles_file)

@@ -24,7 +24,7 @@ from collections import deque
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
-from knic.errors import InferenceError
+from core.errors import InferenceError
 
 log = logging.getLogger(__name__)
 

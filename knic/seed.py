@@ -33,7 +33,7 @@ def seed_kb_from_world(
     """Write the robot's prior knowledge of ``world`` into ``kb`` in one batch; return the number of writes.
 
     Facts that already hold (for instance from a PDDL problem file) are left as they are. All-or-nothing: a
-    refused write raises :class:`knic.errors.KnowledgeBaseError` and nothing is written.
+    refused write raises :class:`core.errors.KnowledgeBaseError` and nothing is written.
     """
     writes = 0
     given = BeliefStatus.GIVEN

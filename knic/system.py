@@ -28,7 +28,7 @@ from typing import TYPE_CHECKING, TextIO
 
 from actions.erl import ErlContext, PerceivedEntities, build_erl_registry
 from actions.erl.devices import spoken
-from knic.errors import KnicError, KnowledgeBaseError
+from core.errors import KnicError, KnowledgeBaseError
 from knic.pipeline import Pipeline, build_pipeline
 from knic.scheduler import Component, Scheduler
 from knic.seed import seed_kb_from_world
@@ -210,9 +210,9 @@ class KnicSystem:
     :meth:`close` (closes the journal and the simulator). Usable as a context manager.
 
     Raises:
-        knic.errors.WorldError: unknown world or scenario.
-        knic.errors.InferenceError: unknown role.
-        knic.errors.JournalError: the journal file cannot be written.
+        core.errors.WorldError: unknown world or scenario.
+        core.errors.InferenceError: unknown role.
+        core.errors.JournalError: the journal file cannot be written.
     """
 
     def __init__(self, config: RunConfig | None = None) -> None:

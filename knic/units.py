@@ -24,7 +24,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 import numpy.typing as npt
 
-from knic.errors import InferenceError
+from core.errors import InferenceError
 
 if TYPE_CHECKING:
     import pyoctomap

@@ -6,9 +6,9 @@ what PDDL cannot: which predicates are single-valued (``single_valued: {robot_at
 are sensing actions (``sensing: {search_object: [found, object_at]}``). It is immutable after construction and
 precomputes the per-predicate type tables that make validating a write a few dictionary look-ups.
 
-Failure behaviour: a file that does not parse raises :class:`~knic.errors.PDDLParseError` naming file, line,
+Failure behaviour: a file that does not parse raises :class:`~core.errors.PDDLParseError` naming file, line,
 column and what the parser expected; a domain or sidecar that parses but is inconsistent raises
-:class:`~knic.errors.PDDLValidationError`.
+:class:`~core.errors.PDDLValidationError`.
 """
 
 from __future__ import annotations
@@ -21,7 +21,7 @@ from typing import Any
 
 import yaml
 
-from knic.errors import PDDLParseError, PDDLValidationError
+from core.errors import PDDLParseError, PDDLValidationError
 
 __all__ = ["DomainModel", "meta_path_for", "parse_with_up"]
 

@@ -31,7 +31,7 @@ from collections.abc import Iterable, Sequence
 from pathlib import Path
 from typing import Any
 
-from knic.errors import JournalError
+from core.errors import JournalError
 from knowledge_base.model import BeliefStatus, Change, ChangeKind, Fact, Provenance, State, apply_change
 
 __all__ = ["Journal", "SqliteJournal"]

@@ -8,7 +8,7 @@ journal file.
 
 Every write is validated against the domain before anything changes (unknown predicate, function or type,
 wrong arity, unknown instance, argument of the wrong type, removing an instance still in use, bad
-provenance). A refused write raises :class:`~knic.errors.KnowledgeBaseError` naming what is wrong and leaves
+provenance). A refused write raises :class:`~core.errors.KnowledgeBaseError` naming what is wrong and leaves
 the knowledge base exactly as it was; inside :meth:`KnowledgeBase.batch` a refused write changes nothing and
 an exception escaping the batch undoes the whole batch.
 
@@ -28,7 +28,7 @@ from contextlib import contextmanager
 from pathlib import Path
 from typing import Any
 
-from knic.errors import JournalError, KnowledgeBaseError
+from core.errors import JournalError, KnowledgeBaseError
 from knowledge_base.domain import DomainModel
 from knowledge_base.journal import Journal, SqliteJournal
 from knowledge_base.model import BeliefStatus, Change, ChangeKind, Fact, Provenance, State

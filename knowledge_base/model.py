@@ -18,7 +18,7 @@ from collections.abc import Iterator
 from dataclasses import dataclass, field
 from typing import Any, NamedTuple
 
-from knic.errors import KnowledgeBaseError
+from core.errors import KnowledgeBaseError
 
 __all__ = [
     "BeliefStatus",

@@ -6,8 +6,8 @@ and checked against the :class:`~knowledge_base.domain.DomainModel` (domain name
 atom of ``:init`` and ``:goal``: predicate, arity, objects, argument types). Only then is it parsed with
 ``PDDLReader`` and turned into a :class:`ProblemContent`.
 
-Failure behaviour: syntax errors raise :class:`~knic.errors.PDDLParseError` (file, line, column, what was
-expected); inconsistencies raise :class:`~knic.errors.PDDLValidationError` naming the symbol, file and line.
+Failure behaviour: syntax errors raise :class:`~core.errors.PDDLParseError` (file, line, column, what was
+expected); inconsistencies raise :class:`~core.errors.PDDLValidationError` naming the symbol, file and line.
 """
 
 from __future__ import annotations
@@ -19,7 +19,7 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from knic.errors import PDDLParseError, PDDLValidationError
+from core.errors import PDDLParseError, PDDLValidationError
 from knowledge_base.domain import DomainModel, parse_with_up
 from knowledge_base.model import Fact
 

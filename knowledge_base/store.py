@@ -13,7 +13,7 @@ from __future__ import annotations
 
 from typing import Any, NoReturn
 
-from knic.errors import KnowledgeBaseError
+from core.errors import KnowledgeBaseError
 from knowledge_base.domain import DomainModel
 from knowledge_base.model import Change, ChangeKind, Fact, Provenance, State
 

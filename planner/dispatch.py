@@ -32,7 +32,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from actions.base import Action, ActionRegistry, ActionStatus, Outcome
-from knic.errors import KnicError
+from core.errors import KnicError
 from knowledge_base import BeliefStatus, Change, ChangeKind, KnowledgeBase
 from planner.engines import Planner
 from planner.model import ActionSchema, Atom, PlanningTask, atom_str, ground

@@ -14,7 +14,7 @@ Engines (:data:`ENGINES`):
     Chosen by what the problem needs: ``tamer`` for durative actions; ``knic`` for the STRIPS fragment with
     ``fast-downward`` as fall-back when the in-process search reaches its node limit; ``fast-downward`` for
     any other classical feature it supports. When no installed engine supports the problem,
-    :class:`~knic.errors.PlanningError` names the missing features.
+    :class:`~core.errors.PlanningError` names the missing features.
 
 When not all goals can be reached, the planner returns a plan for the reachable ones and names the others
 (:attr:`PlanResult.unreachable_goals`): goals outside the relaxed-reachable atoms are provably unreachable;
@@ -28,7 +28,7 @@ import time
 from collections.abc import Sequence
 from typing import Any, Protocol
 
-from knic.errors import PlanningError
+from core.errors import PlanningError
 from planner.grounding import GroundingCache, ground_task
 from planner.model import Atom, PlanningTask, atom_str
 from planner.plan import PlanResult, PlanStatus, PlanStep

@@ -21,7 +21,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from actions.base import Outcome
-from knic.errors import KnicError
+from core.errors import KnicError
 
 
 class Recovery(enum.StrEnum):

@@ -4,7 +4,7 @@ import json
 import subprocess
 import sys
 
-CORE = ["knic", "knic.errors", "knic.cli", "knowledge_base", "planner", "actions", "worlds"]
+CORE = ["core", "core.errors", "knic", "knic.cli", "knowledge_base", "planner", "actions", "worlds"]
 ADAPTERS = ["rclpy", "cyclonedds", "http.server", "PySide6", "tkinter"]
 
 

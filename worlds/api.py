@@ -80,7 +80,7 @@ def load_world(name_or_path: str | Path) -> World:
         The validated, immutable :class:`worlds.model.World`.
 
     Raises:
-        knic.errors.WorldError: unknown name, unreadable file, or invalid content; the message names the entry
+        core.errors.WorldError: unknown name, unreadable file, or invalid content; the message names the entry
             (e.g. ``doors[2]``) and the problem.
     """
     from worlds.loader import load_world as _load
@@ -425,7 +425,7 @@ class SimulationAPI(Protocol):
     Implemented by :class:`worlds.simulation.Simulation`. Commands return at once: navigation is a goal whose
     status is polled while :meth:`step` advances time; pick, place, release, give and device commands take
     effect immediately and return an :class:`ActionResult`. Commands never raise for a physically impossible
-    request (that is a failed result); they raise :class:`knic.errors.WorldError` only for names that do not
+    request (that is a failed result); they raise :class:`core.errors.WorldError` only for names that do not
     exist in the world, and then change nothing.
     """
 

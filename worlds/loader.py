@@ -2,7 +2,7 @@
 
 A world file has the top-level keys ``name``, ``rooms``, ``doors``, ``furniture``, ``items``, ``people``,
 ``devices`` and ``robot`` (see ``worlds/erl_home/erl_home.yaml`` for a documented example). Validation runs
-in full before anything is built; the first problem found raises :class:`knic.errors.WorldError` with a
+in full before anything is built; the first problem found raises :class:`core.errors.WorldError` with a
 message ``<file>: <entry>: <problem>``, e.g. ``erl_home.yaml: doors[3]: unknown room 'kitchn'``.
 """
 
@@ -14,7 +14,7 @@ from typing import Any
 
 import yaml
 
-from knic.errors import WorldError
+from core.errors import WorldError
 from worlds.geometry import point_on_boundary, polygon_area, polygons_overlap, self_intersection
 from worlds.model import (
     DEVICE_KINDS,

@@ -24,7 +24,7 @@ from typing import Any
 
 import yaml
 
-from knic.errors import WorldError
+from core.errors import WorldError
 from worlds.model import World
 
 SCENARIO_DIR = Path(__file__).resolve().parent / "erl_home" / "scenarios"

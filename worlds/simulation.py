@@ -14,7 +14,7 @@ from pathlib import Path
 
 import numpy as np
 
-from knic.errors import WorldError
+from core.errors import WorldError
 from worlds.api import (
     ActionResult,
     CameraFrame,

@@ -72,7 +72,7 @@ def build_erl_registry(
 
     Returns:
         A registry with every action of ``worlds/erl_home/domain.pddl`` plus ``speak``. Factories raise
-        ``ValueError`` (an :class:`~knic.errors.ActionError` through the registry) for a wrong argument count.
+        ``ValueError`` (an :class:`~core.errors.ActionError` through the registry) for a wrong argument count.
     """
     ctx = context or ErlContext(sim, kb, PerceivedEntities(kb, bus), robot_name=robot)
     confirm = (bus is not None) if confirm_devices is None else confirm_devices

@@ -80,7 +80,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from knic.errors import KnicError
+    from core.errors import KnicError
 
     if args.duration <= 0:
         raise KnicError(f"knic bench grounding: --duration must be positive, got {args.duration}")

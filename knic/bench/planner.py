@@ -267,7 +267,7 @@ def _world(problem: Path, goals: list[str], repeat: int, naive_rounds: int) -> d
 
 
 def run(args: argparse.Namespace) -> int:
-    from knic.errors import KnicError
+    from core.errors import KnicError
     from planner.engines import silence_up
 
     if args.repeat < 1:

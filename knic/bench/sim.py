@@ -30,7 +30,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
-    from knic.errors import WorldError
+    from core.errors import WorldError
     from worlds.api import NavState
     from worlds.simulation import Simulation
 

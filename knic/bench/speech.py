@@ -30,8 +30,8 @@ import time
 from pathlib import Path
 from typing import Any
 
+from core.errors import KnicError
 from knic.cli.say import add_acoustic_argument
-from knic.errors import KnicError
 
 FIXTURES = Path(__file__).resolve().parents[2] / "tests" / "fixtures" / "speech"
 ANSWERS = FIXTURES.parent / "speech_answers"

@@ -2,7 +2,7 @@
 
 Subcommands live in their own modules and are listed explicitly in :data:`COMMANDS`. Each module
 provides ``add_arguments(parser)`` and ``run(args) -> int`` and keeps heavy imports inside ``run`` so that
-``--help`` is fast. A :class:`~knic.errors.KnicError` becomes one line on stderr and the error's exit code.
+``--help`` is fast. A :class:`~core.errors.KnicError` becomes one line on stderr and the error's exit code.
 """
 
 from __future__ import annotations
@@ -12,8 +12,8 @@ import importlib
 import sys
 from collections.abc import Callable, Sequence
 
+from core.errors import KnicError
 from knic import __version__
-from knic.errors import KnicError
 
 #: name -> (module, one-line help)
 COMMANDS: dict[str, tuple[str, str]] = {

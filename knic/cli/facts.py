@@ -23,7 +23,7 @@ import time
 from datetime import UTC, datetime
 from typing import TYPE_CHECKING, Any
 
-from knic.errors import KnicError
+from core.errors import KnicError
 
 if TYPE_CHECKING:
     from knowledge_base import Change, Fact, KnowledgeBase, Provenance, State

@@ -10,7 +10,7 @@ import argparse
 import json
 from typing import Any
 
-from knic.errors import LanguageError
+from core.errors import LanguageError
 
 
 def add_world_arguments(parser: argparse.ArgumentParser) -> None:

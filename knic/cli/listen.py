@@ -13,9 +13,9 @@ from __future__ import annotations
 import argparse
 import json
 
+from core.errors import AudioError
 from knic.cli.goal import add_world_arguments, load_vocabulary
 from knic.cli.say import add_acoustic_argument
-from knic.errors import AudioError
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:

@@ -15,7 +15,7 @@ import argparse
 import json
 import sys
 
-from knic.errors import KnicError
+from core.errors import KnicError
 
 EXIT_UNREACHABLE = 3
 

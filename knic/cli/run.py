@@ -31,8 +31,8 @@ from collections.abc import Callable
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, TextIO
 
+from core.errors import KnicError, LanguageError
 from knic.cli.say import add_acoustic_argument
-from knic.errors import KnicError, LanguageError
 
 if TYPE_CHECKING:
     from knic.kgm2.roles import Role

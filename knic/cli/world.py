@@ -67,7 +67,7 @@ def run(args: argparse.Namespace) -> int:
     from worlds.render import render_map
 
     if args.scale <= 0:
-        from knic.errors import WorldError
+        from core.errors import WorldError
 
         raise WorldError(f"--scale must be positive, got {args.scale}")
     size = render_map(world, args.out, scale=args.scale)

@@ -11,8 +11,8 @@ from __future__ import annotations
 import logging
 from typing import TYPE_CHECKING
 
+from core.errors import KnowledgeBaseError
 from knic.bus import Bus, topic_level
-from knic.errors import KnowledgeBaseError
 from knic.scheduler import Component
 from knic.units import LLKU
 

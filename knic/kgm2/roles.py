@@ -16,7 +16,7 @@ from typing import Any
 
 import yaml
 
-from knic.errors import InferenceError
+from core.errors import InferenceError
 
 #: The shipped role file.
 ROLES_FILE = Path(__file__).resolve().parent.parent / "roles.yaml"

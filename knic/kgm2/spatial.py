@@ -25,7 +25,7 @@ import numpy as np
 import numpy.typing as npt
 import pyoctomap
 
-from knic.errors import InferenceError
+from core.errors import InferenceError
 from knic.units import Keys, Points
 
 #: Entity octomap resolution, metres.

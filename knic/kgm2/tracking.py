@@ -30,7 +30,7 @@ from dataclasses import dataclass, field
 import numpy as np
 import numpy.typing as npt
 
-from knic.errors import InferenceError
+from core.errors import InferenceError
 from knic.kgm2.spatial import DEFAULT_RESOLUTION, EntityOctomap
 from knic.units import LLKU, Keys
 

@@ -19,8 +19,8 @@ import logging
 from dataclasses import dataclass
 from typing import Generic, TypeVar
 
+from core.errors import KnowledgeBaseError
 from knic.bus import Bus, Inbox
-from knic.errors import KnowledgeBaseError
 from knic.scheduler import Component
 from knowledge_base import BeliefStatus, Fact, KnowledgeBase
 

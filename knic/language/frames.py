@@ -15,7 +15,7 @@ from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any
 
-from knic.errors import LanguageError
+from core.errors import LanguageError
 from knic.language.grammar import PRONOUNS
 from knic.language.parser import RawFrame
 from knic.language.vocabulary import Term, Vocabulary, level_percent

@@ -18,7 +18,7 @@ OPERATING dimmer or blinds N percent   ``(device_level d lN)``
 
 Every goal is checked against the domain's predicate signatures and the world's instances (predicate known,
 arity, each argument an instance or constant of the parameter's type), and the goals of one utterance must not
-contradict each other. Any failure raises :class:`~knic.errors.LanguageError` and no goal is produced.
+contradict each other. Any failure raises :class:`~core.errors.LanguageError` and no goal is produced.
 """
 
 from __future__ import annotations
@@ -26,7 +26,7 @@ from __future__ import annotations
 from collections.abc import Iterable, Sequence
 from typing import Any, Protocol
 
-from knic.errors import KnicError, LanguageError
+from core.errors import KnicError, LanguageError
 from knic.language.frames import SPEAKER, CommandFrame
 from knic.language.vocabulary import Vocabulary
 from knowledge_base import Fact

@@ -24,7 +24,7 @@ from typing import BinaryIO, cast
 import numpy as np
 import numpy.typing as npt
 
-from knic.errors import AudioError
+from core.errors import AudioError
 from knic.language.speech import MODEL_RATE, load_audio
 
 #: The command that records the default microphone as raw 16 kHz mono 16-bit PCM.

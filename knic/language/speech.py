@@ -4,7 +4,7 @@ Audio: WAV files only (RIFF/WAVE, integer PCM of 8, 16, 24 or 32 bits or IEEE fl
 rate, any channel count). Audio is mixed down to mono and resampled in-process to the acoustic model's 16 kHz
 (windowed-sinc low-pass, then linear interpolation), then padded with silence (0.2 s before, 0.5 s after: the
 grammar search needs trailing silence to finish the last word). Anything else raises
-:class:`~knic.errors.AudioError` before the decoder is touched.
+:class:`~core.errors.AudioError` before the decoder is touched.
 
 Recognition: pocketsphinx 5 with the US English acoustic model and dictionary from the wheel, by default
 MAP-adapted to espeak-ng speech (:mod:`knic.language.acoustic`: the simulated apartment's people speak with
@@ -43,7 +43,7 @@ from pathlib import Path
 import numpy as np
 import numpy.typing as npt
 
-from knic.errors import AudioError, LanguageError
+from core.errors import AudioError, LanguageError
 from knic.language.acoustic import DEFAULT_ACOUSTIC_MODEL, acoustic_model_options
 from knic.language.fsg import answer_graph, compile_word_graph
 from knic.language.grammar import Grammar, grammar_words, to_jsgf

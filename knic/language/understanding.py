@@ -12,7 +12,7 @@ from dataclasses import dataclass, field
 from functools import lru_cache
 from typing import TYPE_CHECKING, Any
 
-from knic.errors import LanguageError
+from core.errors import LanguageError
 from knic.language.frames import CommandFrame, build_frames
 from knic.language.goals import frames_to_goals
 from knic.language.grammar import Grammar, command_grammar, grammar_words

@@ -19,7 +19,7 @@ from typing import Any, Protocol
 
 import yaml
 
-from knic.errors import LanguageError
+from core.errors import LanguageError
 
 #: Number words for 0..100, enough for percent levels.
 _UNITS = [

@@ -5,7 +5,7 @@ from __future__ import annotations
 import pytest
 
 from actions.base import Action, ActionRegistry, ActionStatus, Outcome
-from knic.errors import ActionError
+from core.errors import ActionError
 
 
 class Wave(Action):

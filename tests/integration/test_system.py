@@ -6,7 +6,7 @@ from pathlib import Path
 
 import pytest
 
-from knic.errors import KnowledgeBaseError
+from core.errors import KnowledgeBaseError
 from knic.system import SurfaceAwarePlanner, parse_goal
 from knowledge_base import KnowledgeBase
 from planner.model import PlanningTask

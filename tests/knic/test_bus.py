@@ -4,8 +4,8 @@ from __future__ import annotations
 
 import pytest
 
+from core.errors import InferenceError
 from knic.bus import Bus, Message, topic_level
-from knic.errors import InferenceError
 
 
 def test_prefix_subscription_receives_the_subtree_only() -> None:

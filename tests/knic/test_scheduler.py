@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from knic.errors import InferenceError
+from core.errors import InferenceError
 from knic.scheduler import Component, Scheduler, SchedulerEvent
 
 

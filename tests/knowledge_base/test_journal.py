@@ -10,7 +10,7 @@ from pathlib import Path
 
 import pytest
 
-from knic.errors import JournalError, KnowledgeBaseError
+from core.errors import JournalError, KnowledgeBaseError
 from knowledge_base import Fact, KnowledgeBase, State
 from knowledge_base import journal as journal_module
 from knowledge_base.model import apply_change

@@ -6,7 +6,7 @@ from collections.abc import Callable
 
 import pytest
 
-from knic.errors import KnowledgeBaseError
+from core.errors import KnowledgeBaseError
 from knowledge_base import BeliefStatus, Change, Fact, KnowledgeBase
 from knowledge_base.domain import DomainModel
 from knowledge_base.model import ChangeKind

@@ -6,7 +6,7 @@ from pathlib import Path
 
 import pytest
 
-from knic.errors import PDDLError, PDDLParseError, PDDLValidationError
+from core.errors import PDDLError, PDDLParseError, PDDLValidationError
 from knowledge_base import Fact, KnowledgeBase
 from knowledge_base.domain import DomainModel
 from knowledge_base.export import state_from_up, state_to_up

@@ -16,7 +16,7 @@ from typing import Any
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from knic.errors import KnowledgeBaseError
+from core.errors import KnowledgeBaseError
 from knowledge_base import Change, KnowledgeBase, State
 from knowledge_base.domain import DomainModel
 from knowledge_base.model import apply_change

@@ -8,8 +8,8 @@ from pathlib import Path
 import numpy as np
 import pytest
 
+from core.errors import LanguageError
 from knic.cli import main
-from knic.errors import LanguageError
 from knic.language.acoustic import MODEL_DIR, acoustic_model_options, wheel_model_dir
 from knic.language.speech import Recognizer
 from knic.language.understanding import default_grammar

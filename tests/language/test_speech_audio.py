@@ -9,7 +9,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from knic.errors import AudioError
+from core.errors import AudioError
 from knic.language.speech import MODEL_RATE, load_audio, pad, read_wav, resample
 
 from .conftest import SPEECH_FIXTURES

@@ -66,15 +66,15 @@ def test_decoder_options_override_the_defaults_for_one_recogniser(
 
 
 def test_an_option_the_decoder_does_not_know_is_refused(vocabulary: Vocabulary) -> None:
-    from knic.errors import LanguageError
+    from core.errors import LanguageError
 
     with pytest.raises(LanguageError, match="no_such_option"):
         Recognizer(default_grammar(), vocabulary, decoder_options={"no_such_option": 1})
 
 
 def test_bench_options_are_typed_from_their_text() -> None:
+    from core.errors import KnicError
     from knic.bench.speech import parse_options
-    from knic.errors import KnicError
 
     assert parse_options(["beam=1e-60", "topn=2", "bestpath=false", "cmn=batch"]) == {
         "beam": 1e-60,

@@ -6,7 +6,7 @@ from typing import Any
 
 import pytest
 
-from knic.errors import LanguageError
+from core.errors import LanguageError
 from knic.language import add_goals, understand
 from knic.language.frames import CommandFrame
 from knic.language.goals import validate_goal

@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from knic.errors import PlanningError
+from core.errors import PlanningError
 from planner.engines import TaskPlanner, choose_engine
 from planner.grounding import GroundingCache, ground_task
 from planner.model import PlanningTask

@@ -5,7 +5,7 @@ from __future__ import annotations
 import pytest
 
 from actions.base import Outcome
-from knic.errors import KnicError
+from core.errors import KnicError
 from planner.recovery import Recovery, RecoveryPolicy, RecoveryRule
 
 

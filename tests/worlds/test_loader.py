@@ -8,7 +8,7 @@ from typing import Any
 
 import pytest
 
-from knic.errors import WorldError
+from core.errors import WorldError
 from worlds.api import load_world
 from worlds.loader import world_from_dict
 from worlds.model import World

@@ -8,7 +8,7 @@ from pathlib import Path
 
 import pytest
 
-from knic.errors import WorldError
+from core.errors import WorldError
 from worlds.api import NavState
 from worlds.model import World
 from worlds.scenario import SCENARIO_DIR, load_scenario, scenario_from_dict

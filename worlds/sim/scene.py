@@ -17,7 +17,7 @@ import numpy as np
 import numpy.typing as npt
 import pybullet as pb
 
-from knic.errors import WorldError
+from core.errors import WorldError
 from worlds.api import CameraIntrinsics, Pose3D
 from worlds.geometry import Point
 from worlds.model import World

@@ -15,7 +15,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
-from knic.errors import LanguageError
+from core.errors import LanguageError
 
 #: The espeak-ng adaptation (``means``, ``variances``, ``sendump``, ``manifest.json``) built by :mod:`.build`.
 MODEL_DIR = Path(__file__).resolve().parent / "espeak"

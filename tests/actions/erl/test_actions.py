@@ -7,7 +7,7 @@ import pytest
 from actions.base import Action, ActionStatus
 from actions.erl import build_erl_registry
 from actions.erl.context import ErlContext, PerceivedEntities, Sighting
-from knic.errors import ActionError
+from core.errors import ActionError
 from knowledge_base import BeliefStatus, KnowledgeBase
 from tests.actions.erl.doubles import DOMAIN, FakeRobot, paper_kb
 

@@ -6,8 +6,8 @@ from pathlib import Path
 
 import pytest
 
+from core.errors import InferenceError
 from knic.bus import Bus, Message
-from knic.errors import InferenceError
 from knic.kgm1.camera import Scan
 from knic.kgm1.locations import LocationModel
 from knic.kgm1.sources import FrameView

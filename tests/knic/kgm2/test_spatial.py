@@ -6,7 +6,7 @@ import numpy as np
 import pyoctomap
 import pytest
 
-from knic.errors import InferenceError
+from core.errors import InferenceError
 from knic.kgm1.locations import LocationModel
 from knic.kgm2.spatial import (
     DEFAULT_RESOLUTION,
