@@ -71,10 +71,12 @@ class SchedulerEvent:
 
 @dataclass
 class ComponentStats:
-    """Per-component counters: steps run, total and worst wall time (seconds), overruns reported."""
+    """Per-component counters: steps run, total and worst wall time and total process CPU time (seconds),
+    overruns reported."""
 
     steps: int = 0
     wall_s: float = 0.0
+    cpu_s: float = 0.0
     max_wall_s: float = 0.0
     slow_steps: int = 0
     behind: int = 0
@@ -180,9 +182,10 @@ class Scheduler:
                     entry.next_due = now + entry.period
                 else:
                     entry.next_due += entry.period
-                start = self._wall()
+                start, cpu_start = self._wall(), time.process_time()
                 entry.component.step(now)
                 wall = self._wall() - start
+                entry.stats.cpu_s += time.process_time() - cpu_start
                 stepped.append(entry.component.name)
                 self._account(entry, now, wall)
         finally:

@@ -18,19 +18,19 @@ speak              :mod:`actions.erl.devices`             say the arguments (not
 
 Usage::
 
-    registry = build_erl_registry(sim, kb, bus=pipeline.bus)
+    registry = build_erl_registry(sim, kb, perception=BusPerception(kb, pipeline.bus))
     dispatcher = Dispatcher(kb, planner, registry)
 """
 
 from __future__ import annotations
 
 from actions.base import Action, ActionFactory, ActionRegistry
-from actions.erl.context import ErlContext, PerceivedEntities, RobotInterface
+from actions.erl.context import ErlContext, RobotInterface
 from actions.erl.devices import DeviceAction, ReportAction, SpeakAction
 from actions.erl.manipulation import GiveAction, PickAction, PlaceAction
 from actions.erl.motion import GuideAction, MeetAction, MoveAction
+from actions.erl.perception import AnchorPerception, Perception
 from actions.erl.search import SearchAction
-from knic.bus import Bus
 from knowledge_base import KnowledgeBase
 
 #: number of ground arguments of every registered action (checked at construction)
@@ -54,7 +54,7 @@ def build_erl_registry(
     sim: RobotInterface,
     kb: KnowledgeBase,
     *,
-    bus: Bus | None = None,
+    perception: Perception | None = None,
     robot: str = "r2d2",
     confirm_devices: bool | None = None,
     context: ErlContext | None = None,
@@ -64,18 +64,19 @@ def build_erl_registry(
     Args:
         sim: the robot's commands and sensors (the simulator satisfies :class:`RobotInterface`).
         kb: the knowledge base (anchors, facts) the actions read.
-        bus: the KnIC bus whose ``cognition`` CKUs give perceived poses; None: knowledge-base anchors only.
+        perception: where perception last saw items and people (the inference side provides it); None:
+            knowledge-base anchors only.
         robot: the robot's PDDL symbol.
         confirm_devices: device actions wait for the device reading in the knowledge base; default: only when
-            a bus (hence a perception pipeline) is given.
-        context: a prepared context (overrides ``sim``, ``kb``, ``bus`` and ``robot``).
+            ``perception`` is given (hence a perception pipeline runs).
+        context: a prepared context (overrides ``sim``, ``kb``, ``perception`` and ``robot``).
 
     Returns:
         A registry with every action of ``worlds/erl_home/domain.pddl`` plus ``speak``. Factories raise
         ``ValueError`` (an :class:`~core.errors.ActionError` through the registry) for a wrong argument count.
     """
-    ctx = context or ErlContext(sim, kb, PerceivedEntities(kb, bus), robot_name=robot)
-    confirm = (bus is not None) if confirm_devices is None else confirm_devices
+    ctx = context or ErlContext(sim, kb, perception or AnchorPerception(kb), robot_name=robot)
+    confirm = (perception is not None) if confirm_devices is None else confirm_devices
 
     def checked(name: str, args: tuple[str, ...]) -> tuple[str, ...]:
         if len(args) != ARITY[name]:
@@ -111,4 +112,4 @@ def _device_factory(name: str, ctx: ErlContext, confirm: bool) -> ActionFactory:
     return factory
 
 
-__all__ = ["ErlContext", "PerceivedEntities", "RobotInterface", "build_erl_registry"]
+__all__ = ["AnchorPerception", "ErlContext", "Perception", "RobotInterface", "build_erl_registry"]

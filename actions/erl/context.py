@@ -2,9 +2,9 @@
 
 The actions of :mod:`actions.erl` decide *where to go* only from what the robot knows: the knowledge base's
 anchors (room regions and waypoints, furniture poses, written by :func:`knic.seed.seed_kb_from_world`; item
-positions anchored by the object KP') and the poses perception reports on the bus (``cognition.object.*`` and
-``cognition.person.*`` CKUs, see :class:`PerceivedEntities`). They never read the simulator's ground truth:
-the :class:`RobotInterface` they command deliberately has no ground-truth method.
+positions anchored by the object KP') and the poses perception reports through the perception seam
+(:class:`~actions.erl.perception.Perception`, fed by the inference side). They never read the simulator's
+ground truth: the :class:`RobotInterface` they command deliberately has no ground-truth method.
 
 Frames and time: every position is in the world frame (metres, ``z`` up, yaw in radians counter-clockwise
 from ``+x``); every time is simulated seconds (``RobotInterface.time``).
@@ -17,8 +17,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import Any, Protocol
 
-from knic.bus import Bus, Message, Subscription
-from knic.units import CKU
+from actions.erl.perception import Perception
 from knowledge_base import KnowledgeBase
 from worlds.api import ActionResult, NavStatus, Pose2D
 
@@ -96,93 +95,6 @@ class RobotInterface(Protocol):
     def stop_escort(self) -> None:
         """The escorted person stops following."""
         ...
-
-
-@dataclass
-class Sighting:
-    """The latest perceived state of one entity.
-
-    Attributes:
-        position: world-frame centroid in metres.
-        stamp: simulated time of the observation.
-        lost: True when KGM-2 dropped the entity's track (repeatedly missed where the camera could see it).
-    """
-
-    position: tuple[float, float, float]
-    stamp: float
-    lost: bool = False
-
-
-class PerceivedEntities:
-    """Latest perceived pose of every tracked item and person, from the cognitive layer's CKUs on the bus.
-
-    Lifecycle: construct with the run's bus (it subscribes at once); :meth:`close` unsubscribes. Without a
-    bus it only answers from the knowledge base's anchors. Updates happen synchronously when KGM-2 publishes,
-    inside the scheduler's single thread.
-
-    Args:
-        kb: the knowledge base, whose item anchors are the fallback when nothing was seen this run.
-        bus: the run's message bus, or None.
-    """
-
-    def __init__(self, kb: KnowledgeBase, bus: Bus | None = None) -> None:
-        self.kb = kb
-        self.sightings: dict[str, Sighting] = {}
-        self._subs: list[Subscription] = []
-        if bus is not None:
-            self._subs = [bus.subscribe(p, self._on_cku) for p in ("cognition.object", "cognition.person")]
-
-    def _on_cku(self, message: Message) -> None:
-        cku = message.payload
-        if not isinstance(cku, CKU):
-            return
-        x, y, z = (float(v) for v in cku.position)
-        self.sightings[cku.symbol] = Sighting((x, y, z), float(cku.stamp), bool(cku.attributes.get("lost")))
-
-    def sighting(self, symbol: str) -> Sighting | None:
-        """The latest sighting of ``symbol`` this run (lost or not), or None."""
-        return self.sightings.get(symbol)
-
-    def position(self, symbol: str) -> tuple[float, float, float] | None:
-        """Where ``symbol`` was last perceived: the latest live sighting, else its knowledge-base anchor."""
-        seen = self.sightings.get(symbol)
-        if seen is not None and not seen.lost:
-            return seen.position
-        return anchor_position(self.kb, symbol)
-
-    def seen_since(self, symbol: str, since: float) -> Sighting | None:
-        """The sighting of ``symbol`` if it was perceived (not lost) at or after simulated time ``since``."""
-        seen = self.sightings.get(symbol)
-        if seen is not None and not seen.lost and seen.stamp >= since - 1e-9:
-            return seen
-        return None
-
-    def lost_since(self, symbol: str, since: float) -> bool:
-        """True when perception dropped ``symbol``'s track at or after ``since``."""
-        seen = self.sightings.get(symbol)
-        return seen is not None and seen.lost and seen.stamp >= since - 1e-9
-
-    def close(self) -> None:
-        """Stop listening to the bus (idempotent)."""
-        for sub in self._subs:
-            sub.cancel()
-        self._subs = []
-
-
-def anchor_position(kb: KnowledgeBase, symbol: str) -> tuple[float, float, float] | None:
-    """The world-frame position in ``symbol``'s anchor (``pose.position`` or ``pose.x/y``), or None."""
-    geometry = kb.anchor(symbol)
-    if not geometry:
-        return None
-    pose = geometry.get("pose")
-    if not isinstance(pose, dict):
-        return None
-    if "position" in pose:
-        px, py, *rest = (float(v) for v in pose["position"])
-        return (px, py, rest[0] if rest else 0.0)
-    if "x" in pose and "y" in pose:
-        return (float(pose["x"]), float(pose["y"]), 0.0)
-    return None
 
 
 @dataclass(frozen=True)
@@ -305,7 +217,7 @@ class ErlContext:
     Attributes:
         robot: the robot's commands and sensors (the simulator in the closed loop).
         kb: the knowledge base (read only for the actions: the dispatcher writes the PDDL effects).
-        perceived: perceived entity poses (a KB-anchors-only instance when no bus is given).
+        perceived: where perception last saw items and people (:class:`~actions.erl.perception.Perception`).
         robot_name: the robot's PDDL symbol.
         dwell_s: seconds the camera rests at each pan angle while searching (>= 2 camera periods).
         search_pans: camera pan angles (radians) swept at each search viewpoint.
@@ -315,7 +227,7 @@ class ErlContext:
 
     robot: RobotInterface
     kb: KnowledgeBase
-    perceived: PerceivedEntities
+    perceived: Perception
     robot_name: str = "r2d2"
     dwell_s: float = 0.7
     search_pans: Sequence[float] = (-1.3, -0.65, 0.0, 0.65, 1.3)

@@ -1,7 +1,7 @@
 """Actions that move the robot: ``move`` to a room, ``meet`` a person, ``guide`` a person to a room.
 
 Targets come from the knowledge base's room anchors (waypoints, regions) and from perceived person poses
-(:class:`~actions.erl.context.PerceivedEntities`), never from the simulator's ground truth. Failure modes:
+(:class:`~actions.erl.perception.Perception`), never from the simulator's ground truth. Failure modes:
 
 * ``move``: the room has no anchor (activation failure); the base reports the path blocked or no path
   (execution failure); the localisation ends outside the target room (execution failure).

@@ -37,11 +37,14 @@ import logging
 import math
 import statistics
 import time
-from collections.abc import Callable
 from dataclasses import dataclass, field
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from knic.scheduler import Component
+from knic.system.loop import RunLoop
+
+if TYPE_CHECKING:
+    from knic.system.assembly import Assembly
 
 #: predicates compared with the ground truth
 COMPARED = frozenset(
@@ -183,21 +186,6 @@ def bench_scenario(duration: float) -> dict[str, Any]:
     return {"name": "grounding_bench", "description": "people walking, objects moved", "events": events}
 
 
-class _Timed(Component):
-    """Runs a component and adds the process CPU time of its steps to a shared counter."""
-
-    def __init__(self, inner: Component, total: list[float]) -> None:
-        self.inner = inner
-        self.name = inner.name
-        self.frequency = inner.frequency
-        self.total = total
-
-    def step(self, now: float) -> None:
-        start = time.process_time()
-        self.inner.step(now)
-        self.total[0] += time.process_time() - start
-
-
 @dataclass
 class _Change:
     fact: Atom
@@ -236,35 +224,31 @@ class _Recorder:
 
 def run_episode(role: str, *, duration: float, seed: int) -> dict[str, Any]:
     """One patrolling episode under ``role``; returns precision, recall, staleness and CPU figures."""
-    from knic.system import KnicSystem, RunConfig
+    from knic.system.assembly import assemble
+    from knic.system.config import RunConfig
     from worlds.api import load_world
     from worlds.scenario import scenario_from_dict
 
     world = load_world("erl_home")
     scenario = scenario_from_dict(bench_scenario(duration), world)
-    system = KnicSystem(RunConfig(world=world.name, scenario=scenario, seed=seed, role=role))
+    parts = assemble(RunConfig(world=world.name, scenario=scenario, seed=seed, role=role, dispatch=False))
     try:
-        return _episode(system, duration)
+        return _episode(parts, duration)
     finally:
-        system.close()
+        parts.close()
 
 
-def _episode(system: Any, duration: float) -> dict[str, Any]:
-    sim, kb, scheduler = system.sim, system.kb, system.scheduler
-    world = system.world
+def _episode(parts: Assembly, duration: float) -> dict[str, Any]:
+    """Patrol the assembled robot (no dispatcher) for ``duration`` simulated seconds under the probes."""
+    sim, kb, world = parts.sim, parts.kb, parts.world
     entities = frozenset(world.items) | frozenset(world.people)
     rec = _Recorder(entities)
-    cpu = [0.0]
-    camera_hz = system.pipeline.component("kp.camera_objects").frequency
-    for component in list(scheduler.components):
-        if component.name not in ("sim", "dispatcher"):
-            scheduler.remove(component.name)
-            scheduler.add(_Timed(component, cpu))
-    scheduler.remove("dispatcher")
-    scheduler.add(_Patrol(system))
-    scheduler.add(_Probe("bench.visibility", camera_hz, lambda now: _see(sim, rec)))
-    scheduler.add(_Probe("bench.changes", 5.0, lambda now: _changes(sim, kb, rec, now)))
-    scheduler.add(_Probe("bench.compare", 1.0, lambda now: _compare(sim, kb, rec, now)))
+    camera_hz = parts.pipeline.component("kp.camera_objects").frequency
+    loop: RunLoop[None] = RunLoop(parts.scheduler)
+    loop.add_probe(_Patrol.name, _Patrol.frequency, _Patrol(parts).step)
+    loop.add_probe("bench.visibility", camera_hz, lambda now: _see(sim, rec))
+    loop.add_probe("bench.changes", 5.0, lambda now: _changes(sim, kb, rec, now))
+    loop.add_probe("bench.compare", 1.0, lambda now: _compare(sim, kb, rec, now))
 
     def reflect(change: Any) -> None:
         if change.kind.value not in ("add_fact", "remove_fact"):
@@ -277,12 +261,10 @@ def _episode(system: Any, duration: float) -> dict[str, Any]:
 
     unsubscribe = kb.subscribe(reflect)
     wall0 = time.perf_counter()
-    while True:
-        due = scheduler.next_due()
-        if due is None or due > duration:
-            break
-        scheduler.tick(due)
+    loop.run(duration)
     unsubscribe()
+    stats = parts.scheduler.stats()
+    cpu = sum(stats[c.name].cpu_s for c in parts.pipeline)
     changes = rec.done + rec.pending
     counted = [c for c in changes if c.reflected_at is not None or rec.perceivable(c.fact, c.at)]
     reflected = [c for c in counted if c.reflected_at is not None]
@@ -300,8 +282,8 @@ def _episode(system: Any, duration: float) -> dict[str, Any]:
         "changes_reflected": len(reflected),
         "changes_unreflected": len(counted) - len(reflected),
         "samples": len(rec.precision),
-        "cpu_s": round(cpu[0] - system.pipeline.camera.render_wall_s, 2),
-        "render_s": round(system.pipeline.camera.render_wall_s, 2),
+        "cpu_s": round(cpu - parts.pipeline.camera.render_wall_s, 2),
+        "render_s": round(parts.pipeline.camera.render_wall_s, 2),
         "wall_s": time.perf_counter() - wall0,
         "by_predicate": {
             pred: {
@@ -315,18 +297,6 @@ def _episode(system: Any, duration: float) -> dict[str, Any]:
     }
 
 
-class _Probe(Component):
-    """A measuring component: calls ``fn(now)`` at ``frequency`` (registered after the pipeline)."""
-
-    def __init__(self, name: str, frequency: float, fn: Callable[[float], None]) -> None:
-        self.name = name
-        self.frequency = frequency
-        self.fn = fn
-
-    def step(self, now: float) -> None:
-        self.fn(now)
-
-
 class _Patrol(Component):
     """Drives the robot from room waypoint to room waypoint (knowledge-base anchors), sweeping the camera
     for ``sweep_s`` on arrival."""
@@ -334,10 +304,10 @@ class _Patrol(Component):
     name = "bench.patrol"
     frequency = 5.0
 
-    def __init__(self, system: Any, sweep_s: float = 5.0) -> None:
+    def __init__(self, parts: Assembly, sweep_s: float = 5.0) -> None:
         from actions.erl.context import room_map
 
-        self.sim = system.sim
+        self.sim = parts.sim
         tour = (
             "living_room",
             "dining_room",
@@ -348,7 +318,7 @@ class _Patrol(Component):
             "hallway",
             "entrance_hall",
         )
-        maps = [room_map(system.kb, r) for r in tour]
+        maps = [room_map(parts.kb, r) for r in tour]
         self.waypoints = [m.waypoints[0] for m in maps if m is not None]
         self.index = 0
         self.sweep_s = sweep_s

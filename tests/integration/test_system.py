@@ -7,7 +7,8 @@ from pathlib import Path
 import pytest
 
 from core.errors import KnowledgeBaseError
-from knic.system import SurfaceAwarePlanner, parse_goal
+from knic.system import parse_goal
+from knic.system.assembly import SurfaceAwarePlanner
 from knowledge_base import KnowledgeBase
 from planner.model import PlanningTask
 from planner.plan import PlanResult, PlanStatus

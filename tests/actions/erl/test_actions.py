@@ -6,10 +6,17 @@ import pytest
 
 from actions.base import Action, ActionStatus
 from actions.erl import build_erl_registry
-from actions.erl.context import ErlContext, PerceivedEntities, Sighting
+from actions.erl.context import ErlContext
+from actions.erl.perception import AnchorPerception, Sighting, SightingBook
 from core.errors import ActionError
 from knowledge_base import BeliefStatus, KnowledgeBase
 from tests.actions.erl.doubles import DOMAIN, FakeRobot, paper_kb
+
+
+def record(ctx: ErlContext, symbol: str, sighting: Sighting) -> None:
+    """Make the test's perception report ``sighting`` of ``symbol``."""
+    assert isinstance(ctx.perceived, SightingBook)
+    ctx.perceived.record(symbol, sighting)
 
 
 def drive(action: Action, robot: FakeRobot, max_ticks: int = 400) -> tuple[bool, ActionStatus | None]:
@@ -35,7 +42,7 @@ def setup() -> Setup:
     robot = FakeRobot()
     kb = paper_kb()
     kb.set_clock(lambda: robot.time)
-    ctx = ErlContext(robot, kb, PerceivedEntities(kb), dwell_s=0.2, look_timeout_s=0.5)
+    ctx = ErlContext(robot, kb, AnchorPerception(kb), dwell_s=0.2, look_timeout_s=0.5)
     return robot, kb, ctx
 
 
@@ -73,7 +80,7 @@ def test_move_without_room_anchor_is_refused() -> None:
     robot = FakeRobot()
     kb = KnowledgeBase.from_pddl(DOMAIN, clock=lambda: 0.0)
     kb.add_instance("room", "kitchen")
-    ctx = ErlContext(robot, kb, PerceivedEntities(kb))
+    ctx = ErlContext(robot, kb, AnchorPerception(kb))
     action = create(ctx, "(move r2d2 kitchen kitchen)")
     assert not action.activation()
     assert "no anchor" in action.failure_reason
@@ -113,7 +120,7 @@ def _perceive_glasses(kb: KnowledgeBase, ctx: ErlContext, at: tuple[float, float
         kb.add_fact("object_at", "glasses", "entrance", status=BeliefStatus.OBSERVED)
         kb.add_fact("object_on", "glasses", "entrance_shelf", status=BeliefStatus.OBSERVED)
         kb.add_fact("found", "glasses", status=BeliefStatus.OBSERVED)
-    ctx.perceived.sightings["glasses"] = Sighting(at, 0.0)
+    record(ctx, "glasses", Sighting(at, 0.0))
 
 
 def test_pick_approaches_the_perceived_item_and_grasps_it(
@@ -181,7 +188,7 @@ def test_give_hands_over_to_the_perceived_person(setup: Setup) -> None:
     robot, _kb, ctx = setup
     robot.held = "glasses"
     robot.people["annie"] = (1.0, 6.6)
-    ctx.perceived.sightings["annie"] = Sighting((1.0, 6.6, 0.9), 0.0)
+    record(ctx, "annie", Sighting((1.0, 6.6, 0.9), 0.0))
     started, status = drive(create(ctx, "(give r2d2 glasses annie bedroom)"), robot)
     assert started and status is ActionStatus.SUCCEEDED
     assert robot.held is None
@@ -198,7 +205,7 @@ def test_guide_walks_with_the_person_and_ends_the_escort(
     for i in range(200):
         robot.tick()
         if i == 20:  # the camera sees annie in the kitchen behind the robot
-            ctx.perceived.sightings["annie"] = Sighting((5.0, 5.5, 0.9), robot.time)
+            record(ctx, "annie", Sighting((5.0, 5.5, 0.9), robot.time))
         status = action.step()
         if status is not ActionStatus.RUNNING:
             break
@@ -213,7 +220,7 @@ def test_switch_on_waits_for_the_device_reading(setup: Setup) -> None:
     kb = KnowledgeBase.from_pddl(DOMAIN, clock=lambda: robot.time)
     kb.add_instance("light", "bedroom_left_light")
     kb.add_fact("light_off", "bedroom_left_light")
-    ctx = ErlContext(robot, kb, PerceivedEntities(kb))
+    ctx = ErlContext(robot, kb, AnchorPerception(kb))
     reg = build_erl_registry(robot, kb, context=ctx, confirm_devices=True)
     action = reg.create("switch_on", ("r2d2", "bedroom_left_light"))
     assert action.activation() and robot.lights == {"bedroom_left_light": True}

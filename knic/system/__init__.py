@@ -1,0 +1,191 @@
+"""One run of the whole closed loop: simulated apartment, KnIC pipeline, knowledge base, planner, actions.
+
+The run is three things kept apart:
+
+* :mod:`knic.system.assembly` builds the parts from a :class:`RunConfig` (the robot behind the seam, the
+  knowledge base, the pipeline, the actions, the dispatcher, the scheduler);
+* :mod:`knic.system.loop` runs the scheduler in simulated time until a stop condition fires, with hooks and
+  probes for tests and benchmarks;
+* :mod:`knic.system.verdict` judges: the robot's own "done" from its beliefs (the run stops on it) and the
+  referee's judgement from ground truth (reported, never acted on).
+
+:class:`KnicSystem` ties them for the common case (``knic run``, tests). Everything runs on one thread in
+simulated time, as fast as the machine allows, deterministic under the seed.
+"""
+
+from __future__ import annotations
+
+import time
+from collections.abc import Callable, Sequence
+
+from actions.erl.devices import spoken
+from core.errors import KnicError, KnowledgeBaseError
+from knic.system.assembly import Assembly, assemble
+from knic.system.config import RunConfig, RunResult
+from knic.system.loop import RunLoop
+from knic.system.verdict import BeliefVerdict, Referee, Stop
+from knowledge_base import Fact
+from planner.dispatch import DispatcherState
+from planner.trace import EventKind, TraceEvent
+
+__all__ = ["KnicSystem", "RunConfig", "RunResult", "build_system", "parse_goal"]
+
+
+class KnicSystem:
+    """The assembled closed loop with the robot's stop condition and a referee (see the module docstring).
+
+    Lifecycle: construct (builds everything, nothing runs), :meth:`add_goal` one or more goals, :meth:`run`,
+    :meth:`close` (closes the journal and the simulator). Usable as a context manager. The parts are
+    attributes (``sim``, ``kb``, ``pipeline``, ``perceived``, ``context``, ``registry``, ``trace``,
+    ``dispatcher``, ``scheduler``, ``world``).
+
+    Raises:
+        core.errors.WorldError: unknown world or scenario.
+        core.errors.InferenceError: unknown role.
+        core.errors.JournalError: the journal file cannot be written.
+    """
+
+    def __init__(self, config: RunConfig | None = None) -> None:
+        self.config = cfg = config or RunConfig()
+        self.parts: Assembly = assemble(cfg)
+        parts = self.parts
+        self.world, self.sim, self.kb = parts.world, parts.sim, parts.kb
+        self.pipeline, self.perceived, self.context = parts.pipeline, parts.perception, parts.context
+        self.registry, self.trace, self.scheduler = parts.registry, parts.trace, parts.scheduler
+        if parts.dispatcher is None:
+            raise KnicError("KnicSystem needs the dispatcher (RunConfig.dispatch=True)")
+        self.dispatcher = parts.dispatcher
+        self._retries: dict[str, int] = {}
+        self._dropped_at: dict[str, float] = {}
+        self.beliefs = BeliefVerdict(self.kb, self.dropped_for_good, self._idle, settle_s=cfg.settle_s)
+        self.referee = Referee(self.sim, lambda: [u.text for u in self.sim.spoken()], spoken)
+
+    # ------------------------------------------------------------------ goals
+
+    def add_goal(self, goal: Fact | str, *, source: str = "user") -> Fact:
+        """Add a PDDL goal (``Fact`` or ``"(object_at glasses bedroom)"``) to the knowledge base.
+
+        Raises:
+            KnowledgeBaseError: malformed goal, unknown predicate or symbol, wrong type (nothing added).
+        """
+        fact = goal if isinstance(goal, Fact) else parse_goal(goal)
+        self.kb.add_goal(fact.predicate, *fact.args, source=source)
+        return fact
+
+    # ------------------------------------------------------------------ running
+
+    def run(
+        self, max_sim_time: float | None = None, *, on_check: Callable[[KnicSystem], None] | None = None
+    ) -> RunResult:
+        """Run until the robot believes every goal achieved (and settled) or dropped, or ``max_sim_time``;
+        then the referee judges the goals from ground truth.
+
+        Args:
+            max_sim_time: simulated seconds (default from the config).
+            on_check: called at every stop-condition check (tests and benchmarks sample the state there).
+
+        Raises:
+            KnicError: no goal was given.
+        """
+        limit = self.config.max_sim_time if max_sim_time is None else max_sim_time
+        if not self.kb.goals():
+            raise KnicError("knic run: no goal given (use --goal or --speech)")
+        loop: RunLoop[Stop] = RunLoop(self.scheduler, self.config.check_period_s)
+        if on_check is not None:
+            loop.add_hook(lambda now: on_check(self))
+        loop.add_hook(self._retry_dropped)
+        loop.add_stop(self.beliefs)
+        wall0 = time.perf_counter()
+        end = loop.run(limit)
+        stop = end.stop
+        goals = self.kb.goals()
+        unmet = self.referee.unmet(goals)
+        if stop is None:
+            self.dispatcher.cancel("run ended")
+            reason = f"goals not reached within {limit:g} s of simulated time"
+        elif not stop.done:
+            self.dispatcher.cancel("run ended")
+            reason = stop.reason
+        elif unmet:
+            reason = f"{stop.reason}, but the referee finds {unmet[0]} not holding"
+        else:
+            reason = "every goal holds in the knowledge base and in the ground truth"
+        counters = self.sim.counters()
+        return RunResult(
+            success=stop is not None and stop.done and not unmet,
+            reason=reason,
+            sim_time=self.sim.time,
+            wall_s=time.perf_counter() - wall0,
+            goals=[str(g) for g in goals],
+            believed_done=stop is not None and stop.done,
+            unmet_in_truth=[str(g) for g in unmet],
+            unconfirmed=[str(f) for f in self.beliefs.unconfirmed()],
+            plans=self.dispatcher.plans,
+            replans=self.dispatcher.replans,
+            counters={"bumps": counters.bumps, "person_hits": counters.person_hits, "drops": counters.drops},
+        )
+
+    def _idle(self) -> bool:
+        return self.dispatcher.state == DispatcherState.IDLE
+
+    def dropped_for_good(self) -> dict[str, str]:
+        """Goals the dispatcher dropped whose retries are exhausted, with why."""
+        report = self.dispatcher.report()
+        return {
+            g: why for g, why in report.dropped.items() if self._retries.get(g, 0) >= self.config.goal_retries
+        }
+
+    def _retry_dropped(self, now: float) -> None:
+        """Hand goals the dispatcher dropped back to it, ``retry_after_s`` after the drop, at most
+        ``goal_retries`` times each (a REPLAN trace event says so)."""
+        if all(self.kb.holds(g) for g in self.kb.goals()):
+            return
+        for atom, why in list(self.dispatcher.dropped.items()):
+            goal = "(" + " ".join(atom) + ")"
+            since = self._dropped_at.setdefault(goal, now)
+            count = self._retries.get(goal, 0)
+            if count >= self.config.goal_retries or now - since < self.config.retry_after_s:
+                continue
+            self._retries[goal] = count + 1
+            del self._dropped_at[goal]
+            self.dispatcher.retry(atom)
+            reason = f"retrying goal {goal} ({count + 1}/{self.config.goal_retries}) dropped for: {why}"
+            self.trace.emit(TraceEvent(EventKind.REPLAN, now, reason=reason, goal=goal))
+
+    # ------------------------------------------------------------------ teardown
+
+    def close(self) -> None:
+        """Stop listening, close the journal and the simulator (idempotent)."""
+        self.parts.close()
+
+    def __enter__(self) -> KnicSystem:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.close()
+
+
+def parse_goal(text: str) -> Fact:
+    """A PDDL atom ``"(object_at glasses bedroom)"`` as a :class:`Fact`.
+
+    Raises:
+        KnowledgeBaseError: the text is not a PDDL atom.
+    """
+    try:
+        return Fact.parse(text)
+    except (ValueError, KnicError) as exc:
+        raise KnowledgeBaseError(
+            f"goal {text!r} is not a PDDL atom like (object_at glasses bedroom): {exc}"
+        ) from None
+
+
+def build_system(goals: Sequence[str] = (), **config: object) -> KnicSystem:
+    """A :class:`KnicSystem` from keyword configuration (``RunConfig`` fields) with the given PDDL goals."""
+    system = KnicSystem(RunConfig(**config))  # type: ignore[arg-type]
+    try:
+        for goal in goals:
+            system.add_goal(goal)
+    except BaseException:
+        system.close()
+        raise
+    return system

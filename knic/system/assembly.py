@@ -1,0 +1,202 @@
+"""Assembly: the closed loop's parts built from a :class:`~knic.system.config.RunConfig`.
+
+:func:`assemble` builds, in order:
+
+1. the world (``load_world``) and its :class:`~worlds.simulation.Simulation` (seeded, optional scenario): the
+   robot behind the seam, and the oracle a referee may read;
+2. the :class:`~knowledge_base.KnowledgeBase` of ``worlds/erl_home/domain.pddl`` (optionally journalled to
+   SQLite) on the simulated clock, seeded with what the robot knows before the run
+   (:func:`knic.seed.seed_kb_from_world`: map, anchors, priors as assumed ``possibly_at`` facts);
+3. the inference pipeline (:func:`knic.pipeline.build_pipeline`: KGM-1, KGM-2 under the role, KGM-3) reading
+   the robot's sensors, and the perception the actions steer by (:class:`knic.kgm3.sightings.BusPerception`);
+4. the ERL actions (:func:`actions.erl.build_erl_registry`) commanding the robot, and the steppable
+   :class:`~planner.dispatch.Dispatcher` with its recovery policy and trace (unless ``dispatch`` is off);
+5. one :class:`~knic.scheduler.Scheduler` stepping, in this order at each instant: the simulator
+   (:class:`SimulationComponent`), the pipeline's components, the dispatcher (:class:`DispatcherComponent`).
+
+Nothing runs here; :class:`~knic.system.loop.RunLoop` runs a scheduler.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from dataclasses import dataclass, replace
+from pathlib import Path
+from typing import TYPE_CHECKING, Protocol
+
+from actions.base import ActionRegistry
+from actions.erl import ErlContext, build_erl_registry
+from knic.kgm3.sightings import BusPerception
+from knic.pipeline import Pipeline, build_pipeline
+from knic.scheduler import Component, Scheduler
+from knic.seed import seed_kb_from_world
+from knic.system.config import ACTION_TIME_LIMITS, DOMAIN, RunConfig
+from knowledge_base import KnowledgeBase
+from planner.dispatch import Dispatcher
+from planner.engines import Planner, TaskPlanner, silence_up
+from planner.model import PlanningTask
+from planner.plan import PlanResult
+from planner.recovery import RecoveryPolicy
+from planner.trace import Trace
+
+if TYPE_CHECKING:
+    from worlds.model import World
+    from worlds.simulation import Simulation
+
+
+class SurfaceAwarePlanner:
+    """The planner, told which furniture can carry items (map knowledge the PDDL domain does not express).
+
+    Before each call the ``furniture_in`` facts of furniture without a surface are left out of the planning
+    task (the knowledge base keeps them); plans are otherwise the wrapped planner's.
+
+    Args:
+        planner: the wrapped planner (:class:`planner.engines.TaskPlanner`).
+        no_surface: furniture symbols that items cannot be put on.
+    """
+
+    def __init__(self, planner: Planner, no_surface: frozenset[str]) -> None:
+        self.planner = planner
+        self.no_surface = no_surface
+
+    def solve(self, task: PlanningTask, *, timeout: float | None = None) -> PlanResult:
+        """Plan for ``task`` without the surfaceless furniture as places."""
+        facts = frozenset(a for a in task.facts if not (a[0] == "furniture_in" and a[1] in self.no_surface))
+        return self.planner.solve(replace(task, facts=facts), timeout=timeout)
+
+
+class Steppable(Protocol):
+    """A simulator the loop advances: its clock and one step to a later time."""
+
+    @property
+    def time(self) -> float:
+        """Simulated seconds since the start of the episode."""
+        ...
+
+    def step(self, dt: float = 0.1) -> None:
+        """Advance simulated time by ``dt`` seconds."""
+        ...
+
+
+class SimulationComponent(Component):
+    """Advances the simulator to the scheduler's time; registered first, so perception reads the present.
+
+    Args:
+        sim: the simulation.
+        frequency: Hz of simulated time (the simulator integrates in its own control periods in between).
+    """
+
+    name = "sim"
+
+    def __init__(self, sim: Steppable, frequency: float = 20.0) -> None:
+        self.sim = sim
+        self.frequency = frequency
+
+    def step(self, now: float) -> None:
+        """Step the simulator from its time to ``now`` (simulated seconds); nothing when already there."""
+        dt = now - self.sim.time
+        if dt > 1e-9:
+            self.sim.step(dt)
+
+
+class DispatcherComponent(Component):
+    """Steps the plan dispatcher once per period (after perception at the same instant).
+
+    An idle dispatcher's step costs nothing until the goals change or a goal stops holding (see
+    :mod:`planner.dispatch`), so it is stepped unconditionally.
+    """
+
+    name = "dispatcher"
+
+    def __init__(self, dispatcher: Dispatcher, frequency: float = 10.0) -> None:
+        self.dispatcher = dispatcher
+        self.frequency = frequency
+
+    def step(self, now: float) -> None:
+        """One bounded unit of dispatch work (plan, start, advance or finish an action)."""
+        self.dispatcher.step()
+
+
+@dataclass
+class Assembly:
+    """The built parts of one run (see the module docstring); :meth:`close` releases them."""
+
+    config: RunConfig
+    world: World
+    sim: Simulation
+    kb: KnowledgeBase
+    pipeline: Pipeline
+    perception: BusPerception
+    context: ErlContext
+    registry: ActionRegistry
+    trace: Trace
+    dispatcher: Dispatcher | None
+    scheduler: Scheduler
+
+    def close(self) -> None:
+        """Stop listening, close the journal and the simulator (idempotent)."""
+        if self.dispatcher is not None:
+            self.dispatcher.close()
+        self.perception.close()
+        self.kb.close()
+        self.sim.close()
+
+
+def assemble(config: RunConfig) -> Assembly:
+    """Build every part of a run from ``config``; nothing runs yet.
+
+    Raises:
+        core.errors.WorldError: unknown world or scenario.
+        core.errors.InferenceError: unknown role.
+        core.errors.JournalError: the journal file cannot be written.
+    """
+    from worlds.api import load_world
+    from worlds.simulation import Simulation
+
+    silence_up()
+    world = load_world(config.world)
+    sim = Simulation(world, seed=config.seed, scenario=config.scenario, gui=config.gui)
+    try:
+        kb = open_kb(config.journal, lambda: sim.time)
+        seed_kb_from_world(kb, world)
+        pipeline = build_pipeline(kb, sim, world, config.role)
+        perception = BusPerception(kb, pipeline.bus)
+        context = ErlContext(sim, kb, perception, robot_name=world.robot.name)
+        registry = build_erl_registry(sim, kb, context=context, confirm_devices=True)
+        trace = Trace(config.trace_stream)
+        dispatcher = None
+        if config.dispatch:
+            dispatcher = Dispatcher(
+                kb,
+                SurfaceAwarePlanner(
+                    TaskPlanner(kb.domain.up_domain),
+                    frozenset(f.name for f in world.furniture.values() if not f.surface),
+                ),
+                registry,
+                policy=RecoveryPolicy(max_replans_per_goal=config.max_replans_per_goal),
+                trace=trace,
+                time_limits=ACTION_TIME_LIMITS,
+            )
+        scheduler = Scheduler(real_time_factor=config.real_time_factor)
+        scheduler.add(SimulationComponent(sim))
+        for component in pipeline:
+            scheduler.add(component)
+        if dispatcher is not None:
+            scheduler.add(DispatcherComponent(dispatcher))
+    except BaseException:
+        sim.close()
+        raise
+    return Assembly(
+        config, world, sim, kb, pipeline, perception, context, registry, trace, dispatcher, scheduler
+    )
+
+
+def open_kb(journal: Path | None, clock: Callable[[], float]) -> KnowledgeBase:
+    """The ERL knowledge base on ``clock`` (simulated seconds), journalled to ``journal`` when given (an
+    existing file and its ``-wal``/``-shm`` companions are replaced)."""
+    if journal is not None:
+        for suffix in ("", "-wal", "-shm"):
+            Path(str(journal) + suffix).unlink(missing_ok=True)
+    kb = KnowledgeBase.from_pddl(DOMAIN, journal=journal)
+    kb.set_clock(clock)
+    return kb

@@ -1,0 +1,157 @@
+"""Two verdicts kept apart: the robot's own "done" from its beliefs, and the referee's from ground truth.
+
+* :class:`BeliefVerdict` is what the robot can know: every goal holds in its knowledge base (and perception
+  confirmed the perceivable ones, or had ``settle_s`` to do so), or every goal still open was dropped for good
+  by the dispatcher's recovery policy. A run stops on this verdict only.
+* :class:`Referee` judges the same goals from the simulator's ground truth (the oracle). Only referees and
+  benchmarks hold an oracle; nothing the robot runs reads it.
+
+Both are asked at the run loop's checks, in simulated time, and change nothing.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterable, Mapping
+from dataclasses import dataclass
+from typing import Protocol
+
+from knowledge_base import BeliefStatus, Fact, KnowledgeBase
+
+#: goal predicates the simulator's ground truth decides directly
+TRUTH_PREDICATES = frozenset(
+    {
+        "robot_at",
+        "person_at",
+        "object_at",
+        "object_on",
+        "holding",
+        "hand_empty",
+        "has",
+        "light_on",
+        "light_off",
+        "device_level",
+        "person_near",
+    }
+)
+#: goal predicates a KP' can confirm (status OBSERVED) once an action made them true
+PERCEIVED_PREDICATES = frozenset(
+    {"robot_at", "person_at", "object_at", "object_on", "light_on", "light_off", "device_level"}
+)
+
+
+@dataclass(frozen=True)
+class Stop:
+    """Why a run stops: ``done`` when the robot believes every goal achieved, else the goals were dropped."""
+
+    done: bool
+    reason: str
+
+
+class BeliefVerdict:
+    """The robot's own stop condition, from its knowledge base and its dispatcher's book of goals.
+
+    Args:
+        kb: the knowledge base (goals, facts, provenance).
+        dropped_for_good: the goals (as PDDL strings) the recovery policy gave up on, with why; called at
+            each check.
+        idle: whether the dispatcher has nothing left to work on; called at each check.
+        settle_s: simulated seconds to wait, once every goal holds, for perception to confirm the perceivable
+            ones as observed.
+    """
+
+    def __init__(
+        self,
+        kb: KnowledgeBase,
+        dropped_for_good: Callable[[], Mapping[str, str]],
+        idle: Callable[[], bool],
+        settle_s: float = 8.0,
+    ) -> None:
+        self.kb = kb
+        self.dropped_for_good = dropped_for_good
+        self.idle = idle
+        self.settle_s = settle_s
+        self._settle_from: float | None = None
+
+    def __call__(self, now: float) -> Stop | None:
+        """The verdict at simulated time ``now``: a :class:`Stop`, or None while the run should go on."""
+        goals = self.kb.goals()
+        missing = [g for g in goals if not self.kb.holds(g)]
+        if not missing:
+            self._settle_from = now if self._settle_from is None else self._settle_from
+            if not self.unconfirmed() or now - self._settle_from >= self.settle_s:
+                return Stop(True, "the robot believes every goal achieved")
+            return None
+        self._settle_from = None
+        dropped = self.dropped_for_good()
+        gone = sorted(str(g) for g in missing if str(g) in dropped)
+        if gone and len(gone) == len(missing) and self.idle():
+            return Stop(False, f"goal {gone[0]} dropped: {dropped[gone[0]]}")
+        return None
+
+    def unconfirmed(self) -> list[Fact]:
+        """Goal facts of perceivable predicates that hold but not (yet) as OBSERVED."""
+        out = []
+        for goal in self.kb.goals():
+            if goal.predicate not in PERCEIVED_PREDICATES:
+                continue
+            prov = self.kb.why(goal)
+            if prov is None or prov.status != BeliefStatus.OBSERVED:
+                out.append(goal)
+        return out
+
+
+class GroundTruth(Protocol):
+    """What the referee reads: the oracle's true facts and what the robot said aloud."""
+
+    def ground_truth_facts(self, include_static: bool = False) -> set[tuple[str, ...]]:
+        """The true dynamic facts of the ERL domain as tuples."""
+        ...
+
+
+class Referee:
+    """Judges goals against ground truth (never the robot's beliefs).
+
+    Args:
+        oracle: the simulator's ground truth.
+        said: the robot's utterances so far (what a human referee hears), oldest first.
+        spoken_name: how the robot says a symbol aloud (``coke_can`` -> ``coke can``).
+    """
+
+    def __init__(
+        self,
+        oracle: GroundTruth,
+        said: Callable[[], Iterable[str]],
+        spoken_name: Callable[[str], str],
+    ) -> None:
+        self.oracle = oracle
+        self.said = said
+        self.spoken_name = spoken_name
+
+    def holds(self, goal: Fact) -> bool:
+        """Whether ground truth agrees with ``goal`` (goals it cannot judge count as true).
+
+        ``reported`` is judged from what the robot said: a report ("I found the ...") naming the entity and
+        the room where it truly is, or the gripper when the robot holds it.
+        """
+        truth = self.oracle.ground_truth_facts()
+        if goal.predicate in TRUTH_PREDICATES:
+            return (goal.predicate, *goal.args) in truth
+        if goal.predicate == "reported":
+            entity = goal.args[0]
+            places = [
+                f"in the {self.spoken_name(f[2])}"
+                for f in truth
+                if f[0] in ("object_at", "person_at") and f[1] == entity
+            ]
+            if any(f[0] == "holding" and f[2] == entity for f in truth):
+                places.append("in my gripper")
+            claim = f"i found the {self.spoken_name(entity)}"
+            return any(
+                text.lower().startswith(claim) and any(p in text.lower() for p in places)
+                for text in self.said()
+            )
+        return True
+
+    def unmet(self, goals: Iterable[Fact]) -> list[Fact]:
+        """The goals that do not hold in ground truth."""
+        return [g for g in goals if not self.holds(g)]
