@@ -55,7 +55,7 @@ ANSWERS = {"yes": ["yes", "yes please", "that is right"], "no": ["no", "no that 
 
 
 def synthesize(text: str, voice: str, speed: int, target: Path) -> None:
-    """espeak-ng, then sox to 16 kHz mono 16-bit with leading silence trimmed and 0.5 s of silence appended."""
+    """espeak-ng, then sox to 16 kHz mono 16-bit, silence trimmed and 0.5 s of silence appended."""
     with tempfile.TemporaryDirectory() as tmp:
         raw = Path(tmp) / "raw.wav"
         subprocess.run(["espeak-ng", "-v", voice, "-s", str(speed), "-w", str(raw), text], check=True)
