@@ -1,9 +1,9 @@
 """The architecture, read from the import graph: lower packages never import upper ones, no cycles.
 
-Layers, bottom first: ``core`` -> ``knowledge_base`` -> ``actions`` -> ``planner`` -> ``knic``; ``worlds`` (the
-simulator behind the robot seam) stands on ``core`` only. Inside ``knic`` the KGM levels stack
-KGM-3 -> KGM-2 -> KGM-1 -> (units, bus, scheduler), and language understanding needs none of them. Every import
-counts: module level, inside functions and under ``TYPE_CHECKING``.
+Layers, bottom first: ``core`` -> ``knowledge_base`` -> ``actions`` -> ``planner`` -> ``knic``;
+``worlds`` (the simulator behind the robot seam) stands on ``core`` only. Inside ``knic`` the KGM levels
+stack KGM-3 -> KGM-2 -> KGM-1 -> (units, bus, scheduler), and language understanding needs none of them.
+Every import counts: module level, inside functions and under ``TYPE_CHECKING``.
 """
 
 from __future__ import annotations
