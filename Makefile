@@ -6,12 +6,12 @@ BIN := $(VENV)/bin
 STAMP := $(VENV)/.installed-stamp
 GOAL ?= (object_at glasses bedroom)
 
-.PHONY: run test lint venv clean
+.PHONY: run test lint venv clean browser
 
 $(STAMP): pyproject.toml requirements.lock
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
-	$(BIN)/python -m pip install --quiet -c requirements.lock -e '.[dev]'
+	$(BIN)/python -m pip install --quiet -c requirements.lock -e '.[dev,web]'
 	touch $(STAMP)
 
 venv: $(STAMP)
@@ -24,7 +24,16 @@ lint: $(STAMP)
 	$(BIN)/ruff format --check .
 	$(BIN)/mypy
 
-test: lint
+# The browser tests of the web view drive Debian's chromium through playwright (playwright cannot download
+# its own browsers here); installed with apt-get when missing (needs root, as on CI and the dev machines).
+CHROMIUM := /usr/bin/chromium
+
+$(CHROMIUM):
+	apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq chromium
+
+browser: $(CHROMIUM)
+
+test: lint browser
 	$(BIN)/pytest
 
 clean:
