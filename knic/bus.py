@@ -136,12 +136,19 @@ class Inbox:
 
 
 class Bus:
-    """Publish/subscribe on hierarchical topics, with a latest-value cache per topic (the whiteboard view)."""
+    """Publish/subscribe on hierarchical topics, with a latest-value cache per topic (the whiteboard view)
+    and a bounded history of each topic's recent messages (:meth:`recent`).
 
-    def __init__(self) -> None:
+    Args:
+        history: messages kept per topic (the oldest goes when a new one comes); 0 keeps none.
+    """
+
+    def __init__(self, history: int = 20) -> None:
         self._subs: list[Subscription] = []
         self._route_cache: dict[str, list[Subscription]] = {}
         self._latest: dict[str, Message] = {}
+        self._history: dict[str, deque[Message]] = {}
+        self.history = max(0, history)
         self._seq = itertools.count(1)
         self.published = 0
 
@@ -184,6 +191,10 @@ class Bus:
             raise InferenceError(f"message on {topic!r} has no publishing component")
         message = Message(topic, payload, source, float(stamp), next(self._seq))
         self._latest[topic] = message
+        recent = self._history.get(topic)
+        if recent is None:
+            recent = self._history[topic] = deque(maxlen=self.history)
+        recent.append(message)
         self.published += 1
         for sub in list(route):
             if sub.active:
@@ -195,6 +206,15 @@ class Bus:
         levels = _check_pattern(pattern)
         found = [m for t, m in self._latest.items() if matches(levels, tuple(t.split(".")))]
         return sorted(found, key=lambda m: m.seq)
+
+    def recent(self, pattern: str = "*") -> dict[str, list[Message]]:
+        """The kept recent messages (oldest first) of every topic matching ``pattern``, by topic name.
+
+        Raises:
+            InferenceError: the pattern is not a valid topic pattern.
+        """
+        levels = _check_pattern(pattern)
+        return {t: list(m) for t, m in sorted(self._history.items()) if matches(levels, tuple(t.split(".")))}
 
     def topics(self) -> Iterator[str]:
         """Every topic published so far."""

@@ -67,3 +67,17 @@ def test_inbox_keeps_order_and_drops_oldest_when_full() -> None:
 
 def test_topic_level_sanitises_symbols() -> None:
     assert topic_level("Coke-Can") == "coke_can"
+
+
+def test_recent_keeps_a_bounded_time_stamped_history_per_topic() -> None:
+    bus = Bus(history=3)
+    for i in range(5):
+        bus.publish("percept.pose.robot.r2d2", i, source="kp.robot_pose", stamp=0.1 * i)
+    bus.publish("percept.audio.sound.doorbell", "ring", source="kp.sound", stamp=0.7)
+    recent = bus.recent("percept.pose")
+    assert list(recent) == ["percept.pose.robot.r2d2"]
+    assert [m.payload for m in recent["percept.pose.robot.r2d2"]] == [2, 3, 4]  # oldest dropped
+    assert [m.stamp for m in recent["percept.pose.robot.r2d2"]] == pytest.approx([0.2, 0.3, 0.4])
+    assert sorted(bus.recent()) == ["percept.audio.sound.doorbell", "percept.pose.robot.r2d2"]
+    with pytest.raises(InferenceError):
+        bus.recent("Bad Pattern")
