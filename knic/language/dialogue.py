@@ -15,20 +15,24 @@ import sys
 from collections.abc import Callable
 from typing import Protocol, TextIO
 
+from knic.language.answers import NO_WORDS, YES_NO_GRAMMAR, YES_WORDS, parse_answer
 from knic.language.frames import SPEAKER, CommandFrame
 from knic.language.understanding import Understanding
-from knic.language.vocabulary import Vocabulary, normalize
 
-YES_WORDS = frozenset(
-    {"yes", "yeah", "yep", "correct", "right", "sure", "okay", "ok", "affirmative", "do it"}
-)
-NO_WORDS = frozenset({"no", "nope", "wrong", "cancel", "stop", "negative", "don't"})
-#: JSGF grammar for a yes/no answer.
-YES_NO_GRAMMAR = (
-    "#JSGF V1.0;\ngrammar answer;\npublic <answer> = [ ( yes | no ) ] ( "
-    + " | ".join(sorted(w for w in YES_WORDS | NO_WORDS if " " not in w and "'" not in w))
-    + " ) [ please ];\n"
-)
+__all__ = [
+    "NO_WORDS",
+    "YES_NO_GRAMMAR",
+    "YES_WORDS",
+    "Dialogue",
+    "EspeakVoice",
+    "PrintVoice",
+    "Voice",
+    "default_voice",
+    "describe",
+    "parse_answer",
+    "repeat_back",
+]
+from knic.language.vocabulary import Vocabulary
 
 
 class Voice(Protocol):
@@ -71,14 +75,6 @@ def default_voice() -> Voice:
     """:class:`EspeakVoice` when ``espeak-ng`` is on PATH, else :class:`PrintVoice`."""
     executable = shutil.which("espeak-ng")
     return EspeakVoice(executable) if executable else PrintVoice()
-
-
-def parse_answer(text: str) -> bool | None:
-    """True for yes, False for no, None when the answer is neither (or both)."""
-    words = normalize(text).split()
-    phrases = set(words) | {" ".join(words[i : i + 2]) for i in range(len(words) - 1)}
-    yes, no = bool(phrases & YES_WORDS), bool(phrases & NO_WORDS)
-    return None if yes == no else yes
 
 
 def describe(frame: CommandFrame, vocabulary: Vocabulary | None = None) -> str:

@@ -45,6 +45,7 @@ import numpy.typing as npt
 
 from core.errors import AudioError, LanguageError
 from knic.language.acoustic import DEFAULT_ACOUSTIC_MODEL, acoustic_model_options
+from knic.language.answers import NO_WORDS, YES_WORDS
 from knic.language.fsg import answer_graph, compile_word_graph
 from knic.language.grammar import Grammar, grammar_words, to_jsgf
 from knic.language.vocabulary import Vocabulary
@@ -474,8 +475,6 @@ class AnswerRecognizer:
         acoustic_model: str | Path = DEFAULT_ACOUSTIC_MODEL,
         filler_weight: float = ANSWER_FILLER_WEIGHT,
     ):
-        from knic.language.dialogue import NO_WORDS, YES_WORDS
-
         try:
             from pocketsphinx import Decoder, set_loglevel
         except ImportError as exc:  # pragma: no cover - pocketsphinx is a declared dependency
