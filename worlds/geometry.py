@@ -5,6 +5,8 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 
+from core.geometry import inside_polygon
+
 Point = tuple[float, float]
 
 EPS = 1e-9
@@ -35,18 +37,7 @@ def polygon_centroid(poly: Sequence[Point]) -> Point:
 
 def point_in_polygon(x: float, y: float, poly: Sequence[Point]) -> bool:
     """True when ``(x, y)`` is inside the polygon (even-odd rule; points on an edge count as inside)."""
-    if point_on_boundary(x, y, poly, tol=1e-7):
-        return True
-    inside = False
-    n = len(poly)
-    for i in range(n):
-        x1, y1 = poly[i]
-        x2, y2 = poly[(i + 1) % n]
-        if (y1 > y) != (y2 > y):
-            xin = x1 + (y - y1) * (x2 - x1) / (y2 - y1)
-            if x < xin:
-                inside = not inside
-    return inside
+    return point_on_boundary(x, y, poly, tol=1e-7) or inside_polygon(x, y, poly)
 
 
 def point_in_polygon_strict(x: float, y: float, poly: Sequence[Point], tol: float = 1e-6) -> bool:
