@@ -2,10 +2,10 @@
 
 :func:`seed_kb_from_world` adds the map and the task's prior knowledge, never where movable things really are:
 rooms, furniture, items, people, devices, the robot and the sounds it can hear as instances; ``connected``
-(both orders), ``furniture_in``, ``hand_empty``, the robot's start room, the devices' initial states; the
-anchors (room polygon and waypoint, furniture pose and size, the robot's start pose); and the search
-candidates ``(possibly_at ?e ?room)`` from the priors, ASSUMED. Items and people get no place: perception
-(KGM-3) finds them.
+(both orders), ``furniture_in``, ``surface`` (furniture items can be put on), ``hand_empty``, the robot's
+start room, the devices' initial states; the anchors (room polygon and waypoint, furniture pose and size, the
+robot's start pose); and the search candidates ``(possibly_at ?e ?room)`` from the priors, ASSUMED. Items and
+people get no place: perception (KGM-3) finds them.
 """
 
 from __future__ import annotations
@@ -68,6 +68,9 @@ def seed_kb_from_world(
             instance("sound", BELL_SOUND)
         for pred, *args in sorted(world.static_facts()):
             fact(pred, *args)
+        for furniture in world.furniture.values():
+            if furniture.surface:
+                fact("surface", furniture.name)
         robot = world.robot
         fact("hand_empty", robot.name)
         start_room = world.room_of(robot.start[0], robot.start[1])

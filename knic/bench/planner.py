@@ -73,6 +73,7 @@ def generate_house(rooms: int = 80, objects: int = 200, seed: int = 1) -> tuple[
     for a, b in doors:
         init += [f"(connected {a} {b})", f"(connected {b} {a})"]
     init += [f"(furniture_in {f} {r})" for f, r in furniture_room]
+    init += [f"(surface {f})" for f in furniture]
     for i, item in enumerate(items):
         if i % 3 == 2:
             for room in rng.sample(names, 3):

@@ -20,7 +20,7 @@ Nothing runs here; :class:`~knic.system.loop.RunLoop` runs a scheduler.
 from __future__ import annotations
 
 from collections.abc import Callable
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Protocol
 
@@ -33,36 +33,13 @@ from knic.seed import seed_kb_from_world
 from knic.system.config import ACTION_TIME_LIMITS, DOMAIN, RunConfig
 from knowledge_base import KnowledgeBase
 from planner.dispatch import Dispatcher
-from planner.engines import Planner, TaskPlanner, silence_up
-from planner.model import PlanningTask
-from planner.plan import PlanResult
+from planner.engines import TaskPlanner, silence_up
 from planner.recovery import RecoveryPolicy
 from planner.trace import Trace
 
 if TYPE_CHECKING:
     from worlds.model import World
     from worlds.simulation import Simulation
-
-
-class SurfaceAwarePlanner:
-    """The planner, told which furniture can carry items (map knowledge the PDDL domain does not express).
-
-    Before each call the ``furniture_in`` facts of furniture without a surface are left out of the planning
-    task (the knowledge base keeps them); plans are otherwise the wrapped planner's.
-
-    Args:
-        planner: the wrapped planner (:class:`planner.engines.TaskPlanner`).
-        no_surface: furniture symbols that items cannot be put on.
-    """
-
-    def __init__(self, planner: Planner, no_surface: frozenset[str]) -> None:
-        self.planner = planner
-        self.no_surface = no_surface
-
-    def solve(self, task: PlanningTask, *, timeout: float | None = None) -> PlanResult:
-        """Plan for ``task`` without the surfaceless furniture as places."""
-        facts = frozenset(a for a in task.facts if not (a[0] == "furniture_in" and a[1] in self.no_surface))
-        return self.planner.solve(replace(task, facts=facts), timeout=timeout)
 
 
 class Steppable(Protocol):
@@ -168,10 +145,7 @@ def assemble(config: RunConfig) -> Assembly:
         if config.dispatch:
             dispatcher = Dispatcher(
                 kb,
-                SurfaceAwarePlanner(
-                    TaskPlanner(kb.domain.up_domain),
-                    frozenset(f.name for f in world.furniture.values() if not f.surface),
-                ),
+                TaskPlanner(kb.domain.up_domain),
                 registry,
                 policy=RecoveryPolicy(max_replans_per_goal=config.max_replans_per_goal),
                 trace=trace,

@@ -4,6 +4,8 @@
 ; candidate place is the assumed fact (possibly_at ?e ?l), written by KnIC with
 ; belief status "assumed", and search_object / search_person are sensing
 ; actions whose effects only count once perception confirms them.
+; (surface ?f): items can be put on furniture ?f (static, from the world data;
+; a bin or a plant carries nothing).
 (define (domain erl_home)
   (:requirements :strips :typing :negative-preconditions)
   ; light_on / light_off are kept complementary by the actions and by the device KP'.
@@ -19,6 +21,7 @@
     (object_at ?o - item ?l - room)
     (object_on ?o - item ?f - furniture)
     (furniture_in ?f - furniture ?l - room)
+    (surface ?f - furniture)
     (connected ?a - room ?b - room)
     (possibly_at ?e - entity ?l - room)
     (found ?e - entity)
@@ -57,7 +60,7 @@
 
   (:action place
     :parameters (?r - robot ?o - item ?f - furniture ?l - room)
-    :precondition (and (robot_at ?r ?l) (holding ?r ?o) (furniture_in ?f ?l))
+    :precondition (and (robot_at ?r ?l) (holding ?r ?o) (furniture_in ?f ?l) (surface ?f))
     :effect (and (object_at ?o ?l) (object_on ?o ?f) (hand_empty ?r) (not (holding ?r ?o))))
 
   (:action give

@@ -20,6 +20,7 @@
     (furniture_in kitchen_table kitchen)
     (furniture_in entrance_shelf entrance)
     (furniture_in sofa living_room)
+    (surface bed) (surface kitchen_table) (surface entrance_shelf) (surface sofa)
     (possibly_at glasses kitchen)
     (possibly_at glasses entrance)
     (possibly_at glasses living_room))
