@@ -1,4 +1,5 @@
-"""The simulated apartment: :class:`Simulation` implements :class:`worlds.api.SimulationAPI`.
+"""The simulated apartment: :class:`Simulation` is the robot (:class:`core.robot.Robot`) and the referee's
+oracle (:class:`worlds.oracle.Oracle`) at once (:class:`worlds.api.SimulationAPI`).
 
 One simulation owns one pybullet client (DIRECT by default, a GUI window with ``gui=True``) used for rendering
 the robot's camera; everything else (robot base, people, items, devices, events) is kinematic Python state
@@ -15,23 +16,27 @@ from pathlib import Path
 import numpy as np
 
 from core.errors import WorldError
-from worlds.api import (
-    ActionResult,
+from core.robot import (
     CameraFrame,
-    Counters,
+    CommandResult,
+    DeviceReading,
     NavStatus,
-    NoiseConfig,
     Pose2D,
     Pose3D,
     SoundEvent,
     Utterance,
 )
+from worlds.api import NoiseConfig
 from worlds.geometry import Point, wrap_angle
 from worlds.loader import load_world
 from worlds.model import Device, World
-from worlds.scenario import Event, Scenario, load_scenario
+from worlds.oracle import Counters, FrameTruth, SoundTruth
+from worlds.scenario import Scenario, load_scenario
 from worlds.sim.contacts import ContactMonitor
-from worlds.sim.items import ItemState, fall_step, free_spots
+from worlds.sim.events import apply_event
+from worlds.sim.goals import approach_points, person_points, room_points
+from worlds.sim.hands import PERSON_REACH, Hands
+from worlds.sim.items import ItemState, fall_step
 from worlds.sim.navigation import GridMap
 from worlds.sim.people import PeopleController, PersonState
 from worlds.sim.perception import add_depth_noise, detect
@@ -41,15 +46,12 @@ from worlds.sim.truth import ground_truth
 
 CONTROL_DT = 0.05  # seconds per control period
 RING_SECONDS = 2.0  # how long the door bell rings
-PERSON_REACH = 0.8  # metres, how far people reach to take or put an item
-GIVE_REACH_EXTRA = 0.35  # the robot reaches a person's hand this much farther than its gripper reach
 CAMERA_FORWARD = 0.2  # metres from the base centre to the camera, along the pan direction
 PAN_LIMIT = math.pi / 2
-ROOM_GOAL_RADIUS = 0.5  # metres: "go to a room" ends within this distance of the room's waypoint
 
 
 class Simulation:
-    """The simulated ERL apartment (see :class:`worlds.api.SimulationAPI` for the full contract).
+    """The simulated ERL apartment: robot, oracle and simulator controls (:class:`worlds.api.SimulationAPI`).
 
     Args:
         world: a :class:`World`, a world name (``erl_home``, ``erl_home_paper``) or a world file path.
@@ -97,22 +99,25 @@ class Simulation:
         self.grid = GridMap.from_world(w)
         self._contacts = ContactMonitor(w)
         self._base = BaseController(w.robot, self.grid)
-        self._people = PeopleController(w, self.grid, self, self._rng_people)
         self._items = {name: ItemState.from_item(it) for name, it in w.items.items()}
+        self._hands = Hands(w, self.grid, self._items, self._base)
+        self._people = PeopleController(w, self.grid, self._hands, self._rng_people)
+        self._hands.people = self._people.people
         self._devices = {d.name: (d.initial if d.kind != "bell" else 0.0) for d in w.devices.values()}
         self._scene = Scene(w, gui=gui, render_floor=render_floor)
         self._instances = self._instance_table()
         self._item_classes = sorted({it.cls for it in w.items.values()})
         self._time = 0.0
         self._pan = 0.0
-        self._held: str | None = None
         self._ring_until = -1.0
         self._sounds: list[SoundEvent] = []
+        self._sounds_made: list[SoundTruth] = []
         self._heard: list[Utterance] = []
         self._spoken: list[Utterance] = []
-        self._drops = 0
         self._events = list(self._scenario.events) if self._scenario else []
         self._frame: CameraFrame | None = None
+        self._frame_truth: FrameTruth | None = None
+        self._labels = {body: name for body, (name, _cls, _person) in self._instances.items()}
         self._closed = False
         self._apply_due_events()
 
@@ -179,11 +184,11 @@ class Simulation:
                 if it.vz is not None:
                     fall_step(self._world, it, h)
                 elif it.holder is not None:
-                    self._carry(it)
+                    self._hands.carry(it)
 
     def _apply_due_events(self) -> None:
         while self._events and self._events[0].at <= self._time + 1e-9:
-            self._apply_event(self._events.pop(0))
+            apply_event(self, self._people, self._items, self._rng_scenario, self._events.pop(0))
 
     # ------------------------------------------------------------------------------------------ sensors
 
@@ -205,7 +210,7 @@ class Simulation:
             eye, heading, spec.camera_pitch, width, height, spec.camera_fov, exclude=(self.robot_name,)
         )
         pose = Pose3D(pose.position, pose.orientation, self._time)
-        detections, visible = detect(
+        detections, detected, visible = detect(
             seg, depth, self._instances, self.noise, self._rng_camera, self._item_classes
         )
         depth = add_depth_noise(depth, self.noise.depth_noise, self._rng_camera)
@@ -215,12 +220,11 @@ class Simulation:
             height=height,
             rgb=rgb,
             depth=depth,
-            segmentation=seg,
             intrinsics=intr,
             camera_pose=pose,
             detections=detections,
-            visible_instances=visible,
         )
+        self._frame_truth = FrameTruth(self._time, seg, self._labels, visible, detected)
         return self._frame
 
     def robot_pose(self) -> Pose2D:
@@ -244,9 +248,9 @@ class Simulation:
         out, self._heard = self._heard, []
         return out
 
-    def device_states(self) -> dict[str, float | bool]:
-        """Lights: bool; dimmer and blinds: percent; bell: ringing now."""
-        out: dict[str, float | bool] = {}
+    def device_states(self) -> dict[str, DeviceReading]:
+        """Lights: bool; dimmer and blinds: percent; bell: ringing now (the readings are exact)."""
+        out: dict[str, DeviceReading] = {}
         for d in self._world.devices.values():
             v = self._devices[d.name]
             out[d.name] = (
@@ -268,15 +272,7 @@ class Simulation:
         """Goal to the room's waypoint: the nearest free point within :data:`ROOM_GOAL_RADIUS` of it."""
         if room not in self._world.rooms:
             raise WorldError(f"navigate_to_room: unknown room {room!r}")
-        wx, wy = self._world.rooms[room].waypoint
-        xs, ys, free = self._free_cells()
-        sel = free & (np.hypot(xs - wx, ys - wy) <= ROOM_GOAL_RADIUS)
-        for _, px, py, pr in self._people.discs():  # not where somebody stands
-            sel &= np.hypot(xs - px, ys - py) > pr + self._world.robot.radius + 0.15
-        goals = list(zip(xs[sel].tolist(), ys[sel].tolist(), strict=True))
-        if not goals:
-            near = self.grid.nearest_free(wx, wy, 1.5)
-            goals = [near] if near is not None else []
+        goals = room_points(self._world, self.grid, room, self._people.discs())
         if not goals:
             return self._base.fail_now(f"room {room}", f"no free pose near the waypoint of {room}")
         return self._base.start_goal(f"room {room}", goals, lambda _x, _y: None)
@@ -297,11 +293,7 @@ class Simulation:
         p = self._person(person, "navigate_to_person")
         if not p.present:
             return self._base.fail_now(f"person {person}", f"{person} is not in the apartment")
-        far = 1.1 if p.on else 1.0
-        xs, ys, free = self._free_cells()
-        d = np.hypot(xs - p.x, ys - p.y)
-        sel = free & (d <= far) & (d >= 0.5)
-        pts = list(zip(xs[sel].tolist(), ys[sel].tolist(), strict=True))
+        pts = person_points(self.grid, p.x, p.y, 1.1 if p.on else 1.0)
         return self._base.start_goal(f"person {person}", pts, lambda x, y: math.atan2(p.y - y, p.x - x))
 
     def nav_status(self) -> NavStatus:
@@ -320,101 +312,29 @@ class Simulation:
         self, furniture: str, near: Point | None = None, reach: float = PERSON_REACH
     ) -> list[Point]:
         """Free grid points within ``reach - 0.2`` m of the furniture (and of ``near`` when one qualifies)."""
-        f = self._world.furniture[furniture]
-        xs, ys, free = self._free_cells()
-        c, s = math.cos(f.yaw), math.sin(f.yaw)
-        lx, ly = (
-            c * (xs - f.position[0]) + s * (ys - f.position[1]),
-            -s * (xs - f.position[0]) + c * (ys - f.position[1]),
-        )
-        dist = np.hypot(np.maximum(np.abs(lx) - f.size[0] / 2, 0), np.maximum(np.abs(ly) - f.size[1] / 2, 0))
-        sel = free & (dist <= reach - 0.2)
-        if near is not None:
-            close = sel & (np.hypot(xs - near[0], ys - near[1]) <= reach - 0.1)
-            if close.any():
-                sel = close
-        return list(zip(xs[sel].tolist(), ys[sel].tolist(), strict=True))
-
-    def _free_cells(self) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        g = self.grid
-        rows, cols = g.shape
-        xs = np.broadcast_to(g.origin[0] + (np.arange(cols) + 0.5) * g.resolution, (rows, cols))
-        ys = np.broadcast_to((g.origin[1] + (np.arange(rows) + 0.5) * g.resolution)[:, None], (rows, cols))
-        return xs, ys, ~g.blocked
+        return approach_points(self._world, self.grid, furniture, near, reach)
 
     # ------------------------------------------------------------------------------------------ gripper
 
-    def pick(self, item: str) -> ActionResult:
+    def pick(self, item: str) -> CommandResult:
         """Attach an item within reach to the empty gripper."""
-        it = self._item(item, "pick")
-        if self._held is not None:
-            return ActionResult(False, f"hand is not empty: holding {self._held}")
-        if it.holder is not None:
-            return ActionResult(False, f"{item} is held by {it.holder}")
-        d = math.hypot(it.x - self._base.x, it.y - self._base.y)
-        reach = self._world.robot.reach
-        if d > reach:
-            return ActionResult(False, f"{item} is {d:.2f} m away, reach is {reach:.2f} m")
-        if it.z > 1.6:
-            return ActionResult(False, f"{item} is too high ({it.z:.2f} m)")
-        it.holder, it.on, it.vz = self.robot_name, None, None
-        self._held = item
-        self._carry(it)
-        return ActionResult(True)
+        return self._hands.pick(item)
 
-    def place(self, furniture: str) -> ActionResult:
+    def place(self, furniture: str) -> CommandResult:
         """Put the held item on the furniture at the free spot nearest the robot, within reach."""
-        if furniture not in self._world.furniture:
-            raise WorldError(f"place: unknown furniture {furniture!r}")
-        if self._held is None:
-            return ActionResult(False, "hand is empty")
-        f = self._world.furniture[furniture]
-        reach = self._world.robot.reach
-        if not f.surface:
-            return ActionResult(False, f"{furniture} has no surface to put things on")
-        d = f.distance(self._base.x, self._base.y)
-        if d > reach:
-            return ActionResult(False, f"{furniture} is {d:.2f} m away, reach is {reach:.2f} m")
-        it = self._items[self._held]
-        spot = self._nearest_spot(f.name, it, (self._base.x, self._base.y), reach)
-        if spot is None:
-            return ActionResult(False, f"no free spot on {furniture} within reach")
-        it.x, it.y, it.z = spot[0], spot[1], f.height + it.size[2] / 2
-        it.holder, it.on = None, furniture
-        self._held = None
-        return ActionResult(True)
+        return self._hands.place(furniture)
 
-    def release(self) -> ActionResult:
+    def release(self) -> CommandResult:
         """Open the gripper in mid-air: the item falls and counts as dropped."""
-        if self._held is None:
-            return ActionResult(False, "hand is empty")
-        it = self._items[self._held]
-        it.holder, it.on, it.vz = None, None, 0.0
-        self._held = None
-        self._drops += 1
-        return ActionResult(True)
+        return self._hands.release()
 
-    def give(self, person: str) -> ActionResult:
+    def give(self, person: str) -> CommandResult:
         """Hand the held item to a person within reach."""
-        p = self._person(person, "give")
-        if self._held is None:
-            return ActionResult(False, "hand is empty")
-        d = math.hypot(p.x - self._base.x, p.y - self._base.y)
-        reach = self._world.robot.reach + GIVE_REACH_EXTRA
-        if not p.present or d > reach:
-            return ActionResult(False, f"{person} is {d:.2f} m away, reach is {reach:.2f} m")
-        if p.carrying is not None:
-            return ActionResult(False, f"{person} already holds {p.carrying}")
-        it = self._items[self._held]
-        it.holder = person
-        p.carrying = it.name
-        self._held = None
-        self._carry(it)
-        return ActionResult(True)
+        return self._hands.give(person)
 
     def held_item(self) -> str | None:
         """The item in the gripper."""
-        return self._held
+        return self._hands.held
 
     def pan_camera(self, angle: float) -> None:
         """Camera pan relative to the base, clipped to +-pi/2."""
@@ -428,21 +348,21 @@ class Simulation:
 
     # -------------------------------------------------------------------------------- devices, speech
 
-    def set_light(self, device: str, on: bool) -> ActionResult:
+    def set_light(self, device: str, on: bool) -> CommandResult:
         """Switch a light."""
         d = self._device(device, "set_light")
         if d.kind != "light":
-            return ActionResult(False, f"{device} is a {d.kind}, not a light")
+            return CommandResult(False, f"{device} is a {d.kind}, not a light")
         self._devices[device] = 1.0 if on else 0.0
-        return ActionResult(True)
+        return CommandResult(True)
 
-    def set_level(self, device: str, percent: float) -> ActionResult:
+    def set_level(self, device: str, percent: float) -> CommandResult:
         """Set a dimmer or blinds (percent, clipped to 0-100)."""
         d = self._device(device, "set_level")
         if d.kind not in ("dimmer", "blinds"):
-            return ActionResult(False, f"{device} is a {d.kind}, it has no level")
+            return CommandResult(False, f"{device} is a {d.kind}, it has no level")
         self._devices[device] = max(0.0, min(100.0, float(percent)))
-        return ActionResult(True)
+        return CommandResult(True)
 
     def say(self, text: str) -> None:
         """Record the robot's speech."""
@@ -469,17 +389,17 @@ class Simulation:
             )
         )
 
-    def escort(self, person: str) -> ActionResult:
+    def escort(self, person: str) -> CommandResult:
         """Ask a person within 2 m to follow."""
         p = self._person(person, "escort")
         d = math.hypot(p.x - self._base.x, p.y - self._base.y)
         if not p.present or d > 2.0:
-            return ActionResult(False, f"{person} is {d:.2f} m away, must be within 2.00 m")
+            return CommandResult(False, f"{person} is {d:.2f} m away, must be within 2.00 m")
         for q in self._people.people.values():
             q.following = False
         p.following = True
         p.tasks.clear()
-        return ActionResult(True)
+        return CommandResult(True)
 
     def stop_escort(self) -> None:
         """Nobody follows the robot any more."""
@@ -519,7 +439,7 @@ class Simulation:
         facts = ground_truth(
             self._world,
             (self._base.x, self._base.y),
-            self._held,
+            self._hands.held,
             self._items,
             self._people.people,
             self._devices,
@@ -529,10 +449,22 @@ class Simulation:
             facts |= self._world.static_facts()
         return facts
 
+    def frame_truth(self) -> FrameTruth | None:
+        """The truth behind the latest rendered camera frame."""
+        return self._frame_truth
+
+    def sounds_made(self) -> list[SoundTruth]:
+        """Every sound made so far."""
+        return list(self._sounds_made)
+
+    def true_device_states(self) -> dict[str, DeviceReading]:
+        """The devices' true states (the simulated readings are exact: the same as :meth:`device_states`)."""
+        return self.device_states()
+
     def counters(self) -> Counters:
         """Penalty counters."""
         c = self._contacts
-        return Counters(bumps=c.bumps, person_hits=c.hits, drops=self._drops)
+        return Counters(bumps=c.bumps, person_hits=c.hits, drops=self._hands.drops)
 
     def close(self) -> None:
         """Disconnect pybullet (idempotent)."""
@@ -546,48 +478,7 @@ class Simulation:
     def __exit__(self, *exc: object) -> None:
         self.close()
 
-    # ------------------------------------------------------------------------------------------ PeopleHooks
-
-    def person_take(self, person: str, item: str) -> bool:
-        """A person takes an item within their reach (scenario helper)."""
-        p, it = self._people.people[person], self._items[item]
-        if it.holder is not None or p.carrying is not None:
-            return False
-        if math.hypot(it.x - p.x, it.y - p.y) > PERSON_REACH + 0.3:
-            return False
-        it.holder, it.on, it.vz = person, None, None
-        p.carrying = item
-        self._carry(it)
-        return True
-
-    def person_put(self, person: str, furniture: str) -> bool:
-        """A person puts what they carry on the furniture (scenario helper)."""
-        p = self._people.people[person]
-        if p.carrying is None:
-            return False
-        it, f = self._items[p.carrying], self._world.furniture[furniture]
-        spot = self._nearest_spot(furniture, it, (p.x, p.y), PERSON_REACH + 0.3)
-        if spot is None:
-            return False
-        it.x, it.y, it.z = spot[0], spot[1], f.height + it.size[2] / 2
-        it.holder, it.on = None, furniture
-        p.carrying = None
-        return True
-
     # ------------------------------------------------------------------------------------------ internals
-
-    def _nearest_spot(self, furniture: str, it: ItemState, origin: Point, reach: float) -> Point | None:
-        spots = free_spots(self._world.furniture[furniture], it, list(self._items.values()))
-        spots = [s for s in spots if math.dist(s, origin) <= reach]
-        return min(spots, key=lambda s: (math.dist(s, origin), s)) if spots else None
-
-    def _carry(self, it: ItemState) -> None:
-        if it.holder == self.robot_name:
-            r = self._base
-            it.x, it.y, it.z = r.x + 0.3 * math.cos(r.yaw), r.y + 0.3 * math.sin(r.yaw), 0.8
-        elif it.holder is not None:
-            p = self._people.people[it.holder]
-            it.x, it.y, it.z = p.x, p.y, p.z_base(self._world) + 0.9
 
     def _sync_bodies(self) -> None:
         s, w = self._scene, self._world
@@ -599,26 +490,17 @@ class Simulation:
         for it in self._items.values():
             s.move(it.name, (it.x, it.y, it.z))
 
-    def _apply_event(self, ev: Event) -> None:
-        from worlds.sim.events import apply_event
-
-        apply_event(self, self._people, ev)
-
-    def _ring(self) -> None:
+    def ring_bell(self) -> None:
+        """The door bell rings now: a sound heard at the bell, the bell's state on for :data:`RING_SECONDS`
+        (scenario hook)."""
         bell = next(d for d in self._world.devices.values() if d.kind == "bell")
         self._ring_until = self._time + RING_SECONDS
-        self._sounds.append(
-            SoundEvent(kind="doorbell", position=bell.position, stamp=self._time, source=bell.name)
-        )
+        self._sounds.append(SoundEvent(kind="doorbell", position=bell.position, stamp=self._time))
+        self._sounds_made.append(SoundTruth("doorbell", bell.name, bell.position, self._time))
 
     def _check_open(self) -> None:
         if self._closed:
             raise WorldError("the simulation is closed")
-
-    def _item(self, name: str, what: str) -> ItemState:
-        if name not in self._items:
-            raise WorldError(f"{what}: unknown item {name!r}")
-        return self._items[name]
 
     def _person(self, name: str, what: str) -> PersonState:
         if name not in self._people.people:

@@ -18,19 +18,20 @@ speak              :mod:`actions.erl.devices`             say the arguments (not
 
 Usage::
 
-    registry = build_erl_registry(sim, kb, perception=BusPerception(kb, pipeline.bus))
+    registry = build_erl_registry(robot, kb, perception=BusPerception(kb, pipeline.bus))
     dispatcher = Dispatcher(kb, planner, registry)
 """
 
 from __future__ import annotations
 
 from actions.base import Action, ActionFactory, ActionRegistry
-from actions.erl.context import ErlContext, RobotInterface
+from actions.erl.context import ErlContext
 from actions.erl.devices import DeviceAction, ReportAction, SpeakAction
 from actions.erl.manipulation import GiveAction, PickAction, PlaceAction
 from actions.erl.motion import GuideAction, MeetAction, MoveAction
 from actions.erl.perception import AnchorPerception, Perception
 from actions.erl.search import SearchAction
+from core.robot import Robot
 from knowledge_base import KnowledgeBase
 
 #: number of ground arguments of every registered action (checked at construction)
@@ -51,31 +52,31 @@ ARITY = {
 
 
 def build_erl_registry(
-    sim: RobotInterface,
+    robot: Robot,
     kb: KnowledgeBase,
     *,
     perception: Perception | None = None,
-    robot: str = "r2d2",
+    robot_name: str = "r2d2",
     confirm_devices: bool | None = None,
     context: ErlContext | None = None,
 ) -> ActionRegistry:
     """The ERL actions bound to one robot, knowledge base and perception bus.
 
     Args:
-        sim: the robot's commands and sensors (the simulator satisfies :class:`RobotInterface`).
+        robot: the robot seam the actions command and read (the simulator implements it).
         kb: the knowledge base (anchors, facts) the actions read.
         perception: where perception last saw items and people (the inference side provides it); None:
             knowledge-base anchors only.
-        robot: the robot's PDDL symbol.
+        robot_name: the robot's PDDL symbol.
         confirm_devices: device actions wait for the device reading in the knowledge base; default: only when
             ``perception`` is given (hence a perception pipeline runs).
-        context: a prepared context (overrides ``sim``, ``kb``, ``perception`` and ``robot``).
+        context: a prepared context (overrides ``robot``, ``kb``, ``perception`` and ``robot_name``).
 
     Returns:
         A registry with every action of ``worlds/erl_home/domain.pddl`` plus ``speak``. Factories raise
         ``ValueError`` (an :class:`~core.errors.ActionError` through the registry) for a wrong argument count.
     """
-    ctx = context or ErlContext(sim, kb, perception or AnchorPerception(kb), robot_name=robot)
+    ctx = context or ErlContext(robot, kb, perception or AnchorPerception(kb), robot_name=robot_name)
     confirm = (perception is not None) if confirm_devices is None else confirm_devices
 
     def checked(name: str, args: tuple[str, ...]) -> tuple[str, ...]:
@@ -112,4 +113,4 @@ def _device_factory(name: str, ctx: ErlContext, confirm: bool) -> ActionFactory:
     return factory
 
 
-__all__ = ["AnchorPerception", "ErlContext", "Perception", "RobotInterface", "build_erl_registry"]
+__all__ = ["AnchorPerception", "ErlContext", "Perception", "build_erl_registry"]

@@ -10,7 +10,7 @@ from collections.abc import Callable, Sequence
 
 from actions.base import Action, ActionStatus
 from actions.erl.context import ErlContext, Point
-from worlds.api import NavState
+from core.robot import NavState
 
 
 class ErlAction(Action):

@@ -3,11 +3,13 @@
 The actions of :mod:`actions.erl` decide *where to go* only from what the robot knows: the knowledge base's
 anchors (room regions and waypoints, furniture poses, written by :func:`knic.seed.seed_kb_from_world`; item
 positions anchored by the object KP') and the poses perception reports through the perception seam
-(:class:`~actions.erl.perception.Perception`, fed by the inference side). They never read the simulator's
-ground truth: the :class:`RobotInterface` they command deliberately has no ground-truth method.
+(:class:`~actions.erl.perception.Perception`, fed by the inference side). They command the robot through the
+robot seam, :class:`core.robot.Robot`, whose readings carry no ground truth; they import nothing from the
+simulator nor from the inference bus.
 
 Frames and time: every position is in the world frame (metres, ``z`` up, yaw in radians counter-clockwise
-from ``+x``); every time is simulated seconds (``RobotInterface.time``).
+from ``+x``); every time is the robot's clock (:attr:`core.robot.Robot.time`, simulated seconds in
+simulation).
 """
 
 from __future__ import annotations
@@ -15,86 +17,16 @@ from __future__ import annotations
 import math
 from collections.abc import Sequence
 from dataclasses import dataclass, field
-from typing import Any, Protocol
+from typing import Any
 
 from actions.erl.perception import Perception
+from core.robot import Pose2D, Robot
 from knowledge_base import KnowledgeBase
-from worlds.api import ActionResult, NavStatus, Pose2D
 
 Point = tuple[float, float]
 
 #: PDDL level constant -> percent for dimmers and blinds
 LEVEL_PERCENT = {"l0": 0.0, "l25": 25.0, "l50": 50.0, "l75": 75.0, "l100": 100.0}
-
-
-class RobotInterface(Protocol):
-    """The commands and sensors the actions use: a subset of :class:`worlds.api.SimulationAPI` without any
-    ground truth (the simulator satisfies it; test doubles are checked against it by mypy)."""
-
-    @property
-    def time(self) -> float:
-        """Simulated seconds since the start of the episode."""
-        ...
-
-    def robot_pose(self) -> Pose2D:
-        """The localisation estimate (world frame)."""
-        ...
-
-    def navigate_to_point(self, x: float, y: float, yaw: float | None = None) -> int:
-        """Start a navigation goal to a world point; returns the goal id."""
-        ...
-
-    def navigate_to_furniture(self, furniture: str, near: tuple[float, float] | None = None) -> int:
-        """Start a goal to a pose within reach of a piece of furniture (near a point on it), facing it."""
-        ...
-
-    def nav_status(self) -> NavStatus:
-        """Status of the latest navigation goal."""
-        ...
-
-    def stop(self) -> None:
-        """Stop the base and cancel the goal."""
-        ...
-
-    def pick(self, item: str) -> ActionResult:
-        """Grasp an item within reach."""
-        ...
-
-    def place(self, furniture: str) -> ActionResult:
-        """Put the held item on a surface within reach."""
-        ...
-
-    def give(self, person: str) -> ActionResult:
-        """Hand the held item to a person within reach."""
-        ...
-
-    def held_item(self) -> str | None:
-        """The item in the gripper (the gripper's own sensor)."""
-        ...
-
-    def pan_camera(self, angle: float) -> None:
-        """Camera pan relative to the base heading, radians, clipped to +-pi/2."""
-        ...
-
-    def set_light(self, device: str, on: bool) -> ActionResult:
-        """Switch a light."""
-        ...
-
-    def set_level(self, device: str, percent: float) -> ActionResult:
-        """Set a dimmer or blinds to a percentage."""
-        ...
-
-    def say(self, text: str) -> None:
-        """Speak ``text``."""
-        ...
-
-    def escort(self, person: str) -> ActionResult:
-        """Ask a person within 2 m to follow the robot."""
-        ...
-
-    def stop_escort(self) -> None:
-        """The escorted person stops following."""
-        ...
 
 
 @dataclass(frozen=True)
@@ -225,7 +157,7 @@ class ErlContext:
         follow_timeout_s: seconds ``guide`` waits for the escorted person to arrive.
     """
 
-    robot: RobotInterface
+    robot: Robot
     kb: KnowledgeBase
     perceived: Perception
     robot_name: str = "r2d2"

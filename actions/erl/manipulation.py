@@ -22,7 +22,7 @@ from actions.base import ActionStatus
 from actions.erl.common import ErlAction, NavGoal, to_furniture, to_point
 from actions.erl.context import ErlContext, FurnitureMap, bearing, furniture_map, standoff_points
 from actions.erl.motion import PersonApproachAction
-from worlds.api import ActionResult
+from core.robot import CommandResult
 
 #: metres from a loose item (on no known furniture) at which the robot stops to grasp it
 GRASP_STANDOFF = 0.55
@@ -196,7 +196,7 @@ class GiveAction(PersonApproachAction):
         """Check the gripper holds the item and approach the person."""
         return self.holds_or_refuse(self.item) and self.approach_or_refuse()
 
-    def act(self) -> ActionResult:
+    def act(self) -> CommandResult:
         """Hand the item over."""
         return self.ctx.robot.give(self.person)
 

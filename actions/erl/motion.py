@@ -18,7 +18,7 @@ import math
 from actions.base import ActionStatus
 from actions.erl.common import ErlAction, NavGoal, to_point
 from actions.erl.context import ErlContext, Point, room_map, standoff_points, wrap
-from worlds.api import ActionResult
+from core.robot import CommandResult
 
 #: metres between the robot and a person it approaches
 PERSON_STANDOFF = 0.9
@@ -87,7 +87,7 @@ class PersonApproachAction(ErlAction):
     nav: NavGoal | None = None
     reapproaches = 0
 
-    def act(self) -> ActionResult:
+    def act(self) -> CommandResult:
         """What the action does once beside the person."""
         raise NotImplementedError
 
@@ -142,7 +142,7 @@ class MeetAction(PersonApproachAction):
         """Start approaching where the person was last perceived."""
         return self.approach_or_refuse()
 
-    def act(self) -> ActionResult:
+    def act(self) -> CommandResult:
         """Ask the person to follow."""
         return self.ctx.robot.escort(self.person)
 

@@ -8,8 +8,8 @@ goals, so the dispatcher is not stepped. Measured, in simulated time:
 * every simulated second, the knowledge base's dynamic facts (``COMPARED`` predicates) against the ground
   truth: ``precision`` (share of believed facts that are true) and ``recall`` (share of true facts the robot
   could have perceived that are believed). A true fact about an item or person counts as perceivable once the
-  entity was in a camera frame (``CameraFrame.visible_instances``) after the fact became true; the robot's
-  room, devices and sounds always count.
+  entity was in a camera frame (the oracle's :meth:`~worlds.oracle.Oracle.frame_truth`) after the fact became
+  true; the robot's room, devices and sounds always count.
 * ``staleness_median_s``: for each change of a perceivable true fact (appearing or disappearing, sampled at
   5 Hz), the time until the knowledge base made the same change; changes it never made are counted in
   ``changes_unreflected``.
@@ -44,7 +44,9 @@ from knic.scheduler import Component
 from knic.system.loop import RunLoop
 
 if TYPE_CHECKING:
+    from core.robot import Camera
     from knic.system.assembly import Assembly
+    from worlds.oracle import Oracle
 
 #: predicates compared with the ground truth
 COMPARED = frozenset(
@@ -240,15 +242,15 @@ def run_episode(role: str, *, duration: float, seed: int) -> dict[str, Any]:
 
 def _episode(parts: Assembly, duration: float) -> dict[str, Any]:
     """Patrol the assembled robot (no dispatcher) for ``duration`` simulated seconds under the probes."""
-    sim, kb, world = parts.sim, parts.kb, parts.world
+    robot, oracle, kb, world = parts.robot, parts.oracle, parts.kb, parts.world
     entities = frozenset(world.items) | frozenset(world.people)
     rec = _Recorder(entities)
     camera_hz = parts.pipeline.component("kp.camera_objects").frequency
     loop: RunLoop[None] = RunLoop(parts.scheduler)
     loop.add_probe(_Patrol.name, _Patrol.frequency, _Patrol(parts).step)
-    loop.add_probe("bench.visibility", camera_hz, lambda now: _see(sim, rec))
-    loop.add_probe("bench.changes", 5.0, lambda now: _changes(sim, kb, rec, now))
-    loop.add_probe("bench.compare", 1.0, lambda now: _compare(sim, kb, rec, now))
+    loop.add_probe("bench.visibility", camera_hz, lambda now: _see(robot, oracle, rec))
+    loop.add_probe("bench.changes", 5.0, lambda now: _changes(oracle, kb, rec, now))
+    loop.add_probe("bench.compare", 1.0, lambda now: _compare(oracle, kb, rec, now))
 
     def reflect(change: Any) -> None:
         if change.kind.value not in ("add_fact", "remove_fact"):
@@ -307,7 +309,7 @@ class _Patrol(Component):
     def __init__(self, parts: Assembly, sweep_s: float = 5.0) -> None:
         from actions.erl.context import room_map
 
-        self.sim = parts.sim
+        self.robot = parts.robot
         tour = (
             "living_room",
             "dining_room",
@@ -326,38 +328,41 @@ class _Patrol(Component):
         self.goal = -1
 
     def step(self, now: float) -> None:
-        from worlds.api import NavState
+        from core.robot import NavState
 
-        status = self.sim.nav_status()
+        status = self.robot.nav_status()
         if self.goal < 0 or (status.goal_id == self.goal and status.state is not NavState.ACTIVE):
             if self.arrived is None and self.goal >= 0:
                 self.arrived = now
             if self.arrived is not None and now - self.arrived < self.sweep_s:
-                self.sim.pan_camera(1.3 * math.sin(2 * math.pi * (now - self.arrived) / self.sweep_s))
+                self.robot.pan_camera(1.3 * math.sin(2 * math.pi * (now - self.arrived) / self.sweep_s))
                 return
-            self.sim.pan_camera(0.0)
+            self.robot.pan_camera(0.0)
             x, y = self.waypoints[self.index % len(self.waypoints)]
             self.index += 1
-            self.goal = self.sim.navigate_to_point(x, y)
+            self.goal = self.robot.navigate_to_point(x, y)
             self.arrived = None
 
 
-def _see(sim: Any, rec: _Recorder) -> None:
-    frame = sim.camera_frame()  # the frame the camera KP used at this instant (cached by the simulator)
-    for name in frame.visible_instances:
-        rec.seen.setdefault(name, []).append(frame.stamp)
+def _see(robot: Camera, oracle: Oracle, rec: _Recorder) -> None:
+    robot.camera_frame()  # the frame the camera KP used at this instant (cached by the simulator)
+    truth = oracle.frame_truth()  # which instances were really in it
+    if truth is None:
+        return
+    for name in truth.visible:
+        rec.seen.setdefault(name, []).append(truth.stamp)
 
 
-def _truth(sim: Any) -> set[Atom]:
-    return {f for f in sim.ground_truth_facts() if f[0] in COMPARED}
+def _truth(oracle: Oracle) -> set[Atom]:
+    return {f for f in oracle.ground_truth_facts() if f[0] in COMPARED}
 
 
 def _beliefs(kb: Any) -> set[Atom]:
     return {(f.predicate, *f.args) for f in kb.facts() if f.predicate in COMPARED}
 
 
-def _changes(sim: Any, kb: Any, rec: _Recorder, now: float) -> None:
-    truth = _truth(sim)
+def _changes(oracle: Oracle, kb: Any, rec: _Recorder, now: float) -> None:
+    truth = _truth(oracle)
     beliefs = _beliefs(kb)
     for fact in truth - set(rec.truth_since):
         rec.truth_since[fact] = now
@@ -373,8 +378,8 @@ def _changes(sim: Any, kb: Any, rec: _Recorder, now: float) -> None:
     rec.pending = still
 
 
-def _compare(sim: Any, kb: Any, rec: _Recorder, now: float) -> None:
-    truth = _truth(sim)
+def _compare(oracle: Oracle, kb: Any, rec: _Recorder, now: float) -> None:
+    truth = _truth(oracle)
     beliefs = _beliefs(kb)
     if beliefs:
         rec.precision.append(len(beliefs & truth) / len(beliefs))

@@ -31,7 +31,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 def run(args: argparse.Namespace) -> int:
     from core.errors import WorldError
-    from worlds.api import NavState
+    from core.robot import NavState
     from worlds.simulation import Simulation
 
     if args.duration <= 0 or args.camera_hz <= 0 or args.width <= 0 or args.height <= 0:

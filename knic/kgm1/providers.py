@@ -56,7 +56,9 @@ class RobotPoseKP(KnowledgeProvider):
 class SoundKP(KnowledgeProvider):
     """Sound events from the microphone: one LLKU per event (``percept.audio.sound.<kind>``).
 
-    The first time a kind of sound is heard that the knowledge base does not know, it is added as a ``sound``.
+    The unit carries what was heard and where the robot localised it; what made the sound is the referee's to
+    know (:meth:`worlds.oracle.Oracle.sounds_made`), not perception's. The first time a kind of sound is heard
+    that the knowledge base does not know, it is added as a ``sound``.
     """
 
     def __init__(
@@ -85,7 +87,6 @@ class SoundKP(KnowledgeProvider):
                 confidence=self.confidence,
                 position=event.position,
                 identity=event.kind,
-                attributes={"emitter": event.source},
             )
             self.meet("sound", event.kind, now, (unit.uid,))
             self.publish(unit)

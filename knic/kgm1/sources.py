@@ -1,7 +1,9 @@
-"""The sensor sources KGM-1 consumes, as small typed protocols over :mod:`worlds.api`'s reading types.
+"""The sensor sources KGM-1 consumes: the sensor parts of the robot seam (:class:`core.robot.Robot`).
 
-A KP depends only on the protocol of its one sensor, so tests feed recorded or synthetic readings through a
-double that mypy checks against the same protocol; :class:`worlds.api.SimulationAPI` satisfies all of them.
+A KP depends only on the part of the robot it reads (:class:`core.robot.Camera`,
+:class:`~core.robot.Localisation`, :class:`~core.robot.SoundDetector`, :class:`~core.robot.DeviceSensors`;
+:class:`~core.robot.Robot` extends them all), so tests feed recorded or synthetic readings through a double
+that mypy checks against the same declaration. The names below are the KGM-1 names of those parts.
 
 Also here: :class:`SharedCamera`, which renders a camera frame at most once per simulated instant for the two
 camera KPs, and :class:`FrameView`, the visibility test of one frame (what the camera could have seen, walls
@@ -17,39 +19,16 @@ from typing import Protocol
 import numpy as np
 import numpy.typing as npt
 
-from worlds.api import CameraFrame, CameraIntrinsics, Pose2D, SoundEvent
+from core.robot import Camera, CameraFrame, CameraIntrinsics, DeviceSensors, Localisation, SoundDetector
 
-
-class CameraSource(Protocol):
-    """An RGB-D camera with detections (``SimulationAPI.camera_frame``)."""
-
-    def camera_frame(self) -> CameraFrame:
-        """The frame at the current simulated time."""
-        ...
-
-
-class PoseSource(Protocol):
-    """The robot's self-localisation (``SimulationAPI.robot_pose``)."""
-
-    def robot_pose(self) -> Pose2D:
-        """The pose estimate in the world frame, stamped in simulated seconds."""
-        ...
-
-
-class SoundSource(Protocol):
-    """The microphone's sound-event detector (``SimulationAPI.poll_sounds``)."""
-
-    def poll_sounds(self) -> list[SoundEvent]:
-        """Sounds heard since the previous call, oldest first, each once."""
-        ...
-
-
-class DeviceSource(Protocol):
-    """The home automation's device readings (``SimulationAPI.device_states``)."""
-
-    def device_states(self) -> dict[str, float | bool]:
-        """Every device's state: lights bool, dimmer and blinds percent 0-100, bell bool (ringing)."""
-        ...
+#: the camera KPs' source: an RGB-D camera with detections
+CameraSource = Camera
+#: the robot-pose KP's source: the self-localisation
+PoseSource = Localisation
+#: the sound KP's source: the microphone's sound-event detector
+SoundSource = SoundDetector
+#: the device KP's source: the home automation's readings
+DeviceSource = DeviceSensors
 
 
 class ViewModel(Protocol):

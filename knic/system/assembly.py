@@ -38,7 +38,9 @@ from planner.recovery import RecoveryPolicy
 from planner.trace import Trace
 
 if TYPE_CHECKING:
+    from core.robot import Robot
     from worlds.model import World
+    from worlds.oracle import Oracle
     from worlds.simulation import Simulation
 
 
@@ -96,7 +98,11 @@ class DispatcherComponent(Component):
 
 @dataclass
 class Assembly:
-    """The built parts of one run (see the module docstring); :meth:`close` releases them."""
+    """The built parts of one run (see the module docstring); :meth:`close` releases them.
+
+    ``sim`` is the whole simulator (for the loop's clock and :meth:`close`); the parts that steer or perceive
+    see it only as :attr:`robot`, a referee only as :attr:`oracle`.
+    """
 
     config: RunConfig
     world: World
@@ -109,6 +115,16 @@ class Assembly:
     trace: Trace
     dispatcher: Dispatcher | None
     scheduler: Scheduler
+
+    @property
+    def robot(self) -> Robot:
+        """The robot seam of the simulator: what perception reads and actions command."""
+        return self.sim
+
+    @property
+    def oracle(self) -> Oracle:
+        """The simulator's ground truth, for referees and benchmarks only."""
+        return self.sim
 
     def close(self) -> None:
         """Stop listening, close the journal and the simulator (idempotent)."""

@@ -71,7 +71,6 @@ def frame(
         height=k.height,
         rgb=np.zeros((k.height, k.width, 3), dtype=np.uint8),
         depth=depth_img,
-        segmentation=np.full((k.height, k.width), -1, dtype=np.int32),
         intrinsics=k,
         camera_pose=optical_pose(x, y, z, yaw, stamp),
         detections=detections,

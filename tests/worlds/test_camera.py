@@ -40,11 +40,19 @@ def _project(frame: Any, point: np.ndarray) -> tuple[float, float, float]:
     return (k.fx * p[0] / p[2] + k.cx, k.fy * p[1] / p[2] + k.cy, float(p[2]))
 
 
+def _visible(sim: Simulation) -> frozenset[str]:
+    """The names the oracle says are in the latest frame."""
+    truth = sim.frame_truth()
+    assert truth is not None
+    return truth.visible
+
+
 def test_sees_the_object_in_front_not_the_one_behind_the_wall(make_sim: Callable[..., Simulation]) -> None:
     sim = make_sim(world_from_dict(TWO_ROOMS, file="two_rooms.yaml"))
     frame = sim.camera_frame()
-    assert "mug" in frame.visible_instances
-    assert "apple" not in frame.visible_instances
+    visible = _visible(sim)
+    assert "mug" in visible
+    assert "apple" not in visible
     # the apple is inside the field of view: only the wall hides it
     u, v, z = _project(frame, np.array(sim.true_pose("apple").position))
     assert 0 <= u < frame.width and 0 <= v < frame.height and 0 < z < frame.intrinsics.far
@@ -70,20 +78,36 @@ def test_people_are_recognised_and_pan_changes_the_view(make_sim: Callable[..., 
     frame = sim.camera_frame()
     person = [d for d in frame.detections if d.label == "person"]
     assert [d.identity for d in person] == ["annie"]
-    assert "mug" not in frame.visible_instances
+    assert "mug" not in _visible(sim)
 
 
 def test_noise_misses_and_false_positives(make_sim: Callable[..., Simulation]) -> None:
     world = world_from_dict(TWO_ROOMS, file="two_rooms.yaml")
     blind = make_sim(world, noise=NoiseConfig(miss_rate=1.0, false_positive_rate=0.0))
     assert blind.camera_frame().detections == []
-    assert "mug" in blind.camera_frame().visible_instances
+    assert "mug" in _visible(blind)
     noisy = make_sim(world, noise=NoiseConfig(miss_rate=0.0, false_positive_rate=1.0, confusion_rate=1.0))
     frame = noisy.camera_frame()
-    spurious = [d for d in frame.detections if d.true_instance is None]
-    assert len(spurious) == 1 and spurious[0].mask.any()
-    confused = next(d for d in frame.detections if d.true_instance == "mug")
-    assert confused.label != "mug"
+    truth = noisy.frame_truth()
+    assert truth is not None and truth.stamp == frame.stamp and len(truth.detected) == len(frame.detections)
+    behind = dict(zip(truth.detected, frame.detections, strict=True))
+    spurious = behind[None]
+    assert [d for d in truth.detected if d is None] == [None] and spurious.mask.any()
+    assert behind["mug"].label != "mug"
+
+
+def test_the_frame_truth_stays_with_the_oracle(make_sim: Callable[..., Simulation]) -> None:
+    sim = make_sim(world_from_dict(TWO_ROOMS, file="two_rooms.yaml"))
+    assert sim.frame_truth() is None  # nothing rendered yet
+    frame = sim.camera_frame()
+    truth = sim.frame_truth()
+    assert truth is not None and truth.segmentation.shape == (frame.height, frame.width)
+    mug = next(d for d in frame.detections if d.label == "mug")
+    mug_bodies = {b for b, name in truth.labels.items() if name == "mug"}
+    assert set(np.unique(truth.segmentation[mug.mask]).tolist()) == mug_bodies
+    # the robot's frame carries no ground truth
+    assert not hasattr(frame, "segmentation") and not hasattr(frame, "visible_instances")
+    assert not hasattr(mug, "true_instance")
 
 
 def test_camera_rate_caches_frames(make_sim: Callable[..., Simulation]) -> None:
@@ -96,8 +120,12 @@ def test_camera_rate_caches_frames(make_sim: Callable[..., Simulation]) -> None:
 
 
 def test_simulation_satisfies_the_api_protocol(make_sim: Callable[..., Simulation]) -> None:
+    from core.robot import Robot
     from worlds.api import SimulationAPI
+    from worlds.oracle import Oracle
 
     sim: SimulationAPI = make_sim(world_from_dict(TWO_ROOMS, file="two_rooms.yaml"))
-    assert isinstance(sim, SimulationAPI)
+    robot: Robot = sim
+    oracle: Oracle = sim
+    assert isinstance(sim, SimulationAPI) and isinstance(robot, Robot) and isinstance(oracle, Oracle)
     assert sim.robot_name == "r2d2" and sim.time == 0.0

@@ -5,7 +5,8 @@ from __future__ import annotations
 from collections.abc import Callable
 from typing import Any
 
-from worlds.api import NavState, NoiseConfig
+from core.robot import NavState
+from worlds.api import NoiseConfig
 from worlds.simulation import Simulation
 
 

@@ -5,7 +5,7 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 
-from worlds.api import NavState
+from core.robot import NavState
 from worlds.simulation import Simulation
 
 

@@ -6,7 +6,7 @@ from collections.abc import Callable
 
 import pytest
 
-from worlds.api import NavState
+from core.robot import NavState
 from worlds.simulation import Simulation
 
 ROOMS = ["entrance_hall", "hallway", "living_room", "dining_room", "kitchen", "bedroom", "bathroom"]

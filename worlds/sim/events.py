@@ -1,26 +1,78 @@
-"""Carrying out scenario events (:mod:`worlds.scenario`) in a running simulation."""
+"""Carrying out scenario events (:mod:`worlds.scenario`) in a running simulation.
+
+The simulation hands itself in as an :class:`EventHost` (the few hooks the events need) together with the
+state the events change directly (people, items, the scenario's random generator); this module knows
+nothing else of the simulator.
+"""
 
 from __future__ import annotations
 
 import math
-from typing import TYPE_CHECKING
+from collections.abc import Mapping
+from typing import Protocol
 
 import numpy as np
 
+from core.robot import CommandResult
 from worlds.geometry import Point
+from worlds.model import World
 from worlds.scenario import Event
+from worlds.sim.items import ItemState, free_spots
+from worlds.sim.navigation import GridMap
 from worlds.sim.people import PeopleController
 
-if TYPE_CHECKING:
-    from worlds.simulation import Simulation
+
+class EventHost(Protocol):
+    """What scenario events use of the simulation (:class:`worlds.simulation.Simulation` satisfies it)."""
+
+    grid: GridMap
+
+    @property
+    def world(self) -> World:
+        """The world data."""
+        ...
+
+    def ring_bell(self) -> None:
+        """The door bell rings now (a sound event, the bell's state)."""
+        ...
+
+    def hear(self, text: str, speaker: str = "annie", audio_path: str | None = None) -> None:
+        """A person says ``text`` now."""
+        ...
+
+    def set_light(self, device: str, on: bool) -> CommandResult:
+        """Switch a light."""
+        ...
+
+    def set_level(self, device: str, percent: float) -> CommandResult:
+        """Set a dimmer or blinds."""
+        ...
+
+    def approach_points(self, furniture: str, near: Point | None = None, reach: float = ...) -> list[Point]:
+        """Free points from which ``furniture`` (``near`` on it) is within ``reach``."""
+        ...
 
 
-def apply_event(sim: Simulation, people: PeopleController, ev: Event) -> None:
-    """Carry out one due event; people's parts are queued as tasks and run over the following steps."""
+def apply_event(
+    sim: EventHost,
+    people: PeopleController,
+    items: Mapping[str, ItemState],
+    rng: np.random.Generator,
+    ev: Event,
+) -> None:
+    """Carry out one due event; people's parts are queued as tasks and run over the following steps.
+
+    Args:
+        sim: the simulation's hooks.
+        people: the people controller (tasks are queued on it).
+        items: the items' true state (``place_items`` moves them).
+        rng: the scenario's random generator (``place_items`` draws from it).
+        ev: the event.
+    """
     a = ev.args
     w = sim.world
     if ev.type == "doorbell":
-        sim._ring()
+        sim.ring_bell()
         visitor = a.get("visitor")
         if visitor is not None:
             outside, inside = _front_door(sim)
@@ -34,7 +86,7 @@ def apply_event(sim: Simulation, people: PeopleController, ev: Event) -> None:
         sim.hear(str(a["text"]), speaker=a["person"], audio_path=a.get("audio"))
     elif ev.type == "move_object":
         person, item, to = a["person"], a["item"], a["to"]
-        it = sim._items[item]
+        it = items[item]
         source = it.on or w.room_of(it.x, it.y)
         if it.on is not None:
             people.go_to(person, sim.approach_points(it.on, (it.x, it.y)))
@@ -68,10 +120,10 @@ def apply_event(sim: Simulation, people: PeopleController, ev: Event) -> None:
         elif d.kind in ("dimmer", "blinds"):
             sim.set_level(d.name, float(v))
     elif ev.type == "place_items":
-        _place_items(sim, list(a.get("items") or sorted(w.items)))
+        _place_items(sim, items, rng, list(a.get("items") or sorted(w.items)))
 
 
-def _front_door(sim: Simulation) -> tuple[Point, Point]:
+def _front_door(sim: EventHost) -> tuple[Point, Point]:
     """A point 1 m outside and one 0.6 m inside the front door (a door with one room)."""
     w = sim.world
     door = next((d for d in w.doors if len(d.rooms) == 1), None)
@@ -96,7 +148,7 @@ def _front_door(sim: Simulation) -> tuple[Point, Point]:
 REACH_MARGIN = 0.1
 
 
-def reachable(sim: Simulation, furniture: str, spots: list[Point]) -> list[Point]:
+def reachable(sim: EventHost, furniture: str, spots: list[Point]) -> list[Point]:
     """The spots on ``furniture`` the robot can grasp from a free point beside it (ERL places objects where a
     robot can take them; the middle of a deep sofa against a wall may be out of an arm's reach)."""
     reach = sim.world.robot.reach
@@ -108,10 +160,11 @@ def reachable(sim: Simulation, furniture: str, spots: list[Point]) -> list[Point
     return [p for p in spots if float(np.min(np.hypot(sx - p[0], sy - p[1]))) <= reach - REACH_MARGIN]
 
 
-def _place_items(sim: Simulation, names: list[str]) -> None:
+def _place_items(
+    sim: EventHost, items: Mapping[str, ItemState], rng: np.random.Generator, names: list[str]
+) -> None:
     """Put each item on furniture drawn from its priors (weighted), at a random free spot within the robot's
     reach (seeded)."""
-    rng = sim._rng_scenario
     for name in names:
         item = sim.world.items[name]
         options = [p for p in item.priors if p.furniture is not None]
@@ -123,13 +176,11 @@ def _place_items(sim: Simulation, names: list[str]) -> None:
         furniture = options[k].furniture
         assert furniture is not None
         f = sim.world.furniture[furniture]
-        it = sim._items[name]
+        it = items[name]
         if it.holder is not None:
             continue
         it.on = None  # do not count the item as an obstacle to itself
-        from worlds.sim.items import free_spots
-
-        spots = reachable(sim, furniture, free_spots(f, it, list(sim._items.values())))
+        spots = reachable(sim, furniture, free_spots(f, it, list(items.values())))
         if not spots:
             it.on = item.on
             continue

@@ -1,5 +1,8 @@
 """Simulated object and person detector: turns a rendered segmentation into noisy :class:`Detection` s.
 
+The detections are what the robot gets (:class:`core.robot.Detection`, no ground truth); the instance behind
+each one and the names actually in view go back to the simulator separately, for its oracle.
+
 The detector sees what the renderer saw (field of view and occlusion are real) and then applies the configured
 :class:`NoiseConfig`: misses, label confusion, unrecognised people, spurious detections, depth noise.
 All random
@@ -12,7 +15,8 @@ from __future__ import annotations
 import numpy as np
 import numpy.typing as npt
 
-from worlds.api import Detection, NoiseConfig
+from core.robot import Detection
+from worlds.api import NoiseConfig
 
 #: classes a detector plausibly mixes up (both directions)
 CONFUSABLE: dict[str, tuple[str, ...]] = {
@@ -40,8 +44,8 @@ def detect(
     noise: NoiseConfig,
     rng: np.random.Generator,
     item_classes: list[str],
-) -> tuple[list[Detection], frozenset[str]]:
-    """Detections and ground-truth visible names of one frame.
+) -> tuple[list[Detection], tuple[str | None, ...], frozenset[str]]:
+    """Detections of one frame, with the ground truth behind them.
 
     Args:
         segmentation: body id per pixel.
@@ -53,7 +57,8 @@ def detect(
         item_classes: labels a false positive or confusion may take when no confusable class is listed.
 
     Returns:
-        ``(detections, visible_instances)``.
+        ``(detections, detected, visible)``: the detections; for each, the instance behind its mask (``None``
+        for a false positive); the names of every instance with at least ``noise.min_pixels`` pixels.
     """
     counts = np.bincount(segmentation.ravel() + 1)  # body ids are small; -1 (background) -> bin 0
     visible: list[tuple[str, int, str, bool, int]] = []
@@ -65,6 +70,7 @@ def detect(
     visible.sort()
     lo, hi = noise.confidence_range
     detections: list[Detection] = []
+    detected: list[str | None] = []
     for name, body, label, person, count in visible:
         if not label:
             continue
@@ -85,15 +91,15 @@ def detect(
                 confidence=round(conf, 4),
                 mask=segmentation == body,
                 identity=identity,
-                segmentation_id=body,
-                true_instance=name,
             )
         )
+        detected.append(name)
     if item_classes and rng.random() < noise.false_positive_rate:
         fp = _false_positive(depth, rng, item_classes, lo, hi)
         if fp is not None:
             detections.append(fp)
-    return detections, frozenset(v[0] for v in visible)
+            detected.append(None)
+    return detections, tuple(detected), frozenset(v[0] for v in visible)
 
 
 def _false_positive(

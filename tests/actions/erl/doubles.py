@@ -1,7 +1,8 @@
-"""A scripted robot for the ERL action tests; it satisfies :class:`actions.erl.context.RobotInterface`.
+"""A scripted robot for the ERL action tests; it satisfies the robot seam, :class:`core.robot.Robot`.
 
 Navigation goals succeed after ``nav_ticks`` calls of :meth:`FakeRobot.tick` (or fail at once with
-``nav_failure``); the gripper and devices answer from simple state. Time advances by ``dt`` per tick.
+``nav_failure``); the gripper and devices answer from simple state. Time advances by ``dt`` per tick. The
+camera sees nothing (an empty frame): the action tests feed perception through the perception seam instead.
 """
 
 from __future__ import annotations
@@ -9,12 +10,27 @@ from __future__ import annotations
 import math
 from pathlib import Path
 
-from actions.erl.context import RobotInterface
+import numpy as np
+
+from core.robot import (
+    CameraFrame,
+    CameraIntrinsics,
+    CommandResult,
+    DeviceReading,
+    NavState,
+    NavStatus,
+    Pose2D,
+    Pose3D,
+    Robot,
+    SoundEvent,
+    Utterance,
+)
 from knic.seed import seed_kb_from_world
 from knowledge_base import KnowledgeBase
-from worlds.api import ActionResult, NavState, NavStatus, Pose2D, load_world
+from worlds.api import load_world
 
 DOMAIN = Path(__file__).resolve().parents[3] / "worlds" / "erl_home" / "domain.pddl"
+INTRINSICS = CameraIntrinsics(8, 6, 6.0, 6.0, 4.0, 3.0, 0.1, 8.0)
 
 
 class FakeRobot:
@@ -48,6 +64,10 @@ class FakeRobot:
     def time(self) -> float:
         return self.now
 
+    @property
+    def robot_name(self) -> str:
+        return "r2d2"
+
     def tick(self) -> None:
         """Advance time; arrive when the goal's ticks are used up."""
         self.now = round(self.now + self.dt, 9)
@@ -63,6 +83,27 @@ class FakeRobot:
     # sensing
     def robot_pose(self) -> Pose2D:
         return Pose2D(self.x, self.y, self.yaw, self.now)
+
+    def camera_frame(self) -> CameraFrame:
+        k = INTRINSICS
+        return CameraFrame(
+            stamp=self.now,
+            width=k.width,
+            height=k.height,
+            rgb=np.zeros((k.height, k.width, 3), dtype=np.uint8),
+            depth=np.full((k.height, k.width), np.inf, dtype=np.float32),
+            intrinsics=k,
+            camera_pose=Pose3D((self.x, self.y, 1.2), stamp=self.now),
+        )
+
+    def poll_sounds(self) -> list[SoundEvent]:
+        return []
+
+    def poll_utterances(self) -> list[Utterance]:
+        return []
+
+    def device_states(self) -> dict[str, DeviceReading]:
+        return {**self.lights, **self.levels}
 
     # navigation
     def _start(self, target: str, x: float, y: float, yaw: float | None) -> int:
@@ -84,6 +125,16 @@ class FakeRobot:
         x, y = near if near is not None else (0.0, 0.0)
         return self._start(f"furniture {furniture}", x - 0.5, y, 0.0)
 
+    def navigate_to_room(self, room: str) -> int:
+        return self._start(f"room {room}", 0.0, 0.0, None)
+
+    def navigate_to_person(self, person: str) -> int:
+        px, py = self.people[person]
+        return self._start(f"person {person}", px - 0.9, py, 0.0)
+
+    def set_base_velocity(self, linear: float, angular: float) -> None:
+        self.stop()
+
     def nav_status(self) -> NavStatus:
         return self._status
 
@@ -92,35 +143,41 @@ class FakeRobot:
             self._status = NavStatus(NavState.CANCELLED, self._status.goal_id, self._status.target, "stopped")
 
     # gripper
-    def pick(self, item: str) -> ActionResult:
+    def pick(self, item: str) -> CommandResult:
         if self.held is not None:
-            return ActionResult(False, f"hand is not empty: holding {self.held}")
+            return CommandResult(False, f"hand is not empty: holding {self.held}")
         if item not in self.items:
-            return ActionResult(False, f"{item} is not here")
+            return CommandResult(False, f"{item} is not here")
         ix, iy = self.items[item]
         d = math.hypot(ix - self.x, iy - self.y)
         if d > 0.9:
-            return ActionResult(False, f"{item} is {d:.2f} m away, reach is 0.90 m")
+            return CommandResult(False, f"{item} is {d:.2f} m away, reach is 0.90 m")
         del self.items[item]
         self.held = item
-        return ActionResult(True)
+        return CommandResult(True)
 
-    def place(self, furniture: str) -> ActionResult:
+    def place(self, furniture: str) -> CommandResult:
         if self.held is None:
-            return ActionResult(False, "hand is empty")
+            return CommandResult(False, "hand is empty")
         self.placed[self.held] = furniture
         self.held = None
-        return ActionResult(True)
+        return CommandResult(True)
 
-    def give(self, person: str) -> ActionResult:
+    def release(self) -> CommandResult:
         if self.held is None:
-            return ActionResult(False, "hand is empty")
+            return CommandResult(False, "hand is empty")
+        self.held = None
+        return CommandResult(True)
+
+    def give(self, person: str) -> CommandResult:
+        if self.held is None:
+            return CommandResult(False, "hand is empty")
         px, py = self.people[person]
         d = math.hypot(px - self.x, py - self.y)
         if d > 1.25:
-            return ActionResult(False, f"{person} is {d:.2f} m away, reach is 1.25 m")
+            return CommandResult(False, f"{person} is {d:.2f} m away, reach is 1.25 m")
         self.held = None
-        return ActionResult(True)
+        return CommandResult(True)
 
     def held_item(self) -> str | None:
         return self.held
@@ -130,26 +187,26 @@ class FakeRobot:
         self.pans.append(angle)
 
     # devices, speech, escort
-    def set_light(self, device: str, on: bool) -> ActionResult:
+    def set_light(self, device: str, on: bool) -> CommandResult:
         if not device.endswith("light"):
-            return ActionResult(False, f"{device} is not a light")
+            return CommandResult(False, f"{device} is not a light")
         self.lights[device] = on
-        return ActionResult(True)
+        return CommandResult(True)
 
-    def set_level(self, device: str, percent: float) -> ActionResult:
+    def set_level(self, device: str, percent: float) -> CommandResult:
         self.levels[device] = percent
-        return ActionResult(True)
+        return CommandResult(True)
 
     def say(self, text: str) -> None:
         self.said.append(text)
 
-    def escort(self, person: str) -> ActionResult:
+    def escort(self, person: str) -> CommandResult:
         px, py = self.people[person]
         d = math.hypot(px - self.x, py - self.y)
         if d > 2.0:
-            return ActionResult(False, f"{person} is {d:.2f} m away, must be within 2.00 m")
+            return CommandResult(False, f"{person} is {d:.2f} m away, must be within 2.00 m")
         self.escorting = person
-        return ActionResult(True)
+        return CommandResult(True)
 
     def stop_escort(self) -> None:
         self.escorting = None
@@ -162,5 +219,5 @@ def paper_kb() -> KnowledgeBase:
     return kb
 
 
-def _check(robot: FakeRobot) -> RobotInterface:
+def _check(robot: FakeRobot) -> Robot:
     return robot  # mypy checks the double against the protocol here

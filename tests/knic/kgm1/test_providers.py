@@ -92,7 +92,7 @@ def test_pose_sound_and_device_providers(paper_kb: KnowledgeBase) -> None:
     sensors = FakeSensors()
     sensors.time = 2.0
     sensors.pose = Pose2D(1.0, 2.0, math.pi / 2)
-    sensors.sounds = [SoundEvent("doorbell", (6.0, 0.2, 1.5), 1.9, "door_bell")]
+    sensors.sounds = [SoundEvent("doorbell", (6.0, 0.2, 1.5), 1.9)]
     sensors.devices = {"hallway_light": True}
     bus = Bus()
     got = collect(bus, "percept")
