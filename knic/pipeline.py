@@ -14,6 +14,10 @@ Usage by the closed loop::
 
 Components are returned in data-flow order (providers, cognition, KP'), which is also the order the scheduler
 steps components due at the same instant, so a percept reaches the knowledge base within one tick.
+
+The places of the map travel like every other percept: the locations KP publishes one location LLKU per room
+and piece of furniture at the first instant, KGM-2 learns the rooms from them and republishes them as location
+CKUs carrying their octomaps, and the KP' that need places learn them from those CKUs.
 """
 
 from __future__ import annotations
@@ -24,7 +28,7 @@ from typing import TYPE_CHECKING, Protocol
 
 from knic.bus import Bus
 from knic.kgm1.camera import CameraObjectsKP, CameraPeopleKP
-from knic.kgm1.locations import LocationModel, LocationsKP, build_location_model
+from knic.kgm1.locations import LocationsKP, build_location_model
 from knic.kgm1.providers import DeviceKP, RobotPoseKP, SoundKP
 from knic.kgm1.sources import SharedCamera
 from knic.kgm2.cognition import CognitiveLayer, TrackingConfig
@@ -33,6 +37,7 @@ from knic.kgm3.places import ObjectPlaceKP, PersonPlaceKP, RobotAtKP
 from knic.kgm3.relations import DeviceStateKP, PersonNearKP, SoundAtKP
 from knic.kgm3.search import CandidatesKP, ExploredKP, priors_from_world
 from knic.scheduler import Component
+from knic.spatial import LocationModel
 from knowledge_base import KnowledgeBase
 from worlds.api import CameraFrame, Pose2D, SoundEvent
 
@@ -110,7 +115,11 @@ class PipelineOptions:
 
 
 class Pipeline(list[Component]):
-    """The pipeline's components in data-flow order, plus handles on its parts for the loop and benchmarks."""
+    """The pipeline's components in data-flow order, plus handles on its parts for the loop and benchmarks.
+
+    ``locations`` is the map as KGM-1's locations KP reads and publishes it; KGM-2 and the KP' never receive
+    it, they learn the places from the location units on the bus.
+    """
 
     def __init__(
         self,
@@ -165,7 +174,8 @@ def build_pipeline(
     the_role = role if isinstance(role, Role) else load_role(role, opts.roles_file)
     bus = bus or Bus()
     robot_name = robot or world.robot.name
-    locations = build_location_model(world, entity_resolution=opts.tracking.resolution)
+    resolution = opts.tracking.resolution
+    locations = build_location_model(world, entity_resolution=resolution)
     camera = SharedCamera(sim, lambda: sim.time)
     camera_hz = opts.camera_hz or the_role.max_rate(exclude=("robot", "doorbell"))
     class_symbols = _unique_classes(world)
@@ -204,18 +214,18 @@ def build_pipeline(
             frequency=2.0,
         ),
     ]
-    cognition = CognitiveLayer(bus, the_role, locations, config=opts.tracking, frequency=10.0)
+    cognition = CognitiveLayer(bus, the_role, config=opts.tracking, frequency=10.0)
     for provider in providers:  # the role's filter runs before deprojection, in the camera KPs
         if opts.early_role_filter and isinstance(provider, CameraObjectsKP | CameraPeopleKP):
             provider.gate = cognition.admits
     kp_primes: list[Component] = [
-        RobotAtKP(bus, kb, locations, needed=opts.needed),
-        ObjectPlaceKP(bus, kb, locations, needed=opts.needed),
-        PersonPlaceKP(bus, kb, locations, ttl_s=the_role.person_ttl_s, needed=opts.needed),
+        RobotAtKP(bus, kb, needed=opts.needed),
+        ObjectPlaceKP(bus, kb, needed=opts.needed, resolution=resolution),
+        PersonPlaceKP(bus, kb, ttl_s=the_role.person_ttl_s, needed=opts.needed, resolution=resolution),
         PersonNearKP(bus, kb, needed=opts.needed),
-        SoundAtKP(bus, kb, locations),
+        SoundAtKP(bus, kb),
         DeviceStateKP(bus, kb),
-        ExploredKP(bus, kb, locations, ttl_s=opts.explored_ttl_s),
+        ExploredKP(bus, kb, ttl_s=opts.explored_ttl_s),
         CandidatesKP(
             bus, kb, priors_from_world(world), list(world.rooms), max_candidates=opts.max_candidates
         ),

@@ -4,6 +4,8 @@
   perceived element (object, person, robot pose, sound, device reading, location) with its time stamp, the
   sensor and provider it came from, a confidence and its geometry in the **world frame** (metres, the
   simulator's global ``map`` frame; z up).
+* :class:`Scan`, made by a KGM-1 camera KP after a frame's LLKUs: the end of the frame, with what it could
+  see (a :class:`ViewModel`), so that KGM-2 counts misses and KGM-3 measures how much of a room was seen.
 * :class:`CKU` (cognitive knowledge unit), made by KGM-2: an LLKU put in context. It names the entity's PDDL
   symbol, its class, the octomap that represents the space it occupies (in the world frame), the voxel keys
   currently occupied in that octomap, the priority the robot's role gives it, and the ids of the LLKUs behind
@@ -19,7 +21,7 @@ import itertools
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from enum import StrEnum
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, Protocol
 
 import numpy as np
 import numpy.typing as npt
@@ -129,6 +131,36 @@ class LLKU:
         return self.identity or self.label
 
 
+class ViewModel(Protocol):
+    """What one scan could see (:class:`knic.kgm1.sources.FrameView` for camera frames; doubles in tests)."""
+
+    position: npt.NDArray[np.float64]
+
+    def visible(self, points: npt.NDArray[np.float64]) -> npt.NDArray[np.bool_]:
+        """Which of the world-frame points (N, 3) the scan could have seen."""
+        ...
+
+    def optical_axis(self) -> npt.NDArray[np.float64]:
+        """The viewing direction in the world frame (unit vector)."""
+        ...
+
+
+@dataclass(frozen=True)
+class Scan:
+    """End of one frame's units of one kind: the frame's time stamp, and what it could see.
+
+    Published by a camera KP on ``percept.vision.scan.<kind>`` after the frame's LLKUs. ``withheld`` names the
+    tracker classes whose detections the KP neither deprojected nor published for this frame because the
+    role's early filter said they were not due: KGM-2 must not associate them nor count misses for them.
+    """
+
+    kind: Kind
+    stamp: float
+    view: ViewModel
+    sensor: str
+    withheld: frozenset[str] = field(default_factory=frozenset)
+
+
 @dataclass(frozen=True, eq=False)
 class CKU:
     """A cognitive knowledge unit: a tracked entity or a location in its spatial and motivational context.
@@ -140,7 +172,7 @@ class CKU:
         octomap: the entity's ``pyoctomap.OcTree`` in the world frame (owned and updated by KGM-2; read it, do
             not write), or None for units without volume (pose, sound, device).
         keys: voxel keys occupied by the latest observation, in the octomap key space of
-            :data:`knic.kgm2.spatial.DEFAULT_RESOLUTION`; what KP' intersect with room and furniture volumes.
+            :data:`knic.spatial.DEFAULT_RESOLUTION`; what KP' intersect with room and furniture volumes.
         position: the entity's tracked centroid in the world frame, metres.
         role_priority: priority the active role gives this class / room (higher first).
         stamp: simulated time of the last update, seconds.

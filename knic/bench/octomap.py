@@ -5,7 +5,7 @@ detection's deprojected points, ray cast from the camera) into one octree per ob
 
 * raw: ``OcTree.insertPointCloud`` called directly, cloud after cloud, from the camera with its default
   arguments; and once more in the mode KGM-2 uses (``discretize=True``, rays from 1 m before the entity, see
-  :class:`~knic.kgm2.spatial.EntityOctomap`) to isolate the cost of the Python around the insertion;
+  :class:`~knic.spatial.EntityOctomap`) to isolate the cost of the Python around the insertion;
 * KGM-2: the LLKUs of each frame published on the bus with their scan marker and processed by
   :class:`~knic.kgm2.cognition.CognitiveLayer` (association, octomap update, key mirror, CKU
   publication) under a role that processes every class at every frame, so nothing is skipped.
@@ -24,12 +24,10 @@ import numpy as np
 import pyoctomap
 
 from knic.bus import Bus
-from knic.kgm1.camera import Scan
-from knic.kgm1.locations import LocationModel
 from knic.kgm2.cognition import CognitiveLayer, TrackingConfig
 from knic.kgm2.roles import Policy, Role
-from knic.kgm2.spatial import DEFAULT_RESOLUTION, Prism, VolumeSet
-from knic.units import LLKU, Kind
+from knic.spatial import DEFAULT_RESOLUTION, ROOM, Location, Prism
+from knic.units import LLKU, Kind, Scan
 
 
 class _AllVisible:
@@ -100,10 +98,11 @@ def _raw(
 
 def _kgm2(scene: list[tuple[np.ndarray, list[tuple[str, np.ndarray]]]], resolution: float) -> float:
     bus = Bus()
-    room = Prism("room", np.array([[0.0, 0.0], [8.0, 0.0], [8.0, 8.0], [0.0, 8.0]]), 0.0, 2.5)
-    locations = LocationModel(VolumeSet([room], resolution), VolumeSet([], resolution))
+    outline = np.array([[0.0, 0.0], [8.0, 0.0], [8.0, 8.0], [0.0, 8.0]])
+    room = Location("room", ROOM, outline, Prism("room", outline, 0.0, 2.5), waypoint=(4.0, 4.0))
     role = Role("bench", "every class at every frame", Policy(1000.0, 1))
-    layer = CognitiveLayer(bus, role, locations, config=TrackingConfig(resolution=resolution))
+    layer = CognitiveLayer(bus, role, config=TrackingConfig(resolution=resolution))
+    layer.locations.add(room)
     units = [
         (
             origin,

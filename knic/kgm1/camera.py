@@ -2,8 +2,9 @@
 
 Each step reads the current frame (shared between the two KPs, see :class:`~knic.kgm1.sources.SharedCamera`),
 deprojects every relevant detection's mask into world-frame points with the frame's depth, and publishes one
-LLKU per detection; then it publishes a scan marker (:class:`Scan` on ``percept.vision.scan.<kind>``) so KGM-2
-knows the frame is complete and can count misses for what the frame could have seen but did not report.
+LLKU per detection; then it publishes a scan marker (:class:`~knic.units.Scan` on
+``percept.vision.scan.<kind>``) so KGM-2 knows the frame is complete and can count misses for what the frame
+could have seen but did not report.
 
 Object detections carry a class label only (``worlds.api.Detection.identity`` is None for objects); a class
 that names exactly one item of the world is recognised as that item's symbol. People are recognised when the
@@ -14,7 +15,6 @@ from __future__ import annotations
 
 from abc import abstractmethod
 from collections.abc import Callable, Mapping
-from dataclasses import dataclass, field
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -22,8 +22,8 @@ import numpy.typing as npt
 
 from knic.bus import Bus
 from knic.kgm1.base import KnowledgeProvider
-from knic.kgm1.sources import CameraSource, FrameView, ViewModel
-from knic.units import LLKU, Kind
+from knic.kgm1.sources import CameraSource, FrameView
+from knic.units import LLKU, Kind, Scan
 
 if TYPE_CHECKING:
     from knowledge_base import KnowledgeBase
@@ -36,21 +36,6 @@ PERSON_LABEL = "person"
 #: -> whether that class's detections are wanted from this frame. Asked at most once per class and frame,
 #: before any deprojection (see :attr:`CameraKP.gate`).
 ClassGate = Callable[[str, tuple[float, float, float], float], bool]
-
-
-@dataclass(frozen=True)
-class Scan:
-    """End of one frame's units of one kind: the frame's time stamp, and what it could see.
-
-    ``withheld`` names the tracker classes whose detections the KP neither deprojected nor published for this
-    frame because the gate said they were not due: KGM-2 must not associate them nor count misses for them.
-    """
-
-    kind: Kind
-    stamp: float
-    view: ViewModel
-    sensor: str
-    withheld: frozenset[str] = field(default_factory=frozenset)
 
 
 class CameraKP(KnowledgeProvider):

@@ -14,7 +14,6 @@ from __future__ import annotations
 
 import time
 from collections.abc import Callable
-from typing import Protocol
 
 import numpy as np
 import numpy.typing as npt
@@ -29,20 +28,6 @@ PoseSource = Localisation
 SoundSource = SoundDetector
 #: the device KP's source: the home automation's readings
 DeviceSource = DeviceSensors
-
-
-class ViewModel(Protocol):
-    """What one scan could see (:class:`FrameView` for camera frames; doubles in tests and benchmarks)."""
-
-    position: npt.NDArray[np.float64]
-
-    def visible(self, points: npt.NDArray[np.float64]) -> npt.NDArray[np.bool_]:
-        """Which of the world-frame points (N, 3) the scan could have seen."""
-        ...
-
-    def optical_axis(self) -> npt.NDArray[np.float64]:
-        """The viewing direction in the world frame (unit vector)."""
-        ...
 
 
 class SharedCamera:
@@ -81,7 +66,8 @@ class SharedCamera:
 
 
 class FrameView:
-    """What one camera frame could see: the visibility test behind KGM-2's miss counter.
+    """What one camera frame could see: the visibility test behind KGM-2's miss counter (a
+    :class:`knic.units.ViewModel`).
 
     A world-frame point is visible when it projects inside the image, lies between the near plane and
     ``max_range`` metres along the optical axis, and is not hidden: the frame's depth at its pixel is at least

@@ -1,7 +1,8 @@
 """KGM-2: the cognitive model layer, turning LLKUs into CKUs with spatial abstraction and the robot's role.
 
-* :mod:`knic.kgm2.spatial` -- octomaps of rooms, furniture surfaces, tracked entities; voxel-key arithmetic.
 * :mod:`knic.kgm2.tracking` -- association over time with a radius and a miss counter (seed 002).
 * :mod:`knic.kgm2.roles` -- roles as data (``knic/roles.yaml``): rates and priorities per class and room.
-* :mod:`knic.kgm2.cognition` -- the component that runs all of it and publishes CKUs.
+* :mod:`knic.kgm2.cognition` -- the component that runs all of it and publishes CKUs (entities, places).
+
+Geometry (voxel keys, volumes, entity octomaps) is the spatial floor's, :mod:`knic.spatial`.
 """

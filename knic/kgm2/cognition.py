@@ -2,13 +2,17 @@
 
 One :class:`CognitiveLayer` component drains every percept (``percept.#``) at each step and:
 
-* groups camera units by scan (a :class:`~knic.kgm1.camera.Scan` marker closes a frame) and, per entity
+* groups camera units by scan (a :class:`~knic.units.Scan` marker closes a frame) and, per entity
   class, runs the class's :class:`~knic.kgm2.tracking.Tracker` when the role says the class is due (its
   ``rate_hz`` for the room the camera is in; rate 0: not processed at all) in decreasing role priority;
   matched and new tracks update their octomap and are published as CKUs on ``cognition.<kind>.<symbol>``;
   tracks dropped after their misses are published once with ``attributes["lost"] = True`` and no keys;
 * passes robot pose, sound and device units through as CKUs (rate-limited by the role for their class);
-* turns each location unit into a location CKU carrying the room's octomap (``cognition.location.<room>``).
+* turns each location unit into a location CKU carrying the place's octomap (``cognition.location.<name>``).
+
+The rooms the role's policies name come from the same location units: the layer adds each one to its own
+:class:`~knic.spatial.LocationModel` the moment it is published (a subscription, so a camera KP asking
+:meth:`CognitiveLayer.admits` in the same instant already finds the rooms).
 
 Everything runs inside the component's ``step`` in simulated time: no threads, no wall clock.
 """
@@ -23,13 +27,14 @@ from dataclasses import dataclass, field
 import numpy as np
 
 from knic.bus import Bus, Message, topic_level
-from knic.kgm1.camera import Scan
-from knic.kgm1.locations import LocationModel
 from knic.kgm2.roles import Policy, Role
-from knic.kgm2.spatial import DEFAULT_RESOLUTION, keys_of
 from knic.kgm2.tracking import Track, Tracker
 from knic.scheduler import Component
-from knic.units import CKU, LLKU, Kind
+from knic.spatial import DEFAULT_RESOLUTION, ROOM, Location, LocationModel, keys_of
+from knic.units import CKU, LLKU, Kind, Scan
+
+#: where KGM-1 publishes the places of the map
+LOCATION_PERCEPTS = "percept.map.location"
 
 #: tracker class of a person percept (people are one class; identity tells them apart)
 PERSON_CLASS = "person"
@@ -75,8 +80,7 @@ class CognitiveLayer(Component):
     Args:
         bus: input (``percept``) and output (``cognition``) bus.
         role: the active role.
-        locations: the static spatial model (rooms for the role's room policies).
-        config: association parameters.
+        config: association parameters (their ``resolution`` is the entity octomaps' and the CKU keys').
         frequency: Hz of simulated time; should be at least the role's top rate.
         name: component name (``source`` of the CKUs).
     """
@@ -85,7 +89,6 @@ class CognitiveLayer(Component):
         self,
         bus: Bus,
         role: Role,
-        locations: LocationModel,
         *,
         config: TrackingConfig | None = None,
         frequency: float = 10.0,
@@ -95,8 +98,10 @@ class CognitiveLayer(Component):
         self.frequency = frequency
         self.bus = bus
         self.role = role
-        self.locations = locations
         self.config = config or TrackingConfig()
+        #: the rooms and furniture received from KGM-1's location units
+        self.locations = LocationModel(self.config.resolution)
+        self._places = bus.subscribe(LOCATION_PERCEPTS, self._on_location)
         self.trackers: dict[str, Tracker] = {}
         self.stats = CognitionStats()
         self._inbox = bus.inbox("percept", capacity=20000)
@@ -110,6 +115,12 @@ class CognitiveLayer(Component):
         self.confusion_recent_s = 3.0
 
     # ------------------------------------------------------------------ lifecycle
+
+    def _on_location(self, message: Message) -> None:
+        unit = message.payload
+        location = unit.attributes.get("location") if isinstance(unit, LLKU) else None
+        if isinstance(location, Location):
+            self.locations.add(location)
 
     def step(self, now: float) -> None:
         """Process every percept received since the previous step, in arrival order, scan by scan."""
@@ -362,21 +373,7 @@ class CognitiveLayer(Component):
 
     def _passthrough(self, unit: LLKU, message: Message) -> None:
         if unit.kind is Kind.LOCATION:
-            prism = unit.attributes.get("prism")
-            cku = CKU(
-                symbol=unit.symbol,
-                cls="room",
-                kind=Kind.LOCATION,
-                octomap=prism.octree() if prism is not None else None,
-                keys=np.zeros((0, 3), dtype=np.int64),
-                position=unit.position,
-                role_priority=self.role.policy("room", unit.symbol).priority,
-                stamp=unit.stamp,
-                confidence=1.0,
-                support=(unit.uid,),
-                attributes=dict(unit.attributes),
-            )
-            self._emit(cku)
+            self._publish_location(unit)
             return
         cls = unit.label
         room = self.locations.room_at(unit.position[0], unit.position[1])
@@ -397,6 +394,29 @@ class CognitiveLayer(Component):
             role_priority=policy.priority,
             stamp=unit.stamp,
             confidence=unit.confidence,
+            support=(unit.uid,),
+            attributes=dict(unit.attributes),
+        )
+        self._emit(cku)
+
+    def _publish_location(self, unit: LLKU) -> None:
+        """A place of the map as a CKU carrying its octomap; a location unit without a place is skipped."""
+        location = unit.attributes.get("location")
+        if not isinstance(location, Location):
+            self.stats.skipped += 1
+            return
+        volume = location.volume
+        room = location.name if location.cls == ROOM else location.room
+        cku = CKU(
+            symbol=location.name,
+            cls=location.cls,
+            kind=Kind.LOCATION,
+            octomap=volume.octree() if volume is not None else None,
+            keys=np.zeros((0, 3), dtype=np.int64),
+            position=unit.position,
+            role_priority=self.role.policy(location.cls, room).priority,
+            stamp=unit.stamp,
+            confidence=1.0,
             support=(unit.uid,),
             attributes=dict(unit.attributes),
         )

@@ -31,7 +31,7 @@ import numpy as np
 import numpy.typing as npt
 
 from core.errors import InferenceError
-from knic.kgm2.spatial import DEFAULT_RESOLUTION, EntityOctomap
+from knic.spatial import DEFAULT_RESOLUTION, EntityOctomap
 from knic.units import LLKU, Keys
 
 #: Visibility test for a scan: world-frame points (N, 3) -> which of them the sensor could see.

@@ -1,7 +1,9 @@
 """Common ground of the KGM-3 KP' components: CKU streams in, PDDL facts asserted and retracted in the KB.
 
-Lifecycle: construct with the bus, the knowledge base and the static spatial model; register with the
-scheduler; each ``step(now)`` drains the CKUs received since the previous step and writes what changed. A KP'
+Lifecycle: construct with the bus and the knowledge base; register with the scheduler; each ``step(now)``
+drains the CKUs received since the previous step and writes what changed. A KP' that needs the places of the
+map (rooms, furniture) learns them from the location CKUs (``cognition.location``): each one is added to the
+KP''s own :class:`~knic.spatial.LocationModel` the moment KGM-2 publishes it, before any KP' steps. A KP'
 writes only on change (re-asserting a fact that holds with the same status is not a write), with provenance:
 status OBSERVED (ASSUMED for search candidates), ``source`` = the KP' name, ``support`` = ids of the CKUs and
 LLKUs behind the fact, ``at`` = simulated time.
@@ -20,11 +22,16 @@ from dataclasses import dataclass
 from typing import Generic, TypeVar
 
 from core.errors import KnowledgeBaseError
-from knic.bus import Bus, Inbox
+from knic.bus import Bus, Inbox, Message
 from knic.scheduler import Component
+from knic.spatial import DEFAULT_RESOLUTION, Location, LocationModel
+from knic.units import CKU
 from knowledge_base import BeliefStatus, Fact, KnowledgeBase
 
 log = logging.getLogger(__name__)
+
+#: where KGM-2 publishes the places of the map
+LOCATION_CKUS = "cognition.location"
 
 V = TypeVar("V")
 
@@ -111,16 +118,39 @@ class KPPrime(Component):
         bus: where the CKUs come from.
         kb: the knowledge base written.
         pattern: bus pattern of the CKU stream consumed (None: no inbox).
+        places: also consume the location CKUs into :attr:`locations`.
+        resolution: metres, the octomap resolution of the entity keys in the CKUs consumed (what the volume
+            queries of :attr:`locations` convert from).
     """
 
-    def __init__(self, name: str, frequency: float, bus: Bus, kb: KnowledgeBase, pattern: str | None) -> None:
+    def __init__(
+        self,
+        name: str,
+        frequency: float,
+        bus: Bus,
+        kb: KnowledgeBase,
+        pattern: str | None,
+        *,
+        places: bool = False,
+        resolution: float = DEFAULT_RESOLUTION,
+    ) -> None:
         self.name = name
         self.frequency = frequency
         self.bus = bus
         self.kb = kb
         self.inbox: Inbox | None = bus.inbox(pattern, capacity=5000) if pattern else None
+        #: the rooms and furniture received as location CKUs (empty unless ``places``)
+        self.locations = LocationModel(resolution)
+        if places:
+            bus.subscribe(LOCATION_CKUS, self._on_location)
         self.writes = WriteStats()
         self._types: dict[str, str | None] = {}
+
+    def _on_location(self, message: Message) -> None:
+        cku = message.payload
+        location = cku.attributes.get("location") if isinstance(cku, CKU) else None
+        if isinstance(location, Location):
+            self.locations.add(location)
 
     def is_a(self, symbol: str, pddl_type: str) -> bool:
         """Whether the knowledge base holds ``symbol`` as an instance of ``pddl_type`` (or a subtype)."""

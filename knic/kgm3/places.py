@@ -3,10 +3,11 @@
 
 Each consumes one CKU stream and intersects the entity's occupied voxel keys with the room prisms (the
 locations' octomaps) and the furniture support prisms (seed 004, III.C: "check the spatial intersection of
-each octomap of people with each octomap of locations"). The room holding most of an entity's voxels is where
-it is; an item whose voxels fall at least ``min_support_share`` into a surface's support prism is on that
-furniture. Once an item is believed on a surface, a view that puts too few of its voxels on it (the item at
-the frame edge or half hidden) keeps it there while the item's centre stays over the surface's footprint.
+each octomap of people with each octomap of locations"); the places come from the location CKU stream. The
+room holding most of an entity's voxels is where it is; an item whose voxels fall at least
+``min_support_share`` into a surface's support prism is on that furniture. Once an item is believed on a
+surface, a view that puts too few of its voxels on it (the item at the frame edge or half hidden) keeps it
+there while the item's centre stays over the surface's footprint.
 
 Retraction:
 
@@ -29,9 +30,8 @@ from collections import deque
 import numpy as np
 
 from knic.bus import Bus
-from knic.kgm1.locations import LocationModel
-from knic.kgm2.spatial import points_in_polygon
 from knic.kgm3.base import Confirmer, KPPrime
+from knic.spatial import DEFAULT_RESOLUTION, points_in_polygon
 from knic.units import CKU
 from knowledge_base import BeliefStatus, Fact, KnowledgeBase
 
@@ -43,14 +43,12 @@ class RobotAtKP(KPPrime):
         self,
         bus: Bus,
         kb: KnowledgeBase,
-        locations: LocationModel,
         *,
         needed: int = 2,
         frequency: float = 10.0,
         name: str = "kp'.robot_at",
     ) -> None:
-        super().__init__(name, frequency, bus, kb, "cognition.robot")
-        self.locations = locations
+        super().__init__(name, frequency, bus, kb, "cognition.robot", places=True)
         self.confirmer: Confirmer[str] = Confirmer(needed)
 
     def step(self, now: float) -> None:
@@ -93,13 +91,12 @@ class _EntityPlaceKP(KPPrime):
         bus: Bus,
         kb: KnowledgeBase,
         pattern: str,
-        locations: LocationModel,
         needed: int,
         min_confidence: float,
         explored_grace_s: float,
+        resolution: float,
     ) -> None:
-        super().__init__(name, frequency, bus, kb, pattern)
-        self.locations = locations
+        super().__init__(name, frequency, bus, kb, pattern, places=True, resolution=resolution)
         self.confirmer: Confirmer[tuple[str | None, str | None]] = Confirmer(needed, min_confidence)
         self.last_seen: dict[str, float] = {}
         self.last_position: dict[str, tuple[float, float, float]] = {}
@@ -204,6 +201,7 @@ class ObjectPlaceKP(_EntityPlaceKP):
         min_support_share: least share of the item's voxels inside a surface's support prism for object_on.
         anchors: also anchor the item's last known position in the knowledge base (``set_anchor``) when it
             moved more than ``anchor_step`` metres.
+        resolution: metres, of the CKUs' voxel keys (KGM-2's tracking resolution).
     """
 
     pddl_type = "item"
@@ -213,7 +211,6 @@ class ObjectPlaceKP(_EntityPlaceKP):
         self,
         bus: Bus,
         kb: KnowledgeBase,
-        locations: LocationModel,
         *,
         needed: int = 2,
         min_confidence: float = 0.5,
@@ -223,9 +220,10 @@ class ObjectPlaceKP(_EntityPlaceKP):
         anchor_step: float = 0.2,
         frequency: float = 5.0,
         name: str = "kp'.object_at",
+        resolution: float = DEFAULT_RESOLUTION,
     ) -> None:
         super().__init__(
-            name, frequency, bus, kb, "cognition.object", locations, needed, min_confidence, explored_grace_s
+            name, frequency, bus, kb, "cognition.object", needed, min_confidence, explored_grace_s, resolution
         )
         self.min_support_share = min_support_share
         self.anchors = anchors
@@ -315,6 +313,7 @@ class PersonPlaceKP(_EntityPlaceKP):
             (the role's ``person_ttl_s``), for a person who stood still when last seen.
         moving_ttl_s: the same for a person who was walking when last seen (faster than ``walking_speed``
             m/s over the last ``speed_window_s`` seconds of sightings): they are likely elsewhere soon.
+        resolution: metres, of the CKUs' voxel keys (KGM-2's tracking resolution).
     """
 
     pddl_type = "person"
@@ -324,7 +323,6 @@ class PersonPlaceKP(_EntityPlaceKP):
         self,
         bus: Bus,
         kb: KnowledgeBase,
-        locations: LocationModel,
         *,
         ttl_s: float = 30.0,
         needed: int = 2,
@@ -335,9 +333,10 @@ class PersonPlaceKP(_EntityPlaceKP):
         speed_window_s: float = 1.5,
         frequency: float = 5.0,
         name: str = "kp'.person_at",
+        resolution: float = DEFAULT_RESOLUTION,
     ) -> None:
         super().__init__(
-            name, frequency, bus, kb, "cognition.person", locations, needed, min_confidence, explored_grace_s
+            name, frequency, bus, kb, "cognition.person", needed, min_confidence, explored_grace_s, resolution
         )
         self.ttl_s = ttl_s
         self.moving_ttl_s = min(moving_ttl_s, ttl_s)

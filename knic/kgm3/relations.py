@@ -6,7 +6,6 @@ import itertools
 import math
 
 from knic.bus import Bus
-from knic.kgm1.locations import LocationModel
 from knic.kgm3.base import Confirmer, KPPrime
 from knic.units import CKU
 from knowledge_base import BeliefStatus, Fact, KnowledgeBase
@@ -85,21 +84,19 @@ class PersonNearKP(KPPrime):
 
 
 class SoundAtKP(KPPrime):
-    """``(sound_at ?s ?room)``: the room holding the sound's source, for ``ttl_s`` seconds after it was
-    heard."""
+    """``(sound_at ?s ?room)``: the room holding the sound's source (rooms from the location CKUs), for
+    ``ttl_s`` seconds after it was heard."""
 
     def __init__(
         self,
         bus: Bus,
         kb: KnowledgeBase,
-        locations: LocationModel,
         *,
         ttl_s: float = 2.0,
         frequency: float = 10.0,
         name: str = "kp'.sound_at",
     ) -> None:
-        super().__init__(name, frequency, bus, kb, "cognition.sound")
-        self.locations = locations
+        super().__init__(name, frequency, bus, kb, "cognition.sound", places=True)
         self.ttl_s = ttl_s
         self.heard: dict[tuple[str, str], float] = {}
 

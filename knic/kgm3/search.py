@@ -29,10 +29,9 @@ import numpy as np
 import numpy.typing as npt
 
 from knic.bus import Bus
-from knic.kgm1.camera import Scan
-from knic.kgm1.locations import LocationModel
-from knic.kgm2.spatial import points_in_polygon
 from knic.kgm3.base import KPPrime
+from knic.spatial import points_in_polygon
+from knic.units import Scan
 from knowledge_base import BeliefStatus, Fact, KnowledgeBase
 
 if TYPE_CHECKING:
@@ -66,13 +65,16 @@ def room_samples(
 
 
 class ExploredKP(KPPrime):
-    """``(explored ?room)`` from camera coverage, with a time to live (see the module docstring)."""
+    """``(explored ?room)`` from camera coverage, with a time to live (see the module docstring).
+
+    Consumes the object camera's scan markers and the location CKUs (each room's outline, every furniture
+    footprint as an obstacle); the rooms' sample points are laid out when the places have arrived.
+    """
 
     def __init__(
         self,
         bus: Bus,
         kb: KnowledgeBase,
-        locations: LocationModel,
         *,
         min_coverage: float = 0.9,
         min_headings: int = 4,
@@ -83,8 +85,7 @@ class ExploredKP(KPPrime):
         frequency: float = 5.0,
         name: str = "kp'.explored",
     ) -> None:
-        super().__init__(name, frequency, bus, kb, "percept.vision.scan.object")
-        self.locations = locations
+        super().__init__(name, frequency, bus, kb, "percept.vision.scan.object", places=True)
         self.min_coverage, self.look_around_bins, self.min_look_coverage = (
             min_coverage,
             look_around_bins,
@@ -92,27 +93,45 @@ class ExploredKP(KPPrime):
         )
         self.min_headings = min_headings
         self.ttl_s = ttl_s
-        obstacles = list(locations.footprints.values())
-        self.samples = {
-            name: room_samples(prism.polygon, obstacles, spacing=spacing)
-            for name, prism in locations.rooms.prisms.items()
-        }
-        self._seen = {name: np.full(len(s), -math.inf) for name, s in self.samples.items()}
-        self._headings = {name: np.full(8, -math.inf) for name in self.samples}
-        self._epoch = dict.fromkeys(self.samples, -math.inf)
+        self.spacing = spacing
+        #: room -> sample points (N, 3) on its floor and at table height
+        self.samples: dict[str, npt.NDArray[np.float64]] = {}
+        self._seen: dict[str, npt.NDArray[np.float64]] = {}
+        self._headings: dict[str, npt.NDArray[np.float64]] = {}
+        self._epoch: dict[str, float] = {}
+        self._places_version = -1
+
+    def _lay_out(self) -> None:
+        """(Re)compute the rooms' samples when the places changed (a room whose samples changed starts
+        over)."""
+        if self._places_version == self.locations.version:
+            return
+        self._places_version = self.locations.version
+        obstacles = list(self.locations.footprints.values())
+        for name, prism in self.locations.rooms.prisms.items():
+            samples = room_samples(prism.polygon, obstacles, spacing=self.spacing)
+            old = self.samples.get(name)
+            self.samples[name] = samples
+            if old is None or len(old) != len(samples) or not np.array_equal(old, samples):
+                self._seen[name] = np.full(len(samples), -math.inf)
+            self._headings.setdefault(name, np.full(8, -math.inf))
+            self._epoch.setdefault(name, -math.inf)
 
     def coverage(self, room: str) -> float:
         """Share of the room's samples covered since its coverage last started."""
+        self._lay_out()
         seen = self._seen[room]
         return float((seen > self._epoch[room]).mean()) if len(seen) else 0.0
 
     def headings(self, room: str) -> int:
         """How many of 8 heading sectors the camera has looked in from inside the room since then."""
+        self._lay_out()
         return int((self._headings[room] > self._epoch[room]).sum())
 
     def step(self, now: float) -> None:
         """Accumulate coverage from the scans received; assert explored rooms; expire old explored facts."""
         assert self.inbox is not None
+        self._lay_out()
         for message in self.inbox.drain():
             scan: Scan = message.payload
             pos = scan.view.position
