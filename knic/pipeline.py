@@ -26,6 +26,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Protocol
 
+from core.robot import Camera, DeviceSensors, Localisation, SoundDetector
 from knic.bus import Bus
 from knic.kgm1.camera import CameraObjectsKP, CameraPeopleKP
 from knic.kgm1.locations import LocationsKP, build_location_model
@@ -39,37 +40,20 @@ from knic.kgm3.search import CandidatesKP, ExploredKP, priors_from_world
 from knic.scheduler import Component
 from knic.spatial import LocationModel
 from knowledge_base import KnowledgeBase
-from worlds.api import CameraFrame, Pose2D, SoundEvent
 
 if TYPE_CHECKING:
     from worlds.model import World
 
 
-class SensorSuite(Protocol):
-    """Every sensor the pipeline reads, plus the simulated clock.
+class SensorSuite(Camera, Localisation, SoundDetector, DeviceSensors, Protocol):
+    """The sensor parts of the robot seam (:class:`core.robot.Robot`) the pipeline reads, plus the clock.
 
-    ``worlds.api.SimulationAPI`` satisfies it; tests pass doubles checked against it.
+    Every :class:`~core.robot.Robot` satisfies it; tests pass doubles checked against it.
     """
 
     @property
     def time(self) -> float:
-        """Simulated seconds since the start of the episode."""
-        ...
-
-    def camera_frame(self) -> CameraFrame:
-        """The camera frame now."""
-        ...
-
-    def robot_pose(self) -> Pose2D:
-        """The localisation estimate now."""
-        ...
-
-    def poll_sounds(self) -> list[SoundEvent]:
-        """Sounds heard since the previous call."""
-        ...
-
-    def device_states(self) -> dict[str, float | bool]:
-        """Every device's reading."""
+        """Seconds since the start of the episode (the robot's clock, simulated in simulation)."""
         ...
 
 

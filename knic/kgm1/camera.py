@@ -26,8 +26,8 @@ from knic.kgm1.sources import CameraSource, FrameView
 from knic.units import LLKU, Kind, Scan
 
 if TYPE_CHECKING:
+    from core.robot import CameraFrame, Detection
     from knowledge_base import KnowledgeBase
-    from worlds.api import CameraFrame, Detection
 
 PERSON_LABEL = "person"
 

@@ -10,8 +10,8 @@ from pathlib import Path
 import numpy as np
 import numpy.typing as npt
 
+from core.robot import CameraFrame, CameraIntrinsics, Detection, Pose2D, Pose3D, SoundEvent
 from knic.units import LLKU, Kind
-from worlds.api import CameraFrame, CameraIntrinsics, Detection, Pose2D, Pose3D, SoundEvent
 
 DOMAIN = Path(__file__).resolve().parents[2] / "worlds" / "erl_home" / "domain.pddl"
 

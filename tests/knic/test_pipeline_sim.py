@@ -7,6 +7,7 @@ from collections.abc import Iterator
 
 import pytest
 
+from core.robot import NavState
 from knic.bus import Message
 from knic.pipeline import Pipeline, build_pipeline
 from knic.scheduler import Scheduler
@@ -14,7 +15,7 @@ from knic.seed import seed_kb_from_world
 from knic.units import CKU, LLKU
 from knowledge_base import BeliefStatus, Fact, KnowledgeBase
 from tests.knic.synthetic import DOMAIN
-from worlds.api import NavState, NoiseConfig
+from worlds.api import NoiseConfig
 from worlds.model import World
 from worlds.simulation import Simulation
 

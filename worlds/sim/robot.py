@@ -13,7 +13,7 @@ import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 
-from worlds.api import NavState, NavStatus, Pose2D
+from core.robot import NavState, NavStatus, Pose2D
 from worlds.geometry import Point, wrap_angle
 from worlds.model import RobotSpec
 from worlds.sim.navigation import GridMap

@@ -18,7 +18,7 @@ import numpy.typing as npt
 import pybullet as pb
 
 from core.errors import WorldError
-from worlds.api import CameraIntrinsics, Pose3D
+from core.robot import CameraIntrinsics, Pose3D
 from worlds.geometry import Point
 from worlds.model import World
 from worlds.sim.navigation import wall_segments
