@@ -1,0 +1,238 @@
+"""Episodes of the Granny Annie benchmark, generated from a world's data and priors, deterministic per seed.
+
+An :class:`Episode` is everything the referee and the runner need to know about one run, decided before it
+starts:
+
+* where Annie waits (on the bed or the sofa when her priors or the world offer them, else where the world file
+  puts her);
+* where every item stands: drawn from its priors (weighted), and with probability ``placement.OFF_PRIOR_P`` on
+  furniture none of its priors names ("off-prior"); an item without priors stays where the world file puts it
+  unless it is drawn off-prior. Only spots the robot can reach from a free floor point count
+  (:func:`~knic.bench.granny_annie.placement.graspable`);
+* Annie's command: 1-3 chained ERL requests (operate a device, find an object, bring an object, accompany a
+  person to a room) phrased in the world's vocabulary (its lexicon), each with the PDDL goals it means
+  (:mod:`~knic.bench.granny_annie.commands`). With probability :data:`BANK_P` the command is one of the voice
+  bank's (``worlds/erl_home/voices/bank.yaml``) that this episode supports, read back into requests; a
+  command the bank has a recording of is spoken with probability :data:`SPOKEN_P`, else typed;
+* dynamic events as scenario events (:mod:`worlds.scenario`): the door bell with a visitor walking in, a
+  person moving an object mid-run (often one Annie asked for), people walking between rooms.
+
+Episode ``i`` of seed ``S`` draws from its own random stream ``(S, i)``: the same seed and index give the same
+episode whatever the number of episodes. A world without priors, without devices or without other people
+simply gets no request or event of the kinds it cannot support.
+"""
+
+from __future__ import annotations
+
+from dataclasses import asdict, dataclass, field
+from functools import lru_cache
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+import yaml
+
+from core.errors import KnicError
+from knic.bench.granny_annie.commands import (
+    Request,
+    candidate_requests,
+    draw_requests,
+    join_requests,
+    pick,
+    requests_of_text,
+)
+from knic.bench.granny_annie.events import draw_events
+from knic.bench.granny_annie.placement import draw_annie, draw_placements
+
+if TYPE_CHECKING:
+    from knic.language.vocabulary import Vocabulary
+    from worlds.model import World
+
+#: probability that a command with a matching recording is spoken rather than typed
+SPOKEN_P = 0.6
+#: probability that the command is drawn from the voice bank's commands this episode supports
+BANK_P = 0.35
+VOICES = Path(__file__).resolve().parents[3] / "worlds" / "erl_home" / "voices"
+ERL_LEXICON = Path(__file__).resolve().parents[3] / "worlds" / "erl_home" / "lexicon.yaml"
+
+
+@dataclass(frozen=True)
+class Episode:
+    """One generated episode (see the module docstring); JSON-able through :meth:`to_dict`.
+
+    Attributes:
+        index: position in the run (0-based); with ``seed`` it names the random stream.
+        seed: the run's seed; also the simulator's seed for this episode (``seed * 1000 + index``).
+        world: the world name or file the episode was drawn for.
+        lexicon: the lexicon file of the world's spoken names, or None.
+        annie_on: the furniture Annie waits on, or None (standing where the world file puts her).
+        annie_room: the room Annie waits in.
+        placements: item -> furniture it stands on at the start.
+        off_prior: items placed where none of their priors says.
+        requests: the chained requests, in the order Annie says them.
+        text: the whole command as said or typed.
+        audio: the voice bank recording of ``text`` when the command is spoken, else None.
+        events: scenario events (``worlds.scenario`` format), Annie's placement first.
+    """
+
+    index: int
+    seed: int
+    world: str
+    lexicon: str | None
+    annie_on: str | None
+    annie_room: str
+    placements: dict[str, str]
+    off_prior: tuple[str, ...]
+    requests: tuple[Request, ...]
+    text: str
+    audio: str | None = None
+    events: tuple[dict[str, Any], ...] = field(default_factory=tuple)
+
+    @property
+    def name(self) -> str:
+        """``ep<index>`` (file names in the output directory)."""
+        return f"ep{self.index:03d}"
+
+    @property
+    def sim_seed(self) -> int:
+        """The simulator's seed for this episode."""
+        return self.seed * 1000 + self.index
+
+    @property
+    def goals(self) -> tuple[str, ...]:
+        """Every goal of the command, in order, without duplicates."""
+        out: list[str] = []
+        for r in self.requests:
+            out += [g for g in r.goals if g not in out]
+        return tuple(out)
+
+    def to_dict(self) -> dict[str, Any]:
+        """JSON form (lists for tuples)."""
+        return json_ready(asdict(self))
+
+    @classmethod
+    def from_dict(cls, data: dict[str, Any]) -> Episode:
+        """The episode of :meth:`to_dict`'s output."""
+        d = dict(data)
+        d["requests"] = tuple(
+            Request(r["kind"], r["text"], tuple(r["goals"]), tuple(r["targets"]), r.get("room"))
+            for r in d["requests"]
+        )
+        d["off_prior"] = tuple(d["off_prior"])
+        d["events"] = tuple(d["events"])
+        return cls(**d)
+
+    def scenario(self) -> dict[str, Any]:
+        """The episode's events as a scenario document (for :func:`worlds.scenario.scenario_from_dict`)."""
+        return {
+            "name": f"granny_annie_{self.name}",
+            "description": f"Granny Annie benchmark episode {self.index} of seed {self.seed}",
+            "events": [dict(e) for e in self.events],
+        }
+
+
+def json_ready(value: Any) -> Any:
+    """Tuples as lists, recursively (for JSON and for equality after a JSON round trip)."""
+    if isinstance(value, dict):
+        return {k: json_ready(v) for k, v in value.items()}
+    if isinstance(value, list | tuple):
+        return [json_ready(v) for v in value]
+    return value
+
+
+# ---------------------------------------------------------------------------------------------- generation
+
+
+def generate_episodes(world: str | Path, count: int, seed: int) -> list[Episode]:
+    """``count`` episodes of ``world`` (a name or file) for ``seed``.
+
+    Raises:
+        core.errors.WorldError: the world cannot be loaded.
+        KnicError: the world has nothing Annie could ask for (no device, item or other person).
+    """
+    from worlds.api import load_world
+
+    loaded = load_world(world)
+    vocab = world_vocabulary(loaded)
+    return [generate_episode(loaded, str(world), seed, i, vocab) for i in range(count)]
+
+
+def generate_episode(
+    world: World, world_ref: str, seed: int, index: int, vocab: Vocabulary | None = None
+) -> Episode:
+    """Episode ``index`` of ``seed`` in ``world`` (see the module docstring); ``vocab`` defaults to
+    :func:`world_vocabulary`."""
+    rng = np.random.default_rng([seed, index])
+    vocab = vocab or world_vocabulary(world)
+    annie_on, annie_room = draw_annie(world, rng)
+    placements, off_prior = draw_placements(world, rng)
+    candidates = candidate_requests(world, vocab, placements)
+    usable = [(t, wav, rs) for t, wav in voice_bank() if (rs := requests_of_text(t, candidates)) is not None]
+    from_bank = rng.random() < BANK_P
+    if usable and from_bank:
+        text, _wav, requests = pick(rng, usable)
+    else:
+        requests = draw_requests(world, vocab, rng, placements)
+        if not requests:
+            raise KnicError(f"world {world.name}: nothing Annie could ask for (no device, item or person)")
+        text = join_requests([r.text for r in requests])
+    recorded = bank_recording(text)
+    spoken = rng.random() < SPOKEN_P
+    audio = str(recorded) if recorded is not None and spoken else None
+    events = draw_events(world, rng, requests, placements, annie_on)
+    return Episode(
+        index=index,
+        seed=seed,
+        world=world_ref,
+        lexicon=str(lexicon_of(world)) if lexicon_of(world) else None,
+        annie_on=annie_on,
+        annie_room=annie_room,
+        placements=placements,
+        off_prior=tuple(off_prior),
+        requests=tuple(requests),
+        text=text,
+        audio=audio,
+        events=tuple(events),
+    )
+
+
+def lexicon_of(world: World) -> Path | None:
+    """The lexicon beside the world file, else the ERL apartment's (entries for absent symbols are
+    ignored)."""
+    if world.source is not None and (world.source.parent / "lexicon.yaml").is_file():
+        return world.source.parent / "lexicon.yaml"
+    return ERL_LEXICON if ERL_LEXICON.is_file() else None
+
+
+def world_vocabulary(world: World, lexicon: str | Path | None = None) -> Vocabulary:
+    """The spoken vocabulary of ``world``: its symbols in the ERL domain plus its lexicon."""
+    from knic.language.vocabulary import Vocabulary
+    from knic.seed import seed_kb_from_world
+    from knic.system.config import DOMAIN
+    from knowledge_base import KnowledgeBase
+
+    kb = KnowledgeBase.from_pddl(DOMAIN)
+    seed_kb_from_world(kb, world)
+    return Vocabulary.from_knowledge_base(kb, lexicon or lexicon_of(world))
+
+
+@lru_cache(maxsize=1)
+def voice_bank() -> tuple[tuple[str, Path], ...]:
+    """(text, WAV file) of the shipped voice bank's requests whose recording exists."""
+    bank = VOICES / "bank.yaml"
+    if not bank.is_file():
+        return ()
+    data = yaml.safe_load(bank.read_text(encoding="utf-8")) or {}
+    return tuple(
+        (str(u["text"]), VOICES / str(u["file"]))
+        for u in data.get("utterances", [])
+        if u.get("kind") == "request" and (VOICES / str(u["file"])).is_file()
+    )
+
+
+def bank_recording(text: str) -> Path | None:
+    """The voice bank's recording of exactly ``text`` (punctuation and case aside), or None."""
+    from knic.language.vocabulary import normalize
+
+    wanted = normalize(text)
+    return next((wav for t, wav in voice_bank() if normalize(t) == wanted), None)
