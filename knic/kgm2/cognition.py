@@ -101,6 +101,8 @@ class CognitiveLayer(Component):
         self.config = config or TrackingConfig()
         #: the rooms and furniture received from KGM-1's location units
         self.locations = LocationModel(self.config.resolution)
+        for message in bus.latest(LOCATION_PERCEPTS):  # places published before this layer was built
+            self._on_location(message)
         self._places = bus.subscribe(LOCATION_PERCEPTS, self._on_location)
         self.trackers: dict[str, Tracker] = {}
         self.stats = CognitionStats()

@@ -141,7 +141,9 @@ class KPPrime(Component):
         self.inbox: Inbox | None = bus.inbox(pattern, capacity=5000) if pattern else None
         #: the rooms and furniture received as location CKUs (empty unless ``places``)
         self.locations = LocationModel(resolution)
-        if places:
+        if places:  # the places published before this KP' was built are on the bus's whiteboard
+            for message in bus.latest(LOCATION_CKUS):
+                self._on_location(message)
             bus.subscribe(LOCATION_CKUS, self._on_location)
         self.writes = WriteStats()
         self._types: dict[str, str | None] = {}

@@ -4,8 +4,9 @@ from __future__ import annotations
 
 import pytest
 
-from knic.kgm1.locations import LocationModel, build_location_model
+from knic.kgm1.locations import build_location_model
 from knic.seed import seed_kb_from_world
+from knic.spatial import LocationModel
 from knowledge_base import KnowledgeBase
 from tests.knic.synthetic import DOMAIN
 from worlds.api import load_world

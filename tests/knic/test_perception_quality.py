@@ -11,17 +11,18 @@ import math
 import numpy as np
 
 from knic.bus import Bus, Message
-from knic.kgm1.camera import CameraObjectsKP, Scan
-from knic.kgm1.locations import LocationModel
+from knic.kgm1.camera import CameraObjectsKP
 from knic.kgm1.sources import FrameView
 from knic.kgm2.cognition import CognitiveLayer
 from knic.kgm2.roles import load_role
 from knic.kgm2.tracking import Tracker
 from knic.kgm3.places import ObjectPlaceKP, PersonPlaceKP
 from knic.kgm3.search import CandidatesKP, ExploredKP
-from knic.units import LLKU, Kind
+from knic.spatial import LocationModel
+from knic.units import LLKU, Kind, Scan
 from knowledge_base import BeliefStatus, KnowledgeBase
 from tests.knic.kgm3.helpers import cku, send
+from tests.knic.places import publish_place_ckus, publish_place_percepts
 from tests.knic.synthetic import FakeSensors, frame, percept
 from worlds.model import World
 
@@ -89,7 +90,8 @@ def test_driving_through_a_room_does_not_explore_it(
     paper_kb: KnowledgeBase, paper_locations: LocationModel
 ) -> None:
     bus = Bus()
-    explored = ExploredKP(bus, paper_kb, paper_locations)
+    publish_place_ckus(bus, paper_locations)
+    explored = ExploredKP(bus, paper_kb)
     x, y = paper_locations.waypoints["kitchen"]
     t = 0.0
     for dx in (-1.5, -1.0, -0.5, 0.0, 0.5, 1.0, 1.5):  # straight across, looking ahead
@@ -127,7 +129,8 @@ def test_a_first_sighting_never_moves_the_anchor(
     paper_kb: KnowledgeBase, paper_locations: LocationModel
 ) -> None:
     bus = Bus()
-    places = ObjectPlaceKP(bus, paper_kb, paper_locations, needed=2)
+    publish_place_ckus(bus, paper_locations)
+    places = ObjectPlaceKP(bus, paper_kb, needed=2)
     shelf = (7.75, 1.5, 0.92)
     for i, t in enumerate((1.0, 1.2)):
         send(bus, cku("glasses", Kind.OBJECT, shelf, t, hits=5 + i))
@@ -147,7 +150,8 @@ def test_a_first_sighting_never_moves_the_anchor(
 
 def test_a_confused_label_on_another_settled_object_moves_nothing(paper_locations: LocationModel) -> None:
     bus = Bus()
-    layer = CognitiveLayer(bus, load_role("all_top_rate"), paper_locations)
+    layer = CognitiveLayer(bus, load_role("all_top_rate"))
+    publish_place_percepts(bus, paper_locations)
     view = FrameView(frame(0.0, (5.0, 2.0, 1.2, 0.0)), max_range=4.0)
     soap, sponge = (7.7, 2.0, 0.92), (7.7, 2.25, 0.92)  # 0.25 m apart: within the soap track radius
 
@@ -183,7 +187,8 @@ def test_a_confused_label_on_another_settled_object_moves_nothing(paper_location
 def glasses_on_the_shelf(kb: KnowledgeBase, locations: LocationModel) -> tuple[Bus, ObjectPlaceKP]:
     """The object place KP' after two sightings of the glasses on the entrance shelf (t = 1.0 and 1.2)."""
     bus = Bus()
-    places = ObjectPlaceKP(bus, kb, locations, needed=2)
+    publish_place_ckus(bus, locations)
+    places = ObjectPlaceKP(bus, kb, needed=2)
     for t in (1.0, 1.2):
         send(bus, cku("glasses", Kind.OBJECT, (7.75, 1.5, 0.92), t, hits=3))
     places.step(1.2)
@@ -218,8 +223,9 @@ def test_a_person_last_seen_walking_expires_sooner(
     paper_kb: KnowledgeBase, paper_locations: LocationModel
 ) -> None:
     bus = Bus()
+    publish_place_ckus(bus, paper_locations)
     paper_kb.add_instance("person", "tracy")
-    kp = PersonPlaceKP(bus, paper_kb, paper_locations, ttl_s=30.0, moving_ttl_s=8.0, needed=2)
+    kp = PersonPlaceKP(bus, paper_kb, ttl_s=30.0, moving_ttl_s=8.0, needed=2)
     for i in range(6):  # annie sits still; tracy walks along the bedroom at 1 m/s
         t = 1.0 + 0.4 * i
         send(bus, cku("annie", Kind.PERSON, (1.1, 6.6, 0.8), t, cls="person"))

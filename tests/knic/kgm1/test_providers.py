@@ -7,11 +7,12 @@ import math
 import numpy as np
 
 from knic.bus import Bus, Message
-from knic.kgm1.camera import CameraObjectsKP, CameraPeopleKP, Scan
-from knic.kgm1.locations import LocationModel, LocationsKP
+from knic.kgm1.camera import CameraObjectsKP, CameraPeopleKP
+from knic.kgm1.locations import LocationsKP
 from knic.kgm1.providers import DeviceKP, RobotPoseKP, SoundKP
 from knic.kgm1.sources import CameraSource, FrameView, SharedCamera
-from knic.units import LLKU, Kind
+from knic.spatial import FURNITURE, ROOM, LocationModel
+from knic.units import LLKU, Kind, Scan
 from knowledge_base import BeliefStatus, KnowledgeBase
 from tests.knic.synthetic import FakeSensors, frame
 from worlds.api import Pose2D, SoundEvent
@@ -115,15 +116,25 @@ def test_pose_sound_and_device_providers(paper_kb: KnowledgeBase) -> None:
     assert paper_kb.type_of("doorbell") == "sound"  # met for the first time
 
 
-def test_locations_kp_publishes_one_octomap_per_room_once(paper_locations: LocationModel) -> None:
+def test_locations_kp_publishes_every_place_once(paper_locations: LocationModel) -> None:
     bus = Bus()
     got = collect(bus, "percept.map.location")
     kp = LocationsKP(paper_locations, bus)
     kp.step(0.0)
     kp.step(10.0)
-    assert [m.payload.identity for m in got] == ["bedroom", "kitchen", "entrance", "living_room"]
-    prism = got[0].payload.attributes["prism"]
-    assert prism.octree().getNumLeafNodes() > 0
+    places = [m.payload.attributes["location"] for m in got]
+    rooms = [p.name for p in places if p.cls == ROOM]
+    furniture = [p.name for p in places if p.cls == FURNITURE]
+    assert rooms == ["bedroom", "kitchen", "entrance", "living_room"]
+    assert furniture == list(paper_locations.footprints) and "entrance_shelf" in furniture
+    assert [m.payload.identity for m in got] == rooms + furniture
+    assert got[0].topic == "percept.map.location.bedroom"
+    # each room's octomap is built before it is published; a surface carries its support volume's
+    bedroom = places[0].volume
+    assert bedroom is not None and bedroom.octree().getNumLeafNodes() > 0
+    assert got[0].payload.attributes["voxels"] == bedroom.voxel_count
+    shelf = places[len(rooms) + furniture.index("entrance_shelf")]
+    assert shelf.volume is not None and shelf.room == "entrance"
 
 
 def test_camera_gate_withholds_classes_before_deprojection(paper_kb: KnowledgeBase) -> None:

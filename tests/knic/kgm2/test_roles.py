@@ -8,12 +8,12 @@ import pytest
 
 from core.errors import InferenceError
 from knic.bus import Bus, Message
-from knic.kgm1.camera import Scan
-from knic.kgm1.locations import LocationModel
 from knic.kgm1.sources import FrameView
 from knic.kgm2.cognition import CognitiveLayer
 from knic.kgm2.roles import Policy, Role, load_role, load_roles
-from knic.units import CKU, Kind
+from knic.spatial import LocationModel
+from knic.units import CKU, Kind, Scan
+from tests.knic.places import publish_place_percepts
 from tests.knic.synthetic import frame, percept
 
 
@@ -49,7 +49,8 @@ def test_bad_role_files(tmp_path: Path) -> None:
 def feed(role: Role, locations: LocationModel, seconds: float = 2.0) -> dict[str, list[CKU]]:
     """Glasses and a mug seen in the entrance in every 10 Hz frame; CKUs published per symbol."""
     bus = Bus()
-    layer = CognitiveLayer(bus, role, locations)
+    layer = CognitiveLayer(bus, role)
+    publish_place_percepts(bus, locations)
     out: dict[str, list[CKU]] = {}
 
     def collect(m: Message) -> None:
@@ -83,7 +84,8 @@ def test_roles_change_what_is_processed(paper_locations: LocationModel) -> None:
 
 def test_cku_carries_octomap_keys_and_support(paper_locations: LocationModel) -> None:
     bus = Bus()
-    layer = CognitiveLayer(bus, load_role("all_top_rate"), paper_locations)
+    layer = CognitiveLayer(bus, load_role("all_top_rate"))
+    publish_place_percepts(bus, paper_locations)
     box = bus.inbox("cognition.object.glasses")
     unit = percept(Kind.OBJECT, "glasses", (7.75, 1.5, 0.92), 1.0, identity="glasses")
     bus.publish("percept.vision.object.glasses", unit, source="kp", stamp=1.0)
@@ -110,7 +112,8 @@ def gated_feed(
     """As :func:`feed`, but the 10 Hz frames go through the layer's early filter as a camera KP would ask it:
     per class, before the units exist. Returns the units admitted per class and the layer."""
     bus = Bus()
-    layer = CognitiveLayer(bus, role, locations)
+    layer = CognitiveLayer(bus, role)
+    publish_place_percepts(bus, locations)
     view = FrameView(frame(0.0, (5.0, 2.0, 1.2, 0.0)), max_range=4.0)
     admitted: dict[str, int] = {"glasses": 0, "mug": 0}
     for i in range(int(seconds * 10)):

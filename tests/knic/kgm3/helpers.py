@@ -7,7 +7,7 @@ from typing import Any
 import numpy as np
 
 from knic.bus import Bus
-from knic.kgm2.spatial import keys_of, unique_keys
+from knic.spatial import keys_of, unique_keys
 from knic.units import CKU, Kind
 from tests.knic.synthetic import blob
 

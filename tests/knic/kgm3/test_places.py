@@ -3,11 +3,12 @@
 from __future__ import annotations
 
 from knic.bus import Bus
-from knic.kgm1.locations import LocationModel
 from knic.kgm3.places import ObjectPlaceKP, PersonPlaceKP, RobotAtKP
+from knic.spatial import LocationModel
 from knic.units import Kind
 from knowledge_base import BeliefStatus, Fact, KnowledgeBase
 from tests.knic.kgm3.helpers import cku, send
+from tests.knic.places import publish_place_ckus
 
 KITCHEN = (5.5, 5.3, 0.0)
 BEDROOM = (2.8, 5.3, 0.0)
@@ -18,7 +19,8 @@ def test_robot_at_switches_after_consistent_readings_and_does_not_flap(
     paper_kb: KnowledgeBase, paper_locations: LocationModel
 ) -> None:
     bus = Bus()
-    kp = RobotAtKP(bus, paper_kb, paper_locations, needed=2)
+    publish_place_ckus(bus, paper_locations)
+    kp = RobotAtKP(bus, paper_kb, needed=2)
     assert paper_kb.holds("robot_at", "r2d2", "bedroom")
     t = 0.0
     for place in (KITCHEN, BEDROOM, KITCHEN, BEDROOM, KITCHEN):  # noise alternating between two rooms
@@ -39,7 +41,8 @@ def test_object_on_furniture_found_and_anchored(
     paper_kb: KnowledgeBase, paper_locations: LocationModel
 ) -> None:
     bus = Bus()
-    kp = ObjectPlaceKP(bus, paper_kb, paper_locations, needed=2)
+    publish_place_ckus(bus, paper_locations)
+    kp = ObjectPlaceKP(bus, paper_kb, needed=2)
     send(bus, cku("glasses", Kind.OBJECT, SHELF_TOP, 1.0))
     kp.step(1.0)
     assert not paper_kb.facts("object_at", "glasses")  # one sighting is not enough
@@ -58,7 +61,8 @@ def test_object_moved_to_another_room_retracts_the_old_place(
     paper_kb: KnowledgeBase, paper_locations: LocationModel
 ) -> None:
     bus = Bus()
-    kp = ObjectPlaceKP(bus, paper_kb, paper_locations, needed=2)
+    publish_place_ckus(bus, paper_locations)
+    kp = ObjectPlaceKP(bus, paper_kb, needed=2)
     for t in (1.0, 1.2):
         send(bus, cku("glasses", Kind.OBJECT, SHELF_TOP, t))
     kp.step(1.2)
@@ -71,7 +75,8 @@ def test_object_moved_to_another_room_retracts_the_old_place(
 
 def test_lost_track_retracts_place_and_found(paper_kb: KnowledgeBase, paper_locations: LocationModel) -> None:
     bus = Bus()
-    kp = ObjectPlaceKP(bus, paper_kb, paper_locations, needed=2)
+    publish_place_ckus(bus, paper_locations)
+    kp = ObjectPlaceKP(bus, paper_kb, needed=2)
     for t in (1.0, 1.2):
         send(bus, cku("glasses", Kind.OBJECT, SHELF_TOP, t))
     kp.step(1.2)
@@ -86,7 +91,8 @@ def test_explored_room_without_the_object_retracts_the_belief(
     paper_kb: KnowledgeBase, paper_locations: LocationModel, clock: list[float]
 ) -> None:
     bus = Bus()
-    kp = ObjectPlaceKP(bus, paper_kb, paper_locations, needed=2, explored_grace_s=5.0)
+    publish_place_ckus(bus, paper_locations)
+    kp = ObjectPlaceKP(bus, paper_kb, needed=2, explored_grace_s=5.0)
     paper_kb.add_fact("object_at", "glasses", "kitchen", source="problem", at=0.0)
     paper_kb.add_fact("explored", "kitchen", source="kp'.explored", at=30.0, status=BeliefStatus.OBSERVED)
     kp.step(30.0)  # the camera may still see it in the next instants
@@ -99,7 +105,8 @@ def test_items_in_the_hand_are_left_to_the_actions(
     paper_kb: KnowledgeBase, paper_locations: LocationModel
 ) -> None:
     bus = Bus()
-    kp = ObjectPlaceKP(bus, paper_kb, paper_locations, needed=1)
+    publish_place_ckus(bus, paper_locations)
+    kp = ObjectPlaceKP(bus, paper_kb, needed=1)
     paper_kb.add_fact("holding", "r2d2", "glasses", source="dispatcher", at=0.0)
     send(bus, cku("glasses", Kind.OBJECT, (5.5, 5.3, 0.9), 1.0))
     kp.step(1.0)
@@ -108,7 +115,8 @@ def test_items_in_the_hand_are_left_to_the_actions(
 
 def test_person_at_with_time_to_live(paper_kb: KnowledgeBase, paper_locations: LocationModel) -> None:
     bus = Bus()
-    kp = PersonPlaceKP(bus, paper_kb, paper_locations, ttl_s=30.0, needed=2)
+    publish_place_ckus(bus, paper_locations)
+    kp = PersonPlaceKP(bus, paper_kb, ttl_s=30.0, needed=2)
     for t in (1.0, 1.2):
         send(bus, cku("annie", Kind.PERSON, (1.1, 6.6, 0.8), t, cls="person"))
     send(bus, cku("person_7", Kind.PERSON, (6.0, 6.0, 1.0), 1.2, cls="person"))  # unrecognised: no fact
@@ -125,7 +133,8 @@ def test_sporadic_false_sightings_far_apart_in_time_never_add_up(
     paper_kb: KnowledgeBase, paper_locations: LocationModel
 ) -> None:
     bus = Bus()
-    kp = ObjectPlaceKP(bus, paper_kb, paper_locations, needed=2)
+    publish_place_ckus(bus, paper_locations)
+    kp = ObjectPlaceKP(bus, paper_kb, needed=2)
     for t in (1.0, 1.2):
         send(bus, cku("glasses", Kind.OBJECT, SHELF_TOP, t))
     kp.step(1.2)

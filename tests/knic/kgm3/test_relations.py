@@ -3,11 +3,13 @@
 from __future__ import annotations
 
 from knic.bus import Bus
-from knic.kgm1.locations import LocationModel, build_location_model
+from knic.kgm1.locations import build_location_model
 from knic.kgm3.relations import DeviceStateKP, PersonNearKP, SoundAtKP, level_of
+from knic.spatial import LocationModel
 from knic.units import Kind
 from knowledge_base import BeliefStatus, Fact, KnowledgeBase
 from tests.knic.kgm3.helpers import cku, send
+from tests.knic.places import publish_place_ckus
 from worlds.model import World
 
 
@@ -35,7 +37,8 @@ def test_person_near_with_hysteresis_both_orders(paper_kb: KnowledgeBase) -> Non
 def test_sound_at_lives_for_its_ttl(home_kb: KnowledgeBase, home_world: World) -> None:
     locations: LocationModel = build_location_model(home_world)
     bus = Bus()
-    kp = SoundAtKP(bus, home_kb, locations, ttl_s=2.0)
+    publish_place_ckus(bus, locations)
+    kp = SoundAtKP(bus, home_kb, ttl_s=2.0)
     send(bus, cku("doorbell", Kind.SOUND, (4.1, 0.2, 1.5), 3.0, cls="doorbell"))
     kp.step(3.0)
     assert home_kb.facts("sound_at") == [Fact("sound_at", ("doorbell", "entrance_hall"))]

@@ -5,14 +5,14 @@ from __future__ import annotations
 import math
 
 from knic.bus import Bus
-from knic.kgm1.camera import Scan
-from knic.kgm1.locations import LocationModel
 from knic.kgm1.sources import FrameView
 from knic.kgm3.places import ObjectPlaceKP
 from knic.kgm3.search import CandidatesKP, ExploredKP, priors_from_world
-from knic.units import Kind
+from knic.spatial import LocationModel
+from knic.units import Kind, Scan
 from knowledge_base import BeliefStatus, Fact, KnowledgeBase
 from tests.knic.kgm3.helpers import cku, send
+from tests.knic.places import publish_place_ckus
 from tests.knic.synthetic import frame
 from worlds.model import World
 
@@ -41,8 +41,9 @@ def test_the_paper_search_sequence(
     paper_kb: KnowledgeBase, paper_world: World, paper_locations: LocationModel
 ) -> None:
     bus = Bus()
-    explored = ExploredKP(bus, paper_kb, paper_locations, ttl_s=120.0)
-    places = ObjectPlaceKP(bus, paper_kb, paper_locations, needed=2)
+    publish_place_ckus(bus, paper_locations)
+    explored = ExploredKP(bus, paper_kb, ttl_s=120.0)
+    places = ObjectPlaceKP(bus, paper_kb, needed=2)
     cands = CandidatesKP(bus, paper_kb, priors_from_world(paper_world), list(paper_world.rooms))
     cands.step(0.0)
     assert candidates(paper_kb, "glasses") == {"kitchen", "entrance", "living_room"}
@@ -68,7 +69,8 @@ def test_explored_expires_and_a_lost_object_is_searched_again(
     paper_kb: KnowledgeBase, paper_world: World, paper_locations: LocationModel
 ) -> None:
     bus = Bus()
-    explored = ExploredKP(bus, paper_kb, paper_locations, ttl_s=60.0)
+    publish_place_ckus(bus, paper_locations)
+    explored = ExploredKP(bus, paper_kb, ttl_s=60.0)
     cands = CandidatesKP(bus, paper_kb, priors_from_world(paper_world), list(paper_world.rooms))
     t = look_around(bus, paper_locations.waypoints["kitchen"], 0.0)
     explored.step(t)
@@ -86,7 +88,8 @@ def test_a_wall_in_front_of_the_camera_explores_nothing(
     paper_kb: KnowledgeBase, paper_locations: LocationModel
 ) -> None:
     bus = Bus()
-    explored = ExploredKP(bus, paper_kb, paper_locations)
+    publish_place_ckus(bus, paper_locations)
+    explored = ExploredKP(bus, paper_kb)
     t = look_around(bus, paper_locations.waypoints["kitchen"], 0.0, depth=0.3)
     explored.step(t)
     assert explored.coverage("kitchen") < 0.1 and not paper_kb.holds("explored", "kitchen")

@@ -1,4 +1,5 @@
-"""Octomaps of rooms (from the 2D map) and of tracked entities; key arithmetic against pyoctomap."""
+"""The spatial floor: octomaps of rooms (from the 2D map) and of tracked entities, key arithmetic against
+pyoctomap, the places model a level builds from location units."""
 
 from __future__ import annotations
 
@@ -7,11 +8,15 @@ import pyoctomap
 import pytest
 
 from core.errors import InferenceError
-from knic.kgm1.locations import LocationModel
-from knic.kgm2.spatial import (
+from knic.spatial import (
     DEFAULT_RESOLUTION,
+    FURNITURE,
+    ROOM,
     EntityOctomap,
+    Location,
+    LocationModel,
     Prism,
+    VolumeSet,
     coarsen,
     key_centers,
     keys_of,
@@ -81,3 +86,46 @@ def test_bad_prisms_are_refused() -> None:
         Prism("x", np.array([[0.0, 0.0], [1.0, 1.0]]), 0.0, 1.0)
     with pytest.raises(InferenceError, match="z_max"):
         Prism("x", np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0]]), 1.0, 1.0)
+
+
+SQUARE = np.array([[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]])
+
+
+def test_places_are_learnt_one_unit_at_a_time_in_map_order(paper_locations: LocationModel) -> None:
+    model = LocationModel()
+    for location in paper_locations:
+        model.add(location)
+    assert model.rooms.names() == paper_locations.rooms.names()
+    assert model.furniture.names() == paper_locations.furniture.names()
+    assert model.footprints.keys() == paper_locations.footprints.keys()
+    assert model.furniture_room == paper_locations.furniture_room
+    assert model.waypoints == paper_locations.waypoints
+    # every piece of furniture is a place; only surfaces carry a support volume
+    pieces = [p for p in paper_locations if p.cls == FURNITURE]
+    assert len(pieces) == len(paper_locations.footprints) >= len(paper_locations.furniture)
+    # a place published again replaces the old one in its position
+    first = model.rooms.names()[0]
+    again = Location(first, ROOM, SQUARE, Prism(first, SQUARE, 0.0, 2.5), waypoint=(1.0, 1.0))
+    model.add(again)
+    assert model.rooms.names() == paper_locations.rooms.names()
+    assert model.rooms.prisms[first] is again.volume and model.waypoints[first] == (1.0, 1.0)
+
+
+def test_volume_sets_take_their_resolution_from_the_first_volume() -> None:
+    rooms = VolumeSet()
+    assert rooms.resolution == DEFAULT_RESOLUTION and len(rooms) == 0
+    rooms.add(Prism("a", SQUARE, 0.0, 2.5, 0.1))
+    assert rooms.resolution == 0.1
+    assert rooms.best(keys_of(blob((1.0, 1.0, 1.0)))) == ("a", 1.0)
+    with pytest.raises(InferenceError, match="resolution"):
+        rooms.add(Prism("b", SQUARE + 3.0, 0.0, 2.5, 0.05))
+    assert rooms.names() == ["a"]
+    with pytest.raises(InferenceError, match="power of two"):
+        VolumeSet([Prism("c", SQUARE, 0.0, 1.0, 0.07)])
+
+
+def test_bad_places_are_refused() -> None:
+    with pytest.raises(InferenceError, match="not room or furniture"):
+        Location("x", "door", SQUARE)
+    with pytest.raises(InferenceError, match="needs its volume"):
+        Location("x", ROOM, SQUARE)
