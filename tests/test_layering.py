@@ -2,7 +2,8 @@
 
 Layers, bottom first: ``core`` -> ``knowledge_base`` -> ``actions`` -> ``planner`` -> ``knic``;
 ``worlds`` (the simulator behind the robot seam) stands on ``core`` only. Inside ``knic`` the KGM levels
-stack KGM-3 -> KGM-2 -> KGM-1 -> (units, bus, scheduler), and language understanding needs none of them.
+stack KGM-3 -> KGM-2 -> KGM-1 -> (spatial floor, units, bus, scheduler); the floor (``knic.spatial``: voxel
+keys, volumes, octomaps, places) stands on the units alone, and language understanding needs none of them.
 Every import counts: module level, inside functions and under ``TYPE_CHECKING``.
 """
 
@@ -29,7 +30,27 @@ ALLOWED: dict[str, frozenset[str]] = {
 
 #: module prefix inside knic -> module prefixes it must never import
 KNIC_FORBIDDEN: dict[str, tuple[str, ...]] = {
-    "knic.units": ("knic.kgm1", "knic.kgm2", "knic.kgm3", "knic.system", "knic.cli", "knic.bench"),
+    "knic.units": (
+        "knic.spatial",
+        "knic.kgm1",
+        "knic.kgm2",
+        "knic.kgm3",
+        "knic.system",
+        "knic.cli",
+        "knic.bench",
+    ),
+    "knic.spatial": (
+        "knic.bus",
+        "knic.scheduler",
+        "knic.pipeline",
+        "knic.kgm1",
+        "knic.kgm2",
+        "knic.kgm3",
+        "knic.system",
+        "knic.language",
+        "knic.cli",
+        "knic.bench",
+    ),
     "knic.bus": ("knic.kgm1", "knic.kgm2", "knic.kgm3", "knic.system", "knic.cli", "knic.bench"),
     "knic.scheduler": ("knic.kgm1", "knic.kgm2", "knic.kgm3", "knic.system", "knic.cli", "knic.bench"),
     "knic.kgm1": ("knic.kgm2", "knic.kgm3", "knic.system", "knic.language", "knic.cli", "knic.bench"),
@@ -166,6 +187,8 @@ def test_modules_stay_small() -> None:
         ({"actions.erl.context": {"knic.bus"}}, ["actions.erl.context -> knic.bus"]),
         ({"knic.kgm1.camera": {"knic.kgm2.spatial"}}, ["knic.kgm1.camera -> knic.kgm2.spatial"]),
         ({"knic.kgm3.places": {"knic.kgm2.tracking"}}, []),
+        ({"knic.spatial.volumes": {"knic.kgm2.roles"}}, ["knic.spatial.volumes -> knic.kgm2.roles"]),
+        ({"knic.kgm1.locations": {"knic.spatial.volumes"}}, []),
     ],
 )
 def test_the_checker_catches_upward_edges(graph: dict[str, set[str]], expected: list[str]) -> None:
