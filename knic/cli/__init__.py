@@ -25,6 +25,7 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "say": ("knic.cli.say", "turn a spoken command (WAV) into PDDL goals"),
     "listen": ("knic.cli.listen", "listen to a microphone or stream and print the commands heard"),
     "bench": ("knic.cli.bench", "run a benchmark and print its figures"),
+    "serve": ("knic.cli.serve", "show the robot's mind live in a browser (facts, why, map, trace, goals)"),
 }
 
 

@@ -33,6 +33,7 @@ from typing import TYPE_CHECKING, Any, TextIO
 
 from core.errors import KnicError, LanguageError
 from knic.cli.say import add_acoustic_argument
+from knic.cli.serve import add_run_serve_arguments, run_journal, serving
 
 if TYPE_CHECKING:
     from knic.kgm2.roles import Role
@@ -87,6 +88,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         help="a spoken yes or no, one per confirmation question, in order (repeatable)",
     )
     add_acoustic_argument(parser)
+    add_run_serve_arguments(parser)
     parser.add_argument("--seed", type=int, default=0, help="seed of the simulation (default 0)")
     parser.add_argument("--trace", type=Path, metavar="FILE.jsonl", help="write the trace as JSON lines")
     parser.add_argument(
@@ -115,6 +117,7 @@ def run(args: argparse.Namespace) -> int:
             if not Path(wav).is_file():
                 raise KnicError(f"knic run: {option} {wav}: no such file")
     role = load_role(args.role)
+    journal = run_journal(args)  # with --serve: checks the options, picks a journal
     listen = answer_source(args, role)  # refuses before anything is built when it cannot ask
     trace_file = args.trace.open("w", encoding="utf-8") if args.trace else None
     try:
@@ -124,11 +127,11 @@ def run(args: argparse.Namespace) -> int:
             seed=args.seed,
             role=args.role,
             max_sim_time=args.max_sim_time,
-            journal=args.journal,
+            journal=journal,
             trace_stream=trace_file,
             gui=args.gui,
         )
-        with KnicSystem(config) as system:
+        with KnicSystem(config) as system, serving(args, system, journal):
             dialogue = None
             if listen is not None:
                 dialogue = run_dialogue(system, listen, sys.stderr if args.json else sys.stdout)
