@@ -46,8 +46,8 @@ def test_rooms_and_furniture_reach_the_kp_prime_through_the_location_ckus(
         ckus.append(message.payload)
 
     pipeline.bus.subscribe("cognition.location", record)
-    readers = [pipeline.component(name) for name in PLACE_READERS]
-    assert all(isinstance(kp, KPPrime) and len(kp.locations) == 0 for kp in readers)
+    readers = [kp for kp in pipeline if isinstance(kp, KPPrime) and kp.name in PLACE_READERS]
+    assert len(readers) == len(PLACE_READERS) and all(len(kp.locations) == 0 for kp in readers)
     assert len(pipeline.cognition.locations) == 0
 
     scheduler = Scheduler(real_time_factor=1.0)
