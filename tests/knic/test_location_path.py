@@ -11,6 +11,7 @@ from collections.abc import Iterator
 import pytest
 
 from knic.bus import Message
+from knic.kgm2.cognition import CognitiveLayer
 from knic.kgm3.base import KPPrime
 from knic.pipeline import build_pipeline
 from knic.scheduler import Scheduler
@@ -68,7 +69,8 @@ def test_rooms_and_furniture_reach_the_kp_prime_through_the_location_ckus(
     assert surfaces == {f.name for f in paper_world.furniture.values() if f.surface}
 
     # every reader learnt the same places from the stream, none was handed the map KGM-1 read
-    for kp in [pipeline.cognition, *readers]:
+    holders: list[CognitiveLayer | KPPrime] = [pipeline.cognition, *readers]
+    for kp in holders:
         model = kp.locations
         assert model is not pipeline.locations
         assert model.rooms.names() == list(paper_world.rooms)
