@@ -3,9 +3,13 @@
 Pipeline (one module per step; the grammar is defined once and shared by text and speech):
 
 * :mod:`~knic.language.vocabulary` -- spoken names of a world's instances (knowledge base + lexicon).
-* :mod:`~knic.language.grammar` -- the ERL command grammar and its JSGF form.
-* :mod:`~knic.language.parser` -- deterministic parsing of text against the grammar.
-* :mod:`~knic.language.frames` -- command frames (BRINGING, SEARCHING, ...) with pronouns resolved.
+* :mod:`~knic.language.commands` -- how people phrase commands, as data (``commands.yaml``): fillers, verbs,
+  prepositions, levels and templates; the one source of the reader, the speech grammar and the samples.
+* :mod:`~knic.language.chunks` / :mod:`~knic.language.reader` -- reading text: chunks, clauses, frames.
+* :mod:`~knic.language.grammar` -- grammar nodes and the JSGF form of the templates.
+* :mod:`~knic.language.sampling` -- sentences with their frames sampled from the templates.
+* :mod:`~knic.language.ngram` -- an ARPA n-gram model of sampled sentences for the speech recogniser.
+* :mod:`~knic.language.frames` -- command frames (BRINGING, SEARCHING, ...).
 * :mod:`~knic.language.goals` -- frames to PDDL goals checked against the domain; adding them to a KB.
 * :mod:`~knic.language.understanding` -- :func:`understand`: text to :class:`Understanding`.
 * :mod:`~knic.language.fsg` / :mod:`~knic.language.speech` -- WAV audio to a transcript with pocketsphinx.
@@ -20,9 +24,10 @@ Typical use::
         knic.language.add_goals(kb, result.goals, source="speech")
 """
 
+from knic.language.commands import command_grammar
 from knic.language.frames import CommandFrame
 from knic.language.goals import add_goals
-from knic.language.grammar import command_grammar, to_jsgf
+from knic.language.grammar import to_jsgf
 from knic.language.understanding import Understanding, understand
 from knic.language.vocabulary import Lexicon, Vocabulary
 

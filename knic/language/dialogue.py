@@ -98,6 +98,9 @@ def describe(frame: CommandFrame, vocabulary: Vocabulary | None = None) -> str:
         if kind == "PLACING":
             target = f"on {name('goal')}"
         return f"{verb} {name('theme')}{source} {target}"
+    if kind == "TAKING":
+        source = f" from {name('source')}" if frame.get("source") else ""
+        return f"pick up {name('theme')}{source}"
     if kind == "ACCOMPANYING":
         return f"take {name('theme')} to {name('goal')}"
     if kind == "MOTION":
@@ -113,6 +116,8 @@ def describe(frame: CommandFrame, vocabulary: Vocabulary | None = None) -> str:
 
 def repeat_back(understanding: Understanding, vocabulary: Vocabulary | None = None) -> str:
     """The sentence the robot says after a command: what it will do, or what it did not understand."""
+    if understanding.question:
+        return understanding.question
     if not understanding.accepted:
         return f"Sorry, I did not understand. {understanding.reason[:1].upper()}{understanding.reason[1:]}."
     clauses = [describe(f, vocabulary) for f in understanding.frames]

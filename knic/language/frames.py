@@ -4,9 +4,10 @@ A frame is a kind (``BRINGING``, ``SEARCHING``, ``MOTION``, ``PLACING``, ``ACCOM
 with arguments among ``theme``, ``source``, ``goal``, ``ground``, ``beneficiary``, ``device``, ``state``.
 Argument values are knowledge-base symbols (``"glasses"``, ``"living_room"``), a lexicon group name for
 several devices (``"all_lights"``), ``"me"`` for the speaker, a device state (``"on"``, ``"off"``,
-``"open"``, ``"closed"``, ``"half-open"``) or a percentage (``"50"``). Pronouns ("it", "her", "him") are
-resolved to the previous action's theme, so "locate the tablet and bring it to me" gives
-``SEARCHING(theme: tablet)``, ``BRINGING(theme: tablet, beneficiary: me)``.
+``"open"``, ``"closed"``) or a percentage (``"50"``). Pronouns ("it", "her", "him", "them") are resolved by
+the reader (:mod:`knic.language.reader`), so "locate the tablet and bring it to me" gives
+``SEARCHING(theme: tablet)``, ``BRINGING(theme: tablet, beneficiary: me)``. TAKING (picking something up)
+appears in a chain whose later action carries the object on ("take the cups and bring them to ...").
 """
 
 from __future__ import annotations
@@ -16,11 +17,8 @@ from dataclasses import dataclass
 from typing import Any
 
 from core.errors import LanguageError
-from knic.language.grammar import PRONOUNS
-from knic.language.parser import RawFrame
-from knic.language.vocabulary import Term, Vocabulary, level_percent
 
-FRAME_KINDS = ("BRINGING", "SEARCHING", "MOTION", "PLACING", "ACCOMPANYING", "OPERATING")
+FRAME_KINDS = ("BRINGING", "TAKING", "SEARCHING", "MOTION", "PLACING", "ACCOMPANYING", "OPERATING")
 ROLES = ("theme", "source", "goal", "ground", "beneficiary", "device", "state")
 SPEAKER = "me"
 
@@ -69,45 +67,3 @@ class CommandFrame:
     def __str__(self) -> str:
         inner = ", ".join(f'{r}:"{self.args[r]}"' for r in ROLES if r in self.args)
         return f"{self.kind}({inner})"
-
-
-def build_frames(raw: Sequence[RawFrame], vocabulary: Vocabulary) -> list[CommandFrame]:
-    """Turn parsed actions into frames, resolving pronouns against the previous actions.
-
-    Raises:
-        LanguageError: a pronoun has no referent (nothing was said before it, or it names the wrong kind of
-            thing, e.g. "it" after a person).
-    """
-    frames: list[CommandFrame] = []
-    for action in raw:
-        args: dict[str, str] = {}
-        for role, value in action.args:
-            if isinstance(value, Term):
-                args[role] = _term_value(value)
-            elif value in PRONOUNS:
-                args[role] = _resolve(value, frames, vocabulary)
-            else:
-                args[role] = value
-        frames.append(CommandFrame(action.kind, args))
-    return frames
-
-
-def _term_value(term: Term) -> str:
-    if term.type == "level":
-        percent = level_percent(term.symbol)
-        return str(percent) if percent is not None else term.symbol
-    return term.symbol
-
-
-def _resolve(pronoun: str, previous: Sequence[CommandFrame], vocabulary: Vocabulary) -> str:
-    wanted = "item" if pronoun == "it" else "person"
-    for frame in reversed(previous):
-        for role in ("theme", "beneficiary"):
-            value = frame.get(role)
-            if value is None or value == SPEAKER:
-                continue
-            value_type = vocabulary.type_of(value)
-            if value_type is not None and vocabulary.is_subtype(value_type, wanted):
-                return value
-    thing = "an object" if wanted == "item" else "a person"
-    raise LanguageError(f"'{pronoun}' does not refer to {thing} named earlier in the command")

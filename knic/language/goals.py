@@ -8,9 +8,12 @@ frame                                  goal
 BRINGING theme X, beneficiary P        ``(has P X)`` ("me" is the speaker)
 BRINGING / PLACING theme X, goal room  ``(object_at X room)``
 BRINGING / PLACING theme X, goal f     ``(object_on X f)`` (f a piece of furniture)
+TAKING theme X (carried on later)      none: the later action's goal says where X ends
 SEARCHING theme X                      ``(reported X)``
 MOTION goal room                       ``(robot_at R room)`` (R the world's robot)
-ACCOMPANYING theme P, goal room        ``(person_at P room)``
+MOTION goal f (furniture)              ``(robot_at R room)``, the room f is in (``furniture_in``)
+MOTION whose place a later action uses none: it only says where that action happens
+ACCOMPANYING theme P, goal room or f   ``(person_at P room)``
 OPERATING light(s), on / off           ``(light_on d)`` / ``(light_off d)`` for each light
 OPERATING blinds open / closed / half  ``(device_level d l100)`` / ``l0`` / ``l50``
 OPERATING dimmer or blinds N percent   ``(device_level d lN)``
@@ -28,7 +31,7 @@ from typing import Any, Protocol
 
 from core.errors import KnicError, LanguageError
 from knic.language.frames import SPEAKER, CommandFrame
-from knic.language.vocabulary import Vocabulary
+from knic.language.vocabulary import Vocabulary, level_percent
 from knowledge_base import Fact
 
 #: Blind positions as percentages (closed, half-open, open).
@@ -38,13 +41,20 @@ _SINGLE_VALUED = ("robot_at", "person_at", "object_at", "object_on", "device_lev
 _COMPLEMENTS = (("light_on", "light_off"),)
 
 
-def frames_to_goals(frames: Sequence[CommandFrame], vocabulary: Vocabulary, *, speaker: str) -> list[Fact]:
+def frames_to_goals(
+    frames: Sequence[CommandFrame],
+    vocabulary: Vocabulary,
+    *,
+    speaker: str,
+    waypoints: Iterable[int] = (),
+) -> list[Fact]:
     """The PDDL goals that satisfy the frames, in utterance order, without duplicates.
 
     Args:
         frames: understood actions (pronouns already resolved).
         vocabulary: the world (instances, types, the domain's predicate signatures).
         speaker: the person symbol that "me" stands for.
+        waypoints: indices of MOTION frames that only say where the next action happens (no goal).
 
     Raises:
         LanguageError: a frame lacks an argument its kind needs, names something of the wrong type, asks
@@ -54,7 +64,10 @@ def frames_to_goals(frames: Sequence[CommandFrame], vocabulary: Vocabulary, *, s
     if speaker_type is None or not vocabulary.is_subtype(speaker_type, "person"):
         raise LanguageError(f"speaker {speaker!r} is not a person of this world")
     goals: list[Fact] = []
-    for frame in frames:
+    skip = set(waypoints)
+    for index, frame in enumerate(frames):
+        if index in skip or frame.kind == "TAKING":
+            continue
         for goal in _frame_goals(frame, vocabulary, speaker):
             validate_goal(goal, vocabulary)
             if goal not in goals:
@@ -137,9 +150,9 @@ def _frame_goals(frame: CommandFrame, vocabulary: Vocabulary, speaker: str) -> l
     if kind == "MOTION":
         if vocabulary.robot is None:
             raise LanguageError("the world has no robot to move")
-        return [Fact("robot_at", (vocabulary.robot, need("goal")))]
+        return [Fact("robot_at", (vocabulary.robot, room_of(need("goal"), vocabulary)))]
     if kind == "ACCOMPANYING":
-        return [Fact("person_at", (need("theme"), need("goal")))]
+        return [Fact("person_at", (need("theme"), room_of(need("goal"), vocabulary)))]
     if kind == "OPERATING":
         return _operating_goals(frame, vocabulary, need("device"), need("state"))
     raise LanguageError(f"no goal for frame kind {kind!r}")
@@ -147,18 +160,62 @@ def _frame_goals(frame: CommandFrame, vocabulary: Vocabulary, speaker: str) -> l
 
 def _operating_goals(frame: CommandFrame, vocabulary: Vocabulary, device: str, state: str) -> list[Fact]:
     devices = vocabulary.members(device)
-    if state in ("on", "off"):
+    lights = all(_is(vocabulary, d, "light") for d in devices)
+    if state in ("on", "off") and lights:
         return [Fact(f"light_{state}", (d,)) for d in devices]
+    if lights:
+        raise LanguageError(f"the {vocabulary.phrase_of(device)} can only be switched on or off")
     if state in BLIND_STATES:
         percent = BLIND_STATES[state]
+    elif state in ("on", "off"):
+        percent = 100 if state == "on" else 0
     elif state.isdigit():
         percent = int(state)
     else:
         raise LanguageError(f"unknown device state {state!r}: {frame}")
     level = vocabulary.level(percent)
     if level is None:
-        raise LanguageError(f"the domain has no level for {percent} percent: {frame}")
+        known = sorted(p for p in (level_percent(s) for s in vocabulary.instances) if p is not None)
+        offered = ", ".join(str(p) for p in known) or "none"
+        raise LanguageError(f"this world has no level of {percent} percent (it has {offered})")
     return [Fact("device_level", (d, level)) for d in devices]
+
+
+def room_of(place: str, vocabulary: Vocabulary) -> str:
+    """The room a place is: itself for a room, the room a piece of furniture is in (``furniture_in``).
+
+    Raises:
+        LanguageError: the world does not say which room the furniture is in.
+    """
+    if not _is(vocabulary, place, "furniture"):
+        return place
+    rooms = [p for p in vocabulary.locations.get(place, ()) if _is(vocabulary, p, "room")]
+    if len(rooms) != 1:
+        raise LanguageError(f"this world does not say which room the {vocabulary.phrase_of(place)} is in")
+    return rooms[0]
+
+
+def hints(frames: Sequence[CommandFrame], vocabulary: Vocabulary) -> list[Fact]:
+    """Where the command says things are, as assumptions for the planner's search (not goals).
+
+    ``(possibly_at X room)`` for a theme said to be somewhere ("the apple from the kitchen cabinet", "find the
+    glasses in the bedroom"), when the domain has ``possibly_at`` and the world does not already place X.
+    """
+    if "possibly_at" not in vocabulary.predicates:
+        return []
+    found: list[Fact] = []
+    for frame in frames:
+        theme, where = frame.get("theme"), frame.get("source") or frame.get("ground")
+        if not theme or not where or theme == SPEAKER or vocabulary.locations.get(theme):
+            continue
+        try:
+            fact = Fact("possibly_at", (theme, room_of(where, vocabulary)))
+            validate_goal(fact, vocabulary)
+        except LanguageError:
+            continue
+        if fact not in found:
+            found.append(fact)
+    return found
 
 
 def _is(vocabulary: Vocabulary, symbol: str, type_name: str) -> bool:

@@ -3,11 +3,11 @@
 The grammar is a small tree of nodes (:class:`Words`, :class:`Seq`, :class:`Alt`, :class:`Opt`,
 :class:`Slot`, :class:`Bind`, :class:`Ref`, :class:`Frame`). Slots are filled from a
 :class:`~knic.language.vocabulary.Vocabulary`, so the same tree accepts exactly the objects, rooms, people and
-devices the world has. :mod:`knic.language.parser` walks the tree over typed text; :func:`to_jsgf` writes it
+devices the world has. :mod:`knic.language.sampling` walks the tree to sample sentences; :func:`to_jsgf` writes it
 as a JSGF grammar for pocketsphinx. Changing a rule here changes both.
 
-The ERL grammar (:func:`command_grammar`) covers the verb classes of the "Catering for Granny Annie's Comfort"
-task: searching, bringing, placing, accompanying, motion and device operation, up to three chained actions.
+The command grammar itself is data: :func:`knic.language.commands.command_grammar` builds it from the
+templates of ``commands.yaml``.
 """
 
 from __future__ import annotations
@@ -98,9 +98,6 @@ class Frame:
 
 Node = Words | Seq | Alt | Opt | Slot | Bind | Ref | Repeat | Frame
 
-#: Markers a pronoun binds; :mod:`knic.language.frames` replaces them by the referent.
-PRONOUNS = ("it", "her", "him", "them")
-
 
 @dataclass(frozen=True)
 class Grammar:
@@ -132,129 +129,6 @@ def seq(*parts: Node) -> Seq:
 def alt(*options: Node) -> Alt:
     """One of the options, tried in order."""
     return Alt(options)
-
-
-#: The ERL verb classes (each phrase is one alternative in the grammar).
-SEARCH_VERBS = ("find", "locate", "look for", "search for", "spot", "pinpoint")
-BRING_VERBS = ("bring", "get", "fetch", "give", "hand", "deliver", "take")
-PLACE_VERBS = ("put", "place")
-ACCOMPANY_VERBS = ("lead", "guide", "escort", "accompany", "take")
-MOTION_VERBS = ("go", "move", "navigate", "come")
-SWITCH_VERBS = ("switch", "turn")
-
-
-def command_grammar(max_actions: int = 3) -> Grammar:
-    """The ERL command grammar: up to ``max_actions`` chained actions, with polite openers.
-
-    Frame arguments bound by the rules: ``theme``, ``source``, ``goal``, ``ground``, ``beneficiary``,
-    ``device``, ``state``. "me" binds the literal ``"me"`` (the speaker); pronouns bind a marker from
-    :data:`PRONOUNS` that frames resolve to the previous action's theme. A bringing request without a
-    destination ("bring the glasses") is for the speaker. The rules are left-factored (shared prefixes written
-    once) because the speech decoder's search graph grows with every inline copy of a vocabulary slot.
-    """
-    det = Opt(words("the", "a", "an", "my", "some"))
-
-    def item(role: str) -> Node:
-        return alt(seq(det, Slot(role, ("item",))), seq(Words("it"), Bind(role, "it")))
-
-    def person(role: str) -> Node:
-        return alt(
-            Slot(role, ("person",)),
-            seq(Words("me"), Bind(role, "me")),
-            seq(Words("her"), Bind(role, "her")),
-            seq(Words("him"), Bind(role, "him")),
-        )
-
-    def thing(role: str) -> Node:
-        return alt(
-            seq(det, Slot(role, ("item",))),
-            Slot(role, ("person",)),
-            seq(Words("it"), Bind(role, "it")),
-            seq(Words("her"), Bind(role, "her")),
-            seq(Words("him"), Bind(role, "him")),
-        )
-
-    def place(role: str) -> Node:
-        return seq(det, Slot(role, ("room", "furniture")))
-
-    searching = Frame(
-        "SEARCHING",
-        alt(
-            seq(words(*SEARCH_VERBS), thing("theme"), Opt(seq(words("in", "on", "at"), place("ground")))),
-            seq(Words("where is"), thing("theme")),
-        ),
-    )
-    bringing = Frame(
-        "BRINGING",
-        seq(
-            words(*BRING_VERBS),
-            alt(
-                seq(person("beneficiary"), item("theme"), Opt(seq(Words("from"), place("source")))),
-                seq(
-                    item("theme"),
-                    Opt(seq(Words("from"), place("source"))),
-                    alt(
-                        seq(words("to", "into"), alt(person("beneficiary"), place("goal"))),
-                        Bind("beneficiary", "me"),
-                    ),
-                ),
-            ),
-        ),
-    )
-    placing = Frame(
-        "PLACING",
-        seq(
-            words(*PLACE_VERBS), item("theme"), words("on", "onto", "in", "into", "on top of"), place("goal")
-        ),
-    )
-    accompanying = Frame(
-        "ACCOMPANYING",
-        seq(words(*ACCOMPANY_VERBS), person("theme"), words("to", "into"), det, Slot("goal", ("room",))),
-    )
-    motion = Frame("MOTION", seq(words(*MOTION_VERBS), words("to", "into"), det, Slot("goal", ("room",))))
-    on_off = tagged("state", {"on": "on", "off": "off"})
-    lights = seq(det, Slot("device", ("light",), groups=True))
-    operating = Frame(
-        "OPERATING",
-        alt(
-            seq(words(*SWITCH_VERBS), alt(seq(on_off, lights), seq(lights, on_off))),
-            seq(
-                tagged("state", {"open": "open", "close": "closed", "half open": "half-open"}),
-                det,
-                Slot("device", ("blinds",)),
-            ),
-            seq(
-                words("set", "dim", "turn"),
-                det,
-                Slot("device", ("dimmer", "blinds")),
-                words("to", "at"),
-                Slot("state", ("level",)),
-                Opt(Words("percent")),
-            ),
-        ),
-    )
-    rules: dict[str, Node] = {
-        "searching": searching,
-        "bringing": bringing,
-        "placing": placing,
-        "accompanying": accompanying,
-        "motion": motion,
-        "operating": operating,
-        "action": alt(
-            *(Ref(n) for n in ("searching", "bringing", "placing", "accompanying", "motion", "operating"))
-        ),
-        "opener": words(
-            "please", "robot", "robot please", "could you", "could you please", "can you", "can you please"
-        ),
-        "joiner": words("and", "then", "and then"),
-    }
-    rules["command"] = seq(
-        Opt(Ref("opener")),
-        Ref("action"),
-        Repeat(seq(Opt(Ref("joiner")), Ref("action")), max_actions - 1),
-        Opt(Words("please")),
-    )
-    return Grammar(rules, "command")
 
 
 def slots(grammar: Grammar) -> list[Slot]:

@@ -1,4 +1,4 @@
-"""Text to understanding: normalise, parse against the grammar, build frames, derive and check goals.
+"""Text to understanding: read the command (:mod:`knic.language.reader`), derive and check goals.
 
 :func:`understand` never raises for what a user says: a command it cannot take comes back with
 ``accepted=False``, no goals and a ``reason`` that says what was not understood. Nothing is written anywhere;
@@ -13,11 +13,12 @@ from functools import lru_cache
 from typing import TYPE_CHECKING, Any
 
 from core.errors import LanguageError
-from knic.language.frames import CommandFrame, build_frames
-from knic.language.goals import frames_to_goals
-from knic.language.grammar import Grammar, command_grammar, grammar_words
-from knic.language.parser import ParseFailure, Parser
-from knic.language.vocabulary import Vocabulary, normalize
+from knic.language.commands import command_grammar
+from knic.language.frames import CommandFrame
+from knic.language.goals import frames_to_goals, hints
+from knic.language.grammar import Grammar
+from knic.language.reader import AmbiguityError, Reader
+from knic.language.vocabulary import Vocabulary
 from knowledge_base import Fact
 
 if TYPE_CHECKING:
@@ -37,6 +38,9 @@ class Understanding:
         accepted: True when the command parsed and every goal is valid.
         reason: for a rejected command, the one-line reply saying what was not understood; else "".
         speaker: the person symbol "me" stood for.
+        question: for an ambiguous command, the question to ask back ("which table do you mean: ...?").
+        hints: where the command says things are, as ``possibly_at`` assumptions for the planner's search
+            (see :func:`knic.language.goals.hints`); not goals.
     """
 
     text: str
@@ -46,6 +50,8 @@ class Understanding:
     reason: str = ""
     speaker: str = DEFAULT_SPEAKER
     extra: dict[str, Any] = field(default_factory=dict, compare=False)
+    question: str = ""
+    hints: tuple[Fact, ...] = ()
 
     def to_dict(self) -> dict[str, Any]:
         """The JSON form printed by ``knic goal --json``.
@@ -60,6 +66,10 @@ class Understanding:
         }
         if not self.accepted:
             data["reason"] = self.reason
+        if self.question:
+            data["question"] = self.question
+        if self.hints:
+            data["hints"] = [str(h) for h in self.hints]
         data.update(self.extra)
         return data
 
@@ -70,35 +80,45 @@ def default_grammar() -> Grammar:
     return command_grammar()
 
 
+@lru_cache(maxsize=8)
+def reader_for(vocabulary: Vocabulary) -> Reader:
+    """The reader of a vocabulary (built once per vocabulary object)."""
+    return Reader(vocabulary)
+
+
 def understand(
     text: str, vocabulary: Vocabulary, *, speaker: str = DEFAULT_SPEAKER, grammar: Grammar | None = None
 ) -> Understanding:
     """Understand one command (up to three chained actions) against a world's vocabulary.
 
     Args:
-        text: the command, typed or recognised ("Bring me my glasses, please").
+        text: the command, typed or recognised ("Could you please bring me my glasses?").
         vocabulary: the world's spoken names (see :meth:`Vocabulary.from_knowledge_base`).
         speaker: the person symbol that "me" stands for.
-        grammar: the command grammar; default :func:`default_grammar`.
+        grammar: unused (the reader reads the command language's phrase tables); kept for callers.
 
     Returns:
-        An :class:`Understanding`; rejected commands have ``accepted=False`` and a ``reason``.
+        An :class:`Understanding`; rejected commands have ``accepted=False`` and a ``reason``; ambiguous ones
+        also a ``question``.
     """
-    grammar = grammar or default_grammar()
-    tokens = normalize(text).split()
-    parsed = Parser(grammar, vocabulary).parse(tokens)
-    if isinstance(parsed, ParseFailure):
-        reason = parsed.reason(vocabulary, grammar_words(grammar))
-        return Understanding(text, reason=reason, speaker=speaker)
+    del grammar
     try:
-        frames = build_frames(parsed, vocabulary)
+        reading = reader_for(vocabulary).read(text)
+    except AmbiguityError as exc:
+        question = str(exc)[:1].upper() + str(exc)[1:]
+        return Understanding(text, reason=f"ambiguous: {exc}", speaker=speaker, question=question)
     except LanguageError as exc:
         return Understanding(text, reason=str(exc), speaker=speaker)
+    frames = tuple(reading.frames)
     try:
-        goals = frames_to_goals(frames, vocabulary, speaker=speaker)
+        goals = frames_to_goals(frames, vocabulary, speaker=speaker, waypoints=reading.waypoints)
     except LanguageError as exc:
-        return Understanding(text, tuple(frames), reason=str(exc), speaker=speaker)
-    return Understanding(text, tuple(frames), tuple(goals), accepted=True, speaker=speaker)
+        return Understanding(text, frames, reason=str(exc), speaker=speaker)
+    if not goals:
+        return Understanding(text, frames, reason="the command asks for nothing to achieve", speaker=speaker)
+    return Understanding(
+        text, frames, tuple(goals), accepted=True, speaker=speaker, hints=tuple(hints(frames, vocabulary))
+    )
 
 
 def understand_transcript(
@@ -123,5 +143,13 @@ def understand_transcript(
         return Understanding(transcript.text, reason=reason, speaker=speaker, extra=extra)
     result = understand(transcript.text, vocabulary, speaker=speaker, grammar=grammar)
     return Understanding(
-        result.text, result.frames, result.goals, result.accepted, result.reason, result.speaker, extra
+        result.text,
+        result.frames,
+        result.goals,
+        result.accepted,
+        result.reason,
+        result.speaker,
+        extra,
+        result.question,
+        result.hints,
     )

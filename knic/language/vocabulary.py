@@ -45,6 +45,8 @@ _UNITS = [
     "nineteen",
 ]
 _TENS = ["_", "_", "twenty", "thirty", "forty", "fifty", "sixty", "seventy", "eighty", "ninety"]
+#: Facts ``(predicate thing place)`` that say where a thing is (read into :attr:`Vocabulary.locations`).
+LOCATION_PREDICATES = ("furniture_in", "object_on", "object_at")
 _LEVEL_CONSTANT = re.compile(r"^l(\d{1,3})$")
 
 
@@ -187,8 +189,12 @@ class Vocabulary:
         types: Mapping[str, str | None],
         instances: Mapping[str, str],
         predicates: Mapping[str, tuple[tuple[str, str], ...]] | None = None,
+        locations: Mapping[str, Sequence[str]] | None = None,
     ):
         self._terms = tuple(terms)
+        #: symbol -> the places (rooms, furniture) the world says it is in or on (furniture_in, object_on,
+        #: object_at facts); used to tell "the table in the kitchen" from the other tables.
+        self.locations: dict[str, tuple[str, ...]] = {k: tuple(v) for k, v in (locations or {}).items()}
         self._types = dict(types)
         self._instances = dict(instances)
         #: predicate -> ((parameter, type), ...) from the domain; goals are checked against it.
@@ -208,6 +214,7 @@ class Vocabulary:
         types: Mapping[str, str | None],
         lexicon: Lexicon | None = None,
         predicates: Mapping[str, tuple[tuple[str, str], ...]] | None = None,
+        locations: Mapping[str, Sequence[str]] | None = None,
     ) -> Vocabulary:
         """Build from ``{instance or constant: type}``, ``{type: parent type}`` and the domain's predicates.
 
@@ -234,7 +241,7 @@ class Vocabulary:
                 group_type = kinds.pop() if len(kinds) == 1 else "device"
             if members:
                 terms.extend(Term(p, group.name, group_type, members) for p in group.phrases)
-        return cls(terms, types, instances, predicates)
+        return cls(terms, types, instances, predicates, locations)
 
     @classmethod
     def from_knowledge_base(
@@ -257,7 +264,14 @@ class Vocabulary:
                 instances[name] = type_name
         instances.update(_constants(getattr(domain, "constants", {})))
         predicates = dict(getattr(domain, "predicates", {}) or {})
-        return cls.from_instances(instances, types, lexicon, predicates)
+        locations: dict[str, list[str]] = {}
+        facts = getattr(kb, "facts", None)
+        if callable(facts):
+            for predicate in LOCATION_PREDICATES:
+                if predicate in predicates:
+                    for fact in facts(predicate):
+                        locations.setdefault(str(fact.args[0]), []).append(str(fact.args[1]))
+        return cls.from_instances(instances, types, lexicon, predicates, locations)
 
     @property
     def instances(self) -> dict[str, str]:

@@ -41,8 +41,16 @@ def test_repeat_back(vocabulary: Vocabulary) -> None:
     assert repeat_back(lights, vocabulary) == "You asked me to switch off the lights."
     rejected = understand("bring me the banana", vocabulary)
     assert repeat_back(rejected, vocabulary).startswith(
-        "Sorry, I did not understand. I do not know the word 'banana'"
+        "Sorry, I did not understand. There is no 'banana' here"
     )
+
+
+def test_an_ambiguous_command_is_answered_with_a_question(vocabulary: Vocabulary) -> None:
+    result = understand("switch on the light", vocabulary)
+    assert not result.accepted and result.goals == ()
+    said = repeat_back(result, vocabulary)
+    assert said.startswith("Which light do you mean:") and said.endswith("?")
+    assert "left light" in said and "hallway light" in said
 
 
 def test_confirmation_yes_no_and_silence(vocabulary: Vocabulary) -> None:

@@ -1,0 +1,178 @@
+"""Chunks of a command: the longest known phrase at each position, from the command language and the world.
+
+A :class:`Chunker` indexes the phrase tables of :mod:`knic.language.commands` (fillers, determiners, joiners,
+states, prepositions, verbs, levels, pronouns) and a vocabulary's names. World names are matched whole first;
+when no whole name fits, the last word of a longer name ("table" for every table) or a plural ("cups")
+stands for all the names it may mean, which the reader narrows down or asks about. Fillers are dropped;
+numbers 0..100 said as words become numbers; anything else is an ``unknown`` chunk.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass
+
+from knic.language.commands import CommandLanguage
+from knic.language.vocabulary import Term, Vocabulary, normalize
+
+_NUMBERS = {
+    w: i
+    for i, w in enumerate(
+        [
+            "zero",
+            "one",
+            "two",
+            "three",
+            "four",
+            "five",
+            "six",
+            "seven",
+            "eight",
+            "nine",
+            "ten",
+            "eleven",
+            "twelve",
+            "thirteen",
+            "fourteen",
+            "fifteen",
+            "sixteen",
+            "seventeen",
+            "eighteen",
+            "nineteen",
+        ]
+    )
+}
+_TENS = {
+    w: 10 * i
+    for i, w in enumerate(
+        ["_", "_", "twenty", "thirty", "forty", "fifty", "sixty", "seventy", "eighty", "ninety"]
+    )
+}
+
+
+@dataclass
+class Chunk:
+    """One piece of a command: ``kind`` is entity, me, pronoun, verb, prep, state, level, number, join, det,
+    percent or unknown."""
+
+    kind: str
+    text: str
+    terms: tuple[Term, ...] = ()
+    role: str = ""  # prep: its role table name; pronoun: the referent type
+    frames: tuple[str, ...] = ()  # verb: frame kinds it may start
+    state: str | None = None  # verb: implied state; state: the state; prep "on"/"off": also a state
+    value: int | None = None  # level, number: percent
+
+
+class Chunker:
+    """Cuts normalised token lists into chunks (build once per vocabulary; :meth:`chunks` is pure)."""
+
+    def __init__(self, vocabulary: Vocabulary, language: CommandLanguage):
+        self.language = language
+        lang = language
+        self._full: dict[str, list[Term]] = {}
+        self._partial: dict[str, list[Term]] = {}
+        for term in vocabulary.terms:
+            if term.type == "level":
+                continue
+            self._full.setdefault(term.phrase, []).append(term)
+        for term in vocabulary.terms:
+            words = term.phrase.split()
+            if term.type == "level" or term.is_group:
+                continue
+            variants = [term.phrase + "s", term.phrase + "es"] if not term.phrase.endswith("s") else []
+            if len(words) > 1:
+                variants.append(words[-1])
+                variants += [words[-1] + "s"] if not words[-1].endswith("s") else []
+            for variant in variants:
+                if variant not in self._full:
+                    self._partial.setdefault(variant, []).append(term)
+        table: dict[str, tuple[int, Chunk | None]] = {}  # phrase -> (priority, chunk); None drops it
+
+        def put(phrase: str, priority: int, chunk: Chunk | None) -> None:
+            if phrase and (phrase not in table or table[phrase][0] < priority):
+                table[phrase] = (priority, chunk)
+
+        for phrase in lang.fillers:
+            put(phrase, 1, None)
+        for phrase in lang.determiners:
+            put(phrase, 2, Chunk("det", phrase))
+        for phrase in lang.joiners:
+            put(phrase, 3, Chunk("join", phrase))
+        for phrase in lang.percent:
+            put(normalize(phrase) or phrase, 3, Chunk("percent", phrase))
+        for state, phrases in lang.states.items():
+            for phrase in phrases:
+                put(phrase, 4, Chunk("state", phrase, state=state))
+        for role, phrases in lang.prepositions.items():
+            for phrase in phrases:
+                old = table.get(phrase)
+                implied = old[1].state if old and old[1] is not None and old[1].kind == "state" else None
+                if role == "level" and old and old[1] is not None and old[1].kind == "prep":
+                    continue
+                put(phrase, 5, Chunk("prep", phrase, role=role, state=implied))
+        for phrase, (kinds, verb_state) in lang.verb_frames().items():
+            put(phrase, 6, Chunk("verb", phrase, frames=kinds, state=verb_state))
+        for percent, phrases in lang.levels.items():
+            for phrase in phrases:
+                put(phrase, 7, Chunk("level", phrase, value=percent))
+        for phrase, kind in lang.pronouns.items():
+            put(phrase, 8, Chunk("pronoun", phrase, role=kind))
+        put("me", 8, Chunk("me", "me"))
+        self._table = table
+        self._longest = max((len(p.split()) for p in list(table) + list(self._full)), default=1)
+
+    # ------------------------------------------------------------------ chunks
+
+    def chunks(self, tokens: Sequence[str]) -> list[Chunk]:
+        """The chunks of a normalised token list (fillers dropped)."""
+        out: list[Chunk] = []
+        i = 0
+        while i < len(tokens):
+            number = _number(tokens, i)
+            best: tuple[int, int, Chunk | None] | None = None  # (length, priority, chunk)
+            for length in range(min(self._longest, len(tokens) - i), 0, -1):
+                phrase = " ".join(tokens[i : i + length])
+                if phrase in self._full:
+                    best = (length, 10, Chunk("entity", phrase, tuple(self._full[phrase])))
+                elif phrase in self._table and (best is None or best[0] < length):
+                    priority, chunk = self._table[phrase]
+                    best = (length, priority, chunk)
+                elif phrase in self._partial and best is None:
+                    best = (length, 9, Chunk("entity", phrase, tuple(self._partial[phrase])))
+                if best is not None and best[0] == length:
+                    break
+            if number is not None and (best is None or number[0] - i >= best[0]):
+                value = number[1]
+                if best is not None and best[2] is not None and best[2].kind == "det" and number[0] - i == 1:
+                    nxt = tokens[number[0]] if number[0] < len(tokens) else ""
+                    if nxt not in self.language.percent and nxt != "percent":
+                        out.append(best[2])
+                        i += 1
+                        continue
+                out.append(Chunk("number", " ".join(tokens[i : number[0]]), value=value))
+                i = number[0]
+                continue
+            if best is None:
+                out.append(Chunk("unknown", tokens[i]))
+                i += 1
+                continue
+            if best[2] is not None:
+                out.append(best[2])
+            i += best[0]
+        return out
+
+
+def _number(tokens: Sequence[str], i: int) -> tuple[int, int] | None:
+    """A spoken number 0..100 at ``tokens[i:]``: (end index, value), else None."""
+    word = tokens[i]
+    if word in ("hundred",) or (word in ("a", "one") and i + 1 < len(tokens) and tokens[i + 1] == "hundred"):
+        return (i + 1 if word == "hundred" else i + 2), 100
+    if word in _TENS and word != "_":
+        value = _TENS[word]
+        if i + 1 < len(tokens) and tokens[i + 1] in _NUMBERS and 0 < _NUMBERS[tokens[i + 1]] < 10:
+            return i + 2, value + _NUMBERS[tokens[i + 1]]
+        return i + 1, value
+    if word in _NUMBERS:
+        return i + 1, _NUMBERS[word]
+    return None

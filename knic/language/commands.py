@@ -1,0 +1,264 @@
+"""The command language as data: ``commands.yaml`` read into phrase tables and template grammar nodes.
+
+One file says how people phrase commands (politeness and fillers, joiners, verb classes, prepositions, states,
+levels, and templates of whole phrasings). Three consumers read it through :func:`command_language`:
+
+* :mod:`knic.language.reader` reads typed or recognised text with the phrase tables;
+* :mod:`knic.language.grammar` turns the templates into the grammar the speech decoder searches;
+* :mod:`knic.language.sampling` samples sentences (with their frames) from the templates, for the n-gram
+  model of the recogniser and for tests.
+
+The file holds general English only; what the world has (objects, rooms, people, devices) comes from the
+vocabulary (:mod:`knic.language.vocabulary`).
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+from functools import lru_cache
+from pathlib import Path
+from typing import Any
+
+import yaml
+
+from core.errors import LanguageError
+from knic.language.grammar import Alt, Bind, Frame, Grammar, Node, Opt, Ref, Repeat, Seq, Slot, Words
+
+DEFAULT_PATH = Path(__file__).resolve().parent / "commands.yaml"
+#: Frame kinds a template may produce.
+TEMPLATE_KINDS = ("SEARCHING", "BRINGING", "TAKING", "PLACING", "ACCOMPANYING", "MOTION", "OPERATING")
+#: Template slot types -> (PDDL categories, group phrases admitted).
+SLOT_TYPES: dict[str, tuple[tuple[str, ...], bool]] = {
+    "item": (("item",), False),
+    "person": (("person",), False),
+    "room": (("room",), False),
+    "furniture": (("furniture",), False),
+    "place": (("room", "furniture"), False),
+    "light": (("light",), False),
+    "lights": (("light",), True),
+    "dimmer": (("dimmer",), False),
+    "blinds": (("blinds",), False),
+    "device": (("device",), True),
+    "level": (("level",), False),
+}
+_TOKEN = re.compile(r"\{[^}]+\}|=[a-z_]+:[A-Za-z0-9_-]+|[\[\]()|]|[^\s\[\]()|{}=]+")
+
+
+@dataclass(frozen=True)
+class VerbClass:
+    """A verb class: its phrases, the frame kinds it can start (in order) and the state it implies."""
+
+    name: str
+    phrases: tuple[str, ...]
+    frames: tuple[str, ...]
+    state: str | None = None
+
+
+@dataclass(frozen=True)
+class CommandLanguage:
+    """The phrase tables and templates of ``commands.yaml`` (see the file for each table's meaning)."""
+
+    fillers: tuple[str, ...]
+    joiners: tuple[str, ...]
+    determiners: tuple[str, ...]
+    pronouns: dict[str, str]
+    verbs: tuple[VerbClass, ...]
+    prepositions: dict[str, tuple[str, ...]]
+    states: dict[str, tuple[str, ...]]
+    levels: dict[int, tuple[str, ...]]
+    percent: tuple[str, ...]
+    templates: tuple[tuple[str, str], ...]
+    openers: tuple[str, ...]
+    closers: tuple[str, ...]
+    source: str = ""
+    lists: dict[str, tuple[str, ...]] = field(default_factory=dict)
+
+    def verb_frames(self) -> dict[str, tuple[tuple[str, ...], str | None]]:
+        """Verb phrase -> (frame kinds in order, implied state); a phrase in several classes gets all."""
+        table: dict[str, tuple[tuple[str, ...], str | None]] = {}
+        for verb in self.verbs:
+            for phrase in verb.phrases:
+                kinds, state = table.get(phrase, ((), None))
+                merged = kinds + tuple(k for k in verb.frames if k not in kinds)
+                table[phrase] = (merged, state or verb.state)
+        return table
+
+    def words(self) -> set[str]:
+        """Every word of every phrase table (not the world's names)."""
+        found: set[str] = set()
+        for phrases in self.lists.values():
+            for phrase in phrases:
+                found.update(phrase.split())
+        return found
+
+    def template_nodes(self) -> list[Frame]:
+        """Each template as a grammar :class:`~knic.language.grammar.Frame`.
+
+        Raises:
+            LanguageError: a template is malformed; the message names the template.
+        """
+        return [
+            Frame(kind, _parse_template(text, self.lists, f"{self.source}: template {kind}: {text!r}"))
+            for kind, text in self.templates
+        ]
+
+
+def _phrases(data: dict[str, Any], key: str, source: str) -> tuple[str, ...]:
+    value = data.get(key) or []
+    if not isinstance(value, list) or not all(isinstance(v, str) for v in value):
+        raise LanguageError(f"{source}: '{key}' must be a list of phrases")
+    return tuple(" ".join(v.lower().split()) for v in value)
+
+
+def load_language(path: str | Path = DEFAULT_PATH) -> CommandLanguage:
+    """Read a command-language file.
+
+    Raises:
+        LanguageError: the file is unreadable or malformed; the message names the file and the entry.
+    """
+    path = Path(path)
+    source = str(path)
+    try:
+        data = yaml.safe_load(path.read_text(encoding="utf-8"))
+    except (OSError, yaml.YAMLError) as exc:
+        raise LanguageError(f"{source}: cannot read the command language: {exc}") from exc
+    if not isinstance(data, dict):
+        raise LanguageError(f"{source}: the command language is a mapping of tables")
+    verbs = []
+    for name, spec in (data.get("verbs") or {}).items():
+        if not isinstance(spec, dict) or not spec.get("phrases") or not spec.get("frames"):
+            raise LanguageError(f"{source}: verbs.{name} needs 'phrases' and 'frames'")
+        unknown = [k for k in spec["frames"] if k not in TEMPLATE_KINDS]
+        if unknown:
+            raise LanguageError(f"{source}: verbs.{name}: unknown frame kind(s) {', '.join(unknown)}")
+        verbs.append(
+            VerbClass(str(name), _phrases(spec, "phrases", source), tuple(spec["frames"]), spec.get("state"))
+        )
+    tables: dict[str, dict[str, tuple[str, ...]]] = {}
+    for key in ("prepositions", "states", "levels"):
+        raw = data.get(key) or {}
+        if not isinstance(raw, dict):
+            raise LanguageError(f"{source}: '{key}' must map names to phrase lists")
+        tables[key] = {str(k): _phrases(raw, k, source) for k in raw}
+    try:
+        levels = {int(k): v for k, v in tables["levels"].items()}
+    except ValueError as exc:
+        raise LanguageError(f"{source}: levels are keyed by a percentage: {exc}") from exc
+    templates = []
+    for text in data.get("templates") or []:
+        kind, sep, body = str(text).partition(": ")
+        if not sep or kind not in TEMPLATE_KINDS:
+            raise LanguageError(f"{source}: template {text!r} must start with a frame kind and ': '")
+        templates.append((kind, body))
+    pronouns = {str(k): str(v) for k, v in (data.get("pronouns") or {}).items()}
+    language = CommandLanguage(
+        fillers=_phrases(data, "fillers", source),
+        joiners=_phrases(data, "joiners", source),
+        determiners=_phrases(data, "determiners", source),
+        pronouns=pronouns,
+        verbs=tuple(verbs),
+        prepositions=tables["prepositions"],
+        states=tables["states"],
+        levels=levels,
+        percent=_phrases(data, "percent", source),
+        templates=tuple(templates),
+        openers=_phrases(data, "openers", source),
+        closers=_phrases(data, "closers", source),
+        source=source,
+    )
+    lists: dict[str, tuple[str, ...]] = {v.name: v.phrases for v in verbs}
+    lists.update(det=language.determiners, fillers=language.fillers, joiners=language.joiners)
+    lists.update(percent=language.percent, openers=language.openers, closers=language.closers)
+    object.__setattr__(language, "lists", lists)
+    language.template_nodes()  # fail early on a malformed template
+    return language
+
+
+@lru_cache(maxsize=4)
+def command_language(path: str = str(DEFAULT_PATH)) -> CommandLanguage:
+    """The command language of a file, read once."""
+    return load_language(path)
+
+
+def _parse_template(text: str, lists: dict[str, tuple[str, ...]], where: str) -> Node:
+    tokens = _TOKEN.findall(text)
+    position = 0
+
+    def sequence(closers: str) -> Node:
+        nonlocal position
+        options: list[list[Node]] = [[]]
+        while position < len(tokens) and tokens[position] not in closers:
+            token = tokens[position]
+            position += 1
+            if token == "|":
+                options.append([])
+            elif token in "[(":
+                inner = sequence("])")
+                if position >= len(tokens) or tokens[position] != ("]" if token == "[" else ")"):
+                    raise LanguageError(f"{where}: unbalanced '{token}'")
+                position += 1
+                options[-1].append(Opt(inner) if token == "[" else inner)
+            else:
+                options[-1].append(_atom(token, lists, where))
+        alternatives = [Seq(tuple(parts)) for parts in options]
+        return alternatives[0] if len(alternatives) == 1 else Alt(tuple(alternatives))
+
+    node = sequence("")
+    if position != len(tokens):
+        raise LanguageError(f"{where}: unexpected '{tokens[position]}'")
+    return node
+
+
+def _atom(token: str, lists: dict[str, tuple[str, ...]], where: str) -> Node:
+    if token.startswith("="):
+        role, _, value = token[1:].partition(":")
+        return Bind(role, value)
+    if token.startswith("{"):
+        name = token[1:-1]
+        if ":" in name:
+            kind, _, role = name.partition(":")
+            if kind not in SLOT_TYPES:
+                raise LanguageError(
+                    f"{where}: unknown slot type {kind!r}; expected one of {', '.join(SLOT_TYPES)}"
+                )
+            categories, groups = SLOT_TYPES[kind]
+            return Slot(role, categories, groups)
+        if name not in lists:
+            raise LanguageError(
+                f"{where}: unknown list {{{name}}}; expected one of {', '.join(sorted(lists))}"
+            )
+        phrases = tuple(p for p in lists[name] if p)
+        node = Alt(tuple(Words(p) for p in phrases))
+        return Opt(node) if name == "det" else node
+    return Words(token.lower())
+
+
+def command_grammar(max_actions: int = 3, language: CommandLanguage | None = None) -> Grammar:
+    """The command grammar of the templates: an optional opener, up to ``max_actions`` actions (each one
+    template) with optional joiners between them, and an optional closer.
+
+    The speech decoder searches this grammar (:mod:`knic.language.fsg`); text is read by the more forgiving
+    :mod:`knic.language.reader`, which understands every sentence the grammar admits.
+    """
+    language = language or command_language()
+    frames = language.template_nodes()
+    rules: dict[str, Node] = {}
+    names = []
+    for index, frame in enumerate(frames):
+        name = f"{frame.kind.lower()}_{index}"
+        rules[name] = frame
+        names.append(name)
+    rules["action"] = Alt(tuple(Ref(n) for n in names))
+    rules["opener"] = Alt(tuple(Words(p) for p in language.openers if p))
+    rules["joiner"] = Alt(tuple(Words(p) for p in language.joiners if p))
+    rules["closer"] = Alt(tuple(Words(p) for p in language.closers if p))
+    rules["command"] = Seq(
+        (
+            Opt(Ref("opener")),
+            Ref("action"),
+            Repeat(Seq((Opt(Ref("joiner")), Ref("action"))), max_actions - 1),
+            Opt(Ref("closer")),
+        )
+    )
+    return Grammar(rules, "command")

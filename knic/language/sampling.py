@@ -1,0 +1,111 @@
+"""Sentences sampled from the command templates, each with the frames it means.
+
+A random walk over the template grammar (:func:`knic.language.commands.command_grammar`) with a world's
+vocabulary in the slots gives a sentence and, from the walk's bindings, its gold frames. The samples train the
+speech recogniser's n-gram model (:mod:`knic.language.ngram`) and check that the reader understands everything
+the templates say (``tests/language/test_sampling.py``). Seeded: the same seed gives the same sentences.
+"""
+
+from __future__ import annotations
+
+import random
+from collections.abc import Iterator
+from dataclasses import dataclass
+
+from knic.language.commands import command_grammar
+from knic.language.frames import CommandFrame
+from knic.language.grammar import Alt, Bind, Frame, Grammar, Node, Opt, Ref, Repeat, Seq, Slot, Words
+from knic.language.reader import chain
+from knic.language.vocabulary import Vocabulary, level_percent
+
+
+@dataclass(frozen=True)
+class Sample:
+    """One sampled sentence (normalised words) and its frames."""
+
+    text: str
+    frames: tuple[CommandFrame, ...]
+
+
+def sample_sentences(
+    vocabulary: Vocabulary,
+    count: int,
+    *,
+    seed: int = 0,
+    grammar: Grammar | None = None,
+    exclude_words: frozenset[str] = frozenset(),
+) -> Iterator[Sample]:
+    """``count`` sentences of the grammar, chains of one to three actions, with their frames.
+
+    Args:
+        vocabulary: the world's names for the slots.
+        count: how many sentences.
+        seed: the random seed.
+        grammar: default :func:`~knic.language.commands.command_grammar`.
+        exclude_words: words (e.g. ones the recogniser cannot pronounce) no sentence may contain.
+    """
+    grammar = grammar or command_grammar()
+    rng = random.Random(seed)
+    made = 0
+    tries = 0
+    while made < count and tries < count * 20:
+        tries += 1
+        walker = _Walker(grammar, vocabulary, rng)
+        words: list[str] = []
+        frames: list[CommandFrame] = []
+        walker.walk(grammar.rule(grammar.top), words, frames, {})
+        if not frames or exclude_words.intersection(words):
+            continue
+        made += 1
+        yield Sample(" ".join(words), tuple(chain(frames, vocabulary).frames))
+
+
+class _Walker:
+    def __init__(self, grammar: Grammar, vocabulary: Vocabulary, rng: random.Random):
+        self.grammar = grammar
+        self.vocabulary = vocabulary
+        self.rng = rng
+
+    def walk(self, node: Node, words: list[str], frames: list[CommandFrame], args: dict[str, str]) -> None:
+        rng = self.rng
+        if isinstance(node, Words):
+            words.extend(node.text.split())
+        elif isinstance(node, Seq):
+            for part in node.parts:
+                self.walk(part, words, frames, args)
+        elif isinstance(node, Alt):
+            self.walk(rng.choice(node.options), words, frames, args)
+        elif isinstance(node, Opt):
+            if rng.random() < 0.5:
+                self.walk(node.part, words, frames, args)
+        elif isinstance(node, Slot):
+            terms = self.vocabulary.terms_of(node.categories, groups=node.groups)
+            if not terms:
+                raise _Dead
+            term = rng.choice(terms)
+            words.extend(term.phrase.split())
+            percent = level_percent(term.symbol) if term.type == "level" else None
+            args[node.role] = str(percent) if percent is not None else term.symbol
+        elif isinstance(node, Bind):
+            args[node.role] = node.value
+        elif isinstance(node, Ref):
+            self.walk(self.grammar.rule(node.name), words, frames, args)
+        elif isinstance(node, Repeat):
+            for _ in range(rng.randint(0, node.most)):
+                self.walk(node.part, words, frames, args)
+        elif isinstance(node, Frame):
+            inner: dict[str, str] = {}
+            start = len(words)
+            try:
+                self.walk(node.body, words, frames, inner)
+            except _Dead:
+                del words[start:]
+                return
+            kind = node.kind
+            if kind == "BRINGING" and "goal" not in inner:
+                inner.setdefault("beneficiary", "me")
+            frames.append(CommandFrame(kind, inner))
+
+
+class _Dead(Exception):
+    """A slot the world has no phrase for (e.g. no blinds): the action is dropped."""
