@@ -12,7 +12,7 @@ appears in a chain whose later action carries the object on ("take the cups and 
 
 from __future__ import annotations
 
-from collections.abc import Mapping, Sequence
+from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
 

@@ -3,8 +3,8 @@
 The grammar is a small tree of nodes (:class:`Words`, :class:`Seq`, :class:`Alt`, :class:`Opt`,
 :class:`Slot`, :class:`Bind`, :class:`Ref`, :class:`Frame`). Slots are filled from a
 :class:`~knic.language.vocabulary.Vocabulary`, so the same tree accepts exactly the objects, rooms, people and
-devices the world has. :mod:`knic.language.sampling` walks the tree to sample sentences; :func:`to_jsgf` writes it
-as a JSGF grammar for pocketsphinx. Changing a rule here changes both.
+devices the world has. :mod:`knic.language.sampling` walks the tree to sample sentences; :func:`to_jsgf`
+writes it as a JSGF grammar for pocketsphinx.
 
 The command grammar itself is data: :func:`knic.language.commands.command_grammar` builds it from the
 templates of ``commands.yaml``.

@@ -3,10 +3,8 @@ reader agree."""
 
 from __future__ import annotations
 
-import pytest
-
-from knic.language.fsg import WordGraph, compile_word_graph
 from knic.language.commands import command_grammar
+from knic.language.fsg import WordGraph, compile_word_graph
 from knic.language.grammar import to_jsgf
 from knic.language.sampling import sample_sentences
 from knic.language.understanding import understand
