@@ -235,7 +235,7 @@ def candidate_requests(world: World, vocab: Vocabulary, placements: dict[str, st
         device = world.devices[name]
         if device.kind == "light":
             state = "off" if device.initial else "on"
-            named = [(p, (name,)) for p in phrases.by_symbol[name]]
+            named: list[tuple[str, tuple[str, ...]]] = [(p, (name,)) for p in phrases.by_symbol[name]]
             named += [
                 (p, m)
                 for _g, (m, ps) in phrases.groups.items()

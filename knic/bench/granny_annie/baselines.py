@@ -1,0 +1,130 @@
+"""The benchmark's baselines, all run on the same episodes through the run's public parts.
+
+* ``knic``: the whole system as ``knic run`` assembles it, under the chosen role.
+* ``static``: the closed-world robot of the paper's situation without KnIC. At t=0 it is given the initial map
+  (the true places of every item and person, the devices' states, as a team writes them into its problem
+  file, with ``found`` for each entity placed), and then its facts are frozen: the KP' components (KGM-3) are
+  not stepped, so only the dispatcher's action effects change the knowledge base. Device actions assume
+  their effect (there is no KP' to confirm the reading). KGM-1 and KGM-2 still run: the actions steer by
+  what the camera sees.
+* ``oracle``: facts straight from ground truth. The KP' components are not stepped; a probe writes the
+  oracle's true dynamic facts into the knowledge base at :data:`ORACLE_HZ` (only the changes, as observed)
+  with ``found`` for every entity placed, and the camera is noise-free, so the actions steer by perfect
+  sightings.
+
+:func:`prepare` applies a baseline to an assembled :class:`~knic.system.KnicSystem` before its goals are
+given; it uses only the system's parts (scheduler, knowledge base, action registry, simulator).
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from core.errors import KnicError
+from knic.system.loop import Probe
+from knowledge_base import BeliefStatus
+
+if TYPE_CHECKING:
+    from knic.scheduler import Component
+    from knic.system import KnicSystem
+
+BASELINES = ("knic", "static", "oracle")
+#: rate (Hz, simulated time) of the oracle baseline's fact writes
+ORACLE_HZ = 5.0
+#: the predicates of the ground truth written by the static and oracle baselines
+TRUTH_PREDICATES = (
+    "robot_at",
+    "person_at",
+    "object_at",
+    "object_on",
+    "holding",
+    "hand_empty",
+    "has",
+    "person_near",
+    "light_on",
+    "light_off",
+    "device_level",
+    "sound_at",
+)
+DEVICE_ACTIONS = ("switch_on", "switch_off", "set_level")
+
+
+def check_baselines(names: list[str]) -> list[str]:
+    """The baselines named, validated.
+
+    Raises:
+        KnicError: an unknown name or none at all.
+    """
+    unknown = [n for n in names if n not in BASELINES]
+    if unknown or not names:
+        raise KnicError(
+            f"--baseline: expected a comma-separated subset of {', '.join(BASELINES)}"
+            + (f"; unknown: {', '.join(unknown)}" if unknown else "")
+        )
+    return names
+
+
+def kp_primes(system: KnicSystem) -> list[Component]:
+    """The run's KGM-3 components (the KP' writing facts)."""
+    return [c for c in system.pipeline if type(c).__module__.startswith("knic.kgm3")]
+
+
+def prepare(system: KnicSystem, baseline: str) -> None:
+    """Turn an assembled system into ``baseline`` (see the module docstring); ``knic`` changes nothing."""
+    if baseline == "knic":
+        return
+    check_baselines([baseline])
+    for component in kp_primes(system):
+        system.scheduler.remove(component.name)
+    if baseline == "static":
+        write_truth(system, source="initial_map", status=BeliefStatus.GIVEN)
+        _assume_device_effects(system)
+    else:
+        from worlds.api import NoiseConfig
+
+        if hasattr(system.sim, "noise"):
+            system.sim.noise = NoiseConfig.perfect()
+        write_truth(system, source="oracle", status=BeliefStatus.OBSERVED)
+        system.scheduler.add(Probe("bench.oracle_facts", ORACLE_HZ, lambda now: _sync(system)))
+
+
+def _sync(system: KnicSystem) -> None:
+    write_truth(system, source="oracle")
+
+
+def write_truth(system: KnicSystem, *, source: str, status: BeliefStatus = BeliefStatus.OBSERVED) -> int:
+    """Make the knowledge base's dynamic facts equal the oracle's (only the differences are written), and
+    assert ``found`` for every entity the truth places; returns the number of writes."""
+    kb = system.kb
+    truth = {f for f in system.sim.ground_truth_facts() if f[0] in TRUTH_PREDICATES}
+    known = set(kb.instances())
+    truth = {f for f in truth if all(a in known for a in f[1:])}  # a visitor not yet met is no instance
+    believed = {(f.predicate, *f.args) for p in TRUTH_PREDICATES for f in kb.facts(p)}
+    placed = {f[1] for f in truth if f[0] in ("object_at", "person_at")}
+    writes = 0
+    with kb.batch():
+        for fact in sorted(believed - truth):
+            writes += bool(kb.remove_fact(*fact, source=source, status=status))
+        for fact in sorted(truth - believed):
+            writes += bool(kb.add_fact(*fact, source=source, status=status))
+        for entity in sorted(placed):
+            if not kb.holds("found", entity):
+                writes += bool(kb.add_fact("found", entity, source=source, status=status))
+    return writes
+
+
+def _assume_device_effects(system: KnicSystem) -> None:
+    """Device actions that do not wait for a KP' to confirm the device reading."""
+    from actions.base import Action
+    from actions.erl.devices import DeviceAction
+
+    ctx = system.context
+
+    def factory(name: str) -> object:
+        def build(args: tuple[str, ...]) -> Action:
+            return DeviceAction(name, args, ctx, confirm=False)
+
+        return build
+
+    for name in DEVICE_ACTIONS:
+        system.registry.register(name, factory(name))  # type: ignore[arg-type]
