@@ -1,7 +1,14 @@
 """``knic goal TEXT``: understand a typed command and print its frames and PDDL goals.
 
 Nothing is added to any knowledge base: the command shows what ``knic run --goal TEXT`` would add. A command
-that is not understood prints its reason (in the JSON object with ``--json``) and exits with code 4.
+that is not understood prints its reason (in the JSON object with ``--json``) and exits with code 4; an
+ambiguous one also prints the question to ask back.
+
+``knic goal -`` reads one command per line on standard input and prints one JSON object per line (blank lines
+are skipped); it exits 0 when every command was understood, else 4 after the last line.
+
+The world's vocabulary is read straight from its PDDL files (:func:`knic.language.world.read_vocabulary`), so
+the command answers without importing the planning libraries.
 """
 
 from __future__ import annotations
@@ -24,11 +31,11 @@ def add_world_arguments(parser: argparse.ArgumentParser) -> None:
 
 def load_vocabulary(args: argparse.Namespace) -> Any:
     """The vocabulary of the world chosen by the options."""
-    from knic.language.world import DEFAULT_DOMAIN, DEFAULT_PROBLEM, load_world
+    from knic.language.world import DEFAULT_DOMAIN, DEFAULT_PROBLEM, read_vocabulary
 
     domain = args.domain or DEFAULT_DOMAIN
     problem = args.problem or (DEFAULT_PROBLEM if args.domain is None else None)
-    return load_world(domain, problem, args.lexicon)[1]
+    return read_vocabulary(domain, problem, args.lexicon)
 
 
 def print_understanding(data: dict[str, Any], as_json: bool) -> None:
@@ -43,12 +50,16 @@ def print_understanding(data: dict[str, Any], as_json: bool) -> None:
             print(f"frame: {frame['frame']}({args})")
         for goal in data["goals"]:
             print(f"goal: {goal}")
+        if data.get("question"):
+            print(f"question: {data['question']}")
     if not data["accepted"]:
         raise LanguageError(f"not understood: {data['reason']}")
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
-    parser.add_argument("text", help='the command, e.g. "bring me my glasses"')
+    parser.add_argument(
+        "text", help='the command, e.g. "bring me my glasses"; "-": one command per line on stdin'
+    )
     add_world_arguments(parser)
 
 
@@ -56,6 +67,24 @@ def run(args: argparse.Namespace) -> int:
     from knic.language.understanding import understand
 
     vocabulary = load_vocabulary(args)
+    if args.text == "-":
+        return _batch(vocabulary, args.speaker)
     result = understand(args.text, vocabulary, speaker=args.speaker)
     print_understanding(result.to_dict(), args.json)
+    return 0
+
+
+def _batch(vocabulary: Any, speaker: str) -> int:
+    import sys
+
+    from knic.language.understanding import understand
+
+    refused = 0
+    for line in sys.stdin:
+        if line.strip():
+            result = understand(line.strip(), vocabulary, speaker=speaker)
+            refused += not result.accepted
+            print(json.dumps(result.to_dict()), flush=True)
+    if refused:
+        raise LanguageError(f"{refused} command(s) not understood")
     return 0

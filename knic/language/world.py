@@ -8,10 +8,12 @@ their names).
 
 from __future__ import annotations
 
+import re
 from pathlib import Path
 from typing import Any
 
-from knic.language.vocabulary import Lexicon, Vocabulary
+from core.errors import LanguageError
+from knic.language.vocabulary import LOCATION_PREDICATES, Lexicon, Vocabulary
 
 WORLDS = Path(__file__).resolve().parents[2] / "worlds"
 DEFAULT_DOMAIN = WORLDS / "erl_home" / "domain.pddl"
@@ -49,3 +51,95 @@ def load_world(
     lexicon_path = Path(lexicon) if lexicon is not None else find_lexicon(domain, problem)
     lexicon_data = Lexicon.load(lexicon_path) if lexicon_path is not None else None
     return kb, Vocabulary.from_knowledge_base(kb, lexicon_data)
+
+
+def read_vocabulary(
+    domain: str | Path = DEFAULT_DOMAIN,
+    problem: str | Path | None = DEFAULT_PROBLEM,
+    lexicon: str | Path | None = None,
+) -> Vocabulary:
+    """The vocabulary of a world read straight from its PDDL files, without building a knowledge base.
+
+    Reads the domain's types, constants and predicate signatures and the problem's objects and the
+    ``furniture_in`` / ``object_on`` / ``object_at`` facts of its initial state: all the vocabulary needs.
+    This is what keeps ``knic goal`` quick to start (no planning library is imported); it does not validate
+    the files as :func:`load_world` does, so a malformed file may surface later, when goals are added.
+
+    Raises:
+        LanguageError: a file is unreadable or is not PDDL; the lexicon file is invalid.
+    """
+    domain_tree = _read_sexp(Path(domain))
+    types: dict[str, str | None] = {"object": None}
+    instances: dict[str, str] = {}
+    predicates: dict[str, tuple[tuple[str, str], ...]] = {}
+    for section in domain_tree:
+        if not isinstance(section, list) or not section:
+            continue
+        head = section[0]
+        if head == ":types":
+            for name, parent in _typed(section[1:]):
+                types[name] = parent
+        elif head == ":constants":
+            instances.update(_typed(section[1:]))
+        elif head == ":predicates":
+            for atom in section[1:]:
+                if isinstance(atom, list) and atom and isinstance(atom[0], str):
+                    predicates[atom[0]] = tuple(_typed(atom[1:]))
+    locations: dict[str, list[str]] = {}
+    if problem is not None:
+        for section in _read_sexp(Path(problem)):
+            if isinstance(section, list) and section and section[0] == ":objects":
+                instances.update(_typed(section[1:]))
+            elif isinstance(section, list) and section and section[0] == ":init":
+                for atom in section[1:]:
+                    if isinstance(atom, list) and len(atom) == 3 and atom[0] in LOCATION_PREDICATES:
+                        locations.setdefault(str(atom[1]), []).append(str(atom[2]))
+    lexicon_path = Path(lexicon) if lexicon is not None else find_lexicon(domain, problem)
+    lexicon_data = Lexicon.load(lexicon_path) if lexicon_path is not None else None
+    return Vocabulary.from_instances(instances, types, lexicon_data, predicates, locations)
+
+
+Sexp = str | list["Sexp"]
+
+
+def _read_sexp(path: Path) -> list[Sexp]:
+    try:
+        text = path.read_text(encoding="utf-8")
+    except OSError as exc:
+        raise LanguageError(f"{path}: cannot read PDDL file: {exc.strerror or exc}") from exc
+    text = re.sub(r";[^\n]*", " ", text).lower()
+    stack: list[list[Sexp]] = [[]]
+    for token in re.findall(r"\(|\)|[^\s()]+", text):
+        if token == "(":
+            stack.append([])
+        elif token == ")":
+            if len(stack) < 2:
+                raise LanguageError(f"{path}: unbalanced ')' in PDDL")
+            done = stack.pop()
+            stack[-1].append(done)
+        else:
+            stack[-1].append(token)
+    if len(stack) != 1 or not stack[0] or not isinstance(stack[0][0], list):
+        raise LanguageError(f"{path}: not a PDDL file (unbalanced parentheses or no '(define ...)')")
+    return stack[0][0]
+
+
+def _typed(items: list[Sexp]) -> list[tuple[str, str]]:
+    """A PDDL typed list ``a b - t c - u d`` as [(a, t), (b, t), (c, u), (d, object)]."""
+    out: list[tuple[str, str]] = []
+    pending: list[str] = []
+    index = 0
+    while index < len(items):
+        item = items[index]
+        if item == "-" and index + 1 < len(items):
+            parent = items[index + 1]
+            name = parent if isinstance(parent, str) else "object"
+            out += [(p.lstrip("?"), name) for p in pending]
+            pending = []
+            index += 2
+            continue
+        if isinstance(item, str):
+            pending.append(item)
+        index += 1
+    out += [(p.lstrip("?"), "object") for p in pending]
+    return out
