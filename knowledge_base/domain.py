@@ -23,15 +23,43 @@ import yaml
 
 from core.errors import PDDLParseError, PDDLValidationError
 
-__all__ = ["DomainModel", "meta_path_for", "parse_with_up"]
+__all__ = ["MAX_PDDL_BYTES", "DomainModel", "meta_path_for", "parse_with_up", "read_pddl"]
 
 #: Root of every PDDL type hierarchy.
 OBJECT = "object"
+#: Largest PDDL file read (bytes): far above any hand-written or generated household problem.
+MAX_PDDL_BYTES = 8 * 1024 * 1024
 
 
 def meta_path_for(domain_path: Path) -> Path:
     """The sidecar of a domain: ``worlds/erl_home/domain.pddl`` -> ``worlds/erl_home/domain.meta.yaml``."""
     return domain_path.with_name(f"{domain_path.stem}.meta.yaml")
+
+
+def read_pddl(path: str | Path, what: str, max_bytes: int | None = None) -> str:
+    """The text of a PDDL (or sidecar) file, read with limits: at most ``max_bytes`` (default
+    :data:`MAX_PDDL_BYTES`), UTF-8, a regular file.
+
+    Raises:
+        PDDLParseError: missing, unreadable, too large, or not UTF-8 text (one line naming the file).
+    """
+    p = Path(path)
+    limit = MAX_PDDL_BYTES if max_bytes is None else max_bytes
+    try:
+        if not p.is_file():
+            why = "not a regular file" if p.exists() else "no such file"
+            raise PDDLParseError(f"{p}: cannot read {what} file ({why})")
+        with p.open("rb") as handle:
+            data = handle.read(limit + 1)
+    except OSError as exc:
+        raise PDDLParseError(f"{p}: cannot read {what} file ({exc.strerror or exc})") from None
+    if len(data) > limit:
+        raise PDDLParseError(f"{p}: {what} file is larger than {limit} bytes")
+    try:
+        return data.decode("utf-8")
+    except UnicodeDecodeError as exc:
+        line = data[: exc.start].count(b"\n") + 1
+        raise PDDLParseError(f"{p}:{line}: {what} file is not UTF-8 text (byte {exc.start})") from None
 
 
 def parse_with_up(
@@ -137,12 +165,9 @@ class DomainModel:
             PDDLValidationError: the domain or sidecar is inconsistent.
         """
         path = Path(domain_path)
-        try:
-            text = path.read_text(encoding="utf-8")
-        except OSError as exc:
-            raise PDDLParseError(f"{path}: cannot read domain file ({exc.strerror or exc})") from None
+        text = read_pddl(path, "domain")
         meta = meta_path_for(path)
-        meta_text = meta.read_text(encoding="utf-8") if meta.is_file() else ""
+        meta_text = read_pddl(meta, "sidecar") if meta.is_file() else ""
         return cls.from_text(text, meta_text, source=str(path), meta_source=str(meta))
 
     @classmethod
@@ -161,7 +186,8 @@ class DomainModel:
         problem = parse_with_up(text, None, source, None)
         types: dict[str, str] = {}
         for t in problem.user_types:
-            types[t.name] = t.father.name if t.father is not None else OBJECT
+            if t.name != OBJECT:  # an untyped domain declares ``object`` itself (with no parent)
+                types[t.name] = t.father.name if t.father is not None else OBJECT
         predicates: dict[str, tuple[tuple[str, str], ...]] = {}
         functions: dict[str, tuple[tuple[str, str], ...]] = {}
         for fluent in problem.fluents:
@@ -260,14 +286,20 @@ def _domain_from_text(text: str, meta_text: str, source: str, meta_source: str) 
 
 
 def _subtype_closure(types: Mapping[str, str]) -> dict[str, frozenset[str]]:
+    """Each type -> itself and its descendants (iterative: deep or cyclic type tables cannot recurse)."""
     children: dict[str, set[str]] = {}
     for t, parent in types.items():
-        children.setdefault(parent, set()).add(t)
+        if t != parent:
+            children.setdefault(parent, set()).add(t)
 
     def collect(t: str) -> frozenset[str]:
         out = {t}
-        for child in children.get(t, ()):
-            out |= collect(child)
+        stack = [t]
+        while stack:
+            for child in children.get(stack.pop(), ()):
+                if child not in out:
+                    out.add(child)
+                    stack.append(child)
         return frozenset(out)
 
     closure = {t: collect(t) for t in types}

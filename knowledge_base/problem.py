@@ -19,11 +19,11 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Any
 
-from core.errors import PDDLParseError, PDDLValidationError
-from knowledge_base.domain import DomainModel, parse_with_up
+from core.errors import PDDLValidationError
+from knowledge_base.domain import DomainModel, parse_with_up, read_pddl
 from knowledge_base.model import Fact
 
-__all__ = ["ProblemContent", "content_from_up", "load_problem", "parse_problem_text"]
+__all__ = ["ProblemContent", "content_from_up", "load_problem", "parse_problem_text", "parse_problem_up"]
 
 _TOKEN = re.compile(r"\(|\)|[^\s()]+")
 _LOGIC = {"and", "or", "not", "imply"}
@@ -59,12 +59,7 @@ def load_problem(domain: DomainModel, path: str | Path) -> ProblemContent:
         PDDLParseError: missing file or syntax error.
         PDDLValidationError: the problem does not fit the domain.
     """
-    p = Path(path)
-    try:
-        text = p.read_text(encoding="utf-8")
-    except OSError as exc:
-        raise PDDLParseError(f"{p}: cannot read problem file ({exc.strerror or exc})") from None
-    return parse_problem_text(domain, text, source=str(p))
+    return parse_problem_text(domain, read_pddl(path, "problem"), source=str(path))
 
 
 def parse_problem_text(domain: DomainModel, text: str, *, source: str = "<problem>") -> ProblemContent:
@@ -74,11 +69,21 @@ def parse_problem_text(domain: DomainModel, text: str, *, source: str = "<proble
 
 @functools.lru_cache(maxsize=32)
 def _parse_cached(domain: DomainModel, text: str, source: str) -> ProblemContent:
+    return content_from_up(domain, parse_problem_up(domain, text, source=source), source)
+
+
+def parse_problem_up(domain: DomainModel, text: str, *, source: str = "<problem>") -> Any:
+    """Check problem text against ``domain`` (messages name file and line), then parse it with
+    unified-planning; the whole problem is returned, whatever its goal formula (``knic plan`` uses it).
+
+    Raises:
+        PDDLParseError: syntax error.
+        PDDLValidationError: the problem does not fit the domain.
+    """
     tree = _sexp(text)
     if tree is not None:
         _prescan(domain, tree, source)
-    problem = parse_with_up(domain.text, text, domain.source, source)
-    return content_from_up(domain, problem, source)
+    return parse_with_up(domain.text, text, domain.source, source)
 
 
 def content_from_up(domain: DomainModel, problem: Any, source: str = "<up problem>") -> ProblemContent:

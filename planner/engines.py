@@ -31,10 +31,10 @@ from typing import Any, Protocol
 from core.errors import PlanningError
 from planner.grounding import GroundingCache, ground_task
 from planner.model import Atom, PlanningTask, atom_str
-from planner.plan import PlanResult, PlanStatus, PlanStep
+from planner.plan import PlanResult, PlanStatus, PlanStep, TimedStep
 from planner.problem import focus_task, task_to_up
 from planner.search import SearchLimitReached, StripsSearch
-from planner.validate import check_plan, validate_with_up
+from planner.validate import check_plan, check_schedule, validate_with_up
 
 ENGINES = ("auto", "knic", "fast-downward", "tamer")
 _UP_NAMES = {"fast-downward": "fast-downward", "tamer": "tamer"}
@@ -140,6 +140,8 @@ class TaskPlanner:
         """Plan for ``task``; see the class docstring. Raises PlanningError only for unsupported features."""
         start = time.perf_counter()
         limit = self.timeout if timeout is None else timeout
+        if not task.goals:  # nothing asked: the empty plan reaches every goal
+            return PlanResult(PlanStatus.SOLVED, (), (), (), 0.0, self.engine)
         engine = choose_engine(
             task, self.engine, self._up_problem(task) if self.engine in _UP_NAMES else None
         )
@@ -168,15 +170,21 @@ class TaskPlanner:
             result.engine,
             result.message,
             result.stats,
+            result.schedule,
         )
 
     def _invalid(self, task: PlanningTask, result: PlanResult) -> str:
         """Why ``result.plan`` is not valid for the full task ("" when valid)."""
         if task.domain.unsupported is None:
-            check = check_plan(task.domain, task.facts, result.plan, result.reachable_goals, task.objects)
+            if result.schedule:  # a temporal plan: actions may overlap
+                check = check_schedule(
+                    task.domain, task.facts, result.schedule, result.reachable_goals, task.objects
+                )
+            else:
+                check = check_plan(task.domain, task.facts, result.plan, result.reachable_goals, task.objects)
             return check.reason
         full = PlanningTask(task.domain, task.objects, task.facts, result.reachable_goals)
-        valid, reason = validate_with_up(task_to_up(full, self.up_domain), result.plan)
+        valid, reason = validate_with_up(task_to_up(full, self.up_domain), result.plan, result.schedule)
         return "" if valid else reason
 
     def _up_problem(self, task: PlanningTask) -> Any:
@@ -261,12 +269,17 @@ class TaskPlanner:
         from unified_planning.shortcuts import OneshotPlanner
 
         silence_up()
-        problem = self._up_problem(task)
+        focus = self.focus
         unreachable: list[Atom] = []
         if not task.domain.unsupported and not task.domain.temporal:
-            unreachable = list(ground_task(focus_task(task) if self.focus else task).unreachable_goals)
-            if unreachable and self.focus:
-                unreachable = list(ground_task(task).unreachable_goals)
+            unreachable = list(ground_task(focus_task(task) if focus else task).unreachable_goals)
+            if unreachable and focus:
+                full = list(ground_task(task).unreachable_goals)
+                if full != unreachable:
+                    # the focus dropped an object some goal needs (typical of untyped domains): plan unfocused
+                    focus = False
+                unreachable = full
+        problem = task_to_up(focus_task(task) if focus else task, self.up_domain)
         wanted = [g for g in task.goals if g not in set(unreachable)]
         if not wanted:
             return PlanResult(PlanStatus.UNSOLVABLE, (), task.goals, task.goals, 0.0, engine)
@@ -292,15 +305,17 @@ class TaskPlanner:
                 PlanStatus.ERROR, goals=task.goals, engine=engine, message=str(answer.status.name)
             )
         steps = plan_from_up(answer.plan)
-        final = (
-            check_plan(task.domain, task.facts, steps, (), None).final
-            if not task.domain.unsupported
-            else None
-        )
+        schedule = schedule_from_up(answer.plan)
+        final = None
+        if not task.domain.unsupported:
+            if schedule:
+                final = check_schedule(task.domain, task.facts, schedule, (), None).final
+            else:
+                final = check_plan(task.domain, task.facts, steps, (), None).final
         if final is not None:
             unreachable += [g for g in wanted if g not in final]
         status = PlanStatus.PARTIAL if unreachable else PlanStatus.SOLVED
-        return PlanResult(status, steps, task.goals, tuple(unreachable), 0.0, engine)
+        return PlanResult(status, steps, task.goals, tuple(unreachable), 0.0, engine, schedule=schedule)
 
 
 def plan_from_up(plan: Any) -> tuple[PlanStep, ...]:
@@ -308,6 +323,20 @@ def plan_from_up(plan: Any) -> tuple[PlanStep, ...]:
     timed = hasattr(plan, "timed_actions")
     actions: Sequence[Any] = [ai for _, ai, _ in plan.timed_actions] if timed else plan.actions
     return tuple(PlanStep(ai.action.name, tuple(str(p) for p in ai.actual_parameters)) for ai in actions)
+
+
+def schedule_from_up(plan: Any) -> tuple[TimedStep, ...]:
+    """The start times and durations of a unified-planning time-triggered plan (empty for other plans)."""
+    if not hasattr(plan, "timed_actions"):
+        return ()
+    return tuple(
+        TimedStep(
+            float(start),
+            PlanStep(ai.action.name, tuple(str(p) for p in ai.actual_parameters)),
+            None if dur is None else float(dur),
+        )
+        for start, ai, dur in sorted(plan.timed_actions, key=lambda x: x[0])
+    )
 
 
 def goal_names(goals: Sequence[Atom]) -> list[str]:

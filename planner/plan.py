@@ -33,6 +33,26 @@ class PlanStep:
         return cls(name, tuple(args))
 
 
+@dataclass(frozen=True)
+class TimedStep:
+    """One action of a temporal plan: start time and duration (seconds of plan time; None: instantaneous).
+
+    ``str()`` is the IPC form ``0.000: (name a b) [5.000]``.
+    """
+
+    start: float
+    step: PlanStep
+    duration: float | None = None
+
+    def __str__(self) -> str:
+        text = f"{self.start:.3f}: {self.step}"
+        return text if self.duration is None else f"{text} [{self.duration:.3f}]"
+
+    def to_json(self) -> dict[str, object]:
+        """``{"start": 0.0, "action": ["name", ...], "duration": 5.0}``."""
+        return {"start": self.start, "action": self.step.as_list(), "duration": self.duration}
+
+
 class PlanStatus(enum.StrEnum):
     """How planning ended.
 
@@ -70,6 +90,7 @@ class PlanResult:
     engine: str = ""
     message: str = ""
     stats: dict[str, float] = field(default_factory=dict)
+    schedule: tuple[TimedStep, ...] = ()
 
     @property
     def has_plan(self) -> bool:
@@ -84,13 +105,18 @@ class PlanResult:
 
     def to_json(self) -> dict[str, object]:
         """The ``knic plan --json`` object."""
-        return {
+        data: dict[str, object] = {
             "status": self.status.value,
             "plan": [s.as_list() for s in self.plan],
             "unreachable_goals": [atom_str(g) for g in self.unreachable_goals],
             "planning_ms": round(self.planning_ms, 3),
             "engine": self.engine,
         }
+        if self.schedule:
+            data["schedule"] = [t.to_json() for t in self.schedule]
+        if self.message:
+            data["message"] = self.message
+        return data
 
 
 def steps_from_lists(rows: Sequence[Sequence[str]]) -> tuple[PlanStep, ...]:

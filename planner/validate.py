@@ -16,7 +16,7 @@ from dataclasses import dataclass
 from typing import Any
 
 from planner.model import ActionSchema, Atom, StripsDomain, atom_str, ground
-from planner.plan import PlanStep
+from planner.plan import PlanStep, TimedStep
 
 
 @dataclass(frozen=True)
@@ -132,22 +132,116 @@ def check_plan(
     return CheckResult(True, None, "", frozenset(state), ())
 
 
-def validate_with_up(problem: Any, steps: Sequence[PlanStep]) -> tuple[bool, str]:
-    """Validate ``steps`` for a unified-planning ``Problem`` with its sequential plan validator.
+def check_schedule(
+    domain: StripsDomain,
+    facts: Iterable[Atom],
+    schedule: Sequence[TimedStep],
+    goals: Iterable[Atom],
+    objects: Mapping[str, str] | None = None,
+) -> CheckResult:
+    """Check a temporal plan (actions with start times and durations, possibly overlapping).
+
+    The plan is executed as its happenings in time order: a durative action's start (at-start conditions
+    checked, at-start effects applied) and its end (at-end conditions checked, at-end effects applied);
+    at one instant ends come before starts. Over-all conditions must hold in every state while the action
+    runs, i.e. after its start and after every happening before its end. Instantaneous actions (duration
+    None) are one happening. ``failed_step`` indexes ``schedule``.
+    """
+    state = set(facts)
+    goal_list = tuple(goals)
+    happenings: list[tuple[float, int, int]] = []  # (time, 0 end / 1 start, index)
+    for i, timed in enumerate(schedule):
+        problem = step_problem(domain, timed.step, objects)
+        if problem:
+            return CheckResult(False, i, f"step {i + 1} {problem}", frozenset(state), goal_list)
+        happenings.append((timed.start, 1, i))
+        if domain.schemas[timed.step.name].durative:
+            happenings.append((timed.start + (timed.duration or 0.0), 0, i))
+    happenings.sort()
+    running: set[int] = set()
+
+    def fail(i: int, what: str, missing: list[str]) -> CheckResult:
+        unmet = tuple(g for g in goal_list if g not in state)
+        step = schedule[i].step
+        reason = f"step {i + 1} {step} at {schedule[i].start:g}: {what} condition {missing[0]} does not hold"
+        return CheckResult(False, i, reason, frozenset(state), unmet)
+
+    for _, is_start, i in happenings:
+        step = schedule[i].step
+        schema = domain.schemas[step.name]
+        if is_start:
+            missing = unmet_conditions(schema, step.args, state, "start")
+            if missing:
+                return fail(i, "at-start", missing)
+            if schema.durative:
+                _apply_part(state, step.args, schema.start_delete, schema.start_add)
+                running.add(i)
+            else:
+                apply(schema, step.args, state)
+        else:
+            running.discard(i)
+            missing = unmet_conditions(schema, step.args, state, "end")
+            if missing:
+                return fail(i, "at-end", missing)
+            _apply_part(state, step.args, schema.delete, schema.add)
+        for j in sorted(running):
+            other = schedule[j].step
+            missing = unmet_conditions(domain.schemas[other.name], other.args, state, "overall")
+            if missing:
+                return fail(j, "over-all", missing)
+    unmet = tuple(g for g in goal_list if g not in state)
+    if unmet:
+        text = " ".join(atom_str(g) for g in unmet)
+        return CheckResult(False, None, f"goals not reached: {text}", frozenset(state), unmet)
+    return CheckResult(True, None, "", frozenset(state), ())
+
+
+def _apply_part(state: set[Atom], args: tuple[str, ...], delete: Iterable[Any], add: Iterable[Any]) -> None:
+    for atom in ground(delete, args):
+        state.discard(atom)
+    for atom in ground(add, args):
+        state.add(atom)
+
+
+def validate_with_up(
+    problem: Any, steps: Sequence[PlanStep], schedule: Sequence[TimedStep] = ()
+) -> tuple[bool, str]:
+    """Validate a plan for a unified-planning ``Problem`` with its validators.
+
+    With ``schedule`` (a temporal plan) the time-triggered validator checks the actions at their start
+    times with their durations; otherwise the sequential validator checks ``steps`` in order.
 
     Returns:
         ``(valid, reason)``; ``reason`` is the validator's explanation when invalid, "" otherwise.
     """
+    from fractions import Fraction
+
     from unified_planning.engines import ValidationResultStatus
-    from unified_planning.plans import ActionInstance, SequentialPlan
+    from unified_planning.plans import ActionInstance, SequentialPlan, TimeTriggeredPlan
     from unified_planning.shortcuts import PlanValidator
 
+    def instance(s: PlanStep) -> Any:
+        return ActionInstance(problem.action(s.name), [problem.object(a) for a in s.args])
+
     try:
-        actions = [ActionInstance(problem.action(s.name), [problem.object(a) for a in s.args]) for s in steps]
+        if schedule:
+            plan: Any = TimeTriggeredPlan(
+                [
+                    (
+                        Fraction(str(t.start)),
+                        instance(t.step),
+                        None if t.duration is None else Fraction(str(t.duration)),
+                    )
+                    for t in schedule
+                ]
+            )
+            name = "up_time_triggered_validator"
+        else:
+            plan = SequentialPlan([instance(s) for s in steps])
+            name = "sequential_plan_validator"
     except Exception as exc:  # unknown action or object: UP raises its own error types
         return False, f"plan does not fit the problem: {exc}"
-    plan = SequentialPlan(actions)
-    with PlanValidator(name="sequential_plan_validator") as validator:
+    with PlanValidator(name=name) as validator:
         result = validator.validate(problem, plan)
     if result.status == ValidationResultStatus.VALID:
         return True, ""

@@ -2,7 +2,9 @@
 
 Subcommands live in their own modules and are listed explicitly in :data:`COMMANDS`. Each module
 provides ``add_arguments(parser)`` and ``run(args) -> int`` and keeps heavy imports inside ``run`` so that
-``--help`` is fast. A :class:`~core.errors.KnicError` becomes one line on stderr and the error's exit code.
+``--help`` is fast. Only the module of the command given is imported (``knic --help`` imports none), so
+start-up costs what that command needs and a broken module breaks only its own command. A
+:class:`~core.errors.KnicError` becomes one line on stderr and the error's exit code.
 """
 
 from __future__ import annotations
@@ -29,6 +31,10 @@ COMMANDS: dict[str, tuple[str, str]] = {
 }
 
 
+#: the command line being parsed (set by :func:`main`): which registry entries to import
+_ARGV: list[str] = []
+
+
 def build_parser() -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(prog="knic", description="KnIC: knowledge inference and plan execution.")
     parser.add_argument("--version", action="version", version=f"knic {__version__}")
@@ -38,9 +44,16 @@ def build_parser() -> argparse.ArgumentParser:
 
 
 def add_command_modules(sub: argparse._SubParsersAction, registry: dict[str, tuple[str, str]]) -> None:
-    """Add one subparser per registry entry; a module that is missing is reported when the command is used."""
+    """Add one subparser per registry entry; a module that is missing is reported when the command is used.
+
+    Only the entry named on the command line (:data:`_ARGV`) has its module imported and its arguments
+    added; when no entry is named (``--help``) none is imported.
+    """
+    chosen = next((a for a in _ARGV if not a.startswith("-") and a in registry), None)
     for name, (module_name, help_text) in registry.items():
         command_parser = sub.add_parser(name, help=help_text, description=help_text)
+        if _ARGV and name != chosen:
+            continue
         try:
             module = importlib.import_module(module_name)
         except ModuleNotFoundError as exc:
@@ -60,7 +73,12 @@ def _missing(name: str, module_name: str) -> Callable[[argparse.Namespace], int]
 
 
 def main(argv: Sequence[str] | None = None) -> int:
-    parser = build_parser()
+    argv = list(sys.argv[1:] if argv is None else argv)
+    _ARGV[:] = argv or ["--help"]
+    try:
+        parser = build_parser()
+    finally:
+        _ARGV[:] = []
     args = parser.parse_args(argv)
     try:
         code: int = args._run(args)

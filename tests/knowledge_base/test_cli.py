@@ -44,7 +44,7 @@ def test_table(journal: Path, capsys: pytest.CaptureFixture[str]) -> None:
     assert code == 0
     assert lines[0].split() == ["PREDICATE", "ARGUMENTS", "STATUS", "AUTHOR", "SINCE"]
     assert "object_at     glasses entrance         observed  kp.object  20.00" in lines
-    assert lines[-1] == "19 fact(s)"
+    assert lines[-1] == "23 fact(s)"
 
 
 def test_json_predicate_and_at(journal: Path, capsys: pytest.CaptureFixture[str]) -> None:
@@ -60,7 +60,7 @@ def test_json_predicate_and_at(journal: Path, capsys: pytest.CaptureFixture[str]
         (["glasses", "kitchen"], 12.5, ["llku:3"])
     ]
     code, out, _ = run_cli(capsys, "facts", "--journal", str(journal), "--json", "--at", "5")
-    assert not any(r["predicate"] == "object_at" for r in json.loads(out)) and len(json.loads(out)) == 18
+    assert not any(r["predicate"] == "object_at" for r in json.loads(out)) and len(json.loads(out)) == 22
 
 
 def test_why(journal: Path, capsys: pytest.CaptureFixture[str]) -> None:
