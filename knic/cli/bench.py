@@ -11,8 +11,13 @@ BENCHES: dict[str, tuple[str, str]] = {
     "kb": ("knic.bench.kb", "knowledge-base write, query and history throughput"),
     "planner": ("knic.bench.planner", "replanning latency against naive re-planning, dispatch overhead"),
     "sim": ("knic.bench.sim", "simulator real-time factor and camera frame time"),
+    "language": ("knic.bench.language", "text understanding on the development and held-out test sets"),
     "speech": ("knic.bench.speech", "speech recognition and command understanding on the shipped test set"),
     "grounding": ("knic.bench.grounding", "knowledge-base truth against the simulator's ground truth"),
+    "granny-annie": (
+        "knic.bench.granny_annie.command",
+        "the ERL Granny Annie task benchmark: episodes, score sheet, report",
+    ),
 }
 
 

@@ -153,6 +153,8 @@ class Recorder:
         if status.goal_id != self._nav_goal:
             self._nav_goal = status.goal_id
             path = [(float(x), float(y)) for x, y in status.path]
+            if not path and status.goal is not None:  # a turn on the spot: the goal pose alone
+                path = [(float(status.goal.x), float(status.goal.y))]
             self.recording.paths.append((now, path))
 
     def _on_change(self, change: Change) -> None:
