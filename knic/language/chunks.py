@@ -99,6 +99,8 @@ class Chunker:
             put(phrase, 2, Chunk("det", phrase))
         for phrase in lang.joiners:
             put(phrase, 3, Chunk("join", phrase))
+        for phrase in lang.partitive:
+            put(phrase, 3, Chunk("partitive", phrase))
         for phrase in lang.percent:
             put(normalize(phrase) or phrase, 3, Chunk("percent", phrase))
         for state, phrases in lang.states.items():

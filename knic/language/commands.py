@@ -68,6 +68,7 @@ class CommandLanguage:
     states: dict[str, tuple[str, ...]]
     levels: dict[int, tuple[str, ...]]
     percent: tuple[str, ...]
+    partitive: tuple[str, ...]
     templates: tuple[tuple[str, str], ...]
     openers: tuple[str, ...]
     closers: tuple[str, ...]
@@ -162,6 +163,7 @@ def load_language(path: str | Path = DEFAULT_PATH) -> CommandLanguage:
         states=tables["states"],
         levels=levels,
         percent=_phrases(data, "percent", source),
+        partitive=_phrases(data, "partitive", source),
         templates=tuple(templates),
         openers=_phrases(data, "openers", source),
         closers=_phrases(data, "closers", source),

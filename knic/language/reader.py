@@ -125,6 +125,18 @@ class Reader:
             if current is None:
                 preamble.append(chunk)
                 continue
+            if (
+                chunk.kind == "partitive"
+                and current.args
+                and nxt is not None
+                and nxt.kind in ("entity", "det")
+            ):
+                container = current.args.pop()  # "a glass of water": the water is meant
+                pending_prep = (
+                    Chunk("prep", container.prep_text, role=container.prep) if container.prep else None
+                )
+                joined = container.joined
+                continue
             if chunk.kind == "join":
                 joined = nxt is not None and nxt.kind in ("entity", "det", "pronoun", "me", "unknown")
                 continue

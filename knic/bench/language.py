@@ -1,0 +1,142 @@
+"""``knic bench language``: text understanding on the development and the held-out test set.
+
+The sets are ``tests/fixtures/language/dev.yaml`` (tuned on) and ``tests/fixtures/language/test.yaml``
+(written afterwards in other words and never tuned on). Each case is a command with its gold frames and goals,
+or with a word the refusal (``reject``) or the question back (``question``) must contain. Cases run against
+the ERL apartment or, with ``world: other``, against a different house (``tests/fixtures/language/other_world``)
+to show that the language code knows no world's names. Figures per set:
+
+* ``accuracy`` -- share of cases handled exactly right (frames and goals, or the right refusal or question);
+* ``frame_accuracy`` -- of the cases with gold frames, share whose frame kinds are right, in order;
+* ``main_argument_accuracy`` -- share whose kinds and main arguments (theme; goal for MOTION; device and
+  state for OPERATING) are right;
+* ``frame_argument_accuracy`` -- share whose frames are right with every argument;
+* ``goal_accuracy`` -- share whose goals are exactly the gold goals;
+* ``refusal_accuracy`` -- of the cases to refuse or ask about, share answered so;
+* ``by_class`` -- accuracy per phrasing class (fillers, relative, chains, levels, several, ...);
+* ``ms_per_command`` -- mean wall-clock time per command.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import time
+from pathlib import Path
+from typing import Any
+
+import yaml
+
+from core.errors import KnicError
+
+FIXTURES = Path(__file__).resolve().parents[2] / "tests" / "fixtures" / "language"
+SETS = {"dev": FIXTURES / "dev.yaml", "test": FIXTURES / "test.yaml"}
+OTHER_WORLD = FIXTURES / "other_world" / "problem.pddl"
+_MAIN = {"MOTION": ("goal",), "OPERATING": ("device", "state")}
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--json", action="store_true", help="print one JSON object")
+    parser.add_argument("--verbose", action="store_true", help="list every case that went wrong")
+    parser.add_argument("--set", action="append", choices=sorted(SETS), help="only this set (repeatable)")
+
+
+def frame_spec(spec: str) -> dict[str, str]:
+    """``"BRINGING theme=cup beneficiary=me"`` -> ``{"frame": "BRINGING", "theme": "cup", ...}``."""
+    kind, *pairs = spec.split()
+    return {"frame": kind, **dict(pair.split("=", 1) for pair in pairs)}
+
+
+def _main(frame: dict[str, str]) -> tuple[str, ...]:
+    roles = _MAIN.get(frame["frame"], ("theme",))
+    return (frame["frame"], *(frame.get(r, "") for r in roles))
+
+
+def evaluate(path: Path) -> dict[str, Any]:
+    """Run one set; figures plus the mistakes under ``"errors"``.
+
+    Raises:
+        KnicError: the set file is missing or malformed.
+    """
+    from knic.language.understanding import understand
+    from knic.language.world import read_vocabulary
+
+    try:
+        cases = yaml.safe_load(path.read_text(encoding="utf-8"))["cases"]
+    except (OSError, yaml.YAMLError, KeyError, TypeError) as exc:
+        raise KnicError(f"{path}: cannot read the language set: {exc}") from exc
+    worlds = {"erl": read_vocabulary()}
+    worlds["other"] = read_vocabulary(problem=OTHER_WORLD)
+    tally = {
+        "right": 0,
+        "kinds": 0,
+        "main": 0,
+        "args": 0,
+        "goals": 0,
+        "framed": 0,
+        "refusals": 0,
+        "refuse": 0,
+    }
+    classes: dict[str, list[int]] = {}
+    errors: list[dict[str, Any]] = []
+    elapsed = 0.0
+    for case in cases:
+        vocabulary = worlds[case.get("world", "erl")]
+        started = time.perf_counter()
+        result = understand(case["text"], vocabulary, speaker=case.get("speaker", "annie"))
+        elapsed += time.perf_counter() - started
+        got = [f.to_dict() for f in result.frames] if result.accepted else []
+        if "frames" in case:
+            gold = [frame_spec(f) for f in case["frames"]]
+            tally["framed"] += 1
+            tally["kinds"] += [f["frame"] for f in got] == [f["frame"] for f in gold]
+            tally["main"] += [_main(f) for f in got] == [_main(f) for f in gold]
+            tally["args"] += got == gold
+            goals_right = [str(g) for g in result.goals] == case.get("goals", [])
+            tally["goals"] += goals_right
+            right = got == gold and goals_right
+        else:
+            tally["refuse"] += 1
+            clue = case.get("reject") or case.get("question") or ""
+            said = result.question if "question" in case else result.reason
+            right = not result.accepted and clue.lower() in said.lower()
+            tally["refusals"] += right
+        tally["right"] += right
+        counts = classes.setdefault(str(case.get("class", "other")), [0, 0])
+        counts[0] += right
+        counts[1] += 1
+        if not right:
+            errors.append({"text": case["text"], "frames": got, "reason": result.reason})
+    n = len(cases)
+    framed = tally["framed"]
+    return {
+        "cases": n,
+        "accuracy": round(tally["right"] / n, 4) if n else None,
+        "frame_accuracy": round(tally["kinds"] / framed, 4) if framed else None,
+        "main_argument_accuracy": round(tally["main"] / framed, 4) if framed else None,
+        "frame_argument_accuracy": round(tally["args"] / framed, 4) if framed else None,
+        "goal_accuracy": round(tally["goals"] / framed, 4) if framed else None,
+        "refusal_accuracy": round(tally["refusals"] / tally["refuse"], 4) if tally["refuse"] else None,
+        "by_class": {k: round(ok / total, 4) for k, (ok, total) in sorted(classes.items())},
+        "ms_per_command": round(elapsed * 1000.0 / n, 2) if n else None,
+        "errors": errors,
+    }
+
+
+def run(args: argparse.Namespace) -> int:
+    figures: dict[str, Any] = {}
+    for name in args.set or sorted(SETS):
+        figures[name] = evaluate(SETS[name])
+        if not args.verbose:
+            figures[name].pop("errors")
+    if args.json:
+        print(json.dumps(figures))
+        return 0
+    for name, data in figures.items():
+        print(f"{name}:")
+        for key, value in data.items():
+            if key != "errors":
+                print(f"  {key}: {value}")
+        for error in data.get("errors", []):
+            print(f"  wrong: {error['text']!r} -> {error['frames']} {error['reason']}")
+    return 0

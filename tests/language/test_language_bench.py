@@ -1,0 +1,31 @@
+"""The text-understanding bench: both sets run, the figures are printed, the other world needs no names."""
+
+from __future__ import annotations
+
+import json
+
+import pytest
+
+from knic.bench.language import SETS, evaluate
+from knic.cli import main
+
+
+def test_the_development_set_is_understood() -> None:
+    figures = evaluate(SETS["dev"])
+    assert figures["accuracy"] >= 0.95, figures["errors"]
+    assert figures["by_class"]["other_world"] == 1.0
+
+
+def test_the_held_out_set_stays_above_the_floor() -> None:
+    figures = evaluate(SETS["test"])
+    assert figures["main_argument_accuracy"] >= 0.85, figures["errors"]
+    assert figures["refusal_accuracy"] >= 0.9
+
+
+def test_bench_language_prints_dev_and_test(capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["bench", "language", "--json"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert set(data) == {"dev", "test"}
+    for figures in data.values():
+        assert 0.0 <= figures["accuracy"] <= 1.0 and figures["cases"] >= 40
+        assert {"fillers", "relative", "chains", "levels", "several"} <= set(figures["by_class"])
