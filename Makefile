@@ -11,7 +11,7 @@ GOAL ?= (object_at glasses bedroom)
 $(STAMP): pyproject.toml requirements.lock
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
-	$(BIN)/python -m pip install --quiet -c requirements.lock -e '.[dev,web]'
+	$(BIN)/python -m pip install --quiet -c requirements.lock -e '.[dev,web,ros]'
 	touch $(STAMP)
 
 venv: $(STAMP)
