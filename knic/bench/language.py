@@ -3,8 +3,8 @@
 The sets are ``tests/fixtures/language/dev.yaml`` (tuned on) and ``tests/fixtures/language/test.yaml``
 (written afterwards in other words and never tuned on). Each case is a command with its gold frames and goals,
 or with a word the refusal (``reject``) or the question back (``question``) must contain. Cases run against
-the ERL apartment or, with ``world: other``, against a different house (``tests/fixtures/language/other_world``)
-to show that the language code knows no world's names. Figures per set:
+the ERL apartment or, with ``world: other``, against a different house
+(``tests/fixtures/language/other_world``), to show that the language code knows no world's names. Figures:
 
 * ``accuracy`` -- share of cases handled exactly right (frames and goals, or the right refusal or question);
 * ``frame_accuracy`` -- of the cases with gold frames, share whose frame kinds are right, in order;
