@@ -179,6 +179,13 @@ def create_app(
 
     guarded = [Depends(authorise)]
 
+    def sync() -> None:
+        """Read what the writer appended (and stream it to the pages) so an answer is never behind."""
+        try:
+            hub.poll_once()
+        except KnicError as exc:
+            raise HTTPException(503, f"journal: {exc}") from None
+
     def parse_at(at: float | None) -> float | None:
         if at is not None and not math.isfinite(at):
             raise HTTPException(400, f"at: expected a finite time in seconds, got {at}")
@@ -223,6 +230,7 @@ def create_app(
     @app.get("/api/info", dependencies=guarded, tags=["view"])
     async def info() -> dict[str, Any]:
         """What the page shows: the journal's span, whether a run is attached and takes goals."""
+        sync()
         return {
             "version": __version__,
             "mode": "run" if live is not None else "journal",
@@ -242,6 +250,7 @@ def create_app(
         q: str | None = Query(None, max_length=200, description="text the fact contains"),
     ) -> JSONResponse:
         """The fact table (with status, author, since, confidence) and the goals."""
+        sync()
         try:
             body = hub.view.facts(parse_at(at), predicate=predicate, status=status, author=author, text=q)
         except BadQuery as exc:
@@ -254,6 +263,7 @@ def create_app(
         at: float | None = Query(None, description="clock time in seconds (default: now)"),
     ) -> dict[str, Any]:
         """Why a fact is believed: who wrote it, when, on what support, and its whole history."""
+        sync()
         try:
             return hub.view.why(fact, parse_at(at))
         except BadQuery as exc:
@@ -262,11 +272,13 @@ def create_app(
     @app.get("/api/map", dependencies=guarded, tags=["view"])
     async def map_(at: float | None = Query(None, description="clock time in seconds")) -> JSONResponse:
         """Rooms, doors, furniture, devices, and where the robot, items and people are believed to be."""
+        sync()
         return JSONResponse(hub.view.map(parse_at(at)))
 
     @app.get("/api/trace", dependencies=guarded, tags=["plan"])
     async def trace_(after: int = Query(0, ge=0)) -> dict[str, Any]:
         """The plan and execution trace: plans, dispatches, outcomes, replans, goals (after the first n)."""
+        sync()
         if hub.trace is None:
             return {"after": after, "count": 0, "events": []}
         events = hub.trace.events(after)[: max(0, hub.trace_count - after)]

@@ -152,6 +152,8 @@ class Hub:
     # ------------------------------------------------------------------ streams
     async def stream(self, after: int, trace_after: int) -> AsyncIterator[str]:
         """One page's event stream: the backlog after ``after`` / ``trace_after``, then live events."""
+        with contextlib.suppress(KnicError):
+            self.poll_once()  # what the writer appended so far goes to the backlog below, not twice
         q: asyncio.Queue[str | None] = asyncio.Queue(maxsize=QUEUE_SIZE)
         self._queues.add(q)
         try:

@@ -296,22 +296,20 @@ def bus_records(system: KnicSystem) -> list[dict[str, Any]]:
 
 
 def track_records(system: KnicSystem) -> list[dict[str, Any]]:
-    """KGM-2's tracks: symbol, class, centroid, radius and the octomap's voxels projected on the floor."""
+    """KGM-2's tracks: symbol, class, centroid, and its octomap's occupied voxels projected on the floor
+    (one cell per distinct ``(x, y)``) with the radius they span around the centroid."""
     import numpy as np
-
-    from knic.spatial.keys import key_centers
 
     out = []
     for track in system.pipeline.cognition.tracks():
-        keys = track.keys
-        resolution = float(getattr(track.octomap, "resolution", 0.05))
+        resolution = float(track.octomap.resolution)
+        occupied = np.asarray(track.octomap.tree.extractPointCloud()[0], dtype=np.float64).reshape(-1, 3)
         cx, cy, _ = track.centroid
         voxels: list[list[float]] = []
         radius = 0.0
-        if len(keys):
-            centers = key_centers(np.asarray(keys), resolution)[:, :2]
-            cells = np.unique(np.round(centers / resolution).astype(np.int64), axis=0)[:MAX_VOXELS]
-            xy = cells.astype(np.float64) * resolution
+        if len(occupied):
+            cells = np.unique(np.floor(occupied[:, :2] / resolution).astype(np.int64), axis=0)[:MAX_VOXELS]
+            xy = (cells.astype(np.float64) + 0.5) * resolution
             radius = float(np.max(np.hypot(xy[:, 0] - cx, xy[:, 1] - cy))) + resolution / 2
             voxels = [[round(float(a), 3), round(float(b), 3)] for a, b in xy]
         out.append(
