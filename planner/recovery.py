@@ -6,11 +6,18 @@ A policy maps each :class:`~actions.base.Outcome` to a :class:`RecoveryRule`: re
 ``max_replans_per_goal`` bounds the replans any one goal may cause; past it the goal is dropped, so the
 dispatch loop never spins forever.
 
+A dropped goal may come back (:class:`GoalRetry`): at most ``times`` times, and only when knowledge relevant
+to it changed since the drop (a fact naming one of the goal's subjects, its arguments that are not rooms,
+furniture or levels, appeared or went) or its ``after_s`` back-off elapsed, and only while no action runs
+(a retry never cancels an action in progress for another goal). ``times: 0`` (the default) keeps dropped
+goals dropped.
+
 Policies load from plain dicts (e.g. a YAML file)::
 
     {"max_replans_per_goal": 5,
      "rules": {"execution failure": {"retries": 1, "then": "replan"},
-               "timeout": {"retries": 0, "then": "drop_goal"}}}
+               "timeout": {"retries": 0, "then": "drop_goal"}},
+     "goal_retry": {"times": 20, "after_s": 10.0}}
 """
 
 from __future__ import annotations
@@ -53,16 +60,32 @@ def _default_rules() -> dict[Outcome, RecoveryRule]:
 
 
 @dataclass(frozen=True)
+class GoalRetry:
+    """When a dropped goal comes back (see the module docstring).
+
+    Attributes:
+        times: retries per goal; 0: a dropped goal stays dropped.
+        after_s: back-off in seconds of the dispatcher's clock after which a dropped goal comes back even
+            without relevant new knowledge.
+    """
+
+    times: int = 0
+    after_s: float = 10.0
+
+
+@dataclass(frozen=True)
 class RecoveryPolicy:
     """Per-outcome recovery rules plus the per-goal replan bound.
 
     Attributes:
         rules: outcome -> rule; outcomes not listed get ``RecoveryRule()`` (no retry, replan).
         max_replans_per_goal: replans one goal may cause before it is dropped.
+        goal_retry: when a dropped goal comes back.
     """
 
     rules: Mapping[Outcome, RecoveryRule] = field(default_factory=_default_rules)
     max_replans_per_goal: int = 5
+    goal_retry: GoalRetry = GoalRetry()
 
     def rule(self, outcome: Outcome) -> RecoveryRule:
         """The rule for ``outcome``."""
@@ -78,7 +101,7 @@ class RecoveryPolicy:
         """Build a policy from a plain dict (see the module docstring); unlisted outcomes keep the defaults.
 
         Raises:
-            KnicError: unknown outcome name, unknown recovery, or a negative count.
+            KnicError: unknown outcome name, unknown recovery, or a negative count or back-off.
         """
         rules = _default_rules()
         for name, spec in dict(data.get("rules", {})).items():
@@ -94,11 +117,19 @@ class RecoveryPolicy:
         bound = int(data.get("max_replans_per_goal", 5))
         if bound < 0:
             raise KnicError(f"recovery policy: max_replans_per_goal must be >= 0, got {bound}")
-        return cls(rules, bound)
+        retry = dict(data.get("goal_retry", {}))
+        unknown = sorted(set(retry) - {"times", "after_s"})
+        if unknown:
+            raise KnicError(f"recovery policy: goal_retry has no setting {unknown[0]!r} (times, after_s)")
+        goal_retry = GoalRetry(int(retry.get("times", 0)), float(retry.get("after_s", 10.0)))
+        if goal_retry.times < 0 or goal_retry.after_s < 0:
+            raise KnicError(f"recovery policy: goal_retry times and after_s must be >= 0, got {retry}")
+        return cls(rules, bound, goal_retry)
 
     def to_dict(self) -> dict[str, Any]:
         """The policy as a plain dict (round-trips through :meth:`from_dict`)."""
         return {
             "max_replans_per_goal": self.max_replans_per_goal,
             "rules": {o.value: {"retries": r.retries, "then": r.then.value} for o, r in self.rules.items()},
+            "goal_retry": {"times": self.goal_retry.times, "after_s": self.goal_retry.after_s},
         }

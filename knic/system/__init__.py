@@ -26,7 +26,6 @@ from knic.system.loop import RunLoop
 from knic.system.verdict import BeliefVerdict, Referee, Stop
 from knowledge_base import Fact
 from planner.dispatch import DispatcherState
-from planner.trace import EventKind, TraceEvent
 
 __all__ = ["KnicSystem", "RunConfig", "RunResult", "build_system", "parse_goal"]
 
@@ -55,9 +54,9 @@ class KnicSystem:
         if parts.dispatcher is None:
             raise KnicError("KnicSystem needs the dispatcher (RunConfig.dispatch=True)")
         self.dispatcher = parts.dispatcher
-        self._retries: dict[str, int] = {}
-        self._dropped_at: dict[str, float] = {}
-        self.beliefs = BeliefVerdict(self.kb, self.dropped_for_good, self._idle, settle_s=cfg.settle_s)
+        self.beliefs = BeliefVerdict(
+            self.kb, self.dispatcher.dropped_for_good, self._idle, settle_s=cfg.settle_s
+        )
         self.referee = Referee(self.sim, lambda: [u.text for u in self.sim.spoken()], spoken)
 
     # ------------------------------------------------------------------ goals
@@ -93,7 +92,6 @@ class KnicSystem:
         loop: RunLoop[Stop] = RunLoop(self.scheduler, self.config.check_period_s)
         if on_check is not None:
             loop.add_hook(lambda now: on_check(self))
-        loop.add_hook(self._retry_dropped)
         loop.add_stop(self.beliefs)
         wall0 = time.perf_counter()
         end = loop.run(limit)
@@ -127,30 +125,6 @@ class KnicSystem:
 
     def _idle(self) -> bool:
         return self.dispatcher.state == DispatcherState.IDLE
-
-    def dropped_for_good(self) -> dict[str, str]:
-        """Goals the dispatcher dropped whose retries are exhausted, with why."""
-        report = self.dispatcher.report()
-        return {
-            g: why for g, why in report.dropped.items() if self._retries.get(g, 0) >= self.config.goal_retries
-        }
-
-    def _retry_dropped(self, now: float) -> None:
-        """Hand goals the dispatcher dropped back to it, ``retry_after_s`` after the drop, at most
-        ``goal_retries`` times each (a REPLAN trace event says so)."""
-        if all(self.kb.holds(g) for g in self.kb.goals()):
-            return
-        for atom, why in list(self.dispatcher.dropped.items()):
-            goal = "(" + " ".join(atom) + ")"
-            since = self._dropped_at.setdefault(goal, now)
-            count = self._retries.get(goal, 0)
-            if count >= self.config.goal_retries or now - since < self.config.retry_after_s:
-                continue
-            self._retries[goal] = count + 1
-            del self._dropped_at[goal]
-            self.dispatcher.retry(atom)
-            reason = f"retrying goal {goal} ({count + 1}/{self.config.goal_retries}) dropped for: {why}"
-            self.trace.emit(TraceEvent(EventKind.REPLAN, now, reason=reason, goal=goal))
 
     # ------------------------------------------------------------------ teardown
 

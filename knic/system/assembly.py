@@ -34,7 +34,7 @@ from knic.system.config import ACTION_TIME_LIMITS, DOMAIN, RunConfig
 from knowledge_base import KnowledgeBase
 from planner.dispatch import Dispatcher
 from planner.engines import TaskPlanner, silence_up
-from planner.recovery import RecoveryPolicy
+from planner.recovery import GoalRetry, RecoveryPolicy
 from planner.trace import Trace
 
 if TYPE_CHECKING:
@@ -163,7 +163,10 @@ def assemble(config: RunConfig) -> Assembly:
                 kb,
                 TaskPlanner(kb.domain.up_domain),
                 registry,
-                policy=RecoveryPolicy(max_replans_per_goal=config.max_replans_per_goal),
+                policy=RecoveryPolicy(
+                    max_replans_per_goal=config.max_replans_per_goal,
+                    goal_retry=GoalRetry(config.goal_retries, config.retry_after_s),
+                ),
                 trace=trace,
                 time_limits=ACTION_TIME_LIMITS,
             )

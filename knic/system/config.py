@@ -41,8 +41,10 @@ class RunConfig:
         trace_stream: text stream receiving the trace as JSON lines, or None.
         gui: open the pybullet GUI.
         check_period_s: simulated seconds between checks of the stop conditions (and calls of check hooks).
-        goal_retries: times the recovery policy hands a dropped goal back to the dispatcher (perception may
-            have learnt something since), each ``retry_after_s`` simulated seconds after the drop.
+        goal_retries: times the recovery policy hands a dropped goal back to the dispatcher
+            (:class:`planner.recovery.GoalRetry`): when what the robot knows about the goal's subject
+            changed since the drop, or ``retry_after_s`` simulated seconds after it; never cancelling a
+            running action.
         retry_after_s: see ``goal_retries``.
         max_replans_per_goal: the recovery policy's replanning budget per goal.
         real_time_factor: the scheduler's overrun budget is period / factor (wall seconds per step).

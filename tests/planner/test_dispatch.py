@@ -8,7 +8,7 @@ from planner.dispatch import Dispatcher, DispatcherState
 from planner.engines import TaskPlanner
 from planner.model import PlanningTask
 from planner.plan import PlanResult
-from planner.recovery import Recovery, RecoveryPolicy, RecoveryRule
+from planner.recovery import GoalRetry, Recovery, RecoveryPolicy, RecoveryRule
 from planner.trace import EventKind, Trace
 from tests.planner.doubles import PAPER_PROBLEM, SimClock, StubPlanner, World, erl_kb, scripted_registry
 
@@ -357,3 +357,63 @@ def test_a_dropped_goal_handed_back_is_planned_for_again() -> None:
     assert len(d.trace.of_kind(EventKind.PLAN)) == 2
     assert report.dropped == {} and report.achieved == ["(light_on hallway_light)"]
     assert kb.holds("light_on", "hallway_light")
+
+
+def _retrying(times: int, after_s: float) -> RecoveryPolicy:
+    return RecoveryPolicy(max_replans_per_goal=5, goal_retry=GoalRetry(times, after_s))
+
+
+def test_a_dropped_goal_comes_back_when_knowledge_about_it_changes() -> None:
+    clock = SimClock()
+    kb = erl_kb(clock, goals=["(has annie tissues)"])
+    d = dispatcher(kb, World(where={"tissues": "bathroom", "annie": "bedroom"}), policy=_retrying(3, 1e6))
+    d.run(max_ticks=20, on_tick=clock.tick)
+    assert list(d.dropped) == [("has", "annie", "tissues")] and d.plans == 1
+    # unrelated news, or a fact re-asserted as it was: the goal stays dropped, nothing is planned
+    kb.add_fact("person_at", "jack", "bathroom", source="kp_people", status=BeliefStatus.OBSERVED)
+    kb.add_fact("hand_empty", "r2d2", source="kp_gripper", status=BeliefStatus.OBSERVED)
+    for _ in range(5):
+        assert d.step() == DispatcherState.IDLE
+        clock.tick()
+    assert d.trace.of_kind(EventKind.REPLAN) == [] and d.plans == 1 and d.dropped_for_good() == {}
+    # someone says where the tissues may be: the recovery policy hands the goal back at once
+    kb.add_fact("possibly_at", "tissues", "bathroom", source="user", status=BeliefStatus.ASSUMED)
+    report = d.run(max_ticks=400, on_tick=clock.tick)
+    retries = d.trace.of_kind(EventKind.REPLAN)
+    assert retries[0].goal == "(has annie tissues)" and "(1/3)" in (retries[0].reason or "")
+    assert report.achieved == ["(has annie tissues)"] and report.dropped == {}
+    assert kb.holds("has", "annie", "tissues")
+
+
+def test_a_dropped_goal_comes_back_after_its_back_off_until_its_retries_are_used_up() -> None:
+    clock = SimClock()
+    kb = erl_kb(clock, goals=["(has annie tissues)"])
+    d = dispatcher(kb, World(), policy=_retrying(2, 5.0))
+    d.run(max_ticks=3, on_tick=clock.tick)
+    assert list(d.dropped) == [("has", "annie", "tissues")]
+    for _ in range(200):  # nothing new is learnt: retried after 5 s, twice, then dropped for good
+        d.step()
+        clock.tick()
+    retries = [e for e in d.trace.of_kind(EventKind.REPLAN) if e.goal == "(has annie tissues)"]
+    assert [e.reason.split(")")[1] for e in retries if e.reason] == [" (1/2", " (2/2"]
+    assert retries[1].time - retries[0].time >= 5.0
+    assert len(d.trace.of_kind(EventKind.GOAL_DROPPED)) == 3 and d.plans == 3
+    assert list(d.dropped_for_good()) == ["(has annie tissues)"] and d.state == DispatcherState.IDLE
+
+
+def test_a_goal_retry_never_cancels_an_action_running_for_another_goal() -> None:
+    clock = SimClock()
+    kb = erl_kb(clock, goals=["(has annie tissues)", "(robot_at r2d2 bedroom)"])
+    d = dispatcher(kb, World(steps_per_action=6), policy=_retrying(3, 1e6))
+    d.step()  # plans: the tissues goal is unreachable and dropped; the first move starts
+    assert list(d.dropped) == [("has", "annie", "tissues")] and d.current is not None
+    running = str(d.current.step)
+    kb.add_fact("possibly_at", "tissues", "bathroom", source="user", status=BeliefStatus.ASSUMED)
+    while d.current is not None and str(d.current.step) == running:
+        assert d.dropped  # not handed back while the move runs
+        d.step()
+        clock.tick()
+    assert not [e for e in d.trace.of_kind(EventKind.FAILURE) if e.outcome == "cancelled"]
+    assert d.trace.of_kind(EventKind.SUCCESS)[0].action == running
+    d.step()  # the move has ended: the goal comes back
+    assert not d.dropped and d.trace.of_kind(EventKind.REPLAN)[0].goal == "(has annie tissues)"
