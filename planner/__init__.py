@@ -11,8 +11,12 @@ Modules (the architecture):
 * :mod:`planner.engines` -- :class:`Planner` (the protocol), :class:`TaskPlanner` (engine choice: in-process,
   Fast Downward, Tamer; oversubscription; validation), ``choose_engine``.
 * :mod:`planner.validate` -- ``check_plan`` (fast, independent) and ``validate_with_up``.
-* :mod:`planner.dispatch` -- :class:`Dispatcher`, the steppable dispatch loop (seed 004, Algorithm 1).
-* :mod:`planner.recovery` -- :class:`RecoveryPolicy`, what to do after each outcome, as data.
+* :mod:`planner.dispatch` -- :class:`Dispatcher`, the steppable dispatch loop (seed 004, Algorithm 1): a
+  state machine over :mod:`planner.executor` (one action, its PDDL checks and time limit),
+  :mod:`planner.monitor` (the plan against the knowledge base) and :mod:`planner.goals` (active, achieved
+  and dropped goals, goal retries).
+* :mod:`planner.recovery` -- :class:`RecoveryPolicy`, what to do after each outcome and when a dropped goal
+  comes back, as data.
 * :mod:`planner.trace` -- :class:`Trace` and :class:`TraceEvent`.
 
 Using the dispatcher in a closed loop (one thread, simulated time)::
