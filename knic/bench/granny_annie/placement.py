@@ -52,7 +52,6 @@ def draw_placements(world: World, rng: np.random.Generator) -> tuple[dict[str, s
     """Item -> furniture (priors weighted, sometimes off-prior) and the items placed off-prior."""
     surfaces = sorted(f.name for f in world.furniture.values() if f.surface)
     placements: dict[str, str] = {}
-    off: list[str] = []
     for name in sorted(world.items):
         item = world.items[name]
         priors = [p for p in item.priors if p.furniture is not None]
@@ -61,7 +60,6 @@ def draw_placements(world: World, rng: np.random.Generator) -> tuple[dict[str, s
         others = [f for f in surfaces if f not in named]
         if draw_off and others:
             placements[name] = pick(rng, others)
-            off.append(name)
         elif priors:
             placements[name] = pick(rng, [p.furniture for p in priors], [p.probability for p in priors])
         elif item.on is not None:
@@ -76,9 +74,14 @@ def draw_placements(world: World, rng: np.random.Generator) -> tuple[dict[str, s
             placements[name] = f
             if graspable(world, placements, name):
                 break
-        if name in off and placements[name] in usual:
-            off.remove(name)
-    return placements, off
+    return placements, [n for n in sorted(placements) if _off_prior(world, n, placements[n])]
+
+
+def _off_prior(world: World, name: str, furniture: str) -> bool:
+    """Placed where none of the item's priors says (an item without priors: away from its file place)."""
+    item = world.items[name]
+    usual = {p.furniture for p in item.priors if p.furniture is not None}
+    return furniture not in usual if usual else furniture != item.on
 
 
 def item_spot(world: World, placements: dict[str, str], name: str) -> tuple[float, float]:
