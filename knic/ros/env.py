@@ -1,0 +1,84 @@
+"""Whether ROS 2 (rclpy from PyPI) is usable here, and one rclpy context per node process.
+
+rclpy from PyPI needs its shared libraries on ``LD_LIBRARY_PATH``: the ``ros-wheels-bootstrapper`` package
+(a dependency of ``ros-rclpy``) does it with a ``.pth`` file that, at interpreter start-up, sets
+``LD_LIBRARY_PATH`` to the venv's ``ros_*.libs`` folders and re-executes the interpreter once (guard variable
+``_ROS_WHEELS_BOOTSTRAP_COMPLETE``). Nothing is to be set by hand; ``AMENT_PREFIX_PATH`` is not needed (the
+messages' type support loads as Python extension modules). A child process started with a copy of the
+environment inherits the paths. An interpreter started without site processing (``python -S`` or ``-I``)
+skips the bootstrap and cannot load rclpy: :func:`require_ros` says so in one line.
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Iterator
+from contextlib import contextmanager
+from typing import Any
+
+from core.errors import KnicError
+
+
+class RosUnavailable(KnicError):
+    """rclpy or a message package cannot be imported (the ``ros`` extra is missing or broken)."""
+
+    exit_code = 2
+
+
+def require_ros() -> None:
+    """Import rclpy and the message packages the adapter uses.
+
+    Raises:
+        RosUnavailable: one line naming what is missing and how to install it.
+    """
+    try:
+        import geometry_msgs.msg  # noqa: F401
+        import nav_msgs.msg  # noqa: F401
+        import rclpy  # noqa: F401
+        import rosgraph_msgs.msg  # noqa: F401
+        import sensor_msgs.msg  # noqa: F401
+        import std_msgs.msg  # noqa: F401
+        import std_srvs.srv  # noqa: F401
+        import visualization_msgs.msg  # noqa: F401
+    except ImportError as exc:
+        detail = str(exc).splitlines()[0] if str(exc) else type(exc).__name__
+        if "cannot open shared object" in detail:
+            hint = "the interpreter did not run the ros-wheels bootstrap (started with -S or -I?)"
+        else:
+            hint = "install the extra: pip install -e '.[ros]'"
+        raise RosUnavailable(f"ROS 2 is not usable here ({detail}); {hint}") from None
+
+
+def domain_id(value: int | None = None) -> int:
+    """The DDS domain: ``value``, else ``ROS_DOMAIN_ID``, else 0.
+
+    Raises:
+        KnicError: not an integer in 0..232 (what ROS 2 accepts on Linux).
+    """
+    raw: Any = value if value is not None else os.environ.get("ROS_DOMAIN_ID", "0") or "0"
+    try:
+        number = int(raw)
+    except ValueError:
+        raise KnicError(f"ROS_DOMAIN_ID {raw!r} is not an integer") from None
+    if not 0 <= number <= 232:
+        raise KnicError(f"ROS domain id {number} is outside 0..232")
+    return number
+
+
+@contextmanager
+def ros_context(domain: int | None = None) -> Iterator[Any]:
+    """An initialised rclpy ``Context`` on ``domain`` (see :func:`domain_id`), shut down on exit.
+
+    Each node process (or test) uses its own context, so several can live in one interpreter.
+    """
+    require_ros()
+    import rclpy
+    from rclpy.context import Context
+
+    context = Context()
+    rclpy.init(context=context, domain_id=domain_id(domain))
+    try:
+        yield context
+    finally:
+        if context.ok():
+            context.try_shutdown()
