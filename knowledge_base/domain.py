@@ -19,9 +19,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-import yaml
-
 from core.errors import PDDLParseError, PDDLValidationError
+from core.inputs import read_text_limited, safe_yaml
 
 __all__ = ["MAX_PDDL_BYTES", "DomainModel", "meta_path_for", "parse_with_up", "read_pddl"]
 
@@ -41,25 +40,10 @@ def read_pddl(path: str | Path, what: str, max_bytes: int | None = None) -> str:
     :data:`MAX_PDDL_BYTES`), UTF-8, a regular file.
 
     Raises:
-        PDDLParseError: missing, unreadable, too large, or not UTF-8 text (one line naming the file).
+        PDDLParseError: missing, not a regular file, too large, or not UTF-8 text (one line naming the file).
     """
-    p = Path(path)
     limit = MAX_PDDL_BYTES if max_bytes is None else max_bytes
-    try:
-        if not p.is_file():
-            why = "not a regular file" if p.exists() else "no such file"
-            raise PDDLParseError(f"{p}: cannot read {what} file ({why})")
-        with p.open("rb") as handle:
-            data = handle.read(limit + 1)
-    except OSError as exc:
-        raise PDDLParseError(f"{p}: cannot read {what} file ({exc.strerror or exc})") from None
-    if len(data) > limit:
-        raise PDDLParseError(f"{p}: {what} file is larger than {limit} bytes")
-    try:
-        return data.decode("utf-8")
-    except UnicodeDecodeError as exc:
-        line = data[: exc.start].count(b"\n") + 1
-        raise PDDLParseError(f"{p}:{line}: {what} file is not UTF-8 text (byte {exc.start})") from None
+    return read_text_limited(path, limit, f"{what} file", PDDLParseError)
 
 
 def parse_with_up(
@@ -315,12 +299,7 @@ def _parse_meta(
 ) -> tuple[dict[str, tuple[int, ...]], dict[str, tuple[str, ...]]]:
     if not meta_text.strip():
         return {}, {}
-    try:
-        data = yaml.safe_load(meta_text) or {}
-    except yaml.YAMLError as exc:
-        mark = getattr(exc, "problem_mark", None)
-        where = f"{meta_source}:{mark.line + 1}" if mark is not None else meta_source
-        raise PDDLParseError(f"{where}: invalid YAML ({getattr(exc, 'problem', exc)})") from None
+    data = safe_yaml(meta_text, meta_source, PDDLParseError) or {}
     if not isinstance(data, dict):
         raise PDDLValidationError(f"{meta_source}: expected a mapping with 'single_valued' and 'sensing'")
     single: dict[str, tuple[int, ...]] = {}

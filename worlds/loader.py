@@ -12,9 +12,8 @@ import math
 from pathlib import Path
 from typing import Any
 
-import yaml
-
 from core.errors import WorldError
+from core.inputs import MAX_YAML_BYTES, read_text_limited, safe_yaml
 from worlds.geometry import point_on_boundary, polygon_area, polygons_overlap, self_intersection
 from worlds.model import (
     DEVICE_KINDS,
@@ -95,12 +94,8 @@ def resolve_world_path(name_or_path: str | Path) -> Path:
 def load_world(name_or_path: str | Path) -> World:
     """Read and validate a world by name or path (see :func:`worlds.api.load_world`)."""
     path = resolve_world_path(name_or_path)
-    try:
-        data = yaml.safe_load(path.read_text(encoding="utf-8"))
-    except yaml.YAMLError as exc:
-        raise WorldError(f"{path.name}: not valid YAML: {str(exc).splitlines()[0]}") from exc
-    except OSError as exc:
-        raise WorldError(f"{path}: cannot read: {exc.strerror}") from exc
+    text = read_text_limited(path, MAX_YAML_BYTES, "world file", WorldError)
+    data = safe_yaml(text, path.name, WorldError)  # no aliases, bounded depth: a tiny file stays tiny
     return world_from_dict(data, file=path.name, source=path)
 
 

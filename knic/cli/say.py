@@ -10,6 +10,9 @@ import argparse
 
 from knic.cli.goal import add_world_arguments, load_vocabulary, print_understanding
 
+#: largest WAV file read: 32 MB, over three minutes of 48 kHz stereo 16-bit audio
+MAX_AUDIO_BYTES = 32 * 1024 * 1024
+
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("wav", help="the spoken command as a WAV file")
@@ -29,9 +32,12 @@ def add_acoustic_argument(parser: argparse.ArgumentParser) -> None:
 
 
 def run(args: argparse.Namespace) -> int:
+    from core.errors import AudioError
+    from core.inputs import check_input_file
     from knic.language.speech import Recognizer, load_audio
     from knic.language.understanding import default_grammar, understand_transcript
 
+    check_input_file(args.wav, MAX_AUDIO_BYTES, "audio file", AudioError)  # never read /dev/zero
     audio = load_audio(args.wav)  # refuse a bad file before loading the world
     vocabulary = load_vocabulary(args)
     transcript = Recognizer(default_grammar(), vocabulary, acoustic_model=args.acoustic_model).recognize(
