@@ -149,13 +149,18 @@ class Recorder:
         self.recording.poses.append((message.stamp, x, y, float(unit.attributes.get("yaw", 0.0))))
 
     def _nav(self, now: float) -> None:
+        """Record the path of each new navigation goal once the robot has planned it (the step after the goal
+        was sent), or when the goal ended without one."""
         status = self.oracle.nav_status()
-        if status.goal_id != self._nav_goal:
-            self._nav_goal = status.goal_id
-            path = [(float(x), float(y)) for x, y in status.path]
-            if not path and status.goal is not None:  # a turn on the spot: the goal pose alone
-                path = [(float(status.goal.x), float(status.goal.y))]
-            self.recording.paths.append((now, path))
+        if status.goal_id == self._nav_goal:
+            return
+        path = [(float(x), float(y)) for x, y in status.path]
+        if not path and status.state.name == "ACTIVE":
+            return  # not planned yet
+        if not path and status.goal is not None:  # a turn on the spot: the goal pose alone
+            path = [(float(status.goal.x), float(status.goal.y))]
+        self._nav_goal = status.goal_id
+        self.recording.paths.append((now, path))
 
     def _on_change(self, change: Change) -> None:
         if change.kind.value not in ("add_fact", "remove_fact"):

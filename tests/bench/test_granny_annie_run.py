@@ -1,0 +1,137 @@
+"""Granny Annie episodes run for real: a short episode end to end (score from ground truth, trace, journal and
+the ERL bag read back), the static and oracle baselines, and the command line's JSON and bad input."""
+
+from __future__ import annotations
+
+import json
+import sqlite3
+from pathlib import Path
+
+import pytest
+
+from knic.bench.granny_annie.baselines import kp_primes, prepare
+from knic.bench.granny_annie.commands import Request
+from knic.bench.granny_annie.episodes import Episode
+from knic.bench.granny_annie.recording import TOPICS, read_bag
+from knic.bench.granny_annie.runner import Task, run_task, write_world_files
+from knic.cli import main
+from knic.system import KnicSystem, RunConfig
+
+
+def short_episode(index: int, *requests: Request, events: tuple[dict, ...] = ()) -> Episode:
+    """Annie on the sofa; the items where the world file puts them."""
+    annie = {"at": 0.0, "type": "person_to", "person": "annie", "furniture": "sofa", "teleport": True}
+    return Episode(
+        index=index,
+        seed=0,
+        world="erl_home",
+        lexicon=None,
+        annie_on="sofa",
+        annie_room="living_room",
+        placements={"remote": "coffee_table", "tablet": "side_table", "mug": "kitchen_counter"},
+        off_prior=(),
+        requests=requests,
+        text=" and ".join(r.text for r in requests),
+        events=(annie, *events),
+    )
+
+
+LIGHT = Request("device", "switch on the hallway light", ("(light_on hallway_light)",), ("hallway_light",))
+REMOTE = Request("bring", "bring me the remote", ("(has annie remote)",), ("remote",))
+
+
+def test_a_short_episode_end_to_end(tmp_path: Path) -> None:
+    episode = short_episode(0, LIGHT, REMOTE)
+    write_world_files(tmp_path, [episode])
+    result = run_task(Task(episode.to_dict(), "knic", "companion", str(tmp_path)))
+    score = result["score"]
+    assert result["understood"] == ["(light_on hallway_light)", "(has annie remote)"]
+    assert (
+        score["achieved"]
+        == score["achievable"]
+        == {
+            "entered_room": 1,  # the robot brought the remote to Annie's room
+            "understood": 1,
+            "devices": 1,
+            "found": 0,
+            "brought": 1,
+            "accompanied": 0,
+        }
+    )
+    assert not score["disqualified"] and result["run"]["finished"]
+    assert 0 < score["time_s"] == result["run"]["sim_time"] < 600
+    # the trace and the journal of the run
+    trace = [json.loads(line) for line in (tmp_path / "traces" / "ep000_knic.jsonl").read_text().splitlines()]
+    assert any(e["kind"] == "plan" for e in trace) and any(e["kind"] == "goal_achieved" for e in trace)
+    with sqlite3.connect(tmp_path / "journals" / "ep000_knic.sqlite") as db:
+        assert db.execute("select count(*) from sqlite_master").fetchone()[0] > 0
+    # the ERL recording, read back with a bag reader
+    bag = read_bag(tmp_path / "bags" / "ep000_knic")
+    assert set(bag) == set(TOPICS)
+    for topic, messages in bag.items():
+        assert messages, topic
+        assert {m[1] for m in messages} == {TOPICS[topic]}
+    poses = [t for t, _, _ in bag["/erlc/robot_pose"]]
+    rate = (len(poses) - 1) / (poses[-1] - poses[0])
+    assert 9.0 <= rate <= 11.0  # 10 Hz
+    assert poses[-1] >= score["time_s"] - 0.2
+    last = bag["/erlc/robot_pose"][-1][2]
+    assert last.header.frame_id == "map" and abs(last.pose.orientation.w) <= 1.0
+    paths = bag["/erlc/trajectory"]
+    assert len(paths) >= 2 and any(len(m.poses) >= 2 for _, _, m in paths)  # a path per navigation (re)plan
+    assert [m.data for _, _, m in bag["/erlc/command"]] == [episode.text]
+    facts = [json.loads(m.data) for _, _, m in bag["/knic/facts"]]
+    assert {"fact": "(has annie remote)", "op": "add"}.items() <= next(
+        f for f in facts if f["fact"] == "(has annie remote)"
+    ).items()
+    assert all(f["op"] in ("add", "remove") for f in facts)
+
+
+def test_static_and_oracle_baselines_write_no_kp_prime_facts(tmp_path: Path) -> None:
+    episode = short_episode(1, LIGHT)
+    write_world_files(tmp_path, [episode])
+    for baseline in ("static", "oracle"):
+        result = run_task(Task(episode.to_dict(), baseline, "companion", str(tmp_path), record=False))
+        assert result["score"]["achieved"]["devices"] == 1, baseline
+    config = RunConfig(world=tmp_path / "worlds" / "ep001.yaml", seed=0)
+    with KnicSystem(config) as system:
+        names = {c.name for c in kp_primes(system)}
+        assert names and names <= {c.name for c in system.scheduler.components}
+        prepare(system, "static")
+        assert not names & {c.name for c in system.scheduler.components}
+        remote = system.kb.why(next(iter(system.kb.facts("object_at", "remote"))))
+        assert remote is not None and remote.source == "initial_map"
+        assert system.kb.holds("found", "remote")
+        system.sim.step(5.0)
+        system.scheduler.tick(5.0)
+        sources = {getattr(system.kb.why(f), "source", None) for f in system.kb.facts("object_at")}
+        assert sources == {"initial_map"}  # perception ran for 5 s and wrote no place
+
+
+def test_command_line_json_and_refusals(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    args = ["bench", "granny-annie", "--episodes", "1", "--seed", "5", "--out", str(tmp_path)]
+    assert main([*args, "--baseline", "knic,oracle", "--max-sim-time", "20", "--json"]) == 0
+    printed = json.loads(capsys.readouterr().out)
+    assert set(printed) == {"baselines", "wall_s"} and set(printed["baselines"]) == {"knic", "oracle"}
+    for figures in printed["baselines"].values():
+        assert figures["episodes"] == 1 and 0.0 <= figures["achievements_share"] <= 1.0
+        assert set(figures["achievements"]) == {
+            "entered_room",
+            "understood",
+            "devices",
+            "found",
+            "brought",
+            "accompanied",
+        }
+        assert set(figures["penalties"]) == {"bumps", "drops", "stalls"}
+        assert set(figures["disqualifications"]) == {"person_hits", "testbed_damage"}
+        assert figures["time_median_s"] <= 20.0
+    report = json.loads((tmp_path / "report.json").read_text())
+    assert len(report["results"]) == 2 and report["summary"] == printed["baselines"]
+    assert "| knic |" in (tmp_path / "report.md").read_text()
+    for png in ("achievements.png", "time.png", "failures.png"):
+        assert (tmp_path / png).read_bytes()[:4] == b"\x89PNG"
+    assert main([*args, "--baseline", "knic,magic"]) == 2
+    err = capsys.readouterr().err.strip()
+    assert err.startswith("knic: error: --baseline") and "magic" in err and "\n" not in err
+    assert main([*args, "--episodes", "0"]) == 2
