@@ -21,6 +21,8 @@ if TYPE_CHECKING:
     from worlds.model import World
 
 Point = tuple[float, float]
+#: most search candidates placed on the map (the fact table lists them all)
+MAX_CANDIDATES = 300
 
 
 def static_layout(state: State, world: World | None) -> dict[str, Any]:
@@ -105,8 +107,9 @@ def beliefs(state: State, domain: DomainModel, layout: dict[str, Any]) -> dict[s
         layout: :func:`static_layout` of the same state.
 
     Returns:
-        ``{"robot": [...], "items": [...], "people": [...], "candidates": [...], "devices": {...}}``; each
-        entity is ``{"name", "x", "y", "how", "fact", "status", "since"}``.
+        ``{"robot": [...], "items": [...], "people": [...], "candidates": [...], "candidates_total": n,
+        "devices": {...}}`` (at most :data:`MAX_CANDIDATES` candidates placed); each entity is
+        ``{"name", "x", "y", "how", "fact", "status", "since"}``.
     """
     rooms = {r["name"]: r for r in layout["rooms"]}
     furniture = {f["name"]: f for f in layout["furniture"]}
@@ -180,10 +183,14 @@ def beliefs(state: State, domain: DomainModel, layout: dict[str, Any]) -> dict[s
             else:
                 people.append(entry(name, in_room(room, name), "in room", f"(person_at {name} {room})", prov))
     placed = {e["name"] for e in items + people}
-    candidates = [
-        entry(args[0], in_room(args[1], args[0]), "candidate", f"(possibly_at {args[0]} {args[1]})", prov)
+    open_candidates = [
+        (args, prov)
         for args, prov in by_pred.get("possibly_at", [])
         if args[1] in rooms and args[0] not in placed
+    ]
+    candidates = [
+        entry(args[0], in_room(args[1], args[0]), "candidate", f"(possibly_at {args[0]} {args[1]})", prov)
+        for args, prov in open_candidates[:MAX_CANDIDATES]
     ]
     devices: dict[str, str] = {}
     for args, _ in by_pred.get("light_on", []):
@@ -192,7 +199,14 @@ def beliefs(state: State, domain: DomainModel, layout: dict[str, Any]) -> dict[s
         devices[args[0]] = "off"
     for args, _ in by_pred.get("device_level", []):
         devices[args[0]] = args[1]
-    return {"robot": robots, "items": items, "people": people, "candidates": candidates, "devices": devices}
+    return {
+        "robot": robots,
+        "items": items,
+        "people": people,
+        "candidates": candidates,
+        "candidates_total": len(open_candidates),
+        "devices": devices,
+    }
 
 
 def _anchored_xy(state: State, symbol: str) -> tuple[Point, Any] | None:

@@ -315,6 +315,7 @@
     for (const id of ["goal-text", "goal-wav"]) $(id).disabled = !info.goals;
     if (model.live === null) $("clock").textContent = `t = ${fmt(model.last)} s`;
     renderFacts(); updateSlider(); drawMap(); renderTrace(); renderLive();
+    if (window.knicLoaded === undefined) window.knicLoaded = performance.now(); // load-time probe (tests)
   }
 
   function wire() {

@@ -34,7 +34,7 @@
     while (svg.firstChild) svg.removeChild(svg.firstChild);
     if (!map || !map.rooms) return;
     const { P, k } = projection(svg, map.bounds);
-    const layer = (id) => el("g", { id }, svg);
+    const layer = (id) => el("g", { id: "layer-" + id }, svg);
     const roomLayer = layer("rooms");
     map.rooms.forEach((room, i) => {
       el("polygon", { class: "room", points: points(P, room.polygon), fill: `hsl(${(i * 47) % 360},35%,94%)` },
