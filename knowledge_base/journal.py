@@ -26,6 +26,7 @@ from __future__ import annotations
 
 import bisect
 import json
+import math
 import sqlite3
 from collections.abc import Iterable, Sequence
 from pathlib import Path
@@ -34,7 +35,7 @@ from typing import Any
 from core.errors import JournalError
 from knowledge_base.model import BeliefStatus, Change, ChangeKind, Fact, Provenance, State, apply_change
 
-__all__ = ["Journal", "SqliteJournal"]
+__all__ = ["CorruptRow", "Journal", "SqliteJournal", "recover"]
 
 #: Fewest events between two checkpoints; the interval grows with the state so checkpoints stay cheap.
 CHECKPOINT_MIN_EVENTS = 1000
@@ -188,10 +189,14 @@ class SqliteJournal(Journal):
         except sqlite3.DatabaseError as exc:
             raise JournalError(f"{self.path}: not a readable KnIC journal ({exc})") from None
         try:
-            times = self._db.execute("SELECT t FROM events ORDER BY seq").fetchall()
+            times = self._db.execute("SELECT seq, t FROM events ORDER BY seq").fetchall()
         except sqlite3.DatabaseError as exc:
             raise JournalError(f"{self.path}: not a readable KnIC journal ({exc})") from None
-        self._note_times(t for (t,) in times)
+        for i, (seq, t) in enumerate(times, start=1):
+            if seq != i or not isinstance(t, (int, float)) or not math.isfinite(t):
+                why = f"sequence gap (expected {i})" if seq != i else f"time {t!r} is not a number"
+                raise JournalError(f"{self.path}: {CorruptRow(seq, why)}")
+        self._note_times(t for (_, t) in times)
         self._note_checkpoints()
 
     @staticmethod
@@ -316,10 +321,89 @@ def _change_to_row(c: Change) -> tuple[Any, ...]:
 
 
 def _row_to_change(r: tuple[Any, ...]) -> Change:
-    seq, t, kind, name, args, value, source, status, confidence, support = r
-    prov = Provenance(source, t, _STATUSES[status], confidence, tuple(support.split(_SEP)) if support else ())
-    return Change(seq, t, _KINDS[kind], name, tuple(args.split()) if args else (),
-                  None if value is None else json.loads(value), prov)  # fmt: skip
+    """One events row as a Change; a row that is not one (edited, truncated, bit rot) raises JournalError."""
+    try:
+        seq, t, kind, name, args, value, source, status, confidence, support = r
+        if not (isinstance(t, (int, float)) and math.isfinite(t)):
+            raise ValueError(f"time {t!r} is not a number")
+        if not all(isinstance(v, str) for v in (name, args, source, support)):
+            raise ValueError("a name, argument, source or support field is not text")
+        if not isinstance(confidence, (int, float)) or not 0.0 <= confidence <= 1.0:
+            raise ValueError(f"confidence {confidence!r} is not in 0..1")
+        if kind not in _KINDS or status not in _STATUSES:
+            raise ValueError(f"unknown kind {kind!r} or status {status!r}")
+        prov = Provenance(
+            source, t, _STATUSES[status], confidence, tuple(support.split(_SEP)) if support else ()
+        )
+        return Change(seq, t, _KINDS[kind], name, tuple(args.split()) if args else (),
+                      None if value is None else json.loads(value), prov)  # fmt: skip
+    except (ValueError, TypeError) as exc:
+        seq = r[0] if r else "?"
+        raise CorruptRow(seq, str(exc).replace("\n", " ")) from None
+
+
+class CorruptRow(JournalError):
+    """An events row that does not decode; ``seq`` names it (the committed prefix ends before it)."""
+
+    def __init__(self, seq: Any, reason: str) -> None:
+        super().__init__(
+            f"journal row seq {seq} is corrupt: {reason} (knic facts --recover OUT keeps the rows before it)"
+        )
+        self.seq = seq
+        self.reason = reason
+
+
+def recover(path: str | Path, out: str | Path) -> tuple[int, str]:
+    """Copy the committed prefix of a damaged journal to a new journal ``out``: the domain, the metadata and
+    every event before the first row that does not decode (checkpoints are derived data and are rebuilt).
+
+    Returns:
+        ``(events kept, what was dropped)``; the second is "" when no row was corrupt.
+
+    Raises:
+        JournalError: ``out`` exists, or ``path`` is not a journal at all.
+    """
+    src, dst = Path(path), Path(out)
+    if dst.exists():
+        raise JournalError(f"{dst}: exists; --recover writes a new file and replaces nothing")
+    meta = SqliteJournal.read_meta(src)
+    if "domain_text" not in meta:
+        raise JournalError(f"{src}: not a KnIC journal (no domain stored)")
+    db = sqlite3.connect(f"file:{src}?mode=ro", uri=True)
+    kept: list[tuple[Any, ...]] = []
+    dropped = ""
+    try:
+        expected = 1
+        for row in db.execute("SELECT * FROM events ORDER BY seq"):
+            try:
+                _row_to_change(row)
+                if row[0] != expected:
+                    raise CorruptRow(row[0], f"sequence gap (expected {expected})")
+            except CorruptRow as exc:
+                dropped = f"row seq {exc.seq} and after ({exc.reason})"
+                break
+            kept.append(row)
+            expected += 1
+    except sqlite3.DatabaseError as exc:
+        dropped = dropped or f"unreadable rows after seq {len(kept)} ({exc})"
+    finally:
+        db.close()
+    target = sqlite3.connect(dst, isolation_level=None)
+    try:
+        target.execute("BEGIN")
+        target.execute("CREATE TABLE meta (key TEXT PRIMARY KEY, value TEXT NOT NULL)")
+        target.execute(
+            "CREATE TABLE events (seq INTEGER PRIMARY KEY, t REAL NOT NULL, kind TEXT NOT NULL,"
+            " name TEXT NOT NULL, args TEXT NOT NULL, value TEXT, source TEXT NOT NULL, status TEXT NOT NULL,"
+            " confidence REAL NOT NULL, support TEXT NOT NULL)"
+        )
+        target.execute("CREATE TABLE checkpoints (seq INTEGER PRIMARY KEY, state TEXT NOT NULL)")
+        target.executemany("INSERT INTO meta VALUES (?, ?)", sorted(meta.items()))
+        target.executemany("INSERT INTO events VALUES (?,?,?,?,?,?,?,?,?,?)", kept)
+        target.execute("COMMIT")
+    finally:
+        target.close()
+    return len(kept), dropped
 
 
 def _prov_list(p: Provenance) -> list[Any]:

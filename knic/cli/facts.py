@@ -48,11 +48,31 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         help="with --watch: stop after N seconds (default: until ^C)",
     )
     parser.add_argument("--poll", type=float, default=0.2, metavar="S", help="with --watch: poll period (s)")
+    parser.add_argument(
+        "--recover",
+        metavar="OUT",
+        help="copy the committed prefix of a damaged journal (every event before the first corrupt row) to "
+        "the new journal OUT (never replaced) and stop",
+    )
 
 
 def run(args: argparse.Namespace) -> int:
     from knowledge_base import Fact, KnowledgeBase
 
+    if args.recover is not None:
+        from knowledge_base.journal import recover
+
+        kept, dropped = recover(args.journal, args.recover)
+        print(f"{args.recover}: kept {kept} event(s)" + (f"; dropped {dropped}" if dropped else ""))
+        return 0
+    if args.watch and args.watch_seconds is not None:
+        from knic.cli.bounded import positive_seconds
+
+        positive_seconds(args.watch_seconds, "--watch-seconds")
+    if args.watch:
+        from knic.cli.bounded import positive_seconds
+
+        positive_seconds(args.poll, "--poll")
     kb = KnowledgeBase.from_journal(args.journal, read_only=True)
     try:
         if args.predicate is not None and args.predicate not in kb.domain.predicates:

@@ -89,3 +89,52 @@ def test_sidecar_with_aliases_is_refused(tmp_path: Path) -> None:
     (tmp_path / "tiny.meta.yaml").write_text(BOMB, encoding="utf-8")
     with pytest.raises(PDDLParseError, match="YAML aliases"):
         DomainModel.from_file(domain)
+
+
+def _journal(tmp_path: Path) -> Path:
+    from .conftest import ERL_DOMAIN, PAPER_PROBLEM
+
+    path = tmp_path / "run.sqlite"
+    kb = KnowledgeBase.from_pddl(ERL_DOMAIN, PAPER_PROBLEM, path, clock=lambda: 1.0)
+    kb.add_fact("object_at", "glasses", "kitchen", source="kp.object", status="observed")
+    kb.add_fact("object_at", "glasses", "entrance", source="kp.object", status="observed")
+    kb.close()
+    return path
+
+
+@pytest.mark.parametrize(
+    ("update", "why"),
+    [
+        ("kind = 'bogus'", "unknown kind 'bogus'"),
+        ("t = 'soon'", "time 'soon' is not a number"),
+        ("value = '{not json'", "corrupt"),
+    ],
+)
+def test_corrupt_journal_row_is_one_line_naming_the_row(
+    tmp_path: Path, update: str, why: str, capsys: pytest.CaptureFixture[str]
+) -> None:
+    import sqlite3
+
+    from knic.cli import main
+
+    path = _journal(tmp_path)
+    db = sqlite3.connect(path)
+    last = db.execute("SELECT max(seq) FROM events").fetchone()[0]
+    db.execute(f"UPDATE events SET {update} WHERE seq = ?", (last - 1,))
+    if "value" in update:
+        db.execute("UPDATE events SET kind = 'set_anchor' WHERE seq = ?", (last - 1,))
+    db.commit()
+    db.close()
+    code = main(["facts", "--journal", str(path)])
+    err = capsys.readouterr().err.strip()
+    assert code == 2 and len(err.splitlines()) == 1
+    assert f"seq {last - 1}" in err and why in err
+    out = tmp_path / "recovered.sqlite"
+    assert main(["facts", "--journal", str(path), "--recover", str(out)]) == 0
+    assert f"kept {last - 2} event(s)" in capsys.readouterr().out
+    again = KnowledgeBase.from_journal(out, read_only=True)
+    assert again.journal.last_seq == last - 2
+    assert not again.holds("object_at", "glasses", "entrance")
+    again.close()
+    assert main(["facts", "--journal", str(path), "--recover", str(out)]) == 2  # never replaced
+    assert "exists" in capsys.readouterr().err
