@@ -1,16 +1,24 @@
-"""``knic bench speech``: speech recognition and command understanding on the shipped test set.
+"""``knic bench speech``: speech recognition and command understanding, both decoders, dev and test sets.
 
-The test set is ``tests/fixtures/speech``: WAV files synthesised with espeak-ng in several voices and speeds
-and ``gold.json`` with each file's transcription, whether the command grammar covers it, and its gold frames.
+The sets are ``tests/fixtures/speech_people/test`` (held out: never tuned on) and ``.../dev`` (tuned on):
+the commands of the text sets (``tests/fixtures/language``) and out-of-domain speech, synthesised with
+espeak-ng in voices that neither the other set nor the acoustic adaptation uses (``generate.py`` there). Each
+``gold.json`` has each file's transcription, whether it is a command (``in_grammar``), and its gold frames.
+Both decoders run on both sets: ``grammar`` (the template grammar, :class:`knic.language.speech.Recognizer`)
+and ``ngram`` (the n-gram model with a confidence, :class:`knic.language.lmspeech.NgramRecognizer`);
+``--decoder`` picks one. The earlier sets (``tests/fixtures/speech``, ``speech_dev``: template phrasings,
+decoder settings tuned on them) still run with ``--fixtures`` and ``--dev``.
 Figures (wall-clock time; the decoder is built once before timing):
 
-* ``wer`` -- word error rate of the transcripts of in-grammar utterances (edit distance / gold words);
+* ``wer`` -- word error rate of the transcripts of in-grammar utterances (edit distance / gold words,
+  both normalised);
 * ``frame_accuracy`` -- share of in-grammar utterances whose frame kinds are all right, in order;
 * ``frame_argument_accuracy`` -- share whose frames are right with every argument;
 * ``oog_rejection`` -- share of out-of-grammar utterances rejected (not accepted as a command);
 * ``false_rejection`` -- share of in-grammar utterances rejected;
 * ``ms_per_utterance`` -- mean recognition plus understanding time per utterance;
 * ``by_voice`` -- frame-with-arguments accuracy of the in-grammar utterances of each voice in ``gold.json``;
+* ``by_class`` -- the same per phrasing class (fillers, relative, chains, levels, several, ...) when given;
 * ``dev`` -- the same main figures on the development set (``tests/fixtures/speech_dev``: voices and sentences
   the test set does not have), to see how far the figures carry to unseen voices;
 * ``answer_accuracy`` -- share of ``tests/fixtures/speech_answers`` (spoken yes, no, and speech that is no
@@ -33,9 +41,10 @@ from typing import Any
 from core.errors import KnicError
 from knic.cli.say import add_acoustic_argument
 
-FIXTURES = Path(__file__).resolve().parents[2] / "tests" / "fixtures" / "speech"
-ANSWERS = FIXTURES.parent / "speech_answers"
-DEV = FIXTURES.parent / "speech_dev"
+FIXTURES = Path(__file__).resolve().parents[2] / "tests" / "fixtures" / "speech_people" / "test"
+ANSWERS = FIXTURES.parents[1] / "speech_answers"
+DEV = FIXTURES.parent / "dev"
+DECODERS = ("grammar", "ngram")
 #: the development set's figures printed under ``"dev"``
 DEV_FIGURES = ("wer", "frame_accuracy", "frame_argument_accuracy", "oog_rejection", "ms_per_utterance")
 
@@ -63,6 +72,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         "--answers", default=str(ANSWERS), help="folder with the yes/no answer set ('' skips)"
     )
     parser.add_argument("--dev", default=str(DEV), help="folder with the development set ('' skips)")
+    parser.add_argument("--decoder", choices=DECODERS, help="only this decoder (default: both)")
 
 
 def parse_options(pairs: list[str]) -> dict[str, object]:
@@ -109,6 +119,7 @@ def evaluate(
     decoder_options: dict[str, object] | None = None,
     branch_penalty: bool = True,
     acoustic_model: str = "espeak",
+    decoder: str = "grammar",
 ) -> dict[str, Any]:
     """Run the test set and return the figures plus the per-utterance mistakes under ``"errors"``.
 
@@ -119,21 +130,24 @@ def evaluate(
         decoder_options: pocketsphinx options for this run over the module defaults.
         branch_penalty: passed to :class:`~knic.language.speech.Recognizer`.
         acoustic_model: passed to :class:`~knic.language.speech.Recognizer`.
+        decoder: ``grammar`` or ``ngram`` (see the module docstring).
 
     Raises:
         KnicError: the gold file is missing or malformed, or the decoder refuses an option.
     """
     from knic.language.frames import CommandFrame
+    from knic.language.lmspeech import NgramRecognizer
     from knic.language.speech import Recognizer, load_audio
     from knic.language.understanding import default_grammar, understand_transcript
-    from knic.language.world import load_world
+    from knic.language.vocabulary import normalize
+    from knic.language.world import read_vocabulary
 
     try:
         gold = json.loads((fixtures / "gold.json").read_text(encoding="utf-8"))
         utterances = gold["utterances"][: limit or None]
     except (OSError, ValueError, KeyError) as exc:
         raise KnicError(f"{fixtures / 'gold.json'}: cannot read the speech test set: {exc}") from exc
-    _, vocabulary = load_world()
+    vocabulary = read_vocabulary()
     speaker = gold.get("speaker", "annie")
     started = time.perf_counter()
     extra: dict[str, Any] = {
@@ -143,13 +157,20 @@ def evaluate(
     }
     if filler_weight is not None:
         extra["filler_weight"] = filler_weight
-    recognizer = Recognizer(default_grammar(), vocabulary, **extra)
+    recognizer: Any
+    if decoder == "ngram":
+        recognizer = NgramRecognizer(
+            vocabulary, acoustic_model=acoustic_model, decoder_options=decoder_options
+        )
+    else:
+        recognizer = Recognizer(default_grammar(), vocabulary, **extra)
     setup_ms = (time.perf_counter() - started) * 1000.0
     errors_total = words_total = kinds_ok = args_ok = rejected_in = rejected_oog = n_in = n_oog = 0
     elapsed: list[float] = []
     durations: list[float] = []
     mistakes: list[dict[str, Any]] = []
     voices: dict[str, list[int]] = {}
+    classes: dict[str, list[int]] = {}
     for entry in utterances:
         audio = load_audio(fixtures / entry["file"])
         started = time.perf_counter()
@@ -159,7 +180,7 @@ def evaluate(
         heard = str(result.extra.get("transcript", ""))
         if entry["in_grammar"]:
             n_in += 1
-            reference = entry["text"].split()
+            reference = normalize(entry["text"]).split()
             errors_total += word_errors(reference, heard.split())
             words_total += len(reference)
             expected = [CommandFrame.from_dict(f) for f in entry["frames"]]
@@ -167,9 +188,11 @@ def evaluate(
             kinds_ok += [f.kind for f in got] == [f.kind for f in expected]
             right = [f.to_dict() for f in got] == [f.to_dict() for f in expected]
             args_ok += right
-            tally = voices.setdefault(str(entry.get("voice", "?")), [0, 0])
-            tally[0] += right
-            tally[1] += 1
+            for table, key in ((voices, "voice"), (classes, "class")):
+                if key in entry:
+                    tally = table.setdefault(str(entry[key]), [0, 0])
+                    tally[0] += right
+                    tally[1] += 1
             rejected_in += not result.accepted
             if not right:
                 mistakes.append(
@@ -194,9 +217,10 @@ def evaluate(
         "ms_per_utterance": round(sum(elapsed) / len(elapsed), 1) if elapsed else None,
         "audio_s_per_utterance": round(sum(durations) / len(durations), 3) if durations else None,
         "decoder_setup_ms": round(setup_ms, 1),
-        "filler_weight": recognizer.filler_weight,
+        "decoder": decoder,
         "acoustic_model": acoustic_model,
         "by_voice": {voice: round(ok / n, 4) for voice, (ok, n) in sorted(voices.items())},
+        "by_class": {name: round(ok / n, 4) for name, (ok, n) in sorted(classes.items())},
         "errors": mistakes,
     }
 
@@ -226,7 +250,7 @@ def evaluate_answers(folder: Path, acoustic_model: str = "espeak") -> tuple[floa
 
 
 def run(args: argparse.Namespace) -> int:
-    def evaluate_set(folder: str) -> dict[str, Any]:
+    def evaluate_set(folder: str, decoder: str) -> dict[str, Any]:
         return evaluate(
             Path(folder),
             args.limit,
@@ -234,13 +258,18 @@ def run(args: argparse.Namespace) -> int:
             decoder_options=parse_options(args.option),
             branch_penalty=not args.no_branch_penalty,
             acoustic_model=args.acoustic_model,
+            decoder=decoder,
         )
 
-    figures = evaluate_set(args.fixtures)
-    mistakes = figures.pop("errors")
-    if args.dev and Path(args.dev).resolve() != Path(args.fixtures).resolve():
-        dev = evaluate_set(args.dev)
-        figures["dev"] = {key: dev[key] for key in DEV_FIGURES}
+    figures: dict[str, Any] = {}
+    mistakes: list[dict[str, Any]] = []
+    for decoder in [args.decoder] if args.decoder else list(DECODERS):
+        result = evaluate_set(args.fixtures, decoder)
+        mistakes += [{**m, "decoder": decoder} for m in result.pop("errors")]
+        if args.dev and Path(args.dev).resolve() != Path(args.fixtures).resolve():
+            dev = evaluate_set(args.dev, decoder)
+            result["dev"] = {key: dev[key] for key in DEV_FIGURES}
+        figures[decoder] = result
     if args.answers:
         figures["answer_accuracy"], wrong = evaluate_answers(Path(args.answers), args.acoustic_model)
         mistakes += wrong
@@ -248,10 +277,16 @@ def run(args: argparse.Namespace) -> int:
         figures["errors"] = mistakes
     if args.json:
         print(json.dumps(figures))
-    else:
-        for key, value in figures.items():
-            if key != "errors":
-                print(f"{key}: {value}")
-        for mistake in figures.get("errors", []):
-            print(f"  {mistake['file']}: said '{mistake['text']}', heard '{mistake['heard']}'")
+        return 0
+    for key, value in figures.items():
+        if isinstance(value, dict):
+            print(f"{key}:")
+            for inner, figure in value.items():
+                print(f"  {inner}: {figure}")
+        elif key != "errors":
+            print(f"{key}: {value}")
+    for mistake in figures.get("errors", []):
+        print(
+            f"  {mistake.get('decoder', '')} {mistake['file']}: said '{mistake['text']}', heard '{mistake['heard']}'"
+        )
     return 0

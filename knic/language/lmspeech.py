@@ -1,0 +1,147 @@
+"""Spoken commands through an n-gram model: speech that is phrased unlike every template is still heard.
+
+The grammar decoder (:class:`knic.language.speech.Recognizer`) only hears sentences of the templates. This
+recogniser searches a back-off trigram model (:mod:`knic.language.ngram`) of sentences sampled from the same
+templates with the world's names (:mod:`knic.language.sampling`), so word orders and combinations the
+templates never produced stay reachable; the reader (:mod:`knic.language.reader`) then understands the words.
+
+Out-of-domain speech: an n-gram search also forces any audio onto some word sequence of the model. Each
+utterance is therefore decoded a second time with pocketsphinx's unconstrained phone loop (the wheel's
+``en-us-phone.lm.bin``); the confidence is the difference of the two best path scores per frame. Command
+speech fits the command model about as well as the free phone loop (confidence near or above zero); other
+speech fits it much worse. Below :data:`CONFIDENCE_THRESHOLD` the transcript is marked out of domain.
+The threshold was set on the development sets only (``knic bench speech --decoder ngram``).
+
+Lifecycle: build once per vocabulary (sampling and estimating the model take a few seconds; the model is
+cached on disk by content), then :meth:`NgramRecognizer.recognize` per utterance; not thread-safe.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import hashlib
+import tempfile
+import time
+from collections.abc import Mapping
+from pathlib import Path
+
+import numpy as np
+import numpy.typing as npt
+
+from core.errors import LanguageError
+from knic.language.acoustic import DEFAULT_ACOUSTIC_MODEL, acoustic_model_options, wheel_model_dir
+from knic.language.commands import command_language
+from knic.language.ngram import arpa_from_sentences
+from knic.language.sampling import sample_sentences
+from knic.language.speech import MODEL_RATE, Transcript, load_audio, pad
+from knic.language.vocabulary import Vocabulary
+
+#: Sentences sampled for the model.
+SENTENCES = 4000
+#: Confidence (n-gram best path score minus phone-loop best path score, per frame) below which speech is
+#: taken as out of domain. Set on the development sets.
+CONFIDENCE_THRESHOLD = -0.0003
+#: Decoder options: the lattice best path is on (the n-gram search benefits from it).
+NGRAM_DECODER_OPTIONS: dict[str, object] = {"bestpath": True}
+
+
+def build_model(
+    vocabulary: Vocabulary,
+    sentences: int = SENTENCES,
+    *,
+    seed: int = 0,
+    exclude: frozenset[str] = frozenset(),
+) -> str:
+    """The ARPA text of the command model for a vocabulary (cached in the temporary folder by content)."""
+    language = command_language()
+    key = hashlib.sha256()
+    key.update(Path(language.source).read_bytes() if language.source else b"")
+    for term in vocabulary.terms:
+        key.update(f"{term.phrase}|{term.type}|{term.is_group};".encode())
+    key.update(f"{sentences}|{seed}|{sorted(exclude)}".encode())
+    cache = Path(tempfile.gettempdir()) / f"knic-ngram-{key.hexdigest()[:20]}.arpa"
+    if cache.is_file():
+        return cache.read_text(encoding="utf-8")
+    texts = [s.text for s in sample_sentences(vocabulary, sentences, seed=seed, exclude_words=exclude)]
+    arpa = arpa_from_sentences(texts)
+    with contextlib.suppress(OSError):  # no cache: built again next time
+        cache.write_text(arpa, encoding="utf-8")
+    return arpa
+
+
+class NgramRecognizer:
+    """pocketsphinx decoding with the command n-gram model and a phone-loop confidence.
+
+    Args:
+        vocabulary: the world's spoken names.
+        acoustic_model: as for :class:`~knic.language.speech.Recognizer`.
+        threshold: confidence below which a transcript is out of domain.
+        decoder_options: pocketsphinx options over :data:`NGRAM_DECODER_OPTIONS`.
+
+    Raises:
+        LanguageError: pocketsphinx refuses the options, the model or the phone loop.
+    """
+
+    def __init__(
+        self,
+        vocabulary: Vocabulary,
+        *,
+        acoustic_model: str | Path = DEFAULT_ACOUSTIC_MODEL,
+        threshold: float = CONFIDENCE_THRESHOLD,
+        decoder_options: Mapping[str, object] | None = None,
+    ):
+        from pocketsphinx import Decoder, set_loglevel
+
+        set_loglevel("FATAL")
+        self.threshold = threshold
+        options = {
+            **NGRAM_DECODER_OPTIONS,
+            **acoustic_model_options(acoustic_model),
+            **(decoder_options or {}),
+        }
+        try:
+            decoder = Decoder(lm=None, loglevel="FATAL", **options)
+        except (KeyError, ValueError, TypeError, RuntimeError) as exc:
+            raise LanguageError(f"pocketsphinx refused the decoder options {options}: {exc}") from exc
+        words = vocabulary.words() | command_language().words()
+        self.unknown_words = sorted(w for w in words if decoder.lookup_word(w) is None)
+        arpa = build_model(vocabulary, exclude=frozenset(self.unknown_words))
+        with tempfile.TemporaryDirectory(prefix="knic-lm-") as tmp:
+            path = Path(tmp) / "commands.arpa"
+            path.write_text(arpa, encoding="utf-8")
+            try:
+                decoder.add_lm_file("ngram", str(path))
+                decoder.add_allphone_file("phones", str(wheel_model_dir() / "en-us-phone.lm.bin"))
+                decoder.activate_search("ngram")
+            except (RuntimeError, ValueError) as exc:
+                raise LanguageError(f"pocketsphinx refused the command language model: {exc}") from exc
+        self._decoder = decoder
+        self._initial_cmn = decoder.get_cmn()
+
+    def _decode(self, search: str, raw: bytes) -> tuple[str, float, int]:
+        decoder = self._decoder
+        decoder.activate_search(search)
+        decoder.set_cmn(self._initial_cmn)
+        decoder.start_utt()
+        decoder.process_raw(raw, full_utt=True)
+        decoder.end_utt()
+        hyp = decoder.hyp()
+        if hyp is None:
+            return "", float("-inf"), max(1, decoder.n_frames())
+        return " ".join(hyp.hypstr.split()), float(hyp.best_score), max(1, decoder.n_frames())
+
+    def recognize(self, audio: str | Path | npt.NDArray[np.int16]) -> Transcript:
+        """Decode one utterance; ``in_grammar`` is False when the confidence is below the threshold.
+
+        Raises:
+            AudioError: the file is not usable audio.
+        """
+        samples = audio if isinstance(audio, np.ndarray) else load_audio(audio)
+        raw = pad(samples).tobytes()
+        started = time.perf_counter()
+        text, score, frames = self._decode("ngram", raw)
+        _, phone_score, _ = self._decode("phones", raw)
+        elapsed = (time.perf_counter() - started) * 1000.0
+        confidence = (score - phone_score) / frames if text else float("-inf")
+        duration = len(samples) / MODEL_RATE
+        return Transcript(text, bool(text) and confidence >= self.threshold, confidence, duration, elapsed)
