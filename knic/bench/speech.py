@@ -286,7 +286,6 @@ def run(args: argparse.Namespace) -> int:
         elif key != "errors":
             print(f"{key}: {value}")
     for mistake in figures.get("errors", []):
-        print(
-            f"  {mistake.get('decoder', '')} {mistake['file']}: said '{mistake['text']}', heard '{mistake['heard']}'"
-        )
+        said, heard = mistake["text"], mistake["heard"]
+        print(f"  {mistake.get('decoder', '')} {mistake['file']}: said '{said}', heard '{heard}'")
     return 0
