@@ -135,3 +135,27 @@ def test_command_line_json_and_refusals(tmp_path: Path, capsys: pytest.CaptureFi
     err = capsys.readouterr().err.strip()
     assert err.startswith("knic: error: --baseline") and "magic" in err and "\n" not in err
     assert main([*args, "--episodes", "0"]) == 2
+
+
+def test_worker_processes_give_the_serial_results(tmp_path: Path) -> None:
+    from knic.bench.granny_annie.runner import run_tasks
+
+    move = {"at": 5.0, "type": "move_object", "person": "tracy", "item": "mug", "to": "dining_table"}
+    episodes = [short_episode(2, LIGHT), short_episode(3, REMOTE, events=(move,))]
+    write_world_files(tmp_path, episodes)
+    tasks = [
+        Task(e.to_dict(), b, "companion", str(tmp_path), record=False)
+        for e in episodes
+        for b in ("knic", "static")
+    ]
+
+    def comparable(results: list[dict]) -> list[dict]:
+        return sorted(
+            ({k: v for k, v in r.items() if k != "wall_s"} for r in results),
+            key=lambda r: (r["episode"], r["baseline"]),
+        )
+
+    serial = comparable(list(run_tasks(tasks, workers=1)))
+    parallel = comparable(list(run_tasks(tasks, workers=2)))
+    assert serial == parallel
+    assert [r["score"]["achievements"] for r in serial] == [2, 2, 3, 3]
