@@ -26,6 +26,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import os
 import sys
 from collections.abc import Callable
 from pathlib import Path
@@ -90,9 +91,20 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     add_acoustic_argument(parser)
     add_run_serve_arguments(parser)
     parser.add_argument("--seed", type=int, default=0, help="seed of the simulation (default 0)")
-    parser.add_argument("--trace", type=Path, metavar="FILE.jsonl", help="write the trace as JSON lines")
     parser.add_argument(
-        "--journal", type=Path, metavar="FILE.sqlite", help="record the knowledge base's history (replaced)"
+        "--trace",
+        type=Path,
+        metavar="FILE.jsonl",
+        help="write the trace as JSON lines; written to a temporary file next to FILE and renamed to FILE "
+        "once the goals are accepted, so a refused run leaves an existing FILE untouched",
+    )
+    parser.add_argument(
+        "--journal",
+        type=Path,
+        metavar="FILE.sqlite",
+        help="record the knowledge base's history; written to a temporary file next to FILE and renamed to "
+        "FILE once the goals are accepted (a refused run leaves FILE untouched); an existing FILE that is "
+        "not a KnIC journal is refused, never replaced",
     )
     parser.add_argument(
         "--max-sim-time", type=float, default=600.0, metavar="S", help="simulated seconds (default 600)"
@@ -118,8 +130,12 @@ def run(args: argparse.Namespace) -> int:
                 raise KnicError(f"knic run: {option} {wav}: no such file")
     role = load_role(args.role)
     journal = run_journal(args)  # with --serve: checks the options, picks a journal
+    staged = StagedOutputs(args.journal, args.trace)  # refuses unusable outputs; touches no existing file
+    if args.journal is not None:
+        journal = staged.journal
     listen = answer_source(args, role)  # refuses before anything is built when it cannot ask
-    trace_file = args.trace.open("w", encoding="utf-8") if args.trace else None
+    accepted = False
+    trace_file = staged.trace.open("w", encoding="utf-8") if staged.trace else None
     try:
         config = RunConfig(
             world=args.world,
@@ -146,6 +162,7 @@ def run(args: argparse.Namespace) -> int:
                 source=source,
                 acoustic_model=args.acoustic_model,
             )
+            accepted = True
             goals = system.kb.goals()
             if not args.json:
                 print(f"knic run: world {args.world}, seed {args.seed}, role {args.role}")
@@ -166,7 +183,60 @@ def run(args: argparse.Namespace) -> int:
     finally:
         if trace_file is not None:
             trace_file.close()
+        staged.finish(keep=accepted)
     return 0
+
+
+class StagedOutputs:
+    """The run's output files, written under temporary names and moved into place only when kept.
+
+    Checked before anything is built: a ``--journal`` that exists and is not a KnIC journal, or that is a
+    folder, and a ``--trace`` that is a folder, are refused; so is an output whose folder does not exist.
+    Nothing existing is opened for writing: the run writes ``.FILE.<pid>.partial`` next to each output and
+    :meth:`finish` renames it to FILE (``keep``: the goals were accepted) or deletes it (a refused run).
+
+    Raises:
+        KnicError: an output cannot be used (one line naming it).
+    """
+
+    def __init__(self, journal: Path | None, trace: Path | None) -> None:
+        self.final: list[tuple[Path, Path]] = []
+        self.journal = self._stage(journal, "--journal") if journal is not None else None
+        self.trace = self._stage(trace, "--trace") if trace is not None else None
+        if journal is not None and journal.exists():
+            from knowledge_base.journal import SqliteJournal
+
+            try:
+                is_journal = "domain_text" in SqliteJournal.read_meta(journal)
+            except KnicError:
+                is_journal = False
+            if not is_journal:
+                raise KnicError(
+                    f"knic run: --journal {journal}: exists and is not a KnIC journal; not replaced"
+                )
+
+    def _stage(self, path: Path, option: str) -> Path:
+        if path.is_dir():
+            raise KnicError(f"knic run: {option} {path}: is a folder")
+        if not path.parent.is_dir():
+            raise KnicError(f"knic run: {option} {path}: folder {path.parent} does not exist")
+        temp = path.with_name(f".{path.name}.{os.getpid()}.partial")
+        self.final.append((temp, path))
+        return temp
+
+    def finish(self, *, keep: bool) -> None:
+        """Move the outputs into place (``keep``) or delete them; SQLite side files go with the journal."""
+        for temp, path in self.final:
+            if keep and temp.exists():
+                if Path(f"{temp}-wal").exists():  # fold the write-ahead log into the file before moving it
+                    import sqlite3
+
+                    sqlite3.connect(temp).close()
+                for suffix in ("-wal", "-shm"):
+                    Path(f"{path}{suffix}").unlink(missing_ok=True)
+                temp.replace(path)
+            for suffix in ("", "-wal", "-shm"):
+                Path(f"{temp}{suffix}").unlink(missing_ok=True)
 
 
 def add_goals(
