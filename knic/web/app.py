@@ -78,7 +78,9 @@ class FactsResponse(BaseModel):
     seq: int = Field(description="the last journal event included")
     time: float | None
     at: float | None = Field(description="the time asked for (None: now)")
-    facts: list[FactRecord]
+    facts: list[FactRecord] | None = Field(None, description="the facts (unless compact)")
+    columns: list[str] | None = Field(None, description="compact: the columns of each row")
+    rows: list[list[str | float]] | None = Field(None, description="compact: one row per fact")
     goals: list[FactRecord]
 
 
@@ -248,11 +250,14 @@ def create_app(
         status: Literal["given", "observed", "assumed", "effect"] | None = None,
         author: str | None = Query(None, max_length=100),
         q: str | None = Query(None, max_length=200, description="text the fact contains"),
+        compact: bool = Query(False, description='"rows" of [fact, status, author, since, confidence]'),
     ) -> JSONResponse:
         """The fact table (with status, author, since, confidence) and the goals."""
         sync()
         try:
-            body = hub.view.facts(parse_at(at), predicate=predicate, status=status, author=author, text=q)
+            body = hub.view.facts(
+                parse_at(at), predicate=predicate, status=status, author=author, text=q, compact=compact
+            )
         except BadQuery as exc:
             raise HTTPException(400, str(exc)) from None
         return JSONResponse(body)

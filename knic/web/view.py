@@ -28,6 +28,8 @@ if TYPE_CHECKING:
 _FACT_KINDS = (ChangeKind.ADD_FACT, ChangeKind.REMOVE_FACT, ChangeKind.ADD_GOAL, ChangeKind.REMOVE_GOAL)
 #: the longest fact text /api/why takes
 MAX_FACT_TEXT = 400
+#: the columns of a compact fact row
+COMPACT_COLUMNS = ("fact", "status", "author", "since", "confidence")
 
 
 class BadQuery(KnicError):
@@ -171,8 +173,12 @@ class JournalView:
         status: str | None = None,
         author: str | None = None,
         text: str | None = None,
+        compact: bool = False,
     ) -> dict[str, Any]:
         """The fact table (and the goals) now or at ``at``, optionally filtered.
+
+        With ``compact`` the facts come as ``"rows"`` of :data:`COMPACT_COLUMNS` (about half the bytes and
+        the encoding time of one object per fact: what the page loads) instead of ``"facts"``.
 
         Raises:
             BadQuery: unknown predicate.
@@ -181,21 +187,26 @@ class JournalView:
             raise BadQuery(f"predicate: unknown predicate {predicate!r} in domain {self.kb.domain.name}")
         state = self.state(at)
         needle = text.lower() if text else None
-        rows = [
-            fact_record(f, p)
+        chosen = [
+            (f, p)
             for f, p in state.facts.items()
             if (predicate is None or f.predicate == predicate)
             and (status is None or p.status.value == status)
             and (author is None or p.source == author)
             and (needle is None or needle in str(f))
         ]
-        return {
+        out: dict[str, Any] = {
             "seq": state.seq,
             "time": state.time if math.isfinite(state.time) else None,
             "at": at,
-            "facts": rows,
             "goals": [fact_record(f, p) for f, p in state.goals.items()],
         }
+        if compact:
+            out["columns"] = list(COMPACT_COLUMNS)
+            out["rows"] = [[str(f), p.status.value, p.source, p.since, p.confidence] for f, p in chosen]
+        else:
+            out["facts"] = [fact_record(f, p) for f, p in chosen]
+        return out
 
     def why(self, text: str, at: float | None = None) -> dict[str, Any]:
         """Why a fact is (or is not) believed: provenance, supporting units and its whole history.

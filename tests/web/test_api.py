@@ -54,6 +54,9 @@ def test_facts_carry_status_author_since_and_confidence(writer: Writer, client: 
     assert everything["seq"] == writer.kb.journal.last_seq
     assert len(everything["facts"]) == len(writer.kb.snapshot().facts)
     assert client.get("/api/facts", params={"status": "assumed", "q": "glasses"}).json()["facts"]
+    compact = client.get("/api/facts", params={"compact": True, "predicate": "object_at"}).json()
+    assert compact["columns"] == ["fact", "status", "author", "since", "confidence"]
+    assert compact["rows"] == [["(object_at glasses kitchen)", "observed", "kp'.object_at", 12.5, 0.8]]
     bad = client.get("/api/facts", params={"predicate": "object_at_x"})
     assert bad.status_code == 400
     assert bad.json()["detail"] == "predicate: unknown predicate 'object_at_x' in domain erl_home"

@@ -31,8 +31,16 @@
   }
 
   // ------------------------------------------------------------------ facts
+  // a compact row [fact, status, author, since, confidence] as a fact record
+  function fromRow([fact, status, author, since, confidence]) {
+    const words = fact.slice(1, -1).split(" ");
+    return { fact, predicate: words[0], arguments: words.slice(1), status, author, since, confidence };
+  }
+
+  function factMap(body) { return new Map(body.rows.map((r) => [r[0], fromRow(r)])); }
+
   function setFacts(body) {
-    model.facts = new Map(body.facts.map((f) => [f.fact, f]));
+    model.facts = factMap(body);
     model.goals = new Map(body.goals.map((g) => [g.fact, g]));
   }
 
@@ -171,9 +179,9 @@
       return;
     }
     const at = Number(value);
-    const [facts, map] = await Promise.all([api(`/api/facts?at=${at}`), api(`/api/map?at=${at}`)]);
+    const [facts, map] = await Promise.all([api(`/api/facts?compact=true&at=${at}`), api(`/api/map?at=${at}`)]);
     model.at = at;
-    model.past = { facts: new Map(facts.facts.map((f) => [f.fact, f])),
+    model.past = { facts: factMap(facts),
       goals: new Map(facts.goals.map((g) => [g.fact, g])), map };
     $("time-label").textContent = `t = ${fmt(at)} (past)`; $("live-button").disabled = false;
     renderFacts(); drawMap(); renderTrace();
@@ -304,7 +312,7 @@
 
   async function load() {
     const [info, facts, map, trace, live] = await Promise.all([
-      api("/api/info"), api("/api/facts"), api("/api/map"), api("/api/trace"), api("/api/live")]);
+      api("/api/info"), api("/api/facts?compact=true"), api("/api/map"), api("/api/trace"), api("/api/live")]);
     model.info = info; model.seq = facts.seq; model.map = map; model.trace = trace.events;
     model.first = info.timeline.first; model.last = info.timeline.last;
     model.live = live.state === "none" ? null : live;
