@@ -5,7 +5,7 @@ import subprocess
 import sys
 
 CORE = ["core", "core.errors", "knic", "knic.cli", "knowledge_base", "planner", "actions", "worlds"]
-ADAPTERS = ["rclpy", "cyclonedds", "http.server", "PySide6", "tkinter"]
+ADAPTERS = ["rclpy", "cyclonedds", "http.server", "PySide6", "tkinter", "fastapi", "starlette", "uvicorn"]
 
 
 def test_core_imports_without_adapters() -> None:

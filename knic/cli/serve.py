@@ -19,6 +19,7 @@ from __future__ import annotations
 
 import argparse
 import contextlib
+import importlib.util
 import json
 import sys
 import tempfile
@@ -145,13 +146,9 @@ def run_journal(args: argparse.Namespace) -> Path | None:
         raise KnicError(f"--pace: expected a positive number, got {args.pace}")
     if args.linger < 0:
         raise KnicError(f"--linger: expected seconds >= 0, got {args.linger}")
-    try:
-        import fastapi  # noqa: F401
-        import uvicorn  # noqa: F401
-    except ModuleNotFoundError as exc:
-        raise KnicError(
-            f"--serve needs the 'web' extra (pip install 'knic[web]'): {exc.name} is missing"
-        ) from None
+    missing = [name for name in ("fastapi", "uvicorn") if importlib.util.find_spec(name) is None]
+    if missing:
+        raise KnicError(f"--serve needs the 'web' extra (pip install 'knic[web]'): {missing[0]} is missing")
     if args.journal is not None:
         return args.journal
     path = Path(tempfile.mkdtemp(prefix="knic-run-")) / "journal.sqlite"
