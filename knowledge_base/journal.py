@@ -39,6 +39,8 @@ __all__ = ["CorruptRow", "Journal", "SqliteJournal", "recover"]
 
 #: Fewest events between two checkpoints; the interval grows with the state so checkpoints stay cheap.
 CHECKPOINT_MIN_EVENTS = 1000
+#: Decoded checkpoints kept in memory by a SQLite journal (a state_at near a recent one skips decoding).
+DECODED_CHECKPOINTS = 2
 
 _KINDS = {k.value: k for k in ChangeKind}
 _STATUSES = {s.value: s for s in BeliefStatus}
@@ -173,6 +175,7 @@ class SqliteJournal(Journal):
         read_only: bool = False,
     ) -> None:
         super().__init__(base)
+        self._decoded: dict[int, State] = {}
         self.path = Path(path)
         self.read_only = read_only
         try:
@@ -304,8 +307,21 @@ class SqliteJournal(Journal):
         seq = self._checkpoint_seqs[index]
         if seq == 0:
             return self._base.copy()
-        row = self._db.execute("SELECT state FROM checkpoints WHERE seq = ?", (seq,)).fetchone()
-        return _state_from_json(row[0])
+        cached = self._decoded.get(seq)
+        if cached is None:  # decoding a large checkpoint costs far more than copying it: keep the last few
+            row = self._db.execute("SELECT state FROM checkpoints WHERE seq = ?", (seq,)).fetchone()
+            if row is None:
+                raise JournalError(f"{self.path}: checkpoint {seq} is missing")
+            try:
+                cached = _state_from_json(row[0])
+            except (ValueError, TypeError, KeyError, IndexError) as exc:
+                raise JournalError(f"{self.path}: checkpoint {seq} is corrupt ({exc})") from None
+            self._decoded[seq] = cached
+            while len(self._decoded) > DECODED_CHECKPOINTS:
+                self._decoded.pop(next(iter(self._decoded)))
+        else:
+            self._decoded[seq] = self._decoded.pop(seq)  # most recently used last
+        return cached.copy()
 
     def close(self) -> None:
         """Close the database connection (the data stays durable in the file)."""

@@ -571,7 +571,10 @@ class KnowledgeBase(IndexedState):
 
     def state_at(self, t: float) -> State:
         """The committed state at clock time ``t`` (seconds): the state after the last change stamped <= t."""
-        return self._journal.state_at(t)
+        seq = self._journal.last_seq_at(t)
+        if seq == self._seq and not self._depth:
+            return self._state.copy()  # now (or later): the live state, no replay
+        return self._journal.state_at_seq(seq)
 
     def changes(self, after: int = 0) -> list[Change]:
         """Committed changes with sequence number greater than ``after``."""
