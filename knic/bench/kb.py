@@ -10,6 +10,11 @@ Figures (wall-clock time on this machine; query and state_at figures are medians
   instances) with 10,000 facts; ``facts_list_ms_10k_facts`` is ``facts()`` alone.
 * ``state_at_ms_100k_events`` -- ``state_at(t)`` at random past times on a SQLite journal of 100,000 events
   (median).
+* ``state_at_ms_100k_facts`` / ``export_ms_100k_facts`` -- ``state_at(t)`` at random past times (median) and
+  ``to_pddl_problem()`` on a SQLite-journalled knowledge base holding 100,000 facts, built by writes that
+  each change something; ``*_10k_facts`` the same at 10,000.
+* ``changing_writes`` / ``noop_writes`` -- of the measured writes, how many changed the state and how many
+  were no-ops (re-asserting what holds, retracting what does not): rates count only the first.
 * ``*_per_cpu_s`` -- the write rates in process CPU time, which a busy shared machine does not distort;
   ``load_average_1min`` says how busy it was.
 
@@ -33,6 +38,8 @@ TARGETS = {
     "durable_changes_per_s": (">=", 20_000.0),
     "query_ms_10k_facts": ("<", 5.0),
     "state_at_ms_100k_events": ("<", 50.0),
+    "state_at_ms_100k_facts": ("<=", 50.0),
+    "export_ms_100k_facts": ("<=", 200.0),
 }
 
 
@@ -76,6 +83,7 @@ def measure(*, quick: bool = False, seed: int = 0) -> dict[str, Any]:
         "state_at_events": 5_000 if quick else 100_000,
     }
     rng = random.Random(seed)
+    _COUNTS.update(changing_writes=0, noop_writes=0)
     out: dict[str, Any] = {}
     clock = _SimClock()
     kb = KnowledgeBase.from_pddl(domain, problem, clock=clock)
@@ -116,11 +124,19 @@ def measure(*, quick: bool = False, seed: int = 0) -> dict[str, Any]:
         out["state_at_ms_100k_events"] = round(statistics.median(samples), 3)
         out["state_at_ms_max"] = round(max(samples), 3)
         history.close()
+        for label, n in (("10k", 10_000), ("100k", 1_000 if quick else 100_000)):
+            state_ms, export_ms, facts = _large_state(
+                domain, problem, Path(tmp) / f"large{label}.sqlite", n, rng
+            )
+            out[f"state_at_ms_{label}_facts"] = round(state_ms, 3)
+            out[f"export_ms_{label}_facts"] = round(export_ms, 3)
+            out[f"facts_{label}"] = facts
+    out.update(_COUNTS)
     out.update({f"size_{k}": v for k, v in sizes.items()})
     out["load_average_1min"] = round(os.getloadavg()[0], 2)  # other processes competing for the CPUs
-    out["meets_targets"] = all(
-        (out[k] >= bound) if op == ">=" else (out[k] < bound) for k, (op, bound) in TARGETS.items()
-    )
+    checks = {">=": lambda a, b: a >= b, "<": lambda a, b: a < b, "<=": lambda a, b: a <= b}
+    out["targets_missed"] = [k for k, (op, bound) in TARGETS.items() if not checks[op](out[k], bound)]
+    out["meets_targets"] = not out["targets_missed"]
     return out
 
 
@@ -139,6 +155,7 @@ def _write_rate(kb: Any, clock: _SimClock, n: int, tick: int, rng: random.Random
         else:
             ops.append(("explored", (room,), rng.random() < 0.5))
     add, remove = kb.add_fact, kb.remove_fact
+    before = kb.journal.last_seq
     start = time.perf_counter()
     if tick:
         for i in range(0, n, tick):
@@ -151,7 +168,50 @@ def _write_rate(kb: Any, clock: _SimClock, n: int, tick: int, rng: random.Random
             if i % 100 == 0:
                 clock.t += 0.1
             (add if assert_it else remove)(predicate, *args, source="bench", status="observed")
-    return n / (time.perf_counter() - start)
+    elapsed = time.perf_counter() - start
+    changed = kb.journal.last_seq - before  # one event per write that changed something (+ retractions)
+    _COUNTS["changing_writes"] += changed
+    _COUNTS["noop_writes"] += max(n - changed, 0)
+    return changed / elapsed
+
+
+_COUNTS = {"changing_writes": 0, "noop_writes": 0}
+
+
+def _large_state(
+    domain: Path, problem: Path, path: Path, n: int, rng: random.Random
+) -> tuple[float, float, int]:
+    """A journalled knowledge base grown to ``n`` facts by changing writes (100 per batch) with churn; the
+    median ``state_at`` at 7 random past times and one ``to_pddl_problem`` (milliseconds), and the facts."""
+    from knowledge_base import KnowledgeBase
+
+    clock = _SimClock()
+    kb = KnowledgeBase.from_pddl(domain, problem, path, clock=clock)
+    side = int(n**0.5) + 1
+    with kb.batch():
+        for i in range(side):
+            kb.add_instance("item", f"bench_item{i}")
+            kb.add_instance("room", f"bench_room{i}")
+    k = 0
+    while len(kb.facts()) < n:
+        clock.t += 0.1
+        with kb.batch():
+            for _ in range(min(1000, n - len(kb.facts()))):
+                i, j = divmod(k, side)
+                k += 1
+                kb.add_fact("possibly_at", f"bench_item{i}", f"bench_room{j}", status="assumed")
+    samples = []
+    for _ in range(7):
+        t = rng.uniform(0.0, clock.t)
+        start = time.perf_counter()
+        kb.state_at(t)
+        samples.append((time.perf_counter() - start) * 1000.0)
+    start = time.perf_counter()
+    kb.to_pddl_problem()
+    export = (time.perf_counter() - start) * 1000.0
+    facts = len(kb.facts())
+    kb.close()
+    return statistics.median(samples), export, facts
 
 
 def _with_facts(kb: Any, n: int) -> Any:
