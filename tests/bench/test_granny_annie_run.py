@@ -159,3 +159,18 @@ def test_worker_processes_give_the_serial_results(tmp_path: Path) -> None:
     parallel = comparable(list(run_tasks(tasks, workers=2)))
     assert serial == parallel
     assert [r["score"]["achievements"] for r in serial] == [2, 2, 3, 3]
+
+
+def test_ray_backend_gives_the_serial_result(tmp_path: Path) -> None:
+    """A local Ray instance runs the same task; without the optional 'ray' extra the reason is shown."""
+    from knic.bench.granny_annie.runner import ray_unavailable, run_tasks
+
+    reason = ray_unavailable()
+    if reason is not None:
+        pytest.skip(reason)
+    episode = short_episode(4, LIGHT)
+    write_world_files(tmp_path, [episode])
+    tasks = [Task(episode.to_dict(), "knic", "companion", str(tmp_path), record=False)]
+    on_ray = [{k: v for k, v in r.items() if k != "wall_s"} for r in run_tasks(tasks, backend="ray")]
+    serial = [{k: v for k, v in r.items() if k != "wall_s"} for r in run_tasks(tasks)]
+    assert on_ray == serial and serial[0]["score"]["achieved"]["devices"] == 1
