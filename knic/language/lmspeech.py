@@ -32,7 +32,7 @@ from core.errors import LanguageError
 from knic.language.acoustic import DEFAULT_ACOUSTIC_MODEL, acoustic_model_options, wheel_model_dir
 from knic.language.commands import command_language
 from knic.language.ngram import arpa_from_sentences
-from knic.language.sampling import sample_sentences
+from knic.language.sampling import FIRST_PHRASE_SHARE, sample_sentences
 from knic.language.speech import MODEL_RATE, Transcript, load_audio, pad
 from knic.language.vocabulary import Vocabulary
 
@@ -58,7 +58,7 @@ def build_model(
     key.update(Path(language.source).read_bytes() if language.source else b"")
     for term in vocabulary.terms:
         key.update(f"{term.phrase}|{term.type}|{term.is_group};".encode())
-    key.update(f"{sentences}|{seed}|{sorted(exclude)}".encode())
+    key.update(f"{sentences}|{seed}|{sorted(exclude)}|{FIRST_PHRASE_SHARE}".encode())
     cache = Path(tempfile.gettempdir()) / f"knic-ngram-{key.hexdigest()[:20]}.arpa"
     if cache.is_file():
         return cache.read_text(encoding="utf-8")

@@ -19,6 +19,11 @@ from knic.language.reader import chain
 from knic.language.vocabulary import Vocabulary, level_percent
 
 
+#: Share of samples that take the first phrase of a phrase list ("the" of the determiners, "please" of the
+#: openers); the rest choose uniformly. Set on the spoken development set.
+FIRST_PHRASE_SHARE = 0.4
+
+
 @dataclass(frozen=True)
 class Sample:
     """One sampled sentence (normalised words) and its frames."""
@@ -74,7 +79,12 @@ class _Walker:
             for part in node.parts:
                 self.walk(part, words, frames, args)
         elif isinstance(node, Alt):
-            self.walk(rng.choice(node.options), words, frames, args)
+            # phrase lists are written most common first: the first phrase is said more often
+            listed = all(isinstance(o, Words) for o in node.options)
+            chosen = (
+                node.options[0] if listed and rng.random() < FIRST_PHRASE_SHARE else rng.choice(node.options)
+            )
+            self.walk(chosen, words, frames, args)
         elif isinstance(node, Opt):
             if rng.random() < 0.5:
                 self.walk(node.part, words, frames, args)

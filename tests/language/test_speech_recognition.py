@@ -115,10 +115,11 @@ def test_the_speech_bench_prints_its_figures(capsys: pytest.CaptureFixture[str])
 
     from knic.cli import main
 
-    assert main(["bench", "speech", "--json", "--limit", "4", "--answers", ""]) == 0
-    figures = json.loads(capsys.readouterr().out)
-    assert figures["utterances"] == 4 and figures["acoustic_model"] == "espeak"
-    assert figures["frame_argument_accuracy"] == 1.0 and figures["wer"] == 0.0  # the first four, all right
+    args = ["bench", "speech", "--json", "--limit", "3", "--answers", "", "--decoder", "grammar"]
+    assert main([*args, "--fixtures", "tests/fixtures/speech", "--dev", "tests/fixtures/speech_dev"]) == 0
+    figures = json.loads(capsys.readouterr().out)["grammar"]
+    assert figures["utterances"] == 3 and figures["acoustic_model"] == "espeak"
+    assert figures["frame_argument_accuracy"] == 1.0 and figures["wer"] == 0.0  # the first three, all right
     assert set(figures["dev"]) == {
         "wer",
         "frame_accuracy",

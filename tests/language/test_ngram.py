@@ -1,0 +1,73 @@
+"""The n-gram side of speech: a proper back-off model, loaded by pocketsphinx, hearing people's phrasings."""
+
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+
+import pytest
+
+from knic.language.lmspeech import NgramRecognizer
+from knic.language.ngram import arpa_from_sentences
+from knic.language.understanding import understand, understand_transcript
+from knic.language.vocabulary import Vocabulary
+
+DEV = Path(__file__).resolve().parents[1] / "fixtures" / "speech_people" / "dev"
+
+
+def _read(arpa: str) -> dict[int, dict[tuple[str, ...], tuple[float, float]]]:
+    grams: dict[int, dict[tuple[str, ...], tuple[float, float]]] = {1: {}, 2: {}, 3: {}}
+    order = 0
+    for line in arpa.splitlines():
+        if line.startswith("\\") or not line.strip():
+            order = int(line[1]) if line[1:2].isdigit() else 0
+            continue
+        if order:
+            fields = line.split("\t")
+            back = float(fields[2]) if len(fields) > 2 else 0.0
+            grams[order][tuple(fields[1].split())] = (float(fields[0]), back)
+    return grams
+
+
+def test_each_context_sums_to_one() -> None:
+    grams = _read(arpa_from_sentences(["bring me the cup", "bring the cup to me", "find the cup"]))
+    words = [w for (w,) in grams[1] if w != "<s>"]
+
+    def p2(u: str, w: str) -> float:
+        if (u, w) in grams[2]:
+            return 10 ** grams[2][(u, w)][0]
+        return 10 ** grams[1][(u,)][1] * 10 ** grams[1][(w,)][0]
+
+    def p3(u: str, v: str, w: str) -> float:
+        if (u, v, w) in grams[3]:
+            return 10 ** grams[3][(u, v, w)][0]
+        back = grams[2].get((u, v), (0.0, 0.0))[1]
+        return 10**back * p2(v, w)
+
+    assert math.isclose(sum(10 ** grams[1][(w,)][0] for w in words), 1.0, abs_tol=1e-5)
+    assert math.isclose(sum(p2("the", w) for w in words), 1.0, abs_tol=1e-5)
+    assert math.isclose(sum(p3("bring", "the", w) for w in words), 1.0, abs_tol=1e-5)
+
+
+def test_no_sentence_is_refused() -> None:
+    with pytest.raises(ValueError, match="no sentences"):
+        arpa_from_sentences(["", " "])
+
+
+@pytest.fixture(scope="module")
+def recognizer(vocabulary: Vocabulary) -> NgramRecognizer:
+    return NgramRecognizer(vocabulary)
+
+
+def test_people_phrasings_are_heard_and_other_speech_is_rejected(
+    recognizer: NgramRecognizer, vocabulary: Vocabulary
+) -> None:
+    gold = {e["text"]: e for e in json.loads((DEV / "gold.json").read_text())["utterances"]}
+    command = gold["go near the sofa"]
+    heard = recognizer.recognize(DEV / command["file"])
+    assert heard.in_grammar
+    assert [f.to_dict() for f in understand(heard.text, vocabulary).frames] == command["frames"]
+    for text in ("what is the weather like today", "tell me a joke", "what time is it"):
+        other = understand_transcript(recognizer.recognize(DEV / gold[text]["file"]), vocabulary)
+        assert not other.accepted and other.goals == ()
