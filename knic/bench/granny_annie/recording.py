@@ -14,7 +14,9 @@ starts and watches it in simulated time:
 ``/erlc/command`` std_msgs/msg/String, ``/knic/facts`` std_msgs/msg/String (one JSON object per change).
 Stamps are simulated time. :func:`read_bag` reads one back.
 
-The oracle's readings are pure (no random draw): watching changes nothing in the run.
+The referee's data come from the oracle (:class:`worlds.oracle.Oracle`), whose readings are pure (no random
+draw): watching changes nothing in the run. The recording comes from what the robot itself has: the pose
+LLKU on the bus, its navigation status, its knowledge base.
 """
 
 from __future__ import annotations
@@ -24,6 +26,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, Protocol
 
+from core.robot import NavState, NavStatus
 from knic.bench.granny_annie.referee import Sample, Timeline
 from knic.system.loop import Probe
 
@@ -31,6 +34,7 @@ if TYPE_CHECKING:
     from knic.bus import Bus, Message
     from knic.scheduler import Scheduler
     from knowledge_base import Change, KnowledgeBase
+    from worlds.oracle import Oracle
 
 #: seconds between two ground-truth samples
 TRUTH_PERIOD_S = 0.5
@@ -45,27 +49,11 @@ TOPICS = {
 }
 
 
-class GroundTruth(Protocol):
-    """The oracle readings the recorder takes (the simulator provides them)."""
+class NavReading(Protocol):
+    """The robot reading the recorder takes for the trajectory (:meth:`core.robot.Robot.nav_status`)."""
 
-    def ground_truth_facts(self, include_static: bool = False) -> set[tuple[str, ...]]:
-        """The true dynamic facts."""
-        ...
-
-    def true_robot_pose(self) -> Any:
-        """The robot's true pose (``x``, ``y``, ``yaw``)."""
-        ...
-
-    def counters(self) -> Any:
-        """Penalty counters (``bumps``, ``drops``, ``person_hits``)."""
-        ...
-
-    def spoken(self) -> list[Any]:
-        """The robot's utterances (``stamp``, ``text``), oldest first."""
-        ...
-
-    def nav_status(self) -> Any:
-        """The latest navigation goal (``goal_id``, ``path``, ``goal``)."""
+    def nav_status(self) -> NavStatus:
+        """The latest navigation goal (``goal_id``, ``state``, ``path``, ``goal``)."""
         ...
 
 
@@ -90,8 +78,9 @@ class Recorder:
     """Watches one run (see the module docstring). Construct, :meth:`attach` before the run, :meth:`finish`
     after it, :meth:`close` to stop listening."""
 
-    def __init__(self, oracle: GroundTruth, kb: KnowledgeBase, bus: Bus) -> None:
+    def __init__(self, oracle: Oracle, robot: NavReading, kb: KnowledgeBase, bus: Bus) -> None:
         self.oracle = oracle
+        self.robot = robot
         self.timeline = Timeline()
         self.recording = Recording()
         self._counters = {"bumps": 0, "drops": 0, "person_hits": 0, "testbed_damage": 0}
@@ -151,11 +140,11 @@ class Recorder:
     def _nav(self, now: float) -> None:
         """Record the path of each new navigation goal once the robot has planned it (the step after the goal
         was sent), or when the goal ended without one."""
-        status = self.oracle.nav_status()
+        status = self.robot.nav_status()
         if status.goal_id == self._nav_goal:
             return
         path = [(float(x), float(y)) for x, y in status.path]
-        if not path and status.state.name == "ACTIVE":
+        if not path and status.state is NavState.ACTIVE:
             return  # not planned yet
         if not path and status.goal is not None:  # a turn on the spot: the goal pose alone
             path = [(float(status.goal.x), float(status.goal.y))]

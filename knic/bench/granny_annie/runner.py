@@ -136,7 +136,7 @@ def run_task(task: Task, starter: Starter | None = None) -> dict[str, Any]:
     try:
         with KnicSystem(config) as system:
             prepare(system, task.baseline)
-            recorder = Recorder(system.sim, system.kb, system.pipeline.bus)
+            recorder = Recorder(system.sim, system.sim, system.kb, system.pipeline.bus)
             recorder.attach(system.scheduler)
             recorder.sample(0.0)
             understood = (starter or start_with_intake)(system, episode, recorder)
