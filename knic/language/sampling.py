@@ -18,10 +18,11 @@ from knic.language.grammar import Alt, Bind, Frame, Grammar, Node, Opt, Ref, Rep
 from knic.language.reader import chain
 from knic.language.vocabulary import Vocabulary, level_percent
 
-
 #: Share of samples that take the first phrase of a phrase list ("the" of the determiners, "please" of the
-#: openers); the rest choose uniformly. Set on the spoken development set.
-FIRST_PHRASE_SHARE = 0.4
+#: openers); the rest choose uniformly. Measured on the spoken development set with the n-gram decoder: 0.4
+#: lowers the word error rate (0.15 -> 0.10) at the same frame accuracy but lets one out-of-domain utterance
+#: of five through (rejection 1.0 -> 0.8), so it stays off.
+FIRST_PHRASE_SHARE = 0.0
 
 
 @dataclass(frozen=True)
