@@ -5,7 +5,8 @@ Architecture (one module per concern):
 * :mod:`knowledge_base.model` -- value types: Fact, BeliefStatus, Provenance, Change, State.
 * :mod:`knowledge_base.domain` -- DomainModel: a PDDL domain through unified-planning plus its meta sidecar.
 * :mod:`knowledge_base.problem` -- checked loading of PDDL problems.
-* :mod:`knowledge_base.kb` -- KnowledgeBase: validated writes, queries, batches, subscribers.
+* :mod:`knowledge_base.kb` -- KnowledgeBase: validated writes, batches, subscribers.
+* :mod:`knowledge_base.queries` -- the read side: queries, snapshots, state_at, export.
 * :mod:`knowledge_base.store` -- the live state's indexes, write validation, undoable changes.
 * :mod:`knowledge_base.journal` -- the append-only history (in memory or SQLite WAL), checkpoints, state_at.
 * :mod:`knowledge_base.export` -- to and from unified-planning problems and PDDL text.

@@ -9,6 +9,7 @@ from knic.cli import add_command_modules
 #: name -> (module, one-line help); each module provides add_arguments(parser) and run(args) -> int.
 BENCHES: dict[str, tuple[str, str]] = {
     "kb": ("knic.bench.kb", "knowledge-base write, query and history throughput"),
+    "reliability": ("knic.bench.reliability", "fuzzed inputs and SIGKILLed writers: crashes and lost writes"),
     "planner": ("knic.bench.planner", "replanning latency against naive re-planning, dispatch overhead"),
     "sim": ("knic.bench.sim", "simulator real-time factor and camera frame time"),
     "language": ("knic.bench.language", "text understanding on the development and held-out test sets"),

@@ -1,0 +1,21 @@
+"""``knic bench reliability``, small sizes: fuzzed boundaries never crash, a killed writer loses nothing."""
+
+from __future__ import annotations
+
+from knic.bench.reliability import durability, fuzz_all
+
+
+def test_fuzzed_boundaries_refuse_with_one_line_errors_and_never_crash() -> None:
+    results = fuzz_all(40, seed=3)
+    assert set(results) == {"pddl_loader", "world_loader", "goal_parser", "kb_api"}
+    for name, tally in results.items():
+        assert tally["cases"] == 40, name
+        assert tally["crashed"] == 0, (name, tally["first_crash"])
+        assert tally["accepted"] + tally["handled"] == 40, name
+    assert results["pddl_loader"]["handled"] > 0 and results["pddl_loader"]["accepted"] > 0
+
+
+def test_sigkilled_writer_loses_no_acknowledged_write() -> None:
+    figures = durability(kills=2, seed=1)
+    assert figures["acknowledged"] > 0
+    assert figures["lost_acknowledged"] == 0 and figures["reopen_failures"] == 0
