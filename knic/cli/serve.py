@@ -68,6 +68,7 @@ def run(args: argparse.Namespace) -> int:
     from knowledge_base.journal import SqliteJournal
 
     check_binding(args.host, args.port, args.token)
+    args.journal = running_journal(args.journal)
     SqliteJournal.read_meta(args.journal)  # a missing or foreign file is a one-line error here
     if args.seconds is not None and not args.seconds > 0:
         raise KnicError(f"--seconds: expected a positive number, got {args.seconds}")
@@ -89,6 +90,18 @@ def run(args: argparse.Namespace) -> int:
     finally:
         server.stop()
     return 0
+
+
+def running_journal(path: Path) -> Path:
+    """``path``, or while ``knic run --journal path`` runs, the file it writes (``.NAME.<pid>.partial`` next
+    to it, renamed to ``path`` when the run ends; an open reader keeps following it across the rename)."""
+    if path.exists():
+        return path
+    partial = sorted(path.parent.glob(f".{path.name}.*.partial"), key=lambda p: p.stat().st_mtime)
+    if partial:
+        print(f"knic: following the running run's {partial[-1].name}", file=sys.stderr)
+        return partial[-1]
+    return path
 
 
 def _journal_server(args: argparse.Namespace, world: Any) -> Any:
