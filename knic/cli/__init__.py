@@ -28,6 +28,8 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "listen": ("knic.cli.listen", "listen to a microphone or stream and print the commands heard"),
     "bench": ("knic.cli.bench", "run a benchmark and print its figures"),
     "serve": ("knic.cli.serve", "show the robot's mind live in a browser (facts, why, map, trace, goals)"),
+    "ros": ("knic.cli.ros", "run KnIC as a ROS 2 node beside a robot (or knic sim --ros)"),
+    "sim": ("knic.cli.sim", "run the simulated apartment as a ROS 2 node (--ros)"),
 }
 
 

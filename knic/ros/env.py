@@ -74,9 +74,11 @@ def ros_context(domain: int | None = None) -> Iterator[Any]:
     require_ros()
     import rclpy
     from rclpy.context import Context
+    from rclpy.signals import SignalHandlerOptions
 
     context = Context()
-    rclpy.init(context=context, domain_id=domain_id(domain))
+    # Ctrl-C and SIGTERM are the command line's to handle (they end a run cleanly), not rclpy's
+    rclpy.init(context=context, domain_id=domain_id(domain), signal_handler_options=SignalHandlerOptions.NO)
     try:
         yield context
     finally:

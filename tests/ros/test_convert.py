@@ -52,7 +52,7 @@ def test_path_round_trip() -> None:
     msg = cv.path_to_ros(points, 3.0)
     assert np.allclose(cv.path_from_ros(msg), points)
     assert cv.quat_to_yaw(
-        tuple(getattr(msg.poses[0].pose.orientation, a) for a in "xyzw")  # type: ignore[arg-type]
+        tuple(getattr(msg.poses[0].pose.orientation, a) for a in "xyzw")
     ) == pytest.approx(math.atan2(0.5, 1.0))
 
 

@@ -1,0 +1,87 @@
+"""``knic ros``: KnIC as a ROS 2 node beside a robot that publishes its own sensors (or ``knic sim --ros``).
+
+KnIC reads the robot only through ROS 2 topics (:class:`knic.ros.robot.RosRobot`), publishes what it believes
+and does (:mod:`knic.ros.knic_node`) and takes goals on ``/knic/goal`` besides ``--goal``. With goals it
+stops when it believes them achieved or dropped (exit 0 when achieved, 1 otherwise); without, it serves
+until ``--max-sim-time``, Ctrl-C or SIGTERM.
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import signal
+import sys
+from pathlib import Path
+from typing import Any
+
+from core.errors import KnicError
+
+
+class RosRunFailed(KnicError):
+    """The goals were not achieved."""
+
+    exit_code = 1
+
+
+def add_arguments(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument("--world", default="erl_home", help="the robot's map: world name or file")
+    parser.add_argument("--role", default="companion", help="robot role (default companion)")
+    parser.add_argument("--goal", action="append", default=[], metavar="TEXT", help="a goal (repeatable)")
+    parser.add_argument(
+        "--max-sim-time", type=float, default=math.inf, metavar="S", help="stop after S seconds of robot time"
+    )
+    parser.add_argument("--serve", action="store_true", help="keep serving after the goals are achieved")
+    parser.add_argument("--journal", type=Path, metavar="FILE.sqlite", help="record the knowledge base")
+    parser.add_argument("--trace", type=Path, metavar="FILE.jsonl", help="write the trace as JSON lines")
+    parser.add_argument("--domain-id", type=int, help="ROS_DOMAIN_ID (default: the environment's)")
+    parser.add_argument("--json", action="store_true", help="print only a JSON summary at the end")
+
+
+def _interrupt(signum: int, frame: Any) -> None:
+    raise KeyboardInterrupt
+
+
+def run(args: argparse.Namespace) -> int:
+    if args.max_sim_time <= 0:
+        raise KnicError(f"knic ros: --max-sim-time must be positive, got {args.max_sim_time}")
+    from knic.ros.env import require_ros, ros_context
+
+    require_ros()
+    from knic.ros.robot import RosLink
+    from knic.ros.split import RosRun
+
+    signal.signal(signal.SIGTERM, _interrupt)
+    trace_file = args.trace.open("w", encoding="utf-8") if args.trace else None
+    try:
+        with ros_context(args.domain_id) as context:
+            link = RosLink(context)
+            ros_run = RosRun(link, args.world, role=args.role, journal=args.journal, trace_stream=trace_file)
+            try:
+                for text in args.goal:
+                    reply = ros_run.add_goal(text)
+                    if reply["outcome"] != "added":
+                        raise KnicError(f"knic ros: goal {text!r} {reply['outcome']}: {reply['reason']}")
+                if not args.json:
+                    print("knic ros: ready; goals on /knic/goal", file=sys.stderr, flush=True)
+                    ros_run.trace.print_to(sys.stdout)
+                try:
+                    result = ros_run.run(args.max_sim_time, until_done=bool(args.goal) and not args.serve)
+                except KeyboardInterrupt:
+                    result = None
+            finally:
+                ros_run.close()
+                link.close()
+    finally:
+        if trace_file is not None:
+            trace_file.close()
+    if result is None:
+        return 0
+    if args.json:
+        print(json.dumps(result.to_dict(), sort_keys=True), flush=True)
+    else:
+        print(f"knic ros: {result.reason} at t={result.sim_time:.1f} s (wall {result.wall_s:.1f} s)")
+    if args.goal and not result.done:
+        raise RosRunFailed(f"knic ros: {result.reason}")
+    return 0
