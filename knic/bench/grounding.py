@@ -62,6 +62,17 @@ COMPARED = frozenset(
         "device_level",
     }
 )
+#: predicate families reported one by one (``families``): family -> its predicates
+FAMILIES: dict[str, frozenset[str]] = {
+    "robot_at": frozenset({"robot_at"}),
+    "object_at": frozenset({"object_at"}),
+    "object_on": frozenset({"object_on"}),
+    "person_at": frozenset({"person_at"}),
+    "person_near": frozenset({"person_near"}),
+    "device": frozenset({"light_on", "light_off", "device_level"}),
+}
+#: simulated seconds within which a belief change undone counts as a flap
+FLAP_WINDOW_S = 10.0
 #: the companion role's priority entities (besides every person)
 PRIORITY_ITEMS = frozenset({"glasses", "remote", "tablet"})
 #: the episodes of the benchmark, by role
@@ -80,6 +91,12 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         " an episode not run are null (a short smoke run: --sim-seconds 60 --roles companion)",
     )
     parser.add_argument("--seed", type=int, default=0, help="simulation seed (default 0)")
+    parser.add_argument(
+        "--seeds",
+        type=int,
+        default=1,
+        help="episodes per role, seeds --seed .. --seed+N-1; the figures are their means (default 1)",
+    )
     parser.add_argument("--skip-octomap", action="store_true", help="do not measure the octomap ratio")
     parser.add_argument("--json", action="store_true", help="print one JSON object")
 
@@ -96,10 +113,21 @@ def run(args: argparse.Namespace) -> int:
             f"knic bench grounding: --roles {args.roles!r}: expected a comma-separated subset of"
             f" {', '.join(EPISODE_ROLES)}" + (f"; unknown: {', '.join(unknown)}" if unknown else "")
         )
+    if args.seeds < 1:
+        raise KnicError(f"knic bench grounding: --seeds must be at least 1, got {args.seeds}")
     logging.getLogger("knic.scheduler").setLevel(logging.ERROR)
-    figures = measure_grounding(
-        duration=args.duration, seed=args.seed, octomap=not args.skip_octomap, roles=roles
-    )
+    runs = [
+        measure_grounding(duration=args.duration, seed=seed, octomap=False, roles=roles)
+        for seed in range(args.seed, args.seed + args.seeds)
+    ]
+    figures = average_figures(runs)
+    figures["seeds"] = list(range(args.seed, args.seed + args.seeds))
+    if not args.skip_octomap:
+        from knic.bench.octomap import measure_octomap_throughput
+
+        octo = measure_octomap_throughput()
+        figures["octomap_throughput_ratio"] = octo["octomap_throughput_ratio"]
+        figures["octomap_ratio_same_work"] = octo["octomap_overhead_ratio_same_mode"]
     if args.json:
         print(json.dumps(figures, sort_keys=True))
     else:
@@ -139,13 +167,38 @@ def measure_grounding(
         "precision_all_top_rate": top["precision"],
         "recall_all_top_rate": top["recall"],
         "by_predicate_companion": companion["by_predicate"],
+        "families": companion["families"],
         "wall_s": round(companion["wall_s"] + top["wall_s"], 1),
     }
     if octomap:
         from knic.bench.octomap import measure_octomap_throughput
 
-        figures["octomap_throughput_ratio"] = measure_octomap_throughput()["octomap_throughput_ratio"]
+        octo = measure_octomap_throughput()
+        figures["octomap_throughput_ratio"] = octo["octomap_throughput_ratio"]
+        figures["octomap_ratio_same_work"] = octo["octomap_overhead_ratio_same_mode"]
     return figures
+
+
+def average_figures(runs: list[dict[str, Any]]) -> dict[str, Any]:
+    """The mean of several runs' figures, key by key: numbers averaged over the runs where they are not
+    null (null when null in every run), nested objects averaged alike, counts (``changes_*``, ``samples``,
+    ``*_samples``) summed."""
+    out: dict[str, Any] = {}
+    for key in runs[0]:
+        values = [r.get(key) for r in runs]
+        present = [v for v in values if v is not None]
+        if not present:
+            out[key] = None
+        elif all(isinstance(v, dict) for v in present):
+            keys = list(dict.fromkeys(k for v in present for k in v))
+            out[key] = average_figures([{k: v.get(k) for k in keys} for v in present])
+        elif all(isinstance(v, int | float) and not isinstance(v, bool) for v in present):
+            summed = key.startswith("changes") or key.endswith("samples") or key == "changes"
+            total = sum(present)
+            out[key] = total if summed else round(total / len(present), 4)
+        else:
+            out[key] = present[0]
+    return out
 
 
 class _NotRun(dict[str, Any]):
@@ -211,9 +264,23 @@ class _Recorder:
     #: predicate -> [believed, believed but false, perceivable true, perceivable true but not believed]
     by_predicate: dict[str, list[int]] = field(default_factory=dict)
 
+    #: fact -> (added, simulated time) of the knowledge base's latest change of it
+    last_change: dict[Atom, tuple[bool, float]] = field(default_factory=dict)
+    #: family -> belief changes undone within :data:`FLAP_WINDOW_S`
+    flaps: dict[str, int] = field(default_factory=dict)
+
     def tally(self, facts: set[Atom], slot: int) -> None:
         for fact in facts:
             self.by_predicate.setdefault(fact[0], [0, 0, 0, 0])[slot] += 1
+
+    def kb_change(self, atom: Atom, added: bool, at: float) -> None:
+        """Note one change the knowledge base made; a change undone within the window is a flap."""
+        previous = self.last_change.get(atom)
+        if previous is not None and previous[0] != added and at - previous[1] <= FLAP_WINDOW_S:
+            family = family_of(atom[0])
+            if family is not None:
+                self.flaps[family] = self.flaps.get(family, 0) + 1
+        self.last_change[atom] = (added, at)
 
     def visible_since(self, name: str, t: float) -> bool:
         stamps = self.seen.get(name)
@@ -257,6 +324,7 @@ def _episode(parts: Assembly, duration: float) -> dict[str, Any]:
             return
         atom = (change.name, *change.args)
         added = change.kind.value == "add_fact"
+        rec.kb_change(atom, added, change.time)
         for ch in rec.pending:
             if ch.fact == atom and ch.appeared == added and ch.reflected_at is None:
                 ch.reflected_at = change.time
@@ -287,6 +355,7 @@ def _episode(parts: Assembly, duration: float) -> dict[str, Any]:
         "cpu_s": round(cpu - parts.pipeline.camera.render_wall_s, 2),
         "render_s": round(parts.pipeline.camera.render_wall_s, 2),
         "wall_s": time.perf_counter() - wall0,
+        "families": _families(rec, counted, duration),
         "by_predicate": {
             pred: {
                 "believed_samples": n[0],
@@ -297,6 +366,57 @@ def _episode(parts: Assembly, duration: float) -> dict[str, Any]:
             for pred, n in sorted(rec.by_predicate.items())
         },
     }
+
+
+def family_of(predicate: str) -> str | None:
+    """The family of :data:`FAMILIES` holding ``predicate``, or None."""
+    for family, predicates in FAMILIES.items():
+        if predicate in predicates:
+            return family
+    return None
+
+
+def _percentile(values: list[float], q: float) -> float | None:
+    if not values:
+        return None
+    ordered = sorted(values)
+    k = (len(ordered) - 1) * q
+    lo, hi = math.floor(k), math.ceil(k)
+    return round(ordered[lo] + (ordered[hi] - ordered[lo]) * (k - lo), 3)
+
+
+def _families(rec: _Recorder, counted: list[_Change], duration: float) -> dict[str, dict[str, Any]]:
+    """Per family: precision and recall pooled over the one-second samples, F1, latencies, flaps."""
+    out: dict[str, dict[str, Any]] = {}
+    for family, predicates in FAMILIES.items():
+        believed, false, perceivable, missed = (
+            sum(rec.by_predicate.get(p, [0, 0, 0, 0])[i] for p in predicates) for i in range(4)
+        )
+        precision = (believed - false) / believed if believed else None
+        recall = (perceivable - missed) / perceivable if perceivable else None
+        f1 = (
+            2 * precision * recall / (precision + recall)
+            if precision is not None and recall is not None and precision + recall > 0
+            else None
+        )
+        mine = [c for c in counted if c.fact[0] in predicates]
+        asserted = [c.reflected_at - c.at for c in mine if c.appeared and c.reflected_at is not None]
+        retracted = [c.reflected_at - c.at for c in mine if not c.appeared and c.reflected_at is not None]
+        fact_minutes = believed / 60.0  # believed facts sampled once per simulated second
+        out[family] = {
+            "precision": round(precision, 4) if precision is not None else None,
+            "recall": round(recall, 4) if recall is not None else None,
+            "f1": round(f1, 4) if f1 is not None else None,
+            "assert_latency_p50_s": _percentile(asserted, 0.5),
+            "assert_latency_p95_s": _percentile(asserted, 0.95),
+            "retract_latency_p50_s": _percentile(retracted, 0.5),
+            "flaps_per_fact_minute": (
+                round(rec.flaps.get(family, 0) / fact_minutes, 4) if fact_minutes else None
+            ),
+            "changes": len(mine),
+            "changes_unreflected": sum(1 for c in mine if c.reflected_at is None),
+        }
+    return out
 
 
 class _Patrol(Component):
