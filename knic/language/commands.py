@@ -170,7 +170,8 @@ def load_language(path: str | Path = DEFAULT_PATH) -> CommandLanguage:
         source=source,
     )
     lists: dict[str, tuple[str, ...]] = {v.name: v.phrases for v in verbs}
-    lists.update(det=language.determiners, fillers=language.fillers, joiners=language.joiners)
+    spoken = _phrases(data, "spoken_determiners", source) or language.determiners
+    lists.update(det=spoken, fillers=language.fillers, joiners=language.joiners)
     lists.update(percent=language.percent, openers=language.openers, closers=language.closers)
     object.__setattr__(language, "lists", lists)
     language.template_nodes()  # fail early on a malformed template

@@ -60,7 +60,7 @@ def sample_sentences(
         words: list[str] = []
         frames: list[CommandFrame] = []
         walker.walk(grammar.rule(grammar.top), words, frames, {})
-        if not frames or exclude_words.intersection(words):
+        if not frames or walker.dropped or exclude_words.intersection(words):
             continue
         made += 1
         yield Sample(" ".join(words), tuple(chain(frames, vocabulary).frames))
@@ -71,6 +71,8 @@ class _Walker:
         self.grammar = grammar
         self.vocabulary = vocabulary
         self.rng = rng
+        #: actions dropped outside a repetition (the sentence is then not used)
+        self.dropped = 0
 
     def walk(self, node: Node, words: list[str], frames: list[CommandFrame], args: dict[str, str]) -> None:
         rng = self.rng
@@ -103,7 +105,11 @@ class _Walker:
             self.walk(self.grammar.rule(node.name), words, frames, args)
         elif isinstance(node, Repeat):
             for _ in range(rng.randint(0, node.most)):
+                start, made = len(words), len(frames)
                 self.walk(node.part, words, frames, args)
+                if len(frames) == made:  # the action was dropped: drop its joiner too
+                    del words[start:]
+                    self.dropped -= 1
         elif isinstance(node, Frame):
             inner: dict[str, str] = {}
             start = len(words)
@@ -111,8 +117,21 @@ class _Walker:
                 self.walk(node.body, words, frames, inner)
             except _Dead:
                 del words[start:]
+                self.dropped += 1
                 return
             kind = node.kind
+            if inner.get("theme") == "it":  # the previous action's object, else no sentence starts so
+                things = [
+                    f["theme"]
+                    for f in frames
+                    if f.get("theme")
+                    and self.vocabulary.is_subtype(self.vocabulary.type_of(f["theme"]) or "", "item")
+                ]
+                if not things:
+                    del words[start:]
+                    self.dropped += 1
+                    return
+                inner["theme"] = things[-1]
             if kind == "BRINGING" and "goal" not in inner:
                 inner.setdefault("beneficiary", "me")
             frames.append(CommandFrame(kind, inner))
