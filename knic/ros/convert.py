@@ -323,9 +323,16 @@ def utterance_from_json(data: dict[str, Any]) -> Utterance:
 
 def result_to_json(result: CommandResult) -> dict[str, Any]:
     """A command result as a JSON object."""
-    return {"ok": result.ok, "reason": result.reason}
+    out: dict[str, Any] = {"ok": result.ok, "reason": result.reason}
+    cause = getattr(result, "cause", "")
+    if cause:
+        out["cause"] = cause
+    return out
 
 
 def result_from_json(data: dict[str, Any]) -> CommandResult:
     """The inverse of :func:`result_to_json`."""
-    return CommandResult(bool(data.get("ok", False)), str(data.get("reason", "")))
+    extra: dict[str, str] = {}
+    if data.get("cause") and "cause" in getattr(CommandResult, "__dataclass_fields__", {}):
+        extra["cause"] = str(data["cause"])  # the failure's kind, where the seam names it
+    return CommandResult(bool(data.get("ok", False)), str(data.get("reason", "")), **extra)

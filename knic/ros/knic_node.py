@@ -147,7 +147,10 @@ class KnicNode:
         self.cognition = cognition
         self.snapshot_period = snapshot_period
         self.intake = intake or _intake(kb, robot, confirm)
-        n, q = link.node("knic"), tp.reliable
+        from rclpy.parameter import Parameter
+
+        # the node's clock follows /clock (simulated time); stamps come from the robot's time base anyway
+        n, q = link.node("knic", parameter_overrides=[Parameter("use_sim_time", value=True)]), tp.reliable
         self.node = n
         self.pub_facts = n.create_publisher(String, tp.FACTS, q(1, latched=True))
         self.pub_events = n.create_publisher(String, tp.FACT_EVENTS, q(1000))
@@ -217,7 +220,8 @@ class KnicNode:
             self.pub_path.publish(path_to_ros(status.path, now))
 
     def publish_octomaps(self, now: float) -> None:
-        """Publish each tracked entity's octomap (cubes) on ``/knic/octomap/<kind>_<name>`` when changed."""
+        """Publish each tracked entity's octomap (cubes) on ``/knic/octomap/<kind>_<name>`` when changed and
+        someone listens (thousands of points cost to convert; a new subscriber gets the next one)."""
         from visualization_msgs.msg import MarkerArray
 
         if self.cognition is None:
@@ -225,15 +229,18 @@ class KnicNode:
         for track in self.cognition.tracks():
             kind = "people" if track.cls == "person" else "objects"
             topic = tp.octomap_topic(kind, track.symbol)
+            if topic not in self.pub_octomaps:
+                self.pub_octomaps[topic] = self.node.create_publisher(
+                    MarkerArray, topic, tp.reliable(1, latched=True)
+                )
+            if self.pub_octomaps[topic].get_subscription_count() == 0:
+                self._octomap_digest.pop(topic, None)
+                continue
             centres = np.asarray(track.octomap.tree.extractPointCloud()[0], dtype=np.float64).reshape(-1, 3)
             digest = hash(centres.round(3).tobytes())
             if self._octomap_digest.get(topic) == digest:
                 continue
             self._octomap_digest[topic] = digest
-            if topic not in self.pub_octomaps:
-                self.pub_octomaps[topic] = self.node.create_publisher(
-                    MarkerArray, topic, tp.reliable(1, latched=True)
-                )
             name = topic.removeprefix(tp.OCTOMAP_PREFIX)
             self.pub_octomaps[topic].publish(
                 voxels_to_ros(name, centres, float(track.octomap.resolution), now)

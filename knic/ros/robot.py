@@ -37,6 +37,7 @@ from core.robot import (
     Pose3D,
     SoundEvent,
     Utterance,
+    Vec3,
 )
 from knic.ros import topics as tp
 from knic.ros.camera import CameraMessages, frame_from_ros
@@ -79,6 +80,7 @@ class RosLink:
         """A new node in this link's context, spun by :meth:`spin`."""
         from rclpy.node import Node
 
+        kwargs.setdefault("start_parameter_services", False)  # fewer entities in every wait
         node = Node(name, context=self.context, **kwargs)
         self.executor.add_node(node)
         self.nodes.append(node)
@@ -160,6 +162,7 @@ class RosRobot:
         self._frame = _blank_frame()
         self._frame_done = -1.0  # stamp of the latest frame received whole (converted or dropped)
         self._results: dict[int, dict[str, Any]] = {}
+        self._pending: set[int] = set()
         self._ids = itertools.count(1)
         self.commands_sent = 0
         self.pub_command = n.create_publisher(String, tp.COMMAND, q(50))
@@ -283,7 +286,7 @@ class RosRobot:
             return
         if isinstance(reply.get("state"), dict):
             self._take_state(reply["state"])
-        if isinstance(reply["id"], int):
+        if reply["id"] in self._pending:
             self._results[reply["id"]] = reply
 
     # ------------------------------------------------------------------ synchronisation (RosClock)
@@ -327,17 +330,20 @@ class RosRobot:
             if time.monotonic() > deadline:
                 raise RobotLinkError(f"robot: nobody subscribes to {tp.COMMAND} (command {op})")
             self.link.spin(0.05)
+        self._pending.add(request_id)
         self.pub_command.publish(request)
         self.commands_sent += 1
         sent = time.monotonic()
         while request_id not in self._results:
             now = time.monotonic()
             if now > deadline:
+                self._pending.discard(request_id)
                 raise RobotLinkError(f"robot: no reply to command {op} within {self.command_timeout:g} s")
             if now - sent > 1.0:  # the request or its reply was lost: the robot answers a repeat once
                 self.pub_command.publish(request)
                 sent = now
             self.link.spin(0.05)
+        self._pending.discard(request_id)
         reply = self._results.pop(request_id)
         if "error" in reply:
             if reply.get("kind") == "WorldError":
@@ -421,9 +427,9 @@ class RosRobot:
         """Stop the base and cancel any goal."""
         self.call("stop")
 
-    def pick(self, item: str) -> CommandResult:
-        """Grasp an item."""
-        return self._result("pick", item=item)
+    def pick(self, item: str, at: Vec3 | None = None) -> CommandResult:
+        """Grasp an item (at the believed position ``at``, world frame, when given)."""
+        return self._result("pick", item=item, **_at(at))
 
     def place(self, furniture: str) -> CommandResult:
         """Put the held item on a piece of furniture."""
@@ -433,9 +439,9 @@ class RosRobot:
         """Open the gripper."""
         return self._result("release")
 
-    def give(self, person: str) -> CommandResult:
-        """Hand the held item to a person."""
-        return self._result("give", person=person)
+    def give(self, person: str, at: Vec3 | None = None) -> CommandResult:
+        """Hand the held item to a person (believed at ``at`` when given)."""
+        return self._result("give", person=person, **_at(at))
 
     def pan_camera(self, angle: float) -> None:
         """Set the camera pan (radians)."""
@@ -453,13 +459,18 @@ class RosRobot:
         """Speak through the robot's loudspeaker."""
         self.call("say", text=text)
 
-    def escort(self, person: str) -> CommandResult:
-        """Ask a person to follow."""
-        return self._result("escort", person=person)
+    def escort(self, person: str, at: Vec3 | None = None) -> CommandResult:
+        """Ask a person to follow (believed at ``at`` when given)."""
+        return self._result("escort", person=person, **_at(at))
 
     def stop_escort(self) -> None:
         """Stop escorting."""
         self.call("stop_escort")
+
+
+def _at(at: Vec3 | None) -> dict[str, Any]:
+    """The optional believed position of a gripper or hand-over command, only when given."""
+    return {} if at is None else {"at": [float(v) for v in at]}
 
 
 class RosClock(Component):
@@ -473,7 +484,7 @@ class RosClock(Component):
 
     name = "ros_clock"
 
-    def __init__(self, robot: RosRobot, frequency: float = 20.0, timeout: float = 60.0) -> None:
+    def __init__(self, robot: RosRobot, frequency: float = 10.0, timeout: float = 60.0) -> None:
         self.robot = robot
         self.frequency = frequency
         self.timeout = timeout

@@ -61,15 +61,15 @@ COMMANDS: dict[str, tuple[tuple[str, ...], str]] = {
     "navigate_to_person": (("person",), "goal"),
     "set_base_velocity": (("linear", "angular"), "none"),
     "stop": ((), "none"),
-    "pick": (("item",), "result"),
+    "pick": (("item", "at"), "result"),
     "place": (("furniture",), "result"),
     "release": ((), "result"),
-    "give": (("person",), "result"),
+    "give": (("person", "at"), "result"),
     "pan_camera": (("angle",), "none"),
     "set_light": (("device", "on"), "result"),
     "set_level": (("device", "percent"), "result"),
     "say": (("text",), "none"),
-    "escort": (("person",), "result"),
+    "escort": (("person", "at"), "result"),
     "stop_escort": ((), "none"),
 }
 
@@ -96,7 +96,7 @@ class SimNode:
         self.sim = sim
         self.rate = rate
         self.dt = dt
-        self.node = Node("knic_sim", context=context)
+        self.node = Node("knic_sim", context=context, start_parameter_services=False)
         self.executor = SingleThreadedExecutor(context=context)
         self.executor.add_node(self.node)
         n, q = self.node, tp.reliable
@@ -130,6 +130,8 @@ class SimNode:
         self._frame_stamp = -1.0
         self._published_at: float | None = None
         self._replies: dict[Any, dict[str, Any]] = {}
+        self._devices: dict[str, Any] | None = None
+        self._state_content: tuple[Any, ...] | None = None
         grid = sim.grid
         self.pub_map.publish(grid_to_ros(grid.occupied, grid.origin, grid.resolution, sim.time))
 
@@ -174,19 +176,24 @@ class SimNode:
         for heard in sim.poll_utterances():
             self._heard += 1
             self.pub_heard.publish(json_to_ros({"seq": self._heard, **utterance_to_json(heard)}))
-        self.pub_devices.publish(json_to_ros({"t": t, "states": sim.device_states()}))
+        devices = sim.device_states()
+        if devices != self._devices:  # latched: the latest readings stay available
+            self._devices = devices
+            self.pub_devices.publish(json_to_ros({"t": t, "states": devices}))
         frame = sim.camera_frame()
         if frame.stamp != self._frame_stamp:
             self._frame_stamp = frame.stamp
             messages = frame_to_ros(frame)
             for key, pub in self.pub_camera.items():
                 pub.publish(getattr(messages, key))
-        state = self.robot_state()
-        self.pub_state.publish(json_to_ros(state))
+        now_state = (nav_status_to_json(sim.nav_status()), sim.held_item(), sim.camera_pan)
+        if now_state != self._state_content:  # latched: the latest state stays available
+            self._state_content = now_state
+            self.pub_state.publish(json_to_ros(self.robot_state()))
         self.pub_clock.publish(Clock(clock=time_to_ros(t)))
         manifest = {
             "t": t,
-            "state": state["seq"],
+            "state": self._seq,
             "frame": self._frame_stamp,
             "sounds": self._sounds,
             "heard": self._heard,
@@ -253,7 +260,7 @@ class SimNode:
         if extra:
             raise MessageError(f"command {op}: unexpected argument {sorted(extra)[0]!r}")
         method: Callable[..., Any] = getattr(self.sim, op)
-        kwargs = {k: (tuple(v) if k == "near" and v is not None else v) for k, v in args.items()}
+        kwargs = {k: (tuple(v) if k in ("near", "at") and v is not None else v) for k, v in args.items()}
         try:
             value = method(**kwargs)
         except TypeError as exc:
