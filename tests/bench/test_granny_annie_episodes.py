@@ -66,6 +66,9 @@ def test_episodes_cover_the_task(world: World, episodes: list[Episode]) -> None:
         scenario_from_dict(e.scenario(), world)
         targets = [t for r in e.requests for t in r.targets]
         assert len(targets) == len(set(targets))
+        assert sum(r.kind == "bring" for r in e.requests) <= 1  # a person holds one object
+        for item in e.placements:  # low enough for the gripper
+            assert world.furniture[e.placements[item]].height + world.items[item].size[2] / 2 <= 1.6
 
 
 def test_device_and_accompany_requests_cannot_hold_at_the_start(
@@ -105,6 +108,7 @@ def test_bank_commands_read_back_into_requests(world: World, vocab: Vocabulary) 
     assert source is not None and source[0].goals == ("(has annie apple)",)
     assert requests_of_text("bring me an apple from the bed", candidates) is None  # not where it stands
     assert requests_of_text("locate the tablet and bring it to me", candidates) is None  # pronoun
+    assert requests_of_text("bring me the remote and get me the apple", candidates) is None  # one bring
 
 
 def test_episode_world_file_puts_items_where_the_episode_says(world: World, episodes: list[Episode]) -> None:

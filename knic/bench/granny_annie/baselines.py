@@ -3,14 +3,14 @@
 * ``knic``: the whole system as ``knic run`` assembles it, under the chosen role.
 * ``static``: the closed-world robot of the paper's situation without KnIC. At t=0 it is given the initial map
   (the true places of every item and person, the devices' states, as a team writes them into its problem
-  file, with ``found`` for each entity placed), and then its facts are frozen: the KP' components (KGM-3) are
-  not stepped, so only the dispatcher's action effects change the knowledge base. Device actions assume
-  their effect (there is no KP' to confirm the reading). KGM-1 and KGM-2 still run: the actions steer by
-  what the camera sees.
+  file, with ``found`` for each entity placed, and where each stands for the actions to steer by), and then
+  its facts are frozen: the KP' components (KGM-3) are not stepped, so only the dispatcher's action effects
+  change the knowledge base. Device actions assume their effect (there is no KP' to confirm the reading).
+  KGM-1 and KGM-2 still run: the actions also steer by what the camera sees.
 * ``oracle``: facts straight from ground truth. The KP' components are not stepped; a probe writes the
   oracle's true dynamic facts into the knowledge base at :data:`ORACLE_HZ` (only the changes, as observed)
-  with ``found`` for every entity placed, and the camera is noise-free, so the actions steer by perfect
-  sightings.
+  with ``found`` for every entity placed, and the true position of every item and person is handed to the
+  perception the actions steer by at the same rate (the camera is noise-free too): no perception errors.
 
 :func:`prepare` applies a baseline to an assembled :class:`~knic.system.KnicSystem` before its goals are
 given; it uses only the system's parts (scheduler, knowledge base, action registry, simulator).
@@ -78,18 +78,32 @@ def prepare(system: KnicSystem, baseline: str) -> None:
         system.scheduler.remove(component.name)
     if baseline == "static":
         write_truth(system, source="initial_map", status=BeliefStatus.GIVEN)
+        true_sightings(system)
         _assume_device_effects(system)
     else:
         from worlds.api import NoiseConfig
 
         if hasattr(system.sim, "noise"):
             system.sim.noise = NoiseConfig.perfect()
-        write_truth(system, source="oracle", status=BeliefStatus.OBSERVED)
+        _sync(system)
         system.scheduler.add(Probe("bench.oracle_facts", ORACLE_HZ, lambda now: _sync(system)))
 
 
 def _sync(system: KnicSystem) -> None:
     write_truth(system, source="oracle")
+    true_sightings(system)
+
+
+def true_sightings(system: KnicSystem) -> None:
+    """Hand the true position of every item and every present person to the perception the actions steer
+    by (as if perceived now)."""
+    from actions.erl.perception import Sighting
+
+    sim, now = system.sim, system.sim.time
+    names = [*system.world.items, *(p for p in system.world.people if sim.person_present(p))]
+    for name in names:
+        position = sim.true_pose(name).position
+        system.perceived.record(name, Sighting((position[0], position[1], position[2]), now))
 
 
 def write_truth(system: KnicSystem, *, source: str, status: BeliefStatus = BeliefStatus.OBSERVED) -> int:

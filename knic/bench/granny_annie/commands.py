@@ -14,7 +14,9 @@ lead / guide / escort / accompany P to the R    ``(person_at P R)``
 ==============================================  ==========================================
 
 A device request always asks for a state the device is not in at the start (so it cannot pass untouched); an
-accompany request names a room the person is not in. Every phrase names exactly one symbol of its kind.
+accompany request names a room the person is not in. Every phrase names exactly one symbol of its kind. A
+command has at most one bring request (a simulated person holds one object at a time) and at most one
+accompany request.
 """
 
 from __future__ import annotations
@@ -123,7 +125,9 @@ def draw_requests(
         options = {
             "device": _devices(world, phrases, used),
             "find": [i for i in sorted(placements) if i not in used and i in phrases.by_symbol],
-            "bring": [i for i in sorted(placements) if i not in used and i in phrases.by_symbol],
+            "bring": [i for i in sorted(placements) if i not in used and i in phrases.by_symbol]
+            if not any(r.kind == "bring" for r in out)
+            else [],
             "accompany": _people(world, phrases, used) if not any(r.kind == "accompany" for r in out) else [],
         }
         kinds = [k for k in KIND_WEIGHTS if options[k]]
@@ -282,8 +286,8 @@ def candidate_requests(world: World, vocab: Vocabulary, placements: dict[str, st
 
 def requests_of_text(text: str, candidates: dict[str, Request]) -> list[Request] | None:
     """The requests of a chained command (``a, b and c``) when every part is a candidate request with
-    distinct targets and at most one accompany request, else None (pronouns such as "bring it to me" are not
-    read back)."""
+    distinct targets and at most one bring and one accompany request, else None (pronouns such as "bring it
+    to me" are not read back)."""
     import re
 
     from knic.language.vocabulary import normalize
@@ -294,6 +298,7 @@ def requests_of_text(text: str, candidates: dict[str, Request]) -> list[Request]
         return None
     found = [r for r in requests if r is not None]
     targets = [t for r in found for t in r.targets]
-    if len(set(targets)) != len(targets) or sum(r.kind == "accompany" for r in found) > 1:
+    once = ("accompany", "bring")
+    if len(set(targets)) != len(targets) or any(sum(r.kind == k for r in found) > 1 for k in once):
         return None
     return found

@@ -16,6 +16,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from knic.bench.granny_annie.commands import ANNIE, Request, pick
+from knic.bench.granny_annie.placement import within_arm_height
 
 if TYPE_CHECKING:
     from worlds.model import World
@@ -89,6 +90,10 @@ def _time(rng: np.random.Generator, window: tuple[float, float]) -> float:
 def _destinations(world: World, placements: dict[str, str], item: str) -> list[str]:
     """Surfaces other than the item's own, preferring those any item's priors name (places things go)."""
     usual = {p.furniture for it in world.items.values() for p in it.priors if p.furniture}
-    surfaces = sorted(f.name for f in world.furniture.values() if f.surface and f.name != placements[item])
+    surfaces = sorted(
+        f.name
+        for f in world.furniture.values()
+        if f.surface and f.name != placements[item] and within_arm_height(world, f.name, item)
+    )
     preferred = [f for f in surfaces if f in usual]
     return preferred or surfaces

@@ -94,15 +94,26 @@ def item_spot(world: World, placements: dict[str, str], name: str) -> tuple[floa
 
 
 def graspable(world: World, placements: dict[str, str], name: str, margin: float = 0.1) -> bool:
-    """True when a free floor point of the furniture's room lies within the robot's reach (less ``margin``)
-    of the item's spot; free: the robot's base keeps clear of walls and furniture."""
+    """True when the item stands low enough for the gripper and a free floor point of the furniture's room
+    lies within the robot's reach (less ``margin``) of its spot; free: the robot's base keeps clear of walls
+    and furniture."""
     f = world.furniture[placements[name]]
+    if not within_arm_height(world, f.name, name):
+        return False
     x, y = item_spot(world, placements, name)
     cache = _cache(world)[1]
     key = (f.name, round(x, 3), round(y, 3), margin)
     if key not in cache:
         cache[key] = _free_point_near(world, f.room, x, y, world.robot.reach - margin)
     return bool(cache[key])
+
+
+def within_arm_height(world: World, furniture: str, item: str | None = None) -> bool:
+    """True when an item (default: a 0.1 m one) on ``furniture`` stands low enough for the gripper."""
+    from worlds.sim.hands import MAX_PICK_HEIGHT
+
+    half = world.items[item].size[2] / 2 if item is not None else 0.05
+    return world.furniture[furniture].height + half <= MAX_PICK_HEIGHT
 
 
 def _free_point_near(world: World, room_name: str, x: float, y: float, reach: float) -> bool:
