@@ -106,6 +106,14 @@ def test_static_and_oracle_baselines_write_no_kp_prime_facts(tmp_path: Path) -> 
         system.scheduler.tick(5.0)
         sources = {getattr(system.kb.why(f), "source", None) for f in system.kb.facts("object_at")}
         assert sources == {"initial_map"}  # perception ran for 5 s and wrote no place
+    with KnicSystem(config) as system:
+        prepare(system, "oracle")
+        truth = {
+            f for f in system.sim.ground_truth_facts() if f[0] in ("object_at", "person_at", "light_off")
+        }
+        assert truth <= {(f.predicate, *f.args) for f in system.kb.facts()}
+        seen = system.perceived.sighting("tablet")  # where the actions steer to: the true position
+        assert seen is not None and seen.position == pytest.approx(system.sim.true_pose("tablet").position)
 
 
 def test_command_line_json_and_refusals(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
