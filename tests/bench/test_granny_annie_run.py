@@ -182,3 +182,15 @@ def test_ray_backend_gives_the_serial_result(tmp_path: Path) -> None:
     on_ray = [{k: v for k, v in r.items() if k != "wall_s"} for r in run_tasks(tasks, backend="ray")]
     serial = [{k: v for k, v in r.items() if k != "wall_s"} for r in run_tasks(tasks)]
     assert on_ray == serial and serial[0]["score"]["achieved"]["devices"] == 1
+
+
+def test_ray_backend_without_ray_says_why(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str], monkeypatch: pytest.MonkeyPatch
+) -> None:
+    from knic.bench.granny_annie import runner
+
+    monkeypatch.setattr(runner, "ray_unavailable", lambda: "the Ray backend needs the optional 'ray' package")
+    assert main(["bench", "granny-annie", "--backend", "ray", "--out", str(tmp_path / "out")]) == 2
+    err = capsys.readouterr().err
+    assert "--backend ray" in err and "optional 'ray' package" in err
+    assert not (tmp_path / "out").exists()  # refused before anything was written
