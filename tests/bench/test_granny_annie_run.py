@@ -136,6 +136,7 @@ def test_command_line_json_and_refusals(tmp_path: Path, capsys: pytest.CaptureFi
         assert figures["time_median_s"] <= 20.0
     report = json.loads((tmp_path / "report.json").read_text())
     assert len(report["results"]) == 2 and report["summary"] == printed["baselines"]
+    assert sum(printed["baselines"]["knic"]["run_ends"].values()) == 1
     assert "| knic |" in (tmp_path / "report.md").read_text()
     for png in ("achievements.png", "time.png", "failures.png"):
         assert (tmp_path / png).read_bytes()[:4] == b"\x89PNG"

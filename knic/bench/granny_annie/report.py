@@ -26,8 +26,33 @@ def score_of(result: dict[str, Any]) -> Score:
 
 
 def summary(results: list[dict[str, Any]], baselines: list[str]) -> dict[str, dict[str, Any]]:
-    """Per baseline, the totals of its results (:func:`~.referee.summarise`)."""
-    return {b: summarise([score_of(r) for r in results if r["baseline"] == b]) for b in baselines}
+    """Per baseline, the totals of its results (:func:`~.referee.summarise`) and how its runs ended
+    (``run_ends``: done, gave_up, time_limit, not_understood, error)."""
+    out = {}
+    for b in baselines:
+        mine = [r for r in results if r["baseline"] == b]
+        figures = summarise([score_of(r) for r in mine])
+        ends = dict.fromkeys(("done", "gave_up", "time_limit", "not_understood", "error"), 0)
+        for r in mine:
+            ends[run_end(r)] += 1
+        figures["run_ends"] = ends
+        out[b] = figures
+    return out
+
+
+def run_end(result: dict[str, Any]) -> str:
+    """How a run ended: ``error`` (a part failed), ``time_limit``, ``not_understood`` (no goal taken),
+    ``gave_up`` (the robot dropped a goal) or ``done`` (it believed every goal achieved)."""
+    run = result["run"]
+    if run.get("error"):
+        return "error"
+    if not run["finished"]:
+        return "time_limit"
+    if run["reason"] == "no goal was taken":
+        return "not_understood"
+    if "dropped" in run["reason"]:
+        return "gave_up"
+    return "done"
 
 
 def ranking(results: list[dict[str, Any]], baselines: list[str]) -> dict[str, dict[str, float]]:
@@ -88,8 +113,8 @@ def markdown(report: dict[str, Any], baselines: list[str]) -> str:
         "| baseline | achievements | "
         + " | ".join(KINDS)
         + " | penalties | disqualified runs | median time s |"
-        " mean rank | wins |",
-        "|---" * (len(KINDS) + 7) + "|",
+        " mean rank | wins | run ends |",
+        "|---" * (len(KINDS) + 8) + "|",
     ]
     for b in baselines:
         s, r = report["summary"][b], report["ranking"][b]
@@ -100,6 +125,7 @@ def markdown(report: dict[str, Any], baselines: list[str]) -> str:
         lines.append(
             f"| {b} | {s['achievements_share']} | {kinds} | {penalties} | {s['disqualified_runs']} |"
             f" {s['time_median_s']} | {r['mean_rank']} | {r['wins']} |"
+            f" {', '.join(f'{k} {v}' for k, v in s['run_ends'].items() if v)} |"
         )
     lines += [
         "",
