@@ -51,9 +51,9 @@ def test_path_round_trip() -> None:
     points = [(0.0, 0.0), (1.0, 0.5), (2.0, 2.0)]
     msg = cv.path_to_ros(points, 3.0)
     assert np.allclose(cv.path_from_ros(msg), points)
-    assert cv.quat_to_yaw(
-        tuple(getattr(msg.poses[0].pose.orientation, a) for a in "xyzw")
-    ) == pytest.approx(math.atan2(0.5, 1.0))
+    assert cv.quat_to_yaw(tuple(getattr(msg.poses[0].pose.orientation, a) for a in "xyzw")) == pytest.approx(
+        math.atan2(0.5, 1.0)
+    )
 
 
 def test_grid_round_trip() -> None:
