@@ -51,6 +51,9 @@ import numpy as np
 import numpy.typing as npt
 
 __all__ = [
+    "CAUSE_HAND",
+    "CAUSE_NOT_AT_BELIEF",
+    "CAUSE_OUT_OF_REACH",
     "Camera",
     "CameraFrame",
     "CameraIntrinsics",
@@ -322,13 +325,24 @@ class CommandResult:
     Attributes:
         ok: True when the command took effect.
         reason: one line saying why not (``"mug is 2.31 m away, reach is 0.90 m"``), empty on success.
+        cause: the failure's kind, one of the ``CAUSE_*`` names (empty on success or when unnamed);
+            :data:`CAUSE_NOT_AT_BELIEF` tells the caller its belief of where the entity is was wrong.
     """
 
     ok: bool
     reason: str = ""
+    cause: str = ""
 
     def __bool__(self) -> bool:
         return self.ok
+
+
+#: a gripper, hand-over or escort command found nothing at the believed position it was given
+CAUSE_NOT_AT_BELIEF = "not_at_belief"
+#: the believed position (or the entity) is beyond the arm's reach from where the base stands
+CAUSE_OUT_OF_REACH = "out_of_reach"
+#: the hand (the robot's or the person's) is not in the state the command needs
+CAUSE_HAND = "hand"
 
 
 # --------------------------------------------------------------------------------------------- the seam
@@ -446,8 +460,14 @@ class Robot(Camera, Localisation, SoundDetector, SpeechInput, DeviceSensors, Pro
         ...
 
     # gripper and camera mount
-    def pick(self, item: str) -> CommandResult:
-        """Grasp ``item`` if the hand is empty and the item is within reach and free."""
+    def pick(self, item: str, at: Vec3 | None = None) -> CommandResult:
+        """Grasp ``item`` if the hand is empty and the item is within reach and free.
+
+        ``at`` is where the robot believes the item is (world frame, metres, as its own localisation puts
+        it): the arm goes there, and the grasp closes on the item only if it really is within the gripper's
+        tolerance of that point; otherwise the result fails with cause :data:`CAUSE_NOT_AT_BELIEF`. Without
+        ``at`` the arm's close-range sensing finds the item itself.
+        """
         ...
 
     def place(self, furniture: str) -> CommandResult:
@@ -458,8 +478,13 @@ class Robot(Camera, Localisation, SoundDetector, SpeechInput, DeviceSensors, Pro
         """Open the gripper where it is: the held item falls."""
         ...
 
-    def give(self, person: str) -> CommandResult:
-        """Hand the held item to a person within reach."""
+    def give(self, person: str, at: Vec3 | None = None) -> CommandResult:
+        """Hand the held item to a person within reach.
+
+        ``at``: where the robot believes the person is (as for :meth:`pick`); the arm reaches there and the
+        hand-over fails with cause :data:`CAUSE_NOT_AT_BELIEF` when the person is not within hand-over
+        tolerance of it.
+        """
         ...
 
     def pan_camera(self, angle: float) -> None:
@@ -480,8 +505,12 @@ class Robot(Camera, Localisation, SoundDetector, SpeechInput, DeviceSensors, Pro
         """Speak ``text`` through the robot's loudspeaker."""
         ...
 
-    def escort(self, person: str) -> CommandResult:
-        """Ask a person within 2 m to follow the robot until :meth:`stop_escort`."""
+    def escort(self, person: str, at: Vec3 | None = None) -> CommandResult:
+        """Ask a person within 2 m to follow the robot until :meth:`stop_escort`.
+
+        ``at``: where the robot believes the person is; the robot addresses that spot, and the request fails
+        with cause :data:`CAUSE_NOT_AT_BELIEF` when nobody of that name stands within 1 m of it.
+        """
         ...
 
     def stop_escort(self) -> None:

@@ -22,7 +22,7 @@ the same readings, poses and ground truth.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Protocol, runtime_checkable
 
@@ -111,6 +111,16 @@ class NoiseConfig:
         min_pixels: smallest mask (pixels) an instance needs to count as visible and detectable.
         confidence_range: detector confidence of true detections is drawn in this range (higher for bigger
             masks); false positives get the lower half.
+        sound_noise_xy: standard deviation (metres, per axis) of where the microphone array localises a sound.
+        sound_noise_per_m: added to that standard deviation per metre between the robot and the sound.
+        person_confusion_rate: probability that a recognised person is given another person's name.
+        class_miss_rate: per-class miss probability (``"person"`` for people), overriding ``miss_rate``.
+        confusions: per-class confusion row: class -> {class it is read as: probability}; a class without a
+            row is confused with probability ``confusion_rate`` with any other item class.
+
+    Masks are the pixels the renderer saw of each instance: a box or mask is cut by whatever stands in front.
+    The model is data: :func:`worlds.sim.noise.load_noise` reads it from YAML (``worlds/noise.yaml`` is the
+    default robot's).
     """
 
     miss_rate: float = 0.05
@@ -123,6 +133,11 @@ class NoiseConfig:
     pose_noise_yaw: float = 0.01
     min_pixels: int = 4
     confidence_range: tuple[float, float] = (0.6, 0.98)
+    sound_noise_xy: float = 0.1
+    sound_noise_per_m: float = 0.02
+    person_confusion_rate: float = 0.0
+    class_miss_rate: dict[str, float] = field(default_factory=dict)
+    confusions: dict[str, dict[str, float]] = field(default_factory=dict)
 
     @classmethod
     def perfect(cls) -> NoiseConfig:
@@ -137,6 +152,8 @@ class NoiseConfig:
             pose_noise_xy=0.0,
             pose_noise_yaw=0.0,
             confidence_range=(1.0, 1.0),
+            sound_noise_xy=0.0,
+            sound_noise_per_m=0.0,
         )
 
 

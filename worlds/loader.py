@@ -469,6 +469,7 @@ def _robot(ctx: _Ctx, raw: Any, rooms: dict[str, Room]) -> RobotSpec:
         "camera_height",
         "camera_pitch",
         "camera_fov",
+        "grasp_tolerance",
     }
     _no_unknown(ctx, "robot", d, fields)
     name = _str(ctx, "robot.name", _req(ctx, "robot", d, "name"))

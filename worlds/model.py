@@ -196,6 +196,8 @@ class RobotSpec:
         camera_height: height of the camera above the floor.
         camera_pitch: downward tilt of the camera in radians.
         camera_fov: vertical field of view in degrees.
+        grasp_tolerance: metres (horizontal) between where the arm is sent and the item's centre within which
+            the gripper still closes on it; twice this vertically.
     """
 
     name: str
@@ -208,6 +210,7 @@ class RobotSpec:
     camera_height: float = 1.25
     camera_pitch: float = 0.35
     camera_fov: float = 58.0
+    grasp_tolerance: float = 0.12
 
 
 @dataclass(frozen=True)

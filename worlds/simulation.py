@@ -11,12 +11,15 @@ reproducible call for call.
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 from pathlib import Path
 
 import numpy as np
 
 from core.errors import WorldError
 from core.robot import (
+    CAUSE_NOT_AT_BELIEF,
+    CAUSE_OUT_OF_REACH,
     CameraFrame,
     CommandResult,
     DeviceReading,
@@ -25,6 +28,7 @@ from core.robot import (
     Pose3D,
     SoundEvent,
     Utterance,
+    Vec3,
 )
 from worlds.api import NoiseConfig
 from worlds.geometry import Point, wrap_angle
@@ -38,10 +42,11 @@ from worlds.sim.goals import approach_points, person_points, room_points
 from worlds.sim.hands import PERSON_REACH, Hands
 from worlds.sim.items import ItemState, fall_step
 from worlds.sim.navigation import GridMap
+from worlds.sim.noise import load_noise
 from worlds.sim.people import PeopleController, PersonState
 from worlds.sim.perception import add_depth_noise, detect
 from worlds.sim.robot import BaseController
-from worlds.sim.scene import Scene
+from worlds.sim.scene import Scene, optical_pose
 from worlds.sim.truth import ground_truth
 
 CONTROL_DT = 0.05  # seconds per control period
@@ -61,7 +66,8 @@ class Simulation:
         camera_hz: camera rate; :meth:`camera_frame` renders at most once per ``1 / camera_hz`` simulated
             seconds and returns the cached frame in between.
         camera_size: ``(width, height)`` in pixels.
-        noise: sensor noise (default :class:`NoiseConfig` defaults).
+        noise: sensor noise: a model, or a YAML file of one (default: `worlds/noise.yaml`, see
+            :mod:`worlds.sim.noise`).
         render_floor: draw the floor (costs about a third of the render time; without it floor pixels are
             background: segmentation -1, depth inf).
 
@@ -78,7 +84,7 @@ class Simulation:
         gui: bool = False,
         camera_hz: float = 10.0,
         camera_size: tuple[int, int] = (160, 120),
-        noise: NoiseConfig | None = None,
+        noise: NoiseConfig | str | Path | None = None,
         render_floor: bool = False,
     ) -> None:
         self._world = world if isinstance(world, World) else load_world(world)
@@ -89,13 +95,17 @@ class Simulation:
         if camera_hz <= 0:
             raise WorldError(f"camera_hz must be positive, got {camera_hz}")
         self.seed = seed
-        self.noise = noise if noise is not None else NoiseConfig()
+        self.noise = (
+            noise if isinstance(noise, NoiseConfig) else load_noise(*(() if noise is None else (noise,)))
+        )
         self.camera_hz = camera_hz
         self.camera_size = camera_size
-        streams = np.random.SeedSequence(seed).spawn(4)
-        self._rng_camera, self._rng_pose, self._rng_people, self._rng_scenario = (
+        streams = np.random.SeedSequence(seed).spawn(5)
+        self._rng_camera, self._rng_pose, self._rng_people, self._rng_scenario, self._rng_sound = (
             np.random.default_rng(s) for s in streams
         )
+        #: the latest localisation estimate handed out (what the robot places believed points by)
+        self._estimate: Pose2D | None = None
         self.grid = GridMap.from_world(w)
         self._contacts = ContactMonitor(w)
         self._base = BaseController(w.robot, self.grid)
@@ -209,7 +219,15 @@ class Simulation:
         rgb, depth, seg, intr, pose = self._scene.render(
             eye, heading, spec.camera_pitch, width, height, spec.camera_fov, exclude=(self.robot_name,)
         )
-        pose = Pose3D(pose.position, pose.orientation, self._time)
+        # the camera's pose as the robot knows it: from its localisation estimate, not the true base pose
+        est = self.robot_pose()
+        est_heading = est.yaw + self._pan
+        est_eye = (
+            est.x + CAMERA_FORWARD * math.cos(est_heading),
+            est.y + CAMERA_FORWARD * math.sin(est_heading),
+            spec.camera_height,
+        )
+        pose = optical_pose(est_eye, est_heading, spec.camera_pitch, self._time)
         detections, detected, visible = detect(
             seg, depth, self._instances, self.noise, self._rng_camera, self._item_classes
         )
@@ -231,12 +249,13 @@ class Simulation:
         """Localisation: the true pose plus Gaussian noise (``noise.pose_noise_xy``, ``pose_noise_yaw``)."""
         r, n = self._base, self.noise
         dx, dy, dyaw = self._rng_pose.normal(0.0, 1.0, size=3)
-        return Pose2D(
+        self._estimate = Pose2D(
             r.x + dx * n.pose_noise_xy,
             r.y + dy * n.pose_noise_xy,
             wrap_angle(r.yaw + dyaw * n.pose_noise_yaw),
             self._time,
         )
+        return self._estimate
 
     def poll_sounds(self) -> list[SoundEvent]:
         """Sounds since the previous call."""
@@ -316,9 +335,10 @@ class Simulation:
 
     # ------------------------------------------------------------------------------------------ gripper
 
-    def pick(self, item: str) -> CommandResult:
-        """Attach an item within reach to the empty gripper."""
-        return self._hands.pick(item)
+    def pick(self, item: str, at: Vec3 | None = None) -> CommandResult:
+        """Attach an item within reach to the empty gripper; with ``at`` (the believed position), only if the
+        item really is within the gripper's tolerance of where the arm goes (see :meth:`believed_to_true`)."""
+        return self._hands.pick(item, self.believed_to_true(at))
 
     def place(self, furniture: str) -> CommandResult:
         """Put the held item on the furniture at the free spot nearest the robot, within reach."""
@@ -328,9 +348,28 @@ class Simulation:
         """Open the gripper in mid-air: the item falls and counts as dropped."""
         return self._hands.release()
 
-    def give(self, person: str) -> CommandResult:
-        """Hand the held item to a person within reach."""
-        return self._hands.give(person)
+    def give(self, person: str, at: Vec3 | None = None) -> CommandResult:
+        """Hand the held item to a person within reach (at the believed position ``at`` when given)."""
+        return self._hands.give(person, self.believed_to_true(at))
+
+    def believed_to_true(self, at: Sequence[float] | None) -> Vec3 | None:
+        """Where the arm really goes when sent to the believed world point ``at``.
+
+        The robot places ``at`` relative to its base by its localisation estimate (the latest
+        :meth:`robot_pose`); the arm moves relative to the true base, so the true target is ``at`` carried
+        from the estimated base frame into the true one: localisation error becomes grasp error.
+        """
+        if at is None:
+            return None
+        if len(at) != 3 or not all(math.isfinite(float(v)) for v in at):
+            raise WorldError(f"believed position must be three finite numbers, got {at!r}")
+        est = self._estimate if self._estimate is not None else self._base.pose(self._time)
+        r = self._base
+        dx, dy = float(at[0]) - est.x, float(at[1]) - est.y
+        c, s = math.cos(-est.yaw), math.sin(-est.yaw)
+        lx, ly = c * dx - s * dy, s * dx + c * dy  # in the estimated base frame
+        c, s = math.cos(r.yaw), math.sin(r.yaw)
+        return (r.x + c * lx - s * ly, r.y + s * lx + c * ly, float(at[2]))
 
     def held_item(self) -> str | None:
         """The item in the gripper."""
@@ -389,12 +428,21 @@ class Simulation:
             )
         )
 
-    def escort(self, person: str) -> CommandResult:
-        """Ask a person within 2 m to follow."""
+    def escort(self, person: str, at: Vec3 | None = None) -> CommandResult:
+        """Ask a person within 2 m to follow (and within 1 m of the believed position ``at`` if given)."""
         p = self._person(person, "escort")
+        spot = self.believed_to_true(at)
+        if spot is not None and (not p.present or math.hypot(p.x - spot[0], p.y - spot[1]) > 1.0):
+            return CommandResult(
+                False,
+                f"nobody answered: {person} is not at the believed position ({spot[0]:.2f}, {spot[1]:.2f})",
+                CAUSE_NOT_AT_BELIEF,
+            )
         d = math.hypot(p.x - self._base.x, p.y - self._base.y)
         if not p.present or d > 2.0:
-            return CommandResult(False, f"{person} is {d:.2f} m away, must be within 2.00 m")
+            return CommandResult(
+                False, f"{person} is {d:.2f} m away, must be within 2.00 m", CAUSE_OUT_OF_REACH
+            )
         for q in self._people.people.values():
             q.following = False
         p.following = True
@@ -495,8 +543,18 @@ class Simulation:
         (scenario hook)."""
         bell = next(d for d in self._world.devices.values() if d.kind == "bell")
         self._ring_until = self._time + RING_SECONDS
-        self._sounds.append(SoundEvent(kind="doorbell", position=bell.position, stamp=self._time))
+        self._sounds.append(
+            SoundEvent(kind="doorbell", position=self._heard_at(bell.position), stamp=self._time)
+        )
         self._sounds_made.append(SoundTruth("doorbell", bell.name, bell.position, self._time))
+
+    def _heard_at(self, source: tuple[float, float, float]) -> tuple[float, float, float]:
+        """Where the microphone array localises a sound made at ``source``: Gaussian error per axis of
+        ``noise.sound_noise_xy`` metres plus ``noise.sound_noise_per_m`` per metre of distance."""
+        n, r = self.noise, self._base
+        sigma = n.sound_noise_xy + n.sound_noise_per_m * math.hypot(source[0] - r.x, source[1] - r.y)
+        dx, dy = self._rng_sound.normal(0.0, 1.0, size=2) * sigma
+        return (source[0] + float(dx), source[1] + float(dy), source[2])
 
     def _check_open(self) -> None:
         if self._closed:

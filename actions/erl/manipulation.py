@@ -6,12 +6,15 @@ Failure modes:
 
 * ``pick``: the item was never perceived (activation failure); the base cannot reach it; on arrival perception
   drops the item's track or the knowledge base no longer holds it in the room ("not there"); the gripper
-  refuses (out of reach, held by someone), after one re-approach to a fresh sighting.
+  refuses (out of reach, held by someone), after one re-approach to a fresh sighting; the gripper, sent to
+  the perceived position (the belief, never the item's true place), closes on nothing ("not where it was
+  believed": the belief is refuted through :meth:`~actions.erl.perception.Perception.refute`, so the place
+  fact goes and the next plan searches).
 * ``place``: the gripper does not hold the item (activation failure); the furniture cannot be reached; the
   gripper refuses (no surface, out of reach, no free spot).
 * ``give``: the gripper does not hold the item, or the person was never perceived (activation failure); the
-  person cannot be approached; the hand-over is refused (out of reach, their hands full), after one
-  re-approach.
+  person cannot be approached; the hand-over is refused (out of reach, their hands full, nobody at the
+  perceived position: then the belief is refuted), after one re-approach.
 """
 
 from __future__ import annotations
@@ -22,7 +25,7 @@ from actions.base import ActionStatus
 from actions.erl.common import ErlAction, NavGoal, to_furniture, to_point
 from actions.erl.context import ErlContext, FurnitureMap, bearing, furniture_map, standoff_points
 from actions.erl.motion import PersonApproachAction
-from core.robot import CommandResult
+from core.robot import CAUSE_NOT_AT_BELIEF, CommandResult
 
 #: metres from a loose item (on no known furniture) at which the robot stops to grasp it
 GRASP_STANDOFF = 0.55
@@ -132,7 +135,8 @@ class PickAction(ErlAction):
         if fresh is not None and self.attempts < 3 and pose.distance_to(*fresh.position[:2]) > REACH_M:
             self.target = fresh.position
             return ActionStatus.RUNNING if self._approach() else self.fail(self._nav_reason())
-        result = self.ctx.robot.pick(self.item)
+        at = fresh.position if fresh is not None else self.target  # the belief the arm acts on
+        result = self.ctx.robot.pick(self.item, at)
         if result.ok and self.ctx.robot.held_item() == self.item:
             return ActionStatus.SUCCEEDED
         if (
@@ -143,6 +147,9 @@ class PickAction(ErlAction):
             self.target = fresh.position
             if self._approach():
                 return ActionStatus.RUNNING
+        if result.cause == CAUSE_NOT_AT_BELIEF:
+            self.ctx.perceived.refute(self.item, at, self.ctx.now, result.reason)
+            return self.fail(f"{self.item} is not where it was believed in {self.room}: {result.reason}")
         return self.fail(f"grasping {self.item} failed: {result.reason or 'the gripper is empty'}")
 
     def _nav_reason(self) -> str:
@@ -191,14 +198,22 @@ class GiveAction(PersonApproachAction):
     def __init__(self, args: tuple[str, ...], ctx: ErlContext) -> None:
         super().__init__("give", args, ctx)
         _robot, self.item, self.person, self.room = args
+        self.at: tuple[float, float, float] | None = None
+        self.result: CommandResult | None = None
 
     def activation(self) -> bool:
         """Check the gripper holds the item and approach the person."""
         return self.holds_or_refuse(self.item) and self.approach_or_refuse()
 
     def act(self) -> CommandResult:
-        """Hand the item over."""
-        return self.ctx.robot.give(self.person)
+        """Hand the item over where the person is perceived."""
+        self.at = self.ctx.perceived.position(self.person)
+        self.result = self.ctx.robot.give(self.person, self.at)
+        return self.result
 
     def refused(self, reason: str) -> str:
+        """The failure reason; a hand-over nobody took at the believed position refutes that belief."""
+        if self.result is not None and self.result.cause == CAUSE_NOT_AT_BELIEF and self.at is not None:
+            self.ctx.perceived.refute(self.person, self.at, self.ctx.now, reason)
+            return f"{self.person} is not where they were believed: {reason}"
         return f"handing {self.item} to {self.person} failed: {reason}"

@@ -20,8 +20,11 @@ from actions.erl.common import ErlAction, NavGoal, to_point
 from actions.erl.context import ErlContext, Point, room_map, standoff_points, wrap
 from core.robot import CommandResult
 
-#: metres between the robot and a person it approaches
-PERSON_STANDOFF = 0.9
+#: metres between the robot and a person it approaches, tried in this order: well inside the hand-over reach
+#: (the gripper's reach plus the person's arm, about 1.25 m) even when the perceived position is 0.3 m off
+PERSON_STANDOFFS = (0.7, 0.85, 0.6, 1.0)
+#: the first of them (kept for callers that need one distance)
+PERSON_STANDOFF = PERSON_STANDOFFS[0]
 
 
 class MoveAction(ErlAction):
@@ -63,25 +66,31 @@ class MoveAction(ErlAction):
         return ActionStatus.SUCCEEDED
 
 
-def approach_person(ctx: ErlContext, person: str, what: str) -> NavGoal | None:
+def approach_person(ctx: ErlContext, person: str, what: str, closer: int = 0) -> NavGoal | None:
     """A started navigation goal to a free pose near the perceived person, facing them; None when the person
-    was never perceived or no pose around them is reachable."""
+    was never perceived or no pose around them is reachable.
+
+    Poses on the rings of :data:`PERSON_STANDOFFS` are tried nearest-to-the-robot first, ring by ring;
+    ``closer`` > 0 (a re-approach after a refused hand-over) starts with the closest ring."""
     where = ctx.perceived.position(person)
     if where is None:
         return None
     pose = ctx.robot.robot_pose()
     target = (where[0], where[1])
+    rings = sorted(PERSON_STANDOFFS) if closer > 0 else list(PERSON_STANDOFFS)
     starts = []
-    for p in standoff_points(target, PERSON_STANDOFF, (pose.x, pose.y), count=12)[:8]:
-        yaw = math.atan2(target[1] - p[1], target[0] - p[0])
-        starts.append(to_point(ctx, p, yaw))
+    for ring in rings:
+        for p in standoff_points(target, ring, (pose.x, pose.y), count=12)[:8]:
+            yaw = math.atan2(target[1] - p[1], target[0] - p[0])
+            starts.append(to_point(ctx, p, yaw))
     nav = NavGoal(ctx, starts, what)
     return nav if nav.start() else None
 
 
 class PersonApproachAction(ErlAction):
     """An action that drives up to a perceived person, ``self.person``, then does :meth:`act` with them
-    (``meet``, ``give``); when that is refused, it approaches once more (they may have moved) and retries."""
+    (``meet``, ``give``); when that is refused, it approaches again, closer (they may have moved, or the
+    perceived position was off), at most twice."""
 
     person: str
     nav: NavGoal | None = None
@@ -104,7 +113,7 @@ class PersonApproachAction(ErlAction):
         result = self.act()
         if result.ok:
             return ActionStatus.SUCCEEDED
-        if self.reapproaches < 1:
+        if self.reapproaches < 2:
             self.reapproaches += 1
             if self.reapproach():
                 return ActionStatus.RUNNING
@@ -120,7 +129,7 @@ class PersonApproachAction(ErlAction):
 
     def reapproach(self) -> bool:
         """Approach the person again (they may have moved); False when that cannot start."""
-        nav = approach_person(self.ctx, self.person, self.person)
+        nav = approach_person(self.ctx, self.person, self.person, closer=self.reapproaches)
         if nav is None:
             return False
         self.nav = nav
@@ -143,8 +152,8 @@ class MeetAction(PersonApproachAction):
         return self.approach_or_refuse()
 
     def act(self) -> CommandResult:
-        """Ask the person to follow."""
-        return self.ctx.robot.escort(self.person)
+        """Ask the person to follow, addressing where they are perceived."""
+        return self.ctx.robot.escort(self.person, self.ctx.perceived.position(self.person))
 
     def refused(self, reason: str) -> str:
         return f"{self.person} will not follow: {reason}"

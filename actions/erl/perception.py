@@ -59,6 +59,16 @@ class Perception(Protocol):
         """True when perception dropped ``symbol``'s track at or after simulated time ``since``."""
         ...
 
+    def refute(self, symbol: str, position: Point3, stamp: float, reason: str) -> None:
+        """An action found ``symbol`` not at ``position`` (world frame), where it was believed at simulated
+        time ``stamp`` (the gripper closed on nothing, nobody took the item): evidence against the belief.
+
+        The one call that is not a query: perception records the entity as lost there, so the place belief
+        behind the failed action is retracted and the next plan looks for the entity instead of repeating the
+        action. Called from an action's ``step`` in the scheduler's thread.
+        """
+        ...
+
 
 class SightingBook:
     """A :class:`Perception` answering from sightings recorded with :meth:`record`, anchors as the fallback.
@@ -72,6 +82,8 @@ class SightingBook:
     def __init__(self, kb: KnowledgeBase) -> None:
         self.kb = kb
         self.sightings: dict[str, Sighting] = {}
+        #: every refutation received: (symbol, position, stamp, reason)
+        self.refuted: list[tuple[str, Point3, float, str]] = []
 
     def record(self, symbol: str, sighting: Sighting) -> None:
         """Remember ``sighting`` as the latest of ``symbol``."""
@@ -99,6 +111,11 @@ class SightingBook:
         """See :meth:`Perception.lost_since`."""
         seen = self.sightings.get(symbol)
         return seen is not None and seen.lost and seen.stamp >= since - 1e-9
+
+    def refute(self, symbol: str, position: Point3, stamp: float, reason: str) -> None:
+        """See :meth:`Perception.refute`: the entity's sighting becomes lost at ``position``."""
+        self.refuted.append((symbol, position, stamp, reason))
+        self.record(symbol, Sighting(position, stamp, lost=True))
 
 
 #: a perception that knows only the knowledge base's anchors (nothing is recorded into it)

@@ -8,11 +8,16 @@ scheduler's one thread; :meth:`BusPerception.close` unsubscribes.
 
 from __future__ import annotations
 
-from actions.erl.perception import Sighting, SightingBook
-from knic.bus import Bus, Message, Subscription
-from knic.units import CKU
+import numpy as np
+
+from actions.erl.perception import Point3, Sighting, SightingBook
+from knic.bus import Bus, Message, Subscription, topic_level
+from knic.spatial import DEFAULT_RESOLUTION, EMPTY_KEYS, keys_of
+from knic.units import CKU, Kind
 from knowledge_base import KnowledgeBase
 
+#: source of the lost CKUs published for a refuted belief
+REFUTED_SOURCE = "actions.refuted"
 #: bus prefixes whose CKUs are entity sightings
 SIGHTING_TOPICS = ("cognition.object", "cognition.person")
 
@@ -27,6 +32,7 @@ class BusPerception(SightingBook):
 
     def __init__(self, kb: KnowledgeBase, bus: Bus) -> None:
         super().__init__(kb)
+        self.bus = bus
         self._subs: list[Subscription] = [bus.subscribe(p, self._on_cku) for p in SIGHTING_TOPICS]
 
     def _on_cku(self, message: Message) -> None:
@@ -35,6 +41,37 @@ class BusPerception(SightingBook):
             return
         x, y, z = (float(v) for v in cku.position)
         self.record(cku.symbol, Sighting((x, y, z), float(cku.stamp), bool(cku.attributes.get("lost"))))
+
+    def refute(self, symbol: str, position: Point3, stamp: float, reason: str) -> None:
+        """An action found ``symbol`` not at ``position``: publish it as lost there on its CKU stream
+        (``cognition.<kind>.<symbol>``, ``attributes["refuted"]`` = the reason), as KGM-2 publishes a track it
+        dropped, so the place KP' retract the belief; the sighting is recorded lost (see
+        :meth:`actions.erl.perception.Perception.refute`)."""
+        self.refuted.append((symbol, position, stamp, reason))
+        kind = Kind.PERSON if self._is_person(symbol) else Kind.OBJECT
+        cku = CKU(
+            symbol=symbol,
+            cls="person" if kind is Kind.PERSON else symbol,
+            kind=kind,
+            octomap=None,
+            keys=EMPTY_KEYS,
+            position=(float(position[0]), float(position[1]), float(position[2])),
+            role_priority=0,
+            stamp=stamp,
+            confidence=1.0,
+            attributes={
+                "lost": True,
+                "refuted": reason,
+                "last_keys": keys_of(np.array([position], dtype=np.float64), DEFAULT_RESOLUTION),
+            },
+        )
+        self.bus.publish(
+            f"cognition.{kind.value}.{topic_level(symbol)}", cku, source=REFUTED_SOURCE, stamp=stamp
+        )
+
+    def _is_person(self, symbol: str) -> bool:
+        found = self.kb.type_of(symbol)
+        return found is not None and self.kb.domain.is_subtype(found, "person")
 
     def close(self) -> None:
         """Stop listening to the bus (idempotent)."""

@@ -12,7 +12,7 @@ import math
 from collections.abc import Mapping
 
 from core.errors import WorldError
-from core.robot import CommandResult
+from core.robot import CAUSE_HAND, CAUSE_NOT_AT_BELIEF, CAUSE_OUT_OF_REACH, CommandResult, Vec3
 from worlds.geometry import Point
 from worlds.model import World
 from worlds.sim.goals import approach_points
@@ -24,6 +24,7 @@ from worlds.sim.robot import BaseController
 PERSON_REACH = 0.8  # metres, how far people reach to take or put an item
 GIVE_REACH_EXTRA = 0.35  # the robot reaches a person's hand this much farther than its gripper reach
 MAX_PICK_HEIGHT = 1.6  # metres, the highest item the gripper reaches
+HANDOVER_TOLERANCE = 0.5  # metres between where the arm offers an item and the person who takes it
 
 
 class Hands:
@@ -54,21 +55,44 @@ class Hands:
 
     # ------------------------------------------------------------------------------------------ gripper
 
-    def pick(self, item: str) -> CommandResult:
-        """Attach an item within reach to the empty gripper."""
+    def pick(self, item: str, at: Vec3 | None = None) -> CommandResult:
+        """Attach an item within reach to the empty gripper.
+
+        ``at``: the true world point the arm is sent to (the simulation has already turned the robot's
+        believed point into it); the grasp closes on the item only when its centre lies within the robot's
+        ``grasp_tolerance`` of that point (horizontally; twice that vertically).
+        """
         if item not in self.items:
             raise WorldError(f"pick: unknown item {item!r}")
         it = self.items[item]
         if self.held is not None:
-            return CommandResult(False, f"hand is not empty: holding {self.held}")
-        if it.holder is not None:
-            return CommandResult(False, f"{item} is held by {it.holder}")
-        d = math.hypot(it.x - self.base.x, it.y - self.base.y)
+            return CommandResult(False, f"hand is not empty: holding {self.held}", CAUSE_HAND)
         reach = self.world.robot.reach
+        if at is not None:
+            d = math.hypot(at[0] - self.base.x, at[1] - self.base.y)
+            if d > reach:
+                return CommandResult(
+                    False,
+                    f"the believed position of {item} is {d:.2f} m away, reach is {reach:.2f} m",
+                    CAUSE_OUT_OF_REACH,
+                )
+            tol = self.world.robot.grasp_tolerance
+            if math.hypot(it.x - at[0], it.y - at[1]) > tol or abs(it.z - at[2]) > 2 * tol:
+                return CommandResult(
+                    False,
+                    f"the gripper closed on nothing: {item} is not at its believed position"
+                    f" ({at[0]:.2f}, {at[1]:.2f}, {at[2]:.2f})",
+                    CAUSE_NOT_AT_BELIEF,
+                )
+        if it.holder is not None:
+            return CommandResult(False, f"{item} is held by {it.holder}", CAUSE_HAND)
+        d = math.hypot(it.x - self.base.x, it.y - self.base.y)
         if d > reach:
-            return CommandResult(False, f"{item} is {d:.2f} m away, reach is {reach:.2f} m")
+            return CommandResult(
+                False, f"{item} is {d:.2f} m away, reach is {reach:.2f} m", CAUSE_OUT_OF_REACH
+            )
         if it.z > MAX_PICK_HEIGHT:
-            return CommandResult(False, f"{item} is too high ({it.z:.2f} m)")
+            return CommandResult(False, f"{item} is too high ({it.z:.2f} m)", CAUSE_OUT_OF_REACH)
         it.holder, it.on, it.vz = self.world.robot.name, None, None
         self.held = item
         self.carry(it)
@@ -106,19 +130,28 @@ class Hands:
         self.drops += 1
         return CommandResult(True)
 
-    def give(self, person: str) -> CommandResult:
-        """Hand the held item to a person within reach."""
+    def give(self, person: str, at: Vec3 | None = None) -> CommandResult:
+        """Hand the held item to a person within reach (``at``: the true point the arm offers it at; the
+        person must stand within :data:`HANDOVER_TOLERANCE` of it)."""
         if person not in self.people:
             raise WorldError(f"give: unknown person {person!r}")
         p = self.people[person]
         if self.held is None:
-            return CommandResult(False, "hand is empty")
+            return CommandResult(False, "hand is empty", CAUSE_HAND)
+        if at is not None and (not p.present or math.hypot(p.x - at[0], p.y - at[1]) > HANDOVER_TOLERANCE):
+            return CommandResult(
+                False,
+                f"nobody took the item: {person} is not at the believed position ({at[0]:.2f}, {at[1]:.2f})",
+                CAUSE_NOT_AT_BELIEF,
+            )
         d = math.hypot(p.x - self.base.x, p.y - self.base.y)
         reach = self.world.robot.reach + GIVE_REACH_EXTRA
         if not p.present or d > reach:
-            return CommandResult(False, f"{person} is {d:.2f} m away, reach is {reach:.2f} m")
+            return CommandResult(
+                False, f"{person} is {d:.2f} m away, reach is {reach:.2f} m", CAUSE_OUT_OF_REACH
+            )
         if p.carrying is not None:
-            return CommandResult(False, f"{person} already holds {p.carrying}")
+            return CommandResult(False, f"{person} already holds {p.carrying}", CAUSE_HAND)
         it = self.items[self.held]
         it.holder = person
         p.carrying = it.name

@@ -18,24 +18,6 @@ import numpy.typing as npt
 from core.robot import Detection
 from worlds.api import NoiseConfig
 
-#: classes a detector plausibly mixes up (both directions)
-CONFUSABLE: dict[str, tuple[str, ...]] = {
-    "mug": ("cup", "glass"),
-    "cup": ("mug", "glass"),
-    "glass": ("cup", "water"),
-    "apple": ("lemon",),
-    "lemon": ("apple",),
-    "water": ("juice", "glass"),
-    "juice": ("water", "coke_can"),
-    "coke_can": ("juice",),
-    "remote": ("tablet",),
-    "tablet": ("remote",),
-    "sponge": ("soap",),
-    "soap": ("sponge",),
-    "tissues": ("cardboard_box",),
-    "cardboard_box": ("tissues",),
-}
-
 
 def detect(
     segmentation: npt.NDArray[np.int32],
@@ -69,21 +51,25 @@ def detect(
             visible.append((name, body, label, person, count))
     visible.sort()
     lo, hi = noise.confidence_range
+    people: list[str] = []
+    if noise.person_confusion_rate > 0:
+        people = sorted(name for name, _label, person in instances.values() if person)
     detections: list[Detection] = []
     detected: list[str | None] = []
     for name, body, label, person, count in visible:
         if not label:
             continue
-        if rng.random() < noise.miss_rate:
+        if rng.random() < noise.class_miss_rate.get(label, noise.miss_rate):
             continue
         identity = None
         if person:
             if count >= noise.min_person_id_pixels and rng.random() < noise.person_id_rate:
                 identity = name
-        elif rng.random() < noise.confusion_rate:
-            options = CONFUSABLE.get(label) or tuple(c for c in item_classes if c != label)
-            if options:
-                label = options[int(rng.integers(len(options)))]
+                if people and rng.random() < noise.person_confusion_rate:
+                    others = [p for p in people if p != name]
+                    identity = others[int(rng.integers(len(others)))] if others else name
+        else:
+            label = _confused_label(label, noise, rng, item_classes)
         conf = lo + (hi - lo) * min(1.0, count / 300.0) * float(rng.uniform(0.85, 1.0))
         detections.append(
             Detection(
@@ -100,6 +86,24 @@ def detect(
             detections.append(fp)
             detected.append(None)
     return detections, tuple(detected), frozenset(v[0] for v in visible)
+
+
+def _confused_label(label: str, noise: NoiseConfig, rng: np.random.Generator, item_classes: list[str]) -> str:
+    """The label the detector reports for an item of class ``label`` (its row of ``noise.confusions``, else
+    ``confusion_rate`` spread over the other item classes)."""
+    row = noise.confusions.get(label)
+    if row is not None:
+        r = rng.random()
+        for other, p in sorted(row.items()):
+            if r < p:
+                return other
+            r -= p
+        return label
+    if rng.random() < noise.confusion_rate:
+        options = [c for c in item_classes if c != label]
+        if options:
+            return options[int(rng.integers(len(options)))]
+    return label
 
 
 def _false_positive(

@@ -11,6 +11,7 @@ from __future__ import annotations
 import functools
 import math
 import os
+from collections.abc import Sequence
 from typing import Any
 
 import numpy as np
@@ -221,9 +222,7 @@ class Scene:
             self._place(body, (x, y, HIDDEN_Z), byaw)
         self._parked = hidden
         cy, sy, cp, sp = math.cos(yaw), math.sin(yaw), math.cos(pitch), math.sin(pitch)
-        fwd = np.array([cy * cp, sy * cp, -sp])
-        left = np.array([-sy, cy, 0.0])
-        up = np.array([sp * cy, sp * sy, cp])  # fwd x left
+        up = np.array([sp * cy, sp * sy, cp])  # forward x left
         target = (eye[0] + cy * cp, eye[1] + sy * cp, eye[2] - sp)
         view = c.computeViewMatrix(eye, target, up.tolist())
         proj = c.computeProjectionMatrixFOV(fov_deg, width / height, near, far)
@@ -243,15 +242,23 @@ class Scene:
         intr = CameraIntrinsics(
             width=width, height=height, fx=fy, fy=fy, cx=width / 2, cy=height / 2, near=near, far=far
         )
-        # optical frame axes in the world: x right (= -left), y down (= -up), z forward
-        rot = np.stack([-left, -up, fwd], axis=1)
-        pose = Pose3D(
-            position=(float(eye[0]), float(eye[1]), float(eye[2])), orientation=_quat_from_matrix(rot)
-        )
+        pose = optical_pose(eye, yaw, pitch)
         for array in (rgb, depth, segm):  # shared with later calls while nothing moves
             array.flags.writeable = False
         self._last = (key, (rgb, depth, segm, intr, pose))
         return rgb, depth, segm, intr, pose
+
+
+def optical_pose(eye: Sequence[float], yaw: float, pitch: float, stamp: float = 0.0) -> Pose3D:
+    """Pose of the optical frame (x right, y down, z forward) of a camera at ``eye`` (world frame, metres)
+    looking along ``yaw`` (radians from +x) tilted down by ``pitch`` radians."""
+    cy, sy, cp, sp = math.cos(yaw), math.sin(yaw), math.cos(pitch), math.sin(pitch)
+    fwd = np.array([cy * cp, sy * cp, -sp])
+    left = np.array([-sy, cy, 0.0])
+    up = np.array([sp * cy, sp * sy, cp])
+    rot = np.stack([-left, -up, fwd], axis=1)
+    position = (float(eye[0]), float(eye[1]), float(eye[2]))
+    return Pose3D(position=position, orientation=_quat_from_matrix(rot), stamp=stamp)
 
 
 class _Client:

@@ -24,6 +24,7 @@ from core.robot import (
     Robot,
     SoundEvent,
     Utterance,
+    Vec3,
 )
 from knic.seed import seed_kb_from_world
 from knowledge_base import KnowledgeBase
@@ -143,7 +144,7 @@ class FakeRobot:
             self._status = NavStatus(NavState.CANCELLED, self._status.goal_id, self._status.target, "stopped")
 
     # gripper
-    def pick(self, item: str) -> CommandResult:
+    def pick(self, item: str, at: Vec3 | None = None) -> CommandResult:
         if self.held is not None:
             return CommandResult(False, f"hand is not empty: holding {self.held}")
         if item not in self.items:
@@ -169,7 +170,7 @@ class FakeRobot:
         self.held = None
         return CommandResult(True)
 
-    def give(self, person: str) -> CommandResult:
+    def give(self, person: str, at: Vec3 | None = None) -> CommandResult:
         if self.held is None:
             return CommandResult(False, "hand is empty")
         px, py = self.people[person]
@@ -200,7 +201,7 @@ class FakeRobot:
     def say(self, text: str) -> None:
         self.said.append(text)
 
-    def escort(self, person: str) -> CommandResult:
+    def escort(self, person: str, at: Vec3 | None = None) -> CommandResult:
         px, py = self.people[person]
         d = math.hypot(px - self.x, py - self.y)
         if d > 2.0:
