@@ -13,6 +13,8 @@ import json
 import math
 import signal
 import sys
+from collections.abc import Iterator
+from contextlib import contextmanager
 from pathlib import Path
 from typing import Any
 
@@ -85,3 +87,36 @@ def run(args: argparse.Namespace) -> int:
     if args.goal and not result.done:
         raise RosRunFailed(f"knic ros: {result.reason}")
     return 0
+
+
+def add_run_ros_argument(parser: argparse.ArgumentParser) -> None:
+    """``knic run --ros``: the usual run, also published on ROS 2 (the ``ros`` extra)."""
+    parser.add_argument(
+        "--ros",
+        action="store_true",
+        help="also run KnIC as a ROS 2 node (topics in the README; ROS_DOMAIN_ID)",
+    )
+
+
+@contextmanager
+def ros_attached(args: argparse.Namespace, system: Any) -> Iterator[Any]:
+    """With ``--ros``: the KnIC node attached to a built single-process run (its bridge is stepped by the
+    run's scheduler), closed afterwards; otherwise nothing."""
+    if not getattr(args, "ros", False):
+        yield None
+        return
+    from knic.ros.env import require_ros, ros_context
+
+    require_ros()
+    from knic.ros.robot import RosLink
+    from knic.ros.split import attach
+
+    with ros_context() as context:
+        link = RosLink(context)
+        node = attach(system, link)
+        try:
+            yield node
+        finally:
+            node.publish_snapshot()
+            node.close()
+            link.close()

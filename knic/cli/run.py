@@ -33,6 +33,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any, TextIO
 
 from core.errors import KnicError, LanguageError
+from knic.cli.ros import add_run_ros_argument, ros_attached
 from knic.cli.say import add_acoustic_argument
 from knic.cli.serve import add_run_serve_arguments, run_journal, serving
 
@@ -90,6 +91,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     )
     add_acoustic_argument(parser)
     add_run_serve_arguments(parser)
+    add_run_ros_argument(parser)
     parser.add_argument("--seed", type=int, default=0, help="seed of the simulation (default 0)")
     parser.add_argument(
         "--trace",
@@ -147,7 +149,7 @@ def run(args: argparse.Namespace) -> int:
             trace_stream=trace_file,
             gui=args.gui,
         )
-        with KnicSystem(config) as system, serving(args, system, journal):
+        with KnicSystem(config) as system, serving(args, system, journal), ros_attached(args, system):
             dialogue = None
             if listen is not None:
                 dialogue = run_dialogue(system, listen, sys.stderr if args.json else sys.stdout)
