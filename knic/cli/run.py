@@ -154,16 +154,20 @@ def run(args: argparse.Namespace) -> int:
             if listen is not None:
                 dialogue = run_dialogue(system, listen, sys.stderr if args.json else sys.stdout)
             source = "operator" if role.operator_only else "user"
-            texts = add_goals(
-                system,
-                args.goal,
-                args.speech,
-                args.speaker,
-                quiet=args.json,
-                dialogue=dialogue,
-                source=source,
-                acoustic_model=args.acoustic_model,
-            )
+            try:
+                texts = add_goals(
+                    system,
+                    args.goal,
+                    args.speech,
+                    args.speaker,
+                    quiet=args.json,
+                    dialogue=dialogue,
+                    source=source,
+                    acoustic_model=args.acoustic_model,
+                )
+            except NotConfirmed:
+                accepted = True  # the goals were valid and the dialogue ran: its record is kept
+                raise
             accepted = True
             goals = system.kb.goals()
             if not args.json:
@@ -195,7 +199,8 @@ class StagedOutputs:
     Checked before anything is built: a ``--journal`` that exists and is not a KnIC journal, or that is a
     folder, and a ``--trace`` that is a folder, are refused; so is an output whose folder does not exist.
     Nothing existing is opened for writing: the run writes ``.FILE.<pid>.partial`` next to each output and
-    :meth:`finish` renames it to FILE (``keep``: the goals were accepted) or deletes it (a refused run).
+    :meth:`finish` renames it to FILE (``keep``: the goals were accepted, or valid and answered no in the
+    confirmation dialogue) or deletes it (a refused run).
 
     Raises:
         KnicError: an output cannot be used (one line naming it).
@@ -289,13 +294,15 @@ def add_goals(
             commands.append((text, None, [fact]))
         else:
             understood = understand_text(vocab(), text, speaker)
-            records.append({"text": text, "goals": [str(f) for f in understood.goals]})
-            commands.append((text, understood, list(understood.goals)))
+            facts = with_sources(system, understood)
+            records.append({"text": text, "goals": [str(f) for f in facts]})
+            commands.append((text, understood, facts))
     for wav in speech:
         text = recognise(vocab(), wav, acoustic_model)
         understood = understand_text(vocab(), text, speaker)
-        records.append({"speech": str(wav), "text": text, "goals": [str(f) for f in understood.goals]})
-        commands.append((text, understood, list(understood.goals)))
+        facts = with_sources(system, understood)
+        records.append({"speech": str(wav), "text": text, "goals": [str(f) for f in facts]})
+        commands.append((text, understood, facts))
     if not quiet:
         for record in records:
             print(f'understood "{record["text"]}" as ' + " ".join(record["goals"]))
@@ -311,6 +318,14 @@ def add_goals(
         for record in records:
             system.context.say(f"You asked me to {record['text']}.")
     return records
+
+
+def with_sources(system: KnicSystem, understood: Any) -> list[Fact]:
+    """The command's goals plus the goals keeping its sources (:func:`knic.intake.source_goals`)."""
+    from knic.intake import source_goals
+
+    goals = list(understood.goals)
+    return goals + [g for g in source_goals(understood, system.kb) if g not in goals]
 
 
 def confirm_command(dialogue: Dialogue, understood: Any, facts: list[Fact]) -> bool:
