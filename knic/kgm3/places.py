@@ -15,9 +15,12 @@ Retraction:
 * a track KGM-2 dropped after repeated misses where the camera could see it (``attributes["lost"]``; KGM-2
   drops a track only after several misses over seconds, so a brief occlusion retracts nothing) retracts
   the place it was believed at, and ``found``: the entity is not where we thought;
-* a room explored after the belief was made, without the entity being seen since, retracts it as well;
-* people not seen for the role's ``person_ttl_s`` lose the ``person_at`` this KP' wrote (they walk about);
-  people last seen walking lose it sooner (``moving_ttl_s``).
+* a room explored after the belief was made, without the entity being seen since, retracts it as well.
+
+Nothing is retracted for want of news: a person sitting still out of view keeps ``person_at``. A person not
+seen for the role's ``person_ttl_s`` (sooner, ``moving_ttl_s``, when last seen walking) keeps the fact with
+its belief aged: it is re-written ASSUMED at half its confidence (belief in time), and the next sighting
+makes it OBSERVED again.
 
 Items the robot holds or has given to someone are left to the actions that moved them.
 """
@@ -306,11 +309,13 @@ class ObjectPlaceKP(_EntityPlaceKP):
 
 
 class PersonPlaceKP(_EntityPlaceKP):
-    """``(person_at ?p ?room)`` and ``(found ?p)`` for recognised people, with a time to live.
+    """``(person_at ?p ?room)`` and ``(found ?p)`` for recognised people, retracted only on evidence.
 
     Args:
-        ttl_s: simulated seconds after the last sighting at which the person_at this KP' wrote is retracted
-            (the role's ``person_ttl_s``), for a person who stood still when last seen.
+        ttl_s: simulated seconds after the last sighting at which the person_at this KP' wrote ages (written
+            ASSUMED at half confidence; the role's ``person_ttl_s``), for a person who stood still when last
+            seen. The fact is never retracted for age: only a view of the place without them (KGM-2's lost
+            track, an explored room) retracts it.
         moving_ttl_s: the same for a person who was walking when last seen (faster than ``walking_speed``
             m/s over the last ``speed_window_s`` seconds of sightings): they are likely elsewhere soon.
         resolution: metres, of the CKUs' voxel keys (KGM-2's tracking resolution).
@@ -367,12 +372,14 @@ class PersonPlaceKP(_EntityPlaceKP):
         return self.moving_ttl_s if self.walking(symbol) else self.ttl_s
 
     def step(self, now: float) -> None:
-        """Process sightings, explored rooms, then expire people unseen for longer than the TTL."""
+        """Process sightings and explored rooms, then age the beliefs of people unseen for their TTL."""
         super().step(now)
         for fact in self.kb.facts("person_at"):
             symbol = fact.args[0]
             prov = self.kb.why(fact)
-            if prov is None or prov.source != self.name:
+            if prov is None or prov.source != self.name or prov.status is not BeliefStatus.OBSERVED:
                 continue
             if now - self.last_seen.get(symbol, prov.since) > self.ttl_of(symbol):
-                self.forget_place(symbol, now, ())
+                self.assert_fact(
+                    "person_at", *fact.args, at=now, confidence=0.5 * prov.confidence, assumed=True
+                )

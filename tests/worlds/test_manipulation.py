@@ -5,7 +5,10 @@ from __future__ import annotations
 import math
 from collections.abc import Callable
 
-from core.robot import NavState
+import pytest
+
+from core.errors import WorldError
+from core.robot import CAUSE_NOT_AT_BELIEF, CAUSE_OUT_OF_REACH, NavState
 from worlds.simulation import Simulation
 
 
@@ -96,3 +99,50 @@ def test_devices(make_sim: Callable[..., Simulation]) -> None:
     assert states["bedroom_left_light"] is True and states["living_room_dimmer"] == 60.0
     sim.say("The light is on")
     assert [u.text for u in sim.spoken()] == ["The light is on"]
+
+
+def test_pick_at_a_believed_position_needs_the_item_there(make_sim: Callable[..., Simulation]) -> None:
+    sim = make_sim("erl_home")
+    glasses = sim.true_pose("glasses").position
+    sim.navigate_to_furniture("kitchen_table", near=(glasses[0], glasses[1]))
+    arrive(sim)
+    # a belief 0.3 m off along the table: the gripper closes on nothing, the glasses stay where they are
+    wrong = (glasses[0] + 0.3, glasses[1], glasses[2])
+    if math.hypot(wrong[0] - sim.true_robot_pose().x, wrong[1] - sim.true_robot_pose().y) > 0.9:
+        wrong = (glasses[0] - 0.3, glasses[1], glasses[2])
+    missed = sim.pick("glasses", wrong)
+    assert not missed.ok and missed.cause == CAUSE_NOT_AT_BELIEF and "believed" in missed.reason
+    assert sim.held_item() is None and ("object_on", "glasses", "kitchen_table") in sim.ground_truth_facts()
+    # a belief beyond the arm's reach is refused as such
+    far = sim.pick("glasses", (glasses[0] + 3.0, glasses[1], glasses[2]))
+    assert not far.ok and far.cause == CAUSE_OUT_OF_REACH
+    # a belief within the gripper's tolerance: grasped
+    near = (glasses[0] + 0.05, glasses[1] - 0.04, glasses[2] + 0.05)
+    assert sim.pick("glasses", near).ok and sim.held_item() == "glasses"
+
+
+def test_localisation_error_becomes_grasp_error(make_sim: Callable[..., Simulation]) -> None:
+    from worlds.api import NoiseConfig
+
+    sim = make_sim("erl_home", noise=NoiseConfig.perfect())
+    glasses = sim.true_pose("glasses").position
+    sim.navigate_to_furniture("kitchen_table", near=(glasses[0], glasses[1]))
+    arrive(sim)
+    sim.noise = NoiseConfig(pose_noise_xy=0.5, pose_noise_yaw=0.0)
+    est = sim.robot_pose()
+    true = sim.true_robot_pose()
+    # the true position, as the robot would place it through its (0.5 m off) estimate: the arm misses
+    arm = sim.believed_to_true(glasses)
+    assert arm is not None
+    offset = math.hypot(est.x - true.x, est.y - true.y)
+    assert math.hypot(arm[0] - glasses[0], arm[1] - glasses[1]) == pytest.approx(offset, abs=1e-6)
+    # the same point expressed in the estimate's frame reaches the glasses
+    believed = (glasses[0] + est.x - true.x, glasses[1] + est.y - true.y, glasses[2])
+    assert sim.pick("glasses", believed).ok
+
+
+def test_believed_position_must_be_three_finite_numbers(make_sim: Callable[..., Simulation]) -> None:
+    sim = make_sim("erl_home")
+    with pytest.raises(WorldError, match="believed position"):
+        sim.pick("glasses", (1.0, float("nan"), 0.5))
+    assert sim.held_item() is None

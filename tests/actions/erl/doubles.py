@@ -13,6 +13,7 @@ from pathlib import Path
 import numpy as np
 
 from core.robot import (
+    CAUSE_NOT_AT_BELIEF,
     CameraFrame,
     CameraIntrinsics,
     CommandResult,
@@ -29,6 +30,9 @@ from core.robot import (
 from knic.seed import seed_kb_from_world
 from knowledge_base import KnowledgeBase
 from worlds.api import load_world
+
+#: metres between the believed and the true item position within which the double's gripper closes on it
+GRASP_TOLERANCE = 0.12
 
 DOMAIN = Path(__file__).resolve().parents[3] / "worlds" / "erl_home" / "domain.pddl"
 INTRINSICS = CameraIntrinsics(8, 6, 6.0, 6.0, 4.0, 3.0, 0.1, 8.0)
@@ -148,8 +152,10 @@ class FakeRobot:
         if self.held is not None:
             return CommandResult(False, f"hand is not empty: holding {self.held}")
         if item not in self.items:
-            return CommandResult(False, f"{item} is not here")
+            return CommandResult(False, f"{item} is not here", CAUSE_NOT_AT_BELIEF if at else "")
         ix, iy = self.items[item]
+        if at is not None and math.hypot(ix - at[0], iy - at[1]) > GRASP_TOLERANCE:
+            return CommandResult(False, f"the gripper closed on nothing at {at}", CAUSE_NOT_AT_BELIEF)
         d = math.hypot(ix - self.x, iy - self.y)
         if d > 0.9:
             return CommandResult(False, f"{item} is {d:.2f} m away, reach is 0.90 m")

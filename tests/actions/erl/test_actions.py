@@ -143,6 +143,22 @@ def test_pick_fails_when_the_item_is_not_there(setup: Setup) -> None:
     assert robot.held is None
 
 
+def test_pick_on_a_wrong_belief_fails_with_its_cause_and_refutes_it(setup: Setup) -> None:
+    robot, kb, ctx = setup
+    _perceive_glasses(kb, ctx, (7.7, 1.5, 0.92))  # believed here ...
+    robot.items["glasses"] = (7.7, 1.95)  # ... really 0.45 m along the shelf, within the arm's reach
+    action = create(ctx, "(pick r2d2 glasses entrance)")
+    started, status = drive(action, robot)
+    assert started and status is ActionStatus.FAILED
+    assert robot.held is None and robot.items["glasses"] == (7.7, 1.95)
+    assert (
+        "not where it was believed" in action.failure_reason and "closed on nothing" in action.failure_reason
+    )
+    assert isinstance(ctx.perceived, SightingBook)
+    assert [(s, p) for s, p, _t, _r in ctx.perceived.refuted] == [("glasses", (7.7, 1.5, 0.92))]
+    assert ctx.perceived.lost_since("glasses", 0.0)
+
+
 def test_pick_fails_when_perception_retracts_the_item(
     setup: Setup,
 ) -> None:

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import pytest
+
 from knic.bus import Bus
 from knic.kgm3.places import ObjectPlaceKP, PersonPlaceKP, RobotAtKP
 from knic.spatial import LocationModel
@@ -113,7 +115,9 @@ def test_items_in_the_hand_are_left_to_the_actions(
     assert not paper_kb.facts("object_at", "glasses")
 
 
-def test_person_at_with_time_to_live(paper_kb: KnowledgeBase, paper_locations: LocationModel) -> None:
+def test_person_out_of_view_is_not_forgotten_only_aged(
+    paper_kb: KnowledgeBase, paper_locations: LocationModel
+) -> None:
     bus = Bus()
     publish_place_ckus(bus, paper_locations)
     kp = PersonPlaceKP(bus, paper_kb, ttl_s=30.0, needed=2)
@@ -125,7 +129,25 @@ def test_person_at_with_time_to_live(paper_kb: KnowledgeBase, paper_locations: L
     assert paper_kb.holds("found", "annie")
     kp.step(20.0)
     assert paper_kb.holds("person_at", "annie", "bedroom")
+    observed = paper_kb.why(Fact("person_at", ("annie", "bedroom")))
+    assert observed is not None and observed.status == BeliefStatus.OBSERVED
+    # unseen for longer than the TTL while nothing looked at the bedroom: still believed there, aged
     kp.step(31.5)
+    kp.step(600.0)
+    assert paper_kb.facts("person_at") == [Fact("person_at", ("annie", "bedroom"))]
+    assert paper_kb.holds("found", "annie")
+    aged = paper_kb.why(Fact("person_at", ("annie", "bedroom")))
+    assert aged is not None and aged.status == BeliefStatus.ASSUMED
+    assert aged.confidence == pytest.approx(0.5 * observed.confidence)
+    # seen again: observed again
+    for t in (601.0, 601.2):
+        send(bus, cku("annie", Kind.PERSON, (1.1, 6.6, 0.8), t, cls="person"))
+    kp.step(601.2)
+    again = paper_kb.why(Fact("person_at", ("annie", "bedroom")))
+    assert again is not None and again.status == BeliefStatus.OBSERVED
+    # the camera looked where she was and she was not there (KGM-2 dropped the track): retracted
+    send(bus, cku("annie", Kind.PERSON, (1.1, 6.6, 0.8), 610.0, cls="person", lost=True))
+    kp.step(610.0)
     assert not paper_kb.facts("person_at") and not paper_kb.holds("found", "annie")
 
 
