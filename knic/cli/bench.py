@@ -15,6 +15,7 @@ BENCHES: dict[str, tuple[str, str]] = {
     "language": ("knic.bench.language", "text understanding on the development and held-out test sets"),
     "speech": ("knic.bench.speech", "speech recognition and command understanding on the shipped test set"),
     "grounding": ("knic.bench.grounding", "knowledge-base truth against the simulator's ground truth"),
+    "ros": ("knic.bench.ros", "ROS 2: fact-event latency and rate, split run against one process"),
     "granny-annie": (
         "knic.bench.granny_annie.command",
         "the ERL Granny Annie task benchmark: episodes, score sheet, report",
