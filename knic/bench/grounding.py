@@ -25,6 +25,18 @@ goals, so the dispatcher is not stepped. Measured, in simulated time:
   many true facts were perceivable (``perceivable_samples``) and how many of those were not believed
   (``missed_samples``): which fact kinds cost precision and recall.
 
+* ``families``: per predicate family (:data:`FAMILIES`: ``robot_at``, ``object_at``, ``object_on``,
+  ``person_at``, ``person_near``, ``device``) of the companion episode: ``precision`` and ``recall`` pooled
+  over the one-second samples, ``f1``, ``assert_latency_p50_s`` / ``assert_latency_p95_s`` and
+  ``retract_latency_p50_s`` (from the truth's change to the knowledge base's, for the changes counted in
+  the staleness), ``change_latency_after_seen_p50_s`` (the same from the first camera frame that showed the
+  entities after the change: the part perception controls; the rest is where the robot was looking),
+  ``flaps_per_fact_minute`` (belief changes undone within :data:`FLAP_WINDOW_S` while the fact's truth did
+  not change, per minute of believed fact).
+* ``octomap_ratio_same_work``: KGM-2's octomap path against raw pyoctomap doing the same insertions (same
+  discretised mode and ray length), from :mod:`knic.bench.octomap`.
+
+With ``--seeds N`` the episodes run under N seeds and every figure is the mean over them (counts summed).
 Figures that could not be measured (no sample) are ``null``.
 Precision, recall and staleness are those of the companion episode (the default role of ``knic run``).
 """
@@ -32,6 +44,7 @@ Precision, recall and staleness are those of the companion episode (the default 
 from __future__ import annotations
 
 import argparse
+import bisect
 import json
 import logging
 import math
@@ -266,8 +279,10 @@ class _Recorder:
 
     #: fact -> (added, simulated time) of the knowledge base's latest change of it
     last_change: dict[Atom, tuple[bool, float]] = field(default_factory=dict)
-    #: family -> belief changes undone within :data:`FLAP_WINDOW_S`
-    flaps: dict[str, int] = field(default_factory=dict)
+    #: belief changes undone within :data:`FLAP_WINDOW_S`: (fact, change time, undo time)
+    reversals: list[tuple[Atom, float, float]] = field(default_factory=list)
+    #: fact -> simulated times at which its truth changed (sampled at 5 Hz)
+    truth_changes: dict[Atom, list[float]] = field(default_factory=dict)
 
     def tally(self, facts: set[Atom], slot: int) -> None:
         for fact in facts:
@@ -277,10 +292,31 @@ class _Recorder:
         """Note one change the knowledge base made; a change undone within the window is a flap."""
         previous = self.last_change.get(atom)
         if previous is not None and previous[0] != added and at - previous[1] <= FLAP_WINDOW_S:
-            family = family_of(atom[0])
-            if family is not None:
-                self.flaps[family] = self.flaps.get(family, 0) + 1
+            self.reversals.append((atom, previous[1], at))
         self.last_change[atom] = (added, at)
+
+    def flaps(self, family: str) -> int:
+        """Belief changes of the family undone within the window while the fact's truth did not change
+        (within a second either side: the truth is sampled at 5 Hz)."""
+        count = 0
+        for atom, t0, t1 in self.reversals:
+            if atom[0] not in FAMILIES[family]:
+                continue
+            if not any(t0 - 1.0 <= t <= t1 + 1.0 for t in self.truth_changes.get(atom, ())):
+                count += 1
+        return count
+
+    def first_seen_after(self, names: tuple[str, ...], t: float) -> float:
+        """The first camera frame at or after ``t`` in which every one of ``names`` was visible (``t`` when
+        there are none; ``inf`` when never)."""
+        latest = t
+        for name in names:
+            stamps = self.seen.get(name, [])
+            k = bisect.bisect_left(stamps, t - 1e-9)
+            if k == len(stamps):
+                return math.inf
+            latest = max(latest, stamps[k])
+        return latest
 
     def visible_since(self, name: str, t: float) -> bool:
         stamps = self.seen.get(name)
@@ -402,6 +438,12 @@ def _families(rec: _Recorder, counted: list[_Change], duration: float) -> dict[s
         mine = [c for c in counted if c.fact[0] in predicates]
         asserted = [c.reflected_at - c.at for c in mine if c.appeared and c.reflected_at is not None]
         retracted = [c.reflected_at - c.at for c in mine if not c.appeared and c.reflected_at is not None]
+        # the same from the first frame that showed the entities after the change (what perception controls)
+        seen = [
+            max(0.0, c.reflected_at - rec.first_seen_after(c.entities, c.at))
+            for c in mine
+            if c.reflected_at is not None and math.isfinite(rec.first_seen_after(c.entities, c.at))
+        ]
         fact_minutes = believed / 60.0  # believed facts sampled once per simulated second
         out[family] = {
             "precision": round(precision, 4) if precision is not None else None,
@@ -410,9 +452,8 @@ def _families(rec: _Recorder, counted: list[_Change], duration: float) -> dict[s
             "assert_latency_p50_s": _percentile(asserted, 0.5),
             "assert_latency_p95_s": _percentile(asserted, 0.95),
             "retract_latency_p50_s": _percentile(retracted, 0.5),
-            "flaps_per_fact_minute": (
-                round(rec.flaps.get(family, 0) / fact_minutes, 4) if fact_minutes else None
-            ),
+            "change_latency_after_seen_p50_s": _percentile(seen, 0.5),
+            "flaps_per_fact_minute": round(rec.flaps(family) / fact_minutes, 4) if fact_minutes else None,
             "changes": len(mine),
             "changes_unreflected": sum(1 for c in mine if c.reflected_at is None),
         }
@@ -484,6 +525,8 @@ def _beliefs(kb: Any) -> set[Atom]:
 def _changes(oracle: Oracle, kb: Any, rec: _Recorder, now: float) -> None:
     truth = _truth(oracle)
     beliefs = _beliefs(kb)
+    for fact in truth ^ set(rec.truth_since):
+        rec.truth_changes.setdefault(fact, []).append(now)
     for fact in truth - set(rec.truth_since):
         rec.truth_since[fact] = now
         if now > 0 and fact not in beliefs:
