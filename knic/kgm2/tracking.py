@@ -10,10 +10,11 @@ For every scan (one camera frame) the detections of one class are matched to the
    ``radius`` (metres) and each track and detection used once (lines 2.1.2-2.1.15);
 3. an unmatched detection starts a new track;
 4. a track not updated by the scan gets a miss when the scan could have seen it (``visible``; every scan when
-   no visibility test is given) and is dropped after more than ``max_misses`` consecutive misses
-   (2.1.16-2.1.19) spanning at least ``min_lost_s`` simulated seconds since it was last seen (a brief
-   occlusion or a fast approach never drops a track: the retraction it causes needs evidence as strong as the
-   assertion did).
+   no visibility test is given): a miss update on its octomap's occupied voxels (log-odds down, clamped), and
+   it is dropped after more than ``max_misses`` consecutive misses (2.1.16-2.1.19) or once its octomap holds
+   no occupied voxel, either only when at least ``min_lost_s`` simulated seconds passed since it was last
+   seen (a brief occlusion or a fast approach never drops a track: the retraction it causes needs evidence
+   as strong as the assertion did; an entity seen many times takes more misses to empty than a one-off).
 
 The centroid of a matched track moves to the weighted average of old and new (weight ``gain`` on the new one).
 Time stamps are simulated seconds.
@@ -247,8 +248,9 @@ class Tracker:
             if not could_see:
                 continue
             track.misses += 1
+            left = track.octomap.miss()  # the view without the entity is evidence in its octomap
             long_enough = now is None or now - track.last_seen >= self.min_lost_s
-            if track.misses > self.max_misses and long_enough:
+            if (track.misses > self.max_misses or left == 0) and long_enough:
                 del self.tracks[track.track_id]
                 self._by_symbol.pop(track.symbol, None)
                 result.dropped.append(track)

@@ -14,7 +14,7 @@ import numpy as np
 import numpy.typing as npt
 import pyoctomap
 
-from knic.spatial.keys import DEFAULT_RESOLUTION, EMPTY_KEYS, keys_of
+from knic.spatial.keys import DEFAULT_RESOLUTION, EMPTY_KEYS, KEY_OFFSET, key_centers, keys_of
 from knic.units import Keys, Points
 
 
@@ -31,8 +31,13 @@ class EntityOctomap:
     octomap needs the free space around the entity, not along the whole line of sight, and long rays are what
     insertion costs.
 
-    :attr:`keys` mirrors the voxels hit by the latest cloud: one key per point (a voxel hit by several points
-    appears several times; intersections count distinct voxels).
+    The tree carries the evidence: each cloud raises the log-odds of the voxels it hits (and lowers those its
+    rays cross), :meth:`miss` lowers the log-odds of every occupied voxel when the entity was not seen where
+    the camera could see it, and octomap's clamping (``clamp_min`` .. ``clamp_max`` probability) bounds both,
+    so long-standing evidence still yields to a few views without the entity. :attr:`keys` is read from the
+    tree itself (:meth:`occupied_keys`: its occupied leaves, distinct keys): what the KP' intersect with the
+    room and furniture volumes is the octomap's own state, not the latest cloud. While the entity has no
+    occupied voxel (the map was just reset, or misses emptied it), the keys are the centroid's.
     """
 
     def __init__(
@@ -42,16 +47,21 @@ class EntityOctomap:
         reset_distance: float = 0.5,
         ray_length: float = 1.0,
         discretize: bool = True,
+        clamp_min: float = 0.12,
+        clamp_max: float = 0.9,
     ) -> None:
         self.resolution = resolution
         self.discretize = discretize
         self.ray_length = ray_length
         self.reset_distance = reset_distance
         self.tree = pyoctomap.OcTree(resolution)
+        self.tree.setClampingThresMin(clamp_min)
+        self.tree.setClampingThresMax(clamp_max)
         self.keys: Keys = EMPTY_KEYS
         self.anchor: tuple[float, float, float] | None = None
         self.updates = 0
         self.resets = 0
+        self.misses = 0
 
     def update(
         self, points: Points, centroid: tuple[float, float, float], origin: Sequence[float] | None
@@ -69,11 +79,45 @@ class EntityOctomap:
                 self.tree.insertPointCloud(
                     points, self.ray_origin(centroid, origin), -1.0, False, self.discretize
                 )
-            self.keys = keys_of(points, self.resolution)
-        else:
+        self.keys = self.occupied_keys()
+        if len(self.keys) == 0:
             self.keys = keys_of(np.array([centroid], dtype=np.float64), self.resolution)
         self.updates += 1
         return self.keys
+
+    def miss(self) -> int:
+        """Evidence against the entity: one miss update (octomap's ``prob_miss``) on every occupied voxel.
+
+        Called when a camera frame could see where the entity is and did not detect it. Returns how many
+        voxels are still occupied; :attr:`keys` is refreshed from the tree (empty when none is left).
+        """
+        occupied = self.occupied_keys()
+        if len(occupied):
+            self.tree.updateNodes(key_centers(occupied, self.resolution), False)
+        self.misses += 1
+        self.keys = self.occupied_keys()
+        return len(self.keys)
+
+    def occupied_keys(self) -> Keys:
+        """Distinct keys of the tree's occupied voxels (a pruned leaf stands for all the voxels under it)."""
+        out: list[tuple[int, int, int]] = []
+        res = self.resolution
+        for leaf in self.tree.begin_leafs():
+            if not self.tree.isNodeOccupied(leaf):
+                continue
+            x, y, z = leaf.getCoordinate()
+            size = leaf.getSize()
+            if size <= res * 1.5:
+                out.append((math.floor(x / res), math.floor(y / res), math.floor(z / res)))
+                continue
+            n = round(size / res)
+            lo = [math.floor((c - size / 2) / res + 0.5) for c in (x, y, z)]
+            out.extend(
+                (lo[0] + i, lo[1] + j, lo[2] + k) for i in range(n) for j in range(n) for k in range(n)
+            )
+        if not out:
+            return EMPTY_KEYS
+        return np.asarray(out, dtype=np.int64) + KEY_OFFSET
 
     def ray_origin(self, centroid: Sequence[float], origin: Sequence[float]) -> npt.NDArray[np.float64]:
         """Where rays start: the sensor, or the point ``ray_length`` metres from the centroid towards it."""

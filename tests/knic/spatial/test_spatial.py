@@ -74,11 +74,38 @@ def test_entity_octomap_follows_the_entity() -> None:
     a = blob((2.0, 0.0, 0.8), spread=0.02)
     octo.update(a, (2.0, 0.0, 0.8), origin)
     assert octo.occupied_at((2.0, 0.0, 0.8))
-    assert (octo.keys == keys_of(a)).all()
+    assert {tuple(k) for k in octo.keys} == {tuple(k) for k in unique_keys(keys_of(a))}
     b = blob((3.5, 1.0, 0.8), spread=0.02)
     octo.update(b, (3.5, 1.0, 0.8), origin)
     assert octo.resets == 1
     assert octo.occupied_at((3.5, 1.0, 0.8)) and not octo.occupied_at((2.0, 0.0, 0.8))
+
+
+def test_entity_octomap_accumulates_evidence_and_yields_to_misses() -> None:
+    origin = (0.0, 0.0, 1.2)
+    a = blob((2.0, 0.0, 0.8), spread=0.02)
+    once, often = EntityOctomap(), EntityOctomap()
+    once.update(a, (2.0, 0.0, 0.8), origin)
+    for _ in range(6):
+        often.update(a, (2.0, 0.0, 0.8), origin)
+    # the keys are the tree's occupied voxels: misses lower their log-odds (clamped), a one-off goes first
+    misses_once = next(i for i in range(1, 20) if once.miss() == 0)
+    misses_often = next(i for i in range(1, 20) if often.miss() == 0)
+    assert misses_once < misses_often <= 8
+    assert len(often.keys) == 0 and not often.occupied_at((2.0, 0.0, 0.8))
+
+
+def test_entity_keys_are_read_from_the_tree() -> None:
+    octo = EntityOctomap()
+    a = blob((2.0, 0.0, 0.8), spread=0.02)
+    octo.update(a, (2.0, 0.0, 0.8), (0.0, 0.0, 1.2))
+    # corrupt the tree: the entity's voxels freed, others elsewhere made occupied
+    elsewhere = blob((2.0, 0.3, 0.8), spread=0.02)
+    for _ in range(5):
+        octo.tree.updateNodes(key_centers(octo.occupied_keys()), False)
+        octo.tree.updateNodes(elsewhere, True)
+    keys = octo.occupied_keys()
+    assert {tuple(k) for k in keys} == {tuple(k) for k in unique_keys(keys_of(elsewhere))}
 
 
 def test_bad_prisms_are_refused() -> None:
