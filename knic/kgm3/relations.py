@@ -7,6 +7,7 @@ import math
 
 from knic.bus import Bus
 from knic.kgm3.base import Confirmer, KPPrime
+from knic.spatial import DEFAULT_RESOLUTION, key_centers
 from knic.units import CKU
 from knowledge_base import BeliefStatus, Fact, KnowledgeBase
 
@@ -15,7 +16,8 @@ LEVELS = {0: "l0", 25: "l25", 50: "l50", 75: "l75", 100: "l100"}
 
 
 class PersonNearKP(KPPrime):
-    """``(person_near ?p ?q)`` (both orders) for recognised people closer than ``near_m`` on the floor.
+    """``(person_near ?p ?q)`` (both orders) for recognised people closer than ``near_m`` on the floor
+    (between the floor centres of their octomaps' occupied voxels, :func:`floor_centre`).
 
     Hysteresis: a pair becomes near after ``needed`` consecutive evaluations closer than ``near_m - band`` and
     stops being near after ``needed`` evaluations farther than ``near_m + band``; a pair whose members were
@@ -55,7 +57,8 @@ class PersonNearKP(KPPrime):
             a, b = self.latest[p], self.latest[q]
             if now - min(a.stamp, b.stamp) > self.fresh_s:
                 continue
-            d = math.hypot(a.position[0] - b.position[0], a.position[1] - b.position[1])
+            (ax, ay), (bx, by) = floor_centre(a), floor_centre(b)
+            d = math.hypot(ax - bx, ay - by)
             current = self.kb.holds("person_near", p, q)
             if d < self.near_m - self.band_m:
                 value = True
@@ -81,6 +84,15 @@ class PersonNearKP(KPPrime):
                     self.assert_fact("person_near", a, b, at=at, support=support)
                 else:
                     self.retract_fact("person_near", a, b, at=at, support=support)
+
+
+def floor_centre(cku: CKU) -> tuple[float, float]:
+    """Where an entity stands on the floor: the mean ``(x, y)`` of the occupied voxels its octomap holds
+    (the CKU's keys, read from the tree), or its centroid when the tree gave none."""
+    if len(cku.keys) == 0:
+        return (cku.position[0], cku.position[1])
+    centres = key_centers(cku.keys, DEFAULT_RESOLUTION)
+    return (float(centres[:, 0].mean()), float(centres[:, 1].mean()))
 
 
 class SoundAtKP(KPPrime):

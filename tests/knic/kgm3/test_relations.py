@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 from knic.bus import Bus
 from knic.kgm1.locations import build_location_model
 from knic.kgm3.relations import DeviceStateKP, PersonNearKP, SoundAtKP, level_of
@@ -31,6 +33,20 @@ def test_person_near_with_hysteresis_both_orders(paper_kb: KnowledgeBase) -> Non
     tick(0.6, 3.0)
     assert paper_kb.holds("person_near", "annie", "jack")
     tick(0.8, 3.0)
+    assert not paper_kb.facts("person_near")
+
+
+def test_person_near_reads_the_octomaps_voxels(paper_kb: KnowledgeBase) -> None:
+    bus = Bus()
+    kp = PersonNearKP(bus, paper_kb, needed=2)
+    for t in (1.0, 1.2):
+        annie = cku("annie", Kind.PERSON, (1.0, 6.5, 0.9), t, cls="person")
+        jack = cku("jack", Kind.PERSON, (1.8, 6.5, 0.9), t, cls="person")
+        # jack's tree holds his voxels 3 m away from the centroid the CKU carries (a corrupted tree)
+        far = cku("jack", Kind.PERSON, (4.8, 6.5, 0.9), t, cls="person")
+        send(bus, annie)
+        send(bus, replace(jack, keys=far.keys))
+        kp.step(t)
     assert not paper_kb.facts("person_near")
 
 
