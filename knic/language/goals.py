@@ -8,6 +8,7 @@ frame                                  goal
 BRINGING theme X, beneficiary P        ``(has P X)`` ("me" is the speaker)
 BRINGING / PLACING theme X, goal room  ``(object_at X room)``
 BRINGING / PLACING theme X, goal f     ``(object_on X f)`` (f a piece of furniture)
+... with source f (furniture)          also ``(taken_from X f)`` when the domain has that predicate
 TAKING theme X (carried on later)      none: the later action's goal says where X ends
 SEARCHING theme X                      ``(reported X)``
 MOTION goal room                       ``(robot_at R room)`` (R the world's robot)
@@ -26,6 +27,7 @@ contradict each other. Any failure raises :class:`~core.errors.LanguageError` an
 
 from __future__ import annotations
 
+import contextlib
 from collections.abc import Iterable, Sequence
 from typing import Any, Protocol
 
@@ -137,14 +139,15 @@ def _frame_goals(frame: CommandFrame, vocabulary: Vocabulary, speaker: str) -> l
     kind = frame.kind
     if kind in ("BRINGING", "PLACING"):
         theme = need("theme")
+        sourced = _sourced(frame, vocabulary, theme)
         if frame.get("goal") is not None:
             place = need("goal")
             if _is(vocabulary, place, "furniture"):
-                return [Fact("object_on", (theme, place))]
-            return [Fact("object_at", (theme, place))]
+                return [*sourced, Fact("object_on", (theme, place))]
+            return [*sourced, Fact("object_at", (theme, place))]
         if kind == "PLACING":
             raise LanguageError(f"PLACING needs a goal: {frame}")
-        return [Fact("has", (need("beneficiary"), theme))]
+        return [*sourced, Fact("has", (need("beneficiary"), theme))]
     if kind == "SEARCHING":
         return [Fact("reported", (need("theme"),))]
     if kind == "MOTION":
@@ -181,6 +184,14 @@ def _operating_goals(frame: CommandFrame, vocabulary: Vocabulary, device: str, s
     return [Fact("device_level", (d, level)) for d in devices]
 
 
+def _sourced(frame: CommandFrame, vocabulary: Vocabulary, theme: str) -> list[Fact]:
+    """``(taken_from X f)`` for an object asked for from a piece of furniture, when the domain has it."""
+    source = frame.get("source")
+    if source and "taken_from" in vocabulary.predicates and _is(vocabulary, source, "furniture"):
+        return [Fact("taken_from", (theme, source))]
+    return []
+
+
 def room_of(place: str, vocabulary: Vocabulary) -> str:
     """The room a place is: itself for a room, the room a piece of furniture is in (``furniture_in``).
 
@@ -199,7 +210,8 @@ def hints(frames: Sequence[CommandFrame], vocabulary: Vocabulary) -> list[Fact]:
     """Where the command says things are, as assumptions for the planner's search (not goals).
 
     ``(possibly_at X room)`` for a theme said to be somewhere ("the apple from the kitchen cabinet", "find the
-    glasses in the bedroom"), when the domain has ``possibly_at`` and the world does not already place X.
+    glasses in the bedroom"), when the domain has ``possibly_at`` and the world does not already place X; also
+    ``(possibly_on X f)`` for a piece of furniture f when the domain has that predicate.
     """
     if "possibly_at" not in vocabulary.predicates:
         return []
@@ -208,13 +220,16 @@ def hints(frames: Sequence[CommandFrame], vocabulary: Vocabulary) -> list[Fact]:
         theme, where = frame.get("theme"), frame.get("source") or frame.get("ground")
         if not theme or not where or theme == SPEAKER or vocabulary.locations.get(theme):
             continue
-        try:
-            fact = Fact("possibly_at", (theme, room_of(where, vocabulary)))
-            validate_goal(fact, vocabulary)
-        except LanguageError:
-            continue
-        if fact not in found:
-            found.append(fact)
+        candidates = [Fact("possibly_on", (theme, where))] if _is(vocabulary, where, "furniture") else []
+        with contextlib.suppress(LanguageError):  # furniture in no known room: no room hint
+            candidates.append(Fact("possibly_at", (theme, room_of(where, vocabulary))))
+        for fact in candidates:
+            try:
+                validate_goal(fact, vocabulary)
+            except LanguageError:
+                continue
+            if fact not in found:
+                found.append(fact)
     return found
 
 
