@@ -27,16 +27,21 @@ Items the robot holds or has given to someone are left to the actions that moved
 
 from __future__ import annotations
 
+import logging
 import math
 from collections import deque
+from dataclasses import replace
 
 import numpy as np
 
+from core.errors import KnowledgeBaseError
 from knic.bus import Bus
 from knic.kgm3.base import Confirmer, KPPrime
 from knic.spatial import DEFAULT_RESOLUTION, points_in_polygon
 from knic.units import CKU
 from knowledge_base import BeliefStatus, Fact, KnowledgeBase
+
+log = logging.getLogger(__name__)
 
 
 class RobotAtKP(KPPrime):
@@ -106,14 +111,23 @@ class _EntityPlaceKP(KPPrime):
         self.explored_grace_s = explored_grace_s
         #: simulated seconds after a room becomes explored before beliefs in it are checked against it
         self.explored_settle_s = 3.0
+        #: KGM-2 track id -> the instance discovered for it (see :meth:`instance_of`)
+        self.discovered: dict[int, str] = {}
+        #: least hits of an anonymous track before it becomes an instance
+        self.discover_hits = 3
+        #: classes whose anonymous tracks never become instances
+        self.anonymous_classes: frozenset[str] = frozenset()
 
     def step(self, now: float) -> None:
         """Process the CKUs received, then retract beliefs contradicted by explored rooms (and TTLs)."""
         assert self.inbox is not None
         for message in self.inbox.drain():
             cku: CKU = message.payload
-            if not self.is_a(cku.symbol, self.pddl_type) or self.moved_by_action(cku.symbol):
+            symbol = self.instance_of(cku)
+            if symbol is None or self.moved_by_action(symbol):
                 continue
+            if symbol != cku.symbol:
+                cku = replace(cku, symbol=symbol)
             if cku.attributes.get("lost"):
                 self.lost(cku)
             else:
@@ -123,6 +137,44 @@ class _EntityPlaceKP(KPPrime):
     def moved_by_action(self, symbol: str) -> bool:
         """True when an action, not perception, owns where the entity is (held or handed over)."""
         return False
+
+    def instance_of(self, cku: CKU) -> str | None:
+        """The knowledge base's instance a CKU is about, discovering a new one when due; None: ignore it.
+
+        A CKU of a known instance is about that instance. A settled anonymous track (at least
+        ``discover_hits`` hits) of an entity KGM-1 could not name -- a second mug, when the class no longer
+        names one item -- becomes a new instance ``<class>_<n>`` (the first free ``n`` from 1), added OBSERVED
+        with the CKU as support; its track keeps that instance from then on. Discovery is off for classes in
+        :attr:`anonymous_classes` (an unrecognised person stays "someone": the same person recognised later
+        would be counted twice).
+        """
+        anonymous = bool(cku.track_id) and cku.symbol == f"{cku.cls}_{cku.track_id}"  # KGM-2's track name
+        if not anonymous:
+            return cku.symbol if self.is_a(cku.symbol, self.pddl_type) else None
+        found = self.discovered.get(cku.track_id)
+        if found is not None or cku.attributes.get("lost"):
+            return found
+        if cku.cls in self.anonymous_classes or int(cku.attributes.get("hits", 1)) < self.discover_hits:
+            return None
+        n = 1
+        while self.kb.type_of(f"{cku.cls}_{n}") is not None:
+            n += 1
+        name = f"{cku.cls}_{n}"
+        try:
+            self.kb.add_instance(
+                self.pddl_type,
+                name,
+                source=self.name,
+                at=cku.stamp,
+                status=BeliefStatus.OBSERVED,
+                support=(cku.uid, *cku.support),
+            )
+        except KnowledgeBaseError as exc:
+            self.writes.rejected += 1
+            log.warning("%s: cannot add the discovered instance %s: %s", self.name, name, exc)
+            return None
+        self.discovered[cku.track_id] = name
+        return name
 
     def place_of(self, cku: CKU) -> tuple[str | None, str | None]:
         """(room, furniture or None) from the entity's voxels."""
@@ -344,6 +396,7 @@ class PersonPlaceKP(_EntityPlaceKP):
             name, frequency, bus, kb, "cognition.person", needed, min_confidence, explored_grace_s, resolution
         )
         self.ttl_s = ttl_s
+        self.anonymous_classes = frozenset({"person"})
         self.moving_ttl_s = min(moving_ttl_s, ttl_s)
         self.walking_speed = walking_speed
         self.speed_window_s = speed_window_s

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import pytest
 
 from knic.bus import Bus
@@ -164,3 +166,32 @@ def test_sporadic_false_sightings_far_apart_in_time_never_add_up(
         send(bus, cku("glasses", Kind.OBJECT, (6.0, 6.6, 0.78), t))
         kp.step(t)
     assert paper_kb.facts("object_at", "glasses") == [Fact("object_at", ("glasses", "entrance"))]
+
+
+def test_two_mugs_become_two_discovered_instances(
+    paper_kb: KnowledgeBase, paper_locations: LocationModel
+) -> None:
+    bus = Bus()
+    publish_place_ckus(bus, paper_locations)
+    kp = ObjectPlaceKP(bus, paper_kb, needed=2)
+    before = set(paper_kb.instances("item"))
+    # two anonymous tracks of class mug (KGM-1 could not name them): the shelf and the kitchen table
+    for t, hits in ((1.0, 1), (1.2, 2), (1.4, 3), (1.6, 4)):
+        for tid, where in ((901, (7.75, 1.5, 0.92)), (902, (6.0, 6.6, 0.78))):
+            unit = cku(f"mug_{tid}", Kind.OBJECT, where, t, cls="mug", hits=hits)
+            send(bus, replace(unit, track_id=tid))
+        kp.step(t)
+    assert set(paper_kb.instances("item")) - before == {"mug_1", "mug_2"}
+    assert kp.discovered == {901: "mug_1", 902: "mug_2"}
+    assert paper_kb.holds("object_at", "mug_1", "entrance") and paper_kb.holds(
+        "object_at", "mug_2", "kitchen"
+    )
+    # an anonymous person is never made an instance
+    pk = PersonPlaceKP(bus, paper_kb, needed=1)
+    for t in (2.0, 2.2, 2.4, 2.6):
+        send(
+            bus,
+            replace(cku("person_903", Kind.PERSON, (1.1, 6.6, 0.8), t, cls="person", hits=5), track_id=903),
+        )
+    pk.step(2.6)
+    assert not pk.discovered and paper_kb.type_of("person_1") is None
