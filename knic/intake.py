@@ -224,7 +224,7 @@ class GoalIntake:
         result = understand(stripped, self.vocabulary, speaker=speaker)
         if not result.accepted:
             raise LanguageError(f'"{stripped}" not understood: {result.reason}')
-        goals = tuple(result.goals)
+        goals = tuple(result.goals) + tuple(g for g in source_goals(result, self.kb) if g not in result.goals)
         self.validate(goals)
         return Submission(stripped, goals, speaker, source, repeat_back(result, self.vocabulary), result)
 
@@ -281,6 +281,24 @@ class GoalIntake:
             recognizer = AnswerRecognizer()
             self.recognise_answer = lambda wav: str(recognizer.recognize(load_audio(wav)))
         return self.recognise_answer
+
+
+def source_goals(understood: Understanding, kb: KnowledgeBase) -> list[Fact]:
+    """Goals that keep where a command says to take things from: ``(taken_from ?o ?f)`` for each item to
+    bring "from" a piece of furniture ("bring me an apple from the kitchen cabinet"), when the domain has
+    ``taken_from``. A source that is a room adds nothing (the item is searched for there first, a hint)."""
+    if "taken_from" not in kb.domain.predicates:
+        return []
+    out: list[Fact] = []
+    for frame in understood.frames:
+        theme, source = frame.get("theme"), frame.get("source")
+        if frame.kind != "BRINGING" or not theme or not source:
+            continue
+        if kb.type_of(theme) == "item" and kb.type_of(source) == "furniture":
+            fact = Fact("taken_from", (theme, source))
+            if fact not in out:
+                out.append(fact)
+    return out
 
 
 class _Undo(Exception):

@@ -28,27 +28,38 @@ of work, in this order:
 3. the executor starts the next action or advances the running one; a failure goes to the recovery policy
    (retry the step, replan, or drop the goals the step served).
 
-Time is the dispatcher's clock (default ``kb.now``: simulated seconds in the closed loop).
+Time is the dispatcher's clock (default ``kb.now``: simulated seconds in the closed loop). Thinking takes
+time on that clock: with ``planning_time_factor`` > 0 the wall time a planner call took (times the factor,
+rounded up to 0.1 s) passes on the clock before the plan's first action starts, so a slow planner costs the
+robot task time. After a knowledge change breaks the plan, planning waits ``replan_settle_s`` (the running
+action goes on meanwhile), so the KP' stepped at a lower rate can finish revising what the change implies
+(e.g. new search candidates for a person just lost) before the planner judges the goals.
+
+A step that fails the same way again changes the recovery (:class:`~planner.recovery.RepeatedFailure`):
+the perceived beliefs it rests on are retracted (or the robot backs off), then the goals it served are
+dropped. Only failures charge a goal's replan budget; replans forced by new knowledge do not.
 """
 
 from __future__ import annotations
 
 import enum
+import math
+import re
 from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 
 from actions.base import ActionRegistry, Outcome
-from knowledge_base import Change, KnowledgeBase
+from knowledge_base import BeliefStatus, Change, KnowledgeBase
 from planner.engines import Planner
 from planner.executor import SOURCE, ActionExecutor, Running, StepEnd
 from planner.goals import GoalBook
-from planner.model import Atom, PlanningTask, atom_str
+from planner.model import Atom, PlanningTask, atom_str, ground
 from planner.monitor import PlanMonitor
 from planner.plan import PlanResult, PlanStatus, PlanStep
 from planner.problem import task_from_kb
 from planner.recovery import Recovery, RecoveryPolicy
 from planner.trace import EventKind, Trace, TraceEvent
-from planner.validate import check_plan
+from planner.validate import check_plan, unmet_conditions
 
 
 class DispatcherState(enum.StrEnum):
@@ -94,6 +105,8 @@ class Dispatcher:
         time_limits: action name -> time limit, overriding ``time_limit``.
         planning_timeout: wall-clock seconds per planner call.
         clock: time source; ``kb.now`` when None.
+        planning_time_factor: clock seconds charged per wall second of planning (0: planning is free).
+        replan_settle_s: clock seconds planning waits after a knowledge change broke the plan.
 
     Lifecycle: construct, then call :meth:`step` (or :meth:`run`) repeatedly; :meth:`close` unsubscribes from
     the knowledge base. Errors in action code become execution failures; the dispatcher itself raises only for
@@ -112,6 +125,8 @@ class Dispatcher:
         time_limits: Mapping[str, float] | None = None,
         planning_timeout: float = 30.0,
         clock: Callable[[], float] | None = None,
+        planning_time_factor: float = 0.0,
+        replan_settle_s: float = 0.0,
     ) -> None:
         self.kb = kb
         self.planner = planner
@@ -138,6 +153,14 @@ class Dispatcher:
         self.plans = 0
         self.replans = 0
         self._step_failures = 0
+        self.planning_time_factor = planning_time_factor
+        self.replan_settle_s = replan_settle_s
+        self.thinking_s = 0.0  # clock seconds charged for planning so far
+        self._busy_until = -math.inf  # thinking: nothing runs before
+        self._plan_not_before = -math.inf  # settling or backing off: no planning before
+        self._charge_replan = False  # the pending replan follows a failure (charged to the goals)
+        self._finish_first = False  # let the running action end before the pending replan
+        self._failures: dict[tuple[str, str, str], int] = {}
         self._unsubscribe = kb.subscribe(self._on_change)
 
     # -- views of the parts ----------------------------------------------------------------------------
@@ -175,6 +198,8 @@ class Dispatcher:
             self._raise(Pending.GOALS)
         if self._asleep():
             return self.state  # nothing that matters changed since every goal was achieved or dropped
+        if self.clock() < self._busy_until:
+            return self.state  # still thinking about the plan just made
         pending = self.pending
         if pending < Pending.REPLAN:
             self.pending = Pending.NOTHING
@@ -186,6 +211,9 @@ class Dispatcher:
             running = self.executor.current
             broken = self.monitor.broken(self.executor.facts(), goals, running.step if running else None)
             if broken is not None:
+                if self.pending < Pending.REPLAN:
+                    self._plan_not_before = max(self._plan_not_before, self.clock() + self.replan_settle_s)
+                    self._finish_first = running is not None and self._still_useful(running.step, goals)
                 self._raise(Pending.REPLAN, broken)
         if self.executor.current is None:
             facts = self.executor.facts()
@@ -194,6 +222,17 @@ class Dispatcher:
                 self._finish_idle()
                 return self.state
         self.state = DispatcherState.EXECUTING
+        waiting = self.clock() < self._plan_not_before or self._finish_first
+        if self.pending == Pending.REPLAN and waiting and self.executor.current is not None:
+            # settling, backing off, or letting a still useful action finish: the running action goes on
+            end = self.executor.advance()
+            if end is not None:
+                self._finish_first = False
+                self._ended(end)
+            return self.state
+        if self.pending == Pending.REPLAN and self.clock() < self._plan_not_before:
+            return self.state
+        self._finish_first = False
         if self.pending == Pending.REPLAN or self.monitor.goals is None:
             if self.executor.current is not None:
                 self.executor.cancel(self.pending_reason if self.pending == Pending.REPLAN else "replanning")
@@ -293,10 +332,12 @@ class Dispatcher:
         reason = self.pending_reason if self.pending == Pending.REPLAN else None
         self.pending, self.pending_reason = Pending.NOTHING, ""
         now = self.clock()
+        charge, self._charge_replan = self._charge_replan, False
         if reason is not None and self.monitor.goals is not None:
             self.replans += 1
             self.trace.emit(TraceEvent(EventKind.REPLAN, now, reason=reason))
-            self.book.count_replan(goals, self.executor.facts(), self.policy.max_replans_per_goal)
+            if charge:
+                self.book.count_replan(goals, self.executor.facts(), self.policy.max_replans_per_goal)
             goals = self.book.active()
             if not goals:
                 return
@@ -305,6 +346,10 @@ class Dispatcher:
         result = self.planner.solve(task, timeout=self.planning_timeout)
         self.last_result = result
         self.plans += 1
+        if self.planning_time_factor > 0:
+            thought = math.ceil(result.planning_ms / 100.0 * self.planning_time_factor - 1e-9) / 10.0
+            self.thinking_s += thought
+            self._busy_until = now + thought
         self.monitor.adopt((), goals)
         self._step_failures = 0
         if result.status in (PlanStatus.TIMEOUT, PlanStatus.ERROR):
@@ -354,10 +399,11 @@ class Dispatcher:
         self.book.announce(self.book.active(), self.executor.facts())
 
     def _failed(self, end: StepEnd) -> None:
+        now = self.clock()
         self.trace.emit(
             TraceEvent(
                 EventKind.FAILURE,
-                self.clock(),
+                now,
                 action=str(end.step),
                 outcome=end.outcome.value,
                 reason=end.reason,
@@ -367,11 +413,53 @@ class Dispatcher:
         decision = self.policy.decide(end.outcome, self._step_failures)
         if decision == Recovery.RETRY:
             return
+        self._charge_replan = True
+        signature = (str(end.step), end.outcome.value, _shape(end.reason))
+        times = self._failures[signature] = self._failures.get(signature, 0) + 1
+        repeated = self.policy.repeated
+        if repeated.drop_after and times >= repeated.drop_after:
+            facts = self.executor.facts()
+            why = f"{end.step} failed the same way {times} times ({end.reason})"
+            for goal in self.monitor.served_by_current(facts, self.book.active()):
+                self.book.drop(goal, why)
+            self._raise(Pending.REPLAN, f"{end.outcome.value} of {end.step}, {times} times")
+            return
+        if repeated.retract_after and times >= repeated.retract_after:
+            gone = self._retract_beliefs(end.step)
+            if gone:
+                what = "retracting " + " ".join(atom_str(a) for a in gone)
+            else:
+                wait = repeated.backoff_s * (times - repeated.retract_after + 1)
+                self._plan_not_before = max(self._plan_not_before, now + wait)
+                what = f"backing off {wait:g} s"
+            reason = f"{end.step} failed the same way {times} times: {what}"
+            self.trace.emit(TraceEvent(EventKind.REPLAN, now, reason=reason, action=str(end.step)))
+            self._raise(Pending.REPLAN, reason)
+            return
         if decision == Recovery.DROP_GOAL:
             facts = self.executor.facts()
             for goal in self.monitor.served_by_current(facts, self.book.active()):
                 self.book.drop(goal, f"{end.outcome.value} of {end.step} ({end.reason})")
         self._raise(Pending.REPLAN, f"{end.outcome.value} of {end.step}")
+
+    def _still_useful(self, step: PlanStep, goals: list[Atom]) -> bool:
+        """Whether a running step whose *later* steps broke should finish before the replan: it is not a
+        plain ``move`` (a drive somewhere may have become pointless; a pick, a hand-over or a search half
+        done is not) and its at-start conditions still hold."""
+        if step.name in REROUTABLE:
+            return False
+        return not unmet_conditions(self.monitor.schema(step), step.args, self.executor.facts(), "start")
+
+    def _retract_beliefs(self, step: PlanStep) -> list[Atom]:
+        """Retract the perceived positions (``RETRACTABLE``) among the step's at-start conditions that hold;
+        perception must establish them again. Returns what was retracted."""
+        schema = self.monitor.schema(step)
+        facts = self.executor.facts()
+        gone = [a for a in ground(schema.pre_pos, step.args) if a[0] in RETRACTABLE and a in facts]
+        with self.kb.batch():
+            for atom in gone:
+                self.kb.remove_fact(atom[0], *atom[1:], source=SOURCE, status=BeliefStatus.OBSERVED)
+        return gone
 
     def _finish_idle(self) -> None:
         self.book.reset_replans()
@@ -382,6 +470,17 @@ class Dispatcher:
         else:
             self.monitor.forget()
         self.state = DispatcherState.IDLE
+
+
+#: actions cancelled at once when a knowledge change breaks a later step of the plan (others finish first)
+REROUTABLE = frozenset({"move"})
+#: beliefs a repeatedly failing step may rest on wrongly: where people and items were perceived
+RETRACTABLE = frozenset({"person_at", "object_at", "object_on"})
+
+
+def _shape(reason: str) -> str:
+    """A failure reason with its numbers blanked, so "1.26 m away" and "1.31 m away" count as the same."""
+    return re.sub(r"-?\d+(\.\d+)?", "#", reason)
 
 
 __all__ = ["SOURCE", "DispatchReport", "Dispatcher", "DispatcherState", "Outcome", "Pending", "PlanningTask"]

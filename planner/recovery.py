@@ -12,12 +12,19 @@ furniture or levels, appeared or went) or its ``after_s`` back-off elapsed, and 
 (a retry never cancels an action in progress for another goal). ``times: 0`` (the default) keeps dropped
 goals dropped.
 
+The same plan step failing the same way again (same ground action, outcome and reason, numbers aside) is
+not retried blindly (:class:`RepeatedFailure`): from its ``retract_after``-th occurrence the dispatcher
+retracts the perceived beliefs the step rests on (the positions of the people and items it names, so
+perception must find them again; with none to retract it backs off ``backoff_s`` seconds per occurrence
+before planning again), and from its ``drop_after``-th it drops the goals the step served.
+
 Policies load from plain dicts (e.g. a YAML file)::
 
     {"max_replans_per_goal": 5,
      "rules": {"execution failure": {"retries": 1, "then": "replan"},
                "timeout": {"retries": 0, "then": "drop_goal"}},
-     "goal_retry": {"times": 20, "after_s": 10.0}}
+     "goal_retry": {"times": 20, "after_s": 10.0},
+     "repeated": {"retract_after": 2, "drop_after": 4, "backoff_s": 3.0}}
 """
 
 from __future__ import annotations
@@ -74,6 +81,23 @@ class GoalRetry:
 
 
 @dataclass(frozen=True)
+class RepeatedFailure:
+    """What changes when the same step fails the same way again (see the module docstring).
+
+    Attributes:
+        retract_after: occurrence from which the beliefs the step rests on are retracted (or the robot backs
+            off); 0: never.
+        drop_after: occurrence from which the goals the step served are dropped; 0: never.
+        backoff_s: seconds per occurrence the dispatcher waits before planning again when there is nothing
+            to retract.
+    """
+
+    retract_after: int = 2
+    drop_after: int = 4
+    backoff_s: float = 3.0
+
+
+@dataclass(frozen=True)
 class RecoveryPolicy:
     """Per-outcome recovery rules plus the per-goal replan bound.
 
@@ -81,11 +105,13 @@ class RecoveryPolicy:
         rules: outcome -> rule; outcomes not listed get ``RecoveryRule()`` (no retry, replan).
         max_replans_per_goal: replans one goal may cause before it is dropped.
         goal_retry: when a dropped goal comes back.
+        repeated: what changes when the same step fails the same way again.
     """
 
     rules: Mapping[Outcome, RecoveryRule] = field(default_factory=_default_rules)
     max_replans_per_goal: int = 5
     goal_retry: GoalRetry = GoalRetry()
+    repeated: RepeatedFailure = RepeatedFailure()
 
     def rule(self, outcome: Outcome) -> RecoveryRule:
         """The rule for ``outcome``."""
@@ -124,7 +150,19 @@ class RecoveryPolicy:
         goal_retry = GoalRetry(int(retry.get("times", 0)), float(retry.get("after_s", 10.0)))
         if goal_retry.times < 0 or goal_retry.after_s < 0:
             raise KnicError(f"recovery policy: goal_retry times and after_s must be >= 0, got {retry}")
-        return cls(rules, bound, goal_retry)
+        rep = dict(data.get("repeated", {}))
+        unknown = sorted(set(rep) - {"retract_after", "drop_after", "backoff_s"})
+        if unknown:
+            raise KnicError(
+                f"recovery policy: repeated has no setting {unknown[0]!r}"
+                " (retract_after, drop_after, backoff_s)"
+            )
+        repeated = RepeatedFailure(
+            int(rep.get("retract_after", 2)), int(rep.get("drop_after", 4)), float(rep.get("backoff_s", 3.0))
+        )
+        if repeated.retract_after < 0 or repeated.drop_after < 0 or repeated.backoff_s < 0:
+            raise KnicError(f"recovery policy: repeated counts and backoff_s must be >= 0, got {rep}")
+        return cls(rules, bound, goal_retry, repeated)
 
     def to_dict(self) -> dict[str, Any]:
         """The policy as a plain dict (round-trips through :meth:`from_dict`)."""
@@ -132,4 +170,9 @@ class RecoveryPolicy:
             "max_replans_per_goal": self.max_replans_per_goal,
             "rules": {o.value: {"retries": r.retries, "then": r.then.value} for o, r in self.rules.items()},
             "goal_retry": {"times": self.goal_retry.times, "after_s": self.goal_retry.after_s},
+            "repeated": {
+                "retract_after": self.repeated.retract_after,
+                "drop_after": self.repeated.drop_after,
+                "backoff_s": self.repeated.backoff_s,
+            },
         }

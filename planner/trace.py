@@ -26,6 +26,7 @@ class EventKind(enum.StrEnum):
     REPLAN = "replan"
     GOAL_ACHIEVED = "goal_achieved"
     GOAL_DROPPED = "goal_dropped"
+    TASK = "task"  # a step of a task flow (the Granny Annie dialogue): ``action`` names it
 
     def __str__(self) -> str:
         return self.value

@@ -12,6 +12,12 @@ for, a ``description`` and a list of ``events``, each with ``at`` (simulated sec
 * ``set_device``: ``device`` is set to ``value`` (lights: true/false; dimmer, blinds: percent).
 * ``place_items``: each of ``items`` (default: all) is put on furniture drawn at random (seeded) from its
   priors, weighted by their probabilities.
+* ``call``: ``person`` calls the robot from the tablet (as the ERL referee box sends it): the robot's speech
+  channel receives the call, :data:`CALL_TEXT`, localised at the person (the position they tap).
+
+A scenario may also describe a task flow (``task:``, the Granny Annie task; see
+:mod:`worlds.granny_annie`): the person who calls, where they may wait, the requests they may make (voice
+bank texts) and their answer. The flow's events are drawn per seed by :func:`worlds.granny_annie.episode`.
 
 Scenario names resolve to ``worlds/erl_home/scenarios/<name>.yaml``; a path works too.
 """
@@ -37,7 +43,10 @@ EVENT_FIELDS: dict[str, tuple[set[str], set[str]]] = {
     "person_to": ({"person"}, {"room", "furniture", "teleport"}),
     "set_device": ({"device", "value"}, set()),
     "place_items": (set(), {"items"}),
+    "call": ({"person"}, set()),
 }
+#: what the robot's speech channel receives when a person calls from the tablet
+CALL_TEXT = "tablet call"
 
 
 @dataclass(frozen=True, slots=True)
@@ -63,6 +72,7 @@ class Scenario:
     description: str
     events: tuple[Event, ...]
     source: Path | None = None
+    task: dict[str, Any] | None = None
 
 
 def resolve_scenario_path(name_or_path: str | Path) -> Path:
@@ -107,7 +117,7 @@ def scenario_from_dict(
 
     if not isinstance(data, dict):
         raise fail("document", "must be a mapping with name and events")
-    extra = sorted(str(k) for k in set(data) - {"name", "world", "description", "events"})
+    extra = sorted(str(k) for k in set(data) - {"name", "world", "description", "events", "task"})
     if extra:
         raise fail("document", f"unknown field {extra[0]!r}")
     if "name" not in data:
@@ -136,11 +146,20 @@ def scenario_from_dict(
         _check_names(fail, entry, kind, args, world, source)
         events.append(Event(at=float(at), type=kind, args=args))
     events.sort(key=lambda e: e.at)
+    task = data.get("task")
+    if task is not None:
+        from worlds.granny_annie import check_task
+
+        try:
+            check_task(task, world)
+        except WorldError as exc:
+            raise fail("task", str(exc)) from None
     return Scenario(
         name=str(data["name"]),
         description=str(data.get("description", "")),
         events=tuple(events),
         source=source,
+        task=dict(task) if task is not None else None,
     )
 
 

@@ -9,6 +9,8 @@ move               :mod:`actions.erl.motion`              drive to the room's an
 meet, guide        :mod:`actions.erl.motion`              approach a perceived person; walk with them
 search_object      :mod:`actions.erl.search`              viewpoints and camera sweeps (sensing)
 search_person      :mod:`actions.erl.search`              the same, for a person (sensing)
+search_furniture   :mod:`actions.erl.sourced`             the same, the given furniture first (sensing)
+pick_from          :mod:`actions.erl.sourced`             pick an item believed on the given furniture
 pick, place, give  :mod:`actions.erl.manipulation`        gripper actions at perceived poses
 report             :mod:`actions.erl.devices`             say where the entity was found
 switch_on/off      :mod:`actions.erl.devices`             light commands, confirmed by the reading
@@ -31,6 +33,7 @@ from actions.erl.manipulation import GiveAction, PickAction, PlaceAction
 from actions.erl.motion import GuideAction, MeetAction, MoveAction
 from actions.erl.perception import AnchorPerception, Perception
 from actions.erl.search import SearchAction
+from actions.erl.sourced import FurnitureSearchAction, PickFromAction
 from core.robot import Robot
 from knowledge_base import KnowledgeBase
 
@@ -39,7 +42,9 @@ ARITY = {
     "move": 3,
     "search_object": 3,
     "search_person": 3,
+    "search_furniture": 4,
     "pick": 3,
+    "pick_from": 4,
     "place": 4,
     "give": 4,
     "meet": 3,
@@ -92,7 +97,11 @@ def build_erl_registry(
     registry.register(
         "search_person", lambda a: SearchAction("search_person", checked("search_person", a), ctx)
     )
+    registry.register(
+        "search_furniture", lambda a: FurnitureSearchAction(checked("search_furniture", a), ctx)
+    )
     registry.register("pick", lambda a: PickAction(checked("pick", a), ctx))
+    registry.register("pick_from", lambda a: PickFromAction(checked("pick_from", a), ctx))
     registry.register("place", lambda a: PlaceAction(checked("place", a), ctx))
     registry.register("give", lambda a: GiveAction(checked("give", a), ctx))
     registry.register("meet", lambda a: MeetAction(checked("meet", a), ctx))

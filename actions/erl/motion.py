@@ -20,9 +20,10 @@ from actions.erl.common import ErlAction, NavGoal, to_point
 from actions.erl.context import ErlContext, Point, room_map, standoff_points, wrap
 from core.robot import CommandResult
 
-#: metres between the robot and a person it approaches, tried in this order: well inside the hand-over reach
-#: (the gripper's reach plus the person's arm, about 1.25 m) even when the perceived position is 0.3 m off
-PERSON_STANDOFFS = (0.7, 0.85, 0.6, 1.0)
+#: metres between the robot and a person it approaches, tried in this order: inside the hand-over reach (the
+#: gripper's reach plus the person's arm, about 1.25 m) with a margin for the perceived position's error; the
+#: outer rings reach someone sitting in the middle of a bed, whose edge keeps the robot about 1.1 m away
+PERSON_STANDOFFS = (0.7, 0.85, 1.0, 1.1, 0.6)
 #: the first of them (kept for callers that need one distance)
 PERSON_STANDOFF = PERSON_STANDOFFS[0]
 
@@ -80,7 +81,7 @@ def approach_person(ctx: ErlContext, person: str, what: str, closer: int = 0) ->
     rings = sorted(PERSON_STANDOFFS) if closer > 0 else list(PERSON_STANDOFFS)
     starts = []
     for ring in rings:
-        for p in standoff_points(target, ring, (pose.x, pose.y), count=12)[:8]:
+        for p in standoff_points(target, ring, (pose.x, pose.y), count=16)[:10]:
             yaw = math.atan2(target[1] - p[1], target[0] - p[0])
             starts.append(to_point(ctx, p, yaw))
     nav = NavGoal(ctx, starts, what)

@@ -11,12 +11,18 @@ Every ``explored`` fact (whoever wrote it) expires ``ttl_s`` seconds after it wa
 coverage starts again, so a place can be searched again for an object that moved.
 
 :class:`CandidatesKP` keeps ``(possibly_at ?e ?room)`` as ASSUMED facts for entities whose place is unknown
-(no ``object_at`` / ``person_at``, not held, not handed over): the ``max_candidates`` likeliest unexplored
-rooms by the priors (for a person, the room where they were last seen first; rooms explored before the
-person was lost do not rule them out); when every prior room has been explored, the other unexplored rooms.
-Candidates go when the room gets explored without the entity being seen there, and all of them go when the
-entity is observed anywhere. Entities considered: those with priors, those named in a goal, those that
-already have candidates, and those that were located once.
+(no ``object_at`` / ``person_at``, not held, not handed over). A room stops being a candidate for an entity
+once the robot searched it *for that entity* (``(searched ?e ?room)``, the search actions' own record, kept
+until the entity is located) or, for an item, while the room counts as explored by the camera (people walk,
+so for a person only explorations made after they were lost count). The candidates are the
+``max_candidates`` likeliest such rooms by the priors (for a person, the room where they were last seen
+first); when no prior room is left, every room not searched for it (the planner then goes to the nearest
+first). When no room is left at all, the entity has no candidate: a goal that needs it is unreachable and
+dropped, so a search over the whole home ends. Once the entity is located anywhere, its candidates and its
+``searched`` facts go. For an item asked for from a piece of furniture (a goal ``(taken_from ?o ?f)``) the
+furniture is an ASSUMED ``(possibly_on ?o ?f)`` candidate while the item is not located and that room was
+not searched for it. Entities considered: those with priors, those named in a goal, those that already have
+candidates, and those that were located once.
 """
 
 from __future__ import annotations
@@ -202,18 +208,37 @@ class CandidatesKP(KPPrime):
             ranked.append((last, 1.0))
         ranked += list(self.priors.get(entity, ()))
         seen: set[str] = set()
-        explored = self.explored_for(entity)
+        excluded = self.explored_for(entity) | self.searched_for(entity)
         result: list[tuple[str, float]] = []
         for room, p in ranked:
-            if room not in seen and room not in explored and self.is_a(room, "room"):
+            if room not in seen and room not in excluded and self.is_a(room, "room"):
                 seen.add(room)
                 result.append((room, p))
-        if not result:
-            result = [(r, 0.0) for r in self.rooms if r not in explored and self.is_a(r, "room")]
-        return result[: self.max_candidates]
+        if result:
+            return result[: self.max_candidates]
+        return [(r, 0.0) for r in self.rooms if r not in excluded and self.is_a(r, "room")]
+
+    def searched_for(self, entity: str) -> set[str]:
+        """Rooms the robot searched for the entity since it was last located (``(searched ?e ?room)``)."""
+        return {f.args[1] for f in self.kb.facts("searched", entity)}
+
+    def wanted_on(self, entity: str) -> list[str]:
+        """The furniture an item is sought on (goals ``(taken_from ?o ?f)``) whose room was not searched for
+        it; empty when the item is located or for a person."""
+        if not self.is_a(entity, "item") or self.located(entity):
+            return []
+        searched = self.searched_for(entity)
+        out = []
+        for goal in self.kb.goals():
+            if goal.predicate != "taken_from" or goal.args[0] != entity:
+                continue
+            rooms = {f.args[1] for f in self.kb.facts("furniture_in", goal.args[1])}
+            if not rooms & searched:
+                out.append(goal.args[1])
+        return sorted(set(out))
 
     def explored_for(self, entity: str) -> set[str]:
-        """Rooms whose exploration rules them out for the entity.
+        """Rooms whose camera exploration rules them out for the entity.
 
         For a person, only explorations made after they were lost count: people walk about, so a room
         explored before the person went out of sight (often the room they were last seen in) may hold them
@@ -253,16 +278,29 @@ class CandidatesKP(KPPrime):
         return sorted(n for n in names if self.is_a(n, "entity"))
 
     def step(self, now: float) -> None:
-        """Bring every tracked entity's possibly_at facts in line with :meth:`wanted`."""
+        """Bring every tracked entity's possibly_at / possibly_on facts in line with :meth:`wanted` and
+        :meth:`wanted_on`; forget the searches for located entities."""
         self._now = now
         for entity in self.entities():
             wanted = dict(self.wanted(entity))
+            on = set(self.wanted_on(entity))
             current = {f.args[1] for f in self.kb.facts("possibly_at", entity)}
-            if all(self._assumed(entity, r) for r in wanted) and current == set(wanted):
+            current_on = {f.args[1] for f in self.kb.facts("possibly_on", entity)}
+            stale = self.kb.facts("searched", entity) if self.located(entity) else []
+            if (
+                not stale
+                and current == set(wanted)
+                and current_on == on
+                and all(self._assumed(entity, r) for r in wanted)
+            ):
                 continue
             with self.kb.batch():
+                for fact in stale:
+                    self.retract_fact("searched", *fact.args, at=now)
                 for room in sorted(current - set(wanted)):
                     self.retract_fact("possibly_at", entity, room, at=now)
+                for furniture in sorted(current_on - on):
+                    self.retract_fact("possibly_on", entity, furniture, at=now)
                 for room, p in wanted.items():
                     self.assert_fact(
                         "possibly_at",
@@ -272,6 +310,10 @@ class CandidatesKP(KPPrime):
                         confidence=p,
                         assumed=True,
                         support=(f"prior:{entity}",),
+                    )
+                for furniture in sorted(on - current_on):
+                    self.assert_fact(
+                        "possibly_on", entity, furniture, at=now, assumed=True, support=(f"request:{entity}",)
                     )
 
     def _assumed(self, entity: str, room: str) -> bool:

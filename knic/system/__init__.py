@@ -16,16 +16,41 @@ simulated time, as fast as the machine allows, deterministic under the seed.
 from __future__ import annotations
 
 import time
+from abc import abstractmethod
 from collections.abc import Callable, Sequence
 
 from actions.erl.devices import spoken
 from core.errors import KnicError, KnowledgeBaseError
+from knic.scheduler import Component
 from knic.system.assembly import Assembly, assemble
 from knic.system.config import RunConfig, RunResult
 from knic.system.loop import RunLoop
 from knic.system.verdict import BeliefVerdict, Referee, Stop
-from knowledge_base import Fact
+from knowledge_base import Fact, KnowledgeBase
 from planner.dispatch import DispatcherState
+from planner.trace import EventKind, TraceEvent
+
+
+class TaskFlow(Component):
+    """A scheduled task flow (the Granny Annie dialogue): stepped like any component; busy while it runs."""
+
+    @abstractmethod
+    def busy(self) -> bool:
+        """Whether the flow still has something to do (the run does not stop meanwhile)."""
+
+
+def drop_sentence(kb: KnowledgeBase, goal: Fact, reason: str) -> str:
+    """What the robot says when it drops ``goal``: that it looked everywhere for an entity it has no
+    candidate place left for, else the goal and the reason."""
+    for entity in goal.args:
+        kind = kb.type_of(entity)
+        if kind not in ("item", "person") or not reason.startswith("unreachable"):
+            continue
+        located = kb.facts("object_at" if kind == "item" else "person_at", entity)
+        if not located and not kb.facts("possibly_at", entity) and not kb.facts("holding", None, entity):
+            return f"I looked everywhere and could not find the {spoken(entity)}, so I give up on {goal}."
+    return f"I cannot achieve {goal}: {reason}."
+
 
 __all__ = ["KnicSystem", "RunConfig", "RunResult", "build_system", "parse_goal"]
 
@@ -54,10 +79,20 @@ class KnicSystem:
         if parts.dispatcher is None:
             raise KnicError("KnicSystem needs the dispatcher (RunConfig.dispatch=True)")
         self.dispatcher = parts.dispatcher
+        #: task flows (e.g. the Granny Annie dialogue) that keep the run going while busy
+        self.flows: list[TaskFlow] = []
         self.beliefs = BeliefVerdict(
-            self.kb, self.dispatcher.dropped_for_good, self._idle, settle_s=cfg.settle_s
+            self.kb,
+            self._dropped,
+            self._idle,
+            settle_s=cfg.settle_s,
+            give_up_s=cfg.give_up_s,
+            busy=[lambda: any(f.busy() for f in self.flows)],
         )
         self.referee = Referee(self.sim, lambda: [u.text for u in self.sim.spoken()], spoken)
+        self._told: set[str] = set()
+        self._observed = False
+        self.trace.subscribe(self._tell_dropped)
 
     # ------------------------------------------------------------------ goals
 
@@ -70,6 +105,12 @@ class KnicSystem:
         fact = goal if isinstance(goal, Fact) else parse_goal(goal)
         self.kb.add_goal(fact.predicate, *fact.args, source=source)
         return fact
+
+    def add_flow(self, flow: TaskFlow) -> None:
+        """Schedule a task flow (a scheduler component with ``busy()``) after the dispatcher; the run does
+        not stop while it is busy, and it may add goals while the robot runs."""
+        self.flows.append(flow)
+        self.scheduler.add(flow)
 
     # ------------------------------------------------------------------ running
 
@@ -87,9 +128,12 @@ class KnicSystem:
             KnicError: no goal was given.
         """
         limit = self.config.max_sim_time if max_sim_time is None else max_sim_time
-        if not self.kb.goals():
+        if not self.kb.goals() and not self.flows:
             raise KnicError("knic run: no goal given (use --goal or --speech)")
         loop: RunLoop[Stop] = RunLoop(self.scheduler, self.config.check_period_s)
+        if not self._observed:
+            loop.add_probe("referee", 10.0, self.referee.observe)
+            self._observed = True
         if on_check is not None:
             loop.add_hook(lambda now: on_check(self))
         loop.add_stop(self.beliefs)
@@ -125,6 +169,16 @@ class KnicSystem:
 
     def _idle(self) -> bool:
         return self.dispatcher.state == DispatcherState.IDLE
+
+    def _dropped(self) -> dict[str, str]:
+        return self.dispatcher.report().dropped
+
+    def _tell_dropped(self, event: TraceEvent) -> None:
+        """Say once per goal why it was dropped (the robot tells the people it works for)."""
+        if event.kind != EventKind.GOAL_DROPPED or not event.goal or event.goal in self._told:
+            return
+        self._told.add(event.goal)
+        self.context.say(drop_sentence(self.kb, parse_goal(event.goal), event.reason or ""))
 
     # ------------------------------------------------------------------ teardown
 

@@ -169,6 +169,8 @@ def assemble(config: RunConfig) -> Assembly:
                 ),
                 trace=trace,
                 time_limits=ACTION_TIME_LIMITS,
+                planning_time_factor=config.planning_time_factor,
+                replan_settle_s=config.replan_settle_s,
             )
         scheduler = Scheduler(real_time_factor=config.real_time_factor)
         scheduler.add(SimulationComponent(sim))

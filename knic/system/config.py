@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, TextIO
@@ -17,6 +18,8 @@ ACTION_TIME_LIMITS = {
     "move": 120.0,
     "search_object": 240.0,
     "search_person": 240.0,
+    "search_furniture": 240.0,
+    "pick_from": 90.0,
     "pick": 90.0,
     "place": 90.0,
     "give": 90.0,
@@ -45,7 +48,11 @@ class RunConfig:
             (:class:`planner.recovery.GoalRetry`): when what the robot knows about the goal's subject
             changed since the drop, or ``retry_after_s`` simulated seconds after it; never cancelling a
             running action.
-        retry_after_s: see ``goal_retries``.
+        retry_after_s: see ``goal_retries`` (infinite by default: only new knowledge brings a goal back).
+        give_up_s: simulated seconds the robot stays idle with every open goal dropped before the run stops
+            (new knowledge may bring a goal back meanwhile).
+        planning_time_factor: simulated seconds charged per wall second of planning (0: planning is free).
+        replan_settle_s: simulated seconds planning waits after a knowledge change broke the plan.
         max_replans_per_goal: the recovery policy's replanning budget per goal.
         real_time_factor: the scheduler's overrun budget is period / factor (wall seconds per step).
         dispatch: plan and act (the dispatcher runs); False: perception only (benchmarks drive the robot).
@@ -62,7 +69,10 @@ class RunConfig:
     gui: bool = False
     check_period_s: float = 0.5
     goal_retries: int = 20
-    retry_after_s: float = 10.0
+    retry_after_s: float = math.inf
+    give_up_s: float = 10.0
+    planning_time_factor: float = 1.0
+    replan_settle_s: float = 0.6
     max_replans_per_goal: int = 12
     real_time_factor: float = 1.0
     dispatch: bool = True

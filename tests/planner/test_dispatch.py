@@ -140,11 +140,12 @@ def test_unconfirmed_sensing_is_a_postcondition_failure_and_the_search_goes_on()
     assert all(e.action is not None and "entrance" not in e.action for e in post)
     assert len(d.trace.of_kind(EventKind.REPLAN)) >= len(post)
     assert report.achieved == ["(object_at glasses bedroom)"]
-    # the sensed facts come from perception, not from the dispatcher; explored is the dispatcher's effect
+    # the sensed facts come from perception, not from the dispatcher; searched is the dispatcher's effect
     found = kb.why(Fact("found", ("glasses",)))
     assert found is not None and found.source == "kp_camera" and found.status == BeliefStatus.OBSERVED
-    explored = kb.why(Fact("explored", ("entrance",)))
-    assert explored is not None and explored.status == BeliefStatus.EFFECT
+    searched = kb.why(Fact("searched", ("glasses", "entrance")))
+    assert searched is not None and searched.status == BeliefStatus.EFFECT
+    assert not kb.facts("explored")  # the camera's record of coverage is perception's, not the search's
 
 
 def test_timeouts_are_bounded_and_the_goal_is_dropped_eventually() -> None:

@@ -49,7 +49,7 @@ def test_domain_reads_schemas_static_predicates_and_constants() -> None:
     assert move.params == (("r", "robot"), ("from", "room"), ("to", "room"))
     assert move.pre_pos == (("robot_at", (0, 1)), ("connected", (1, 2)))
     search = dom.schemas["search_object"]
-    assert ("found", (1,)) in search.pre_neg and ("explored", (2,)) in search.pre_neg
+    assert ("found", (1,)) in search.pre_neg and ("searched", (1, 2)) in search.pre_neg
     assert dom.is_subtype("light", "device") and not dom.is_subtype("room", "entity")
 
 

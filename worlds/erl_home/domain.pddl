@@ -6,6 +6,14 @@
 ; actions whose effects only count once perception confirms them.
 ; (surface ?f): items can be put on furniture ?f (static, from the world data;
 ; a bin or a plant carries nothing).
+;
+; (explored ?l) is perception's: the camera has covered room ?l lately.
+; (searched ?e ?l) is the search's own record: the robot looked for ?e in ?l,
+; so a room searched for the tablet can still be searched for Annie, and a
+; search over every candidate room ends. (possibly_on ?o ?f) is the assumed
+; candidate furniture of an item asked for "from" that furniture; the sensing
+; action search_furniture looks there and pick_from takes it from there,
+; making (taken_from ?o ?f) true, the goal that keeps the request's source.
 (define (domain erl_home)
   (:requirements :strips :typing :negative-preconditions)
   ; light_on / light_off are kept complementary by the actions and by the device KP'.
@@ -26,6 +34,9 @@
     (possibly_at ?e - entity ?l - room)
     (found ?e - entity)
     (explored ?l - room)
+    (searched ?e - entity ?l - room)
+    (possibly_on ?o - item ?f - furniture)
+    (taken_from ?o - item ?f - furniture)
     (reported ?e - entity)
     (holding ?r - robot ?o - item)
     (hand_empty ?r - robot)
@@ -45,18 +56,31 @@
 
   (:action search_object
     :parameters (?r - robot ?o - item ?l - room)
-    :precondition (and (robot_at ?r ?l) (possibly_at ?o ?l) (not (found ?o)) (not (explored ?l)))
-    :effect (and (found ?o) (object_at ?o ?l) (explored ?l)))
+    :precondition (and (robot_at ?r ?l) (possibly_at ?o ?l) (not (found ?o)) (not (searched ?o ?l)))
+    :effect (and (found ?o) (object_at ?o ?l) (searched ?o ?l)))
+
+  (:action search_furniture
+    :parameters (?r - robot ?o - item ?f - furniture ?l - room)
+    :precondition (and (robot_at ?r ?l) (furniture_in ?f ?l) (possibly_on ?o ?f) (not (found ?o))
+                       (not (searched ?o ?l)))
+    :effect (and (found ?o) (object_at ?o ?l) (object_on ?o ?f) (searched ?o ?l)))
 
   (:action search_person
     :parameters (?r - robot ?p - person ?l - room)
-    :precondition (and (robot_at ?r ?l) (possibly_at ?p ?l) (not (found ?p)) (not (explored ?l)))
-    :effect (and (found ?p) (person_at ?p ?l) (explored ?l)))
+    :precondition (and (robot_at ?r ?l) (possibly_at ?p ?l) (not (found ?p)) (not (searched ?p ?l)))
+    :effect (and (found ?p) (person_at ?p ?l) (searched ?p ?l)))
 
   (:action pick
     :parameters (?r - robot ?o - item ?l - room)
     :precondition (and (robot_at ?r ?l) (object_at ?o ?l) (hand_empty ?r))
     :effect (and (holding ?r ?o) (not (hand_empty ?r)) (not (object_at ?o ?l))))
+
+  (:action pick_from
+    :parameters (?r - robot ?o - item ?f - furniture ?l - room)
+    :precondition (and (robot_at ?r ?l) (object_at ?o ?l) (object_on ?o ?f) (furniture_in ?f ?l)
+                       (hand_empty ?r))
+    :effect (and (holding ?r ?o) (not (hand_empty ?r)) (not (object_at ?o ?l)) (not (object_on ?o ?f))
+                 (taken_from ?o ?f)))
 
   (:action place
     :parameters (?r - robot ?o - item ?f - furniture ?l - room)

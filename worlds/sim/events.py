@@ -16,7 +16,7 @@ import numpy as np
 from core.robot import CommandResult
 from worlds.geometry import Point
 from worlds.model import World
-from worlds.scenario import Event
+from worlds.scenario import CALL_TEXT, Event
 from worlds.sim.items import ItemState, free_spots
 from worlds.sim.navigation import GridMap
 from worlds.sim.people import PeopleController
@@ -82,6 +82,8 @@ def apply_event(
             people.enqueue(visitor, "straight", inside)
             goal = sim.grid.nearest_free(*w.rooms[room].waypoint, 1.5)
             people.go_to(visitor, [goal] if goal else [])
+    elif ev.type == "call":
+        sim.hear(CALL_TEXT, speaker=a["person"])
     elif ev.type == "say":
         sim.hear(str(a["text"]), speaker=a["person"], audio_path=a.get("audio"))
     elif ev.type == "move_object":
