@@ -34,6 +34,8 @@ from knic.kgm1.providers import DeviceKP, RobotPoseKP, SoundKP
 from knic.kgm1.sources import SharedCamera
 from knic.kgm2.cognition import CognitiveLayer, TrackingConfig
 from knic.kgm2.roles import ROLES_FILE, Role, load_role
+from knic.kgm3.fusion import Fusion
+from knic.kgm3.fusion import install as install_fusion
 from knic.kgm3.places import ObjectPlaceKP, PersonPlaceKP, RobotAtKP
 from knic.kgm3.relations import DeviceStateKP, PersonNearKP, SoundAtKP
 from knic.kgm3.search import CandidatesKP, ExploredKP, priors_from_world
@@ -73,6 +75,8 @@ class PipelineOptions:
         edge_px: image border, pixels, where an undetected entity does not count as missed.
         needed: consecutive consistent observations before a place fact changes.
         explored_ttl_s: seconds an ``explored`` fact lives.
+        fusion_half_life_s: simulated seconds over which a standing belief's weight halves in the knowledge
+            base's fusion (:mod:`knic.kgm3.fusion`).
         max_candidates: candidate rooms per entity of unknown place.
         tracking: association parameters.
         roles_file: the role file.
@@ -92,6 +96,7 @@ class PipelineOptions:
     edge_px: int = 3
     needed: int = 2
     explored_ttl_s: float = 120.0
+    fusion_half_life_s: float = 60.0
     max_candidates: int = 3
     tracking: TrackingConfig = field(default_factory=TrackingConfig)
     roles_file: Path = ROLES_FILE
@@ -114,8 +119,10 @@ class Pipeline(list[Component]):
         locations: LocationModel,
         cognition: CognitiveLayer,
         camera: SharedCamera,
+        fusion: Fusion | None = None,
     ) -> None:
         super().__init__(components)
+        self.fusion = fusion
         self.bus = bus
         self.role = role
         self.locations = locations
@@ -161,6 +168,8 @@ def build_pipeline(
     resolution = opts.tracking.resolution
     locations = build_location_model(world, entity_resolution=resolution)
     camera = SharedCamera(sim, lambda: sim.time)
+    # one belief per fact, weighed: a weak assumption never overrides a fresh observation
+    fusion = install_fusion(kb, lambda: sim.time, opts.fusion_half_life_s)
     camera_hz = opts.camera_hz or the_role.max_rate(exclude=("robot", "doorbell"))
     class_symbols = _unique_classes(world)
     providers: list[Component] = [
@@ -221,6 +230,7 @@ def build_pipeline(
         locations=locations,
         cognition=cognition,
         camera=camera,
+        fusion=fusion,
     )
 
 

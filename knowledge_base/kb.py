@@ -90,6 +90,9 @@ class KnowledgeBase(KnowledgeQueries):
             f: tuple(domain.subtypes(t) for _, t in sig) for f, sig in domain.functions.items()
         }
         self._single = dict(domain.single_valued)
+        #: fusion hook: (fact, its current provenance, the write's provenance) -> whether the write may
+        #: replace or retract that belief (None: every write may); a refused write changes nothing
+        self.arbiter: Callable[[Fact, Provenance, Provenance], bool] | None = None
         self._rebuild_indexes()
 
     # ================================================================= construction
@@ -295,11 +298,15 @@ class KnowledgeBase(KnowledgeQueries):
         old = self._state.facts.get(fact)
         if old is not None and (old[0], old[2], old[3], old[4]) == (prov[0], prov[2], prov[3], prov[4]):
             return False
+        if old is not None and self.arbiter is not None and not self.arbiter(fact, old, prov):
+            return False
         changes = []
         positions = self._single.get(predicate)
         if positions is not None:
             other = self._sv_index.get((predicate, tuple([args[i] for i in positions])))
             if other is not None and other != fact:
+                if self.arbiter is not None and not self.arbiter(other, self._state.facts[other], prov):
+                    return False
                 changes.append(self._change(prov, _REMOVE_FACT, predicate, other.args))
         changes.append(self._change(prov, _ADD_FACT, predicate, args))
         self._commit(changes)
@@ -321,9 +328,12 @@ class KnowledgeBase(KnowledgeQueries):
             KnowledgeBaseError: the atom is invalid (as for :meth:`add_fact`).
         """
         self._check(predicate, args, self._pred_types, "predicate")
-        if Fact(predicate, args) not in self._state.facts:
+        old = self._state.facts.get(Fact(predicate, args))
+        if old is None:
             return False
         prov = self._prov(source, at, status, confidence, support)
+        if self.arbiter is not None and not self.arbiter(Fact(predicate, args), old, prov):
+            return False
         self._commit([self._change(prov, _REMOVE_FACT, predicate, args)])
         return True
 
