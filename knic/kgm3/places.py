@@ -229,8 +229,13 @@ class _EntityPlaceKP(KPPrime):
         room, _ = self.locations.rooms.best(keys)
         if room is None:
             room = self.locations.room_at(cku.position[0], cku.position[1])
-        if believed is not None and believed == room:
+        if believed is not None and (believed == room or self.left_belief(cku.symbol, believed, room)):
             self.forget_place(cku.symbol, cku.stamp, (cku.uid, *cku.support))
+
+    def left_belief(self, symbol: str, believed: str, room: str | None) -> bool:
+        """Whether a track lost outside the believed room also refutes the belief (default: no; an item's
+        track may have wandered off on a confusion)."""
+        return False
 
     def check_explored(self, now: float) -> None:
         """Retract beliefs about rooms explored since, when the entity was not seen during the exploration."""
@@ -419,6 +424,12 @@ class PersonPlaceKP(_EntityPlaceKP):
         if t1 - t0 < 0.5 * self.speed_window_s:
             return False
         return math.dist(p0[:2], p1[:2]) / (t1 - t0) > self.walking_speed
+
+    def left_belief(self, symbol: str, believed: str, room: str | None) -> bool:
+        """A person whose track was last seen outside the believed room, after the belief was made, and is
+        not there either, was seen leaving: where they are is unknown (the belief is retracted)."""
+        prov = self.kb.why(Fact(self.place_predicate, (symbol, believed)))
+        return prov is not None and room != believed and self.last_seen.get(symbol, -math.inf) >= prov.since
 
     def ttl_of(self, symbol: str) -> float:
         """Seconds the person's place lives after their last sighting."""

@@ -195,3 +195,22 @@ def test_two_mugs_become_two_discovered_instances(
         )
     pk.step(2.6)
     assert not pk.discovered and paper_kb.type_of("person_1") is None
+
+
+def test_a_person_seen_leaving_and_then_lost_is_retracted(
+    paper_kb: KnowledgeBase, paper_locations: LocationModel
+) -> None:
+    bus = Bus()
+    publish_place_ckus(bus, paper_locations)
+    kp = PersonPlaceKP(bus, paper_kb, needed=2)
+    for t in (1.0, 1.2):
+        send(bus, cku("annie", Kind.PERSON, (1.1, 6.6, 0.8), t, cls="person"))
+    kp.step(1.2)
+    assert paper_kb.holds("person_at", "annie", "bedroom")
+    # one sighting in the kitchen (not yet confirmed), then KGM-2 loses her there: she is neither place
+    send(bus, cku("annie", Kind.PERSON, (6.0, 6.6, 0.9), 5.0, cls="person"))
+    kp.step(5.0)
+    assert paper_kb.holds("person_at", "annie", "bedroom")
+    send(bus, cku("annie", Kind.PERSON, (6.0, 6.6, 0.9), 9.0, cls="person", lost=True))
+    kp.step(9.0)
+    assert not paper_kb.facts("person_at", "annie")
