@@ -31,6 +31,8 @@ goals, so the dispatcher is not stepped. Measured, in simulated time:
   ``retract_latency_p50_s`` (from the truth's change to the knowledge base's, for the changes counted in
   the staleness), ``change_latency_after_seen_p50_s`` (the same from the first camera frame that showed the
   entities after the change: the part perception controls; the rest is where the robot was looking),
+  ``precision_not_aged`` (precision over the beliefs not aged into ASSUMED: what the robot holds as
+  observed; the aged ones are people and items not seen for their time to live, kept but not retracted),
   ``flaps_per_fact_minute`` (belief changes undone within :data:`FLAP_WINDOW_S` while the fact's truth did
   not change, per minute of believed fact).
 * ``octomap_ratio_same_work``: KGM-2's octomap path against raw pyoctomap doing the same insertions (same
@@ -55,6 +57,7 @@ from typing import TYPE_CHECKING, Any
 
 from knic.scheduler import Component
 from knic.system.loop import RunLoop
+from knowledge_base import BeliefStatus, Fact
 
 if TYPE_CHECKING:
     from core.robot import Camera
@@ -276,6 +279,8 @@ class _Recorder:
     recall: list[float] = field(default_factory=list)
     #: predicate -> [believed, believed but false, perceivable true, perceivable true but not believed]
     by_predicate: dict[str, list[int]] = field(default_factory=dict)
+    #: predicate -> [believed and not aged (status other than ASSUMED), of those false]
+    fresh: dict[str, list[int]] = field(default_factory=dict)
 
     #: fact -> (added, simulated time) of the knowledge base's latest change of it
     last_change: dict[Atom, tuple[bool, float]] = field(default_factory=dict)
@@ -445,10 +450,12 @@ def _families(rec: _Recorder, counted: list[_Change], duration: float) -> dict[s
             if c.reflected_at is not None and math.isfinite(rec.first_seen_after(c.entities, c.at))
         ]
         fact_minutes = believed / 60.0  # believed facts sampled once per simulated second
+        fresh, fresh_false = (sum(rec.fresh.get(p, [0, 0])[i] for p in predicates) for i in range(2))
         out[family] = {
             "precision": round(precision, 4) if precision is not None else None,
             "recall": round(recall, 4) if recall is not None else None,
             "f1": round(f1, 4) if f1 is not None else None,
+            "precision_not_aged": round((fresh - fresh_false) / fresh, 4) if fresh else None,
             "assert_latency_p50_s": _percentile(asserted, 0.5),
             "assert_latency_p95_s": _percentile(asserted, 0.95),
             "retract_latency_p50_s": _percentile(retracted, 0.5),
@@ -551,5 +558,11 @@ def _compare(oracle: Oracle, kb: Any, rec: _Recorder, now: float) -> None:
         rec.recall.append(len(beliefs & perceivable) / len(perceivable))
     rec.tally(beliefs, 0)
     rec.tally(beliefs - truth, 1)
+    for fact in beliefs:
+        prov = kb.why(Fact(fact[0], fact[1:]))
+        if prov is not None and prov.status != BeliefStatus.ASSUMED:
+            counts = rec.fresh.setdefault(fact[0], [0, 0])
+            counts[0] += 1
+            counts[1] += fact not in truth
     rec.tally(perceivable, 2)
     rec.tally(perceivable - beliefs, 3)
