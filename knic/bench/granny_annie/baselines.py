@@ -1,12 +1,13 @@
 """The benchmark's baselines, all run on the same episodes through the run's public parts.
 
 * ``knic``: the whole system as ``knic run`` assembles it, under the chosen role.
-* ``static``: the closed-world robot of the paper's situation without KnIC. At t=0 it is given the initial map
-  (the true places of every item and person, the devices' states, as a team writes them into its problem
-  file, with ``found`` for each entity placed, and where each stands for the actions to steer by), and then
-  its facts are frozen: the KP' components (KGM-3) are not stepped, so only the dispatcher's action effects
-  change the knowledge base. Device actions assume their effect (there is no KP' to confirm the reading).
-  KGM-1 and KGM-2 still run: the actions also steer by what the camera sees.
+* ``static``: the closed-world robot of the paper's situation without KnIC (which had to seed its problem with
+  a guessed fact to get a plan at all). At t=0 it is given the initial map as a team writes it into its
+  problem file: every item and person where their likeliest prior says (an entity without priors where the
+  world file has it), as facts with ``found``, and there for the actions to steer to; the devices' states
+  and the robot's room as seeded. Then its facts are frozen: the KP' components (KGM-3) are not stepped, so
+  only the dispatcher's action effects change the knowledge base. Device actions assume their effect (no
+  KP' confirms the reading). KGM-1 and KGM-2 still run: the actions also steer by what the camera sees.
 * ``oracle``: facts straight from ground truth. The KP' components are not stepped; a probe writes the
   oracle's true dynamic facts into the knowledge base at :data:`ORACLE_HZ` (only the changes, as observed)
   with ``found`` for every entity placed, and the true position of every item and person is handed to the
@@ -27,6 +28,7 @@ from knowledge_base import BeliefStatus
 if TYPE_CHECKING:
     from knic.scheduler import Component
     from knic.system import KnicSystem
+    from worlds.model import Prior, World
 
 BASELINES = ("knic", "static", "oracle")
 #: rate (Hz, simulated time) of the oracle baseline's fact writes
@@ -69,16 +71,20 @@ def kp_primes(system: KnicSystem) -> list[Component]:
     return [c for c in system.pipeline if type(c).__module__.startswith("knic.kgm3")]
 
 
-def prepare(system: KnicSystem, baseline: str) -> None:
-    """Turn an assembled system into ``baseline`` (see the module docstring); ``knic`` changes nothing."""
+def prepare(system: KnicSystem, baseline: str, known: World | None = None) -> None:
+    """Turn an assembled system into ``baseline`` (see the module docstring); ``knic`` changes nothing.
+
+    Args:
+        known: the world as the robot knew it before the episode (its priors, the world file's places) for
+            the static baseline's initial map; default: the system's world.
+    """
     if baseline == "knic":
         return
     check_baselines([baseline])
     for component in kp_primes(system):
         system.scheduler.remove(component.name)
     if baseline == "static":
-        write_truth(system, source="initial_map", status=BeliefStatus.GIVEN)
-        true_sightings(system)
+        write_initial_map(system, known or system.world)
         _assume_device_effects(system)
     else:
         from worlds.api import NoiseConfig
@@ -87,6 +93,49 @@ def prepare(system: KnicSystem, baseline: str) -> None:
             system.sim.noise = NoiseConfig.perfect()
         _sync(system)
         system.scheduler.add(Probe("bench.oracle_facts", ORACLE_HZ, lambda now: _sync(system)))
+
+
+def write_initial_map(system: KnicSystem, known: World) -> int:
+    """The static baseline's initial map (see the module docstring); returns the number of facts written."""
+    from actions.erl.perception import Sighting
+
+    kb, writes = system.kb, 0
+    places: dict[str, tuple[str, str | None]] = {}  # entity -> (room, furniture)
+    for name, item in known.items.items():
+        places[name] = _likeliest(known, item.priors, item.on, item.position[:2])
+    for name, person in known.people.items():
+        if person.present:
+            places[name] = _likeliest(known, person.priors, person.on, person.position)
+    with kb.batch():
+        for name, (room, furniture) in sorted(places.items()):
+            predicate = "object_at" if name in known.items else "person_at"
+            writes += bool(kb.add_fact(predicate, name, room, source="initial_map"))
+            if furniture is not None and name in known.items:
+                writes += bool(kb.add_fact("object_on", name, furniture, source="initial_map"))
+            writes += bool(kb.add_fact("found", name, source="initial_map"))
+    for name, (room, furniture) in places.items():
+        if furniture is not None:
+            f = known.furniture[furniture]
+            x, y, z = f.position[0], f.position[1], f.height
+        else:
+            (x, y), z = known.rooms[room].waypoint, 0.0
+        system.perceived.record(name, Sighting((x, y, z + 0.05), 0.0))
+    return writes
+
+
+def _likeliest(
+    world: World, priors: tuple[Prior, ...], on: str | None, xy: tuple[float, ...]
+) -> tuple[str, str | None]:
+    """(room, furniture) of the likeliest prior, else of the world file's place."""
+    if priors:
+        best = max(priors, key=lambda p: p.probability)
+        return best.room, best.furniture
+    if on is not None:
+        return world.furniture[on].room, on
+    room = world.room_of(xy[0], xy[1])
+    if room is None:
+        raise KnicError(f"world {world.name}: a place at {xy} is in no room")
+    return room, None
 
 
 def _sync(system: KnicSystem) -> None:

@@ -27,7 +27,7 @@ MOVE_REQUESTED_P = 0.6
 WALK_P = 0.5
 #: simulated-seconds windows of the events
 VISITOR_AT = (20.0, 120.0)
-MOVE_AT = (15.0, 90.0)
+MOVE_AT = (10.0, 60.0)
 WALK_AT = (10.0, 300.0)
 
 

@@ -135,7 +135,7 @@ def run_task(task: Task, starter: Starter | None = None) -> dict[str, Any]:
     error = None
     try:
         with KnicSystem(config) as system:
-            prepare(system, task.baseline)
+            prepare(system, task.baseline, known=load_world(episode.world))
             recorder = Recorder(system.sim, system.sim, system.kb, system.pipeline.bus)
             recorder.attach(system.scheduler)
             recorder.sample(0.0)
