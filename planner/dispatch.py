@@ -243,6 +243,8 @@ class Dispatcher:
                 return self.state
             if self.pending == Pending.REPLAN:  # planning failed or the plan was rejected: next tick
                 return self.state
+            if self.clock() < self._busy_until:  # the plan starts once its thinking time has passed
+                return self.state
         if self.executor.current is None:
             self._start_next(goals)
         else:

@@ -5,7 +5,7 @@ for, a ``description`` and a list of ``events``, each with ``at`` (simulated sec
 
 * ``doorbell``: the door bell rings (a sound event at the bell); with ``visitor`` that person appears outside
   the front door ``enter_after`` seconds later (default 5) and walks to room ``to`` (default: the bell's
-  room).
+  room); with ``enter: false`` they wait at the door, just inside it, instead of walking in.
 * ``say``: ``person`` says ``text`` (optional ``audio``: a WAV path relative to the scenario file).
 * ``move_object``: ``person`` walks to ``item``, takes it, carries it to furniture ``to`` and puts it there.
 * ``person_to``: ``person`` walks to ``room`` or onto ``furniture`` (``teleport: true``: is there at once).
@@ -37,7 +37,7 @@ SCENARIO_DIR = Path(__file__).resolve().parent / "erl_home" / "scenarios"
 
 EVENT_FIELDS: dict[str, tuple[set[str], set[str]]] = {
     # type: (required fields, optional fields)
-    "doorbell": (set(), {"visitor", "enter_after", "to"}),
+    "doorbell": (set(), {"visitor", "enter_after", "to", "enter"}),
     "say": ({"person", "text"}, {"audio"}),
     "move_object": ({"person", "item", "to"}, set()),
     "person_to": ({"person"}, {"room", "furniture", "teleport"}),

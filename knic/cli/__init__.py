@@ -30,6 +30,7 @@ COMMANDS: dict[str, tuple[str, str]] = {
     "serve": ("knic.cli.serve", "show the robot's mind live in a browser (facts, why, map, trace, goals)"),
     "ros": ("knic.cli.ros", "run KnIC as a ROS 2 node beside a robot (or knic sim --ros)"),
     "sim": ("knic.cli.sim", "run the simulated apartment as a ROS 2 node (--ros)"),
+    "sweep": ("knic.cli.sweep", "run the task suites over seeds and roles and print the success counts"),
 }
 
 

@@ -122,8 +122,9 @@ def run(args: argparse.Namespace) -> int:
     from knic.system import KnicSystem, RunConfig
 
     logging.getLogger("knic.scheduler").setLevel(logging.ERROR)  # overruns are counted, not printed
-    if not args.goal and not args.speech:
-        raise KnicError("knic run: give at least one --goal or --speech")
+    episode = task_episode(args)  # a task scenario (granny_annie): the episode drawn for the seed
+    if not args.goal and not args.speech and episode is None:
+        raise KnicError("knic run: give at least one --goal or --speech (or a task --scenario)")
     if args.max_sim_time <= 0:
         raise KnicError(f"knic run: --max-sim-time must be positive, got {args.max_sim_time}")
     for option, wavs in (("--speech", args.speech), ("--confirm-speech", args.confirm_speech)):
@@ -135,13 +136,14 @@ def run(args: argparse.Namespace) -> int:
     staged = StagedOutputs(args.journal, args.trace)  # refuses unusable outputs; touches no existing file
     if args.journal is not None:
         journal = staged.journal
-    listen = answer_source(args, role)  # refuses before anything is built when it cannot ask
+    # refuses before anything is built when it cannot ask (a task scenario's dialogue needs no answer source)
+    listen = answer_source(args, role) if args.goal or args.speech else None
     accepted = False
     trace_file = staged.trace.open("w", encoding="utf-8") if staged.trace else None
     try:
         config = RunConfig(
             world=args.world,
-            scenario=args.scenario,
+            scenario=episode.scenario if episode is not None else args.scenario,
             seed=args.seed,
             role=args.role,
             max_sim_time=args.max_sim_time,
@@ -150,6 +152,11 @@ def run(args: argparse.Namespace) -> int:
             gui=args.gui,
         )
         with KnicSystem(config) as system, serving(args, system, journal), ros_attached(args, system):
+            flow = None
+            if episode is not None:
+                from knic.system.granny_annie import start_granny_annie
+
+                flow = start_granny_annie(system, episode, role=args.role)
             dialogue = None
             if listen is not None:
                 dialogue = run_dialogue(system, listen, sys.stderr if args.json else sys.stdout)
@@ -172,12 +179,21 @@ def run(args: argparse.Namespace) -> int:
             goals = system.kb.goals()
             if not args.json:
                 print(f"knic run: world {args.world}, seed {args.seed}, role {args.role}")
+                if episode is not None:
+                    print(f'task: {episode.person} on the {episode.seat} will ask "{episode.request.text}"')
                 print("goals: " + " ".join(str(g) for g in goals))
                 system.trace.print_to(sys.stdout)
                 watch_perception(system, goals)
             result = system.run()
+            task_ok = flow is None or flow.outcome == "done"
+            if flow is not None and task_ok is False and result.success:
+                result.success = False
+                result.reason = f"the task ended {flow.outcome or 'unfinished'} ({flow.phase})"
             if args.json:
-                print(json.dumps(summary(result, texts), sort_keys=True))
+                out = summary(result, texts)
+                if flow is not None:
+                    out["task"] = task_summary(flow)
+                print(json.dumps(out, sort_keys=True))
             else:
                 state = "succeeded" if result.success else "failed"
                 print(
@@ -191,6 +207,33 @@ def run(args: argparse.Namespace) -> int:
             trace_file.close()
         staged.finish(keep=accepted)
     return 0
+
+
+def task_episode(args: argparse.Namespace) -> Any:
+    """The :class:`worlds.granny_annie.Episode` of ``--scenario`` for ``--seed`` when the scenario describes a
+    task (a ``task:`` section), else None.
+
+    Raises:
+        WorldError: unknown world or scenario, or a task the voice bank cannot voice.
+    """
+    if not args.scenario:
+        return None
+    from worlds.api import load_world
+    from worlds.granny_annie import episode
+    from worlds.scenario import load_scenario
+
+    scenario = load_scenario(args.scenario, load_world(args.world))
+    return episode(scenario, args.seed) if scenario.task is not None else None
+
+
+def task_summary(flow: Any) -> dict[str, Any]:
+    """The ``--json`` record of a task flow: where it ended, what was asked and which goals it added."""
+    return {
+        "phase": str(flow.phase),
+        "outcome": flow.outcome,
+        "goals": [str(g) for g in flow.goals],
+        "asks": flow.asks,
+    }
 
 
 class StagedOutputs:

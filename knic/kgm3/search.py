@@ -21,8 +21,9 @@ first). When no room is left at all, the entity has no candidate: a goal that ne
 dropped, so a search over the whole home ends. Once the entity is located anywhere, its candidates and its
 ``searched`` facts go. For an item asked for from a piece of furniture (a goal ``(taken_from ?o ?f)``) the
 furniture is an ASSUMED ``(possibly_on ?o ?f)`` candidate while the item is not located and that room was
-not searched for it. Entities considered: those with priors, those named in a goal, those that already have
-candidates, and those that were located once.
+not searched for it. A person some goal wants somewhere (``(person_at ?p ?room)``) is ``(to_accompany ?p)``
+(the robot may meet and guide only them). Entities considered: those with priors, those named in a goal,
+those that already have candidates, and those that were located once.
 """
 
 from __future__ import annotations
@@ -279,8 +280,10 @@ class CandidatesKP(KPPrime):
 
     def step(self, now: float) -> None:
         """Bring every tracked entity's possibly_at / possibly_on facts in line with :meth:`wanted` and
-        :meth:`wanted_on`; forget the searches for located entities."""
+        :meth:`wanted_on`; forget the searches for located entities; keep the accompany requests."""
         self._now = now
+        if "to_accompany" in self.kb.domain.predicates:
+            self.requests(now)
         for entity in self.entities():
             wanted = dict(self.wanted(entity))
             on = set(self.wanted_on(entity))
@@ -315,6 +318,18 @@ class CandidatesKP(KPPrime):
                     self.assert_fact(
                         "possibly_on", entity, furniture, at=now, assumed=True, support=(f"request:{entity}",)
                     )
+
+    def requests(self, now: float) -> None:
+        """``(to_accompany ?p)`` exactly for the people a goal wants somewhere."""
+        wanted = {g.args[0] for g in self.kb.goals() if g.predicate == "person_at"}
+        have = {f.args[0] for f in self.kb.facts("to_accompany")}
+        if wanted == have:
+            return
+        with self.kb.batch():
+            for person in sorted(have - wanted):
+                self.retract_fact("to_accompany", person, at=now)
+            for person in sorted(wanted - have):
+                self.assert_fact("to_accompany", person, at=now, support=("request",))
 
     def _assumed(self, entity: str, room: str) -> bool:
         prov = self.kb.why(Fact("possibly_at", (entity, room)))

@@ -418,3 +418,45 @@ def test_a_goal_retry_never_cancels_an_action_running_for_another_goal() -> None
     assert d.trace.of_kind(EventKind.SUCCESS)[0].action == running
     d.step()  # the move has ended: the goal comes back
     assert not d.dropped and d.trace.of_kind(EventKind.REPLAN)[0].goal == "(has annie tissues)"
+
+
+def test_a_repeated_identical_failure_retracts_the_belief_then_drops_the_goal() -> None:
+    clock = SimClock()
+    kb = erl_kb(clock, goals=["(object_at mug bedroom)"])
+    kb.add_fact("object_at", "mug", "kitchen", status=BeliefStatus.OBSERVED, source="kp_camera")
+    kb.add_fact("found", "mug", status=BeliefStatus.OBSERVED, source="kp_camera")
+    world = World(fail={"(pick r2d2 mug kitchen)": 99})
+    policy = RecoveryPolicy({Outcome.EXECUTION_FAILURE: RecoveryRule(0, Recovery.REPLAN)})
+    d = dispatcher(kb, world, policy=policy)
+
+    def believe_again(tick: int) -> None:  # perception keeps seeing the mug in the kitchen
+        clock.tick()
+        if not kb.holds("object_at", "mug", "kitchen") and not kb.holds("holding", "r2d2", "mug"):
+            kb.add_fact("object_at", "mug", "kitchen", status=BeliefStatus.OBSERVED, source="kp_camera")
+
+    removed: list[str] = []
+    kb.subscribe(
+        lambda c: (
+            removed.append(c.provenance.source)
+            if c.kind.value == "remove_fact" and c.name == "object_at"
+            else None
+        )
+    )
+    report = d.run(max_ticks=400, on_tick=believe_again)
+    reasons = [e.reason or "" for e in d.trace.of_kind(EventKind.REPLAN)]
+    assert any("failed the same way 2 times: retracting (object_at mug kitchen)" in r for r in reasons)
+    assert "dispatcher" in removed  # the belief the pick rested on was retracted by the recovery
+    # the fourth identical failure drops the goal instead of trying the same thing again and again
+    assert world.started.count("(pick r2d2 mug kitchen)") == 4
+    assert "failed the same way 4 times" in report.dropped["(object_at mug bedroom)"]
+
+
+def test_planning_time_passes_on_the_dispatcher_clock() -> None:
+    clock = SimClock()
+    kb = erl_kb(clock, goals=["(robot_at r2d2 kitchen)"])
+    d = dispatcher(kb, World(), planning_time_factor=1.0)
+    d.run(max_ticks=300, on_tick=clock.tick)
+    plan = d.trace.of_kind(EventKind.PLAN)[0]
+    first = d.trace.of_kind(EventKind.DISPATCH)[0]
+    assert d.thinking_s >= 0.1  # at least one tick of thought per plan, however fast the planner
+    assert first.time >= plan.time + d.thinking_s - 1e-9

@@ -14,6 +14,9 @@
 ; candidate furniture of an item asked for "from" that furniture; the sensing
 ; action search_furniture looks there and pick_from takes it from there,
 ; making (taken_from ?o ?f) true, the goal that keeps the request's source.
+; (to_accompany ?p): someone asked for ?p to be taken somewhere (a person_at
+; goal); only then does the robot meet and guide ?p, never to bring a person
+; to where an item is.
 (define (domain erl_home)
   (:requirements :strips :typing :negative-preconditions)
   ; light_on / light_off are kept complementary by the actions and by the device KP'.
@@ -37,6 +40,7 @@
     (searched ?e - entity ?l - room)
     (possibly_on ?o - item ?f - furniture)
     (taken_from ?o - item ?f - furniture)
+    (to_accompany ?p - person)
     (reported ?e - entity)
     (holding ?r - robot ?o - item)
     (hand_empty ?r - robot)
@@ -94,7 +98,7 @@
 
   (:action meet
     :parameters (?r - robot ?p - person ?l - room)
-    :precondition (and (robot_at ?r ?l) (person_at ?p ?l))
+    :precondition (and (robot_at ?r ?l) (person_at ?p ?l) (to_accompany ?p))
     :effect (escorting ?r ?p))
 
   (:action guide

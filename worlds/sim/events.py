@@ -80,8 +80,9 @@ def apply_event(
             people.enqueue(visitor, "wait", float(a.get("enter_after", 5.0)))
             people.enqueue(visitor, "appear", outside)
             people.enqueue(visitor, "straight", inside)
-            goal = sim.grid.nearest_free(*w.rooms[room].waypoint, 1.5)
-            people.go_to(visitor, [goal] if goal else [])
+            if a.get("enter", True):
+                goal = sim.grid.nearest_free(*w.rooms[room].waypoint, 1.5)
+                people.go_to(visitor, [goal] if goal else [])
     elif ev.type == "call":
         sim.hear(CALL_TEXT, speaker=a["person"])
     elif ev.type == "say":

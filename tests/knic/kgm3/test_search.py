@@ -100,7 +100,7 @@ def test_when_every_prior_room_is_explored_other_rooms_become_candidates(
 ) -> None:
     cands = CandidatesKP(Bus(), paper_kb, priors_from_world(paper_world), list(paper_world.rooms))
     for room in ("kitchen", "entrance", "living_room"):
-        paper_kb.add_fact("explored", room, source="dispatcher", at=1.0, status=BeliefStatus.EFFECT)
+        paper_kb.add_fact("explored", room, source="dispatcher", at=1.0, status=EFFECT)
     cands.step(2.0)
     assert candidates(paper_kb, "glasses") == {"bedroom"}
     why = paper_kb.why(Fact("possibly_at", ("glasses", "bedroom")))
@@ -117,3 +117,57 @@ def test_a_person_unseen_for_long_is_searched_where_last_seen_first(
     paper_kb.remove_fact("person_at", "annie", "kitchen", source="kp'.person_at", at=40.0)
     cands.step(40.0)
     assert candidates(paper_kb, "annie") == {"kitchen"}
+
+
+EFFECT = BeliefStatus.EFFECT
+
+
+def test_a_room_searched_for_one_entity_is_still_a_candidate_for_another(
+    home_kb: KnowledgeBase, home_world: World
+) -> None:
+    cands = CandidatesKP(Bus(), home_kb, priors_from_world(home_world), list(home_world.rooms))
+    cands.step(0.0)
+    assert "living_room" in candidates(home_kb, "tablet")
+    # the robot searched the living room for the tablet; annie (never located) may still be there
+    home_kb.add_fact(
+        "searched", "tablet", "living_room", source="dispatcher", at=1.0, status=BeliefStatus.EFFECT
+    )
+    cands.step(2.0)
+    assert "living_room" not in candidates(home_kb, "tablet")
+    assert "living_room" in candidates(home_kb, "annie")
+
+
+def test_a_search_covers_every_room_and_ends(home_kb: KnowledgeBase, home_world: World) -> None:
+    rooms = sorted(home_world.rooms)
+    cands = CandidatesKP(Bus(), home_kb, {}, rooms)  # no priors: every room not searched yet
+    home_kb.add_goal("has", "annie", "candle")
+    cands.step(0.0)
+    assert candidates(home_kb, "candle") == set(rooms)
+    for i, room in enumerate(rooms[:-1]):
+        home_kb.add_fact(
+            "searched", "candle", room, source="dispatcher", at=float(i), status=BeliefStatus.EFFECT
+        )
+    cands.step(10.0)
+    assert candidates(home_kb, "candle") == {rooms[-1]}
+    home_kb.add_fact(
+        "searched", "candle", rooms[-1], source="dispatcher", at=11.0, status=BeliefStatus.EFFECT
+    )
+    cands.step(12.0)
+    assert candidates(home_kb, "candle") == set()  # nothing left: a goal needing it is unreachable
+    # once located, the searches are forgotten (it may be moved and searched for again later)
+    home_kb.add_fact("object_at", "candle", "kitchen", source="kp'.object_at", at=13.0)
+    cands.step(13.0)
+    assert home_kb.facts("searched", "candle") == []
+
+
+def test_an_item_asked_for_from_a_furniture_is_assumed_on_it(
+    home_kb: KnowledgeBase, home_world: World
+) -> None:
+    cands = CandidatesKP(Bus(), home_kb, priors_from_world(home_world), list(home_world.rooms))
+    home_kb.add_goal("taken_from", "apple", "kitchen_cabinet")
+    cands.step(0.0)
+    why = home_kb.why(Fact("possibly_on", ("apple", "kitchen_cabinet")))
+    assert why is not None and why.status is BeliefStatus.ASSUMED
+    home_kb.add_fact("searched", "apple", "kitchen", source="dispatcher", at=1.0, status=EFFECT)
+    cands.step(2.0)
+    assert not home_kb.holds("possibly_on", "apple", "kitchen_cabinet")
