@@ -14,7 +14,7 @@ import numpy as np
 import numpy.typing as npt
 import pyoctomap
 
-from knic.spatial.keys import DEFAULT_RESOLUTION, EMPTY_KEYS, KEY_OFFSET, key_centers, keys_of
+from knic.spatial.keys import DEFAULT_RESOLUTION, EMPTY_KEYS, KEY_OFFSET, key_centers, keys_of, unique_keys
 from knic.units import Keys, Points
 
 
@@ -35,8 +35,10 @@ class EntityOctomap:
     rays cross), :meth:`miss` lowers the log-odds of every occupied voxel when the entity was not seen where
     the camera could see it, and octomap's clamping (``clamp_min`` .. ``clamp_max`` probability) bounds both,
     so long-standing evidence still yields to a few views without the entity. :attr:`keys` is read from the
-    tree itself (:meth:`occupied_keys`: its occupied leaves, distinct keys): what the KP' intersect with the
-    room and furniture volumes is the octomap's own state, not the latest cloud. While the entity has no
+    tree itself (its occupied voxels, distinct keys; every ``full_scan_every`` updates from all its leaves,
+    :meth:`occupied_keys`, in between by searching the tree for the voxels that can be occupied,
+    :meth:`occupied_among`): what the KP' intersect with the room and furniture volumes is the octomap's own
+    state, not the latest cloud. While the entity has no
     occupied voxel (the map was just reset, or misses emptied it), the keys are the centroid's.
     """
 
@@ -62,6 +64,10 @@ class EntityOctomap:
         self.updates = 0
         self.resets = 0
         self.misses = 0
+        #: every this many updates the keys are read from every leaf of the tree, between them from the
+        #: candidate voxels only (those occupied before and those the new cloud hit)
+        self.full_scan_every = 10
+        self._occupied: Keys = EMPTY_KEYS
 
     def update(
         self, points: Points, centroid: tuple[float, float, float], origin: Sequence[float] | None
@@ -70,6 +76,7 @@ class EntityOctomap:
         if self.anchor is None or math.dist(centroid, self.anchor) > self.reset_distance:
             if self.anchor is not None:
                 self.tree.clear()
+                self._occupied = EMPTY_KEYS
                 self.resets += 1
             self.anchor = centroid
         if len(points):
@@ -79,7 +86,12 @@ class EntityOctomap:
                 self.tree.insertPointCloud(
                     points, self.ray_origin(centroid, origin), -1.0, False, self.discretize
                 )
-        self.keys = self.occupied_keys()
+        if self.updates % self.full_scan_every == 0:
+            self.keys = self.occupied_keys()
+        else:  # the voxels that can be occupied now: those that were, and those this cloud hit
+            hit = keys_of(points, self.resolution)
+            self.keys = self.occupied_among(np.concatenate([self._occupied, hit]))
+        self._occupied = self.keys
         if len(self.keys) == 0:
             self.keys = keys_of(np.array([centroid], dtype=np.float64), self.resolution)
         self.updates += 1
@@ -91,12 +103,25 @@ class EntityOctomap:
         Called when a camera frame could see where the entity is and did not detect it. Returns how many
         voxels are still occupied; :attr:`keys` is refreshed from the tree (empty when none is left).
         """
-        occupied = self.occupied_keys()
+        occupied = self.occupied_among(self._occupied)
         if len(occupied):
             self.tree.updateNodes(key_centers(occupied, self.resolution), False)
         self.misses += 1
-        self.keys = self.occupied_keys()
+        self.keys = self._occupied = self.occupied_among(occupied)
         return len(self.keys)
+
+    def occupied_among(self, keys: Keys) -> Keys:
+        """The distinct ones of ``keys`` whose voxel the tree holds occupied (a tree search per voxel)."""
+        if len(keys) == 0:
+            return EMPTY_KEYS
+        candidates = unique_keys(keys)
+        search, occupied = self.tree.search, self.tree.isNodeOccupied
+        keep = []
+        for i, centre in enumerate(key_centers(candidates, self.resolution).tolist()):
+            node = search(centre)
+            if node is not None and occupied(node):
+                keep.append(i)
+        return candidates[keep] if len(keep) < len(candidates) else candidates
 
     def occupied_keys(self) -> Keys:
         """Distinct keys of the tree's occupied voxels (a pruned leaf stands for all the voxels under it)."""
