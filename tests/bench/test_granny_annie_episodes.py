@@ -105,7 +105,10 @@ def test_bank_commands_read_back_into_requests(world: World, vocab: Vocabulary) 
         ("(has annie glasses)",),
     ]
     source = requests_of_text("bring me an apple from the kitchen cabinet", candidates)
-    assert source is not None and source[0].goals == ("(has annie apple)",)
+    assert source is not None and source[0].goals == (
+        "(has annie apple)",
+        "(taken_from apple kitchen_cabinet)",
+    )
     assert requests_of_text("bring me an apple from the bed", candidates) is None  # not where it stands
     assert requests_of_text("locate the tablet and bring it to me", candidates) is None  # pronoun
     assert requests_of_text("bring me the remote and get me the apple", candidates) is None  # one bring

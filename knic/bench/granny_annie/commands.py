@@ -9,7 +9,8 @@ switch on/off a light (or a lexicon group)      ``(light_on d)`` / ``(light_off 
 set the dimmer to N percent                     ``(device_level d lN)``
 open / close / half open the blinds             ``(device_level d l100)`` / ``l0`` / ``l50``
 find / locate / look for / search for the X     ``(reported X)``
-bring me / get me / fetch me the X [from F]     ``(has annie X)``
+bring me / get me / fetch me the X             ``(has annie X)``
+bring me ... the X from F                       also ``(taken_from X F)`` (when the domain has it)
 lead / guide / escort / accompany P to the R    ``(person_at P R)``
 ==============================================  ==========================================
 
@@ -146,9 +147,11 @@ def draw_requests(
             verb = pick(rng, list(BRING_VERBS))
             text = f"{verb} the {phrases.of(rng, target)}"
             source = placements[target]
+            goals: tuple[str, ...] = (f"(has {ANNIE} {target})",)
             if rng.random() < SOURCE_P and source in phrases.by_symbol:
                 text += f" from the {phrases.of(rng, source)}"
-            request = Request(kind, text, (f"(has {ANNIE} {target})",), (target,))
+                goals += _source_goal(vocab, target, source)
+            request = Request(kind, text, goals, (target,))
         else:
             here = world.room_of(*world.people[target].position)
             rooms = [r for r in sorted(world.rooms) if r != here and r in phrases.by_symbol]
@@ -159,6 +162,11 @@ def draw_requests(
         out.append(request)
         used.update(request.targets)
     return out
+
+
+def _source_goal(vocab: Vocabulary, item: str, furniture: str) -> tuple[str, ...]:
+    """``(taken_from item furniture)`` when the domain keeps a request's source, else nothing."""
+    return (f"(taken_from {item} {furniture})",) if "taken_from" in vocab.predicates else ()
 
 
 def _devices(world: World, phrases: _Phrases, used: set[str]) -> list[str]:
@@ -269,8 +277,11 @@ def candidate_requests(world: World, vocab: Vocabulary, placements: dict[str, st
                 for verb in BRING_VERBS:
                     request = Request("bring", "", (f"(has {ANNIE} {item})",), (item,))
                     add(f"{verb} {det} {phrase}", request)
+                    sourced = Request(
+                        "bring", "", request.goals + _source_goal(vocab, item, placements[item]), (item,)
+                    )
                     for source in phrases.by_symbol.get(placements[item], []):
-                        add(f"{verb} {det} {phrase} from the {source}", request)
+                        add(f"{verb} {det} {phrase} from the {source}", sourced)
     for person in _people(world, phrases, set()):
         here = world.room_of(*world.people[person].position)
         for room in sorted(world.rooms):
