@@ -17,7 +17,15 @@ import math
 
 from actions.base import ActionStatus
 from actions.erl.common import ErlAction, NavGoal, to_point
-from actions.erl.context import ErlContext, Point, room_map, standoff_points, wrap
+from actions.erl.context import (
+    ErlContext,
+    FurnitureMap,
+    Point,
+    furniture_map,
+    room_map,
+    standoff_points,
+    wrap,
+)
 from core.robot import CommandResult
 
 #: metres between the robot and a person it approaches, tried in this order: inside the hand-over reach (the
@@ -67,11 +75,46 @@ class MoveAction(ErlAction):
         return ActionStatus.SUCCEEDED
 
 
+#: metres between a furniture's edge and the robot's centre beside someone sitting or lying on it
+EDGE_CLEARANCE = 0.35
+
+
+def furniture_under(ctx: ErlContext, x: float, y: float) -> FurnitureMap | None:
+    """The anchored furniture whose footprint holds ``(x, y)`` (someone sitting or lying on it), or None."""
+    for name in ctx.kb.instances("furniture"):
+        known = furniture_map(ctx.kb, name)
+        if known is None:
+            continue
+        c, s = math.cos(known.yaw), math.sin(known.yaw)
+        dx, dy = x - known.position[0], y - known.position[1]
+        lx, ly = c * dx + s * dy, -s * dx + c * dy
+        if abs(lx) <= known.size[0] / 2 and abs(ly) <= known.size[1] / 2:
+            return known
+    return None
+
+
+def beside_furniture(f: FurnitureMap, x: float, y: float) -> list[Point]:
+    """Points just off each side of ``f`` level with ``(x, y)``, the sides nearest its middle first.
+
+    Someone on a bed or a sofa is closest to the robot across its long sides; the perceived position of a
+    person lying there leans towards the side the camera saw them from, so ranking the sides by the
+    furniture's own half-widths (not by the perceived point) keeps that bias from choosing a far side.
+    """
+    c, s = math.cos(f.yaw), math.sin(f.yaw)
+    dx, dy = x - f.position[0], y - f.position[1]
+    lx, ly = c * dx + s * dy, -s * dx + c * dy
+    hx, hy = f.size[0] / 2 + EDGE_CLEARANCE, f.size[1] / 2 + EDGE_CLEARANCE
+    local = [(lx, -hy, hy), (lx, hy, hy), (-hx, ly, hx), (hx, ly, hx)]
+    ranked = sorted(local, key=lambda p: (p[2], math.hypot(p[0] - lx, p[1] - ly)))
+    return [(f.position[0] + c * px - s * py, f.position[1] + s * px + c * py) for px, py, _ in ranked]
+
+
 def approach_person(ctx: ErlContext, person: str, what: str, closer: int = 0) -> NavGoal | None:
     """A started navigation goal to a free pose near the perceived person, facing them; None when the person
     was never perceived or no pose around them is reachable.
 
-    Poses on the rings of :data:`PERSON_STANDOFFS` are tried nearest-to-the-robot first, ring by ring;
+    Someone on a piece of furniture is approached from beside it (:func:`beside_furniture`) first. Then
+    poses on the rings of :data:`PERSON_STANDOFFS` are tried nearest-to-the-robot first, ring by ring;
     ``closer`` > 0 (a re-approach after a refused hand-over) starts with the closest ring."""
     where = ctx.perceived.position(person)
     if where is None:
@@ -80,6 +123,10 @@ def approach_person(ctx: ErlContext, person: str, what: str, closer: int = 0) ->
     target = (where[0], where[1])
     rings = sorted(PERSON_STANDOFFS) if closer > 0 else list(PERSON_STANDOFFS)
     starts = []
+    seat = furniture_under(ctx, target[0], target[1])
+    if seat is not None:  # sitting or lying on furniture: stand beside it, level with them
+        for p in beside_furniture(seat, target[0], target[1]):
+            starts.append(to_point(ctx, p, math.atan2(target[1] - p[1], target[0] - p[0])))
     for ring in rings:
         for p in standoff_points(target, ring, (pose.x, pose.y), count=16)[:10]:
             yaw = math.atan2(target[1] - p[1], target[0] - p[0])
