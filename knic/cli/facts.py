@@ -21,6 +21,7 @@ import math
 import sys
 import time
 from datetime import UTC, datetime
+from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from core.errors import KnicError
@@ -73,6 +74,10 @@ def run(args: argparse.Namespace) -> int:
         from knic.cli.bounded import positive_seconds
 
         positive_seconds(args.poll, "--poll")
+    if args.watch:
+        from knic.cli.outputs import running_journal
+
+        args.journal = running_journal(Path(args.journal))
     kb = KnowledgeBase.from_journal(args.journal, read_only=True)
     try:
         if args.predicate is not None and args.predicate not in kb.domain.predicates:

@@ -29,6 +29,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from core.errors import KnicError
+from knic.cli.outputs import running_journal
 
 if TYPE_CHECKING:
     from knic.system import KnicSystem
@@ -90,18 +91,6 @@ def run(args: argparse.Namespace) -> int:
     finally:
         server.stop()
     return 0
-
-
-def running_journal(path: Path) -> Path:
-    """``path``, or while ``knic run --journal path`` runs, the file it writes (``.NAME.<pid>.partial`` next
-    to it, renamed to ``path`` when the run ends; an open reader keeps following it across the rename)."""
-    if path.exists():
-        return path
-    partial = sorted(path.parent.glob(f".{path.name}.*.partial"), key=lambda p: p.stat().st_mtime)
-    if partial:
-        print(f"knic: following the running run's {partial[-1].name}", file=sys.stderr)
-        return partial[-1]
-    return path
 
 
 def _journal_server(args: argparse.Namespace, world: Any) -> Any:

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import os
 import shutil
 import subprocess
 import sys
@@ -44,3 +45,15 @@ def test_a_running_runs_staged_journal_is_followed(tmp_path: Path, writer: Write
     assert running_journal(final) == staged
     final.write_bytes(staged.read_bytes())
     assert running_journal(final) == final
+
+
+def test_a_new_run_is_followed_over_the_last_runs_journal(tmp_path: Path, writer: Writer) -> None:
+    final = tmp_path / "run3.sqlite"
+    shutil.copy(writer.journal, final)  # the journal the previous run left
+    staged = tmp_path / ".run3.sqlite.4343.partial"
+    shutil.copy(writer.journal, staged)
+    os.utime(final, (1_000_000, 1_000_000))
+    os.utime(staged, (2_000_000, 2_000_000))
+    assert running_journal(final) == staged  # the run in progress, not the stale file
+    os.utime(final, (3_000_000, 3_000_000))
+    assert running_journal(final) == final  # a left-over partial older than the journal is ignored
