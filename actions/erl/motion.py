@@ -94,19 +94,20 @@ def furniture_under(ctx: ErlContext, x: float, y: float) -> FurnitureMap | None:
 
 
 def beside_furniture(f: FurnitureMap, x: float, y: float) -> list[Point]:
-    """Points just off each side of ``f`` level with ``(x, y)``, the sides nearest its middle first.
+    """Points just off both long sides of ``f``, level with ``(x, y)``.
 
     Someone on a bed or a sofa is closest to the robot across its long sides; the perceived position of a
-    person lying there leans towards the side the camera saw them from, so ranking the sides by the
-    furniture's own half-widths (not by the perceived point) keeps that bias from choosing a far side.
+    person lying there leans towards the side the camera saw them from, so choosing the side by the
+    furniture's shape (not by the perceived point) keeps that bias from choosing an end, where the person is
+    out of reach. A long side that is blocked (a wall, a table) fails at once; the caller then tries rings
+    around the person.
     """
     c, s = math.cos(f.yaw), math.sin(f.yaw)
     dx, dy = x - f.position[0], y - f.position[1]
     lx, ly = c * dx + s * dy, -s * dx + c * dy
     hx, hy = f.size[0] / 2 + EDGE_CLEARANCE, f.size[1] / 2 + EDGE_CLEARANCE
-    local = [(lx, -hy, hy), (lx, hy, hy), (-hx, ly, hx), (hx, ly, hx)]
-    ranked = sorted(local, key=lambda p: (p[2], math.hypot(p[0] - lx, p[1] - ly)))
-    return [(f.position[0] + c * px - s * py, f.position[1] + s * px + c * py) for px, py, _ in ranked]
+    local = [(lx, -hy), (lx, hy)] if f.size[0] >= f.size[1] else [(-hx, ly), (hx, ly)]
+    return [(f.position[0] + c * px - s * py, f.position[1] + s * px + c * py) for px, py in local]
 
 
 def approach_person(ctx: ErlContext, person: str, what: str, closer: int = 0) -> NavGoal | None:

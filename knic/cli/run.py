@@ -73,6 +73,14 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--speech", action="append", default=[], metavar="FILE.wav", help="a spoken command (repeatable)"
     )
+    parser.add_argument(
+        "--goal-at",
+        action="append",
+        default=[],
+        metavar="S:TEXT",
+        help="a goal given while the robot runs, at S simulated seconds, through the goal intake "
+        "(repeatable)",
+    )
     parser.add_argument("--speaker", default="annie", help='the person "me" refers to (default annie)')
     parser.add_argument(
         "--role", default="companion", help="robot role from knic/roles.yaml (default companion)"
@@ -123,7 +131,8 @@ def run(args: argparse.Namespace) -> int:
 
     logging.getLogger("knic.scheduler").setLevel(logging.ERROR)  # overruns are counted, not printed
     episode = task_episode(args)  # a task scenario (granny_annie): the episode drawn for the seed
-    if not args.goal and not args.speech and episode is None:
+    later = timed_goals(args.goal_at)
+    if not args.goal and not args.speech and episode is None and not later:
         raise KnicError("knic run: give at least one --goal or --speech (or a task --scenario)")
     if args.max_sim_time <= 0:
         raise KnicError(f"knic run: --max-sim-time must be positive, got {args.max_sim_time}")
@@ -184,6 +193,7 @@ def run(args: argparse.Namespace) -> int:
                 print("goals: " + " ".join(str(g) for g in goals))
                 system.trace.print_to(sys.stdout)
                 watch_perception(system, goals)
+            start_timed_goals(system, later, args.speaker, source, args.json)
             result = system.run()
             task_ok = flow is None or flow.outcome == "done"
             if flow is not None and task_ok is False and result.success:
@@ -207,6 +217,43 @@ def run(args: argparse.Namespace) -> int:
             trace_file.close()
         staged.finish(keep=accepted)
     return 0
+
+
+def timed_goals(specs: list[str]) -> list[tuple[float, str]]:
+    """``--goal-at S:TEXT`` options as (time, text), earliest first.
+
+    Raises:
+        KnicError: an option is not ``S:TEXT`` with S a time in seconds >= 0.
+    """
+    out = []
+    for spec in specs:
+        head, sep, text = spec.partition(":")
+        try:
+            at = float(head)
+        except ValueError:
+            at = -1.0
+        if not sep or at < 0 or not text.strip():
+            raise KnicError(f"knic run: --goal-at {spec!r} is not S:TEXT (e.g. 30:switch on the light)")
+        out.append((at, text.strip()))
+    return sorted(out)
+
+
+def start_timed_goals(
+    system: KnicSystem, later: list[tuple[float, str]], speaker: str, source: str, quiet: bool
+) -> None:
+    """Schedule the ``--goal-at`` goals (:class:`knic.system.timed.TimedGoals`); replies printed unless
+    ``quiet``."""
+    if not later:
+        return
+    from knic.intake import GoalIntake
+    from knic.system.timed import TimedGoals
+
+    def show(now: float, text: str, reply: Any) -> None:
+        if not quiet:
+            print(f"{now:9.2f}  intake        {reply.outcome.value}: {text} -> {reply.reply}", flush=True)
+
+    intake = GoalIntake(system.kb, world_vocabulary(system), say=system.context.say)
+    system.add_flow(TimedGoals(system, intake, later, speaker=speaker, source=source, on_reply=show))
 
 
 def task_episode(args: argparse.Namespace) -> Any:
