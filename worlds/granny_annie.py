@@ -10,12 +10,13 @@ A scenario with a ``task:`` section (``worlds/erl_home/scenarios/granny_annie.ya
       answer: "yes"                 # what she answers when the robot repeats her request back
       bank: voices/bank.yaml        # the voice bank, relative to the world folder (default: the ERL bank)
 
-:func:`episode` turns it into concrete events for one seed (Annie seated, her call) and the recordings she
-will say. :class:`AnnieActor` is Annie herself: she listens to what the robot says (as any person in the
-room hears it) and, a moment later, speaks the recorded request when the robot asks what she needs, and the
-recorded answer when it asks whether it understood her (said plainly, "yes", when it asks her to answer yes
-or no). The robot hears both through its microphone only
-(the recordings reach it as audio); nothing here is read by the robot's side.
+:func:`episode` turns it into concrete events for one seed (Annie seated) and the recordings she will say.
+:class:`AnnieActor` is Annie herself: she calls the robot from her tablet at the episode's call time,
+listens to what the robot says (as any person in the room hears it) and, a moment later, speaks the
+recorded request when the robot asks what she needs, and the recorded answer when it asks whether it
+understood her (said plainly, "yes", when it asks her to answer yes or no). The robot hears both through its
+microphone only (the recordings reach it as audio); nothing here is read by the robot's side.
+:func:`custom_episode` makes an episode for a run set up elsewhere (a benchmark's world and scenario).
 """
 
 from __future__ import annotations
@@ -31,7 +32,7 @@ import yaml
 from core.errors import WorldError
 from core.robot import Utterance
 from worlds.model import World
-from worlds.scenario import Event, Scenario
+from worlds.scenario import CALL_TEXT, Event, Scenario
 
 #: the voice bank shipped with the ERL apartment
 DEFAULT_BANK = Path(__file__).resolve().parent / "erl_home" / "voices" / "bank.yaml"
@@ -113,7 +114,8 @@ class Episode:
         request: the recording of her request.
         answer: the recording of her answer to the robot's repeat-back.
         plain_answer: the same answer said plainly ("yes"), when the robot asks her to answer yes or no.
-        scenario: the scenario with her seat and call as events, ready for the simulation.
+        scenario: the scenario with her seat as an event, ready for the simulation.
+        call_at: when she calls from the tablet (simulated seconds; she makes the call, see AnnieActor).
     """
 
     seed: int
@@ -123,6 +125,7 @@ class Episode:
     answer: VoiceClip
     plain_answer: VoiceClip
     scenario: Scenario
+    call_at: float = 2.0
 
 
 def episode(scenario: Scenario, seed: int, *, request: str | None = None, seat: str | None = None) -> Episode:
@@ -167,12 +170,12 @@ def episode(scenario: Scenario, seed: int, *, request: str | None = None, seat: 
     events: list[Event] = []
     if chosen_seat:
         events.append(Event(0.0, "person_to", {"person": person, "furniture": chosen_seat, "teleport": True}))
-    events.append(Event(float(task.get("call_at", 2.0)), "call", {"person": person}))
     events += list(scenario.events)
     events.sort(key=lambda e: e.at)
     concrete = Scenario(scenario.name, scenario.description, tuple(events), scenario.source, dict(task))
     plain = min(answers, key=lambda c: (len(c.text.split()), c.text))
-    return Episode(seed, person, chosen_seat, clip, answer, plain, concrete)
+    call_at = float(task.get("call_at", 2.0))
+    return Episode(seed, person, chosen_seat, clip, answer, plain, concrete, call_at)
 
 
 class SpeechWorld(Protocol):
@@ -215,11 +218,17 @@ class AnnieActor:
         self.delay_s = delay_s
         self.hears = hears or (lambda: True)
         self.said: list[tuple[float, str]] = []
+        self.called = False
         self._seen = 0
         self._due: list[tuple[float, VoiceClip]] = []
 
     def step(self, now: float) -> None:
-        """React to what the robot said since the last step; speak what is due."""
+        """Call at the episode's call time; react to what the robot said since the last step; speak what is
+        due."""
+        if not self.called and now >= self.episode.call_at:
+            self.called = True
+            self.world.hear(CALL_TEXT, speaker=self.episode.person)  # the tablet call, where she sits
+            self.said.append((now, CALL_TEXT))
         robot_said = self.world.spoken()
         for utterance in robot_said[self._seen :]:
             if self.hears():
@@ -227,7 +236,8 @@ class AnnieActor:
         self._seen = len(robot_said)
         while self._due and self._due[0][0] <= now:
             _, clip = self._due.pop(0)
-            self.world.hear(clip.text, speaker=self.episode.person, audio_path=str(clip.file))
+            audio = str(clip.file) if clip.file.is_file() else None
+            self.world.hear(clip.text, speaker=self.episode.person, audio_path=audio)
             self.said.append((now, clip.text))
 
     def _react(self, text: str, now: float) -> None:
@@ -237,6 +247,39 @@ class AnnieActor:
             self._due.append((now + self.delay_s, self.episode.answer))
         elif any(p in text for p in ASKS_PLAIN_ANSWER):
             self._due.append((now + self.delay_s, self.episode.plain_answer))
+
+
+def clip_for(
+    text: str, person: str, kind: str, audio: str | Path | None, bank_path: Path = DEFAULT_BANK
+) -> VoiceClip:
+    """A clip for ``text``: the given recording, else the bank's recording of that text by ``person``, else
+    the words alone (no audio: the robot hears the text, as typed)."""
+    if audio is not None:
+        return VoiceClip(Path(audio), person, kind, text)
+    for clip in load_bank(bank_path) if bank_path.is_file() else []:
+        if clip.speaker == person and clip.text == text.strip().lower():
+            return clip
+    return VoiceClip(Path(), person, kind, text)
+
+
+def custom_episode(
+    person: str,
+    request: str,
+    *,
+    request_audio: str | Path | None = None,
+    answer: str = "yes",
+    answer_audio: str | Path | None = None,
+    call_at: float = 2.0,
+    scenario: Scenario | None = None,
+    seat: str = "",
+) -> Episode:
+    """An episode for a run that is already set up (a benchmark's own world and scenario): who calls, when,
+    what they ask (a recording or the words) and answer."""
+    ask = clip_for(request, person, "request", request_audio)
+    said = clip_for(answer, person, answer, answer_audio)
+    plain = clip_for(answer, person, answer, None)
+    base = scenario or Scenario("custom", "", ())
+    return Episode(-1, person, seat, ask, said, plain, base, call_at)
 
 
 def requests_of(bank: Sequence[VoiceClip], person: str) -> list[str]:

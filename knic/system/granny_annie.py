@@ -342,3 +342,23 @@ def granny_annie_system(
         system.close()
         raise
     return system, flow, drawn
+
+
+def start_with_request(
+    system: KnicSystem,
+    request: str,
+    *,
+    person: str = "annie",
+    request_audio: str | Path | None = None,
+    answer: str = "yes",
+    call_at: float = 2.0,
+    role: str | None = None,
+) -> GrannyAnnieFlow:
+    """Start a Granny Annie episode in a run set up elsewhere (a benchmark's own world file and scenario):
+    ``person`` calls at ``call_at``, asks ``request`` (the recording ``request_audio``, else the voice bank's
+    recording of those words, else the words as text) and answers ``answer`` (yes or no) when the robot
+    repeats the request back. Call ``system.run()`` afterwards; the flow tells how it ended."""
+    from worlds.granny_annie import custom_episode
+
+    episode = custom_episode(person, request, request_audio=request_audio, answer=answer, call_at=call_at)
+    return start_granny_annie(system, episode, role=role)

@@ -22,7 +22,7 @@ def test_episodes_are_drawn_per_seed_from_the_voice_bank() -> None:
     assert first.request.file.is_file() and first.answer.kind == "yes" and first.plain_answer.text == "yes"
     assert first.seat in ("bed", "sofa")
     kinds = [(e.type, e.args.get("person")) for e in first.scenario.events]
-    assert ("person_to", "annie") in kinds and ("call", "annie") in kinds
+    assert ("person_to", "annie") in kinds and first.call_at == 2.0
     fixed = episode(scenario, 0, request="get me the tablet", seat="sofa")
     assert fixed.request.text == "get me the tablet" and fixed.seat == "sofa"
     with pytest.raises(WorldError, match="no request 'sing a song'"):
@@ -62,10 +62,15 @@ def test_annie_answers_the_robot_with_her_recordings() -> None:
     ep = episode(scenario, 1)
     room = Room()
     annie = AnnieActor(room, ep, delay_s=1.0)
-    room.robot.append(Utterance("Hello Annie, what can I do for you?", "r2d2", 0.0))
     annie.step(0.0)
+    assert room.heard == []
+    annie.step(2.0)  # her tablet call
+    assert room.heard == [(CALL_TEXT, "annie", None)]
+    room.heard.clear()
+    room.robot.append(Utterance("Hello Annie, what can I do for you?", "r2d2", 0.0))
+    annie.step(2.0)
     assert room.heard == []  # she takes a moment
-    annie.step(1.0)
+    annie.step(3.0)
     assert room.heard == [(ep.request.text, "annie", str(ep.request.file))]
     room.robot.append(Utterance("You asked me to switch on the lights. Is that right?", "r2d2", 2.0))
     annie.step(2.0)
@@ -74,4 +79,3 @@ def test_annie_answers_the_robot_with_her_recordings() -> None:
     annie.step(4.0)
     annie.step(5.0)
     assert [h[0] for h in room.heard[1:]] == [ep.answer.text, "yes"]
-    assert CALL_TEXT == "tablet call"
