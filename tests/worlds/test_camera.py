@@ -129,3 +129,44 @@ def test_simulation_satisfies_the_api_protocol(make_sim: Callable[..., Simulatio
     oracle: Oracle = sim
     assert isinstance(sim, SimulationAPI) and isinstance(robot, Robot) and isinstance(oracle, Oracle)
     assert sim.robot_name == "r2d2" and sim.time == 0.0
+
+
+def test_camera_pose_comes_from_the_localisation_estimate(make_sim: Callable[..., Simulation]) -> None:
+    import math
+
+    from worlds.simulation import CAMERA_FORWARD
+
+    sim = make_sim("erl_home", noise=NoiseConfig(pose_noise_xy=0.3, pose_noise_yaw=0.05, miss_rate=0.0))
+    frame = sim.camera_frame()
+    true = sim.true_robot_pose()
+    est = sim._estimate  # the estimate the frame was deprojected with
+    assert est is not None and est.stamp == frame.stamp
+    cx, cy, _ = frame.camera_pose.position
+    assert cx == pytest.approx(est.x + CAMERA_FORWARD * math.cos(est.yaw))
+    assert cy == pytest.approx(est.y + CAMERA_FORWARD * math.sin(est.yaw))
+    offset = math.hypot(
+        cx - (true.x + CAMERA_FORWARD * math.cos(true.yaw)),
+        cy - (true.y + CAMERA_FORWARD * math.sin(true.yaw)),
+    )
+    assert offset == pytest.approx(math.hypot(est.x - true.x, est.y - true.y), abs=0.02) and offset > 0.0
+    perfect = make_sim("erl_home")
+    px, py, _ = perfect.camera_frame().camera_pose.position
+    t = perfect.true_robot_pose()
+    assert (px, py) == pytest.approx(
+        (t.x + CAMERA_FORWARD * math.cos(t.yaw), t.y + CAMERA_FORWARD * math.sin(t.yaw))
+    )
+
+
+def test_sounds_are_localised_with_noise(make_sim: Callable[..., Simulation]) -> None:
+    import math
+
+    noisy = make_sim("erl_home", noise=NoiseConfig(sound_noise_xy=0.3, sound_noise_per_m=0.0))
+    perfect = make_sim("erl_home")
+    bell = next(d for d in noisy.world.devices.values() if d.kind == "bell")
+    for sim in (noisy, perfect):
+        sim.ring_bell()
+    (heard,) = noisy.poll_sounds()
+    (exact,) = perfect.poll_sounds()
+    assert exact.position == bell.position
+    assert 0.0 < math.dist(heard.position[:2], bell.position[:2]) < 1.5
+    assert noisy.sounds_made()[0].position == bell.position  # the referee keeps the true source
