@@ -16,6 +16,7 @@ Examples::
 from __future__ import annotations
 
 import argparse
+import dataclasses
 import json
 import math
 import sys
@@ -165,11 +166,15 @@ def _why(kb: KnowledgeBase, state: State, fact: Fact, as_json: bool) -> int:
     history = [
         c for c in kb.changes() if c.fact == fact and c.seq <= state.seq and c.kind.value.endswith("_fact")
     ]
+    from knic.kgm3.fusion import claims_from
+
+    sources = claims_from(history, fact, prov, state.time if history else 0.0)
     if as_json:
         out: dict[str, Any] = {"fact": str(fact), "holds": prov is not None}
         if prov is not None:
             out.update(_record(fact, prov))
         out["history"] = [_change_record(c) for c in history]
+        out["sources"] = [dataclasses.asdict(c) for c in sources]
         print(json.dumps(out))
     elif prov is None:
         print(
@@ -184,6 +189,12 @@ def _why(kb: KnowledgeBase, state: State, fact: Fact, as_json: bool) -> int:
         )
         for c in history:
             print(f"  {c.describe()}")
+    for claim in [] if as_json else sources:  # every source's latest claim, heaviest first (knic.kgm3.fusion)
+        print(
+            f"  source {claim.source}: {'asserts' if claim.holds else 'retracts'} it, {claim.status}, "
+            f"confidence {claim.confidence:g}, weight now {claim.weight:g}"
+            + (" (the belief)" if claim.current else "")
+        )
     return 0
 
 

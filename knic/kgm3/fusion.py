@@ -19,11 +19,11 @@ weight now: what ``knic facts --why`` shows as the fact's sources.
 
 from __future__ import annotations
 
-from collections.abc import Callable
+from collections.abc import Callable, Iterable
 from dataclasses import dataclass
 
 from knowledge_base import BeliefStatus, Fact, KnowledgeBase
-from knowledge_base.model import Provenance
+from knowledge_base.model import Change, Provenance
 
 #: how much a claim of each status counts, before confidence and age
 STATUS_WEIGHT: dict[BeliefStatus, float] = {
@@ -108,12 +108,23 @@ class Claim:
 
 
 def claims(kb: KnowledgeBase, fact: Fact, now: float, half_life_s: float = 60.0) -> list[Claim]:
-    """Every source's latest claim about ``fact`` from the history, heaviest first."""
+    """Every source's latest claim about ``fact`` from the knowledge base's history, heaviest first."""
+    return claims_from(kb.changes(), fact, kb.why(fact), now, half_life_s)
+
+
+def claims_from(
+    changes: Iterable[Change],
+    fact: Fact,
+    standing: Provenance | None,
+    now: float,
+    half_life_s: float = 60.0,
+) -> list[Claim]:
+    """Every source's latest claim about ``fact`` in ``changes`` (a history, oldest first), heaviest at
+    ``now`` first; ``standing`` is the fact's belief (None: it does not hold)."""
     latest: dict[str, tuple[bool, Provenance]] = {}
-    for change in kb.changes():
+    for change in changes:
         if change.name == fact.predicate and change.args == fact.args and change.kind.value.endswith("_fact"):
             latest[change.provenance.source] = (change.kind.value == "add_fact", change.provenance)
-    standing = kb.why(fact)
     out = [
         Claim(
             source,

@@ -2,6 +2,11 @@
 
 from __future__ import annotations
 
+import json
+from pathlib import Path
+
+import pytest
+
 from knic.kgm3.fusion import claims, install
 from knowledge_base import BeliefStatus, Fact, KnowledgeBase
 
@@ -100,3 +105,29 @@ def test_claims_list_every_source(paper_kb: KnowledgeBase) -> None:
     assert [c.source for c in found] == ["kp'.object_at", "dispatcher"]
     assert found[0].current and found[0].holds and not found[1].current
     assert found[0].weight > found[1].weight
+
+
+def test_facts_why_lists_every_source(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    from knic.cli import main
+    from tests.knowledge_base.conftest import ERL_DOMAIN, PAPER_PROBLEM, FakeClock
+
+    path = tmp_path / "run.sqlite"
+    clock = FakeClock(0.0)
+    kb = KnowledgeBase.from_pddl(ERL_DOMAIN, PAPER_PROBLEM, path, clock=clock)
+    clock.t = 5.0
+    kb.add_fact("object_at", "glasses", "kitchen", source="dispatcher", status="effect")
+    clock.t = 12.5
+    kb.add_fact("object_at", "glasses", "kitchen", source="kp'.object_at", status="observed", confidence=0.9)
+    kb.close()
+    assert main(["facts", "--journal", str(path), "--why", "(object_at glasses kitchen)", "--json"]) == 0
+    answer = json.loads(capsys.readouterr().out)
+    assert [(s["source"], s["status"], s["current"]) for s in answer["sources"]] == [
+        ("kp'.object_at", "observed", True),
+        ("dispatcher", "effect", False),
+    ]
+    assert main(["facts", "--journal", str(path), "--why", "(object_at glasses kitchen)"]) == 0
+    text = capsys.readouterr().out
+    assert (
+        "source kp'.object_at: asserts it, observed" in text
+        and "source dispatcher: asserts it, effect" in text
+    )
