@@ -19,7 +19,7 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-from core.errors import PDDLParseError, PDDLValidationError
+from core.errors import JournalError, PDDLParseError, PDDLValidationError
 from core.inputs import read_text_limited, safe_yaml
 
 __all__ = ["MAX_PDDL_BYTES", "DomainModel", "meta_path_for", "parse_with_up", "read_pddl"]
@@ -212,6 +212,29 @@ class DomainModel:
             "functions": {k: [list(p) for p in v] for k, v in self.functions.items()},
             "actions": list(self.actions),
         }
+
+    @classmethod
+    def from_journal_meta(cls, path: str | Path, meta: Mapping[str, str]) -> DomainModel:
+        """The domain a journal stored in its meta table (``domain_text``, ``meta_text``, ``domain_summary``).
+
+        Raises:
+            JournalError: not a KnIC journal (no domain stored) or a corrupt summary.
+            PDDLParseError, PDDLValidationError: the stored domain no longer loads.
+        """
+        import json
+
+        if "domain_text" not in meta:
+            raise JournalError(f"{path}: not a KnIC journal (no domain stored)")
+        source = f"{path}:domain"
+        if not meta.get("domain_summary"):
+            return cls.from_text(
+                meta["domain_text"], meta.get("meta_text", ""), source=source, meta_source=f"{path}:meta"
+            )
+        try:
+            summary = json.loads(meta["domain_summary"])
+        except ValueError:
+            raise JournalError(f"{path}: corrupt domain summary") from None
+        return cls.from_summary(summary, meta["domain_text"], meta.get("meta_text", ""), source=source)
 
     @classmethod
     def from_summary(

@@ -146,22 +146,7 @@ class KnowledgeBase(KnowledgeQueries):
             JournalError: missing file or not a KnIC journal.
             PDDLParseError, PDDLValidationError: the stored domain no longer loads.
         """
-        meta = SqliteJournal.read_meta(path)
-        if "domain_text" not in meta:
-            raise JournalError(f"{path}: not a KnIC journal (no domain stored)")
-        source = f"{path}:domain"
-        if meta.get("domain_summary"):
-            try:
-                summary = json.loads(meta["domain_summary"])
-            except ValueError:
-                raise JournalError(f"{path}: corrupt domain summary") from None
-            domain = DomainModel.from_summary(
-                summary, meta["domain_text"], meta.get("meta_text", ""), source=source
-            )
-        else:
-            domain = DomainModel.from_text(
-                meta["domain_text"], meta.get("meta_text", ""), source=source, meta_source=f"{path}:meta"
-            )
+        domain = DomainModel.from_journal_meta(path, SqliteJournal.read_meta(path))
         store = SqliteJournal(path, State(instances=dict(domain.constants)), read_only=read_only)
         return cls(domain, journal=store, clock=clock, read_only=read_only)
 
