@@ -29,11 +29,13 @@ of work, in this order:
    (retry the step, replan, or drop the goals the step served).
 
 Time is the dispatcher's clock (default ``kb.now``: simulated seconds in the closed loop). Thinking takes
-time on that clock: with ``planning_time_factor`` > 0 the wall time a planner call took (times the factor,
-rounded up to 0.1 s) passes on the clock before the plan's first action starts, so a slow planner costs the
-robot task time. After a knowledge change breaks the plan, planning waits ``replan_settle_s`` (the running
-action goes on meanwhile), so the KP' stepped at a lower rate can finish revising what the change implies
-(e.g. new search candidates for a person just lost) before the planner judges the goals.
+time on that clock (``planning_time``, :func:`thinking_seconds`): the plan's first action starts only once
+the planner call's time has passed, so a slow planner costs the robot task time. ``"model"`` charges a
+deterministic estimate (0.1 s plus the grounded task's size; a fallback to an external engine or a timeout
+costs what those take), so runs stay reproducible under a seed; ``"wall"`` charges the wall time spent.
+After a knowledge change breaks the plan, planning waits ``replan_settle_s`` (the running action goes on
+meanwhile), so the KP' stepped at a lower rate can finish revising what the change implies (e.g. new search
+candidates for a person just lost) before the planner judges the goals.
 
 A step that fails the same way again changes the recovery (:class:`~planner.recovery.RepeatedFailure`):
 the perceived beliefs it rests on are retracted (or the robot backs off), then the goals it served are
@@ -105,7 +107,8 @@ class Dispatcher:
         time_limits: action name -> time limit, overriding ``time_limit``.
         planning_timeout: wall-clock seconds per planner call.
         clock: time source; ``kb.now`` when None.
-        planning_time_factor: clock seconds charged per wall second of planning (0: planning is free).
+        planning_time: how planning time is charged on the clock: ``"off"``, ``"model"`` or ``"wall"``
+            (:func:`thinking_seconds`).
         replan_settle_s: clock seconds planning waits after a knowledge change broke the plan.
 
     Lifecycle: construct, then call :meth:`step` (or :meth:`run`) repeatedly; :meth:`close` unsubscribes from
@@ -125,7 +128,7 @@ class Dispatcher:
         time_limits: Mapping[str, float] | None = None,
         planning_timeout: float = 30.0,
         clock: Callable[[], float] | None = None,
-        planning_time_factor: float = 0.0,
+        planning_time: str = "off",
         replan_settle_s: float = 0.0,
     ) -> None:
         self.kb = kb
@@ -153,7 +156,9 @@ class Dispatcher:
         self.plans = 0
         self.replans = 0
         self._step_failures = 0
-        self.planning_time_factor = planning_time_factor
+        if planning_time not in PLANNING_TIME:
+            raise ValueError(f"planning_time must be one of {'/'.join(PLANNING_TIME)}, got {planning_time!r}")
+        self.planning_time = planning_time
         self.replan_settle_s = replan_settle_s
         self.thinking_s = 0.0  # clock seconds charged for planning so far
         self._busy_until = -math.inf  # thinking: nothing runs before
@@ -348,8 +353,8 @@ class Dispatcher:
         result = self.planner.solve(task, timeout=self.planning_timeout)
         self.last_result = result
         self.plans += 1
-        if self.planning_time_factor > 0:
-            thought = math.ceil(result.planning_ms / 100.0 * self.planning_time_factor - 1e-9) / 10.0
+        thought = thinking_seconds(result, self.planning_time, self.planning_timeout)
+        if thought > 0:
             self.thinking_s += thought
             self._busy_until = now + thought
         self.monitor.adopt((), goals)
@@ -472,6 +477,30 @@ class Dispatcher:
         else:
             self.monitor.forget()
         self.state = DispatcherState.IDLE
+
+
+#: how planning time is charged on the dispatcher's clock
+PLANNING_TIME = ("off", "model", "wall")
+#: model: seconds an external engine (a Fast Downward fallback) is charged per call
+EXTERNAL_ENGINE_S = 10.0
+
+
+def thinking_seconds(result: PlanResult, mode: str, timeout: float) -> float:
+    """Clock seconds a planner call costs the robot (see the module docstring), in tenths of a second.
+
+    ``model``: 0.1 s plus 0.1 s per 2,000 ground actions for the in-process search, ``EXTERNAL_ENGINE_S``
+    for another engine, the whole ``timeout`` for a call that timed out; ``wall``: the wall time spent,
+    rounded up; ``off``: nothing.
+    """
+    if mode == "off":
+        return 0.0
+    if mode == "wall":
+        return math.ceil(result.planning_ms / 100.0 - 1e-9) / 10.0
+    if result.status == PlanStatus.TIMEOUT:
+        return float(timeout)
+    if result.engine and result.engine != "knic":
+        return EXTERNAL_ENGINE_S
+    return round(0.1 + math.floor(result.stats.get("ground_actions", 0.0) / 2000.0) / 10.0, 1)
 
 
 #: actions cancelled at once when a knowledge change breaks a later step of the plan (others finish first)

@@ -25,18 +25,16 @@ import random
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Any, Protocol
+from typing import Protocol
 
 import yaml
 
 from core.errors import WorldError
 from core.robot import Utterance
-from worlds.model import World
 from worlds.scenario import CALL_TEXT, Event, Scenario
 
 #: the voice bank shipped with the ERL apartment
 DEFAULT_BANK = Path(__file__).resolve().parent / "erl_home" / "voices" / "bank.yaml"
-TASK_FIELDS = {"person", "seats", "call_at", "requests", "answer", "bank"}
 #: words in what the robot says that Annie takes as "what do you need?" / "is that right?"
 ASKS_REQUEST = ("what can i do for you", "how can i help")
 ASKS_ANSWER = ("is that right",)
@@ -74,33 +72,6 @@ def load_bank(path: Path = DEFAULT_BANK) -> list[VoiceClip]:
             VoiceClip(path.parent / str(u["file"]), str(u["speaker"]), str(u["kind"]), str(u["text"]))
         )
     return clips
-
-
-def check_task(task: Any, world: World) -> None:
-    """Validate a scenario's ``task:`` section against the world (see the module docstring).
-
-    Raises:
-        WorldError: the first problem, one line.
-    """
-    if not isinstance(task, dict):
-        raise WorldError("must be a mapping with person, seats, requests")
-    extra = sorted(set(task) - TASK_FIELDS)
-    if extra:
-        raise WorldError(f"unknown field {extra[0]!r} ({', '.join(sorted(TASK_FIELDS))})")
-    person = task.get("person")
-    if person not in world.people:
-        raise WorldError(f"unknown person {person!r}")
-    seats = task.get("seats", [])
-    if not isinstance(seats, list) or any(s not in world.furniture for s in seats):
-        raise WorldError(f"seats must be furniture of the world, got {seats!r}")
-    call_at = task.get("call_at", 2.0)
-    if isinstance(call_at, bool) or not isinstance(call_at, int | float) or call_at < 0:
-        raise WorldError(f"call_at must be a time in seconds >= 0, got {call_at!r}")
-    if str(task.get("answer", "yes")) not in ("yes", "no"):
-        raise WorldError(f"answer must be yes or no, got {task.get('answer')!r}")
-    requests = task.get("requests", [])
-    if not isinstance(requests, list) or not all(isinstance(r, str) for r in requests):
-        raise WorldError("requests must be a list of request texts of the voice bank")
 
 
 @dataclass(frozen=True)

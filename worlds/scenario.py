@@ -45,6 +45,8 @@ EVENT_FIELDS: dict[str, tuple[set[str], set[str]]] = {
     "place_items": (set(), {"items"}),
     "call": ({"person"}, set()),
 }
+#: the fields of a scenario's task section (see :mod:`worlds.granny_annie`)
+TASK_FIELDS = {"person", "seats", "call_at", "requests", "answer", "bank"}
 #: what the robot's speech channel receives when a person calls from the tablet
 CALL_TEXT = "tablet call"
 
@@ -148,8 +150,6 @@ def scenario_from_dict(
     events.sort(key=lambda e: e.at)
     task = data.get("task")
     if task is not None:
-        from worlds.granny_annie import check_task
-
         try:
             check_task(task, world)
         except WorldError as exc:
@@ -161,6 +161,33 @@ def scenario_from_dict(
         source=source,
         task=dict(task) if task is not None else None,
     )
+
+
+def check_task(task: Any, world: World) -> None:
+    """Validate a scenario's ``task:`` section against the world (see :mod:`worlds.granny_annie`).
+
+    Raises:
+        WorldError: the first problem, one line.
+    """
+    if not isinstance(task, dict):
+        raise WorldError("must be a mapping with person, seats, requests")
+    extra = sorted(set(task) - TASK_FIELDS)
+    if extra:
+        raise WorldError(f"unknown field {extra[0]!r} ({', '.join(sorted(TASK_FIELDS))})")
+    person = task.get("person")
+    if person not in world.people:
+        raise WorldError(f"unknown person {person!r}")
+    seats = task.get("seats", [])
+    if not isinstance(seats, list) or any(s not in world.furniture for s in seats):
+        raise WorldError(f"seats must be furniture of the world, got {seats!r}")
+    call_at = task.get("call_at", 2.0)
+    if isinstance(call_at, bool) or not isinstance(call_at, int | float) or call_at < 0:
+        raise WorldError(f"call_at must be a time in seconds >= 0, got {call_at!r}")
+    if str(task.get("answer", "yes")) not in ("yes", "no"):
+        raise WorldError(f"answer must be yes or no, got {task.get('answer')!r}")
+    requests = task.get("requests", [])
+    if not isinstance(requests, list) or not all(isinstance(r, str) for r in requests):
+        raise WorldError("requests must be a list of request texts of the voice bank")
 
 
 def _check_names(

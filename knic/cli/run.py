@@ -34,6 +34,7 @@ from typing import TYPE_CHECKING, Any, TextIO
 
 from core.errors import KnicError, LanguageError
 from knic.cli.ros import add_run_ros_argument, ros_attached
+from knic.cli.runtask import start_timed_goals, task_episode, task_summary, timed_goals
 from knic.cli.say import add_acoustic_argument
 from knic.cli.serve import add_run_serve_arguments, run_journal, serving
 
@@ -193,7 +194,7 @@ def run(args: argparse.Namespace) -> int:
                 print("goals: " + " ".join(str(g) for g in goals))
                 system.trace.print_to(sys.stdout)
                 watch_perception(system, goals)
-            start_timed_goals(system, later, args.speaker, source, args.json)
+            start_timed_goals(system, later, args.speaker, source, args.json, world_vocabulary(system))
             result = system.run()
             task_ok = flow is None or flow.outcome == "done"
             if flow is not None and task_ok is False and result.success:
@@ -217,70 +218,6 @@ def run(args: argparse.Namespace) -> int:
             trace_file.close()
         staged.finish(keep=accepted)
     return 0
-
-
-def timed_goals(specs: list[str]) -> list[tuple[float, str]]:
-    """``--goal-at S:TEXT`` options as (time, text), earliest first.
-
-    Raises:
-        KnicError: an option is not ``S:TEXT`` with S a time in seconds >= 0.
-    """
-    out = []
-    for spec in specs:
-        head, sep, text = spec.partition(":")
-        try:
-            at = float(head)
-        except ValueError:
-            at = -1.0
-        if not sep or at < 0 or not text.strip():
-            raise KnicError(f"knic run: --goal-at {spec!r} is not S:TEXT (e.g. 30:switch on the light)")
-        out.append((at, text.strip()))
-    return sorted(out)
-
-
-def start_timed_goals(
-    system: KnicSystem, later: list[tuple[float, str]], speaker: str, source: str, quiet: bool
-) -> None:
-    """Schedule the ``--goal-at`` goals (:class:`knic.system.timed.TimedGoals`); replies printed unless
-    ``quiet``."""
-    if not later:
-        return
-    from knic.intake import GoalIntake
-    from knic.system.timed import TimedGoals
-
-    def show(now: float, text: str, reply: Any) -> None:
-        if not quiet:
-            print(f"{now:9.2f}  intake        {reply.outcome.value}: {text} -> {reply.reply}", flush=True)
-
-    intake = GoalIntake(system.kb, world_vocabulary(system), say=system.context.say)
-    system.add_flow(TimedGoals(system, intake, later, speaker=speaker, source=source, on_reply=show))
-
-
-def task_episode(args: argparse.Namespace) -> Any:
-    """The :class:`worlds.granny_annie.Episode` of ``--scenario`` for ``--seed`` when the scenario describes a
-    task (a ``task:`` section), else None.
-
-    Raises:
-        WorldError: unknown world or scenario, or a task the voice bank cannot voice.
-    """
-    if not args.scenario:
-        return None
-    from worlds.api import load_world
-    from worlds.granny_annie import episode
-    from worlds.scenario import load_scenario
-
-    scenario = load_scenario(args.scenario, load_world(args.world))
-    return episode(scenario, args.seed) if scenario.task is not None else None
-
-
-def task_summary(flow: Any) -> dict[str, Any]:
-    """The ``--json`` record of a task flow: where it ended, what was asked and which goals it added."""
-    return {
-        "phase": str(flow.phase),
-        "outcome": flow.outcome,
-        "goals": [str(g) for g in flow.goals],
-        "asks": flow.asks,
-    }
 
 
 class StagedOutputs:

@@ -82,15 +82,17 @@ def cases(suites: list[str], seeds: list[int], world: str | None, limit: float) 
                 raise KnicError("knic sweep: the flat suite needs --world FILE")
             from worlds.api import load_world
 
-            items = sorted(load_world(world).items)
+            flat = load_world(world)
+            speaker = sorted(flat.people)[0] if flat.people else "annie"
             out += [
                 {
                     "suite": suite,
                     "seed": s,
                     "goal": f"bring me the {i.replace('_', ' ')}",
-                    "role": "companion",
+                    "role": ROLES[0],
+                    "speaker": speaker,
                 }
-                for i in items
+                for i in sorted(flat.items)
                 for s in seeds or [0]
             ]
     for case in out:

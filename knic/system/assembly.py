@@ -169,7 +169,7 @@ def assemble(config: RunConfig) -> Assembly:
                 ),
                 trace=trace,
                 time_limits=ACTION_TIME_LIMITS,
-                planning_time_factor=config.planning_time_factor,
+                planning_time=config.planning_time,
                 replan_settle_s=config.replan_settle_s,
             )
         scheduler = Scheduler(real_time_factor=config.real_time_factor)

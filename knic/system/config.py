@@ -51,7 +51,9 @@ class RunConfig:
         retry_after_s: see ``goal_retries`` (infinite by default: only new knowledge brings a goal back).
         give_up_s: simulated seconds the robot stays idle with every open goal dropped before the run stops
             (new knowledge may bring a goal back meanwhile).
-        planning_time_factor: simulated seconds charged per wall second of planning (0: planning is free).
+        planning_time: how planning time is charged on the simulated clock: ``model`` (a deterministic
+            estimate, reproducible under the seed), ``wall`` (the wall time spent) or ``off``
+            (:func:`planner.dispatch.thinking_seconds`).
         replan_settle_s: simulated seconds planning waits after a knowledge change broke the plan.
         max_replans_per_goal: the recovery policy's replanning budget per goal.
         real_time_factor: the scheduler's overrun budget is period / factor (wall seconds per step).
@@ -71,7 +73,7 @@ class RunConfig:
     goal_retries: int = 20
     retry_after_s: float = math.inf
     give_up_s: float = 10.0
-    planning_time_factor: float = 1.0
+    planning_time: str = "model"
     replan_settle_s: float = 0.6
     max_replans_per_goal: int = 12
     real_time_factor: float = 1.0

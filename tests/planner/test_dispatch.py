@@ -454,9 +454,13 @@ def test_a_repeated_identical_failure_retracts_the_belief_then_drops_the_goal() 
 def test_planning_time_passes_on_the_dispatcher_clock() -> None:
     clock = SimClock()
     kb = erl_kb(clock, goals=["(robot_at r2d2 kitchen)"])
-    d = dispatcher(kb, World(), planning_time_factor=1.0)
+    d = dispatcher(kb, World(), planning_time="model")
     d.run(max_ticks=300, on_tick=clock.tick)
     plan = d.trace.of_kind(EventKind.PLAN)[0]
     first = d.trace.of_kind(EventKind.DISPATCH)[0]
     assert d.thinking_s >= 0.1  # at least one tick of thought per plan, however fast the planner
     assert first.time >= plan.time + d.thinking_s - 1e-9
+    # the model is deterministic: the same task costs the same simulated time
+    again = dispatcher(erl_kb(SimClock(), goals=["(robot_at r2d2 kitchen)"]), World(), planning_time="model")
+    again.run(max_ticks=300, on_tick=SimClock().tick)
+    assert again.thinking_s == d.thinking_s

@@ -1,0 +1,81 @@
+"""``knic run``'s task parts: a task scenario's episode (``--scenario granny_annie``) and the goals given
+while the robot runs (``--goal-at S:TEXT``)."""
+
+from __future__ import annotations
+
+import argparse
+from typing import TYPE_CHECKING, Any
+
+from core.errors import KnicError
+
+if TYPE_CHECKING:
+    from knic.system import KnicSystem
+
+
+def timed_goals(specs: list[str]) -> list[tuple[float, str]]:
+    """``--goal-at S:TEXT`` options as (time, text), earliest first.
+
+    Raises:
+        KnicError: an option is not ``S:TEXT`` with S a time in seconds >= 0.
+    """
+    out = []
+    for spec in specs:
+        head, sep, text = spec.partition(":")
+        try:
+            at = float(head)
+        except ValueError:
+            at = -1.0
+        if not sep or at < 0 or not text.strip():
+            raise KnicError(f"knic run: --goal-at {spec!r} is not S:TEXT (e.g. 30:switch on the light)")
+        out.append((at, text.strip()))
+    return sorted(out)
+
+
+def start_timed_goals(
+    system: KnicSystem,
+    later: list[tuple[float, str]],
+    speaker: str,
+    source: str,
+    quiet: bool,
+    vocabulary: Any,
+) -> None:
+    """Schedule the ``--goal-at`` goals (:class:`knic.system.timed.TimedGoals`) for an intake over
+    ``vocabulary``; replies printed unless ``quiet``."""
+    if not later:
+        return
+    from knic.intake import GoalIntake
+    from knic.system.timed import TimedGoals
+
+    def show(now: float, text: str, reply: Any) -> None:
+        if not quiet:
+            print(f"{now:9.2f}  intake        {reply.outcome.value}: {text} -> {reply.reply}", flush=True)
+
+    intake = GoalIntake(system.kb, vocabulary, say=system.context.say)
+    system.add_flow(TimedGoals(system, intake, later, speaker=speaker, source=source, on_reply=show))
+
+
+def task_episode(args: argparse.Namespace) -> Any:
+    """The :class:`worlds.granny_annie.Episode` of ``--scenario`` for ``--seed`` when the scenario describes a
+    task (a ``task:`` section), else None.
+
+    Raises:
+        WorldError: unknown world or scenario, or a task the voice bank cannot voice.
+    """
+    if not args.scenario:
+        return None
+    from worlds.api import load_world
+    from worlds.granny_annie import episode
+    from worlds.scenario import load_scenario
+
+    scenario = load_scenario(args.scenario, load_world(args.world))
+    return episode(scenario, args.seed) if scenario.task is not None else None
+
+
+def task_summary(flow: Any) -> dict[str, Any]:
+    """The ``--json`` record of a task flow: where it ended, what was asked and which goals it added."""
+    return {
+        "phase": str(flow.phase),
+        "outcome": flow.outcome,
+        "goals": [str(g) for g in flow.goals],
+        "asks": flow.asks,
+    }
