@@ -37,6 +37,7 @@ from worlds.model import Device, World
 from worlds.oracle import Counters, FrameTruth, SoundTruth
 from worlds.scenario import Scenario, load_scenario
 from worlds.sim.contacts import ContactMonitor
+from worlds.sim.estimates import believed_to_true, camera_eye, heard_at
 from worlds.sim.events import apply_event
 from worlds.sim.goals import approach_points, person_points, room_points
 from worlds.sim.hands import PERSON_REACH, Hands
@@ -51,7 +52,6 @@ from worlds.sim.truth import ground_truth
 
 CONTROL_DT = 0.05  # seconds per control period
 RING_SECONDS = 2.0  # how long the door bell rings
-CAMERA_FORWARD = 0.2  # metres from the base centre to the camera, along the pan direction
 PAN_LIMIT = math.pi / 2
 
 
@@ -209,24 +209,13 @@ class Simulation:
             return self._frame
         self._sync_bodies()
         r, spec = self._base, self._world.robot
-        heading = r.yaw + self._pan
-        eye = (
-            r.x + CAMERA_FORWARD * math.cos(heading),
-            r.y + CAMERA_FORWARD * math.sin(heading),
-            spec.camera_height,
-        )
+        eye, heading = camera_eye(r.pose(self._time), self._pan, spec.camera_height)
         width, height = self.camera_size
         rgb, depth, seg, intr, pose = self._scene.render(
             eye, heading, spec.camera_pitch, width, height, spec.camera_fov, exclude=(self.robot_name,)
         )
         # the camera's pose as the robot knows it: from its localisation estimate, not the true base pose
-        est = self.robot_pose()
-        est_heading = est.yaw + self._pan
-        est_eye = (
-            est.x + CAMERA_FORWARD * math.cos(est_heading),
-            est.y + CAMERA_FORWARD * math.sin(est_heading),
-            spec.camera_height,
-        )
+        est_eye, est_heading = camera_eye(self.robot_pose(), self._pan, spec.camera_height)
         pose = optical_pose(est_eye, est_heading, spec.camera_pitch, self._time)
         detections, detected, visible = detect(
             seg, depth, self._instances, self.noise, self._rng_camera, self._item_classes
@@ -353,23 +342,13 @@ class Simulation:
         return self._hands.give(person, self.believed_to_true(at))
 
     def believed_to_true(self, at: Sequence[float] | None) -> Vec3 | None:
-        """Where the arm really goes when sent to the believed world point ``at``.
-
-        The robot places ``at`` relative to its base by its localisation estimate (the latest
-        :meth:`robot_pose`); the arm moves relative to the true base, so the true target is ``at`` carried
-        from the estimated base frame into the true one: localisation error becomes grasp error.
-        """
+        """Where the arm really goes when sent to the believed world point ``at``: the robot places it by its
+        latest localisation estimate (:meth:`robot_pose`), the arm moves from the true base
+        (:func:`worlds.sim.estimates.believed_to_true`)."""
         if at is None:
             return None
-        if len(at) != 3 or not all(math.isfinite(float(v)) for v in at):
-            raise WorldError(f"believed position must be three finite numbers, got {at!r}")
-        est = self._estimate if self._estimate is not None else self._base.pose(self._time)
-        r = self._base
-        dx, dy = float(at[0]) - est.x, float(at[1]) - est.y
-        c, s = math.cos(-est.yaw), math.sin(-est.yaw)
-        lx, ly = c * dx - s * dy, s * dx + c * dy  # in the estimated base frame
-        c, s = math.cos(r.yaw), math.sin(r.yaw)
-        return (r.x + c * lx - s * ly, r.y + s * lx + c * ly, float(at[2]))
+        true = self._base.pose(self._time)
+        return believed_to_true(at, self._estimate if self._estimate is not None else true, true)
 
     def held_item(self) -> str | None:
         """The item in the gripper."""
@@ -544,17 +523,13 @@ class Simulation:
         bell = next(d for d in self._world.devices.values() if d.kind == "bell")
         self._ring_until = self._time + RING_SECONDS
         self._sounds.append(
-            SoundEvent(kind="doorbell", position=self._heard_at(bell.position), stamp=self._time)
+            SoundEvent(
+                kind="doorbell",
+                position=heard_at(bell.position, (self._base.x, self._base.y), self.noise, self._rng_sound),
+                stamp=self._time,
+            )
         )
         self._sounds_made.append(SoundTruth("doorbell", bell.name, bell.position, self._time))
-
-    def _heard_at(self, source: tuple[float, float, float]) -> tuple[float, float, float]:
-        """Where the microphone array localises a sound made at ``source``: Gaussian error per axis of
-        ``noise.sound_noise_xy`` metres plus ``noise.sound_noise_per_m`` per metre of distance."""
-        n, r = self.noise, self._base
-        sigma = n.sound_noise_xy + n.sound_noise_per_m * math.hypot(source[0] - r.x, source[1] - r.y)
-        dx, dy = self._rng_sound.normal(0.0, 1.0, size=2) * sigma
-        return (source[0] + float(dx), source[1] + float(dy), source[2])
 
     def _check_open(self) -> None:
         if self._closed:

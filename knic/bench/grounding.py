@@ -55,6 +55,7 @@ import time
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
+from knic.bench.figures import FAMILIES, average_figures, percentile
 from knic.scheduler import Component
 from knic.system.loop import RunLoop
 from knowledge_base import BeliefStatus, Fact
@@ -78,15 +79,6 @@ COMPARED = frozenset(
         "device_level",
     }
 )
-#: predicate families reported one by one (``families``): family -> its predicates
-FAMILIES: dict[str, frozenset[str]] = {
-    "robot_at": frozenset({"robot_at"}),
-    "object_at": frozenset({"object_at"}),
-    "object_on": frozenset({"object_on"}),
-    "person_at": frozenset({"person_at"}),
-    "person_near": frozenset({"person_near"}),
-    "device": frozenset({"light_on", "light_off", "device_level"}),
-}
 #: simulated seconds within which a belief change undone counts as a flap
 FLAP_WINDOW_S = 10.0
 #: the companion role's priority entities (besides every person)
@@ -193,28 +185,6 @@ def measure_grounding(
         figures["octomap_throughput_ratio"] = octo["octomap_throughput_ratio"]
         figures["octomap_ratio_same_work"] = octo["octomap_overhead_ratio_same_mode"]
     return figures
-
-
-def average_figures(runs: list[dict[str, Any]]) -> dict[str, Any]:
-    """The mean of several runs' figures, key by key: numbers averaged over the runs where they are not
-    null (null when null in every run), nested objects averaged alike, counts (``changes_*``, ``samples``,
-    ``*_samples``) summed."""
-    out: dict[str, Any] = {}
-    for key in runs[0]:
-        values = [r.get(key) for r in runs]
-        present = [v for v in values if v is not None]
-        if not present:
-            out[key] = None
-        elif all(isinstance(v, dict) for v in present):
-            keys = list(dict.fromkeys(k for v in present for k in v))
-            out[key] = average_figures([{k: v.get(k) for k in keys} for v in present])
-        elif all(isinstance(v, int | float) and not isinstance(v, bool) for v in present):
-            summed = key.startswith("changes") or key.endswith("samples") or key == "changes"
-            total = sum(present)
-            out[key] = total if summed else round(total / len(present), 4)
-        else:
-            out[key] = present[0]
-    return out
 
 
 class _NotRun(dict[str, Any]):
@@ -409,23 +379,6 @@ def _episode(parts: Assembly, duration: float) -> dict[str, Any]:
     }
 
 
-def family_of(predicate: str) -> str | None:
-    """The family of :data:`FAMILIES` holding ``predicate``, or None."""
-    for family, predicates in FAMILIES.items():
-        if predicate in predicates:
-            return family
-    return None
-
-
-def _percentile(values: list[float], q: float) -> float | None:
-    if not values:
-        return None
-    ordered = sorted(values)
-    k = (len(ordered) - 1) * q
-    lo, hi = math.floor(k), math.ceil(k)
-    return round(ordered[lo] + (ordered[hi] - ordered[lo]) * (k - lo), 3)
-
-
 def _families(rec: _Recorder, counted: list[_Change], duration: float) -> dict[str, dict[str, Any]]:
     """Per family: precision and recall pooled over the one-second samples, F1, latencies, flaps."""
     out: dict[str, dict[str, Any]] = {}
@@ -456,10 +409,10 @@ def _families(rec: _Recorder, counted: list[_Change], duration: float) -> dict[s
             "recall": round(recall, 4) if recall is not None else None,
             "f1": round(f1, 4) if f1 is not None else None,
             "precision_not_aged": round((fresh - fresh_false) / fresh, 4) if fresh else None,
-            "assert_latency_p50_s": _percentile(asserted, 0.5),
-            "assert_latency_p95_s": _percentile(asserted, 0.95),
-            "retract_latency_p50_s": _percentile(retracted, 0.5),
-            "change_latency_after_seen_p50_s": _percentile(seen, 0.5),
+            "assert_latency_p50_s": percentile(asserted, 0.5),
+            "assert_latency_p95_s": percentile(asserted, 0.95),
+            "retract_latency_p50_s": percentile(retracted, 0.5),
+            "change_latency_after_seen_p50_s": percentile(seen, 0.5),
             "flaps_per_fact_minute": round(rec.flaps(family) / fact_minutes, 4) if fact_minutes else None,
             "changes": len(mine),
             "changes_unreflected": sum(1 for c in mine if c.reflected_at is None),

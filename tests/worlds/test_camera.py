@@ -134,7 +134,7 @@ def test_simulation_satisfies_the_api_protocol(make_sim: Callable[..., Simulatio
 def test_camera_pose_comes_from_the_localisation_estimate(make_sim: Callable[..., Simulation]) -> None:
     import math
 
-    from worlds.simulation import CAMERA_FORWARD
+    from worlds.sim.estimates import CAMERA_FORWARD
 
     sim = make_sim("erl_home", noise=NoiseConfig(pose_noise_xy=0.3, pose_noise_yaw=0.05, miss_rate=0.0))
     frame = sim.camera_frame()
