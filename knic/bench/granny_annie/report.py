@@ -42,13 +42,14 @@ def summary(results: list[dict[str, Any]], baselines: list[str]) -> dict[str, di
 
 def run_end(result: dict[str, Any]) -> str:
     """How a run ended: ``error`` (a part failed), ``time_limit``, ``not_understood`` (no goal taken),
-    ``gave_up`` (the robot dropped a goal) or ``done`` (it believed every goal achieved)."""
+    ``gave_up`` (the robot dropped a goal) or ``done`` (it believed every goal achieved); ``task`` is how
+    the task flow ended (``done``, ``partly``, ``not understood``, or its phase)."""
     run = result["run"]
     if run.get("error"):
         return "error"
     if not run["finished"]:
         return "time_limit"
-    if run["reason"] == "no goal was taken":
+    if run["reason"] == "no goal was taken" or run.get("task") == "not understood":
         return "not_understood"
     if "dropped" in run["reason"]:
         return "gave_up"

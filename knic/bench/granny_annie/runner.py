@@ -6,10 +6,11 @@ It assembles the run (:class:`~knic.system.KnicSystem` on the episode's world fi
 the baseline (:mod:`.baselines`), attaches the :class:`~.recording.Recorder`, starts the episode with a
 :data:`Starter`, runs it to the robot's own stop or the 600 s limit, and hands the timeline to the referee.
 
-Starting an episode is one function (:data:`Starter`): today :func:`start_with_intake` gives Annie's command
-to the goal intake at t=0 (typed, or her recording when the episode is spoken; she answers yes when the robot
-repeats back what she asked and no otherwise, under a role that confirms). The task flow (Annie calls, the
-robot comes, asks, hears and confirms) plugs in as another starter that also drives the run.
+Starting an episode is one function (:data:`Starter`); the default,
+:func:`~.flow.start_with_task_flow`, starts it the way the rulebook does: Annie calls from her tablet, the
+robot comes to her room, asks, hears her command (spoken or typed), repeats it back and she answers yes only
+when the repetition means her request; every baseline runs the same flow. The run then goes on until the
+robot has reported back (or given up) and its goals are settled, or the time limit.
 """
 
 from __future__ import annotations
@@ -28,9 +29,24 @@ if TYPE_CHECKING:
     from knic.bench.granny_annie.recording import Recorder
     from knic.system import KnicSystem
 
-#: starts an episode in an assembled system; returns the goals the robot announced it understood (None:
-#: nothing understood)
-Starter = Callable[["KnicSystem", Episode, "Recorder"], "tuple[str, ...] | None"]
+
+@dataclass(frozen=True)
+class Dialogue:
+    """How the episode's dialogue went, read after the run.
+
+    Attributes:
+        understood: the goals the robot announced it took from the command (PDDL strings), None when it
+            took none.
+        ending: how the robot's task ended (``done``, ``partly``, ``not understood``), or the phase it was
+            still in when the run stopped.
+    """
+
+    understood: tuple[str, ...] | None
+    ending: str = ""
+
+
+#: starts an episode in an assembled system (before it runs); returns what to ask after the run
+Starter = Callable[["KnicSystem", Episode, "Recorder"], Callable[[], Dialogue]]
 
 
 @dataclass(frozen=True)
@@ -74,35 +90,11 @@ def write_world_files(out: Path, episodes: list[Episode]) -> None:
         world_file(out, episode).write_text(yaml.safe_dump(document, sort_keys=False), encoding="utf-8")
 
 
-def start_with_intake(system: KnicSystem, episode: Episode, recorder: Recorder) -> tuple[str, ...] | None:
-    """Give Annie's command to the goal intake at t=0 (see the module docstring)."""
-    from knic.intake import GoalIntake, Outcome
-    from knic.language.vocabulary import Vocabulary
-
-    role = system.pipeline.role
-    vocabulary = Vocabulary.from_knowledge_base(system.kb, episode.lexicon)
-    intake = GoalIntake(system.kb, vocabulary, say=system.sim.say, confirm=role.confirm_actions)
-    source = "operator" if role.operator_only else "user"
-    if episode.audio is not None:
-        reply = intake.submit_audio(episode.audio, speaker="annie", source=source)
-    else:
-        reply = intake.submit(episode.text, speaker="annie", source=source)
-    if not intake.history:
-        return None  # not even recognised
-    submission = intake.history[-1].submission
-    understood = tuple(str(g) for g in submission.goals) or None
-    if understood is not None:
-        recorder.command(system.sim.time, submission.text)
-    if reply.outcome in (Outcome.ASKED, Outcome.ASKED_AGAIN):
-        right = set(understood or ()) == set(episode.goals)
-        intake.hear("yes" if right else "no")
-    return understood
-
-
 def run_task(task: Task, starter: Starter | None = None) -> dict[str, Any]:
     """Run one (episode, baseline) and return its result (JSON-able): the score sheet and run figures."""
     from core.errors import KnicError
     from knic.bench.granny_annie.baselines import prepare
+    from knic.bench.granny_annie.flow import start_with_task_flow
     from knic.bench.granny_annie.recording import Recorder, write_bag
     from knic.bench.granny_annie.referee import judge
     from knic.system import KnicSystem, RunConfig
@@ -139,10 +131,10 @@ def run_task(task: Task, starter: Starter | None = None) -> dict[str, Any]:
             recorder = Recorder(system.sim, system.sim, system.kb, system.pipeline.bus)
             recorder.attach(system.scheduler)
             recorder.sample(0.0)
-            understood = (starter or start_with_intake)(system, episode, recorder)
+            took = (starter or start_with_task_flow)(system, episode, recorder)
             run: dict[str, Any] = {"reason": "no goal was taken", "plans": 0, "replans": 0}
             end, finished = system.sim.time, True
-            if system.kb.goals():
+            if system.kb.goals() or system.flows:
                 try:
                     result = system.run(task.max_sim_time)
                     run = {"reason": result.reason, "plans": result.plans, "replans": result.replans}
@@ -151,6 +143,9 @@ def run_task(task: Task, starter: Starter | None = None) -> dict[str, Any]:
                 except KnicError as exc:  # a part failed: what happened until then is judged
                     error = f"{type(exc).__name__}: {exc}"
                     end, finished = system.sim.time, True
+            dialogue = took()
+            understood = dialogue.understood
+            run["task"] = dialogue.ending
             timeline = recorder.finish(end, finished=finished, understood=understood)
             recorder.close()
             from actions.erl.devices import spoken
