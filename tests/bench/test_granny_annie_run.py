@@ -58,11 +58,19 @@ def test_a_short_episode_end_to_end(tmp_path: Path) -> None:
             "accompanied": 0,
         }
     )
-    assert not score["disqualified"] and result["run"]["finished"]
+    assert not score["disqualified"] and result["run"]["finished"] and result["run"]["task"] == "done"
     assert 0 < score["time_s"] == result["run"]["sim_time"] < 600
-    # the trace and the journal of the run
+    # the trace and the journal of the run: the task flow as the rulebook has it
     trace = [json.loads(line) for line in (tmp_path / "traces" / "ep000_knic.jsonl").read_text().splitlines()]
     assert any(e["kind"] == "plan" for e in trace) and any(e["kind"] == "goal_achieved" for e in trace)
+    steps = [(e["action"], e["time"]) for e in trace if e["kind"] == "task"]
+    order = [a for a, _ in steps if a in ("call", "ask", "heard", "intake asked", "confirmed", "done")]
+    assert order == ["call", "ask", "heard", "intake asked", "heard", "confirmed", "done"]
+    asked_at = next(t for a, t in steps if a == "ask")
+    entered = next(d for d in score["details"] if d.startswith("entered_room"))
+    assert float(entered.split(" at ")[1].split()[0]) <= asked_at + 0.5  # it came to her room, then asked
+    first_goal = min(e["time"] for e in trace if e["kind"] == "goal_achieved" and e["goal"] in episode.goals)
+    assert first_goal > next(t for a, t in steps if a == "confirmed")  # work starts after her yes
     with sqlite3.connect(tmp_path / "journals" / "ep000_knic.sqlite") as db:
         assert db.execute("select count(*) from sqlite_master").fetchone()[0] > 0
     # the ERL recording, read back with a bag reader
