@@ -179,7 +179,8 @@ def test_worker_processes_give_the_serial_results(tmp_path: Path) -> None:
     serial = comparable(list(run_tasks(tasks, workers=1)))
     parallel = comparable(list(run_tasks(tasks, workers=2)))
     assert serial == parallel
-    assert [r["score"]["achievements"] for r in serial] == [2, 2, 3, 3]
+    # every run enters Annie's room (she calls it there), is understood, and does what she asked
+    assert [r["score"]["achievements"] for r in serial] == [3, 3, 3, 3]
 
 
 def test_ray_backend_gives_the_serial_result(tmp_path: Path) -> None:
