@@ -85,6 +85,7 @@ class Episode:
         request: the recording of her request.
         answer: the recording of her answer to the robot's repeat-back.
         plain_answer: the same answer said plainly ("yes"), when the robot asks her to answer yes or no.
+        no_answer: her plain "no", said when a judge finds the robot's repeat-back wrong (None: never).
         scenario: the scenario with her seat as an event, ready for the simulation.
         call_at: when she calls from the tablet (simulated seconds; she makes the call, see AnnieActor).
     """
@@ -97,6 +98,7 @@ class Episode:
     plain_answer: VoiceClip
     scenario: Scenario
     call_at: float = 2.0
+    no_answer: VoiceClip | None = None
 
 
 def episode(scenario: Scenario, seed: int, *, request: str | None = None, seat: str | None = None) -> Episode:
@@ -146,7 +148,9 @@ def episode(scenario: Scenario, seed: int, *, request: str | None = None, seat: 
     concrete = Scenario(scenario.name, scenario.description, tuple(events), scenario.source, dict(task))
     plain = min(answers, key=lambda c: (len(c.text.split()), c.text))
     call_at = float(task.get("call_at", 2.0))
-    return Episode(seed, person, chosen_seat, clip, answer, plain, concrete, call_at)
+    noes = [c for c in mine if c.kind == "no"]
+    no = min(noes, key=lambda c: (len(c.text.split()), c.text)) if noes else None
+    return Episode(seed, person, chosen_seat, clip, answer, plain, concrete, call_at, no)
 
 
 class SpeechWorld(Protocol):
@@ -174,6 +178,8 @@ class AnnieActor:
         episode: what she asks and answers.
         delay_s: simulated seconds she takes to answer.
         hears: whether she hears the robot now (default: always; a test may make her deaf).
+        judge: whether the robot's repeat-back (its words) is what she asked; when it is not she answers
+            her plain "no" (default: she always gives the episode's answer).
     """
 
     def __init__(
@@ -183,8 +189,10 @@ class AnnieActor:
         *,
         delay_s: float = 1.5,
         hears: Callable[[], bool] | None = None,
+        judge: Callable[[str], bool] | None = None,
     ) -> None:
         self.world = world
+        self.judge = judge
         self.episode = episode
         self.delay_s = delay_s
         self.hears = hears or (lambda: True)
@@ -215,7 +223,9 @@ class AnnieActor:
         if any(p in text for p in ASKS_REQUEST):
             self._due.append((now + self.delay_s, self.episode.request))
         elif any(p in text for p in ASKS_ANSWER):
-            self._due.append((now + self.delay_s, self.episode.answer))
+            no = self.episode.no_answer
+            wrong = self.judge is not None and no is not None and not self.judge(text)
+            self._due.append((now + self.delay_s, no if wrong and no is not None else self.episode.answer))
         elif any(p in text for p in ASKS_PLAIN_ANSWER):
             self._due.append((now + self.delay_s, self.episode.plain_answer))
 
@@ -250,7 +260,7 @@ def custom_episode(
     said = clip_for(answer, person, answer, answer_audio)
     plain = clip_for(answer, person, answer, None)
     base = scenario or Scenario("custom", "", ())
-    return Episode(-1, person, seat, ask, said, plain, base, call_at)
+    return Episode(-1, person, seat, ask, said, plain, base, call_at, clip_for("no", person, "no", None))
 
 
 def requests_of(bank: Sequence[VoiceClip], person: str) -> list[str]:

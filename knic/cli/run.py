@@ -34,7 +34,7 @@ from typing import TYPE_CHECKING, Any, TextIO
 
 from core.errors import KnicError, LanguageError
 from knic.cli.ros import add_run_ros_argument, ros_attached
-from knic.cli.runtask import start_timed_goals, task_episode, task_summary, timed_goals
+from knic.cli.runtask import judge_task, start_timed_goals, task_episode, task_summary, timed_goals
 from knic.cli.say import add_acoustic_argument
 from knic.cli.serve import add_run_serve_arguments, run_journal, serving
 
@@ -196,10 +196,8 @@ def run(args: argparse.Namespace) -> int:
                 watch_perception(system, goals)
             start_timed_goals(system, later, args.speaker, source, args.json, world_vocabulary(system))
             result = system.run()
-            task_ok = flow is None or flow.outcome == "done"
-            if flow is not None and task_ok is False and result.success:
-                result.success = False
-                result.reason = f"the task ended {flow.outcome or 'unfinished'} ({flow.phase})"
+            if flow is not None:
+                judge_task(result, flow, episode.request.text)
             if args.json:
                 out = summary(result, texts)
                 if flow is not None:

@@ -79,3 +79,19 @@ def task_summary(flow: Any) -> dict[str, Any]:
         "goals": [str(g) for g in flow.goals],
         "asks": flow.asks,
     }
+
+
+def judge_task(result: Any, flow: Any, request: str) -> None:
+    """A task run succeeds only when the robot told Annie it was done and had understood ``request`` as she
+    meant it (:func:`knic.system.granny_annie.understood_right`), besides the referee's verdict on the
+    goals; ``result`` is updated in place."""
+    from knic.system.granny_annie import understood_right
+
+    if not result.success:
+        return
+    if flow.outcome != "done":
+        result.success = False
+        result.reason = f"the task ended {flow.outcome or 'unfinished'} ({flow.phase})"
+    elif not understood_right(flow, request):
+        result.success = False
+        result.reason = "the robot understood something else than Annie asked"

@@ -128,6 +128,7 @@ def run_case(case: dict[str, Any]) -> dict[str, Any]:
 
 
 def _granny_annie(case: dict[str, Any]) -> tuple[Any, dict[str, Any]]:
+    from knic.cli.runtask import judge_task
     from knic.system.granny_annie import granny_annie_system
 
     system, flow, episode = granny_annie_system(
@@ -135,9 +136,7 @@ def _granny_annie(case: dict[str, Any]) -> tuple[Any, dict[str, Any]]:
     )
     with system:
         result = system.run()
-    if result.success and flow.outcome != "done":
-        result.success = False
-        result.reason = f"the task ended {flow.outcome or 'unfinished'} ({flow.phase})"
+    judge_task(result, flow, episode.request.text)
     extra = {"request": episode.request.text, "seat": episode.seat, "goals": [str(g) for g in flow.goals]}
     return result, extra
 

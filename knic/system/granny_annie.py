@@ -32,6 +32,7 @@ from typing import TYPE_CHECKING, Any
 
 from actions.erl.context import room_of
 from actions.erl.devices import spoken
+from core.errors import KnicError
 from knic.intake import GoalIntake, Outcome
 from knic.system import TaskFlow
 from knowledge_base import BeliefStatus, Fact
@@ -301,10 +302,22 @@ def start_granny_annie(system: KnicSystem, episode: Episode, *, role: str | None
     """Start a Granny Annie episode in an assembled system whose scenario is ``episode.scenario``: Annie
     (world side, :class:`worlds.granny_annie.AnnieActor`) and the robot's :class:`GrannyAnnieFlow` are
     scheduled; :meth:`KnicSystem.run` then runs the episode (no goal is needed up front)."""
-    system.add_flow(_Actor(AnnieActor(system.sim, episode)))
     flow = GrannyAnnieFlow(system, person=episode.person, role=role or system.config.role)
+    system.add_flow(
+        _Actor(AnnieActor(system.sim, episode, judge=repeat_back_judge(flow, episode.request.text)))
+    )
     system.add_flow(flow)
     return flow
+
+
+def repeat_back_judge(flow: GrannyAnnieFlow, request: str) -> Callable[[str], bool] | None:
+    """Annie's ear: whether the robot's repeat-back is what the robot would repeat for her words ``request``
+    as she meant them (None when her words are not understood at all: she then always says her answer)."""
+    try:
+        expected = flow.intake.understand(request, speaker=flow.person).said.lower().rstrip(".")
+    except KnicError:
+        return None
+    return lambda said: expected in said.lower()
 
 
 def granny_annie_system(
@@ -362,3 +375,14 @@ def start_with_request(
 
     episode = custom_episode(person, request, request_audio=request_audio, answer=answer, call_at=call_at)
     return start_granny_annie(system, episode, role=role)
+
+
+def understood_right(flow: GrannyAnnieFlow, request: str) -> bool:
+    """Whether the goals the robot took (``flow.goals``) are what ``request`` (Annie's words, as she meant
+    them) means: the judge's check that the robot understood her, beside the referee's check that the goals
+    hold in the ground truth."""
+    try:
+        meant = flow.intake.understand(request, speaker=flow.person)
+    except KnicError:
+        return False
+    return {str(g) for g in meant.goals} == {str(g) for g in flow.goals}

@@ -9,7 +9,7 @@ import logging
 from knic.intake import GoalIntake, Outcome
 from knic.language.vocabulary import Vocabulary
 from knic.system import KnicSystem, RunConfig
-from knic.system.granny_annie import LEXICON, granny_annie_system
+from knic.system.granny_annie import LEXICON, granny_annie_system, understood_right
 from planner.trace import EventKind
 
 logging.getLogger("knic.scheduler").setLevel(logging.ERROR)
@@ -26,6 +26,7 @@ def test_call_come_spoken_request_confirmation_actions_report() -> None:
         assert "intake asked" in steps and "confirmed" in steps and steps[-1] == "done"
         assert steps.index("confirmed") > steps.index("intake asked")
         assert flow.outcome == "done" and result.success, result.reason
+        assert understood_right(flow, episode.request.text)
         said = [u.text for u in system.sim.spoken()]
         assert said[0] == "Hello Annie, what can I do for you?"
         assert any(s.startswith("You asked me to switch on") and s.endswith("Is that right?") for s in said)

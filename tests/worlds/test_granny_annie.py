@@ -79,3 +79,15 @@ def test_annie_answers_the_robot_with_her_recordings() -> None:
     annie.step(4.0)
     annie.step(5.0)
     assert [h[0] for h in room.heard[1:]] == [ep.answer.text, "yes"]
+
+
+def test_annie_says_no_when_the_robot_repeats_something_else() -> None:
+    ep = episode(load_scenario("granny_annie", load_world("erl_home")), 3)
+    assert ep.no_answer is not None and ep.no_answer.text == "no"
+    room = Room()
+    annie = AnnieActor(room, ep, delay_s=0.0, judge=lambda said: "tracy to the bedroom" in said)
+    room.robot.append(Utterance("You asked me to lead jack to the bedroom. Is that right?", "r2d2", 3.0))
+    annie.step(3.0)
+    room.robot.append(Utterance("You asked me to lead tracy to the bedroom. Is that right?", "r2d2", 4.0))
+    annie.step(4.0)
+    assert [h[0] for h in room.heard[1:]] == ["no", ep.answer.text]
