@@ -13,41 +13,11 @@ from collections.abc import Sequence
 from dataclasses import dataclass
 
 from knic.language.commands import CommandLanguage
-from knic.language.vocabulary import Term, Vocabulary, normalize
+from knic.language.vocabulary import TENS_WORDS, UNIT_WORDS, Term, Vocabulary, normalize
 
-_NUMBERS = {
-    w: i
-    for i, w in enumerate(
-        [
-            "zero",
-            "one",
-            "two",
-            "three",
-            "four",
-            "five",
-            "six",
-            "seven",
-            "eight",
-            "nine",
-            "ten",
-            "eleven",
-            "twelve",
-            "thirteen",
-            "fourteen",
-            "fifteen",
-            "sixteen",
-            "seventeen",
-            "eighteen",
-            "nineteen",
-        ]
-    )
-}
-_TENS = {
-    w: 10 * i
-    for i, w in enumerate(
-        ["_", "_", "twenty", "thirty", "forty", "fifty", "sixty", "seventy", "eighty", "ninety"]
-    )
-}
+#: number words to their values (0..19 and the tens), from the vocabulary's one list of number words
+_NUMBERS = {w: i for i, w in enumerate(UNIT_WORDS)}
+_TENS = {w: 10 * i for i, w in enumerate(TENS_WORDS) if w != "_"}
 
 
 @dataclass
@@ -170,7 +140,7 @@ def _number(tokens: Sequence[str], i: int) -> tuple[int, int] | None:
     word = tokens[i]
     if word in ("hundred",) or (word in ("a", "one") and i + 1 < len(tokens) and tokens[i + 1] == "hundred"):
         return (i + 1 if word == "hundred" else i + 2), 100
-    if word in _TENS and word != "_":
+    if word in _TENS:
         value = _TENS[word]
         if i + 1 < len(tokens) and tokens[i + 1] in _NUMBERS and 0 < _NUMBERS[tokens[i + 1]] < 10:
             return i + 2, value + _NUMBERS[tokens[i + 1]]

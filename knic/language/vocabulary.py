@@ -22,7 +22,7 @@ import yaml
 from core.errors import LanguageError
 
 #: Number words for 0..100, enough for percent levels.
-_UNITS = [
+UNIT_WORDS = [
     "zero",
     "one",
     "two",
@@ -44,7 +44,7 @@ _UNITS = [
     "eighteen",
     "nineteen",
 ]
-_TENS = ["_", "_", "twenty", "thirty", "forty", "fifty", "sixty", "seventy", "eighty", "ninety"]
+TENS_WORDS = ["_", "_", "twenty", "thirty", "forty", "fifty", "sixty", "seventy", "eighty", "ninety"]
 #: Facts ``(predicate thing place)`` that say where a thing is (read into :attr:`Vocabulary.locations`).
 LOCATION_PREDICATES = ("furniture_in", "object_on", "object_at")
 _LEVEL_CONSTANT = re.compile(r"^l(\d{1,3})$")
@@ -61,9 +61,9 @@ def number_words(value: int) -> str:
     if value == 100:
         return "one hundred"
     if value < 20:
-        return _UNITS[value]
+        return UNIT_WORDS[value]
     tens, unit = divmod(value, 10)
-    return _TENS[tens] if unit == 0 else f"{_TENS[tens]} {_UNITS[unit]}"
+    return TENS_WORDS[tens] if unit == 0 else f"{TENS_WORDS[tens]} {UNIT_WORDS[unit]}"
 
 
 def normalize(text: str) -> str:
