@@ -12,7 +12,8 @@ and the robot's voice:
 3. ``listen``: her spoken request (a recording) goes to the :class:`~knic.intake.GoalIntake`, which repeats
    back what it understood and asks "Is that right?" (``confirm``);
 4. ``confirm``: her spoken yes adds the goals in one batch while the robot runs; a no (or nothing understood)
-   makes the robot ask again, at most ``max_asks`` times;
+   makes the robot ask again, at most ``max_asks`` times, and decode her next request with the second
+   decoder (the n-gram model of :mod:`knic.language.lmspeech`, which hears phrasings the grammar does not);
 5. ``work``: the dispatcher carries out the goals (with whatever else is going on); when they all hold, or the
    rest were dropped and the dispatcher is idle, the robot tells Annie it is done (or what it could not do);
 6. ``done``.
@@ -121,6 +122,8 @@ class GrannyAnnieFlow(TaskFlow):
         self.goals: tuple[Fact, ...] = ()
         self.outcome = ""  # how the request ended: "done", "partly", "not understood"
         self._transient: set[Fact] = set()
+        self._switched = False
+        self._custom_recogniser = recognise_command is not None
         self._bells: set[float] = set()
         self._now = 0.0
 
@@ -212,7 +215,32 @@ class GrannyAnnieFlow(TaskFlow):
             self.event("done", now, reason=f"gave up asking: {why}")
             self._enter(Phase.DONE, now)
             return
+        self._second_decoder(now)
         self._ask(now)
+
+    def _second_decoder(self, now: float) -> None:
+        """After a misheard request: decode the next one with the n-gram recogniser (built once; a failure to
+        build it keeps the grammar decoder)."""
+        if self._switched or self._custom_recogniser:
+            return
+        self._switched = True
+        from core.errors import LanguageError
+        from knic.language.lmspeech import NgramRecognizer
+
+        try:
+            recognizer = NgramRecognizer(self.intake.vocabulary)
+        except LanguageError as exc:
+            self.event("second decoder unavailable", now, reason=str(exc))
+            return
+
+        def recognise(wav: str) -> str:
+            transcript = recognizer.recognize(wav)
+            if not transcript.text or not transcript.in_grammar:
+                raise LanguageError(f"{wav}: no command recognised by the n-gram decoder")
+            return str(transcript.text)
+
+        self.intake.recognise_command = recognise
+        self.event("second decoder", now, reason="the next request is decoded with the n-gram model")
 
     def _check_work(self, now: float) -> None:
         open_goals = [g for g in self.goals if not self.kb.holds(g)]
