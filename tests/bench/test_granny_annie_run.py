@@ -126,6 +126,16 @@ def test_static_and_oracle_baselines_write_no_kp_prime_facts(tmp_path: Path) -> 
         assert truth <= {(f.predicate, *f.args) for f in system.kb.facts()}
         seen = system.perceived.sighting("tablet")  # where the actions steer to: the true position
         assert seen is not None and seen.position == pytest.approx(system.sim.true_pose("tablet").position)
+        # the accompany request is kept from the goals without the KP' (no plan could meet Tracy else)
+        assert not system.kb.facts("to_accompany")
+        system.kb.add_goal("person_at", "tracy", "bathroom")
+        system.sim.step(0.5)
+        system.scheduler.tick(0.5)
+        assert system.kb.holds("to_accompany", "tracy")
+        system.kb.remove_goal("person_at", "tracy", "bathroom")
+        system.sim.step(0.5)
+        system.scheduler.tick(1.0)
+        assert not system.kb.facts("to_accompany")
 
 
 def test_command_line_json_and_refusals(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:

@@ -13,6 +13,10 @@
   with ``found`` for every entity placed, and the true position of every item and person is handed to the
   perception the actions steer by at the same rate (the camera is noise-free too): no perception errors.
 
+Both keep the request bookkeeping that a KP' derives from the goals, not from perception: ``(to_accompany
+?p)`` exactly for the people a goal wants somewhere (:func:`accompany_requests`, at :data:`ORACLE_HZ`), as a
+team writes an accompany request into its problem; without it no plan may meet and guide a person.
+
 :func:`prepare` applies a baseline to an assembled :class:`~knic.system.KnicSystem` before its goals are
 given; it uses only the system's parts (scheduler, knowledge base, action registry, simulator).
 """
@@ -83,6 +87,9 @@ def prepare(system: KnicSystem, baseline: str, known: World | None = None) -> No
     check_baselines([baseline])
     for component in kp_primes(system):
         system.scheduler.remove(component.name)
+    if "to_accompany" in system.kb.domain.predicates:
+        accompany_requests(system)
+        system.scheduler.add(Probe("bench.requests", ORACLE_HZ, lambda now: _keep_requests(system)))
     if baseline == "static":
         write_initial_map(system, known or system.world)
         _assume_device_effects(system)
@@ -93,6 +100,26 @@ def prepare(system: KnicSystem, baseline: str, known: World | None = None) -> No
             system.sim.noise = NoiseConfig.perfect()
         _sync(system)
         system.scheduler.add(Probe("bench.oracle_facts", ORACLE_HZ, lambda now: _sync(system)))
+
+
+def accompany_requests(system: KnicSystem) -> int:
+    """``(to_accompany ?p)`` exactly for the people a ``person_at`` goal wants somewhere (source
+    ``request``); returns the number of writes."""
+    kb = system.kb
+    wanted = {g.args[0] for g in kb.goals() if g.predicate == "person_at"}
+    have = {f.args[0] for f in kb.facts("to_accompany")}
+    writes = 0
+    if wanted != have:
+        with kb.batch():
+            for person in sorted(have - wanted):
+                writes += bool(kb.remove_fact("to_accompany", person, source="request"))
+            for person in sorted(wanted - have):
+                writes += bool(kb.add_fact("to_accompany", person, source="request"))
+    return writes
+
+
+def _keep_requests(system: KnicSystem) -> None:
+    accompany_requests(system)
 
 
 def write_initial_map(system: KnicSystem, known: World) -> int:
