@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import re
 from collections.abc import Callable
+from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -30,7 +31,6 @@ from worlds.granny_annie import ASKS_ANSWER, ASKS_PLAIN_ANSWER, AnnieActor, Spee
 if TYPE_CHECKING:
     from knic.bench.granny_annie.episodes import Episode
     from knic.bench.granny_annie.recording import Recorder
-    from knic.bench.granny_annie.runner import Dialogue
     from knic.language.vocabulary import Vocabulary
     from knic.system import KnicSystem
     from knic.system.granny_annie import GrannyAnnieFlow
@@ -59,6 +59,21 @@ def repeat_back_means(
         return False
     meant = understand(from_her_side(match["what"]), vocabulary, speaker=person)
     return meant.accepted and {str(g) for g in meant.goals} == set(goals)
+
+
+@dataclass(frozen=True)
+class Dialogue:
+    """How the episode's dialogue went, read after the run.
+
+    Attributes:
+        understood: the goals the robot announced it took from the command (PDDL strings), None when it
+            took none.
+        ending: how the robot's task ended (``done``, ``partly``, ``not understood``), or the phase it was
+            still in when the run stopped.
+    """
+
+    understood: tuple[str, ...] | None
+    ending: str = ""
 
 
 class JudgingAnnie(AnnieActor):
@@ -170,7 +185,6 @@ def start_with_task_flow(system: KnicSystem, episode: Episode, recorder: Recorde
 def dialogue(flow: GrannyAnnieFlow) -> Dialogue:
     """How the flow's dialogue went: the goals the robot took (those confirmed, else the last it repeated
     back, else None) and how its task ended (else the phase it is in)."""
-    from knic.bench.granny_annie.runner import Dialogue
 
     if flow.goals:
         understood: tuple[str, ...] | None = tuple(str(g) for g in flow.goals)

@@ -24,25 +24,11 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from knic.bench.granny_annie.episodes import Episode
+from knic.bench.granny_annie.flow import Dialogue
 
 if TYPE_CHECKING:
     from knic.bench.granny_annie.recording import Recorder
     from knic.system import KnicSystem
-
-
-@dataclass(frozen=True)
-class Dialogue:
-    """How the episode's dialogue went, read after the run.
-
-    Attributes:
-        understood: the goals the robot announced it took from the command (PDDL strings), None when it
-            took none.
-        ending: how the robot's task ended (``done``, ``partly``, ``not understood``), or the phase it was
-            still in when the run stopped.
-    """
-
-    understood: tuple[str, ...] | None
-    ending: str = ""
 
 
 #: starts an episode in an assembled system (before it runs); returns what to ask after the run
