@@ -36,7 +36,7 @@ def _holding_in(furniture: dict[str, bool]) -> KnowledgeBase:
 
 def test_items_are_placed_only_on_furniture_with_a_surface() -> None:
     planner = TaskPlanner(KnowledgeBase.from_pddl(DOMAIN).domain.up_domain)
-    goal = [("object_at", "mug", "kitchen")]
+    goal: list[tuple[str, ...]] = [("object_at", "mug", "kitchen")]
     kb = _holding_in({"bin": False, "kitchen_table": True})
     result = planner.solve(task_from_kb(kb, goal))
     assert [str(s) for s in result.plan] == ["(place r2d2 mug kitchen_table kitchen)"]
