@@ -360,6 +360,7 @@ class Dispatcher:
         self.monitor.adopt((), goals)
         self._step_failures = 0
         if result.status in (PlanStatus.TIMEOUT, PlanStatus.ERROR):
+            self._charge_replan = True  # a planner that keeps failing counts against the goals' replan budget
             self._raise(Pending.REPLAN, f"planning {result.status.value}: {result.message}")
             return
         for goal in result.unreachable_goals:

@@ -7,7 +7,7 @@ from knowledge_base import BeliefStatus, Fact, KnowledgeBase
 from planner.dispatch import Dispatcher, DispatcherState
 from planner.engines import TaskPlanner
 from planner.model import PlanningTask
-from planner.plan import PlanResult
+from planner.plan import PlanResult, PlanStatus
 from planner.recovery import GoalRetry, Recovery, RecoveryPolicy, RecoveryRule
 from planner.trace import EventKind, Trace
 from tests.planner.doubles import PAPER_PROBLEM, SimClock, StubPlanner, World, erl_kb, scripted_registry
@@ -159,6 +159,18 @@ def test_timeouts_are_bounded_and_the_goal_is_dropped_eventually() -> None:
     assert report.dropped == {"(light_on hallway_light)": "gave up after 2 replans"}
     assert report.state == DispatcherState.IDLE and report.ticks < 200
     assert kb.holds("light_off", "hallway_light")
+
+
+def test_a_planner_that_keeps_timing_out_charges_the_goal_until_it_is_dropped() -> None:
+    clock = SimClock(dt=1.0)
+    kb = erl_kb(clock, goals=["(light_on hallway_light)"])
+    timed_out = PlanResult(PlanStatus.TIMEOUT, engine="stub", message="no answer within 30 s")
+    stub = StubPlanner([timed_out] * 10)
+    d = dispatcher(kb, World(), planner=stub, policy=RecoveryPolicy(max_replans_per_goal=2))
+    report = d.run(max_ticks=200, on_tick=clock.tick)
+    assert len(stub.tasks) == 3  # first call + two replans, then the goal is given up instead of looping
+    assert report.dropped == {"(light_on hallway_light)": "gave up after 2 replans"}
+    assert report.state == DispatcherState.IDLE and not kb.holds("light_on", "hallway_light")
 
 
 def test_at_start_check_catches_a_change_the_dispatcher_did_not_hear_about() -> None:
