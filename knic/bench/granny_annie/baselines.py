@@ -27,6 +27,7 @@ from typing import TYPE_CHECKING
 
 from core.errors import KnicError
 from knic.system.loop import Probe
+from knic.system.verdict import TRUTH_PREDICATES as JUDGED_FROM_TRUTH
 from knowledge_base import BeliefStatus
 
 if TYPE_CHECKING:
@@ -38,20 +39,7 @@ BASELINES = ("knic", "static", "oracle")
 #: rate (Hz, simulated time) of the oracle baseline's fact writes
 ORACLE_HZ = 5.0
 #: the predicates of the ground truth written by the static and oracle baselines
-TRUTH_PREDICATES = (
-    "robot_at",
-    "person_at",
-    "object_at",
-    "object_on",
-    "holding",
-    "hand_empty",
-    "has",
-    "person_near",
-    "light_on",
-    "light_off",
-    "device_level",
-    "sound_at",
-)
+TRUTH_PREDICATES = (*sorted(JUDGED_FROM_TRUTH), "sound_at")
 DEVICE_ACTIONS = ("switch_on", "switch_off", "set_level")
 
 
