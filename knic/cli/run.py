@@ -33,6 +33,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any, TextIO
 
 from core.errors import KnicError, LanguageError
+from knic.cli import runtask
 from knic.cli.ros import add_run_ros_argument, ros_attached
 from knic.cli.runtask import judge_task, start_timed_goals, task_episode, task_summary, timed_goals
 from knic.cli.say import add_acoustic_argument
@@ -82,7 +83,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         help="a goal given while the robot runs, at S simulated seconds, through the goal intake "
         "(repeatable)",
     )
-    parser.add_argument("--speaker", default="annie", help='the person "me" refers to (default annie)')
+    parser.add_argument("--speaker", help='who "me" is (default annie; else the world\'s first person)')
     parser.add_argument(
         "--role", default="companion", help="robot role from knic/roles.yaml (default companion)"
     )
@@ -161,6 +162,7 @@ def run(args: argparse.Namespace) -> int:
             trace_stream=trace_file,
             gui=args.gui,
         )
+        args.speaker = args.speaker or runtask.default_speaker(config.world)
         with KnicSystem(config) as system, serving(args, system, journal), ros_attached(args, system):
             flow = None
             if episode is not None:

@@ -95,3 +95,11 @@ def judge_task(result: Any, flow: Any, request: str) -> None:
     elif not understood_right(flow, request):
         result.success = False
         result.reason = "the robot understood something else than Annie asked"
+
+
+def default_speaker(world: Any) -> str:
+    """Who "me" is without ``--speaker``: annie if the world has her, else its first person, else annie."""
+    from worlds.api import load_world
+
+    people = load_world(world).people
+    return "annie" if "annie" in people else next(iter(people), "annie")
