@@ -153,6 +153,29 @@ class Scheduler:
         """Counters per component name."""
         return {name: e.stats for name, e in self._entries.items()}
 
+    def report(self, sim_time: float) -> list[dict[str, float | int | str]]:
+        """Per component, in stepping order (JSON-able): ``name``, nominal ``frequency`` and measured ``rate``
+        (steps per simulated second over ``sim_time``), ``steps``, ``mean_ms`` and ``max_ms`` of wall time per
+        step, ``cpu_s``, and the overruns: ``slow_steps``, ``behind`` and their sum ``overruns``."""
+        out: list[dict[str, float | int | str]] = []
+        for name, e in self._entries.items():
+            s = e.stats
+            out.append(
+                {
+                    "name": name,
+                    "frequency": e.component.frequency,
+                    "rate": s.steps / sim_time if sim_time > 0 else 0.0,
+                    "steps": s.steps,
+                    "mean_ms": 1000.0 * s.wall_s / s.steps if s.steps else 0.0,
+                    "max_ms": 1000.0 * s.max_wall_s,
+                    "cpu_s": s.cpu_s,
+                    "slow_steps": s.slow_steps,
+                    "behind": s.behind,
+                    "overruns": s.slow_steps + s.behind,
+                }
+            )
+        return out
+
     def next_due(self) -> float | None:
         """Earliest simulated time at which a component is due, or None when none is registered."""
         return min((e.next_due for e in self._entries.values()), default=None)

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import sys
 from pathlib import Path
+from typing import Any
 
 
 def running_journal(path: Path, *, announce: bool = True) -> Path:
@@ -36,3 +37,25 @@ def _mtime(path: Path) -> float:
         return path.stat().st_mtime
     except OSError:  # a partial file renamed away between the listing and the stat
         return -1.0
+
+
+def component_lines(report: list[dict[str, Any]], real_time_factor: float = 1.0) -> list[str]:
+    """``knic run``'s table of the scheduled components (:meth:`knic.scheduler.Scheduler.report`): nominal and
+    measured rate, mean and worst wall time per step, and the overruns the scheduler counted (its warnings
+    are not printed during the run; they are summed here)."""
+    overruns = sum(int(r["overruns"]) for r in report)
+    late = [r for r in report if r["overruns"]]
+    lines = [
+        f"components: {len(report)}, overruns {overruns}"
+        + (f" in {len(late)} of them" if late else "")
+        + f" (step budget: period / {real_time_factor:g})",
+        f"  {'component':<28} {'Hz':>6} {'rate':>7} {'steps':>7} {'mean ms':>8} {'max ms':>8}"
+        f" {'slow':>5} {'behind':>6}",
+    ]
+    for r in report:
+        lines.append(
+            f"  {r['name']!s:<28} {float(r['frequency']):>6.1f} {float(r['rate']):>7.2f} {int(r['steps']):>7}"
+            f" {float(r['mean_ms']):>8.2f} {float(r['max_ms']):>8.1f} {int(r['slow_steps']):>5}"
+            f" {int(r['behind']):>6}"
+        )
+    return lines

@@ -34,6 +34,7 @@ from typing import TYPE_CHECKING, Any, TextIO
 
 from core.errors import KnicError, LanguageError
 from knic.cli import runtask
+from knic.cli.outputs import component_lines
 from knic.cli.ros import add_run_ros_argument, ros_attached
 from knic.cli.runtask import judge_task, start_timed_goals, task_episode, task_summary, timed_goals
 from knic.cli.say import add_acoustic_argument
@@ -131,7 +132,7 @@ def run(args: argparse.Namespace) -> int:
     from knic.kgm2.roles import load_role
     from knic.system import KnicSystem, RunConfig
 
-    logging.getLogger("knic.scheduler").setLevel(logging.ERROR)  # overruns are counted, not printed
+    logging.getLogger("knic.scheduler").setLevel(logging.ERROR)  # overruns are counted, printed at the end
     episode = task_episode(args)  # a task scenario (granny_annie): the episode drawn for the seed
     later = timed_goals(args.goal_at)
     if not args.goal and not args.speech and episode is None and not later:
@@ -202,6 +203,7 @@ def run(args: argparse.Namespace) -> int:
                 judge_task(result, flow, episode.request.text)
             if args.json:
                 out = summary(result, texts)
+                out["components"] = system.scheduler.report(result.sim_time)
                 if flow is not None:
                     out["task"] = task_summary(flow)
                 print(json.dumps(out, sort_keys=True))
@@ -211,6 +213,8 @@ def run(args: argparse.Namespace) -> int:
                     f"run {state} at t={result.sim_time:.1f} s (wall {result.wall_s:.1f} s, "
                     f"{result.plans} plans, {result.replans} replans): {result.reason}"
                 )
+                report = system.scheduler.report(result.sim_time)
+                print("\n".join(component_lines(report, system.config.real_time_factor)))
             if not result.success:
                 raise RunFailed(f"run failed: {result.reason}")
     finally:

@@ -228,25 +228,9 @@ def role_record(system: KnicSystem) -> dict[str, Any]:
 
 
 def component_records(system: KnicSystem, now: float) -> list[dict[str, Any]]:
-    """Per scheduled component: nominal and measured rate, mean and worst step time, overruns."""
-    stats = system.scheduler.stats()
-    out = []
-    for component in system.scheduler.components:
-        s = stats[component.name]
-        out.append(
-            {
-                "name": component.name,
-                "frequency": component.frequency,
-                "rate": s.steps / now if now > 0 else 0.0,
-                "steps": s.steps,
-                "mean_ms": 1000.0 * s.wall_s / s.steps if s.steps else 0.0,
-                "max_ms": 1000.0 * s.max_wall_s,
-                "cpu_s": s.cpu_s,
-                "slow_steps": s.slow_steps,
-                "behind": s.behind,
-            }
-        )
-    return out
+    """Per scheduled component: nominal and measured rate, mean and worst step time, overruns
+    (:meth:`knic.scheduler.Scheduler.report`)."""
+    return list(system.scheduler.report(now))
 
 
 def overrun_record(event: SchedulerEvent) -> dict[str, Any]:
