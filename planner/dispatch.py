@@ -292,6 +292,18 @@ class Dispatcher:
         """Dropped goals (PDDL text) the recovery policy will not hand back, with why."""
         return self.book.for_good()
 
+    def give_up(self, goal: Atom, reason: str) -> None:
+        """Drop ``goal`` for good: no retry hands it back (a task flow told the user it gave up on it).
+
+        Args:
+            goal: the goal as an atom, ``("object_at", "glasses", "bedroom")``.
+            reason: why, when the goal was not dropped yet (a GOAL_DROPPED trace event).
+        """
+        active = goal not in self.book.dropped
+        self.book.give_up(goal, reason)
+        if active:
+            self._raise(Pending.GOALS)  # the active goals changed
+
     def cancel(self, reason: str = "cancelled by the caller") -> None:
         """Cancel the running action (outcome "cancelled") and stop; later steps do nothing."""
         if self.executor.current is not None:

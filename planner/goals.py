@@ -147,6 +147,13 @@ class GoalBook:
         self._known_then.pop(goal, None)
         self._touched.discard(goal)
 
+    def give_up(self, goal: Atom, reason: str) -> None:
+        """Drop ``goal`` for good (its retries used up): whoever told the user it gave up on it (a task flow)
+        makes sure no retry brings it back. A goal not dropped yet is dropped for ``reason`` first."""
+        self.drop(goal, reason)
+        self._retries[goal] = max(self._retries.get(goal, 0), self.retry_rule.times)
+        self._touched.discard(goal)
+
     def for_good(self) -> dict[str, str]:
         """Dropped goals (as PDDL text) whose retries are used up, with why."""
         times = self.retry_rule.times

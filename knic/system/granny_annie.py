@@ -14,8 +14,10 @@ and the robot's voice:
 4. ``confirm``: her spoken yes adds the goals in one batch while the robot runs; a no (or nothing understood)
    makes the robot ask again, at most ``max_asks`` times, and decode her next request with the second
    decoder (the n-gram model of :mod:`knic.language.lmspeech`, which hears phrasings the grammar does not);
-5. ``work``: the dispatcher carries out the goals (with whatever else is going on); when they all hold, or the
-   rest were dropped and the dispatcher is idle, the robot tells Annie it is done (or what it could not do);
+5. ``work``: the dispatcher carries out the goals (with whatever else is going on); when they all hold, the
+   robot tells Annie it is done; when the rest stayed dropped with the dispatcher idle for ``give_up_s``
+   (a retry on new knowledge restarts that wait), it tells her what it could not do, and that is final: the
+   dispatcher gives those goals up for good (:meth:`planner.Dispatcher.give_up`), no retry brings them back;
 6. ``done``.
 
 The door bell is heard as ``(sound_at doorbell ?room)``; the reaction is data per role
@@ -126,6 +128,8 @@ class GrannyAnnieFlow(TaskFlow):
         self._custom_recogniser = recognise_command is not None
         self._bells: set[float] = set()
         self._now = 0.0
+        self._given_up_from: float | None = None  # since when every open goal is dropped and nothing runs
+        system.trace.subscribe(self._goal_news)
 
     # ------------------------------------------------------------------ component
 
@@ -251,16 +255,31 @@ class GrannyAnnieFlow(TaskFlow):
             self.event("done", now, data={"goals": [str(g) for g in self.goals]})
             self._enter(Phase.DONE, now)
             return
-        dropped = self.system.dispatcher.report().dropped
-        idle = self.system.dispatcher.state == DispatcherState.IDLE
-        if idle and all(str(g) in dropped for g in open_goals):
-            if now - self.since < self.system.config.give_up_s:
-                return
-            self.outcome = "partly"
-            names = ", ".join(str(g) for g in open_goals)
-            self.say(f"{name}, I could not do everything you asked: {names} is not done.")
-            self.event("done", now, reason="gave up on " + names)
-            self._enter(Phase.DONE, now)
+        dispatcher = self.system.dispatcher
+        dropped = dispatcher.report().dropped
+        idle = dispatcher.state == DispatcherState.IDLE
+        if not (idle and all(str(g) in dropped for g in open_goals)):
+            self._given_up_from = None  # working, or a goal came back: the wait starts again
+            return
+        if self._given_up_from is None:
+            self._given_up_from = now
+        if now - self._given_up_from < self.system.config.give_up_s:
+            return
+        # what the robot tells Annie is final: the dispatcher retries none of these goals any more
+        for goal in open_goals:
+            dispatcher.give_up((goal.predicate, *goal.args), dropped[str(goal)])
+        self.outcome = "partly"
+        names = ", ".join(str(g) for g in open_goals)
+        self.say(f"{name}, I could not do everything you asked: {names} is not done.")
+        self.event("done", now, reason="gave up on " + names, data={"given_up": [str(g) for g in open_goals]})
+        self._enter(Phase.DONE, now)
+
+    def _goal_news(self, event: TraceEvent) -> None:
+        """A goal of the request dropped again or retried (both may happen within one dispatcher step): the
+        wait before giving up starts again."""
+        kinds = (EventKind.GOAL_DROPPED, EventKind.REPLAN)
+        if event.goal and event.kind in kinds and any(str(g) == event.goal for g in self.goals):
+            self._given_up_from = None
 
     def _doorbell(self, now: float) -> None:
         for fact in self.kb.facts("sound_at", "doorbell"):
