@@ -32,6 +32,7 @@ class Chunk:
     frames: tuple[str, ...] = ()  # verb: frame kinds it may start
     state: str | None = None  # verb: implied state; state: the state; prep "on"/"off": also a state
     value: int | None = None  # level, number: percent
+    beneficiary: str | None = None  # verb: who it is for when unsaid ("i need ...": "me")
 
 
 class Chunker:
@@ -83,8 +84,13 @@ class Chunker:
                 if role == "level" and old and old[1] is not None and old[1].kind == "prep":
                     continue
                 put(phrase, 5, Chunk("prep", phrase, role=role, state=implied))
+        for_whom = lang.verb_beneficiaries()
         for phrase, (kinds, verb_state) in lang.verb_frames().items():
-            put(phrase, 6, Chunk("verb", phrase, frames=kinds, state=verb_state))
+            put(
+                phrase,
+                6,
+                Chunk("verb", phrase, frames=kinds, state=verb_state, beneficiary=for_whom.get(phrase)),
+            )
         for percent, phrases in lang.levels.items():
             for phrase in phrases:
                 put(phrase, 7, Chunk("level", phrase, value=percent))

@@ -47,12 +47,14 @@ _TOKEN = re.compile(r"\{[^}]+\}|=[a-z_]+:[A-Za-z0-9_-]+|[\[\]()|]|[^\s\[\]()|{}=
 
 @dataclass(frozen=True)
 class VerbClass:
-    """A verb class: its phrases, the frame kinds it can start (in order) and the state it implies."""
+    """A verb class: its phrases, the frame kinds it can start (in order), the state it implies and the
+    beneficiary it implies ("i need ..." is for the speaker)."""
 
     name: str
     phrases: tuple[str, ...]
     frames: tuple[str, ...]
     state: str | None = None
+    beneficiary: str | None = None
 
 
 @dataclass(frozen=True)
@@ -84,6 +86,10 @@ class CommandLanguage:
                 merged = kinds + tuple(k for k in verb.frames if k not in kinds)
                 table[phrase] = (merged, state or verb.state)
         return table
+
+    def verb_beneficiaries(self) -> dict[str, str]:
+        """Verb phrase -> the beneficiary it implies, for the phrases of classes that imply one."""
+        return {p: v.beneficiary for v in self.verbs if v.beneficiary for p in v.phrases}
 
     def words(self) -> set[str]:
         """Every word of every phrase table (not the world's names)."""
@@ -133,8 +139,17 @@ def load_language(path: str | Path = DEFAULT_PATH) -> CommandLanguage:
         unknown = [k for k in spec["frames"] if k not in TEMPLATE_KINDS]
         if unknown:
             raise LanguageError(f"{source}: verbs.{name}: unknown frame kind(s) {', '.join(unknown)}")
+        beneficiary = spec.get("beneficiary")
+        if beneficiary not in (None, "me"):
+            raise LanguageError(f"{source}: verbs.{name}: beneficiary may only be 'me', not {beneficiary!r}")
         verbs.append(
-            VerbClass(str(name), _phrases(spec, "phrases", source), tuple(spec["frames"]), spec.get("state"))
+            VerbClass(
+                str(name),
+                _phrases(spec, "phrases", source),
+                tuple(spec["frames"]),
+                spec.get("state"),
+                beneficiary,
+            )
         )
     tables: dict[str, dict[str, tuple[str, ...]]] = {}
     for key in ("prepositions", "states", "levels"):

@@ -340,7 +340,12 @@ def _referent(
 
 
 def chain(frames: list[CommandFrame], vocabulary: Vocabulary) -> Reading:
-    """Hand sources on along a chain; a TAKING that nothing carries on becomes a BRINGING to the speaker."""
+    """Hand sources on along a chain; a TAKING that nothing carries on becomes a BRINGING to the speaker.
+
+    A carry with no destination said ("fetch the book", "grab the cup") reads as a TAKING, so a destination
+    said later for the same object ("... and put it in the lounge", "... then take it to the kitchen")
+    replaces the speaker as where it ends.
+    """
     out = list(frames)
     waypoints: set[int] = set()
     for index, frame in enumerate(out):
@@ -353,10 +358,12 @@ def chain(frames: list[CommandFrame], vocabulary: Vocabulary) -> Reading:
                 out[index + 1] = CommandFrame(nxt.kind, {**nxt.args, role: frame["goal"]})
                 waypoints.add(index)
         if frame.kind == "TAKING":
-            carried = [
+            carried = [  # a later carry of the same object, not one fetched again from elsewhere
                 j
                 for j in range(index + 1, len(out))
-                if out[j].kind in ("BRINGING", "PLACING") and out[j].get("theme") == frame.get("theme")
+                if out[j].kind in ("BRINGING", "PLACING")
+                and out[j].get("theme") == frame.get("theme")
+                and out[j].get("source") in (None, frame.get("source"))
             ]
             if carried:
                 j = carried[0]
@@ -432,8 +439,12 @@ def _carry(
         raise LanguageError(f"{_verb(clause)} the {themes[0]} where? I heard no place")
     if kind == "TAKING" and ("goal" in roles or "beneficiary" in roles):
         kind = "BRINGING"
-    if kind == "BRINGING" and "goal" not in roles:
+    if clause.verb is not None and clause.verb.beneficiary and "goal" not in roles:
         roles.setdefault("beneficiary", SPEAKER)
+    if kind == "BRINGING" and "goal" not in roles and "beneficiary" not in roles:
+        # "fetch the book": no one and nowhere said; a later "put it in the lounge" says where it goes,
+        # else chain() makes it a BRINGING to the speaker
+        kind = "TAKING"
     return [CommandFrame(kind, {"theme": theme, **roles}) for theme in dict.fromkeys(themes)]
 
 

@@ -132,8 +132,8 @@ class _Walker:
                     self.dropped += 1
                     return
                 inner["theme"] = things[-1]
-            if kind == "BRINGING" and "goal" not in inner:
-                inner.setdefault("beneficiary", "me")
+            if kind == "BRINGING" and "goal" not in inner and "beneficiary" not in inner:
+                kind = "TAKING"  # as the reader: a later action may say where it goes, else it is for me
             frames.append(CommandFrame(kind, inner))
 
 
