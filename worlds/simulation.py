@@ -113,6 +113,7 @@ class Simulation:
         self._hands = Hands(w, self.grid, self._items, self._base)
         self._people = PeopleController(w, self.grid, self._hands, self._rng_people)
         self._hands.people = self._people.people
+        self._base.ask_way = self._ask_way
         self._devices = {d.name: (d.initial if d.kind != "bell" else 0.0) for d in w.devices.values()}
         self._scene = Scene(w, gui=gui, render_floor=render_floor)
         self._instances = self._instance_table()
@@ -388,6 +389,12 @@ class Simulation:
         self._spoken.append(
             Utterance(text=text, speaker=self.robot_name, stamp=self._time, position=(r.x, r.y, 1.0))
         )
+
+    def _ask_way(self, person: str, path: list[Point]) -> None:
+        """The navigation stack asks a person who blocks the robot's way to step aside (said aloud)."""
+        self.say("Excuse me, may I pass?")
+        r = self._base
+        self._people.make_way(person, self._time, (r.x, r.y, self._world.robot.radius), path)
 
     def spoken(self) -> list[Utterance]:
         """Everything the robot said."""

@@ -4,11 +4,14 @@ Each person runs a queue of small tasks (walk to points, sit on furniture, take 
 filled by
 scenario events, by their behaviour (``wander``) or by the robot (escorting). People walk on the same
 grid map as
-the robot at a fixed speed, yield to the robot (they wait rather than walk into it), and are kinematic.
+the robot at a fixed speed, yield to the robot (they wait rather than walk into it), and are kinematic. A
+standing person the robot asks to make way (:meth:`PeopleController.make_way`) steps off the robot's path,
+waits there :data:`MAKE_WAY_WAIT` seconds and then goes on with what they were doing.
 """
 
 from __future__ import annotations
 
+import itertools
 import math
 from collections import deque
 from collections.abc import Sequence
@@ -17,12 +20,13 @@ from typing import Any, Protocol
 
 import numpy as np
 
-from worlds.geometry import Point, wrap_angle
+from worlds.geometry import Point, segment_distance, wrap_angle
 from worlds.model import Person, World
 from worlds.sim.navigation import GridMap
 
 WALK_SPEED = 0.8  # m/s
 FOLLOW_DISTANCE = 1.0  # metres behind the robot when escorted
+MAKE_WAY_WAIT = 8.0  # seconds a person who made way for the robot waits aside
 
 
 class PeopleHooks(Protocol):
@@ -193,6 +197,44 @@ class PeopleController:
                 return
             if self._walk_towards(p, p.path[p.path_index], dt, robot):
                 p.path_index += 1
+
+    def make_way(
+        self, name: str, now: float, robot: tuple[float, float, float], path: Sequence[Point]
+    ) -> bool:
+        """The robot asks ``name`` to let it pass: a person standing (present, not sitting, not escorted)
+        walks to the nearest free spot off the robot's ``path`` (world points from the robot's base on), waits
+        there :data:`MAKE_WAY_WAIT` seconds (or what was left of a wait, if longer) and then goes on with
+        their tasks. False (and nothing changes) when they cannot: sitting, escorted, absent, or no spot."""
+        p = self.people.get(name)
+        if p is None or not p.present or p.on is not None or p.following:
+            return False
+        spots = self._off_path_points(p, robot, path)
+        if not spots:
+            return False
+        left = max(0.0, p.wait_until - now)
+        p.wait_until, p.path, p.blocked_for = now, [], 0.0
+        p.tasks.appendleft(("wait", max(MAKE_WAY_WAIT, left)))
+        p.tasks.appendleft(("goto", spots))
+        return True
+
+    def _off_path_points(
+        self, p: PersonState, robot: tuple[float, float, float], path: Sequence[Point]
+    ) -> list[Point]:
+        """Free points 0.6-2.0 m from the person, clear of the robot's path and of the robot; nearest
+        first."""
+        rx, ry, rr = robot
+        clear = rr + p.radius + 0.15
+        legs = list(itertools.pairwise(path)) if len(path) > 1 else [((rx, ry), (rx, ry))]
+        out = []
+        for k in range(24):
+            ang = 2 * math.pi * k / 24
+            for dist in (0.6, 0.9, 1.2, 1.6, 2.0):
+                x, y = p.x + dist * math.cos(ang), p.y + dist * math.sin(ang)
+                if not self.grid.is_free(x, y) or math.hypot(x - rx, y - ry) < clear + 0.3:
+                    continue
+                if min(segment_distance(x, y, a, b) for a, b in legs) >= clear:
+                    out.append((dist, (x, y)))
+        return [pt for _, pt in sorted(out)]
 
     def _aside_points(self, p: PersonState, robot: tuple[float, float, float]) -> list[Point]:
         """Free points 0.8-1.6 m away from the person, away from the robot and 1.3 m or more from it."""

@@ -2,19 +2,24 @@
 
 The base is kinematic: every control period its pose is set from the commanded velocities (no dynamics), which
 keeps runs fast and exactly reproducible. Navigation goals are planned on the :class:`GridMap` and followed
-with a rotate-then-drive controller; people in the way make the robot wait and, after a while, replan around
-them; a goal fails with ``"path blocked"`` when no way around exists, ``"no path"`` when the goal is
+with a rotate-then-drive controller. A standing person in the way (a doorway, a corridor) is handled as a
+social navigation stack does: the robot stops short of them and waits :data:`WAIT_BEFORE_REPLAN`, then plans
+around them; when no way around exists it asks them to make way (:attr:`BaseController.ask_way`: the robot
+says so and the person may step off its path) and keeps waiting, trying the way around again every
+:data:`WAIT_BEFORE_REPLAN`; after :data:`GIVE_UP_AFTER` seconds blocked in all the goal fails with
+``"path blocked by <person>"`` (it never pushes through). A goal fails with ``"no path"`` when it is
 unreachable.
 """
 
 from __future__ import annotations
 
+import itertools
 import math
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 
 from core.robot import NavState, NavStatus, Pose2D
-from worlds.geometry import Point, wrap_angle
+from worlds.geometry import Point, segment_distance, wrap_angle
 from worlds.model import RobotSpec
 from worlds.sim.navigation import GridMap
 
@@ -33,6 +38,7 @@ class _Goal:
     blocked_for: float = 0.0
     blocked_total: float = 0.0
     planned: bool = False
+    asked: set[str] = field(default_factory=set)
 
 
 class BaseController:
@@ -40,6 +46,11 @@ class BaseController:
 
     Lifecycle: created by the simulation; :meth:`update` is called once per control period; commands
     (:meth:`start_goal`, :meth:`set_velocity`, :meth:`stop`) may come at any time between updates.
+
+    Attributes:
+        ask_way: called once per goal and blocking person, with the person's name and the rest of the
+            robot's path (from the base), when no way around them exists: the robot asks them to make way
+            (the simulation says it aloud and lets the person step aside). Default: nobody is asked.
     """
 
     def __init__(self, spec: RobotSpec, grid: GridMap) -> None:
@@ -51,6 +62,7 @@ class BaseController:
         self._goal: _Goal | None = None
         self._status = NavStatus(state=NavState.IDLE)
         self._next_id = 1
+        self.ask_way: Callable[[str, list[Point]], None] = lambda _person, _path: None
 
     # ------------------------------------------------------------------------------------------ commands
 
@@ -152,7 +164,7 @@ class BaseController:
             discs = [(x, y, r + self.spec.radius + 0.1) for _, x, y, r in people]
             blocked = self.grid.with_discs(discs)
         path = self.grid.plan((self.x, self.y), g.goals, blocked)
-        if path is None:
+        if path is None or (around_people and not self._clear_of(path, people)):
             return False
         g.path, g.index, g.planned = path, 1, True
         self._status = NavStatus(
@@ -162,6 +174,16 @@ class BaseController:
             goal=Pose2D(path[-1][0], path[-1][1], 0.0),
             path=tuple(path),
         )
+        return True
+
+    def _clear_of(self, path: list[Point], people: Sequence[tuple[str, float, float, float]]) -> bool:
+        """Whether ``path`` (from the base on) never gets closer to a person than touching them, or than the
+        base is now (a base already close to someone may only move away). A path planned around people from
+        a start inside a person's inflated disc may lead straight through them."""
+        for _, px, py, r in people:
+            limit = min(r + self.spec.radius + 0.05, math.hypot(px - self.x, py - self.y)) - 1e-3
+            if any(segment_distance(px, py, a, b) < limit for a, b in itertools.pairwise(path)):
+                return False
         return True
 
     def _follow(self, dt: float, people: Sequence[tuple[str, float, float, float]]) -> None:
@@ -211,8 +233,10 @@ class BaseController:
                 self._finish(NavState.FAILED, f"path blocked by {blocker}")
             elif g.blocked_for > WAIT_BEFORE_REPLAN:
                 g.blocked_for = 0.0
-                if not self._plan(g, people, around_people=True):
-                    self._finish(NavState.FAILED, f"path blocked by {blocker}")
+                replanned = self._plan(g, people, around_people=True)
+                if not replanned and blocker not in g.asked and g.target != f"person {blocker}":
+                    g.asked.add(blocker)  # no way around: ask them to make way (not whom it goes to), wait
+                    self.ask_way(blocker, [(self.x, self.y), *g.path[g.index :]])
             return
         g.blocked_for = 0.0
         self.x, self.y, self.yaw = nx, ny, nyaw
