@@ -100,3 +100,17 @@ def safe_yaml(
         where = f"{source}:{mark.line + 1}" if mark is not None else source
         problem = getattr(exc, "problem", None) or str(exc).splitlines()[0]
         raise error(f"{where}: not valid YAML ({problem})") from None
+
+
+def read_yaml(path: str | Path, what: str, error: type[KnicError] = KnicError) -> Any:
+    """Read and parse a user's YAML file: at most :data:`MAX_YAML_BYTES`, UTF-8, no aliases, bounded depth.
+
+    The one reader for every YAML file KnIC takes (worlds, scenarios, roles, language files, noise models,
+    voice banks, benchmark sets).
+
+    Raises:
+        error: one line naming the file (and the line where known): unreadable, too large, not UTF-8, not
+            valid YAML, an alias, or nested too deep.
+    """
+    text = read_text_limited(path, MAX_YAML_BYTES, what, error)
+    return safe_yaml(text, str(path), error)

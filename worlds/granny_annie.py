@@ -27,9 +27,8 @@ from dataclasses import dataclass
 from pathlib import Path
 from typing import Protocol
 
-import yaml
-
 from core.errors import WorldError
+from core.inputs import read_yaml
 from core.robot import Utterance
 from worlds.scenario import CALL_TEXT, Event, Scenario
 
@@ -58,10 +57,7 @@ def load_bank(path: Path = DEFAULT_BANK) -> list[VoiceClip]:
     Raises:
         WorldError: the file is missing or malformed.
     """
-    try:
-        data = yaml.safe_load(path.read_text(encoding="utf-8"))
-    except (OSError, yaml.YAMLError) as exc:
-        raise WorldError(f"voice bank {path}: cannot read: {str(exc).splitlines()[0]}") from None
+    data = read_yaml(path, "voice bank", WorldError)
     if not isinstance(data, dict) or not isinstance(data.get("utterances"), list):
         raise WorldError(f"voice bank {path}: needs a list 'utterances'")
     clips = []

@@ -28,9 +28,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-import yaml
-
 from core.errors import WorldError
+from core.inputs import read_yaml
 from worlds.model import World
 
 SCENARIO_DIR = Path(__file__).resolve().parent / "erl_home" / "scenarios"
@@ -102,10 +101,7 @@ def load_scenario(name_or_path: str | Path, world: World) -> Scenario:
         WorldError: ``<file>: events[i]: <problem>`` for the first problem.
     """
     path = resolve_scenario_path(name_or_path)
-    try:
-        data = yaml.safe_load(path.read_text(encoding="utf-8"))
-    except (yaml.YAMLError, OSError) as exc:
-        raise WorldError(f"{path.name}: cannot read scenario: {str(exc).splitlines()[0]}") from exc
+    data = read_yaml(path, "scenario", WorldError)
     return scenario_from_dict(data, world, file=path.name, source=path)
 
 

@@ -25,9 +25,8 @@ import time
 from pathlib import Path
 from typing import Any
 
-import yaml
-
 from core.errors import KnicError
+from core.inputs import read_yaml
 
 FIXTURES = Path(__file__).resolve().parents[2] / "tests" / "fixtures" / "language"
 SETS = {"dev": FIXTURES / "dev.yaml", "test": FIXTURES / "test.yaml"}
@@ -85,10 +84,10 @@ def evaluate(path: Path) -> dict[str, Any]:
     from knic.language.understanding import understand
     from knic.language.world import read_vocabulary
 
-    try:
-        cases = yaml.safe_load(path.read_text(encoding="utf-8"))["cases"]
-    except (OSError, yaml.YAMLError, KeyError, TypeError) as exc:
-        raise KnicError(f"{path}: cannot read the language set: {exc}") from exc
+    data = read_yaml(path, "language set", KnicError)
+    if not isinstance(data, dict) or not isinstance(data.get("cases"), list):
+        raise KnicError(f"{path}: a language set is a mapping with a list 'cases'")
+    cases = data["cases"]
     worlds = {"erl": read_vocabulary()}
     worlds["other"] = read_vocabulary(problem=OTHER_WORLD)
     tally = {

@@ -14,9 +14,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
-import yaml
-
 from core.errors import InferenceError
+from core.inputs import read_yaml
 
 #: The shipped role file.
 ROLES_FILE = Path(__file__).resolve().parent.parent / "roles.yaml"
@@ -115,12 +114,7 @@ def load_roles(path: Path | str = ROLES_FILE) -> dict[str, Role]:
         InferenceError: the file is missing, not YAML, or a role is malformed (the message names it).
     """
     path = Path(path)
-    try:
-        data = yaml.safe_load(path.read_text(encoding="utf-8"))
-    except OSError as exc:
-        raise InferenceError(f"cannot read role file {path}: {exc.strerror}") from exc
-    except yaml.YAMLError as exc:
-        raise InferenceError(f"role file {path} is not valid YAML: {exc}") from exc
+    data = read_yaml(path, "role file", InferenceError)
     if not isinstance(data, Mapping) or not isinstance(data.get("roles"), Mapping):
         raise InferenceError(f"role file {path}: expected a top-level 'roles:' mapping")
     return {str(n): _role(str(n), r, str(path)) for n, r in data["roles"].items()}

@@ -17,9 +17,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any, Protocol
 
-import yaml
-
 from core.errors import LanguageError
+from core.inputs import read_yaml
 
 #: Number words for 0..100, enough for percent levels.
 UNIT_WORDS = [
@@ -142,10 +141,7 @@ class Lexicon:
             LanguageError: the file is missing or malformed; the message names the file and the entry.
         """
         path = Path(path)
-        try:
-            data = yaml.safe_load(path.read_text(encoding="utf-8")) or {}
-        except (OSError, yaml.YAMLError) as exc:
-            raise LanguageError(f"{path}: cannot read lexicon: {exc}") from exc
+        data = read_yaml(path, "lexicon", LanguageError) or {}
         if not isinstance(data, dict):
             raise LanguageError(f"{path}: a lexicon is a mapping with 'names' and 'groups'")
         names: dict[str, tuple[str, ...]] = {}

@@ -12,9 +12,8 @@ import math
 from pathlib import Path
 from typing import Any
 
-import yaml
-
 from core.errors import WorldError
+from core.inputs import read_yaml
 from worlds.api import NoiseConfig
 
 #: the default robot's sensor model
@@ -40,12 +39,7 @@ _SECTIONS: dict[str, dict[str, str]] = {
 def load_noise(path: str | Path = DEFAULT_NOISE) -> NoiseConfig:
     """Read a sensor model file (see the module docstring)."""
     where = str(path)
-    try:
-        raw = yaml.safe_load(Path(path).read_text(encoding="utf-8"))
-    except OSError as exc:
-        raise WorldError(f"{where}: cannot read the noise model: {exc.strerror or exc}") from None
-    except yaml.YAMLError as exc:
-        raise WorldError(f"{where}: not valid YAML: {str(exc).splitlines()[0]}") from None
+    raw = read_yaml(path, "noise model", WorldError)
     return noise_from_dict(raw if raw is not None else {}, where)
 
 

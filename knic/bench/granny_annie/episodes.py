@@ -30,9 +30,9 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
-import yaml
 
 from core.errors import KnicError
+from core.inputs import read_yaml
 from knic.bench.granny_annie.commands import (
     Request,
     candidate_requests,
@@ -222,7 +222,7 @@ def voice_bank() -> tuple[tuple[str, Path], ...]:
     bank = VOICES / "bank.yaml"
     if not bank.is_file():
         return ()
-    data = yaml.safe_load(bank.read_text(encoding="utf-8")) or {}
+    data = read_yaml(bank, "voice bank", KnicError) or {}
     return tuple(
         (str(u["text"]), VOICES / str(u["file"]))
         for u in data.get("utterances", [])

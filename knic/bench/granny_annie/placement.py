@@ -145,11 +145,11 @@ def world_document(world: World, placements: dict[str, str]) -> dict[str, Any]:
     Raises:
         KnicError: the world was not read from a file.
     """
-    import yaml
+    from core.inputs import read_yaml
 
     if world.source is None:
         raise KnicError(f"world {world.name}: no world file to derive the episode's world from")
-    data = yaml.safe_load(world.source.read_text(encoding="utf-8"))
+    data = read_yaml(world.source, "world file", KnicError)
     for entry in data.get("items", []):
         name = entry.get("name")
         if name in placements:
