@@ -59,3 +59,20 @@ def component_lines(report: list[dict[str, Any]], real_time_factor: float = 1.0)
             f" {int(r['behind']):>6}"
         )
     return lines
+
+
+def summary(result: Any, commands: list[dict[str, Any]], components: list[dict[str, Any]]) -> dict[str, Any]:
+    """The ``--json`` summary of a run (``components``: :meth:`knic.scheduler.Scheduler.report`)."""
+    return {
+        "success": result.success,
+        "reason": result.reason,
+        "sim_time": round(result.sim_time, 3),
+        "wall_s": round(result.wall_s, 3),
+        "goals": result.goals,
+        "unconfirmed": result.unconfirmed,
+        "plans": result.plans,
+        "replans": result.replans,
+        "counters": result.counters,
+        "commands": commands,
+        "components": components,
+    }

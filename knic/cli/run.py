@@ -34,7 +34,7 @@ from typing import TYPE_CHECKING, Any, TextIO
 
 from core.errors import KnicError, LanguageError
 from knic.cli import runtask
-from knic.cli.outputs import component_lines
+from knic.cli.outputs import component_lines, summary
 from knic.cli.ros import add_run_ros_argument, ros_attached
 from knic.cli.runtask import judge_task, start_timed_goals, task_episode, task_summary, timed_goals
 from knic.cli.say import add_acoustic_argument
@@ -170,6 +170,7 @@ def run(args: argparse.Namespace) -> int:
                 from knic.system.granny_annie import start_granny_annie
 
                 flow = start_granny_annie(system, episode, role=args.role)
+                referee = runtask.TaskReferee(system, episode, flow, journal)
             dialogue = None
             if listen is not None:
                 dialogue = run_dialogue(system, listen, sys.stderr if args.json else sys.stdout)
@@ -199,13 +200,15 @@ def run(args: argparse.Namespace) -> int:
                 watch_perception(system, goals)
             start_timed_goals(system, later, args.speaker, source, args.json, world_vocabulary(system))
             result = system.run()
+            score = None
             if flow is not None:
                 judge_task(result, flow, episode.request.text)
+                score = referee.verdict(result.sim_time, finished=result.sim_time < args.max_sim_time - 1e-6)
             if args.json:
-                out = summary(result, texts)
-                out["components"] = system.scheduler.report(result.sim_time)
+                out = summary(result, texts, system.scheduler.report(result.sim_time))
                 if flow is not None:
                     out["task"] = task_summary(flow)
+                    out["score"] = score
                 print(json.dumps(out, sort_keys=True))
             else:
                 state = "succeeded" if result.success else "failed"
@@ -213,6 +216,8 @@ def run(args: argparse.Namespace) -> int:
                     f"run {state} at t={result.sim_time:.1f} s (wall {result.wall_s:.1f} s, "
                     f"{result.plans} plans, {result.replans} replans): {result.reason}"
                 )
+                if score is not None:
+                    print(runtask.score_line(score))
                 report = system.scheduler.report(result.sim_time)
                 print("\n".join(component_lines(report, system.config.real_time_factor)))
             if not result.success:
@@ -534,19 +539,3 @@ def watch_perception(system: KnicSystem, goals: list[Fact]) -> None:
         print(f"{change.time:9.2f}  perceived    {sign} {atom} [{source}, {status}]", flush=True)
 
     system.kb.subscribe(show)
-
-
-def summary(result: Any, commands: list[dict[str, Any]]) -> dict[str, Any]:
-    """The ``--json`` summary of a run."""
-    return {
-        "success": result.success,
-        "reason": result.reason,
-        "sim_time": round(result.sim_time, 3),
-        "wall_s": round(result.wall_s, 3),
-        "goals": result.goals,
-        "unconfirmed": result.unconfirmed,
-        "plans": result.plans,
-        "replans": result.replans,
-        "counters": result.counters,
-        "commands": commands,
-    }

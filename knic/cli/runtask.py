@@ -4,6 +4,7 @@ while the robot runs (``--goal-at S:TEXT``)."""
 from __future__ import annotations
 
 import argparse
+from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from core.errors import KnicError
@@ -103,3 +104,58 @@ def default_speaker(world: Any) -> str:
 
     people = load_world(world).people
     return "annie" if "annie" in people else next(iter(people), "annie")
+
+
+class TaskReferee:
+    """The benchmark's referee watching a task scenario's run (``knic run --scenario granny_annie``): its
+    running score goes to the journal's score file while the run goes (:mod:`knic.bench.granny_annie.
+    livescore`; the web view shows it), its verdict to the run's output at the end.
+
+    Lifecycle: construct after the task flow is started and before the run; :meth:`verdict` after it.
+    """
+
+    def __init__(self, system: KnicSystem, episode: Any, flow: Any, journal: Path | None) -> None:
+        from actions.erl.devices import spoken
+        from knic.bench.granny_annie.flow import dialogue
+        from knic.bench.granny_annie.livescore import LiveScore, episode_of_task, score_path
+        from knic.bench.granny_annie.recording import Recorder
+
+        text = episode.request.text
+        try:
+            meant = [str(g) for g in flow.intake.understand(text, speaker=flow.person).goals]
+        except KnicError:
+            meant = []
+        self.episode = episode_of_task(system.world, text, episode.seat, episode.seed, meant)
+        self.flow = flow
+        self.recorder = Recorder(system.sim, system.sim, system.kb, system.pipeline.bus)
+        self.recorder.attach(system.scheduler)
+        self.recorder.sample(system.sim.time)
+        self.understood = lambda: dialogue(flow).understood
+        self.live = LiveScore(
+            self.recorder,
+            self.episode,
+            self.understood,
+            score_path(journal) if journal is not None else None,
+            spoken,
+        )
+        self.live.attach(system.scheduler)
+        self.spoken = spoken
+
+    def verdict(self, end: float, *, finished: bool) -> dict[str, Any]:
+        """The referee's final score sheet (published to the score file too)."""
+        from knic.bench.granny_annie.referee import judge
+
+        timeline = self.recorder.finish(end, finished=finished, understood=self.understood())
+        self.recorder.close()
+        score = judge(self.episode, timeline, self.spoken)
+        return self.live.finish(score, end)["score"]
+
+
+def score_line(score: dict[str, Any]) -> str:
+    """One line of the referee's score sheet."""
+    penalties = ", ".join(f"{k} {v}" for k, v in score["penalties"].items())
+    offered = {k: n for k, n in score["achievable"].items() if n}
+    kinds = ", ".join(f"{k} {score['achieved'][k]}/{n}" for k, n in offered.items())
+    out = f"referee: {score['achievements']} of {score['possible']} achievements ({kinds})"
+    out += f"; penalties: {penalties}"
+    return out + (" (disqualified)" if score["disqualified"] else "")

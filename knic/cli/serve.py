@@ -102,10 +102,13 @@ def _journal_server(args: argparse.Namespace, world: Any) -> Any:
         raise KnicError(
             f"knic serve needs the 'web' extra (pip install 'knic[web]'): {exc.name} is missing"
         ) from None
+    from knic.bench.granny_annie.livescore import score_path
+
     journal = args.journal
     app = create_app(
         lambda: JournalView(journal, world=world),
         trace=TraceFile(args.trace) if args.trace is not None else None,
+        score=score_path(journal),
         token=args.token,
         allowed_hosts=LOOPBACK_HOSTS if is_loopback(args.host) else None,
     )

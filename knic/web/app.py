@@ -8,6 +8,7 @@ The API (documented by OpenAPI at ``/docs``, schema at ``/openapi.json``):
 * ``GET /api/map``: the floor plan and where things are believed to be;
 * ``GET /api/trace``: the plan and execution trace;
 * ``GET /api/live``: the running system's snapshot (components, bus, tracks, ground truth);
+* ``GET /api/score``: the Granny Annie referee's running score (a benchmark episode or a task scenario);
 * ``POST /api/goal``: a command, PDDL goal or yes/no answer, through the goal intake;
 * ``POST /api/goal/audio``: the same, spoken (a WAV file as the request body);
 * ``GET /api/events``: server-sent events (see :mod:`knic.web.hub`).
@@ -27,6 +28,7 @@ import math
 import secrets
 from collections.abc import AsyncIterator, Callable
 from importlib import resources
+from pathlib import Path
 from typing import TYPE_CHECKING, Any, Literal
 
 from fastapi import Depends, FastAPI, HTTPException, Query, Request, Response
@@ -133,6 +135,7 @@ def create_app(
     token: str | None = None,
     allowed_hosts: list[str] | None = None,
     poll_s: float = 0.05,
+    score: Path | None = None,
 ) -> FastAPI:
     """The web view's application.
 
@@ -144,8 +147,9 @@ def create_app(
         token: the secret every ``/api`` request must carry, or None (loopback only).
         allowed_hosts: the ``Host`` header values accepted (None: any).
         poll_s: wall seconds between two polls of the journal.
+        score: the run's score file (:func:`knic.bench.granny_annie.livescore.score_path` of the journal).
     """
-    hub = Hub(open_view, live=live, trace=trace, poll_s=poll_s)
+    hub = Hub(open_view, live=live, trace=trace, poll_s=poll_s, score=score)
     assets = _load("knic.web.assets", ASSETS)
     index = resources.files("knic.web.assets").joinpath("index.html").read_bytes()
     docs_assets: dict[str, tuple[bytes, str]] = {}
@@ -295,6 +299,13 @@ def create_app(
         if live is None:
             return JSONResponse({"state": "none"})
         return JSONResponse(live.snapshot)
+
+    @app.get("/api/score", dependencies=guarded, tags=["run"])
+    async def score_() -> JSONResponse:
+        """The Granny Annie referee's score so far (judged from ground truth only): achievements per kind,
+        penalties, disqualifications, and ``final`` once the run ended; ``{"state": "none"}`` without one."""
+        sync()
+        return JSONResponse(hub.score if hub.score is not None else {"state": "none"})
 
     async def submit(text: str, source: str) -> dict[str, Any]:
         if live is None:

@@ -10,6 +10,8 @@ Events (``event:`` name, ``data:`` JSON):
 * ``changes``: ``{"seq": last, "changes": [change records]}``, in journal order; ``id`` is the last seq;
 * ``trace``: ``{"after": n, "events": [trace events]}`` (events after the first ``n``);
 * ``live``: the run's snapshot (:mod:`knic.web.live`);
+* ``score``: the Granny Annie referee's running score, when the run writes one beside its journal
+  (:mod:`knic.bench.granny_annie.livescore`);
 * ``reset``: the page fell too far behind; it reloads the state (``/api/facts``) and reconnects.
 
 A page that connects with ``after=SEQ`` first gets the journal events after ``SEQ`` (so nothing is lost
@@ -24,6 +26,7 @@ import json
 import logging
 import time
 from collections.abc import AsyncIterator, Callable
+from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from core.errors import KnicError
@@ -57,6 +60,8 @@ class Hub:
         trace: the trace source when following files (the live link is the trace source of a run).
         poll_s: wall seconds between two polls.
         live_hz: most live snapshots sent per wall second.
+        score: the run's score file (:func:`knic.bench.granny_annie.livescore.score_path`), followed when it
+            appears; None: no score.
     """
 
     def __init__(
@@ -67,6 +72,7 @@ class Hub:
         trace: TraceSource | None = None,
         poll_s: float = 0.05,
         live_hz: float = 4.0,
+        score: Path | None = None,
     ) -> None:
         self._open_view = open_view
         self.live = live
@@ -79,6 +85,9 @@ class Hub:
         self.trace_count = 0
         self._live_version = -1
         self._live_sent = 0.0
+        self.score_file = score
+        self.score: dict[str, Any] | None = None
+        self._score_stamp: tuple[int, int] | None = None
 
     @property
     def view(self) -> JournalView:
@@ -137,6 +146,28 @@ class Hub:
             self._live_version = live.version
             self._live_sent = now
             self._publish(sse("live", live.snapshot))
+        if self._read_score():
+            self._publish(sse("score", self.score))
+
+    def _read_score(self) -> bool:
+        """Read the score file when it changed (a stat per poll); whether the score is new."""
+        if self.score_file is None:
+            return False
+        from knic.bench.granny_annie.livescore import read_score
+
+        try:
+            st = self.score_file.stat()
+        except OSError:
+            return False
+        stamp = (st.st_mtime_ns, st.st_size)
+        if stamp == self._score_stamp:
+            return False
+        self._score_stamp = stamp
+        score = read_score(self.score_file)
+        if score is None or score == self.score:
+            return False
+        self.score = score
+        return True
 
     def _publish(self, message: str) -> None:
         for q in list(self._queues):
@@ -171,6 +202,8 @@ class Hub:
                 backlog.append(sse("trace", {"after": trace_after, "events": events}))
             if self.live is not None:
                 backlog.append(sse("live", self.live.snapshot))
+            if self.score is not None:
+                backlog.append(sse("score", self.score))
             yield sse("hello", {"seq": view.seq, "trace": self.trace_count})
             for message in backlog:
                 yield message

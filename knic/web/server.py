@@ -151,6 +151,7 @@ def serve_run(options: ServeOptions, system: KnicSystem, *, journal: Path) -> It
     tracks, ground truth). After the block, the page stays up ``options.linger`` seconds (goals are then
     refused: the run is over).
     """
+    from knic.bench.granny_annie.livescore import score_path
     from knic.web.app import create_app
     from knic.web.audio import SpeechInput
     from knic.web.live import LiveLink
@@ -163,6 +164,7 @@ def serve_run(options: ServeOptions, system: KnicSystem, *, journal: Path) -> It
         lambda: JournalView(journal, world=world),
         live=link,
         speech=SpeechInput(link.vocabulary),
+        score=score_path(journal),
         token=options.token,
         allowed_hosts=LOOPBACK_HOSTS if is_loopback(options.host) else None,
     )

@@ -81,6 +81,7 @@ def run_task(task: Task, starter: Starter | None = None) -> dict[str, Any]:
     from core.errors import KnicError
     from knic.bench.granny_annie.baselines import prepare
     from knic.bench.granny_annie.flow import start_with_task_flow
+    from knic.bench.granny_annie.livescore import LiveScore, score_path
     from knic.bench.granny_annie.recording import Recorder, write_bag
     from knic.bench.granny_annie.referee import judge
     from knic.system import KnicSystem, RunConfig
@@ -118,6 +119,12 @@ def run_task(task: Task, starter: Starter | None = None) -> dict[str, Any]:
             recorder.attach(system.scheduler)
             recorder.sample(0.0)
             took = (starter or start_with_task_flow)(system, episode, recorder)
+            from actions.erl.devices import spoken
+
+            live = LiveScore(recorder, episode, lambda: took().understood, None, spoken)
+            if journal is not None:  # the running score beside the journal, for knic serve --journal
+                live.path = score_path(journal)
+                live.attach(system.scheduler)
             run: dict[str, Any] = {"reason": "no goal was taken", "plans": 0, "replans": 0}
             end, finished = system.sim.time, True
             if system.kb.goals() or system.flows:
@@ -134,9 +141,8 @@ def run_task(task: Task, starter: Starter | None = None) -> dict[str, Any]:
             run["task"] = dialogue.ending
             timeline = recorder.finish(end, finished=finished, understood=understood)
             recorder.close()
-            from actions.erl.devices import spoken
-
             score = judge(episode, timeline, spoken)
+            live.finish(score, end)
             if task.record:
                 write_bag(out / "bags" / tag, recorder.recording)
     finally:

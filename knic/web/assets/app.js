@@ -278,6 +278,27 @@
     }).join("");
   }
 
+  // ------------------------------------------------------------------ Granny Annie score
+  // the referee's running score sheet (GET /api/score, SSE "score"); the panel stays hidden without one
+  function renderScore(record) {
+    if (!record || !record.score) return;
+    const s = record.score;
+    $("score-panel").hidden = false;
+    $("score-state").textContent = record.final ? `final, t = ${fmt(record.sim_time)} s`
+      : `live, t = ${fmt(record.sim_time)} s`;
+    $("score-total").innerHTML = `${s.achievements} of ${s.possible} achievements` +
+      ` · penalties ${Object.values(s.penalties).reduce((a, b) => a + b, 0)}` +
+      (s.disqualified ? ' · <span class="dq">disqualified</span>' : "");
+    const rows = Object.entries(s.achievable).filter(([, n]) => n > 0).map(([kind, n]) =>
+      `<tr data-kind="${esc(kind)}"><td>${esc(kind)}</td><td class="${s.achieved[kind] ? "yes" : ""}">` +
+      `${s.achieved[kind]} / ${n}</td></tr>`);
+    for (const [kind, n] of Object.entries(s.penalties).concat(Object.entries(s.disqualifications))) {
+      rows.push(`<tr data-kind="${esc(kind)}"><td>${esc(kind)}</td><td class="${n ? "pen" : ""}">${n}</td></tr>`);
+    }
+    $("score-sheet").tBodies[0].innerHTML = rows.join("");
+    $("score-details").innerHTML = (s.details || []).map((d) => `<li>${esc(d)}</li>`).join("");
+  }
+
   // ------------------------------------------------------------------ goals
   async function sendGoal(init, label) {
     $("goal-reply").textContent = `${label}…`;
@@ -307,12 +328,15 @@
       renderTrace();
     });
     source.addEventListener("live", (ev) => { model.live = JSON.parse(ev.data); renderLive(); });
+    source.addEventListener("score", (ev) => renderScore(JSON.parse(ev.data)));
     source.addEventListener("reset", () => { source.close(); load().then(connect); });
   }
 
   async function load() {
-    const [info, facts, map, trace, live] = await Promise.all([
-      api("/api/info"), api("/api/facts?compact=true"), api("/api/map"), api("/api/trace"), api("/api/live")]);
+    const [info, facts, map, trace, live, score] = await Promise.all([
+      api("/api/info"), api("/api/facts?compact=true"), api("/api/map"), api("/api/trace"), api("/api/live"),
+      api("/api/score")]);
+    renderScore(score);
     model.info = info; model.seq = facts.seq; model.map = map; model.trace = trace.events;
     model.first = info.timeline.first; model.last = info.timeline.last;
     model.live = live.state === "none" ? null : live;
