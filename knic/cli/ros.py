@@ -53,13 +53,15 @@ def run(args: argparse.Namespace) -> int:
     require_ros()
     from knic.ros.robot import RosLink
     from knic.ros.split import RosRun
+    from knic.system.config import RunConfig
 
     signal.signal(signal.SIGTERM, _interrupt)
     trace_file = args.trace.open("w", encoding="utf-8") if args.trace else None
     try:
         with ros_context(args.domain_id) as context:
             link = RosLink(context)
-            ros_run = RosRun(link, args.world, role=args.role, journal=args.journal, trace_stream=trace_file)
+            config = RunConfig(args.world, role=args.role, journal=args.journal, trace_stream=trace_file)
+            ros_run = RosRun(link, config)
             try:
                 for text in args.goal:
                     reply = ros_run.add_goal(text)

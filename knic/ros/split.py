@@ -1,9 +1,10 @@
 """KnIC on ROS 2: assembled on a :class:`~knic.ros.robot.RosRobot` (``knic ros``), or attached to a
 single-process run (``knic run --ros``).
 
-:class:`RosRun` builds the same parts as :func:`knic.system.assembly.assemble` -- knowledge base seeded from
-the world's map, the inference pipeline, the ERL actions, the dispatcher -- on a robot reached over ROS 2
-topics instead of the simulator in process, and schedules first the :class:`~knic.ros.robot.RosClock` (KnIC
+:class:`RosRun` builds KnIC with the single-process run's own code (:func:`knic.system.assembly.build_agent`
+from a :class:`~knic.system.config.RunConfig`: knowledge base seeded from the world's map, the inference
+pipeline, the ERL actions, the dispatcher with the same recovery policy) on a robot reached over ROS 2 topics
+instead of the simulator in process, and schedules first the :class:`~knic.ros.robot.RosClock` (KnIC
 runs on the robot's ``/clock``; a lockstep simulator advances as KnIC grants) and last the
 :class:`~knic.ros.knic_node.KnicBridge`. It holds no oracle: its verdict is the robot's own
 (:class:`knic.system.verdict.BeliefVerdict`); the simulator's node referees (:meth:`SimNode.referee`).
@@ -15,24 +16,18 @@ from __future__ import annotations
 
 import time
 from dataclasses import dataclass, field
-from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from actions.erl import ErlContext, build_erl_registry
-from knic.kgm3.sightings import BusPerception
-from knic.pipeline import build_pipeline
+from core.errors import KnicError
 from knic.ros.knic_node import KnicBridge, KnicNode
 from knic.ros.robot import RosClock, RosLink, RosRobot
 from knic.scheduler import Scheduler
-from knic.seed import seed_kb_from_world
-from knic.system.assembly import DispatcherComponent, open_kb
-from knic.system.config import ACTION_TIME_LIMITS
+from knic.system.assembly import build_agent
+from knic.system.config import RunConfig
 from knic.system.loop import RunLoop
 from knic.system.verdict import BeliefVerdict, Stop
-from planner.dispatch import Dispatcher, DispatcherState
-from planner.engines import TaskPlanner, silence_up
-from planner.recovery import GoalRetry, RecoveryPolicy
-from planner.trace import Trace
+from planner.dispatch import DispatcherState
+from planner.engines import silence_up
 
 if TYPE_CHECKING:
     from knic.system import KnicSystem
@@ -62,46 +57,26 @@ class RosRun:
 
     Args:
         link: the process's executor (its context sets the DDS domain).
-        world: world name or file: the robot's map and what it knows before the run (no ground truth).
-        role: robot role.
-        journal: SQLite history file, or None.
-        trace_stream: JSON-lines trace stream, or None.
-        settle_s: see :class:`knic.system.verdict.BeliefVerdict`.
+        config: what the run is made of, as for a single-process run (world: the robot's map and what it
+            knows before the run, no ground truth; role; journal; trace stream; recovery policy, planning
+            time, settle and give-up times); ``seed``, ``scenario`` and ``gui`` are the simulator's and
+            ignored here.
     """
 
-    def __init__(
-        self,
-        link: RosLink,
-        world: str | Path = "erl_home",
-        *,
-        role: str = "companion",
-        journal: Path | None = None,
-        trace_stream: Any = None,
-        settle_s: float = 8.0,
-    ) -> None:
-        from knic.kgm2.roles import load_role
+    def __init__(self, link: RosLink, config: RunConfig | None = None) -> None:
         from worlds.api import load_world
 
         silence_up()
+        self.config = cfg = config or RunConfig()
+        if not cfg.dispatch:
+            raise KnicError("knic ros: the run needs the dispatcher (RunConfig.dispatch=True)")
         self.link = link
-        self.world = load_world(world)
-        the_role = load_role(role)
+        self.world = load_world(cfg.world)
         self.robot = RosRobot(link, self.world.robot.name)
-        self.kb = open_kb(journal, lambda: self.robot.time)
-        seed_kb_from_world(self.kb, self.world)
-        self.pipeline = build_pipeline(self.kb, self.robot, self.world, the_role)
-        self.perception = BusPerception(self.kb, self.pipeline.bus)
-        self.context = ErlContext(self.robot, self.kb, self.perception, robot_name=self.world.robot.name)
-        registry = build_erl_registry(self.robot, self.kb, context=self.context, confirm_devices=True)
-        self.trace = Trace(trace_stream)
-        self.dispatcher = Dispatcher(
-            self.kb,
-            TaskPlanner(self.kb.domain.up_domain),
-            registry,
-            policy=RecoveryPolicy(goal_retry=GoalRetry(20, 10.0)),
-            trace=self.trace,
-            time_limits=ACTION_TIME_LIMITS,
-        )
+        agent = build_agent(cfg, self.world, self.robot, lambda: self.robot.time)
+        assert agent.dispatcher is not None
+        self.kb, self.pipeline, self.perception = agent.kb, agent.pipeline, agent.perception
+        self.context, self.trace, self.dispatcher = agent.context, agent.trace, agent.dispatcher
         self.clock = RosClock(self.robot)
         self.node = KnicNode(
             link,
@@ -110,19 +85,19 @@ class RosRun:
             self.robot,
             self.world,
             cognition=self.pipeline.cognition,
-            confirm=the_role.confirm_actions,
+            confirm=self.pipeline.role.confirm_actions,
         )
-        self.scheduler = Scheduler()
+        self.scheduler = Scheduler(real_time_factor=cfg.real_time_factor)
         self.scheduler.add(self.clock)
-        for component in self.pipeline:
+        for component in agent.components():
             self.scheduler.add(component)
-        self.scheduler.add(DispatcherComponent(self.dispatcher))
         self.scheduler.add(KnicBridge(self.node))
         self.beliefs = BeliefVerdict(
             self.kb,
             self.dispatcher.dropped_for_good,
             lambda: self.dispatcher.state == DispatcherState.IDLE,
-            settle_s=settle_s,
+            settle_s=cfg.settle_s,
+            give_up_s=cfg.give_up_s,
         )
 
     def add_goal(self, text: str) -> dict[str, Any]:
@@ -132,7 +107,7 @@ class RosRun:
     def run(self, max_sim_time: float, *, until_done: bool = True) -> RosRunResult:
         """Run until the robot believes its goals achieved or dropped (``until_done`` and some goal given),
         or ``max_sim_time`` simulated seconds."""
-        loop: RunLoop[Stop] = RunLoop(self.scheduler, 0.5)
+        loop: RunLoop[Stop] = RunLoop(self.scheduler, self.config.check_period_s)
         if until_done:
             loop.add_stop(lambda now: self.beliefs(now) if self.kb.goals() else None)
         wall0 = time.perf_counter()

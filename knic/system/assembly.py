@@ -14,7 +14,9 @@
 5. one :class:`~knic.scheduler.Scheduler` stepping, in this order at each instant: the simulator
    (:class:`SimulationComponent`), the pipeline's components, the dispatcher (:class:`DispatcherComponent`).
 
-Nothing runs here; :class:`~knic.system.loop.RunLoop` runs a scheduler.
+Steps 2-4 do not depend on the robot behind the seam: :func:`build_agent` builds them on any
+:class:`~core.robot.Robot` (the ROS 2 split run builds its KnIC with it). Nothing runs here;
+:class:`~knic.system.loop.RunLoop` runs a scheduler.
 """
 
 from __future__ import annotations
@@ -150,40 +152,82 @@ def assemble(config: RunConfig) -> Assembly:
     world = load_world(config.world)
     sim = Simulation(world, seed=config.seed, scenario=config.scenario, gui=config.gui)
     try:
-        kb = open_kb(config.journal, lambda: sim.time)
-        seed_kb_from_world(kb, world)
-        pipeline = build_pipeline(kb, sim, world, config.role)
-        perception = BusPerception(kb, pipeline.bus)
-        context = ErlContext(sim, kb, perception, robot_name=world.robot.name)
-        registry = build_erl_registry(sim, kb, context=context, confirm_devices=True)
-        trace = Trace(config.trace_stream)
-        dispatcher = None
-        if config.dispatch:
-            dispatcher = Dispatcher(
-                kb,
-                TaskPlanner(kb.domain.up_domain),
-                registry,
-                policy=RecoveryPolicy(
-                    max_replans_per_goal=config.max_replans_per_goal,
-                    goal_retry=GoalRetry(config.goal_retries, config.retry_after_s),
-                ),
-                trace=trace,
-                time_limits=ACTION_TIME_LIMITS,
-                planning_time=config.planning_time,
-                replan_settle_s=config.replan_settle_s,
-            )
+        agent = build_agent(config, world, sim, lambda: sim.time)
         scheduler = Scheduler(real_time_factor=config.real_time_factor)
         scheduler.add(SimulationComponent(sim))
-        for component in pipeline:
+        for component in agent.components():
             scheduler.add(component)
-        if dispatcher is not None:
-            scheduler.add(DispatcherComponent(dispatcher))
     except BaseException:
         sim.close()
         raise
     return Assembly(
-        config, world, sim, kb, pipeline, perception, context, registry, trace, dispatcher, scheduler
+        config,
+        world,
+        sim,
+        agent.kb,
+        agent.pipeline,
+        agent.perception,
+        agent.context,
+        agent.registry,
+        agent.trace,
+        agent.dispatcher,
+        scheduler,
     )
+
+
+@dataclass
+class Agent:
+    """KnIC's side of a run on any robot (steps 2-4 of the module docstring): what :func:`assemble` builds
+    on the simulator in process and :class:`knic.ros.split.RosRun` on a robot reached over ROS 2, so both
+    share one recovery policy, one set of action time limits and one planning-time model."""
+
+    kb: KnowledgeBase
+    pipeline: Pipeline
+    perception: BusPerception
+    context: ErlContext
+    registry: ActionRegistry
+    trace: Trace
+    dispatcher: Dispatcher | None
+
+    def components(self) -> list[Component]:
+        """The pipeline's components, then the dispatcher's, in the order a scheduler steps them."""
+        out: list[Component] = list(self.pipeline)
+        if self.dispatcher is not None:
+            out.append(DispatcherComponent(self.dispatcher))
+        return out
+
+
+def build_agent(config: RunConfig, world: World, robot: Robot, clock: Callable[[], float]) -> Agent:
+    """KnIC on ``robot`` (the seam: the simulator or a remote robot) in ``world`` (its map and what the
+    robot knows before the run), the knowledge base on ``clock`` (the robot's seconds).
+
+    Raises:
+        core.errors.InferenceError: unknown role.
+        core.errors.JournalError: the journal file cannot be written.
+    """
+    kb = open_kb(config.journal, clock)
+    seed_kb_from_world(kb, world)
+    pipeline = build_pipeline(kb, robot, world, config.role)
+    perception = BusPerception(kb, pipeline.bus)
+    context = ErlContext(robot, kb, perception, robot_name=world.robot.name)
+    registry = build_erl_registry(robot, kb, context=context, confirm_devices=True)
+    trace = Trace(config.trace_stream)
+    dispatcher = None
+    if config.dispatch:
+        dispatcher = Dispatcher(
+            kb,
+            TaskPlanner(kb.domain.up_domain),
+            registry,
+            policy=RecoveryPolicy(
+                max_replans_per_goal=config.max_replans_per_goal,
+                goal_retry=GoalRetry(config.goal_retries, config.retry_after_s),
+            ),
+            trace=trace,
+            time_limits=ACTION_TIME_LIMITS,
+            planning_time=config.planning_time,
+            replan_settle_s=config.replan_settle_s,
+        )
+    return Agent(kb, pipeline, perception, context, registry, trace, dispatcher)
 
 
 def open_kb(journal: Path | None, clock: Callable[[], float]) -> KnowledgeBase:
