@@ -78,6 +78,8 @@ class PipelineOptions:
         fusion_half_life_s: simulated seconds over which a standing belief's weight halves in the knowledge
             base's fusion (:mod:`knic.kgm3.fusion`).
         max_candidates: candidate rooms per entity of unknown place.
+        searched_ttl_s: seconds after which a ``(searched ?e ?room)`` mark lets the room be searched again
+            (once per room; :class:`knic.kgm3.search.CandidatesKP`).
         tracking: association parameters.
         roles_file: the role file.
         early_role_filter: let the camera KPs skip, before deprojection, the classes the role does not process
@@ -98,6 +100,7 @@ class PipelineOptions:
     explored_ttl_s: float = 120.0
     fusion_half_life_s: float = 60.0
     max_candidates: int = 3
+    searched_ttl_s: float = 180.0
     tracking: TrackingConfig = field(default_factory=TrackingConfig)
     roles_file: Path = ROLES_FILE
     early_role_filter: bool = False
@@ -220,7 +223,12 @@ def build_pipeline(
         DeviceStateKP(bus, kb),
         ExploredKP(bus, kb, ttl_s=opts.explored_ttl_s),
         CandidatesKP(
-            bus, kb, priors_from_world(world), list(world.rooms), max_candidates=opts.max_candidates
+            bus,
+            kb,
+            priors_from_world(world),
+            list(world.rooms),
+            max_candidates=opts.max_candidates,
+            searched_ttl_s=opts.searched_ttl_s,
         ),
     ]
     return Pipeline(

@@ -19,10 +19,14 @@ so for a person only explorations made after they were lost count). The candidat
 first); when no prior room is left, every room not searched for it (the planner then goes to the nearest
 first). When no room is left at all, the entity has no candidate: a goal that needs it is unreachable and
 dropped, so a search over the whole home ends. Once the entity is located anywhere, its candidates and its
-``searched`` facts go. For an item asked for from a piece of furniture (a goal ``(taken_from ?o ?f)``) the
-furniture is an ASSUMED ``(possibly_on ?o ?f)`` candidate while the item is not located and that room was
-not searched for it. A person some goal wants somewhere (``(person_at ?p ?room)``) is ``(to_accompany ?p)``
-(the robot may meet and guide only them). Entities considered: those with priors, those named in a goal,
+``searched`` facts go. A ``searched`` mark is no permanent truth, since people carry things about: the marks
+made before the entity's place was last asserted (seen somewhere, held, handed over, even if that belief is
+gone again) are retracted, and a mark older than ``searched_ttl_s`` is retracted once per room (the room is
+searched again, but only after every room never searched for the entity: the search still ends). For an
+item asked for from a piece of furniture (a goal ``(taken_from ?o ?f)``) the furniture is an ASSUMED
+``(possibly_on ?o ?f)`` candidate while the item is not located and that room was not searched for it. A
+person some goal wants somewhere (``(person_at ?p ?room)``) is ``(to_accompany ?p)`` (the robot may meet
+and guide only them). Entities considered: those with priors, those named in a goal,
 those that already have candidates, and those that were located once.
 """
 
@@ -30,7 +34,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping, Sequence
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, ClassVar
 
 import numpy as np
 import numpy.typing as npt
@@ -39,7 +43,7 @@ from knic.bus import Bus
 from knic.kgm3.base import KPPrime
 from knic.spatial import points_in_polygon
 from knic.units import Scan
-from knowledge_base import BeliefStatus, Fact, KnowledgeBase
+from knowledge_base import BeliefStatus, Change, ChangeKind, Fact, KnowledgeBase
 
 if TYPE_CHECKING:
     from worlds.model import World
@@ -177,7 +181,12 @@ class CandidatesKP(KPPrime):
         priors: entity -> (room, probability) pairs.
         rooms: every room, in the order fallback candidates are taken.
         max_candidates: most candidate rooms asserted per entity at a time.
+        searched_ttl_s: simulated seconds after which a ``(searched ?e ?room)`` mark is retracted, once per
+            entity and room until the entity is located again (infinite: never).
     """
+
+    #: predicates whose assertion places an entity (its argument position): evidence of where it is now
+    PLACING: ClassVar[Mapping[str, int]] = {"object_at": 0, "person_at": 0, "holding": 1, "has": 1}
 
     def __init__(
         self,
@@ -187,6 +196,7 @@ class CandidatesKP(KPPrime):
         rooms: Sequence[str],
         *,
         max_candidates: int = 3,
+        searched_ttl_s: float = 180.0,
         frequency: float = 2.0,
         name: str = "kp'.candidates",
     ) -> None:
@@ -194,6 +204,12 @@ class CandidatesKP(KPPrime):
         self.priors = {e: sorted(p, key=lambda rp: -rp[1]) for e, p in priors.items()}
         self.rooms = list(rooms)
         self.max_candidates = max_candidates
+        self.searched_ttl_s = searched_ttl_s
+        #: entity -> when its place was last asserted (perception or an action's effect)
+        self.placed_at: dict[str, float] = {}
+        #: (entity, room) whose searched mark aged out: searched again only after the never-searched rooms
+        self.reopened: set[tuple[str, str]] = set()
+        kb.subscribe(self._placed)
         self.last_room: dict[str, str] = {}
         self.lost_at: dict[str, float] = {}
         self._tracked: set[str] = set()
@@ -210,14 +226,43 @@ class CandidatesKP(KPPrime):
         ranked += list(self.priors.get(entity, ()))
         seen: set[str] = set()
         excluded = self.explored_for(entity) | self.searched_for(entity)
+        again = {room for e, room in self.reopened if e == entity} - excluded
         result: list[tuple[str, float]] = []
         for room, p in ranked:
-            if room not in seen and room not in excluded and self.is_a(room, "room"):
+            if room not in seen and room not in excluded | again and self.is_a(room, "room"):
                 seen.add(room)
                 result.append((room, p))
         if result:
             return result[: self.max_candidates]
-        return [(r, 0.0) for r in self.rooms if r not in excluded and self.is_a(r, "room")]
+        rest = [(r, 0.0) for r in self.rooms if r not in excluded | again and self.is_a(r, "room")]
+        return rest or [(r, 0.0) for r in self.rooms if r in again]
+
+    def _placed(self, change: Change) -> None:
+        """Note when an entity's place is asserted (a sighting, a pick, a hand-over)."""
+        where = self.PLACING.get(change.name) if change.kind == ChangeKind.ADD_FACT else None
+        if where is not None and where < len(change.args):
+            self.placed_at[change.args[where]] = change.time
+
+    def stale_searches(self, entity: str, now: float) -> list[Fact]:
+        """The entity's ``searched`` marks that no longer rule its room out: all of them once it is located;
+        else those made before its place was last asserted, and those older than ``searched_ttl_s`` (once
+        per room: noted in :attr:`reopened`)."""
+        marks = self.kb.facts("searched", entity)
+        if self.located(entity):
+            self.reopened = {(e, r) for e, r in self.reopened if e != entity}
+            return marks
+        placed = self.placed_at.get(entity, -math.inf)
+        stale = []
+        for fact in marks:
+            prov = self.kb.why(fact)
+            since = prov.since if prov is not None else now
+            if since < placed:
+                self.reopened = {(e, r) for e, r in self.reopened if e != entity}
+                stale.append(fact)
+            elif now - since > self.searched_ttl_s and (entity, fact.args[1]) not in self.reopened:
+                self.reopened.add((entity, fact.args[1]))
+                stale.append(fact)
+        return stale
 
     def searched_for(self, entity: str) -> set[str]:
         """Rooms the robot searched for the entity since it was last located (``(searched ?e ?room)``)."""
@@ -285,21 +330,18 @@ class CandidatesKP(KPPrime):
         if "to_accompany" in self.kb.domain.predicates:
             self.requests(now)
         for entity in self.entities():
+            stale = self.stale_searches(entity, now)
+            if stale:
+                with self.kb.batch():
+                    for fact in stale:
+                        self.retract_fact("searched", *fact.args, at=now)
             wanted = dict(self.wanted(entity))
             on = set(self.wanted_on(entity))
             current = {f.args[1] for f in self.kb.facts("possibly_at", entity)}
             current_on = {f.args[1] for f in self.kb.facts("possibly_on", entity)}
-            stale = self.kb.facts("searched", entity) if self.located(entity) else []
-            if (
-                not stale
-                and current == set(wanted)
-                and current_on == on
-                and all(self._assumed(entity, r) for r in wanted)
-            ):
+            if current == set(wanted) and current_on == on and all(self._assumed(entity, r) for r in wanted):
                 continue
             with self.kb.batch():
-                for fact in stale:
-                    self.retract_fact("searched", *fact.args, at=now)
                 for room in sorted(current - set(wanted)):
                     self.retract_fact("possibly_at", entity, room, at=now)
                 for furniture in sorted(current_on - on):
