@@ -170,6 +170,58 @@ def test_a_run_served_live_takes_a_goal_from_the_box(page: Page, tmp_path: Path)
             proc.communicate()
 
 
+def test_a_granny_annie_run_shows_the_referees_score_as_it_goes(page: Page, tmp_path: Path) -> None:
+    journal = tmp_path / "run.sqlite"
+    command = [sys.executable, "-m", "knic", "run", "--scenario", "granny_annie", "--seed", "0", "--serve"]
+    command += ["--port", "0", "--linger", "120", "--max-sim-time", "300", "--journal", str(journal)]
+    env = {**os.environ, "PYTHONUNBUFFERED": "1"}
+    out = (tmp_path / "run.out").open("w")  # the run's printed trace, never blocking on a full pipe
+    proc = subprocess.Popen(command, cwd=ROOT, stderr=subprocess.PIPE, stdout=out, text=True, env=env)
+    try:
+        url = _served_url(proc)
+        page.goto(url)
+        page.wait_for_selector("#score-panel:not([hidden])")
+        # she is on the bed and asks for her glasses (seed 0): the robot reaches her room, then the rest
+        page.wait_for_function(
+            "document.querySelector('#score-sheet tr[data-kind=entered_room] td:last-child')"
+            "?.textContent === '1 / 1'",
+            timeout=180_000,
+        )
+        page.wait_for_function(
+            "document.getElementById('score-state').textContent.startsWith('final')", timeout=180_000
+        )
+        with urllib.request.urlopen(url + "api/score") as response:
+            served = json.load(response)
+        written = json.loads((tmp_path / "run.score.json").read_text())  # the referee's score file
+        assert served == written and served["final"] is True
+        assert served["score"]["achieved"] == {
+            "entered_room": 1,
+            "understood": 1,
+            "devices": 0,
+            "found": 0,
+            "brought": 1,
+            "accompanied": 0,
+        }
+        assert page.inner_text("#score-total").startswith("3 of 3 achievements")
+        assert page.inner_text("#score-sheet tr[data-kind=brought] td:last-child") == "1 / 1"
+        assert page.inner_text("#score-sheet tr[data-kind=bumps] td:last-child") == "0"
+        assert "brought: (has annie glasses): yes" in page.inner_text("#score-details")
+        shown = page.evaluate("window.knicScores")
+        running = [s for s in shown if not s["final"]]
+        assert running and running[0]["achievements"] < 3  # the sheet was drawn while the run went on
+        page.screenshot(path=str(tmp_path / "web_view_score.png"), full_page=True)
+    finally:
+        proc.send_signal(signal.SIGINT)
+        try:
+            proc.communicate(timeout=60)
+        except subprocess.TimeoutExpired:
+            proc.kill()
+            proc.communicate()
+        out.close()
+    printed = (tmp_path / "run.out").read_text()
+    assert "referee: 3 of 3 achievements (entered_room 1/1, understood 1/1, brought 1/1)" in printed
+
+
 def _served_url(proc: subprocess.Popen[str]) -> str:
     assert proc.stderr is not None
     seen = []

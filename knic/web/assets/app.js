@@ -15,6 +15,7 @@
   };
   // write-to-page latency probe for the browser test: fact text -> Date.now() when its row was drawn
   window.knicSeen = {};
+  window.knicScores = []; // every score sheet drawn (tests)
 
   const esc = (s) => String(s).replace(/[&<>"']/g, (c) => ({ "&": "&amp;", "<": "&lt;", ">": "&gt;",
     '"': "&quot;", "'": "&#39;" })[c]);
@@ -283,6 +284,7 @@
   function renderScore(record) {
     if (!record || !record.score) return;
     const s = record.score;
+    window.knicScores.push({ final: record.final, sim_time: record.sim_time, achievements: s.achievements });
     $("score-panel").hidden = false;
     $("score-state").textContent = record.final ? `final, t = ${fmt(record.sim_time)} s`
       : `live, t = ${fmt(record.sim_time)} s`;
