@@ -5,17 +5,22 @@ from __future__ import annotations
 import asyncio
 import json
 from collections.abc import Iterator
-from typing import Any
+from types import SimpleNamespace
+from typing import Any, cast
 
 import pytest
 from fastapi.testclient import TestClient
 
+from knic.bench.granny_annie.livescore import LiveScore, score_path
+from knic.bench.granny_annie.recording import Recorder
+from knic.bench.granny_annie.referee import Sample, Timeline
 from knic.web.app import create_app
 from knic.web.hub import Hub
 from knic.web.limits import BodyLimit
 from knic.web.view import JournalView, TraceFile
 from knowledge_base import BeliefStatus
 from planner.trace import EventKind, Trace, TraceEvent
+from tests.bench.test_granny_annie_referee import START, changed, episode, moving
 from tests.web.conftest import Writer
 from worlds.model import World
 
@@ -195,7 +200,9 @@ def test_openapi_documents_the_api_offline(client: TestClient) -> None:
     assert "cdn" not in docs.text.lower()
     assert client.get("/docs-assets/swagger-ui-bundle.js").status_code == 200
     paths = client.get("/openapi.json").json()["paths"]
-    for path in ("/api/facts", "/api/why", "/api/trace", "/api/map", "/api/goal", "/api/events", "/api/live"):
+    for path in ("/api/facts", "/api/why", "/api/trace", "/api/map", "/api/goal", "/api/events"):
+        assert path in paths
+    for path in ("/api/live", "/api/score"):
         assert path in paths
     assert "post" in paths["/api/goal"]
 
@@ -245,6 +252,42 @@ def test_event_stream_sends_the_backlog_then_each_journal_write(writer: Writer, 
         ("(object_at mug kitchen)", "kp'.object_at")
     ]
     assert data2["seq"] == writer.kb.journal.last_seq
+
+
+def test_the_referees_score_file_is_served_and_streamed(writer: Writer, world: World) -> None:
+    """``knic serve --journal`` of a benchmark episode: the score file beside the journal (written by the
+    referee's :class:`LiveScore`) reaches /api/score and the event stream each time it changes."""
+    path = score_path(writer.journal)
+    start = frozenset(START)
+    timeline = Timeline(samples=moving(start, 0.0, 5.0))
+    live = LiveScore(cast(Recorder, SimpleNamespace(timeline=timeline)), episode(), lambda: None, path)
+
+    async def scenario() -> tuple[list[tuple[str, dict[str, Any]]], dict[str, Any]]:
+        hub = Hub(lambda: JournalView(writer.journal, world=world), poll_s=3600, score=path)
+        await hub.start()
+        hub.poll_once()
+        assert hub.score is None  # no score file yet
+        live.judge(5.0)
+        stream = hub.stream(hub.view.seq, 0)
+        got = [await anext(stream), await anext(stream)]  # hello, then the score as the backlog
+        visit = changed(set(START), (("robot_at", "r2d2", "entrance_hall"), ("robot_at", "r2d2", "bedroom")))
+        timeline.samples.append(Sample(5.5, visit, (3.0, 0.0, 0.0)))
+        live.judge(6.0)
+        hub.poll_once()
+        got.append(await anext(stream))
+        await hub.stop()
+        return [_parse(m) for m in got], dict(hub.score or {})
+
+    messages, last = asyncio.run(scenario())
+    assert [kind for kind, _ in messages] == ["hello", "score", "score"]
+    assert messages[1][1]["score"]["achievements"] == 0
+    assert messages[2][1]["score"]["achieved"]["entered_room"] == 1
+    assert last == json.loads(path.read_text())
+    app = create_app(lambda: JournalView(writer.journal, world=world), score=path)
+    with TestClient(app) as c:
+        assert c.get("/api/score").json() == last
+    with TestClient(create_app(lambda: JournalView(writer.journal, world=world))) as c:
+        assert c.get("/api/score").json() == {"state": "none"}
 
 
 def _parse(message: str) -> tuple[str, dict[str, Any]]:
