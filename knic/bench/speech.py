@@ -22,7 +22,9 @@ Figures (wall-clock time; the decoder is built once before timing):
 * ``dev`` -- the same main figures on the development set (``tests/fixtures/speech_dev``: voices and sentences
   the test set does not have), to see how far the figures carry to unseen voices;
 * ``answer_accuracy`` -- share of ``tests/fixtures/speech_answers`` (spoken yes, no, and speech that is no
-  answer) that the confirmation recogniser takes as the right answer, or as no answer.
+  answer) that the confirmation recogniser takes as the right answer, or as no answer;
+  ``answer_phrase_accuracy`` the same on ``speech_answers_dev`` beside it (answers of several words: "no,
+  that's wrong", "of course"); both are development sets.
 
 ``--fixtures DIR`` runs another set in the same layout, e.g. ``tests/fixtures/speech_dev``, the dev set
 (other sentences and voices, to tune on without touching the test set); ``--option KEY=VALUE`` (repeatable),
@@ -273,6 +275,10 @@ def run(args: argparse.Namespace) -> int:
     if args.answers:
         figures["answer_accuracy"], wrong = evaluate_answers(Path(args.answers), args.acoustic_model)
         mistakes += wrong
+        phrases = Path(args.answers).parent / "speech_answers_dev"
+        if (phrases / "gold.json").is_file():
+            figures["answer_phrase_accuracy"], wrong = evaluate_answers(phrases, args.acoustic_model)
+            mistakes += wrong
     if args.verbose:
         figures["errors"] = mistakes
     if args.json:

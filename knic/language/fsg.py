@@ -196,22 +196,51 @@ def _remove_epsilons(
     return WordGraph(num_states, 0, final, tuple(transitions))
 
 
-def answer_graph(answers: Sequence[str], fillers: Sequence[str], filler_weight: float) -> WordGraph:
+def answer_graph(
+    answers: Sequence[str],
+    fillers: Sequence[str],
+    filler_weight: float,
+    *,
+    openers: Sequence[str] = (),
+    closers: Sequence[str] = ("please",),
+) -> WordGraph:
     """The yes/no answer grammar as an epsilon-free word graph.
 
-    One or two answer words, optionally followed by "please"; in parallel, three or more filler words, each
-    costing ``filler_weight``, so speech that is not an answer comes out as fillers instead of being forced
-    onto yes or no.
+    An optional opener ("well"), one or two answer phrases ("no", "that's wrong"; two only after a one-word
+    phrase: "no, that's wrong"), an optional closer
+    ("please", "thank you"); in parallel, three or more filler words, each costing ``filler_weight``, so
+    speech that is not an answer comes out as fillers instead of being forced onto yes or no. Phrases of
+    several words become chains of states.
     """
-    start, one, two, final, f1, f2, f3 = range(7)
-    share = 1.0 / max(1, len(answers))
+    start, opened, one, two, final, f1, f2, f3 = range(8)
     transitions: list[tuple[int, int, float, str]] = []
-    for word in answers:
-        transitions += [(start, one, share, word), (start, final, share, word)]
-        transitions += [(one, two, share, word), (one, final, share, word)]
-    transitions += [(one, final, 1.0, "please"), (two, final, 1.0, "please")]
+    count = [8]
+
+    def path(origin: int, target: int, weight: float, phrase: str) -> None:
+        words = phrase.split()
+        here = origin
+        for index, word in enumerate(words):
+            nxt = target if index == len(words) - 1 else count[0]
+            if nxt != target:
+                count[0] += 1
+            transitions.append((here, nxt, weight if index == 0 else 1.0, word))
+            here = nxt
+
+    share = 1.0 / max(1, len(answers))
+    for phrase in openers:
+        path(start, opened, 0.05 / max(1, len(openers)), phrase)
+    for origin in (start, opened, one):
+        # a second phrase follows a one-word first ("no, that's wrong") and is less likely than none
+        second = origin == one
+        for phrase in answers:
+            weight = share * (0.2 if second else 0.5)
+            path(origin, two if second or " " in phrase else one, weight, phrase)
+            path(origin, final, weight, phrase)
+    for origin in (one, two):
+        for phrase in closers:
+            path(origin, final, 0.2 / max(1, len(closers)), phrase)
     for word in fillers:
         transitions += [(start, f1, filler_weight, word), (f1, f2, filler_weight, word)]
         transitions += [(f2, f3, filler_weight, word), (f2, final, filler_weight, word)]
         transitions += [(f3, f3, filler_weight, word), (f3, final, filler_weight, word)]
-    return WordGraph(7, start, final, tuple(transitions))
+    return WordGraph(count[0], start, final, tuple(transitions))

@@ -45,7 +45,7 @@ import numpy.typing as npt
 
 from core.errors import AudioError, LanguageError
 from knic.language.acoustic import DEFAULT_ACOUSTIC_MODEL, acoustic_model_options
-from knic.language.answers import NO_WORDS, YES_WORDS
+from knic.language.answers import answer_phrases
 from knic.language.fsg import answer_graph, compile_word_graph
 from knic.language.grammar import Grammar, grammar_words, to_jsgf
 from knic.language.vocabulary import Vocabulary
@@ -458,8 +458,8 @@ ANSWER_DECODER_OPTIONS: dict[str, object] = {
 class AnswerRecognizer:
     """pocketsphinx decoding of a spoken yes or no (the semi-autonomous role's confirmation).
 
-    The grammar (:func:`~knic.language.fsg.answer_graph`) admits the single-word answers of
-    :mod:`knic.language.dialogue`, optionally followed by "please", or a run of at least three filler words.
+    The grammar (:func:`~knic.language.fsg.answer_graph`) admits one or two answer phrases of
+    :mod:`knic.language.answers` with an optional opener and closer, or a run of at least three filler words.
 
     Args:
         acoustic_model: as for :class:`Recognizer`.
@@ -482,15 +482,18 @@ class AnswerRecognizer:
         set_loglevel("FATAL")
         options = {**ANSWER_DECODER_OPTIONS, **acoustic_model_options(acoustic_model)}
         decoder = Decoder(lm=None, loglevel="FATAL", **options)
-        self.answers = sorted(
-            w for w in YES_WORDS | NO_WORDS if " " not in w and "'" not in w and decoder.lookup_word(w)
-        )
-        fillers = sorted(
-            w for w in FILLER_WORDS if w not in self.answers and w != "please" and decoder.lookup_word(w)
-        )
+        phrases = answer_phrases()
+
+        def known(items: tuple[str, ...]) -> list[str]:
+            return sorted(p for p in items if all(decoder.lookup_word(w) for w in p.split()))
+
+        #: the answer phrases the grammar admits (yes and no phrases the dictionary can say)
+        self.answers = known(phrases.yes + phrases.no)
+        openers, closers = known(phrases.openers), known(phrases.closers)
         #: every word that makes an answer (anything else means the speech was not one).
-        self.answer_words = frozenset(self.answers) | {"please"}
-        graph = answer_graph(self.answers, fillers, filler_weight)
+        self.answer_words = frozenset(w for p in self.answers + openers + closers for w in p.split())
+        fillers = sorted(w for w in FILLER_WORDS if w not in self.answer_words and decoder.lookup_word(w))
+        graph = answer_graph(self.answers, fillers, filler_weight, openers=openers, closers=closers)
         with tempfile.TemporaryDirectory(prefix="knic-fsg-") as tmp:
             path = Path(tmp) / "answer.fsg"
             path.write_text(graph.to_fsg("answer"), encoding="utf-8")
