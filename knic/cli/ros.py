@@ -1,9 +1,10 @@
 """``knic ros``: KnIC as a ROS 2 node beside a robot that publishes its own sensors (or ``knic sim --ros``).
 
 KnIC reads the robot only through ROS 2 topics (:class:`knic.ros.robot.RosRobot`), publishes what it believes
-and does (:mod:`knic.ros.knic_node`) and takes goals on ``/knic/goal`` besides ``--goal``. With goals it
-stops when it believes them achieved or dropped (exit 0 when achieved, 1 otherwise); without, it serves
-until ``--max-sim-time``, Ctrl-C or SIGTERM.
+and does (:mod:`knic.ros.knic_node`) and takes goals on ``/knic/goal`` besides ``--goal``; under a role that
+confirms, the question goes out on ``/knic/question`` and the answer comes in on ``/knic/answer``. With
+goals it stops when it believes them achieved or dropped (exit 0 when achieved, 1 otherwise); without, it
+serves until ``--max-sim-time``, Ctrl-C or SIGTERM.
 """
 
 from __future__ import annotations
@@ -65,7 +66,13 @@ def run(args: argparse.Namespace) -> int:
             try:
                 for text in args.goal:
                     reply = ros_run.add_goal(text)
-                    if reply["outcome"] != "added":
+                    if reply["outcome"] == "asked":  # a role that confirms: the answer comes over ROS 2
+                        print(
+                            f"knic ros: {reply['reply']} ({reply['question']}: answer on /knic/answer)",
+                            file=sys.stderr,
+                            flush=True,
+                        )
+                    elif reply["outcome"] != "added":
                         raise KnicError(f"knic ros: goal {text!r} {reply['outcome']}: {reply['reason']}")
                 if not args.json:
                     print("knic ros: ready; goals on /knic/goal", file=sys.stderr, flush=True)

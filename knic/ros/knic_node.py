@@ -8,8 +8,10 @@ dispatcher starts), ``/erlc/robot_pose`` (10 Hz), ``/erlc/trajectory`` (each new
 ``/knic/octomap/<kind>_<name>`` (each tracked entity's octomap, 1 Hz), ``/knic/map`` (the map).
 
 In: ``/knic/goal`` (an English command or PDDL atoms, plain text or JSON ``{"id", "text", "speaker"}``)
-through :class:`knic.intake.GoalIntake`, answered on ``/knic/goal_reply``; while a question is open (roles
-that confirm), the next text is the answer. ``/knic/kb/request`` (JSON ``{"id", "op", ...}``) answered on
+through :class:`knic.intake.GoalIntake`, answered on ``/knic/goal_reply``. Roles that confirm ask on
+``/knic/question`` and take the answer on ``/knic/answer`` with the question's id
+(:mod:`knic.ros.questions`); while a question is open, a text on ``/knic/goal`` that is not PDDL is taken as
+the answer too. ``/knic/kb/request`` (JSON ``{"id", "op", ...}``) answered on
 ``/knic/kb/reply`` with the same ``id``: queries ``facts``, ``holds``, ``why``, ``instances``, ``goals`` and
 updates ``add_instance``, ``add_fact``, ``remove_fact``, ``add_goal``, ``remove_goal`` (checked against the
 domain: a bad request is answered with one line and changes nothing). Services with standard types:
@@ -29,6 +31,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from core.errors import KnicError
+from knic.intake import IntakeReply, Outcome
 from knic.ros import topics as tp
 from knic.ros.convert import (
     MessageError,
@@ -39,6 +42,7 @@ from knic.ros.convert import (
     pose_to_ros,
     voxels_to_ros,
 )
+from knic.ros.questions import QuestionChannel
 from knic.ros.robot import RosLink
 from knic.scheduler import Component
 from knowledge_base import Change, Fact, KnowledgeBase
@@ -162,9 +166,14 @@ class KnicNode:
         self.pub_map = n.create_publisher(OccupancyGrid, tp.KNIC_MAP, q(1, latched=True))
         self.pub_goal_reply = n.create_publisher(String, tp.GOAL_REPLY, q(50))
         self.pub_kb_reply = n.create_publisher(String, tp.KB_REPLY, q(50))
+        self.pub_question = n.create_publisher(String, tp.QUESTION, q(1, latched=True))
+        self.questions = QuestionChannel(
+            self.intake, self.pub_question.publish, self.pub_goal_reply.publish, kb.now
+        )
         self.pub_octomaps: dict[str, Any] = {}
         n.create_subscription(String, tp.GOAL, self._on_goal, q(50))
         n.create_subscription(String, tp.KB_REQUEST, self._on_kb_request, q(50))
+        n.create_subscription(String, tp.ANSWER, self._on_answer, q(50))
         n.create_service(Trigger, tp.KB_CLEAR_GOALS, self._clear_goals)
         n.create_service(Trigger, "/knic/kb/problem", self._problem)
         self.events_published = 0
@@ -270,14 +279,27 @@ class KnicNode:
             except (MessageError, KeyError, AttributeError) as exc:
                 self.pub_goal_reply.publish(json_to_ros({"outcome": "refused", "reason": f"goal: {exc}"}))
                 return
-        if self.intake.awaiting_answer is not None and not text.lstrip().startswith("("):
-            reply = self.intake.hear(text)
+        if self.questions.open_id is not None and not text.lstrip().startswith("("):
+            self.questions.answer(text)  # publishes its reply
         else:
-            reply = self.intake.submit(text, speaker=speaker, source="ros")
-        out = {"text": text, **reply.to_dict()}
-        if request_id is not None:
-            out["id"] = request_id
-        self.pub_goal_reply.publish(json_to_ros(out))
+            reply = self.submit(text, speaker=speaker, request_id=request_id)
+            out = {"text": text, **reply.to_dict()}
+            if self.questions.open_id is not None and reply.outcome == Outcome.ASKED:
+                out["question"] = self.questions.open_id
+            if request_id is not None:
+                out["id"] = request_id
+            self.pub_goal_reply.publish(json_to_ros(out))
+        self.publish_snapshot()
+
+    def submit(
+        self, text: str, *, speaker: str = "annie", source: str = "ros", request_id: Any = None
+    ) -> IntakeReply:
+        """Take a command through the intake (as ``/knic/goal`` does); a question it asks goes out on
+        ``/knic/question``."""
+        return self.questions.submit(text, speaker=speaker, source=source, request_id=request_id)
+
+    def _on_answer(self, msg: Any) -> None:
+        self.questions.on_answer(msg)
         self.publish_snapshot()
 
     def _on_kb_request(self, msg: Any) -> None:

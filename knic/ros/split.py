@@ -102,7 +102,11 @@ class RosRun:
 
     def add_goal(self, text: str) -> dict[str, Any]:
         """Submit a goal through the intake (as ``/knic/goal`` would); returns the intake's reply."""
-        return dict(self.node.intake.submit(text, source="user").to_dict())
+        reply = self.node.submit(text, source="user")
+        out = dict(reply.to_dict())
+        if reply.outcome.value == "asked":
+            out["question"] = self.node.questions.open_id
+        return out
 
     def run(self, max_sim_time: float, *, until_done: bool = True) -> RosRunResult:
         """Run until the robot believes its goals achieved or dropped (``until_done`` and some goal given),
