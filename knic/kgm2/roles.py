@@ -36,6 +36,21 @@ class Policy:
 
 
 @dataclass(frozen=True)
+class Revisit:
+    """What the robot goes back to look at when idle (read by :class:`knic.kgm2.attention.Revisits`).
+
+    ``people``: go where a person is believed with an aged belief; ``rooms`` and ``items``: rooms (and the
+    rooms where these items are believed) revisited ``priority_weight`` times as often as the others. The
+    empty default revisits every room in turn.
+    """
+
+    people: bool = False
+    rooms: tuple[str, ...] = ()
+    items: tuple[str, ...] = ()
+    priority_weight: float = 1.0
+
+
+@dataclass(frozen=True)
 class Role:
     """One role: policies by class and by room, a default, and executive flags."""
 
@@ -47,6 +62,7 @@ class Role:
     person_ttl_s: float = 30.0
     confirm_actions: bool = False
     operator_only: bool = False
+    revisit: Revisit = field(default_factory=Revisit)
 
     def policy(self, cls: str, room: str | None = None) -> Policy:
         """The policy for a percept of class ``cls`` seen in ``room`` (None when outside every room)."""
@@ -82,6 +98,7 @@ def _role(name: str, raw: Any, where: str) -> Role:
         "person_ttl_s",
         "confirm_actions",
         "operator_only",
+        "revisit",
     }
     unknown = set(raw) - allowed
     if unknown:
@@ -104,7 +121,26 @@ def _role(name: str, raw: Any, where: str) -> Role:
         person_ttl_s=float(ttl),
         confirm_actions=bool(raw.get("confirm_actions", False)),
         operator_only=bool(raw.get("operator_only", False)),
+        revisit=_revisit(raw.get("revisit"), f"{where}: {name}.revisit"),
     )
+
+
+def _revisit(raw: Any, where: str) -> Revisit:
+    if raw is None:
+        return Revisit()
+    allowed = {"people", "rooms", "items", "priority_weight"}
+    if not isinstance(raw, Mapping) or set(raw) - allowed:
+        raise InferenceError(f"{where}: expected a mapping of {sorted(allowed)}, got {raw!r}")
+    lists = {}
+    for key in ("rooms", "items"):
+        value = raw.get(key) or []
+        if not isinstance(value, list) or not all(isinstance(v, str) for v in value):
+            raise InferenceError(f"{where}.{key}: expected a list of names, got {value!r}")
+        lists[key] = tuple(value)
+    weight = raw.get("priority_weight", 1.0)
+    if not isinstance(weight, int | float) or isinstance(weight, bool) or weight < 1:
+        raise InferenceError(f"{where}.priority_weight: expected a number >= 1, got {weight!r}")
+    return Revisit(bool(raw.get("people", False)), lists["rooms"], lists["items"], float(weight))
 
 
 def load_roles(path: Path | str = ROLES_FILE) -> dict[str, Role]:
