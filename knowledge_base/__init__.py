@@ -9,6 +9,7 @@ Architecture (one module per concern):
 * :mod:`knowledge_base.queries` -- the read side: queries, snapshots, state_at, export.
 * :mod:`knowledge_base.store` -- the live state's indexes, write validation, undoable changes.
 * :mod:`knowledge_base.journal` -- the append-only history (in memory or SQLite WAL), checkpoints, state_at.
+* :mod:`knowledge_base.timeline` -- every record's validity interval, so state_at is one vectorised query.
 * :mod:`knowledge_base.export` -- to and from unified-planning problems and PDDL text.
 """
 

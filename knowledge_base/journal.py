@@ -6,9 +6,13 @@ Two implementations share one interface:
 * :class:`SqliteJournal` keeps them in a SQLite database in WAL mode, together with the domain text and its
   metadata, so that a reader in another process needs nothing but the file.
 
-Both take periodic checkpoints (full state copies) so that :meth:`Journal.state_at` loads the nearest
-checkpoint and replays at most a checkpoint interval of events instead of the whole history. Checkpoints are
-derived data: losing one (say, to a crash) costs speed, never correctness.
+Past states come from a :class:`~knowledge_base.timeline.Timeline` (every record's validity interval, in
+memory), so ``state_at`` costs one vectorised interval test plus building the answer, whatever the length of
+the history. The SQLite journal also takes periodic checkpoints (full state copies) so that reopening it
+loads the last checkpoint and replays at most a checkpoint interval of events instead of the whole history;
+it builds its timeline from the events only when a past state is first asked for. Checkpoints and the
+timeline are derived data: losing them (say, to a crash) costs speed, never correctness, and a journal
+written before the timeline existed needs no migration.
 
 Time base: event times are the knowledge base's clock (wall or simulated seconds). ``state_at(t)`` is the
 state after the last event, in journal order, whose time is at most ``t``; this stays meaningful when the
@@ -34,12 +38,13 @@ from typing import Any
 
 from core.errors import JournalError
 from knowledge_base.model import BeliefStatus, Change, ChangeKind, Fact, Provenance, State, apply_change
+from knowledge_base.timeline import Timeline
 
 __all__ = ["CorruptRow", "Journal", "SqliteJournal", "recover"]
 
 #: Fewest events between two checkpoints; the interval grows with the state so checkpoints stay cheap.
 CHECKPOINT_MIN_EVENTS = 1000
-#: Decoded checkpoints kept in memory by a SQLite journal (a state_at near a recent one skips decoding).
+#: Decoded checkpoints kept in memory by a SQLite journal (reopening the same journal skips decoding).
 DECODED_CHECKPOINTS = 2
 
 _KINDS = {k.value: k for k in ChangeKind}
@@ -61,10 +66,9 @@ class Journal:
         self._base = base.copy()
         self._times: list[float] = []
         self._monotone = True
-        self._checkpoint_seqs: list[int] = [0]
-        self._last_checkpoint = 0
         self._memory_events: list[Change] = []
-        self._memory_checkpoints: list[State] = [self._base]
+        #: every record's validity interval (None until a SQLite journal with history first needs it)
+        self._timeline: Timeline | None = Timeline(self._base)
         self.meta: dict[str, str] = {}
 
     # ----------------------------------------------------------------- writing
@@ -81,24 +85,15 @@ class Journal:
         """
         if not changes:
             return
-        last = changes[-1].seq
-        checkpoint = last - self._last_checkpoint >= CHECKPOINT_MIN_EVENTS and self._checkpoint_due(
-            last, state_after
-        )
-        self._store(changes, state_after if checkpoint else None)
-        times = self._times
-        for c in changes:
-            if times and c.time < times[-1]:
-                self._monotone = False
-            times.append(c.time)
-        if checkpoint:
-            self._checkpoint_seqs.append(changes[-1].seq)
-            self._last_checkpoint = changes[-1].seq
+        self._store(changes, state_after)
+        self._note_times([c.time for c in changes])
+        self._feed_timeline(changes)
 
-    def _checkpoint_due(self, seq: int, state: State) -> bool:
-        # Replaying the events since a checkpoint should cost about as much as loading the checkpoint.
-        interval = max(CHECKPOINT_MIN_EVENTS, (len(state.facts) + len(state.instances)) // 2)
-        return seq - self._last_checkpoint >= interval
+    def _feed_timeline(self, changes: Sequence[Change]) -> None:
+        timeline = self._timeline
+        if timeline is not None and changes and timeline.seq == changes[0].seq - 1:
+            for c in changes:
+                timeline.feed(c)
 
     def _note_times(self, times: Iterable[float]) -> None:
         for t in times:
@@ -106,10 +101,8 @@ class Journal:
                 self._monotone = False
             self._times.append(t)
 
-    def _store(self, changes: Sequence[Change], checkpoint: State | None) -> None:
+    def _store(self, changes: Sequence[Change], state_after: State) -> None:
         self._memory_events.extend(changes)
-        if checkpoint is not None:
-            self._memory_checkpoints.append(checkpoint.copy())
 
     def set_meta(self, key: str, value: str) -> None:
         """Record a piece of metadata (e.g. the problem name) with the history."""
@@ -123,9 +116,6 @@ class Journal:
         """Events with ``after < seq <= upto`` (``upto`` None: to the end), in order."""
         end = self.last_seq if upto is None else upto
         return self._memory_events[after:end]
-
-    def _checkpoint(self, index: int) -> State:
-        return self._memory_checkpoints[index].copy()
 
     def last_seq_at(self, t: float) -> int:
         """Sequence number of the last event (journal order) with time <= ``t``; 0 if there is none."""
@@ -141,12 +131,19 @@ class Journal:
         return self.state_at_seq(self.last_seq_at(t))
 
     def state_at_seq(self, seq: int) -> State:
-        """The state after event ``seq`` (0: the base state): nearest checkpoint plus replay."""
-        index = bisect.bisect_right(self._checkpoint_seqs, seq) - 1
-        state = self._checkpoint(index)
-        for change in self.changes(self._checkpoint_seqs[index], seq):
-            apply_change(state, change)
-        return state
+        """The state after event ``seq`` (0: the base state), from the timeline."""
+        timeline = self.timeline()
+        return timeline.state_at(seq, self._times[seq - 1] if seq > 0 else None)
+
+    def timeline(self) -> Timeline:
+        """The timeline of the whole history, brought up to the last event (built on first use)."""
+        timeline = self._timeline
+        if timeline is None:
+            timeline = self._timeline = Timeline(self._base)
+        if timeline.seq < self.last_seq:
+            for change in self.changes(timeline.seq, self.last_seq):
+                timeline.feed(change)
+        return timeline
 
 
 class SqliteJournal(Journal):
@@ -176,6 +173,8 @@ class SqliteJournal(Journal):
     ) -> None:
         super().__init__(base)
         self._decoded: dict[int, State] = {}
+        self._checkpoint_seqs: list[int] = [0]
+        self._last_checkpoint = 0
         self.path = Path(path)
         self.read_only = read_only
         try:
@@ -201,6 +200,8 @@ class SqliteJournal(Journal):
                 raise JournalError(f"{self.path}: {CorruptRow(seq, why)}")
         self._note_times(t for (_, t) in times)
         self._note_checkpoints()
+        if self.last_seq:
+            self._timeline = None  # built from the events when a past state is first asked for
 
     @staticmethod
     def read_meta(path: str | Path) -> dict[str, str]:
@@ -252,6 +253,7 @@ class SqliteJournal(Journal):
         changes = [_row_to_change(r) for r in rows]
         self._note_times(c.time for c in changes)
         self._note_checkpoints()
+        self._feed_timeline(changes)
         return changes
 
     def _note_checkpoints(self) -> None:
@@ -266,9 +268,11 @@ class SqliteJournal(Journal):
             self._checkpoint_seqs.append(seq)
             self._last_checkpoint = seq
 
-    def _store(self, changes: Sequence[Change], checkpoint: State | None) -> None:
+    def _store(self, changes: Sequence[Change], state_after: State) -> None:
         if self.read_only:
             raise JournalError(f"{self.path}: journal is open read-only")
+        last = changes[-1].seq
+        checkpoint = state_after if self._checkpoint_due(last, state_after) else None
         db = self._db
         try:
             db.execute("BEGIN")
@@ -286,6 +290,14 @@ class SqliteJournal(Journal):
                 raise
         except sqlite3.DatabaseError as exc:
             raise JournalError(f"{self.path}: cannot write journal ({exc})") from None
+        if checkpoint is not None:
+            self._checkpoint_seqs.append(last)
+            self._last_checkpoint = last
+
+    def _checkpoint_due(self, seq: int, state: State) -> bool:
+        # Replaying the events since a checkpoint should cost about as much as loading the checkpoint.
+        interval = max(CHECKPOINT_MIN_EVENTS, (len(state.facts) + len(state.instances)) // 2)
+        return seq - self._last_checkpoint >= interval
 
     def set_meta(self, key: str, value: str) -> None:
         if self.read_only:
@@ -302,6 +314,17 @@ class SqliteJournal(Journal):
             "SELECT * FROM events WHERE seq > ? AND seq <= ? ORDER BY seq", (after, end)
         ).fetchall()
         return [_row_to_change(r) for r in rows]
+
+    def state_at_seq(self, seq: int) -> State:
+        """The state after event ``seq``: from the timeline once it is built; until then the last state (the
+        one a reopened journal needs) comes from the nearest checkpoint plus replay, which reads far less."""
+        if self._timeline is None and seq == self.last_seq:
+            index = bisect.bisect_right(self._checkpoint_seqs, seq) - 1
+            state = self._checkpoint(index)
+            for change in self.changes(self._checkpoint_seqs[index], seq):
+                apply_change(state, change)
+            return state
+        return super().state_at_seq(seq)
 
     def _checkpoint(self, index: int) -> State:
         seq = self._checkpoint_seqs[index]

@@ -181,8 +181,9 @@ _COUNTS = {"changing_writes": 0, "noop_writes": 0}
 def _large_state(
     domain: Path, problem: Path, path: Path, n: int, rng: random.Random
 ) -> tuple[float, float, int]:
-    """A journalled knowledge base grown to ``n`` facts by changing writes (100 per batch) with churn; the
-    median ``state_at`` at 7 random past times and one ``to_pddl_problem`` (milliseconds), and the facts."""
+    """A journalled knowledge base grown to ``n`` facts by changing writes (1,000 new facts per batch, and
+    churn: 50 facts retracted and 50 earlier retractions re-asserted per batch); the median ``state_at`` at 7
+    random past times and one ``to_pddl_problem`` (milliseconds), and the facts."""
     from knowledge_base import KnowledgeBase
 
     clock = _SimClock()
@@ -193,9 +194,18 @@ def _large_state(
             kb.add_instance("item", f"bench_item{i}")
             kb.add_instance("room", f"bench_room{i}")
     k = 0
+    retracted: list[tuple[str, str]] = []
     while len(kb.facts()) < n:
         clock.t += 0.1
         with kb.batch():
+            # churn: 5% of the held facts of recent batches go, earlier retractions come back
+            held = kb.facts("possibly_at")[-2000:]
+            for fact in rng.sample(held, min(50, len(held))):
+                if kb.remove_fact("possibly_at", *fact.args, source="bench"):
+                    retracted.append((fact.args[0], fact.args[1]))
+            for item, room in retracted[:-50]:
+                kb.add_fact("possibly_at", item, room, status="observed", source="bench")
+            del retracted[:-50]
             for _ in range(min(1000, n - len(kb.facts()))):
                 i, j = divmod(k, side)
                 k += 1
@@ -204,8 +214,9 @@ def _large_state(
     for _ in range(7):
         t = rng.uniform(0.0, clock.t)
         start = time.perf_counter()
-        kb.state_at(t)
+        state = kb.state_at(t)
         samples.append((time.perf_counter() - start) * 1000.0)
+        assert state.time <= t
     start = time.perf_counter()
     kb.to_pddl_problem()
     export = (time.perf_counter() - start) * 1000.0
