@@ -54,6 +54,8 @@ MAX_BODY = {"/api/goal": 4096, "/api/goal/audio": 2 * 1024 * 1024}
 GOAL_TIMEOUT_S = 15.0
 #: the page's own assets (package knic.web.assets), name -> media type
 ASSETS = {"app.js": "text/javascript", "map.js": "text/javascript", "style.css": "text/css"}
+#: what the page loads first (app.js ``load``), announced in the page so the browser asks at once
+PRELOAD = ("/api/facts?compact=true", "/api/info", "/api/map", "/api/trace", "/api/live", "/api/score")
 DOCS_ASSETS = {"swagger-ui-bundle.js": "text/javascript", "swagger-ui.css": "text/css"}
 PAGE_HEADERS = {
     "Content-Security-Policy": "default-src 'self'; img-src 'self' data:; connect-src 'self'",
@@ -152,7 +154,11 @@ def create_app(
     hub = Hub(open_view, live=live, trace=trace, poll_s=poll_s, score=score)
     assets = _load("knic.web.assets", ASSETS)
     index = resources.files("knic.web.assets").joinpath("index.html").read_bytes()
+    if token is None:  # the page's first requests start while it loads (with a token the page adds it)
+        links = "".join(f'<link rel="preload" href="{u}" as="fetch" crossorigin>\n' for u in PRELOAD)
+        index = index.replace(b"<!--preload-->\n", links.encode())
     docs_assets: dict[str, tuple[bytes, str]] = {}
+    facts_cache: list[Any] = []  # [seq, encoded body] of the whole compact fact table now
 
     @contextlib.asynccontextmanager
     async def lifespan(app: FastAPI) -> AsyncIterator[None]:
@@ -255,16 +261,22 @@ def create_app(
         author: str | None = Query(None, max_length=100),
         q: str | None = Query(None, max_length=200, description="text the fact contains"),
         compact: bool = Query(False, description='"rows" of [fact, status, author, since, confidence]'),
-    ) -> JSONResponse:
+    ) -> Response:
         """The fact table (with status, author, since, confidence) and the goals."""
         sync()
+        whole = compact and at is None and not (predicate or status or author or q)
+        if whole and facts_cache and facts_cache[0] == hub.view.seq:
+            return Response(facts_cache[1], media_type="application/json")  # the page's load, encoded once
         try:
             body = hub.view.facts(
                 parse_at(at), predicate=predicate, status=status, author=author, text=q, compact=compact
             )
         except BadQuery as exc:
             raise HTTPException(400, str(exc)) from None
-        return JSONResponse(body)
+        response = JSONResponse(body)
+        if whole:
+            facts_cache[:] = [hub.view.seq, bytes(response.body)]
+        return response
 
     @app.get("/api/why", dependencies=guarded, tags=["facts"], response_model=WhyResponse)
     async def why(

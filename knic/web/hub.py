@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import asyncio
 import contextlib
+import gc
 import json
 import logging
 import time
@@ -43,6 +44,8 @@ CHUNK, BACKLOG_LIMIT = 2000, 20000
 QUEUE_SIZE = 500
 #: seconds between keep-alive comments on an idle stream
 KEEPALIVE_S = 15.0
+#: journal events read after which the collector is frozen again (see :meth:`Hub._freeze_gc`)
+FREEZE_AFTER = 5000
 
 
 def sse(event: str, data: Any, event_id: int | None = None) -> str:
@@ -85,6 +88,7 @@ class Hub:
         self.trace_count = 0
         self._live_version = -1
         self._live_sent = 0.0
+        self._unfrozen = 0
         self.score_file = score
         self.score: dict[str, Any] | None = None
         self._score_stamp: tuple[int, int] | None = None
@@ -99,6 +103,7 @@ class Hub:
     async def start(self) -> None:
         """Open the view and start polling (event-loop thread)."""
         self._view = self._open_view()
+        self._freeze_gc()
         if self.trace is not None:
             self.trace_count = len(self.trace.events())
         self._task = asyncio.create_task(self._poll())
@@ -114,6 +119,8 @@ class Hub:
         if self._view is not None:
             self._view.close()
             self._view = None
+        if self.live is None:
+            gc.unfreeze()  # what was frozen is the collector's again
 
     # ------------------------------------------------------------------ polling
     async def _poll(self) -> None:
@@ -127,6 +134,9 @@ class Hub:
     def poll_once(self) -> None:
         """Read what is new and queue it to every page (event-loop thread)."""
         changes = self.view.refresh()
+        self._unfrozen += len(changes)
+        if self._unfrozen >= FREEZE_AFTER:
+            self._freeze_gc()
         for start in range(0, len(changes), CHUNK):
             part = changes[start : start + CHUNK]
             records = [change_record(c) for c in part]
@@ -148,6 +158,17 @@ class Hub:
             self._publish(sse("live", live.snapshot))
         if self._read_score():
             self._publish(sse("score", self.score))
+
+    def _freeze_gc(self) -> None:
+        """Following a journal alone (``knic serve``), the process is the server's: after a collection, the
+        objects alive now (the view's knowledge base: several per fact) move out of the collector's sight
+        (:func:`gc.freeze`), so a full collection, which would otherwise walk every one of them and hold a
+        request up for a few hundred milliseconds at 10k facts, walks only what the requests allocate. A run
+        (``knic run --serve``) owns its process's collector: nothing is frozen there."""
+        self._unfrozen = 0
+        if self.live is None:
+            gc.collect()
+            gc.freeze()
 
     def _read_score(self) -> bool:
         """Read the score file when it changed (a stat per poll); whether the score is new."""

@@ -5,7 +5,6 @@
 (function () {
   const $ = (id) => document.getElementById(id);
   const token = new URLSearchParams(location.search).get("token");
-  const MAX_ROWS = 500;
   const MAP_PREDICATES = new Set(["robot_at", "object_at", "object_on", "person_at", "holding", "has",
     "possibly_at", "light_on", "light_off", "device_level"]);
 
@@ -75,6 +74,11 @@
   function currentFacts() { return model.at === null ? model.facts : model.past.facts; }
   function currentGoals() { return model.at === null ? model.goals : model.past.goals; }
 
+  // The fact table draws only the rows in (and just around) its scrolled window: a page with 10k facts lays
+  // out some 50 rows, not 10k; spacer rows above and below keep the scroll bar true to the whole table.
+  const OVERSCAN = 20;
+  let tableRows = [], rowHeight = 20, measured = false, scrollPending = false;
+
   function renderFacts() {
     const facts = currentFacts();
     const q = $("fact-search").value.trim().toLowerCase();
@@ -88,22 +92,43 @@
       rows.push(f);
     }
     rows.sort((a, b) => b.since - a.since || (a.fact < b.fact ? -1 : 1));
-    const html = [];
-    for (const f of rows.slice(0, MAX_ROWS)) {
-      const cls = (model.fresh.has(f.fact) ? "fresh " : "") + (f.fact === model.selected ? "selected" : "");
-      html.push(`<tr data-fact="${esc(f.fact)}" class="${cls}"><td class="fact">${esc(f.fact)}</td>` +
-        `<td class="st st-${esc(f.status)}">${esc(f.status)}</td><td>${esc(f.author)}</td>` +
-        `<td>${fmt(f.since)}</td><td>${Number(f.confidence).toFixed(2)}</td></tr>`);
-    }
-    $("facts").tBodies[0].innerHTML = html.join("");
-    const shown = Math.min(rows.length, MAX_ROWS);
-    $("fact-count").textContent = `${rows.length} of ${facts.size}` + (shown < rows.length ? `, newest ${shown} shown` : "");
+    tableRows = rows;
+    drawRows();
+    $("fact-count").textContent = `${rows.length} of ${facts.size}`;
     fillSelect($("fact-predicate"), predicates, "all predicates");
     fillSelect($("fact-author"), authors, "any author");
     const now = Date.now();
     for (const fact of model.fresh) if (!(fact in window.knicSeen)) window.knicSeen[fact] = now;
     model.fresh.clear();
     renderGoals();
+  }
+
+  function drawRows() {
+    const wrap = $("facts-wrap");
+    const first = Math.max(0, Math.floor(wrap.scrollTop / rowHeight) - OVERSCAN);
+    const count = Math.ceil((wrap.clientHeight || 400) / rowHeight) + 2 * OVERSCAN;
+    const shown = tableRows.slice(first, first + count);
+    const html = [];
+    for (const f of shown) {
+      const cls = (model.fresh.has(f.fact) ? "fresh " : "") + (f.fact === model.selected ? "selected" : "");
+      html.push(`<tr data-fact="${esc(f.fact)}" class="${cls}"><td class="fact">${esc(f.fact)}</td>` +
+        `<td class="st st-${esc(f.status)}">${esc(f.status)}</td><td>${esc(f.author)}</td>` +
+        `<td>${fmt(f.since)}</td><td>${Number(f.confidence).toFixed(2)}</td></tr>`);
+    }
+    const body = $("facts").tBodies[0];
+    body.innerHTML = html.join("");
+    $("facts-above").style.height = `${first * rowHeight}px`;
+    $("facts-below").style.height = `${(tableRows.length - first - shown.length) * rowHeight}px`;
+    if (!measured && body.rows.length) {
+      const height = body.rows[0].getBoundingClientRect().height;
+      if (height > 0) { measured = true; if (Math.abs(height - rowHeight) > 0.5) { rowHeight = height; drawRows(); } }
+    }
+  }
+
+  function onTableScroll() {
+    if (scrollPending) return;
+    scrollPending = true;
+    requestAnimationFrame(() => { scrollPending = false; drawRows(); });
   }
 
   function fillSelect(select, values, label) {
@@ -356,6 +381,7 @@
     for (const id of ["fact-search", "fact-predicate", "fact-status", "fact-author"]) {
       $(id).addEventListener("input", renderFacts);
     }
+    $("facts-wrap").addEventListener("scroll", onTableScroll);
     $("facts").tBodies[0].addEventListener("click", (ev) => {
       const row = ev.target.closest("tr");
       if (row) showWhy(row.dataset.fact);
