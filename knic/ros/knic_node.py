@@ -18,12 +18,15 @@ domain: a bad request is answered with one line and changes nothing). Services w
 ``/knic/kb/clear_goals`` and ``/knic/kb/problem`` (``std_srvs/Trigger``; the PDDL problem in ``message``).
 
 Threading: everything runs on the run loop's thread: the :class:`KnicBridge` component spins the process's
-:class:`~knic.ros.robot.RosLink` at each of its steps, so goals and requests are taken between two
-components, never concurrently with them.
+:class:`~knic.ros.robot.RosLink` at each of its steps and then handles the goals, answers and requests
+received, in order, so they are taken between two components, never concurrently with them (and never
+inside a spin: answering may speak through a remote robot, which spins for the command's reply).
+Knowledge-base changes go out on ``/knic/fact_events`` synchronously, from the change's callback.
 """
 
 from __future__ import annotations
 
+from collections import deque
 from collections.abc import Callable
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -171,9 +174,12 @@ class KnicNode:
             self.intake, self.pub_question.publish, self.pub_goal_reply.publish, kb.now
         )
         self.pub_octomaps: dict[str, Any] = {}
-        n.create_subscription(String, tp.GOAL, self._on_goal, q(50))
-        n.create_subscription(String, tp.KB_REQUEST, self._on_kb_request, q(50))
-        n.create_subscription(String, tp.ANSWER, self._on_answer, q(50))
+        #: goals, answers and KB requests received, handled in order at the next tick (outside the spin: a
+        #: reply may speak, and speaking to a remote robot spins the link for the command's answer)
+        self._inbox: deque[tuple[Callable[[Any], None], Any]] = deque()
+        n.create_subscription(String, tp.GOAL, self._later(self._on_goal), q(50))
+        n.create_subscription(String, tp.KB_REQUEST, self._later(self._on_kb_request), q(50))
+        n.create_subscription(String, tp.ANSWER, self._later(self._on_answer), q(50))
         n.create_service(Trigger, tp.KB_CLEAR_GOALS, self._clear_goals)
         n.create_service(Trigger, "/knic/kb/problem", self._problem)
         self.events_published = 0
@@ -258,6 +264,7 @@ class KnicNode:
     def tick(self, now: float) -> None:
         """The bridge's periodic work at simulated time ``now`` (see :class:`KnicBridge`)."""
         self.link.drain()
+        self.handle_inbox()
         self.publish_pose(self.robot)
         self.publish_path(now)
         if now >= self._next_snapshot and self.kb.snapshot().seq != self._snapshot_seq:
@@ -265,6 +272,18 @@ class KnicNode:
             self.publish_snapshot()
 
     # ------------------------------------------------------------------ in
+
+    def _later(self, handler: Callable[[Any], None]) -> Callable[[Any], None]:
+        def receive(msg: Any) -> None:
+            self._inbox.append((handler, msg))
+
+        return receive
+
+    def handle_inbox(self) -> None:
+        """Handle the goals, answers and knowledge-base requests received so far, in arrival order."""
+        while self._inbox:
+            handler, msg = self._inbox.popleft()
+            handler(msg)
 
     def _on_goal(self, msg: Any) -> None:
         request_id, text, speaker = None, str(msg.data), "annie"

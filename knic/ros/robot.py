@@ -70,18 +70,17 @@ class RosLink:
     """
 
     def __init__(self, context: Any) -> None:
-        from rclpy.executors import SingleThreadedExecutor
+        from knic.ros.env import make_executor
 
         self.context = context
-        self.executor = SingleThreadedExecutor(context=context)
+        self.executor = make_executor(context)
         self.nodes: list[Any] = []
 
     def node(self, name: str, **kwargs: Any) -> Any:
         """A new node in this link's context, spun by :meth:`spin`."""
-        from rclpy.node import Node
+        from knic.ros.env import make_node
 
-        kwargs.setdefault("start_parameter_services", False)  # fewer entities in every wait
-        node = Node(name, context=self.context, **kwargs)
+        node = make_node(name, self.context, **kwargs)  # fewer entities in every wait
         self.executor.add_node(node)
         self.nodes.append(node)
         return node

@@ -85,19 +85,19 @@ class SimNode:
     """
 
     def __init__(self, sim: Simulation, context: Any, *, rate: float | None = None, dt: float = 0.05) -> None:
-        from rclpy.executors import SingleThreadedExecutor
-        from rclpy.node import Node
         from rosgraph_msgs.msg import Clock
         from sensor_msgs.msg import CameraInfo, Image
         from std_msgs.msg import String
+
+        from knic.ros.env import make_executor, make_node
 
         if rate is not None and rate <= 0:
             raise KnicError(f"knic sim: --rate must be positive, got {rate}")
         self.sim = sim
         self.rate = rate
         self.dt = dt
-        self.node = Node("knic_sim", context=context, start_parameter_services=False)
-        self.executor = SingleThreadedExecutor(context=context)
+        self.node = make_node("knic_sim", context)
+        self.executor = make_executor(context)
         self.executor.add_node(self.node)
         n, q = self.node, tp.reliable
         self.pub_clock = n.create_publisher(Clock, tp.CLOCK, q(10))
