@@ -70,10 +70,15 @@ class MoveAction(ErlAction):
         if waiting is not None:
             return waiting
         pose = self.ctx.robot.robot_pose()
+        if self.ctx.robot.time - pose.stamp > STALE_POSE_S:
+            return ActionStatus.RUNNING  # the localisation went silent: judge the arrival on a fresh estimate
         if not self.room.contains(pose.x, pose.y):
             return self.fail(f"arrived at ({pose.x:.2f}, {pose.y:.2f}), which is outside {self.target}")
         return ActionStatus.SUCCEEDED
 
+
+#: seconds after which a localisation estimate is too old to judge an arrival by (a dropped-out sensor)
+STALE_POSE_S = 1.0
 
 #: metres between a furniture's edge and the robot's centre beside someone sitting or lying on it
 EDGE_CLEARANCE = 0.35

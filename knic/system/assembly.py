@@ -152,7 +152,8 @@ def assemble(config: RunConfig) -> Assembly:
     world = load_world(config.world)
     sim = Simulation(world, seed=config.seed, scenario=config.scenario, gui=config.gui)
     try:
-        agent = build_agent(config, world, sim, lambda: sim.time)
+        robot = sim if config.robot_wrapper is None else config.robot_wrapper(sim)
+        agent = build_agent(config, world, robot, lambda: sim.time)
         scheduler = Scheduler(real_time_factor=config.real_time_factor)
         scheduler.add(SimulationComponent(sim))
         for component in agent.components():

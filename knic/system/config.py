@@ -8,6 +8,9 @@ from pathlib import Path
 from typing import TYPE_CHECKING, TextIO
 
 if TYPE_CHECKING:
+    from collections.abc import Callable
+
+    from core.robot import Robot
     from worlds.scenario import Scenario
 
 #: the PDDL domain of the ERL apartment
@@ -58,6 +61,8 @@ class RunConfig:
         max_replans_per_goal: the recovery policy's replanning budget per goal.
         real_time_factor: the scheduler's overrun budget is period / factor (wall seconds per step).
         dispatch: plan and act (the dispatcher runs); False: perception only (benchmarks drive the robot).
+        robot_wrapper: wraps the simulator's robot seam before KnIC sees it (fault injection in
+            ``knic bench reliability``); None: KnIC talks to the simulator directly.
     """
 
     world: str | Path = "erl_home"
@@ -78,6 +83,7 @@ class RunConfig:
     max_replans_per_goal: int = 12
     real_time_factor: float = 1.0
     dispatch: bool = True
+    robot_wrapper: Callable[[Robot], Robot] | None = None
 
 
 @dataclass
