@@ -181,7 +181,7 @@ class KnicNode:
         n.create_subscription(String, tp.KB_REQUEST, self._later(self._on_kb_request), q(50))
         n.create_subscription(String, tp.ANSWER, self._later(self._on_answer), q(50))
         n.create_service(Trigger, tp.KB_CLEAR_GOALS, self._clear_goals)
-        n.create_service(Trigger, "/knic/kb/problem", self._problem)
+        n.create_service(Trigger, tp.KB_PROBLEM, self._problem)
         self.events_published = 0
         self._snapshot_seq = -1
         self._next_snapshot = 0.0

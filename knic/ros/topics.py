@@ -26,6 +26,7 @@ ANSWER = "/knic/answer"  # String: the answer (JSON {id, text} or plain text)
 KB_REQUEST = "/knic/kb/request"  # String JSON {id, op, ...}: query or update
 KB_REPLY = "/knic/kb/reply"  # String JSON {id, ok, result | error}
 KB_CLEAR_GOALS = "/knic/kb/clear_goals"  # std_srvs/Trigger
+KB_PROBLEM = "/knic/kb/problem"  # std_srvs/Trigger: the PDDL problem in the response's message
 OCTOMAP_PREFIX = "/knic/octomap/"  # + <kind>_<name>: visualization_msgs/MarkerArray
 KNIC_MAP = "/knic/map"  # nav_msgs/OccupancyGrid, transient local
 ROBOT_POSE = "/erlc/robot_pose"  # geometry_msgs/PoseStamped at 10 Hz
