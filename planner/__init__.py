@@ -8,6 +8,8 @@ Modules (the architecture):
   (relevance pruning), ``task_to_up``, ``load_pddl``.
 * :mod:`planner.grounding` / :mod:`planner.search` -- in-process grounding with relevance analysis and a
   grounding cache, and lazy greedy best-first search with the FF heuristic.
+* :mod:`planner.mutex` -- pairwise reachability (h^2): goals that can never hold together, named before any
+  search.
 * :mod:`planner.engines` -- :class:`Planner` (the protocol), :class:`TaskPlanner` (engine choice: in-process,
   Fast Downward, Tamer; oversubscription; validation), ``choose_engine``.
 * :mod:`planner.validate` -- ``check_plan`` (fast, independent) and ``validate_with_up``.

@@ -375,8 +375,11 @@ class Dispatcher:
             self._charge_replan = True  # a planner that keeps failing counts against the goals' replan budget
             self._raise(Pending.REPLAN, f"planning {result.status.value}: {result.message}")
             return
+        why = {g: f"can never hold together with {atom_str(o)}" for g, o in result.conflicts}
         for goal in result.unreachable_goals:
-            self.book.drop(goal, "unreachable: no plan reaches it from what the robot knows")
+            self.book.drop(
+                goal, "unreachable: " + why.get(goal, "no plan reaches it from what the robot knows")
+            )
         self.monitor.adopt((), self.book.active())
         if not result.has_plan:
             return

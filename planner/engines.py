@@ -18,8 +18,11 @@ Engines (:data:`ENGINES`):
 
 When not all goals can be reached, the planner returns a plan for the reachable ones and names the others
 (:attr:`PlanResult.unreachable_goals`): goals outside the relaxed-reachable atoms are provably unreachable;
-if the rest cannot be reached together, a greedy oversubscription keeps the largest set found goal by goal
-(in-process), or unified-planning's ``oversubscription[fast-downward]`` meta-engine picks it.
+a goal that can never hold together with an earlier goal (pairwise reachability, :mod:`planner.mutex`) is
+set aside and named with the goal it excludes (:attr:`PlanResult.conflicts`), so no search has to exhaust
+the state space to find out; if the rest still cannot be reached together, a greedy oversubscription keeps
+the largest set found goal by goal (in-process), or unified-planning's ``oversubscription[fast-downward]``
+meta-engine picks it.
 """
 
 from __future__ import annotations
@@ -29,8 +32,9 @@ from collections.abc import Sequence
 from typing import Any, Protocol
 
 from core.errors import PlanningError
-from planner.grounding import GroundingCache, ground_task
+from planner.grounding import GroundedTask, GroundingCache, ground_task
 from planner.model import Atom, PlanningTask, atom_str
+from planner.mutex import compatible_goals, pair_reachability
 from planner.plan import PlanResult, PlanStatus, PlanStep, TimedStep
 from planner.problem import focus_task, task_to_up
 from planner.search import SearchLimitReached, StripsSearch
@@ -171,6 +175,7 @@ class TaskPlanner:
             result.message,
             result.stats,
             result.schedule,
+            result.conflicts,
         )
 
     def _invalid(self, task: PlanningTask, result: PlanResult) -> str:
@@ -214,7 +219,8 @@ class TaskPlanner:
         search = StripsSearch(grounded.actions, task.facts)
         unreachable = list(grounded.unreachable_goals)
         wanted = [g for g in task.goals if g not in set(unreachable)]
-        steps = self._solve_all(search, wanted, deadline)
+        steps, wanted, conflicts = self._solve_all(search, grounded, wanted, deadline)
+        unreachable = [g for g in task.goals if g in set(unreachable) or g in conflicts]
         if steps is None and wanted:
             steps, wanted = self._greedy_subset(search, wanted, deadline)
             unreachable = [g for g in task.goals if g not in set(wanted)]
@@ -228,27 +234,51 @@ class TaskPlanner:
             status = PlanStatus.UNSOLVABLE if task.goals else PlanStatus.SOLVED
         else:
             status = PlanStatus.PARTIAL if unreachable else PlanStatus.SOLVED
-        return PlanResult(status, plan, task.goals, tuple(unreachable), 0.0, "knic", "", stats)
+        clashes = tuple(conflicts.items())
+        return PlanResult(
+            status,
+            plan,
+            task.goals,
+            tuple(unreachable),
+            0.0,
+            "knic",
+            _clash_text(clashes),
+            stats,
+            (),
+            clashes,
+        )
 
-    def _solve_all(self, search: StripsSearch, goals: list[Atom], deadline: float) -> list[Any] | None:
-        """All goals at once on a small budget, then goal by goal (FF's goal agenda), then all at once.
+    def _solve_all(
+        self, search: StripsSearch, grounded: GroundedTask, goals: list[Atom], deadline: float
+    ) -> tuple[list[Any] | None, list[Atom], dict[Atom, Atom]]:
+        """All goals at once on a small budget; failing that, set aside the goals that can never hold together
+        with an earlier one (:mod:`planner.mutex`), then goal by goal (FF's goal agenda), then all at once.
 
-        The small first try keeps plans short where that is easy (interleaving goals); the goal agenda is what
-        makes long navigation tasks with several goals fast.
+        The small first try keeps plans short where that is easy (interleaving goals) and skips the pair
+        analysis; the goal agenda is what makes long navigation tasks with several goals fast. Without the
+        pair analysis a search for two goals that exclude each other exhausts the whole state space.
 
-        ``None`` means the goals are unreachable together. Raises SearchLimitReached when the node budget
-        runs out (the caller falls back to Fast Downward) or on timeout.
+        Returns:
+            ``(steps, goals kept, conflicts)``; steps ``None`` means the kept goals are unreachable together.
+
+        Raises:
+            SearchLimitReached: the node budget ran out (the caller falls back to Fast Downward) or timeout.
         """
+        conflicts: dict[Atom, Atom] = {}
         if len(goals) >= 2:
             try:
-                return search.solve(goals, QUICK_EVALUATIONS, deadline)
+                quick = search.solve(goals, QUICK_EVALUATIONS, deadline)
+                if quick is not None:
+                    return quick, goals, conflicts
             except SearchLimitReached as exc:
                 if exc.timeout:
                     raise
+            goals, conflicts = _compatible(grounded, goals)
+        if len(goals) >= 2:
             serial = search.solve_serially(goals, self.node_limit, deadline)
             if serial is not None:
-                return serial
-        return search.solve(goals, self.node_limit, deadline)
+                return serial, goals, conflicts
+        return search.solve(goals, self.node_limit, deadline), goals, conflicts
 
     def _greedy_subset(
         self, search: StripsSearch, goals: list[Atom], deadline: float
@@ -271,14 +301,17 @@ class TaskPlanner:
         silence_up()
         focus = self.focus
         unreachable: list[Atom] = []
+        conflicts: dict[Atom, Atom] = {}
         if not task.domain.unsupported and not task.domain.temporal:
-            unreachable = list(ground_task(focus_task(task) if focus else task).unreachable_goals)
-            if unreachable and focus:
-                full = list(ground_task(task).unreachable_goals)
-                if full != unreachable:
-                    # the focus dropped an object some goal needs (typical of untyped domains): plan unfocused
-                    focus = False
-                unreachable = full
+            # what is unreachable is judged on the whole task (the focus may drop an object a goal needs)
+            grounded = ground_task(task)
+            unreachable = list(grounded.unreachable_goals)
+            kept, conflicts = _compatible(grounded, [g for g in task.goals if g not in set(unreachable)])
+            unreachable = [g for g in task.goals if g in set(unreachable) or g in conflicts]
+            if focus:
+                focused = ground_task(focus_task(task))
+                if any(g in focused.unreachable_goals for g in kept) or _compatible(focused, kept)[1]:
+                    focus = False  # the focus dropped an object some goal needs (typical of untyped domains)
         problem = task_to_up(focus_task(task) if focus else task, self.up_domain)
         wanted = [g for g in task.goals if g not in set(unreachable)]
         if not wanted:
@@ -315,7 +348,31 @@ class TaskPlanner:
         if final is not None:
             unreachable += [g for g in wanted if g not in final]
         status = PlanStatus.PARTIAL if unreachable else PlanStatus.SOLVED
-        return PlanResult(status, steps, task.goals, tuple(unreachable), 0.0, engine, schedule=schedule)
+        clashes = tuple(conflicts.items())
+        return PlanResult(
+            status,
+            steps,
+            task.goals,
+            tuple(unreachable),
+            0.0,
+            engine,
+            _clash_text(clashes),
+            schedule=schedule,
+            conflicts=clashes,
+        )
+
+
+def _compatible(grounded: GroundedTask, goals: list[Atom]) -> tuple[list[Atom], dict[Atom, Atom]]:
+    """The goals that may hold together (in order) and those excluded by an earlier one (h^2, see
+    :mod:`planner.mutex`); a single goal needs no check."""
+    if len(goals) < 2:
+        return goals, {}
+    return compatible_goals(goals, pair_reachability(grounded.actions, grounded.task.facts))
+
+
+def _clash_text(clashes: tuple[tuple[Atom, Atom], ...]) -> str:
+    """``"(a) can never hold together with (b)"`` for each conflict, joined by ``"; "``."""
+    return "; ".join(f"{atom_str(g)} can never hold together with {atom_str(o)}" for g, o in clashes)
 
 
 def plan_from_up(plan: Any) -> tuple[PlanStep, ...]:

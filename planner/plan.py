@@ -79,7 +79,9 @@ class PlanResult:
         unreachable_goals: goals proven unreachable (or not reachable together with the others), as atoms.
         planning_ms: wall-clock milliseconds spent, grounding and validation included.
         engine: the engine that produced the plan.
-        message: a one-line explanation for TIMEOUT and ERROR.
+        message: a one-line explanation for TIMEOUT and ERROR; for PARTIAL, the conflicts in words.
+        conflicts: unreachable goals that are reachable alone but provably never true together with a goal
+            the plan reaches, each as ``(goal, the goal it excludes)`` (:mod:`planner.mutex`).
     """
 
     status: PlanStatus
@@ -91,6 +93,7 @@ class PlanResult:
     message: str = ""
     stats: dict[str, float] = field(default_factory=dict)
     schedule: tuple[TimedStep, ...] = ()
+    conflicts: tuple[tuple[Atom, Atom], ...] = ()
 
     @property
     def has_plan(self) -> bool:
@@ -116,6 +119,8 @@ class PlanResult:
             data["schedule"] = [t.to_json() for t in self.schedule]
         if self.message:
             data["message"] = self.message
+        if self.conflicts:
+            data["conflicts"] = {atom_str(g): atom_str(other) for g, other in self.conflicts}
         return data
 
 
