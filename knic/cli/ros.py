@@ -3,7 +3,8 @@
 KnIC reads the robot only through ROS 2 topics (:class:`knic.ros.robot.RosRobot`), publishes what it believes
 and does (:mod:`knic.ros.knic_node`) and takes goals on ``/knic/goal`` besides ``--goal``; under a role that
 confirms, the question goes out on ``/knic/question`` and the answer comes in on ``/knic/answer``. With
-goals it stops when it believes them achieved or dropped (exit 0 when achieved, 1 otherwise); without, it
+``--listen``, speech the robot hears (``/robot/heard``) gives goals and answers too. With goals (or
+``--listen``) it stops when it believes them achieved or dropped (exit 0 when achieved, 1 otherwise); without, it
 serves until ``--max-sim-time``, Ctrl-C or SIGTERM.
 """
 
@@ -36,6 +37,11 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         "--max-sim-time", type=float, default=math.inf, metavar="S", help="stop after S seconds of robot time"
     )
     parser.add_argument("--serve", action="store_true", help="keep serving after the goals are achieved")
+    parser.add_argument(
+        "--listen",
+        action="store_true",
+        help="speech the robot hears (/robot/heard) gives goals and answers; stop when they are achieved",
+    )
     parser.add_argument("--journal", type=Path, metavar="FILE.sqlite", help="record the knowledge base")
     parser.add_argument("--trace", type=Path, metavar="FILE.jsonl", help="write the trace as JSON lines")
     parser.add_argument("--domain-id", type=int, help="ROS_DOMAIN_ID (default: the environment's)")
@@ -57,12 +63,13 @@ def run(args: argparse.Namespace) -> int:
     from knic.system.config import RunConfig
 
     signal.signal(signal.SIGTERM, _interrupt)
+    wants_goals = bool(args.goal) or args.listen
     trace_file = args.trace.open("w", encoding="utf-8") if args.trace else None
     try:
         with ros_context(args.domain_id) as context:
             link = RosLink(context)
             config = RunConfig(args.world, role=args.role, journal=args.journal, trace_stream=trace_file)
-            ros_run = RosRun(link, config)
+            ros_run = RosRun(link, config, listen=args.listen)
             try:
                 for text in args.goal:
                     reply = ros_run.add_goal(text)
@@ -78,7 +85,7 @@ def run(args: argparse.Namespace) -> int:
                     print("knic ros: ready; goals on /knic/goal", file=sys.stderr, flush=True)
                     ros_run.trace.print_to(sys.stdout)
                 try:
-                    result = ros_run.run(args.max_sim_time, until_done=bool(args.goal) and not args.serve)
+                    result = ros_run.run(args.max_sim_time, until_done=wants_goals and not args.serve)
                 except KeyboardInterrupt:
                     result = None
             finally:
@@ -93,7 +100,7 @@ def run(args: argparse.Namespace) -> int:
         print(json.dumps(result.to_dict(), sort_keys=True), flush=True)
     else:
         print(f"knic ros: {result.reason} at t={result.sim_time:.1f} s (wall {result.wall_s:.1f} s)")
-    if args.goal and not result.done:
+    if wants_goals and not result.done:
         raise RosRunFailed(f"knic ros: {result.reason}")
     return 0
 

@@ -298,11 +298,17 @@ class KnicNode:
             except (MessageError, KeyError, AttributeError) as exc:
                 self.pub_goal_reply.publish(json_to_ros({"outcome": "refused", "reason": f"goal: {exc}"}))
                 return
+        self.take(text, speaker=speaker, source="ros", request_id=request_id)
+
+    def take(self, text: str, *, speaker: str, source: str, request_id: Any = None) -> None:
+        """A text from a person (``/knic/goal``, or speech the robot heard): the answer to the open
+        question when one is open and the text is not PDDL, else a command; the intake's reply goes out on
+        ``/knic/goal_reply``."""
         if self.questions.open_id is not None and not text.lstrip().startswith("("):
             self.questions.answer(text)  # publishes its reply
         else:
-            reply = self.submit(text, speaker=speaker, request_id=request_id)
-            out = {"text": text, **reply.to_dict()}
+            reply = self.submit(text, speaker=speaker, source=source, request_id=request_id)
+            out = {"text": text, "source": source, **reply.to_dict()}
             if self.questions.open_id is not None and reply.outcome == Outcome.ASKED:
                 out["question"] = self.questions.open_id
             if request_id is not None:
@@ -416,6 +422,31 @@ def _intake(kb: KnowledgeBase, robot: Robot, confirm: bool) -> GoalIntake:
 
     vocabulary = Vocabulary.from_knowledge_base(kb, LEXICON if LEXICON.is_file() else None)
     return GoalIntake(kb, vocabulary, say=robot.say, confirm=confirm)
+
+
+class HeardSpeech(Component):
+    """Speech the robot heard (``/robot/heard`` through :meth:`core.robot.Robot.poll_utterances`) taken by
+    the intake as :meth:`KnicNode.take` takes a text: the answer to the open question, else a command of the
+    speaker's (``knic ros --listen``). Utterances without words are skipped.
+
+    Args:
+        node: the KnIC node.
+        frequency: Hz of simulated time.
+    """
+
+    name = "heard_speech"
+
+    def __init__(self, node: KnicNode, frequency: float = 10.0) -> None:
+        self.node = node
+        self.frequency = frequency
+        self.taken = 0
+
+    def step(self, now: float) -> None:
+        """Take every utterance heard since the previous step, in order."""
+        for utterance in self.node.robot.poll_utterances():
+            if utterance.text.strip():
+                self.taken += 1
+                self.node.take(utterance.text, speaker=utterance.speaker, source="speech")
 
 
 class KnicBridge(Component):

@@ -19,7 +19,7 @@ from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
 from core.errors import KnicError
-from knic.ros.knic_node import KnicBridge, KnicNode
+from knic.ros.knic_node import HeardSpeech, KnicBridge, KnicNode
 from knic.ros.robot import RosClock, RosLink, RosRobot
 from knic.scheduler import Scheduler
 from knic.system.assembly import build_agent
@@ -61,9 +61,11 @@ class RosRun:
             knows before the run, no ground truth; role; journal; trace stream; recovery policy, planning
             time, settle and give-up times); ``seed``, ``scenario`` and ``gui`` are the simulator's and
             ignored here.
+        listen: speech the robot hears goes to the goal intake (:class:`~knic.ros.knic_node.HeardSpeech`:
+            commands, and answers to the open question).
     """
 
-    def __init__(self, link: RosLink, config: RunConfig | None = None) -> None:
+    def __init__(self, link: RosLink, config: RunConfig | None = None, *, listen: bool = False) -> None:
         from worlds.api import load_world
 
         silence_up()
@@ -92,6 +94,9 @@ class RosRun:
         for component in agent.components():
             self.scheduler.add(component)
         self.scheduler.add(KnicBridge(self.node))
+        self.speech = HeardSpeech(self.node) if listen else None
+        if self.speech is not None:
+            self.scheduler.add(self.speech)
         self.beliefs = BeliefVerdict(
             self.kb,
             self.dispatcher.dropped_for_good,

@@ -4,6 +4,7 @@ base, then across processes (the simulator, ``knic ros`` under the semi-autonomo
 from __future__ import annotations
 
 import json
+from pathlib import Path
 from typing import Any
 
 import pytest
@@ -23,6 +24,7 @@ from worlds.api import load_world
 
 GOAL = "(light_on hallway_light)"
 PAPER_GOAL = "(object_at glasses bedroom)"
+SPOKEN = Path(__file__).resolve().parent / "fixtures" / "spoken_request.yaml"
 
 
 class Sent:
@@ -126,3 +128,44 @@ def test_confirmation_over_ros_between_processes(processes: Processes, domain: i
         assert reply["id"] == 3 and PAPER_GOAL in reply["result"]
         w.node.destroy_node()
     processes.stop(knic)
+
+
+@pytest.mark.timeout(240)
+def test_spoken_request_and_spoken_yes_over_ros(processes: Processes, domain: int) -> None:
+    from std_msgs.msg import String
+
+    with ros_context(domain) as context:
+        w = Watcher(context)
+        questions: list[Any] = []
+        w.node.create_subscription(String, tp.QUESTION, questions.append, tp.reliable(1, latched=True))
+        sim = processes.start(
+            "sim", "sim", "--ros", "--world", "erl_home_paper", "--scenario", str(SPOKEN), "--json"
+        )
+        knic = processes.start(
+            "knic",
+            "ros",
+            "--world",
+            "erl_home_paper",
+            "--role",
+            "service_semi_autonomous",
+            "--listen",
+            "--max-sim-time",
+            "300",
+            "--json",
+        )
+        w.wait("the run to end", lambda: knic.poll() is not None, 200)
+        for _ in range(20):
+            w.executor.spin_once(timeout_sec=0.05)
+        w.node.destroy_node()
+    assert knic.returncode == 0, processes.errors("knic")
+    summary = json.loads(processes.output("knic").strip().splitlines()[-1])
+    assert summary["done"] and summary["goals"] == [PAPER_GOAL]
+    replies = [json_from_ros(m) for m in w.got[tp.GOAL_REPLY]]
+    asked = [r for r in replies if r["outcome"] == "asked"]
+    assert asked and asked[0]["source"] == "speech" and asked[0]["text"] == "bring my glasses to the bedroom"
+    added = [r for r in replies if r["outcome"] == "added"]
+    assert added and added[0]["question"] == asked[0]["question"] and added[0]["text"] == "yes please"
+    assert questions and not json_from_ros(questions[-1])["open"]
+    assert processes.stop(sim) == 0
+    verdict = json.loads(processes.output("sim").strip().splitlines()[-1])
+    assert verdict["success"] and PAPER_GOAL in verdict["goals"]
