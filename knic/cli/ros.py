@@ -4,8 +4,8 @@ KnIC reads the robot only through ROS 2 topics (:class:`knic.ros.robot.RosRobot`
 and does (:mod:`knic.ros.knic_node`) and takes goals on ``/knic/goal`` besides ``--goal``; under a role that
 confirms, the question goes out on ``/knic/question`` and the answer comes in on ``/knic/answer``. With
 ``--listen``, speech the robot hears (``/robot/heard``) gives goals and answers too. With goals (or
-``--listen``) it stops when it believes them achieved or dropped (exit 0 when achieved, 1 otherwise); without, it
-serves until ``--max-sim-time``, Ctrl-C or SIGTERM.
+``--listen``) it stops when it believes them achieved or dropped (exit 0 when achieved, 1 otherwise);
+without, it serves until ``--max-sim-time``, Ctrl-C or SIGTERM.
 """
 
 from __future__ import annotations
