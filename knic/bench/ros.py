@@ -3,7 +3,8 @@
 1. **Fact-event latency**: knowledge-base writes in this process (the KnIC node publishing each change from
    the change's callback) received by a subscriber in a process of its own (:mod:`knic.bench.ros_listener`,
    as ``ros2 topic echo`` would be) on a domain of its own; latency from just before the write to the
-   subscriber's callback, wall clock (p50, p95, max), at a paced rate.
+   subscriber's callback, wall clock (p50, p95, max), at a paced rate; and the writer's own share (the
+   write with its synchronous publish, ``write_and_publish_ms_p50``).
 2. **Sustained event rate**: the same writes as fast as they go; changes per second received, and losses.
 3. **Split run against one process**: the paper trace (``erl_home_paper``, glasses to the bedroom) in one
    process (:class:`knic.system.KnicSystem`) and split over ROS 2 (``knic sim --ros`` and ``knic ros``, two
