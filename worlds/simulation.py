@@ -11,7 +11,7 @@ reproducible call for call.
 from __future__ import annotations
 
 import math
-from collections.abc import Sequence
+from collections.abc import Iterable, Sequence
 from pathlib import Path
 
 import numpy as np
@@ -35,7 +35,7 @@ from worlds.geometry import Point, wrap_angle
 from worlds.loader import load_world
 from worlds.model import Device, World
 from worlds.oracle import Counters, FrameTruth, SoundTruth
-from worlds.scenario import Scenario, load_scenario
+from worlds.scenario import Event, Scenario, load_scenario
 from worlds.sim.contacts import ContactMonitor
 from worlds.sim.estimates import believed_to_true, camera_eye, heard_at
 from worlds.sim.events import apply_event
@@ -196,6 +196,11 @@ class Simulation:
                     fall_step(self._world, it, h)
                 elif it.holder is not None:
                     self._hands.carry(it)
+
+    def add_events(self, events: Iterable[Event]) -> None:
+        """Schedule more scenario events (validated, e.g. by :func:`worlds.scenario.scenario_from_dict`);
+        events already due are carried out at the next step."""
+        self._events = sorted([*self._events, *events], key=lambda e: e.at)
 
     def _apply_due_events(self) -> None:
         while self._events and self._events[0].at <= self._time + 1e-9:

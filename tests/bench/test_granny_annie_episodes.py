@@ -10,6 +10,7 @@ import yaml
 
 from knic.bench.granny_annie.commands import candidate_requests, requests_of_text
 from knic.bench.granny_annie.episodes import Episode, generate_episode, generate_episodes, world_vocabulary
+from knic.bench.granny_annie.events import MOVE_AT, VISITOR_AT, WALK_AT
 from knic.bench.granny_annie.placement import graspable, world_document
 from knic.language.understanding import understand
 from knic.language.vocabulary import Vocabulary
@@ -60,10 +61,15 @@ def test_episodes_cover_the_task(world: World, episodes: list[Episode]) -> None:
             assert e.placements[item] not in {p.furniture for p in world.items[item].priors}
         for item, furniture in e.placements.items():
             assert graspable(world, e.placements, item), (e.index, item, furniture)
-    types = {ev["type"] for e in episodes for ev in e.events}
+    types = {ev["type"] for e in episodes for ev in e.after_command}
     assert {"person_to", "doorbell", "move_object"} <= types
     for e in episodes:  # every episode's events are a valid scenario of the world
         scenario_from_dict(e.scenario(), world)
+        scenario_from_dict(e.later_scenario(), world)
+        # at the start only Annie's seat; the rest is timed from the command, while the robot works
+        assert [(ev["at"], ev["person"]) for ev in e.events] == [(0.0, "annie")]
+        windows = {"doorbell": VISITOR_AT, "move_object": MOVE_AT, "person_to": WALK_AT}
+        assert all(windows[ev["type"]][0] <= ev["at"] <= windows[ev["type"]][1] for ev in e.after_command)
         targets = [t for r in e.requests for t in r.targets]
         assert len(targets) == len(set(targets))
         assert sum(r.kind == "bring" for r in e.requests) <= 1  # a person holds one object
@@ -145,5 +151,6 @@ def test_a_world_without_priors_devices_or_other_people_works(world: World, tmp_
     for e in eps:
         for item, furniture in e.placements.items():  # without priors: the file's place unless off-prior
             assert (furniture == flat.items[item].on) != (item in e.off_prior)
-        assert not any(ev["type"] in ("doorbell", "move_object") for ev in e.events)
+        assert not any(ev["type"] in ("doorbell", "move_object") for ev in e.after_command)
         scenario_from_dict(e.scenario(), flat)
+        scenario_from_dict(e.later_scenario(), flat)

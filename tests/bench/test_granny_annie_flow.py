@@ -13,7 +13,13 @@ import pytest
 from core.robot import Utterance
 from knic.bench.granny_annie.commands import Request
 from knic.bench.granny_annie.episodes import Episode, bank_recording, world_vocabulary
-from knic.bench.granny_annie.flow import JudgingAnnie, from_her_side, repeat_back_means, task_episode
+from knic.bench.granny_annie.flow import (
+    EventsAfterCommand,
+    JudgingAnnie,
+    from_her_side,
+    repeat_back_means,
+    task_episode,
+)
 from knic.bench.granny_annie.runner import Task, run_task, write_world_files
 from knic.language.vocabulary import Vocabulary
 from worlds.api import load_world
@@ -150,3 +156,39 @@ def test_the_robot_repeating_what_she_did_not_mean_gives_up_asking(tmp_path: Pat
     entered = float(entered_line.split(" at ")[1].split()[0])
     first_ask = next(e["time"] for e in trace if e["kind"] == "task" and e["action"] == "ask")
     assert entered <= first_ask + 0.5  # it asked once in her room
+
+
+def test_episode_events_start_when_the_robot_takes_the_command() -> None:
+    """Events timed from the command happen that long after the command (once, whatever is asked again);
+    without a command they start at the fallback time."""
+    from worlds.scenario import scenario_from_dict
+    from worlds.simulation import Simulation
+
+    world = load_world("erl_home")
+    later = {"at": 3.0, "type": "person_to", "person": "tracy", "furniture": "sofa", "teleport": True}
+    ep = episode("bring me the remote", REMOTE)
+    ep = Episode.from_dict({**ep.to_dict(), "after_command": [later]})
+    events = scenario_from_dict(ep.later_scenario(), world).events
+    with Simulation.from_world(world, seed=1) as sim:
+        timed = EventsAfterCommand(sim, events, no_command_by=90.0)
+        where = {("person_at", "tracy", "kitchen")}
+        for _ in range(100):  # 10 s without a command: nothing happens
+            sim.step(0.1)
+            timed.step(sim.time)
+        assert where <= sim.ground_truth_facts()
+        timed.command_taken(sim.time)
+        taken = sim.time
+        timed.command_taken(sim.time + 1.0)  # asked again: the events keep their times
+        while sim.time < taken + 2.9:
+            sim.step(0.1)
+        assert where <= sim.ground_truth_facts()
+        sim.step(0.2)
+        assert ("person_at", "tracy", "living_room") in sim.ground_truth_facts()
+        assert timed.started_at == pytest.approx(taken)
+    with Simulation.from_world(world, seed=1) as sim:
+        timed = EventsAfterCommand(sim, events, no_command_by=5.0)
+        while sim.time < 8.05:
+            sim.step(0.1)
+            timed.step(sim.time)
+        assert timed.started_at == pytest.approx(5.0)
+        assert ("person_at", "tracy", "living_room") in sim.ground_truth_facts()

@@ -14,8 +14,9 @@ starts:
   (:mod:`~knic.bench.granny_annie.commands`). With probability :data:`BANK_P` the command is one of the voice
   bank's (``worlds/erl_home/voices/bank.yaml``) that this episode supports, read back into requests; a
   command the bank has a recording of is spoken with probability :data:`SPOKEN_P`, else typed;
-* dynamic events as scenario events (:mod:`worlds.scenario`): the door bell with a visitor walking in, a
-  person moving an object mid-run (often one Annie asked for), people walking between rooms.
+* dynamic events as scenario events (:mod:`worlds.scenario`), timed from the moment the robot takes the
+  command: the door bell with a visitor walking in, a person moving an object mid-run (often one Annie asked
+  for), people walking between rooms.
 
 Episode ``i`` of seed ``S`` draws from its own random stream ``(S, i)``: the same seed and index give the same
 episode whatever the number of episodes. A world without priors, without devices or without other people
@@ -72,7 +73,9 @@ class Episode:
         requests: the chained requests, in the order Annie says them.
         text: the whole command as said or typed.
         audio: the voice bank recording of ``text`` when the command is spoken, else None.
-        events: scenario events (``worlds.scenario`` format), Annie's placement first.
+        events: scenario events at the start (``worlds.scenario`` format): Annie's placement.
+        after_command: scenario events whose ``at`` is seconds after the robot took the command (door bell,
+            moved object, people walking; :mod:`.events`).
     """
 
     index: int
@@ -87,6 +90,7 @@ class Episode:
     text: str
     audio: str | None = None
     events: tuple[dict[str, Any], ...] = field(default_factory=tuple)
+    after_command: tuple[dict[str, Any], ...] = field(default_factory=tuple)
 
     @property
     def name(self) -> str:
@@ -120,6 +124,7 @@ class Episode:
         )
         d["off_prior"] = tuple(d["off_prior"])
         d["events"] = tuple(d["events"])
+        d["after_command"] = tuple(d.get("after_command", ()))
         return cls(**d)
 
     def scenario(self) -> dict[str, Any]:
@@ -128,6 +133,14 @@ class Episode:
             "name": f"granny_annie_{self.name}",
             "description": f"Granny Annie benchmark episode {self.index} of seed {self.seed}",
             "events": [dict(e) for e in self.events],
+        }
+
+    def later_scenario(self) -> dict[str, Any]:
+        """The events timed from the command as a scenario document (``at``: seconds after the command)."""
+        return {
+            "name": f"granny_annie_{self.name}_after_command",
+            "description": f"episode {self.index} of seed {self.seed}: events after the command",
+            "events": [dict(e) for e in self.after_command],
         }
 
 
@@ -179,7 +192,7 @@ def generate_episode(
     recorded = bank_recording(text)
     spoken = rng.random() < SPOKEN_P
     audio = str(recorded) if recorded is not None and spoken else None
-    events = draw_events(world, rng, requests, placements, annie_on)
+    events, after_command = draw_events(world, rng, requests, placements, annie_on)
     return Episode(
         index=index,
         seed=seed,
@@ -193,6 +206,7 @@ def generate_episode(
         text=text,
         audio=audio,
         events=tuple(events),
+        after_command=tuple(after_command),
     )
 
 

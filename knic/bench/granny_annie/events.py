@@ -1,5 +1,10 @@
 """Dynamic events of an episode, as scenario events (:mod:`worlds.scenario` carries them out).
 
+Annie's place is set at t=0. Every other event is timed from the moment the robot takes Annie's command
+(the task flow hears it some 20 s into the run, after her call and the robot's trip to her room), so the
+events happen while the robot works on her request, whatever the trip took; :class:`~.flow.EventsAfterCommand`
+schedules them in the run. The windows are simulated seconds after the command.
+
 * Annie's place: ``person_to`` onto her furniture at t=0 (teleport).
 * The door bell (probability :data:`VISITOR_P`, when the world has a bell and a person outside): a
   ``doorbell`` event with the visitor walking in to one of their prior rooms.
@@ -25,10 +30,13 @@ VISITOR_P = 0.5
 MOVE_P = 0.4
 MOVE_REQUESTED_P = 0.6
 WALK_P = 0.5
-#: simulated-seconds windows of the events
-VISITOR_AT = (20.0, 120.0)
-MOVE_AT = (10.0, 60.0)
-WALK_AT = (10.0, 300.0)
+#: windows of the events, simulated seconds after the robot took the command (the robot's work then takes
+#: some 10-60 s: a moved object is moved while the robot heads for it, the visitor rings while it works)
+VISITOR_AT = (2.0, 45.0)
+MOVE_AT = (1.0, 20.0)
+WALK_AT = (1.0, 120.0)
+#: when the events start if the robot has taken no command by then (simulated seconds into the run)
+NO_COMMAND_BY_S = 90.0
 
 
 def draw_events(
@@ -37,13 +45,15 @@ def draw_events(
     requests: list[Request],
     placements: dict[str, str],
     annie_on: str | None,
-) -> list[dict[str, Any]]:
-    """The episode's scenario events (see the module docstring), sorted by time."""
-    events: list[dict[str, Any]] = []
+) -> tuple[list[dict[str, Any]], list[dict[str, Any]]]:
+    """The episode's scenario events (see the module docstring): ``(at the start, after the command)``, each
+    sorted by time; the ``at`` of the second list is seconds after the robot took the command."""
+    start: list[dict[str, Any]] = []
     if annie_on is not None:
-        events.append(
+        start.append(
             {"at": 0.0, "type": "person_to", "person": ANNIE, "furniture": annie_on, "teleport": True}
         )
+    events: list[dict[str, Any]] = []
     escorted = {t for r in requests if r.kind == "accompany" for t in r.targets}
     bells = [d for d in world.devices.values() if d.kind == "bell"]
     outside = sorted(p.name for p in world.people.values() if not p.present)
@@ -80,7 +90,7 @@ def draw_events(
         for at in times:
             events.append({"at": at, "type": "person_to", "person": person, "room": pick(rng, rooms)})
     events.sort(key=lambda e: e["at"])
-    return events
+    return start, events
 
 
 def _time(rng: np.random.Generator, window: tuple[float, float]) -> float:

@@ -20,21 +20,25 @@ never reads the robot's knowledge base or its intake.
 from __future__ import annotations
 
 import re
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from knic.bench.granny_annie.events import NO_COMMAND_BY_S
 from knic.system import TaskFlow
 from worlds.granny_annie import ASKS_ANSWER, ASKS_PLAIN_ANSWER, AnnieActor, SpeechWorld, VoiceClip
 
 if TYPE_CHECKING:
     from knic.bench.granny_annie.episodes import Episode
     from knic.bench.granny_annie.recording import Recorder
+    from knic.intake import Submission
     from knic.language.vocabulary import Vocabulary
     from knic.system import KnicSystem
     from knic.system.granny_annie import GrannyAnnieFlow
     from worlds.granny_annie import Episode as TaskEpisode
+    from worlds.scenario import Event
+    from worlds.simulation import Simulation
 
 #: when Annie makes the tablet call (simulated seconds)
 CALL_AT_S = 2.0
@@ -130,6 +134,50 @@ class AnnieInRun(TaskFlow):
         return False
 
 
+class EventsAfterCommand(TaskFlow):
+    """Carries out an episode's events timed from the command (see the module docstring).
+
+    Args:
+        sim: the simulation that carries them out.
+        events: validated scenario events whose ``at`` is seconds after the command.
+        no_command_by: simulated seconds after which the events start even without a command.
+
+    Lifecycle: scheduled in the run like a flow (never busy: it does not keep the run going);
+    :meth:`command_taken` starts the clock of the events the first time it is called; later calls (a
+    command asked again) change nothing, so the events of a seed happen at the same times in every baseline
+    that hears the command at the same time.
+    """
+
+    name = "world.episode_events"
+    frequency = 10.0
+
+    def __init__(
+        self, sim: Simulation, events: Sequence[Event], no_command_by: float = NO_COMMAND_BY_S
+    ) -> None:
+        self.sim = sim
+        self.events = tuple(events)
+        self.no_command_by = no_command_by
+        self.started_at: float | None = None
+
+    def command_taken(self, now: float) -> None:
+        """The robot took the command at ``now``: schedule the events from then (once)."""
+        if self.started_at is not None:
+            return
+        from worlds.scenario import Event
+
+        self.started_at = now
+        self.sim.add_events(Event(round(now + e.at, 3), e.type, dict(e.args)) for e in self.events)
+
+    def step(self, now: float) -> None:
+        """Start the events at :attr:`no_command_by` when no command came."""
+        if self.started_at is None and now >= self.no_command_by:
+            self.command_taken(now)
+
+    def busy(self) -> bool:
+        """Never."""
+        return False
+
+
 def task_episode(episode: Episode) -> tuple[TaskEpisode, VoiceClip, VoiceClip]:
     """The task flow's episode for a benchmark episode, with her no answers: (episode, no, plain no).
 
@@ -164,6 +212,7 @@ def start_with_task_flow(system: KnicSystem, episode: Episode, recorder: Recorde
     ask after the run for how the dialogue went."""
     from knic.bench.granny_annie.episodes import world_vocabulary
     from knic.system.granny_annie import GrannyAnnieFlow
+    from worlds.scenario import scenario_from_dict
 
     lexicon = Path(episode.lexicon) if episode.lexicon else None
     vocabulary = world_vocabulary(system.world, lexicon)
@@ -176,8 +225,16 @@ def start_with_task_flow(system: KnicSystem, episode: Episode, recorder: Recorde
         agrees=lambda said: repeat_back_means(said, episode.goals, vocabulary),
     )
     system.add_flow(AnnieInRun(annie))
+    later = scenario_from_dict(episode.later_scenario(), system.world)
+    events = EventsAfterCommand(system.sim, later.events)
+    system.add_flow(events)
     flow = GrannyAnnieFlow(system, person=PERSON, role=system.config.role, lexicon=lexicon)
-    flow.intake.on_added = lambda submission: recorder.command(system.sim.time, submission.text)
+
+    def taken(submission: Submission) -> None:
+        recorder.command(system.sim.time, submission.text)
+        events.command_taken(system.sim.time)
+
+    flow.intake.on_added = taken
     system.add_flow(flow)
     return lambda: dialogue(flow)
 
