@@ -20,9 +20,8 @@ from functools import lru_cache
 from pathlib import Path
 from typing import Any
 
-import yaml
-
 from core.errors import LanguageError
+from core.inputs import read_yaml
 from knic.language.grammar import Alt, Bind, Frame, Grammar, Node, Opt, Ref, Repeat, Seq, Slot, Words
 
 DEFAULT_PATH = Path(__file__).resolve().parent / "commands.yaml"
@@ -126,10 +125,7 @@ def load_language(path: str | Path = DEFAULT_PATH) -> CommandLanguage:
     """
     path = Path(path)
     source = str(path)
-    try:
-        data = yaml.safe_load(path.read_text(encoding="utf-8"))
-    except (OSError, yaml.YAMLError) as exc:
-        raise LanguageError(f"{source}: cannot read the command language: {exc}") from exc
+    data = read_yaml(path, "command language", LanguageError)
     if not isinstance(data, dict):
         raise LanguageError(f"{source}: the command language is a mapping of tables")
     verbs = []

@@ -38,6 +38,12 @@ def _lexicon(path: Path) -> Any:
     return Lexicon.load(path)
 
 
+def _commands(path: Path) -> Any:
+    from knic.language.commands import load_language
+
+    return load_language(path)
+
+
 def _noise(path: Path) -> Any:
     from worlds.sim.noise import load_noise
 
@@ -60,6 +66,7 @@ READERS: dict[str, tuple[Callable[[Path], Any], type[KnicError]]] = {
     "scenario": (_scenario, WorldError),
     "role file": (_roles, InferenceError),
     "lexicon": (_lexicon, LanguageError),
+    "command language": (_commands, LanguageError),
     "noise model": (_noise, WorldError),
     "voice bank": (_voice_bank, WorldError),
     "language set": (_language_set, KnicError),
