@@ -16,9 +16,8 @@ from dataclasses import dataclass
 from functools import lru_cache
 from pathlib import Path
 
-import yaml
-
 from core.errors import LanguageError
+from core.inputs import read_yaml
 from knic.language.vocabulary import normalize
 
 ANSWERS_FILE = Path(__file__).with_name("answers.yaml")
@@ -49,10 +48,7 @@ def load_answer_phrases(path: str | Path = ANSWERS_FILE) -> AnswerPhrases:
             in both the yes and the no list.
     """
     path = Path(path)
-    try:
-        data = yaml.safe_load(path.read_text(encoding="utf-8"))
-    except (OSError, yaml.YAMLError) as exc:
-        raise LanguageError(f"{path}: cannot read the answer phrases: {exc}") from exc
+    data = read_yaml(path, "answer phrases", LanguageError)
     if not isinstance(data, dict):
         raise LanguageError(f"{path}: expected a mapping of the lists {', '.join(_LISTS)}")
     lists: dict[str, tuple[str, ...]] = {}

@@ -44,6 +44,12 @@ def _commands(path: Path) -> Any:
     return load_language(path)
 
 
+def _answers(path: Path) -> Any:
+    from knic.language.answers import load_answer_phrases
+
+    return load_answer_phrases(path)
+
+
 def _noise(path: Path) -> Any:
     from worlds.sim.noise import load_noise
 
@@ -66,6 +72,7 @@ READERS: dict[str, tuple[Callable[[Path], Any], type[KnicError]]] = {
     "scenario": (_scenario, WorldError),
     "role file": (_roles, InferenceError),
     "lexicon": (_lexicon, LanguageError),
+    "answer phrases": (_answers, LanguageError),
     "command language": (_commands, LanguageError),
     "noise model": (_noise, WorldError),
     "voice bank": (_voice_bank, WorldError),
