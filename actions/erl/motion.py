@@ -26,7 +26,7 @@ from actions.erl.context import (
     standoff_points,
     wrap,
 )
-from core.robot import CommandResult
+from core.robot import CAUSE_NOT_AT_BELIEF, CommandResult
 
 #: metres between the robot and a person it approaches, tried in this order: inside the hand-over reach (the
 #: gripper's reach plus the person's arm, about 1.25 m) with a margin for the perceived position's error; the
@@ -216,6 +216,9 @@ class MeetAction(PersonApproachAction):
 class GuideAction(ErlAction):
     """``(guide ?r ?p ?from ?to)``: walk to room ``to`` with the person following.
 
+    The robot addresses the person where it believes they are (the perceived position); when nobody of that
+    name stands there the action fails and the belief is refuted, so the next plan looks for them.
+
     Phases: ``nav`` (person following) -> ``turn`` (face back to see them) -> ``wait`` (until the person is
     perceived inside ``to``). Deactivation ends the escort, so the person stays where they are.
     """
@@ -231,8 +234,13 @@ class GuideAction(ErlAction):
         if room is None:
             return self.refuse(f"room {self.target} has no anchor (region, waypoints) in the knowledge base")
         self.room = room
-        result = self.ctx.robot.escort(self.person)
+        where = self.ctx.perceived.position(self.person)
+        if where is None:
+            return self.refuse(f"{self.person} was never perceived: no believed position to address")
+        result = self.ctx.robot.escort(self.person, where)
         if not result.ok:
+            if result.cause == CAUSE_NOT_AT_BELIEF:
+                self.ctx.perceived.refute(self.person, where, self.ctx.now, result.reason)
             return self.refuse(f"{self.person} cannot be escorted: {result.reason}")
         self.nav = NavGoal(self.ctx, [to_point(self.ctx, wp) for wp in room.waypoints], self.target)
         if not self.nav.start():

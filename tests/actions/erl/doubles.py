@@ -209,6 +209,10 @@ class FakeRobot:
 
     def escort(self, person: str, at: Vec3 | None = None) -> CommandResult:
         px, py = self.people[person]
+        if at is not None and math.hypot(px - at[0], py - at[1]) > 1.0:
+            return CommandResult(
+                False, f"nobody answered: {person} is not at the believed position", CAUSE_NOT_AT_BELIEF
+            )
         d = math.hypot(px - self.x, py - self.y)
         if d > 2.0:
             return CommandResult(False, f"{person} is {d:.2f} m away, must be within 2.00 m")

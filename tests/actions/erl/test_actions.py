@@ -215,6 +215,7 @@ def test_guide_walks_with_the_person_and_ends_the_escort(
 ) -> None:
     robot, _kb, ctx = setup
     robot.people["annie"] = (3.2, 5.0)
+    record(ctx, "annie", Sighting((3.3, 5.1, 0.9), 0.0))
     action = create(ctx, "(guide r2d2 annie bedroom kitchen)")
     assert action.activation() and robot.escorting == "annie"
     status = ActionStatus.RUNNING
@@ -229,6 +230,32 @@ def test_guide_walks_with_the_person_and_ends_the_escort(
     action.deactivation()
     assert status is ActionStatus.SUCCEEDED
     assert robot.escorting is None
+
+
+def test_guide_addresses_the_believed_position_and_refutes_a_wrong_belief(setup: Setup) -> None:
+    robot, _kb, ctx = setup
+    robot.people["annie"] = (3.2, 5.0)
+    record(ctx, "annie", Sighting((1.8, 5.0, 0.9), 0.0))  # believed 1.4 m from where she stands
+    action = create(ctx, "(guide r2d2 annie bedroom kitchen)")
+    assert not action.activation() and robot.escorting is None
+    assert "not at the believed position" in action.failure_reason
+    assert isinstance(ctx.perceived, SightingBook)
+    assert [(s, p) for s, p, _t, _r in ctx.perceived.refuted] == [("annie", (1.8, 5.0, 0.9))]
+    assert ctx.perceived.lost_since("annie", 0.0)
+
+
+def test_guide_without_a_believed_position_is_refused() -> None:
+    robot = FakeRobot()
+    kb = KnowledgeBase.from_pddl(DOMAIN, clock=lambda: robot.time)
+    for room in ("bedroom", "kitchen"):
+        kb.add_instance("room", room)
+    kb.set_anchor("kitchen", {"region": [[4, 4], [6, 4], [6, 6], [4, 6]], "waypoints": [[5, 5]]})
+    kb.add_instance("person", "annie")
+    robot.people["annie"] = (1.0, 1.0)
+    ctx = ErlContext(robot, kb, AnchorPerception(kb))
+    action = create(ctx, "(guide r2d2 annie bedroom kitchen)")
+    assert not action.activation() and robot.escorting is None
+    assert "never perceived" in action.failure_reason
 
 
 def test_switch_on_waits_for_the_device_reading(setup: Setup) -> None:
