@@ -491,8 +491,10 @@ class _Patrol(Component):
     def _go(self, room: str, now: float) -> None:
         self.room = room
         self.for_person = self.revisits is not None and room == self.revisits.person_room(now)
-        x, y = self.points[room]
-        self.goal = self.robot.navigate_to_point(x, y)
+        view = self.points[room]
+        # a revisit faces the room (the sweep covers it), the fixed tour keeps its arrival heading
+        yaw = view.heading() if self.revisits is not None else None
+        self.goal = self.robot.navigate_to_point(*view.point, yaw)
         self.arrived = None
 
 

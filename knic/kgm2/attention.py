@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import math
 from collections.abc import Mapping, Sequence
+from dataclasses import dataclass
 
 from knic.kgm2.roles import Revisit
 from knowledge_base import BeliefStatus, KnowledgeBase
@@ -31,10 +32,10 @@ class Revisits:
     Args:
         kb: the knowledge base (read only).
         revisit: the role's revisit data.
-        rooms: the rooms the robot can go to, with a point to go to in each (world frame, metres).
+        rooms: the rooms the robot can go to, with where to look at each from (:func:`rooms_from_kb`).
     """
 
-    def __init__(self, kb: KnowledgeBase, revisit: Revisit, rooms: Mapping[str, tuple[float, float]]) -> None:
+    def __init__(self, kb: KnowledgeBase, revisit: Revisit, rooms: Mapping[str, RoomView]) -> None:
         self.kb = kb
         self.revisit = revisit
         self.rooms = dict(rooms)
@@ -87,29 +88,48 @@ class Revisits:
                 return room
         return None
 
-    def point_of(self, room: str) -> tuple[float, float]:
-        """Where to go to look at ``room``."""
+    def view_of(self, room: str) -> RoomView:
+        """Where to go to look at ``room``, and which way to face."""
         return self.rooms[room]
 
 
-def rooms_from_kb(kb: KnowledgeBase, names: Sequence[str] | None = None) -> dict[str, tuple[float, float]]:
-    """Each room's first waypoint from its knowledge-base anchor (``waypoints``, else the region's mean).
+@dataclass(frozen=True)
+class RoomView:
+    """Where to stand to look at a room: ``point`` (the room's first waypoint) and the room's ``centre`` (the
+    mean of its outline), world frame, metres."""
+
+    point: tuple[float, float]
+    centre: tuple[float, float]
+
+    def heading(self, min_distance: float = 0.5) -> float | None:
+        """Radians from the point towards the centre (None when they are closer than ``min_distance``)."""
+        dx, dy = self.centre[0] - self.point[0], self.centre[1] - self.point[1]
+        return math.atan2(dy, dx) if math.hypot(dx, dy) >= min_distance else None
+
+
+def rooms_from_kb(kb: KnowledgeBase, names: Sequence[str] | None = None) -> dict[str, RoomView]:
+    """Each anchored room's view: its first waypoint (else the outline's mean) and the outline's mean.
 
     Args:
-        names: the rooms to take (default every instance of type ``room`` with an anchor).
+        names: the rooms to take (default every instance of type ``room``); rooms without an anchor are
+            left out.
     """
     if names is None:
         names = kb.instances("room")
-    out: dict[str, tuple[float, float]] = {}
+    out: dict[str, RoomView] = {}
     for room in names:
         geometry = kb.anchor(room) or {}
         waypoints = geometry.get("waypoints") or []
         region = geometry.get("region") or []
-        if waypoints:
-            out[room] = (float(waypoints[0][0]), float(waypoints[0][1]))
-        elif region:
-            out[room] = (
+        if not region and not waypoints:
+            continue
+        if region:
+            centre = (
                 sum(float(p[0]) for p in region) / len(region),
                 sum(float(p[1]) for p in region) / len(region),
             )
+        else:
+            centre = (float(waypoints[0][0]), float(waypoints[0][1]))
+        point = (float(waypoints[0][0]), float(waypoints[0][1])) if waypoints else centre
+        out[room] = RoomView(point, centre)
     return out

@@ -375,6 +375,9 @@ class PersonPlaceKP(_EntityPlaceKP):
             track, an explored room) retracts it.
         moving_ttl_s: the same for a person who was walking when last seen (faster than ``walking_speed``
             m/s over the last ``speed_window_s`` seconds of sightings): they are likely elsewhere soon.
+        dwell_share: a person standing still who has been seen in the same room for a while is likely to stay:
+            their time to live is at least this share of how long they have been seen there (from the first
+            sighting that put them in the room to the last), at most ``max_ttl_s``.
         resolution: metres, of the CKUs' voxel keys (KGM-2's tracking resolution).
     """
 
@@ -391,6 +394,8 @@ class PersonPlaceKP(_EntityPlaceKP):
         min_confidence: float = 0.5,
         explored_grace_s: float = 15.0,
         moving_ttl_s: float = 10.0,
+        dwell_share: float = 0.5,
+        max_ttl_s: float = 120.0,
         walking_speed: float = 0.3,
         speed_window_s: float = 1.5,
         frequency: float = 5.0,
@@ -403,6 +408,10 @@ class PersonPlaceKP(_EntityPlaceKP):
         self.ttl_s = ttl_s
         self.anonymous_classes = frozenset({"person"})
         self.moving_ttl_s = min(moving_ttl_s, ttl_s)
+        self.dwell_share = dwell_share
+        self.max_ttl_s = max(max_ttl_s, ttl_s)
+        #: person -> (room, simulated time of the first sighting that put them there)
+        self._in_room_since: dict[str, tuple[str, float]] = {}
         self.walking_speed = walking_speed
         self.speed_window_s = speed_window_s
         self._trail: dict[str, deque[tuple[float, tuple[float, float, float]]]] = {}
@@ -431,9 +440,30 @@ class PersonPlaceKP(_EntityPlaceKP):
         prov = self.kb.why(Fact(self.place_predicate, (symbol, believed)))
         return prov is not None and room != believed and self.last_seen.get(symbol, -math.inf) >= prov.since
 
+    def write_place(
+        self, symbol: str, room: str, furniture: str | None, at: float, support: tuple[str, ...], conf: float
+    ) -> None:
+        """As for every entity; a new room starts the person's dwell there."""
+        held = self._in_room_since.get(symbol)
+        if held is None or held[0] != room:
+            self._in_room_since[symbol] = (room, at)
+        super().write_place(symbol, room, furniture, at, support, conf)
+
+    def forget_place(self, symbol: str, at: float, support: tuple[str, ...]) -> None:
+        """As for every entity; the dwell ends."""
+        self._in_room_since.pop(symbol, None)
+        super().forget_place(symbol, at, support)
+
     def ttl_of(self, symbol: str) -> float:
-        """Seconds the person's place lives after their last sighting."""
-        return self.moving_ttl_s if self.walking(symbol) else self.ttl_s
+        """Seconds the person's place lives after their last sighting: ``moving_ttl_s`` when last seen
+        walking, else ``ttl_s`` or, when longer, ``dwell_share`` of their dwell in the room (capped)."""
+        if self.walking(symbol):
+            return self.moving_ttl_s
+        held = self._in_room_since.get(symbol)
+        if held is None:
+            return self.ttl_s
+        dwell = self.last_seen.get(symbol, held[1]) - held[1]
+        return min(self.max_ttl_s, max(self.ttl_s, self.dwell_share * dwell))
 
     def step(self, now: float) -> None:
         """Process sightings and explored rooms, then age the beliefs of people unseen for their TTL."""

@@ -36,7 +36,11 @@ def test_rooms_from_kb_take_the_anchors(home_kb: KnowledgeBase) -> None:
     rooms = rooms_from_kb(home_kb)
     assert {"kitchen", "living_room", "bedroom"} <= set(rooms)
     geometry = home_kb.anchor("kitchen") or {}
-    assert rooms["kitchen"] == tuple(float(v) for v in geometry["waypoints"][0])
+    assert rooms["kitchen"].point == tuple(float(v) for v in geometry["waypoints"][0])
+    region = geometry["region"]
+    assert rooms["kitchen"].centre == pytest.approx(
+        (sum(p[0] for p in region) / len(region), sum(p[1] for p in region) / len(region))
+    )
 
 
 def test_an_aged_person_belief_is_visited_first(home_kb: KnowledgeBase, clock: list[float]) -> None:

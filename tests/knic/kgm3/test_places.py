@@ -153,6 +153,34 @@ def test_person_out_of_view_is_not_forgotten_only_aged(
     assert not paper_kb.facts("person_at") and not paper_kb.holds("found", "annie")
 
 
+def test_a_person_who_stayed_long_ages_later(paper_kb: KnowledgeBase, paper_locations: LocationModel) -> None:
+    bus = Bus()
+    publish_place_ckus(bus, paper_locations)
+    kp = PersonPlaceKP(bus, paper_kb, ttl_s=15.0, dwell_share=0.5, max_ttl_s=60.0, needed=2)
+
+    def status_at(now: float) -> BeliefStatus | None:
+        kp.step(now)
+        prov = paper_kb.why(Fact("person_at", ("annie", "bedroom")))
+        return prov.status if prov is not None else None
+
+    # seen sitting in the bedroom from t=1 to t=81, placed there by the second sighting (t=3): 78 s of dwell,
+    # so 39 s to live after the last sighting
+    for second in range(1, 82, 2):
+        send(bus, cku("annie", Kind.PERSON, (1.1, 6.6, 0.8), float(second), cls="person"))
+        kp.step(float(second))
+    assert kp.ttl_of("annie") == pytest.approx(39.0)
+    assert status_at(81.0 + 30.0) is BeliefStatus.OBSERVED  # past the plain 15 s
+    assert status_at(81.0 + 40.0) is BeliefStatus.ASSUMED
+    # a person seen once ages after the plain time to live
+    for t in (200.0, 200.2):
+        send(bus, cku("tracy", Kind.PERSON, (5.5, 5.3, 1.0), t, cls="person"))
+    kp.step(200.2)
+    assert kp.ttl_of("tracy") == pytest.approx(15.0)
+    # the dwell is capped
+    kp._in_room_since["annie"] = ("bedroom", -1000.0)
+    assert kp.ttl_of("annie") == pytest.approx(60.0)
+
+
 def test_sporadic_false_sightings_far_apart_in_time_never_add_up(
     paper_kb: KnowledgeBase, paper_locations: LocationModel
 ) -> None:
