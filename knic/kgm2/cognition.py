@@ -59,6 +59,9 @@ class TrackingConfig:
     person_min_lost_s: float = 2.5
     object_jump_confirm: int = 2
     person_jump_confirm: int = 2
+    #: least mask pixels of a person's sighting in which the face recogniser could have named a known person
+    #: (the robot's recogniser's own limit); an unnamed track counts such sightings (``face_views``)
+    face_pixels: int = 40
 
 
 @dataclass
@@ -154,6 +157,7 @@ class CognitiveLayer(Component):
                 ray_length=cfg.ray_length,
                 min_lost_s=cfg.person_min_lost_s if person else cfg.object_min_lost_s,
                 jump_confirm=cfg.person_jump_confirm if person else cfg.object_jump_confirm,
+                face_pixels=cfg.face_pixels if person else 0,
             )
             self.trackers[cls] = found
         return found
@@ -347,6 +351,7 @@ class CognitiveLayer(Component):
             attributes={
                 "identified": det.identity is not None,
                 "hits": track.hits,
+                "face_views": track.face_views,
                 "sightings": track.sightings,
             },
         )

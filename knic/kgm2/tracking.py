@@ -60,6 +60,8 @@ class Track:
     jump: tuple[tuple[float, float, float], int, float] | None = None
     #: sightings behind the latest update: 1, or the sightings that confirmed a jump to a far spot
     sightings: int = 1
+    #: unnamed sightings large enough for the face recogniser (see ``Tracker.face_pixels``)
+    face_views: int = 0
 
     @property
     def keys(self) -> Keys:
@@ -89,6 +91,9 @@ class Tracker:
         jump_confirm: sightings near one far spot needed before an identified track jumps there (1: at once).
         jump_window_s: most simulated seconds between two of those sightings.
         min_lost_s: least simulated seconds since the last sighting before a missed track is dropped.
+        face_pixels: a sighting without identity whose mask has at least this many pixels (LLKU attribute
+            ``pixels``) counts as a face view: the recogniser saw the person well and did not know them
+            (0: nothing counted; for classes without faces).
     """
 
     def __init__(
@@ -103,6 +108,7 @@ class Tracker:
         jump_confirm: int = 2,
         jump_window_s: float = 2.0,
         min_lost_s: float = 0.0,
+        face_pixels: int = 0,
     ) -> None:
         if radius <= 0 or max_misses < 0 or not 0 < gain <= 1:
             raise InferenceError(f"tracker {cls}: radius > 0, max_misses >= 0 and 0 < gain <= 1 required")
@@ -115,6 +121,7 @@ class Tracker:
         self.jump_confirm = max(1, jump_confirm)
         self.jump_window_s = jump_window_s
         self.min_lost_s = min_lost_s
+        self.face_pixels = face_pixels
         self.tracks: dict[int, Track] = {}
         self._by_symbol: dict[str, Track] = {}
         self.duplicates = 0
@@ -264,6 +271,7 @@ class Tracker:
             tid, self.cls, det.identity or f"{self.cls}_{tid}", centroid, octomap, now, now, det.confidence
         )
         track.support.append(det.uid)
+        self._count_face(track, det)
         self.tracks[tid] = track
         self._by_symbol[track.symbol] = track
         return track
@@ -285,3 +293,11 @@ class Tracker:
         track.misses = 0
         track.confidence = 0.5 * track.confidence + 0.5 * det.confidence
         track.support.append(det.uid)
+        self._count_face(track, det)
+
+    def _count_face(self, track: Track, det: LLKU) -> None:
+        pixels = det.attributes.get("pixels", 0)
+        if not self.face_pixels or det.identity is not None or not isinstance(pixels, int | np.integer):
+            return
+        if pixels >= self.face_pixels:
+            track.face_views += 1

@@ -156,10 +156,15 @@ class _EntityPlaceKP(KPPrime):
             return found
         if cku.cls in self.anonymous_classes or int(cku.attributes.get("hits", 1)) < self.discover_hits:
             return None
+        return self.discover(cku.cls, cku)
+
+    def discover(self, prefix: str, cku: CKU) -> str | None:
+        """Add the instance ``<prefix>_<n>`` (the first free ``n`` from 1) for the CKU's track; None when the
+        knowledge base refuses it."""
         n = 1
-        while self.kb.type_of(f"{cku.cls}_{n}") is not None:
+        while self.kb.type_of(f"{prefix}_{n}") is not None:
             n += 1
-        name = f"{cku.cls}_{n}"
+        name = f"{prefix}_{n}"
         try:
             self.kb.add_instance(
                 self.pddl_type,
@@ -366,7 +371,8 @@ class ObjectPlaceKP(_EntityPlaceKP):
 
 
 class PersonPlaceKP(_EntityPlaceKP):
-    """``(person_at ?p ?room)`` and ``(found ?p)`` for recognised people, retracted only on evidence.
+    """``(person_at ?p ?room)`` and ``(found ?p)`` for recognised people and visitors, retracted only on
+    evidence.
 
     Args:
         ttl_s: simulated seconds after the last sighting at which the person_at this KP' wrote ages (written
@@ -378,6 +384,8 @@ class PersonPlaceKP(_EntityPlaceKP):
         dwell_share: a person standing still who has been seen in the same room for a while is likely to stay:
             their time to live is at least this share of how long they have been seen there (from the first
             sighting that put them in the room to the last), at most ``max_ttl_s``.
+        visitor_views: face views without recognition after which an unnamed person becomes a visitor
+            instance (see :meth:`instance_of`).
         resolution: metres, of the CKUs' voxel keys (KGM-2's tracking resolution).
     """
 
@@ -396,6 +404,7 @@ class PersonPlaceKP(_EntityPlaceKP):
         moving_ttl_s: float = 10.0,
         dwell_share: float = 0.5,
         max_ttl_s: float = 120.0,
+        visitor_views: int = 5,
         walking_speed: float = 0.3,
         speed_window_s: float = 1.5,
         frequency: float = 5.0,
@@ -407,6 +416,10 @@ class PersonPlaceKP(_EntityPlaceKP):
         )
         self.ttl_s = ttl_s
         self.anonymous_classes = frozenset({"person"})
+        self.visitor_prefix = "visitor"
+        self.visitor_views = visitor_views
+        self.visitor_clearance = 1.0
+        self.visitor_window_s = 3.0
         self.moving_ttl_s = min(moving_ttl_s, ttl_s)
         self.dwell_share = dwell_share
         self.max_ttl_s = max(max_ttl_s, ttl_s)
@@ -415,6 +428,37 @@ class PersonPlaceKP(_EntityPlaceKP):
         self.walking_speed = walking_speed
         self.speed_window_s = speed_window_s
         self._trail: dict[str, deque[tuple[float, tuple[float, float, float]]]] = {}
+
+    def instance_of(self, cku: CKU) -> str | None:
+        """As for every entity, and: a person met for the first time becomes a visitor.
+
+        An unnamed person's track becomes the instance ``visitor_<n>`` once the face recogniser saw them well
+        ``visitor_views`` times without knowing them (KGM-2's ``face_views``) and no known person was seen
+        within ``visitor_clearance`` metres in the last ``visitor_window_s`` seconds (a known person whose
+        face was missed in a few frames has a named track nearby). The track keeps the instance from then on.
+        """
+        anonymous = bool(cku.track_id) and cku.symbol == f"{cku.cls}_{cku.track_id}"
+        if not anonymous:
+            return super().instance_of(cku)
+        found = self.discovered.get(cku.track_id)
+        if found is not None or cku.attributes.get("lost"):
+            return found
+        if int(cku.attributes.get("face_views", 0)) < self.visitor_views:
+            return None
+        if self.known_near(cku.position, cku.stamp):
+            return None
+        return self.discover(self.visitor_prefix, cku)
+
+    def known_near(self, position: tuple[float, float, float], stamp: float) -> bool:
+        """Whether a known (not discovered) person was seen near ``position`` lately."""
+        visitors = set(self.discovered.values())
+        for symbol, seen in self.last_seen.items():
+            if symbol in visitors or seen < stamp - self.visitor_window_s:
+                continue
+            where = self.last_position.get(symbol)
+            if where is not None and math.dist(where[:2], position[:2]) < self.visitor_clearance:
+                return True
+        return False
 
     def seen(self, cku: CKU) -> None:
         """One sighting: remember the recent trail (for the walking test), then as for every entity."""

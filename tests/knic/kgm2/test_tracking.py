@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from dataclasses import replace
+
 import numpy as np
 
 from knic.kgm2.tracking import Tracker
@@ -79,3 +81,20 @@ def test_a_single_far_false_positive_does_not_move_an_identified_track() -> None
     tracker.associate([percept(Kind.OBJECT, "remote", (10.1, 0.4, 0.6), 9.0, identity="remote")], 9.0)
     (track,) = tracker.tracks.values()
     assert np.allclose(track.centroid, (8.5, 1.6, 0.5), atol=0.05) and tracker.jumps_set_aside == 2
+
+
+def test_unnamed_person_tracks_count_the_views_the_face_recogniser_had() -> None:
+    tracker = Tracker("person", radius=0.8, face_pixels=40)
+
+    def seen(pixels: int, t: float, identity: str | None = None) -> None:
+        unit = percept(Kind.PERSON, "person", (2.0, 1.0, 1.0), t, identity=identity)
+        tracker.associate([replace(unit, attributes={"pixels": pixels})], t)
+
+    seen(500, 0.0)
+    seen(12, 0.2)  # too small for a face: not a face view
+    seen(np.int64(80), 0.4)  # type: ignore[arg-type]
+    (track,) = tracker.tracks.values()
+    assert track.symbol.startswith("person_") and track.hits == 3 and track.face_views == 2
+    seen(500, 0.6, identity="jack")  # a named sighting goes to jack's own track and counts nothing
+    assert tracker.by_symbol("jack") is not None and tracker.by_symbol("jack").face_views == 0  # type: ignore[union-attr]
+    assert Tracker("mug").face_pixels == 0

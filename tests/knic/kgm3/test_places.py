@@ -214,7 +214,7 @@ def test_two_mugs_become_two_discovered_instances(
     assert paper_kb.holds("object_at", "mug_1", "entrance") and paper_kb.holds(
         "object_at", "mug_2", "kitchen"
     )
-    # an anonymous person is never made an instance
+    # an unnamed person never seen well enough for the face recogniser is not made an instance
     pk = PersonPlaceKP(bus, paper_kb, needed=1)
     for t in (2.0, 2.2, 2.4, 2.6):
         send(
@@ -223,6 +223,45 @@ def test_two_mugs_become_two_discovered_instances(
         )
     pk.step(2.6)
     assert not pk.discovered and paper_kb.type_of("person_1") is None
+
+
+def test_a_person_met_for_the_first_time_becomes_a_visitor(
+    paper_kb: KnowledgeBase, paper_locations: LocationModel
+) -> None:
+    bus = Bus()
+    publish_place_ckus(bus, paper_locations)
+    kp = PersonPlaceKP(bus, paper_kb, needed=2, visitor_views=5)
+    before = set(paper_kb.instances("person"))
+
+    def stranger(tid: int, where: tuple[float, float, float], t: float, views: int) -> None:
+        unit = cku(f"person_{tid}", Kind.PERSON, where, t, cls="person", hits=views, face_views=views)
+        send(bus, replace(unit, track_id=tid))
+
+    # annie (known) stands in the bedroom; an unnamed track right next to her is her with her face missed
+    for i in range(8):
+        t = 1.0 + 0.2 * i
+        send(bus, cku("annie", Kind.PERSON, (1.1, 6.6, 0.8), t, cls="person", hits=i + 2))
+        stranger(904, (1.4, 6.7, 0.8), t, i + 1)
+        kp.step(t)
+    assert set(paper_kb.instances("person")) == before and not kp.discovered
+    # a stranger in the kitchen, seen well four times: not yet; the fifth view makes them visitor_1
+    for i in range(4):
+        stranger(905, KITCHEN[:2] + (1.0,), 10.0 + 0.2 * i, i + 1)
+        kp.step(10.0 + 0.2 * i)
+    assert not kp.discovered
+    for i in range(4, 7):
+        stranger(905, KITCHEN[:2] + (1.0,), 10.0 + 0.2 * i, i + 1)
+        kp.step(10.0 + 0.2 * i)
+    assert kp.discovered == {905: "visitor_1"}
+    assert set(paper_kb.instances("person")) - before == {"visitor_1"}
+    assert paper_kb.holds("person_at", "visitor_1", "kitchen")
+    prov = paper_kb.why(Fact("person_at", ("visitor_1", "kitchen")))
+    assert prov is not None and prov.source == "kp'.person_at"
+    # a second stranger is a second visitor
+    for i in range(7):
+        stranger(906, BEDROOM[:2] + (1.0,), 20.0 + 0.2 * i, i + 1)
+        kp.step(20.0 + 0.2 * i)
+    assert kp.discovered[906] == "visitor_2"
 
 
 def test_a_person_seen_leaving_and_then_lost_is_retracted(
