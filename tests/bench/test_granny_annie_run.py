@@ -166,6 +166,12 @@ def test_command_line_json_and_refusals(tmp_path: Path, capsys: pytest.CaptureFi
     err = capsys.readouterr().err.strip()
     assert err.startswith("knic: error: --baseline") and "magic" in err and "\n" not in err
     assert main([*args, "--episodes", "0"]) == 2
+    capsys.readouterr()
+    bad = tmp_path / "damage.yaml"
+    bad.write_text("hard_contact_m_s: fast\n", encoding="utf-8")
+    assert main([*args, "--damage", str(bad)]) == 2
+    err = capsys.readouterr().err.strip()
+    assert str(bad) in err and "hard_contact_m_s must be a positive number" in err and "\n" not in err
 
 
 def test_worker_processes_give_the_serial_results(tmp_path: Path) -> None:

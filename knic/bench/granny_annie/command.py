@@ -50,12 +50,20 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--max-sim-time", type=float, default=600.0, metavar="S", help="time limit per run, simulated s (600)"
     )
+    parser.add_argument(
+        "--damage",
+        type=Path,
+        default=None,
+        metavar="FILE.yaml",
+        help="what damages the testbed (default: the shipped knic/bench/granny_annie/damage.yaml)",
+    )
     parser.add_argument("--json", action="store_true", help="print one JSON object")
 
 
 def run(args: argparse.Namespace) -> int:
     from core.errors import KnicError
     from knic.bench.granny_annie.baselines import check_baselines
+    from knic.bench.granny_annie.damage import load_damage
     from knic.bench.granny_annie.episodes import generate_episodes
     from knic.bench.granny_annie.report import write_report
     from knic.bench.granny_annie.runner import Task, ray_unavailable, run_tasks, write_world_files
@@ -70,6 +78,8 @@ def run(args: argparse.Namespace) -> int:
         raise KnicError(f"{where}: --max-sim-time must be positive, got {args.max_sim_time}")
     baselines = check_baselines([b.strip() for b in args.baseline.split(",") if b.strip()])
     load_role(args.role)  # an unknown role is refused before anything runs
+    if args.damage is not None:
+        load_damage(args.damage)  # a bad damage model is refused before anything runs
     if args.backend == "ray":
         reason = ray_unavailable()
         if reason is not None:
@@ -79,7 +89,14 @@ def run(args: argparse.Namespace) -> int:
     out: Path = args.out
     write_world_files(out, episodes)
     tasks = [
-        Task(e.to_dict(), b, args.role, str(out), max_sim_time=args.max_sim_time)
+        Task(
+            e.to_dict(),
+            b,
+            args.role,
+            str(out),
+            max_sim_time=args.max_sim_time,
+            damage=None if args.damage is None else str(args.damage),
+        )
         for e in episodes
         for b in baselines
     ]
@@ -95,6 +112,7 @@ def run(args: argparse.Namespace) -> int:
         "workers": args.workers,
         "backend": args.backend,
         "max_sim_time": args.max_sim_time,
+        "damage": str(args.damage) if args.damage is not None else "damage.yaml (shipped)",
     }
     wall = time.perf_counter() - wall0
     report = write_report(

@@ -4,7 +4,8 @@
 starts and watches it in simulated time:
 
 * for the referee, every :data:`TRUTH_PERIOD_S` the oracle's true dynamic facts and the robot's true pose,
-  what the robot said, and when the oracle's penalty counters went up (:class:`~.referee.Timeline`);
+  what the robot said, and when the oracle's penalty counters went up (:class:`~.referee.Timeline`); at
+  10 Hz the true base speed of every contact (:class:`~.damage.ImpactProbe`, for the damage model);
 * for the ERL recording, the robot's own data: its localisation pose (the KGM-1 pose LLKU, 10 Hz), the path of
   every navigation goal it planned, the command it understood and every change of its fact base
   (:class:`Recording`).
@@ -78,10 +79,15 @@ class Recorder:
     """Watches one run (see the module docstring). Construct, :meth:`attach` before the run, :meth:`finish`
     after it, :meth:`close` to stop listening."""
 
-    def __init__(self, oracle: Oracle, robot: NavReading, kb: KnowledgeBase, bus: Bus) -> None:
+    def __init__(
+        self, oracle: Oracle, robot: NavReading, kb: KnowledgeBase, bus: Bus, impact_window_s: float = 0.3
+    ) -> None:
+        from knic.bench.granny_annie.damage import ImpactProbe
+
         self.oracle = oracle
+        self.impacts = ImpactProbe(oracle, impact_window_s)
         self.robot = robot
-        self.timeline = Timeline()
+        self.timeline = Timeline(impacts=self.impacts.impacts)  # the probe's list: live scores see it too
         self.recording = Recording()
         self._counters = {"bumps": 0, "drops": 0, "person_hits": 0, "testbed_damage": 0}
         self._said = 0
@@ -93,6 +99,7 @@ class Recorder:
         """Add the recorder's probes (stepped after the run's parts at the same instant)."""
         scheduler.add(Probe("bench.truth", 1.0 / TRUTH_PERIOD_S, self.sample))
         scheduler.add(Probe("bench.nav", 10.0, self._nav))
+        scheduler.add(Probe("bench.contacts", 10.0, self.impacts.step))
 
     def command(self, t: float, text: str) -> None:
         """Record a command the robot understood (published on ``/erlc/command``)."""

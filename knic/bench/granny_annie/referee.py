@@ -16,8 +16,9 @@ Score sheet (``../shared/erl_granny_annie.md``), per episode:
 * penalties: ``bumps`` (furniture and walls), ``drops``, ``stalls`` (stopping working: a stretch of at least
   :data:`STALL_S` simulated seconds without progress -- no base motion, no change of held object or device,
   nothing said -- before the run ended);
-* disqualifications: ``person_hits`` and ``testbed_damage`` (the simulator has no damage model yet: the
-  oracle's counter is read when it has one, else 0);
+* disqualifications: ``person_hits`` and ``testbed_damage`` (hard contacts with furniture or walls and
+  fragile items dropped, by the damage model of :mod:`.damage`, as data in ``damage.yaml``; plus the
+  oracle's own counter when it has one);
 * ``time_s``: when the run ended (the robot stopped on its own, or :data:`TIME_LIMIT_S`).
 
 Ranking (ERL practice): a disqualified run ranks below all others, then more achievements, then fewer
@@ -32,6 +33,7 @@ from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
+    from knic.bench.granny_annie.damage import DamageModel
     from knic.bench.granny_annie.episodes import Episode
 
 #: achievement kinds, in score-sheet order
@@ -70,6 +72,8 @@ class Timeline:
         samples: ground truth, oldest first (the first at t=0, the last at ``end``).
         said: (time, text) of everything the robot said.
         bumps, drops, person_hits, testbed_damage: simulated times at which the oracle's counter went up.
+        impacts: (time, true base speed in m/s) at the start of each furniture or wall contact
+            (:class:`~.damage.ImpactProbe`).
         understood: the goals the robot announced it took from the command (PDDL strings), None when it took
             none.
         end: simulated time the run ended.
@@ -82,6 +86,7 @@ class Timeline:
     drops: list[float] = field(default_factory=list)
     person_hits: list[float] = field(default_factory=list)
     testbed_damage: list[float] = field(default_factory=list)
+    impacts: list[tuple[float, float]] = field(default_factory=list)
     understood: tuple[str, ...] | None = None
     end: float = 0.0
     finished: bool = False
@@ -142,12 +147,17 @@ def rank_key(score: Score) -> tuple[int, int, int, float]:
     return (int(score.disqualified), -score.total, sum(score.penalties.values()), score.time_s)
 
 
-def judge(episode: Episode, timeline: Timeline, spoken_name: Any = None) -> Score:
+def judge(
+    episode: Episode, timeline: Timeline, spoken_name: Any = None, damage: DamageModel | None = None
+) -> Score:
     """Score one run of ``episode`` from its ground-truth ``timeline``.
 
     Args:
         spoken_name: how the robot says a symbol (default: underscores as spaces).
+        damage: what damages the testbed (default: the shipped ``damage.yaml``).
     """
+    from knic.bench.granny_annie.damage import damage_events, shipped_damage
+
     name = spoken_name or (lambda s: s.replace("_", " "))
     if not timeline.samples:
         raise ValueError("the timeline has no ground-truth sample")
@@ -188,9 +198,11 @@ def judge(episode: Episode, timeline: Timeline, spoken_name: Any = None) -> Scor
         "drops": len(timeline.drops),
         "stalls": len(stalls(timeline)),
     }
+    broken = damage_events(timeline, damage or shipped_damage())
+    details += [f"testbed_damage: {what} at {t:.1f} s" for t, what in broken]
     disqualifications = {
         "person_hits": len(timeline.person_hits),
-        "testbed_damage": len(timeline.testbed_damage),
+        "testbed_damage": len(timeline.testbed_damage) + len(broken),
     }
     return Score(achieved, achievable, penalties, disqualifications, min(timeline.end, TIME_LIMIT_S), details)
 

@@ -46,6 +46,7 @@ class Task:
         out: the output directory (the episode's world file is in ``out/worlds``).
         max_sim_time: the time limit in simulated seconds.
         record: write the trace, the journal and the bag.
+        damage: the damage model file (:mod:`.damage`); None: the shipped one.
     """
 
     episode: dict[str, Any]
@@ -54,6 +55,7 @@ class Task:
     out: str
     max_sim_time: float = 600.0
     record: bool = True
+    damage: str | None = None
 
 
 def world_file(out: Path, episode: Episode) -> Path:
@@ -80,6 +82,7 @@ def run_task(task: Task, starter: Starter | None = None) -> dict[str, Any]:
     """Run one (episode, baseline) and return its result (JSON-able): the score sheet and run figures."""
     from core.errors import KnicError
     from knic.bench.granny_annie.baselines import prepare
+    from knic.bench.granny_annie.damage import load_damage, shipped_damage
     from knic.bench.granny_annie.flow import start_with_task_flow
     from knic.bench.granny_annie.livescore import LiveScore, score_path
     from knic.bench.granny_annie.recording import Recorder, write_bag
@@ -95,6 +98,7 @@ def run_task(task: Task, starter: Starter | None = None) -> dict[str, Any]:
     world_path = world_file(out, episode)
     world = load_world(world_path)
     scenario = scenario_from_dict(episode.scenario(), world)
+    damage = (shipped_damage() if task.damage is None else load_damage(task.damage)).for_world(world)
     trace = journal = None
     if task.record:
         for sub in ("traces", "journals", "bags"):
@@ -115,7 +119,9 @@ def run_task(task: Task, starter: Starter | None = None) -> dict[str, Any]:
     try:
         with KnicSystem(config) as system:
             prepare(system, task.baseline, known=load_world(episode.world))
-            recorder = Recorder(system.sim, system.sim, system.kb, system.pipeline.bus)
+            recorder = Recorder(
+                system.sim, system.sim, system.kb, system.pipeline.bus, damage.contact_window_s
+            )
             recorder.attach(system.scheduler)
             recorder.sample(0.0)
             took = (starter or start_with_task_flow)(system, episode, recorder)
@@ -141,7 +147,7 @@ def run_task(task: Task, starter: Starter | None = None) -> dict[str, Any]:
             run["task"] = dialogue.ending
             timeline = recorder.finish(end, finished=finished, understood=understood)
             recorder.close()
-            score = judge(episode, timeline, spoken)
+            score = judge(episode, timeline, spoken, damage)
             live.finish(score, end)
             if task.record:
                 write_bag(out / "bags" / tag, recorder.recording)
