@@ -62,8 +62,10 @@ def seed_kb_from_world(
         writes += 1
 
     with kb.batch():
+        strangers = {name for name, person in world.people.items() if not person.known}
         for name, pddl_type in world.symbols().items():
-            instance(pddl_type, name)
+            if name not in strangers:  # met, not preloaded
+                instance(pddl_type, name)
         if any(d.kind == "bell" for d in world.devices.values()):
             instance("sound", BELL_SOUND)
         for pred, *args in sorted(world.static_facts()):
@@ -108,6 +110,8 @@ def seed_kb_from_world(
         )
         for group in (world.items, world.people):
             for name, thing in group.items():
+                if name in strangers:
+                    continue
                 ranked = sorted(thing.priors, key=lambda p: -p.probability)
                 rooms: list[str] = []
                 for prior in ranked:

@@ -398,7 +398,8 @@ def _people(
     ctx: _Ctx, raw: list[Any], rooms: dict[str, Room], furniture: dict[str, Furniture]
 ) -> dict[str, Person]:
     out: dict[str, Person] = {}
-    allowed = {"name", "furniture", "position", "behaviour", "present", "radius", "height", "color", "priors"}
+    allowed = {"name", "furniture", "position", "behaviour", "present", "known", "radius", "height", "color"}
+    allowed.add("priors")
     for entry, d in _entries(ctx, "people", raw):
         _no_unknown(ctx, entry, d, allowed)
         name = _str(ctx, entry + ".name", _req(ctx, entry, d, "name"))
@@ -426,12 +427,19 @@ def _people(
             on=on,
             behaviour=behaviour,
             present=present,
+            known=_known(ctx, entry, d.get("known", True)),
             radius=_num(ctx, entry + ".radius", d.get("radius", 0.22), positive=True),
             height=_num(ctx, entry + ".height", d.get("height", 1.65), positive=True),
             color=_color(ctx, entry + ".color", d["color"]) if "color" in d else (0.9, 0.7, 0.55, 1.0),
             priors=_priors(ctx, entry, d.get("priors", []), rooms, furniture),
         )
     return out
+
+
+def _known(ctx: _Ctx, entry: str, value: Any) -> bool:
+    if not isinstance(value, bool):
+        raise ctx.fail(entry, f"known must be true or false, got {value!r}")
+    return value
 
 
 def _devices(ctx: _Ctx, raw: list[Any], rooms: dict[str, Room]) -> dict[str, Device]:

@@ -145,6 +145,8 @@ class Person:
         behaviour: ``"static"`` (stays unless a scenario moves them) or ``"wander"`` (walks between room
             waypoints at random, seeded).
         present: False for a visitor outside the apartment until a scenario lets them in.
+        known: False for a stranger: the robot does not know them beforehand (no symbol in its knowledge base,
+            no face its recogniser can name); it meets them as a new instance.
         radius: body radius in metres.
         height: body height in metres.
         color: RGBA in 0..1.
@@ -156,6 +158,7 @@ class Person:
     on: str | None = None
     behaviour: str = "static"
     present: bool = True
+    known: bool = True
     radius: float = 0.22
     height: float = 1.65
     color: tuple[float, float, float, float] = (0.9, 0.7, 0.55, 1.0)

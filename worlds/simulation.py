@@ -117,6 +117,7 @@ class Simulation:
         self._devices = {d.name: (d.initial if d.kind != "bell" else 0.0) for d in w.devices.values()}
         self._scene = Scene(w, gui=gui, render_floor=render_floor)
         self._instances = self._instance_table()
+        self._strangers = frozenset(n for n, p in w.people.items() if not p.known)
         self._item_classes = sorted({it.cls for it in w.items.values()})
         self._time = 0.0
         self._pan = 0.0
@@ -224,7 +225,7 @@ class Simulation:
         est_eye, est_heading = camera_eye(self.robot_pose(), self._pan, spec.camera_height)
         pose = optical_pose(est_eye, est_heading, spec.camera_pitch, self._time)
         detections, detected, visible = detect(
-            seg, depth, self._instances, self.noise, self._rng_camera, self._item_classes
+            seg, depth, self._instances, self.noise, self._rng_camera, self._item_classes, self._strangers
         )
         depth = add_depth_noise(depth, self.noise.depth_noise, self._rng_camera)
         self._frame = CameraFrame(

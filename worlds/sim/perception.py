@@ -26,6 +26,7 @@ def detect(
     noise: NoiseConfig,
     rng: np.random.Generator,
     item_classes: list[str],
+    strangers: frozenset[str] = frozenset(),
 ) -> tuple[list[Detection], tuple[str | None, ...], frozenset[str]]:
     """Detections of one frame, with the ground truth behind them.
 
@@ -37,6 +38,7 @@ def detect(
         noise: the noise configuration.
         rng: the detector's random generator.
         item_classes: labels a false positive or confusion may take when no confusable class is listed.
+        strangers: people the robot's recogniser does not know: detected as a person, never named.
 
     Returns:
         ``(detections, detected, visible)``: the detections; for each, the instance behind its mask (``None``
@@ -53,7 +55,7 @@ def detect(
     lo, hi = noise.confidence_range
     people: list[str] = []
     if noise.person_confusion_rate > 0:
-        people = sorted(name for name, _label, person in instances.values() if person)
+        people = sorted(n for n, _label, person in instances.values() if person and n not in strangers)
     detections: list[Detection] = []
     detected: list[str | None] = []
     for name, body, label, person, count in visible:
@@ -63,7 +65,8 @@ def detect(
             continue
         identity = None
         if person:
-            if count >= noise.min_person_id_pixels and rng.random() < noise.person_id_rate:
+            known = name not in strangers
+            if count >= noise.min_person_id_pixels and rng.random() < noise.person_id_rate and known:
                 identity = name
                 if people and rng.random() < noise.person_confusion_rate:
                     others = [p for p in people if p != name]
