@@ -175,6 +175,7 @@ class SqliteJournal(Journal):
         self._decoded: dict[int, State] = {}
         self._checkpoint_seqs: list[int] = [0]
         self._last_checkpoint = 0
+        self._past_asked = False
         self.path = Path(path)
         self.read_only = read_only
         try:
@@ -316,9 +317,15 @@ class SqliteJournal(Journal):
         return [_row_to_change(r) for r in rows]
 
     def state_at_seq(self, seq: int) -> State:
-        """The state after event ``seq``: from the timeline once it is built; until then the last state (the
-        one a reopened journal needs) comes from the nearest checkpoint plus replay, which reads far less."""
-        if self._timeline is None and seq == self.last_seq:
+        """The state after event ``seq``: from the timeline once it is built.
+
+        Until then the last state (the one a reopened journal needs) and the first past state asked for (a
+        one-shot ``knic facts --at``) come from the nearest checkpoint plus replay, which reads far less than
+        building the timeline from every event; the second past state builds it (a viewer moving through
+        the history).
+        """
+        if self._timeline is None and (seq == self.last_seq or not self._past_asked):
+            self._past_asked = self._past_asked or seq != self.last_seq
             index = bisect.bisect_right(self._checkpoint_seqs, seq) - 1
             state = self._checkpoint(index)
             for change in self.changes(self._checkpoint_seqs[index], seq):
