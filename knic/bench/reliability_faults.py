@@ -15,8 +15,8 @@ The faults are injected from outside, never by patching internals:
   subprocess (SIGKILL, its children included) while it runs; the dispatcher gets what a dead planner gives.
 
 :func:`fault_runs` runs one closed-loop episode per fault in the simulated apartment and counts ``injected``
-(faults that really fired) and ``recovered`` (fired in a run whose goals the referee then found holding in
-the ground truth).
+(faults that really fired), ``recovered`` (fired in a run whose goals the referee then found holding in
+the ground truth) and ``crashed`` (the run itself raised: the loop did not survive the fault).
 """
 
 from __future__ import annotations
@@ -295,18 +295,24 @@ def fault_runs(
 
         config = RunConfig(world=WORLD, seed=seed, max_sim_time=max_sim_time, robot_wrapper=wrap)
         wall = time.perf_counter()
+        killing: KillingPlanner | None = None
         with KnicSystem(config) as system:
-            killing = None
             if fault == "planner_dies":
                 killing = KillingPlanner(system.dispatcher.planner, system.kb.domain.up_domain)
                 system.dispatcher.planner = killing
             system.add_goal(GOAL)
-            result = system.run()
+            try:
+                result = system.run()
+            except Exception as exc:  # the loop must survive every fault: a crash is what this counts
+                episodes[fault] = {"injected": True, "recovered": False, "goal_reached": False,
+                                   "crashed": f"{type(exc).__name__}: {exc}"}  # fmt: skip
+                continue
         fired = bool(killing.killed) if killing is not None else robots[0].fired_at is not None
         episodes[fault] = {
             "injected": fired,
             "recovered": fired and result.success,
             "goal_reached": result.success,
+            "crashed": "",
             "reason": result.reason,
             "sim_s": round(result.sim_time, 1),
             "wall_s": round(time.perf_counter() - wall, 1),
@@ -315,5 +321,6 @@ def fault_runs(
     return {
         "injected": sum(e["injected"] for e in episodes.values()),
         "recovered": sum(e["recovered"] for e in episodes.values()),
+        "crashed": sum(bool(e["crashed"]) for e in episodes.values()),
         "episodes": episodes,
     }

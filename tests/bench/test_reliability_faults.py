@@ -71,7 +71,7 @@ def test_the_goal_is_reached_after_the_fault(fault: str) -> None:
     assert episode["injected"], episode
     assert episode["goal_reached"] and episode["recovered"], episode
     assert episode["replans"] >= 1  # the fault was noticed and planned around
-    assert (figures["injected"], figures["recovered"]) == (1, 1)
+    assert (figures["injected"], figures["recovered"], figures["crashed"]) == (1, 1, 0)
 
 
 def test_a_short_soak_runs_errands_and_samples_memory() -> None:
