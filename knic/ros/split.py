@@ -59,8 +59,8 @@ class RosRun:
         link: the process's executor (its context sets the DDS domain).
         config: what the run is made of, as for a single-process run (world: the robot's map and what it
             knows before the run, no ground truth; role; journal; trace stream; recovery policy, planning
-            time, settle and give-up times); ``seed``, ``scenario`` and ``gui`` are the simulator's and
-            ignored here.
+            time, settle and give-up times, a robot wrapper); ``seed``, ``scenario`` and ``gui`` are the
+            simulator's and ignored here.
         listen: speech the robot hears goes to the goal intake (:class:`~knic.ros.knic_node.HeardSpeech`:
             commands, and answers to the open question).
     """
@@ -75,7 +75,8 @@ class RosRun:
         self.link = link
         self.world = load_world(cfg.world)
         self.robot = RosRobot(link, self.world.robot.name)
-        agent = build_agent(cfg, self.world, self.robot, lambda: self.robot.time)
+        seam = self.robot if cfg.robot_wrapper is None else cfg.robot_wrapper(self.robot)  # fault injection
+        agent = build_agent(cfg, self.world, seam, lambda: self.robot.time)
         assert agent.dispatcher is not None
         self.kb, self.pipeline, self.perception = agent.kb, agent.pipeline, agent.perception
         self.context, self.trace, self.dispatcher = agent.context, agent.trace, agent.dispatcher
