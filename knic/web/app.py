@@ -158,7 +158,6 @@ def create_app(
         links = "".join(f'<link rel="preload" href="{u}" as="fetch" crossorigin>\n' for u in PRELOAD)
         index = index.replace(b"<!--preload-->\n", links.encode())
     docs_assets: dict[str, tuple[bytes, str]] = {}
-    facts_cache: list[Any] = []  # [seq, encoded body] of the whole compact fact table now
 
     @contextlib.asynccontextmanager
     async def lifespan(app: FastAPI) -> AsyncIterator[None]:
@@ -264,19 +263,15 @@ def create_app(
     ) -> Response:
         """The fact table (with status, author, since, confidence) and the goals."""
         sync()
-        whole = compact and at is None and not (predicate or status or author or q)
-        if whole and facts_cache and facts_cache[0] == hub.view.seq:
-            return Response(facts_cache[1], media_type="application/json")  # the page's load, encoded once
+        if compact and at is None and not (predicate or status or author or q):
+            return Response(hub.whole_facts(), media_type="application/json")  # the page's load
         try:
             body = hub.view.facts(
                 parse_at(at), predicate=predicate, status=status, author=author, text=q, compact=compact
             )
         except BadQuery as exc:
             raise HTTPException(400, str(exc)) from None
-        response = JSONResponse(body)
-        if whole:
-            facts_cache[:] = [hub.view.seq, bytes(response.body)]
-        return response
+        return JSONResponse(body)
 
     @app.get("/api/why", dependencies=guarded, tags=["facts"], response_model=WhyResponse)
     async def why(

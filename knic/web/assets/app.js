@@ -33,8 +33,8 @@
   // ------------------------------------------------------------------ facts
   // a compact row [fact, status, author, since, confidence] as a fact record
   function fromRow([fact, status, author, since, confidence]) {
-    const words = fact.slice(1, -1).split(" ");
-    return { fact, predicate: words[0], arguments: words.slice(1), status, author, since, confidence };
+    const space = fact.indexOf(" ");
+    return { fact, predicate: fact.slice(1, space < 0 ? -1 : space), status, author, since, confidence };
   }
 
   function factMap(body) { return new Map(body.rows.map((r) => [r[0], fromRow(r)])); }
@@ -51,7 +51,7 @@
       model.seq = c.seq;
       model.last = c.time;
       if (model.first === null) model.first = c.time;
-      const record = { fact: c.fact, predicate: c.name, arguments: c.arguments, status: c.status,
+      const record = { fact: c.fact, predicate: c.name, status: c.status,
         author: c.author, since: c.time, confidence: c.confidence };
       if (c.kind === "add_fact") { model.facts.set(c.fact, record); model.fresh.add(c.fact); }
       else if (c.kind === "remove_fact") model.facts.delete(c.fact);
