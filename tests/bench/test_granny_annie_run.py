@@ -73,6 +73,8 @@ def test_a_short_episode_end_to_end(tmp_path: Path) -> None:
     assert first_goal > next(t for a, t in steps if a == "confirmed")  # work starts after her yes
     with sqlite3.connect(tmp_path / "journals" / "ep000_knic.sqlite") as db:
         assert db.execute("select count(*) from sqlite_master").fetchone()[0] > 0
+    live = json.loads((tmp_path / "journals" / "ep000_knic.score.json").read_text())  # for knic serve
+    assert live["final"] and live["score"] == score
     # the ERL recording, read back with a bag reader
     bag = read_bag(tmp_path / "bags" / "ep000_knic")
     assert set(bag) == set(TOPICS)
