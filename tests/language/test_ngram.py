@@ -71,3 +71,29 @@ def test_people_phrasings_are_heard_and_other_speech_is_rejected(
     for text in ("what is the weather like today", "tell me a joke", "what time is it"):
         other = understand_transcript(recognizer.recognize(DEV / gold[text]["file"]), vocabulary)
         assert not other.accepted and other.goals == ()
+
+
+def test_a_hypothesis_the_reader_cannot_read_is_snapped_to_an_n_best_one_it_can(
+    recognizer: NgramRecognizer, vocabulary: Vocabulary
+) -> None:
+    gold = {e["text"]: e for e in json.loads((DEV / "gold.json").read_text())["utterances"]}
+    audio = DEV / gold["go near the sofa"]["file"]
+    best = recognizer.recognize(audio).text
+    picky = NgramRecognizer(vocabulary, reads=lambda text: text != best)
+    snapped = picky.recognize(audio)
+    assert snapped.text and snapped.text != best  # the next N-best hypothesis the reader takes
+    never = NgramRecognizer(vocabulary, reads=lambda text: False)
+    assert never.recognize(audio).text == best  # none read: the best hypothesis stays (then refused)
+
+
+def test_ood_development_speech_is_mostly_rejected(
+    recognizer: NgramRecognizer, vocabulary: Vocabulary
+) -> None:
+    folder = DEV.parents[1] / "speech_ood_dev"
+    entries = json.loads((folder / "gold.json").read_text())["utterances"][:8]
+    accepted = [
+        e["text"]
+        for e in entries
+        if understand_transcript(recognizer.recognize(folder / e["file"]), vocabulary).accepted
+    ]
+    assert len(accepted) <= 1, accepted
