@@ -116,7 +116,7 @@ class Simulation:
         self._base.ask_way = self._ask_way
         self._devices = {d.name: (d.initial if d.kind != "bell" else 0.0) for d in w.devices.values()}
         self._scene = Scene(w, gui=gui, render_floor=render_floor)
-        self._instances = self._instance_table()
+        self._instances = self._scene.instances()
         self._strangers = frozenset(n for n, p in w.people.items() if not p.known)
         self._item_classes = sorted({it.cls for it in w.items.values()})
         self._time = 0.0
@@ -137,18 +137,6 @@ class Simulation:
     def from_world(cls, world: World | str | Path, **kwargs: object) -> Simulation:
         """Same as the constructor (``Simulation.from_world("erl_home", seed=1)``)."""
         return cls(world, **kwargs)  # type: ignore[arg-type]
-
-    def _instance_table(self) -> dict[int, tuple[str, str, bool]]:
-        w = self._world
-        table: dict[int, tuple[str, str, bool]] = {}
-        for name, body in self._scene.body_of.items():
-            if name in w.items:
-                table[body] = (name, w.items[name].cls, False)
-            elif name in w.people:
-                table[body] = (name, "person", True)
-            elif name in w.furniture:
-                table[body] = (name, "", False)
-        return table
 
     # ------------------------------------------------------------------------------------------ properties
 
@@ -435,17 +423,12 @@ class Simulation:
             return CommandResult(
                 False, f"{person} is {d:.2f} m away, must be within 2.00 m", CAUSE_OUT_OF_REACH
             )
-        for q in self._people.people.values():
-            q.following = False
-        p.following = True
-        p.tasks.clear()
+        self._people.follow(person)
         return CommandResult(True)
 
     def stop_escort(self) -> None:
         """Nobody follows the robot any more."""
-        for q in self._people.people.values():
-            q.following = False
-            q.path = []
+        self._people.follow(None)
 
     # ------------------------------------------------------------------------------------------ ground truth
 

@@ -198,6 +198,17 @@ class PeopleController:
             if self._walk_towards(p, p.path[p.path_index], dt, robot):
                 p.path_index += 1
 
+    def follow(self, name: str | None) -> None:
+        """``name`` follows the robot from now on (their queued tasks dropped); nobody else does. None: nobody
+        follows any more (everyone's path is planned afresh)."""
+        for q in self.people.values():
+            q.following = False
+            if name is None:
+                q.path = []
+        if name is not None:
+            self.people[name].following = True
+            self.people[name].tasks.clear()
+
     def make_way(
         self, name: str, now: float, robot: tuple[float, float, float], path: Sequence[Point]
     ) -> bool:

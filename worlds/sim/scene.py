@@ -174,6 +174,19 @@ class Scene:
 
     # ------------------------------------------------------------------------------------------ moving
 
+    def instances(self) -> dict[int, tuple[str, str, bool]]:
+        """Body id -> (instance name, item class or "person" or "" for furniture, is a person)."""
+        w = self.world
+        table: dict[int, tuple[str, str, bool]] = {}
+        for name, body in self.body_of.items():
+            if name in w.items:
+                table[body] = (name, w.items[name].cls, False)
+            elif name in w.people:
+                table[body] = (name, "person", True)
+            elif name in w.furniture:
+                table[body] = (name, "", False)
+        return table
+
     def move(self, name: str, pos: tuple[float, float, float], yaw: float = 0.0) -> None:
         """Place an instance's body at ``pos`` (body centre) with heading ``yaw`` (no-op when unchanged)."""
         body = self.body_of[name]
