@@ -49,6 +49,21 @@ def test_a_person_in_the_only_doorway_is_asked_and_steps_aside(
     assert counters.person_hits == 0 and counters.bumps == 0
 
 
+def test_a_person_in_a_doorway_with_a_way_around_is_not_asked(
+    make_sim: Callable[..., Simulation], doc: dict[str, Any]
+) -> None:
+    tracy = next(p for p in doc["people"] if p["name"] == "tracy")
+    tracy["position"] = [6.0, 8.0]  # the hallway-kitchen door; the kitchen is also reached by the dining room
+    sim = make_sim(world_from_dict(doc))
+    sim.navigate_to_room("kitchen")
+    gaps = _run(sim)
+    assert sim.nav_status().state is NavState.SUCCEEDED, sim.nav_status().reason
+    assert ("robot_at", "r2d2", "kitchen") in sim.ground_truth_facts()
+    assert sim.spoken() == []  # it went round, nobody was bothered
+    assert min(gaps) >= sim.world.robot.radius + sim.world.people["tracy"].radius - 1e-6
+    assert sim.counters().person_hits == 0 and sim.counters().bumps == 0
+
+
 def test_a_person_who_does_not_move_fails_the_goal_after_a_bounded_wait(
     make_sim: Callable[..., Simulation],
 ) -> None:
