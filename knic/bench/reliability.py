@@ -22,7 +22,8 @@ Figures (``--json`` for one object):
   memory sampled (:mod:`knic.bench.reliability_soak`): start, end and peak MB and the slope per simulated
   hour.
 
-``--quick`` shrinks every size (for tests): fewer fuzz cases and kills, one fault, a 60 s soak.
+``--quick`` shrinks every size (for tests): fewer fuzz cases and kills, one fault, a 60 s soak. ``--parts``
+runs some of the parts only (e.g. ``--parts soak``).
 """
 
 from __future__ import annotations
@@ -45,6 +46,10 @@ ERL = ROOT / "worlds" / "erl_home"
 ROOMS = ("kitchen", "bedroom", "entrance", "living_room")
 
 
+#: the parts of the benchmark, in the order they run
+PARTS = ("fuzz", "durability", "faults", "soak")
+
+
 def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--json", action="store_true", help="print one JSON object")
     parser.add_argument("--quick", action="store_true", help="small sizes (seconds, not representative)")
@@ -56,7 +61,12 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         metavar="SECONDS",
         help="simulated seconds of the soak (default 3600, 60 with --quick; 0 skips it)",
     )
-    parser.add_argument("--no-faults", action="store_true", help="skip the closed-loop fault injection")
+    parser.add_argument(
+        "--parts",
+        default=",".join(PARTS),
+        metavar="LIST",
+        help=f"comma-separated parts to run (default all: {','.join(PARTS)})",
+    )
 
 
 def run(args: argparse.Namespace) -> int:
@@ -66,7 +76,12 @@ def run(args: argparse.Namespace) -> int:
             file=sys.stderr,
         )
         return 2
-    figures = measure(quick=args.quick, seed=args.seed, soak_s=args.soak_s, faults=not args.no_faults)
+    parts = tuple(p.strip() for p in args.parts.split(",") if p.strip())
+    unknown = [p for p in parts if p not in PARTS]
+    if unknown or not parts:
+        print(f"knic bench reliability: --parts takes {','.join(PARTS)}, got {args.parts!r}", file=sys.stderr)
+        return 2
+    figures = measure(quick=args.quick, seed=args.seed, soak_s=args.soak_s, parts=parts)
     if args.json:
         print(json.dumps(figures))
     else:
@@ -76,24 +91,29 @@ def run(args: argparse.Namespace) -> int:
 
 
 def measure(
-    *, quick: bool = False, seed: int = 0, soak_s: float | None = None, faults: bool = True
+    *, quick: bool = False, seed: int = 0, soak_s: float | None = None, parts: tuple[str, ...] = PARTS
 ) -> dict[str, Any]:
-    """Every measurement (see the module docstring); ``soak_s`` None: 3600 (60 when ``quick``), 0: no soak."""
+    """The measurements of ``parts`` (see the module docstring); ``soak_s`` None: 3600 (60 when ``quick``),
+    0: no soak. ``meets_targets`` judges the parts run."""
     from knic.bench.reliability_faults import FAULTS, fault_runs
     from knic.bench.reliability_soak import soak
 
-    cases = 60 if quick else 600
-    out: dict[str, Any] = {"fuzz": fuzz_all(cases, seed)}
-    out["durability"] = durability(kills=3 if quick else 20, seed=seed)
-    if faults:
+    out: dict[str, Any] = {}
+    if "fuzz" in parts:
+        out["fuzz"] = fuzz_all(60 if quick else 600, seed)
+        out["crashes"] = sum(f["crashed"] for f in out["fuzz"].values())
+    if "durability" in parts:
+        out["durability"] = durability(kills=3 if quick else 20, seed=seed)
+    if "faults" in parts:
         out["faults"] = fault_runs(("action_false",) if quick else FAULTS, seed=seed)
     soak_s = (60.0 if quick else 3600.0) if soak_s is None else soak_s
-    if soak_s > 0:
+    if "soak" in parts and soak_s > 0:
         out["soak"] = soak(soak_s, seed=seed)
-    fuzz = out["fuzz"].values()
-    out["crashes"] = sum(f["crashed"] for f in fuzz)
-    recovered = "faults" not in out or out["faults"]["recovered"] == out["faults"]["injected"]
-    out["meets_targets"] = out["crashes"] == 0 and out["durability"]["lost_acknowledged"] == 0 and recovered
+    out["meets_targets"] = (
+        out.get("crashes", 0) == 0
+        and out.get("durability", {}).get("lost_acknowledged", 0) == 0
+        and out.get("faults", {}).get("recovered", 0) == out.get("faults", {}).get("injected", 0)
+    )
     return out
 
 
