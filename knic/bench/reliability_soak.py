@@ -8,7 +8,8 @@ simulated seconds have passed. Resident memory (RSS, from ``/proc/self/statm``) 
 holding in the ground truth), ``rss_start_mb`` (first sample, after the first errand began),
 ``rss_end_mb``, ``rss_peak_mb``, ``rss_slope_mb_per_h`` (least-squares slope over the second half of the
 samples, per simulated hour: a flat process stays near 0), the knowledge base's history length
-(``journal_events``: the history is kept by design and grows with the run), simulated and wall seconds.
+(``journal_events``: the history is kept by design and grows with the run), simulated and wall seconds, and
+why each errand not reached was missed (``missed``; the last one may be cut off by the end).
 """
 
 from __future__ import annotations
@@ -61,16 +62,20 @@ def soak(sim_s: float = 3600.0, *, seed: int = 0, sample_s: float = 30.0) -> dic
             next_sample[0] = now + sample_s
 
     errands = reached = 0
+    missed: list[str] = []
     wall = time.perf_counter()
     with KnicSystem(RunConfig(world=WORLD, seed=seed, max_sim_time=sim_s)) as system:
         while system.sim.time < sim_s:
             for old in system.kb.goals():
                 system.kb.remove_goal(old.predicate, *old.args, source="soak")
-            system.add_goal(f"(object_at glasses {ROOMS[errands % len(ROOMS)]})")
+            goal = f"(object_at glasses {ROOMS[errands % len(ROOMS)]})"
+            system.add_goal(goal)
             errands += 1
             before = system.sim.time
             result = system.run(sim_s, on_check=sample)
             reached += result.success
+            if not result.success:
+                missed.append(f"t={before:.0f} {goal}: {result.reason}")
             if system.sim.time <= before:  # pragma: no cover - a run always advances the clock
                 break
         sample(system)
@@ -89,4 +94,5 @@ def soak(sim_s: float = 3600.0, *, seed: int = 0, sample_s: float = 30.0) -> dic
         "rss_peak_mb": round(max(mbs), 1) if mbs else 0.0,
         "rss_slope_mb_per_h": round(_slope_per_hour(tail), 2),
         "journal_events": events,
+        "missed": missed,
     }
