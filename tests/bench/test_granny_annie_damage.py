@@ -31,9 +31,10 @@ def episode() -> Episode:
 
 
 def drive_into_a_wall(speed: float) -> tuple[list[tuple[float, float]], int]:
-    """Turn the base towards the entrance hall's east wall, drive into it at ``speed``: (impacts, bumps)."""
+    """Turn the base towards the entrance hall's east wall, drive straight into it at ``speed``: (impacts,
+    bumps)."""
     with Simulation.from_world("erl_home", seed=1) as sim:
-        probe = ImpactProbe(sim, shipped_damage().contact_window_s)
+        probe = ImpactProbe(sim, sim.world, shipped_damage().contact_window_s)
         sim.set_base_velocity(0.0, 1.0)
         while sim.time < 4.9:
             sim.step(0.1)
@@ -59,7 +60,7 @@ def test_a_forced_hard_collision_damages_the_testbed() -> None:
     score = judge(episode(), timeline_with(impacts, bumps))
     assert score.disqualifications == {"person_hits": 0, "testbed_damage": 1} and score.disqualified
     assert score.penalties["bumps"] == 1
-    assert any(d.startswith("testbed_damage: hit furniture or a wall at 0.5") for d in score.details)
+    assert any(d.startswith("testbed_damage: drove into furniture or a wall at 0.5") for d in score.details)
 
 
 def test_a_slow_contact_is_a_bump_not_damage() -> None:

@@ -4,9 +4,11 @@ The score sheet disqualifies a run that damages the testbed. The simulator count
 hits) and drops but has no notion of damage; the referee derives it from ground truth with the thresholds of
 ``damage.yaml`` (:class:`DamageModel`):
 
-* a **hard contact**: the base started touching furniture or a wall while its true speed over the last
-  ``contact_window_s`` was at least ``hard_contact_m_s`` (:class:`ImpactProbe` measures the speed of every
-  contact as the run goes, from the oracle's true pose and bump counter);
+* a **hard contact**: the base started touching furniture or a wall while closing in on it at
+  ``hard_contact_m_s`` or more: the true clearance to the nearest furniture or wall surface shrank that
+  fast over the last ``contact_window_s`` (:class:`ImpactProbe` measures it for every contact as the run
+  goes, from the oracle's true pose and bump counter and the world's geometry). A base grazing a door frame
+  at full speed closes in slowly and stays a bump; one driving straight into a wall does not;
 * a **broken item**: the robot dropped an item named (or of a detector class named) ``fragile``; which item
   fell is read from the ground-truth samples around the drop (held before, not held after).
 
@@ -15,7 +17,6 @@ Both are read only from the oracle (true pose, counters, true facts), never from
 
 from __future__ import annotations
 
-import math
 from collections import deque
 from collections.abc import Iterable
 from dataclasses import dataclass, replace
@@ -39,9 +40,9 @@ class DamageModel:
     """What damages the testbed (see the module docstring).
 
     Attributes:
-        hard_contact_m_s: base speed (m/s) at the start of a contact with furniture or a wall from which the
-            contact damages the testbed.
-        contact_window_s: simulated seconds of true base motion the contact speed is measured over.
+        hard_contact_m_s: closing speed (m/s) towards the nearest furniture or wall surface at the start of
+            a contact from which the contact damages the testbed.
+        contact_window_s: simulated seconds the closing speed is measured over.
         fragile: item names and detector classes that break when dropped.
     """
 
@@ -97,44 +98,48 @@ def load_damage(path: str | Path = DEFAULT_DAMAGE) -> DamageModel:
 
 
 class ImpactProbe:
-    """Measures the true base speed at the start of every furniture or wall contact (module docstring).
+    """Measures how fast the base closed in on furniture or walls as each contact started (module docstring).
 
     Args:
         oracle: the simulator's ground truth (true pose, penalty counters).
-        window_s: simulated seconds of motion the speed is measured over.
+        world: the world whose furniture and walls are the obstacles.
+        window_s: simulated seconds the closing speed is measured over.
 
     Lifecycle: call :meth:`step` at a fixed rate (10 Hz in the recorder) from the start of the run; each new
-    bump (the oracle's counter went up) appends ``(time, speed m/s)`` to :attr:`impacts`.
+    bump (the oracle's counter went up) appends ``(time, closing speed m/s)`` to :attr:`impacts`.
     """
 
-    def __init__(self, oracle: Oracle, window_s: float = 0.3) -> None:
+    def __init__(self, oracle: Oracle, world: World, window_s: float = 0.3) -> None:
+        from worlds.sim.contacts import ContactMonitor
+
         self.oracle = oracle
         self.window_s = window_s
         self.impacts: list[tuple[float, float]] = []
-        self._poses: deque[tuple[float, float, float]] = deque()
+        self._geometry = ContactMonitor(world)
+        self._clearance: deque[tuple[float, float]] = deque()
         self._bumps = 0
 
     def step(self, now: float) -> None:
         """Read the true pose and the bump counter at simulated time ``now``."""
         pose = self.oracle.true_robot_pose()
-        self._poses.append((now, pose.x, pose.y))
-        while len(self._poses) > 2 and self._poses[1][0] <= now - self.window_s + 1e-9:
-            self._poses.popleft()
+        self._clearance.append((now, self._geometry.clearance(pose.x, pose.y)))
+        while len(self._clearance) > 2 and self._clearance[1][0] <= now - self.window_s + 1e-9:
+            self._clearance.popleft()
         bumps = int(self.oracle.counters().bumps)
         if bumps > self._bumps:
-            self.impacts.extend([(now, round(self.speed(), 3))] * (bumps - self._bumps))
+            self.impacts.extend([(now, round(self.closing_speed(), 3))] * (bumps - self._bumps))
         self._bumps = bumps
 
-    def speed(self) -> float:
-        """Mean true base speed (m/s) over the poses kept (about the last ``window_s`` seconds)."""
-        (t0, x0, y0), (t1, x1, y1) = self._poses[0], self._poses[-1]
-        return math.hypot(x1 - x0, y1 - y0) / (t1 - t0) if t1 > t0 else 0.0
+    def closing_speed(self) -> float:
+        """How fast (m/s) the clearance to the nearest furniture or wall shrank over the kept window."""
+        (t0, c0), (t1, c1) = self._clearance[0], self._clearance[-1]
+        return max(0.0, c0 - c1) / (t1 - t0) if t1 > t0 else 0.0
 
 
 def damage_events(timeline: Timeline, model: DamageModel) -> list[tuple[float, str]]:
     """The testbed damage of one run, ``(time, what)`` in time order: hard contacts and broken items."""
     out = [
-        (t, f"hit furniture or a wall at {speed:.2f} m/s")
+        (t, f"drove into furniture or a wall at {speed:.2f} m/s")
         for t, speed in timeline.impacts
         if speed >= model.hard_contact_m_s
     ]

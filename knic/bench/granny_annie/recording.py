@@ -30,12 +30,13 @@ from typing import TYPE_CHECKING, Any, Protocol
 from core.robot import NavState, NavStatus
 from knic.bench.granny_annie.referee import Sample, Timeline
 from knic.system.loop import Probe
+from worlds.oracle import Oracle
 
 if TYPE_CHECKING:
     from knic.bus import Bus, Message
     from knic.scheduler import Scheduler
     from knowledge_base import Change, KnowledgeBase
-    from worlds.oracle import Oracle
+    from worlds.model import World
 
 #: seconds between two ground-truth samples
 TRUTH_PERIOD_S = 0.5
@@ -55,6 +56,15 @@ class NavReading(Protocol):
 
     def nav_status(self) -> NavStatus:
         """The latest navigation goal (``goal_id``, ``state``, ``path``, ``goal``)."""
+        ...
+
+
+class WorldOracle(Oracle, Protocol):
+    """The oracle with the world it simulates (:class:`worlds.simulation.Simulation` satisfies it)."""
+
+    @property
+    def world(self) -> World:
+        """The world's model (its furniture and walls are what the base may bump into)."""
         ...
 
 
@@ -80,12 +90,17 @@ class Recorder:
     after it, :meth:`close` to stop listening."""
 
     def __init__(
-        self, oracle: Oracle, robot: NavReading, kb: KnowledgeBase, bus: Bus, impact_window_s: float = 0.3
+        self,
+        oracle: WorldOracle,
+        robot: NavReading,
+        kb: KnowledgeBase,
+        bus: Bus,
+        impact_window_s: float = 0.3,
     ) -> None:
         from knic.bench.granny_annie.damage import ImpactProbe
 
         self.oracle = oracle
-        self.impacts = ImpactProbe(oracle, impact_window_s)
+        self.impacts = ImpactProbe(oracle, oracle.world, impact_window_s)
         self.robot = robot
         self.timeline = Timeline(impacts=self.impacts.impacts)  # the probe's list: live scores see it too
         self.recording = Recording()
