@@ -158,6 +158,7 @@ def test_command_line_json_and_refusals(tmp_path: Path, capsys: pytest.CaptureFi
         assert set(figures["penalties"]) == {"bumps", "drops", "stalls"}
         assert set(figures["disqualifications"]) == {"person_hits", "testbed_damage"}
         assert figures["time_median_s"] <= 20.0
+        assert figures["cost"]["cpu_s_mean"] > 0 and figures["cost"]["wall_s_mean"] > 0
     report = json.loads((tmp_path / "report.json").read_text())
     assert len(report["results"]) == 2 and report["summary"] == printed["baselines"]
     assert sum(printed["baselines"]["knic"]["run_ends"].values()) == 1
@@ -190,7 +191,7 @@ def test_worker_processes_give_the_serial_results(tmp_path: Path) -> None:
 
     def comparable(results: list[dict]) -> list[dict]:
         return sorted(
-            ({k: v for k, v in r.items() if k != "wall_s"} for r in results),
+            ({k: v for k, v in r.items() if k not in ("wall_s", "cpu_s")} for r in results),
             key=lambda r: (r["episode"], r["baseline"]),
         )
 
@@ -211,8 +212,10 @@ def test_ray_backend_gives_the_serial_result(tmp_path: Path) -> None:
     episode = short_episode(4, LIGHT)
     write_world_files(tmp_path, [episode])
     tasks = [Task(episode.to_dict(), "knic", "companion", str(tmp_path), record=False)]
-    on_ray = [{k: v for k, v in r.items() if k != "wall_s"} for r in run_tasks(tasks, backend="ray")]
-    serial = [{k: v for k, v in r.items() if k != "wall_s"} for r in run_tasks(tasks)]
+    on_ray = [
+        {k: v for k, v in r.items() if k not in ("wall_s", "cpu_s")} for r in run_tasks(tasks, backend="ray")
+    ]
+    serial = [{k: v for k, v in r.items() if k not in ("wall_s", "cpu_s")} for r in run_tasks(tasks)]
     assert on_ray == serial and serial[0]["score"]["achieved"]["devices"] == 1
 
 

@@ -26,8 +26,10 @@ def score_of(result: dict[str, Any]) -> Score:
 
 
 def summary(results: list[dict[str, Any]], baselines: list[str]) -> dict[str, dict[str, Any]]:
-    """Per baseline, the totals of its results (:func:`~.referee.summarise`) and how its runs ended
-    (``run_ends``: done, gave_up, time_limit, not_understood, error)."""
+    """Per baseline, the totals of its results (:func:`~.referee.summarise`), how its runs ended
+    (``run_ends``: done, gave_up, time_limit, not_understood, error) and what its runs cost (``cost``: mean
+    wall seconds and mean and total CPU seconds of the process that ran them; CPU time predicts the wall
+    time of a run on a quiet machine, wall time depends on the load)."""
     out = {}
     for b in baselines:
         mine = [r for r in results if r["baseline"] == b]
@@ -36,6 +38,13 @@ def summary(results: list[dict[str, Any]], baselines: list[str]) -> dict[str, di
         for r in mine:
             ends[run_end(r)] += 1
         figures["run_ends"] = ends
+        walls = [float(r["wall_s"]) for r in mine if "wall_s" in r]
+        cpus = [float(r["cpu_s"]) for r in mine if "cpu_s" in r]
+        figures["cost"] = {
+            "wall_s_mean": round(sum(walls) / len(walls), 2) if walls else None,
+            "cpu_s_mean": round(sum(cpus) / len(cpus), 2) if cpus else None,
+            "cpu_s_total": round(sum(cpus), 2) if cpus else None,
+        }
         out[b] = figures
     return out
 

@@ -105,7 +105,7 @@ def run_task(task: Task, starter: Starter | None = None) -> dict[str, Any]:
             (out / sub).mkdir(parents=True, exist_ok=True)
         trace = (out / "traces" / f"{tag}.jsonl").open("w", encoding="utf-8")
         journal = out / "journals" / f"{tag}.sqlite"
-    wall0 = time.perf_counter()
+    wall0, cpu0 = time.perf_counter(), time.process_time()
     config = RunConfig(
         world=world_path,
         scenario=scenario,
@@ -164,6 +164,7 @@ def run_task(task: Task, starter: Starter | None = None) -> dict[str, Any]:
         "score": score.to_dict(),
         "run": {**run, "sim_time": round(end, 2), "finished": finished, "error": error},
         "wall_s": round(time.perf_counter() - wall0, 2),
+        "cpu_s": round(time.process_time() - cpu0, 2),  # this process's CPU: the run's cost without load
     }
 
 
