@@ -109,8 +109,9 @@ class _EntityPlaceKP(KPPrime):
         self.last_seen: dict[str, float] = {}
         self.last_position: dict[str, tuple[float, float, float]] = {}
         self.explored_grace_s = explored_grace_s
-        #: simulated seconds after a room becomes explored before beliefs in it are checked against it
-        self.explored_settle_s = 3.0
+        #: simulated seconds after a room becomes explored before beliefs in it are checked against it (the
+        #: look-around that made it explored may not have reached the entity's spot yet)
+        self.explored_settle_s = 6.0
         #: KGM-2 track id -> the instance discovered for it (see :meth:`instance_of`)
         self.discovered: dict[int, str] = {}
         #: least hits of an anonymous track before it becomes an instance
