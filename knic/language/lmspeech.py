@@ -127,6 +127,7 @@ class NgramRecognizer:
         known = {line.split(maxsplit=1)[0].split("(")[0] for line in lines}
         self.unknown_words = sorted(w for w in words if w not in known)
         arpa = build_model(vocabulary, exclude=frozenset(self.unknown_words))
+        lines = _dictionary_lines(source, words | _model_words(arpa))  # the templates' own words too
         with tempfile.TemporaryDirectory(prefix="knic-lm-") as tmp:
             # only the model's words in the dictionary: with the wheel's whole dictionary (134k words)
             # pocketsphinx took about 30 s to add the model, with these well under one
@@ -219,3 +220,18 @@ def _dictionary_lines(source: Path, words: set[str]) -> list[str]:
         for line in text.splitlines()
         if line.strip() and line.split(maxsplit=1)[0].split("(")[0] in words
     ]
+
+
+def _model_words(arpa: str) -> set[str]:
+    """The words of an ARPA model's 1-grams."""
+    found: set[str] = set()
+    inside = False
+    for line in arpa.splitlines():
+        if line.startswith("\\1-grams:"):
+            inside = True
+        elif line.startswith("\\"):
+            if inside:
+                break
+        elif inside and line.strip():
+            found.add(line.split()[1])
+    return found
