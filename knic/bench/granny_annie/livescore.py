@@ -70,7 +70,7 @@ class LiveScore:
     """Judges the episode's timeline so far and publishes the sheet (see the module docstring).
 
     Lifecycle: construct after the :class:`Recorder`, :meth:`attach` to the run's scheduler before the run
-    (it is stepped after the recorder's probes, at :data:`JUDGE_PERIOD_S`), :meth:`finish` with the
+    (it is stepped after the recorder's probes, every ``period_s``), :meth:`finish` with the
     referee's final score after it.
 
     Args:
@@ -79,6 +79,8 @@ class LiveScore:
         understood: the goals the robot has announced so far (None: none yet), asked at each judgement.
         path: the score file (:func:`score_path` of the journal); None keeps the sheet in memory only.
         spoken_name: how the robot says a symbol (the referee's ``spoken_name``).
+        period_s: simulated seconds between two judgements (the benchmark runner judges less often: each
+            judgement reads the whole timeline so far).
     """
 
     name = "bench.score"
@@ -90,7 +92,9 @@ class LiveScore:
         understood: Callable[[], tuple[str, ...] | None],
         path: Path | None,
         spoken_name: Callable[[str], str] | None = None,
+        period_s: float = JUDGE_PERIOD_S,
     ) -> None:
+        self.period_s = period_s
         self.recorder = recorder
         self.episode = episode
         self.understood = understood
@@ -101,13 +105,13 @@ class LiveScore:
         self._written: tuple[str, float] | None = None
 
     def attach(self, scheduler: Scheduler) -> None:
-        """Judge once per :data:`JUDGE_PERIOD_S` simulated seconds during the run."""
+        """Judge once per :attr:`period_s` simulated seconds during the run."""
         from knic.system.loop import Probe
 
         def step(now: float) -> None:
             self.judge(now)
 
-        scheduler.add(Probe(self.name, 1.0 / JUDGE_PERIOD_S, step))
+        scheduler.add(Probe(self.name, 1.0 / self.period_s, step))
 
     def judge(self, now: float) -> dict[str, Any] | None:
         """Judge the timeline up to ``now`` and publish the sheet; returns it (None before the first

@@ -20,6 +20,7 @@ import logging
 import time
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass
+from functools import cache
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -29,8 +30,12 @@ from knic.bench.granny_annie.flow import Dialogue
 if TYPE_CHECKING:
     from knic.bench.granny_annie.recording import Recorder
     from knic.system import KnicSystem
+    from worlds.model import World
 
 
+#: simulated seconds between two live judgements of a benchmark run (its score file for ``knic serve``); the
+#: final verdict does not depend on it, and each judgement reads the whole timeline so far
+LIVE_JUDGE_PERIOD_S = 5.0
 #: starts an episode in an assembled system (before it runs); returns what to ask after the run
 Starter = Callable[["KnicSystem", Episode, "Recorder"], Callable[[], Dialogue]]
 
@@ -78,6 +83,15 @@ def write_world_files(out: Path, episodes: list[Episode]) -> None:
         world_file(out, episode).write_text(yaml.safe_dump(document, sort_keys=False), encoding="utf-8")
 
 
+@cache
+def known_world(ref: str) -> World:
+    """The world as the robot knew it before any episode (name or file), loaded once per process: every
+    task of a worker shares it (a :class:`~worlds.model.World` is frozen)."""
+    from worlds.api import load_world
+
+    return load_world(ref)
+
+
 def run_task(task: Task, starter: Starter | None = None) -> dict[str, Any]:
     """Run one (episode, baseline) and return its result (JSON-able): the score sheet and run figures."""
     from core.errors import KnicError
@@ -118,7 +132,7 @@ def run_task(task: Task, starter: Starter | None = None) -> dict[str, Any]:
     error = None
     try:
         with KnicSystem(config) as system:
-            prepare(system, task.baseline, known=load_world(episode.world))
+            prepare(system, task.baseline, known=known_world(episode.world))
             recorder = Recorder(
                 system.sim, system.sim, system.kb, system.pipeline.bus, damage.contact_window_s
             )
@@ -127,7 +141,9 @@ def run_task(task: Task, starter: Starter | None = None) -> dict[str, Any]:
             took = (starter or start_with_task_flow)(system, episode, recorder)
             from actions.erl.devices import spoken
 
-            live = LiveScore(recorder, episode, lambda: took().understood, None, spoken)
+            live = LiveScore(
+                recorder, episode, lambda: took().understood, None, spoken, period_s=LIVE_JUDGE_PERIOD_S
+            )
             if journal is not None:  # the running score beside the journal, for knic serve --journal
                 live.path = score_path(journal)
                 live.attach(system.scheduler)
