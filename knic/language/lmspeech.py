@@ -4,6 +4,8 @@ The grammar decoder (:class:`knic.language.speech.Recognizer`) only hears senten
 recogniser searches a back-off trigram model (:mod:`knic.language.ngram`) of sentences sampled from the same
 templates with the world's names (:mod:`knic.language.sampling`), so word orders and combinations the
 templates never produced stay reachable; the reader (:mod:`knic.language.reader`) then understands the words.
+When the best hypothesis is no command the reader reads, the first of the :data:`NBEST` best hypotheses that
+it reads is taken instead (the recogniser snaps to what the text side understands).
 
 Out-of-domain speech: an n-gram search also forces any audio onto some word sequence of the model. Each
 utterance is therefore decoded a second time with pocketsphinx's unconstrained phone loop (the wheel's
