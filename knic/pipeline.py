@@ -36,7 +36,8 @@ from knic.kgm2.cognition import CognitiveLayer, TrackingConfig
 from knic.kgm2.roles import ROLES_FILE, Role, load_role
 from knic.kgm3.fusion import Fusion
 from knic.kgm3.fusion import install as install_fusion
-from knic.kgm3.places import ObjectPlaceKP, PersonPlaceKP, RobotAtKP
+from knic.kgm3.people import PersonPlaceKP
+from knic.kgm3.places import ObjectPlaceKP, RobotAtKP
 from knic.kgm3.relations import DeviceStateKP, PersonNearKP, SoundAtKP
 from knic.kgm3.search import CandidatesKP, ExploredKP, priors_from_world
 from knic.scheduler import Component

@@ -16,7 +16,8 @@ from knic.kgm1.sources import FrameView
 from knic.kgm2.cognition import CognitiveLayer
 from knic.kgm2.roles import load_role
 from knic.kgm2.tracking import Tracker
-from knic.kgm3.places import ObjectPlaceKP, PersonPlaceKP
+from knic.kgm3.people import PersonPlaceKP
+from knic.kgm3.places import ObjectPlaceKP
 from knic.kgm3.search import CandidatesKP, ExploredKP
 from knic.spatial import LocationModel
 from knic.units import LLKU, Kind, Scan

@@ -7,7 +7,8 @@ from dataclasses import replace
 import pytest
 
 from knic.bus import Bus
-from knic.kgm3.places import ObjectPlaceKP, PersonPlaceKP, RobotAtKP
+from knic.kgm3.people import PersonPlaceKP
+from knic.kgm3.places import ObjectPlaceKP, RobotAtKP
 from knic.spatial import LocationModel
 from knic.units import Kind
 from knowledge_base import BeliefStatus, Fact, KnowledgeBase
@@ -246,11 +247,11 @@ def test_a_person_met_for_the_first_time_becomes_a_visitor(
     assert set(paper_kb.instances("person")) == before and not kp.discovered
     # a stranger in the kitchen, seen well four times: not yet; the fifth view makes them visitor_1
     for i in range(4):
-        stranger(905, KITCHEN[:2] + (1.0,), 10.0 + 0.2 * i, i + 1)
+        stranger(905, (KITCHEN[0], KITCHEN[1], 1.0), 10.0 + 0.2 * i, i + 1)
         kp.step(10.0 + 0.2 * i)
     assert not kp.discovered
     for i in range(4, 7):
-        stranger(905, KITCHEN[:2] + (1.0,), 10.0 + 0.2 * i, i + 1)
+        stranger(905, (KITCHEN[0], KITCHEN[1], 1.0), 10.0 + 0.2 * i, i + 1)
         kp.step(10.0 + 0.2 * i)
     assert kp.discovered == {905: "visitor_1"}
     assert set(paper_kb.instances("person")) - before == {"visitor_1"}
@@ -259,7 +260,7 @@ def test_a_person_met_for_the_first_time_becomes_a_visitor(
     assert prov is not None and prov.source == "kp'.person_at"
     # a second stranger is a second visitor
     for i in range(7):
-        stranger(906, BEDROOM[:2] + (1.0,), 20.0 + 0.2 * i, i + 1)
+        stranger(906, (BEDROOM[0], BEDROOM[1], 1.0), 20.0 + 0.2 * i, i + 1)
         kp.step(20.0 + 0.2 * i)
     assert kp.discovered[906] == "visitor_2"
 

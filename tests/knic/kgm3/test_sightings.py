@@ -3,7 +3,8 @@
 from __future__ import annotations
 
 from knic.bus import Bus
-from knic.kgm3.places import ObjectPlaceKP, PersonPlaceKP
+from knic.kgm3.people import PersonPlaceKP
+from knic.kgm3.places import ObjectPlaceKP
 from knic.kgm3.sightings import REFUTED_SOURCE, BusPerception
 from knic.spatial import LocationModel
 from knic.units import Kind

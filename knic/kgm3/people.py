@@ -1,0 +1,172 @@
+"""KP' for where people are: ``person_at`` (+ ``found``), retracted on evidence only, aged in time.
+
+The shared place logic (sightings confirmed into a room, retraction by a lost track or an explored room) is
+:class:`knic.kgm3.places._EntityPlaceKP`'s. People add: belief in time (a person not seen for their time to
+live is kept ASSUMED at half confidence; the time to live is shorter when last seen walking and longer after
+a long stay in the room), a person seen leaving, and visitors: people met for the first time become
+``visitor_<n>`` instances.
+"""
+
+from __future__ import annotations
+
+import math
+from collections import deque
+
+from knic.bus import Bus
+from knic.kgm3.places import _EntityPlaceKP
+from knic.spatial import DEFAULT_RESOLUTION
+from knic.units import CKU
+from knowledge_base import BeliefStatus, Fact, KnowledgeBase
+
+
+class PersonPlaceKP(_EntityPlaceKP):
+    """``(person_at ?p ?room)`` and ``(found ?p)`` for recognised people and visitors, retracted only on
+    evidence.
+
+    Args:
+        ttl_s: simulated seconds after the last sighting at which the person_at this KP' wrote ages (written
+            ASSUMED at half confidence; the role's ``person_ttl_s``), for a person who stood still when last
+            seen. The fact is never retracted for age: only a view of the place without them (KGM-2's lost
+            track, an explored room) retracts it.
+        moving_ttl_s: the same for a person who was walking when last seen (faster than ``walking_speed``
+            m/s over the last ``speed_window_s`` seconds of sightings): they are likely elsewhere soon.
+        dwell_share: a person standing still who has been seen in the same room for a while is likely to stay:
+            their time to live is at least this share of how long they have been seen there (from the first
+            sighting that put them in the room to the last), at most ``max_ttl_s``.
+        visitor_views: face views without recognition after which an unnamed person becomes a visitor
+            instance (see :meth:`instance_of`).
+        resolution: metres, of the CKUs' voxel keys (KGM-2's tracking resolution).
+    """
+
+    pddl_type = "person"
+    place_predicate = "person_at"
+
+    def __init__(
+        self,
+        bus: Bus,
+        kb: KnowledgeBase,
+        *,
+        ttl_s: float = 30.0,
+        needed: int = 2,
+        min_confidence: float = 0.5,
+        explored_grace_s: float = 15.0,
+        moving_ttl_s: float = 10.0,
+        dwell_share: float = 0.5,
+        max_ttl_s: float = 120.0,
+        visitor_views: int = 5,
+        walking_speed: float = 0.3,
+        speed_window_s: float = 1.5,
+        frequency: float = 5.0,
+        name: str = "kp'.person_at",
+        resolution: float = DEFAULT_RESOLUTION,
+    ) -> None:
+        super().__init__(
+            name, frequency, bus, kb, "cognition.person", needed, min_confidence, explored_grace_s, resolution
+        )
+        self.ttl_s = ttl_s
+        self.anonymous_classes = frozenset({"person"})
+        self.visitor_prefix = "visitor"
+        self.visitor_views = visitor_views
+        self.visitor_clearance = 1.0
+        self.visitor_window_s = 3.0
+        self.moving_ttl_s = min(moving_ttl_s, ttl_s)
+        self.dwell_share = dwell_share
+        self.max_ttl_s = max(max_ttl_s, ttl_s)
+        #: person -> (room, simulated time of the first sighting that put them there)
+        self._in_room_since: dict[str, tuple[str, float]] = {}
+        self.walking_speed = walking_speed
+        self.speed_window_s = speed_window_s
+        self._trail: dict[str, deque[tuple[float, tuple[float, float, float]]]] = {}
+
+    def instance_of(self, cku: CKU) -> str | None:
+        """As for every entity, and: a person met for the first time becomes a visitor.
+
+        An unnamed person's track becomes the instance ``visitor_<n>`` once the face recogniser saw them well
+        ``visitor_views`` times without knowing them (KGM-2's ``face_views``) and no known person was seen
+        within ``visitor_clearance`` metres in the last ``visitor_window_s`` seconds (a known person whose
+        face was missed in a few frames has a named track nearby). The track keeps the instance from then on.
+        """
+        anonymous = bool(cku.track_id) and cku.symbol == f"{cku.cls}_{cku.track_id}"
+        if not anonymous:
+            return super().instance_of(cku)
+        found = self.discovered.get(cku.track_id)
+        if found is not None or cku.attributes.get("lost"):
+            return found
+        if int(cku.attributes.get("face_views", 0)) < self.visitor_views:
+            return None
+        if self.known_near(cku.position, cku.stamp):
+            return None
+        return self.discover(self.visitor_prefix, cku)
+
+    def known_near(self, position: tuple[float, float, float], stamp: float) -> bool:
+        """Whether a known (not discovered) person was seen near ``position`` lately."""
+        visitors = set(self.discovered.values())
+        for symbol, seen in self.last_seen.items():
+            if symbol in visitors or seen < stamp - self.visitor_window_s:
+                continue
+            where = self.last_position.get(symbol)
+            if where is not None and math.dist(where[:2], position[:2]) < self.visitor_clearance:
+                return True
+        return False
+
+    def seen(self, cku: CKU) -> None:
+        """One sighting: remember the recent trail (for the walking test), then as for every entity."""
+        trail = self._trail.setdefault(cku.symbol, deque())
+        trail.append((cku.stamp, cku.position))
+        while len(trail) > 2 and cku.stamp - trail[1][0] >= self.speed_window_s:
+            trail.popleft()
+        super().seen(cku)
+
+    def walking(self, symbol: str) -> bool:
+        """Whether the person moved faster than ``walking_speed`` over their last sightings."""
+        trail = self._trail.get(symbol)
+        if not trail or len(trail) < 2:
+            return False
+        (t0, p0), (t1, p1) = trail[0], trail[-1]
+        if t1 - t0 < 0.5 * self.speed_window_s:
+            return False
+        return math.dist(p0[:2], p1[:2]) / (t1 - t0) > self.walking_speed
+
+    def left_belief(self, symbol: str, believed: str, room: str | None) -> bool:
+        """A person whose track was last seen outside the believed room, after the belief was made, and is
+        not there either, was seen leaving: where they are is unknown (the belief is retracted)."""
+        prov = self.kb.why(Fact(self.place_predicate, (symbol, believed)))
+        return prov is not None and room != believed and self.last_seen.get(symbol, -math.inf) >= prov.since
+
+    def write_place(
+        self, symbol: str, room: str, furniture: str | None, at: float, support: tuple[str, ...], conf: float
+    ) -> None:
+        """As for every entity; a new room starts the person's dwell there."""
+        held = self._in_room_since.get(symbol)
+        if held is None or held[0] != room:
+            self._in_room_since[symbol] = (room, at)
+        super().write_place(symbol, room, furniture, at, support, conf)
+
+    def forget_place(self, symbol: str, at: float, support: tuple[str, ...]) -> None:
+        """As for every entity; the dwell ends."""
+        self._in_room_since.pop(symbol, None)
+        super().forget_place(symbol, at, support)
+
+    def ttl_of(self, symbol: str) -> float:
+        """Seconds the person's place lives after their last sighting: ``moving_ttl_s`` when last seen
+        walking, else ``ttl_s`` or, when longer, ``dwell_share`` of their dwell in the room (capped)."""
+        if self.walking(symbol):
+            return self.moving_ttl_s
+        held = self._in_room_since.get(symbol)
+        if held is None:
+            return self.ttl_s
+        dwell = self.last_seen.get(symbol, held[1]) - held[1]
+        return min(self.max_ttl_s, max(self.ttl_s, self.dwell_share * dwell))
+
+    def step(self, now: float) -> None:
+        """Process sightings and explored rooms, then age the beliefs of people unseen for their TTL."""
+        super().step(now)
+        for fact in self.kb.facts("person_at"):
+            symbol = fact.args[0]
+            prov = self.kb.why(fact)
+            if prov is None or prov.source != self.name or prov.status is not BeliefStatus.OBSERVED:
+                continue
+            if now - self.last_seen.get(symbol, prov.since) > self.ttl_of(symbol):
+                self.assert_fact(
+                    "person_at", *fact.args, at=now, confidence=0.5 * prov.confidence, assumed=True
+                )
