@@ -1,5 +1,5 @@
-"""KP' for where things are: ``robot_at``, ``object_at`` / ``object_on`` (+ ``found``), ``person_at`` (+
-``found``).
+"""KP' for where things are: ``robot_at``, ``object_at`` / ``object_on`` (+ ``found``), and the place logic
+``person_at`` shares (its KP', :class:`knic.kgm3.people.PersonPlaceKP`, adds belief in time and visitors).
 
 Each consumes one CKU stream and intersects the entity's occupied voxel keys with the room prisms (the
 locations' octomaps) and the furniture support prisms (seed 004, III.C: "check the spatial intersection of
