@@ -14,7 +14,9 @@ and the robot's voice:
 4. ``confirm``: her spoken yes adds the goals in one batch while the robot runs; a no (or nothing understood)
    makes the robot ask again, at most ``max_asks`` times. Her requests are decoded with the n-gram model of
    :mod:`knic.language.lmspeech` (it hears phrasings the grammar does not; on the development set
-   ``tests/fixtures/speech_people/dev`` frame+args 0.74 against 0.50 for the grammar decoder);
+   ``tests/fixtures/speech_people/dev`` frame+args 0.74 against 0.50 for the grammar decoder); after a no
+   (or nothing understood) her next request goes to the other decoder, grammar and n-gram in turn (the
+   same decoder would hear her same words the same way again);
 5. ``work``: the dispatcher carries out the goals (with whatever else is going on); when they all hold, the
    robot tells Annie it is done; when the rest stayed dropped with the dispatcher idle for ``give_up_s``
    (a retry on new knowledge restarts that wait), it tells her what it could not do, and that is final: the
@@ -126,6 +128,8 @@ class GrannyAnnieFlow(TaskFlow):
         self.outcome = ""  # how the request ended: "done", "partly", "not understood"
         self._transient: set[Fact] = set()
         self._switched = False
+        self._ngram: Callable[[str], str] | None = None  # the n-gram decoder, once built
+        self._grammar: Callable[[str], str] | None = None  # the one before (None: the intake default)
         self._custom_recogniser = recognise_command is not None
         self._bells: set[float] = set()
         self._now = 0.0
@@ -221,7 +225,22 @@ class GrannyAnnieFlow(TaskFlow):
             self.event("done", now, reason=f"gave up asking: {why}")
             self._enter(Phase.DONE, now)
             return
+        self._other_decoder(now)
         self._ask(now)
+
+    def _other_decoder(self, now: float) -> None:
+        """After a misunderstanding (answered no, nothing recognised): her next request goes to the other
+        decoder (the n-gram model and the grammar decoder hear different phrasings; the same decoder would
+        hear her same words the same way again)."""
+        if self._custom_recogniser or self._ngram is None:
+            return
+        if self.intake.recognise_command is self._ngram:
+            self.intake.recognise_command = self._grammar  # None: the intake builds its grammar decoder
+            self.event("decoder", now, reason="the next request is decoded with the grammar decoder")
+        else:
+            self._grammar = self.intake.recognise_command
+            self.intake.recognise_command = self._ngram
+            self.event("decoder", now, reason="the next request is decoded with the n-gram model")
 
     def _second_decoder(self, now: float) -> None:
         """From the first request on: decode her requests with the n-gram recogniser (built once; a failure
@@ -244,6 +263,7 @@ class GrannyAnnieFlow(TaskFlow):
                 raise LanguageError(f"{wav}: no command recognised by the n-gram decoder")
             return str(transcript.text)
 
+        self._grammar, self._ngram = self.intake.recognise_command, recognise
         self.intake.recognise_command = recognise
 
     def _check_work(self, now: float) -> None:

@@ -10,6 +10,8 @@ import math
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, cast
 
+import pytest
+
 from knic.system.granny_annie import GrannyAnnieFlow, Phase
 from knowledge_base import Fact, KnowledgeBase
 from planner.dispatch import Dispatcher
@@ -115,3 +117,41 @@ def test_a_goal_that_holds_is_reported_done_not_given_up() -> None:
     assert flow.phase == Phase.DONE and flow.outcome == "done"
     done = [e for e in system.trace.of_kind(EventKind.TASK) if e.action == "done"]
     assert len(done) == 1 and "given_up" not in done[0].data
+
+
+@dataclass
+class Heard:
+    text: str
+    in_grammar: bool = True
+
+
+class FakeNgram:
+    """Stands in for the n-gram decoder: hears every recording as ``glass``."""
+
+    def __init__(self, vocabulary: object) -> None:
+        self.vocabulary = vocabulary
+
+    def recognize(self, wav: str) -> Heard:
+        return Heard("bring me the glass")
+
+
+def test_after_a_no_her_next_request_goes_to_the_other_decoder(monkeypatch: pytest.MonkeyPatch) -> None:
+    import knic.language.lmspeech
+
+    monkeypatch.setattr(knic.language.lmspeech, "NgramRecognizer", FakeNgram)
+    _, system, flow = _working_flow()
+    flow.phase = Phase.WAIT_CALL
+    grammar = flow.intake.recognise_command  # the intake's default (built on first use)
+    flow._ask(0.0)
+    ngram = flow.intake.recognise_command
+    assert ngram is not grammar and ngram is not None and ngram("a.wav") == "bring me the glass"
+    flow._ask_again(1.0, "answered no")  # the n-gram decoder's reading was refused: the grammar decoder next
+    assert flow.intake.recognise_command is grammar
+    flow._ask_again(2.0, "answered no")  # refused again: back to the n-gram decoder
+    assert flow.intake.recognise_command is ngram
+    switches = [e.reason for e in system.trace.of_kind(EventKind.TASK) if e.action == "decoder"]
+    assert switches == [
+        "the next request is decoded with the grammar decoder",
+        "the next request is decoded with the n-gram model",
+    ]
+    assert flow.asks == 3 and flow.phase == Phase.LISTEN
