@@ -335,6 +335,10 @@ class CandidatesKP(KPPrime):
                 with self.kb.batch():
                     for fact in stale:
                         self.retract_fact("searched", *fact.args, at=now)
+            if self.kb.holds("found", entity) and not self.located(entity):
+                # found means "its place is known": with the place gone (the belief aged out, an action
+                # moved it out of sight) a search for it must be possible again
+                self.retract_fact("found", entity, at=now)
             wanted = dict(self.wanted(entity))
             on = set(self.wanted_on(entity))
             current = {f.args[1] for f in self.kb.facts("possibly_at", entity)}

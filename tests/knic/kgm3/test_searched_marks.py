@@ -99,3 +99,29 @@ def test_old_marks_reopen_their_room_once_after_the_rooms_never_searched_and_the
     home_kb.add_fact("searched", "candle", last, source="dispatcher", status=EFFECT)
     cands.step(5000.0)
     assert candidates(home_kb, "candle") == set() and searched(home_kb, "candle") == set(rooms)
+
+
+def test_an_item_whose_place_is_no_longer_known_is_not_found_and_can_be_searched_for(
+    home_kb: KnowledgeBase, home_world: World, clock: list[float]
+) -> None:
+    cands = CandidatesKP(Bus(), home_kb, priors_from_world(home_world), list(home_world.rooms))
+    home_kb.add_goal("has", "annie", "glasses")
+    clock[0] = 1.0
+    with home_kb.batch():
+        home_kb.add_fact("object_at", "glasses", "kitchen", source="kp'.object_at")
+        home_kb.add_fact("found", "glasses", source="kp'.object_at")
+    cands.step(1.0)
+    assert home_kb.holds("found", "glasses") and candidates(home_kb, "glasses") == set()
+    # the belief goes by a path that leaves found behind (an effect, an aged belief): found must follow it
+    clock[0] = 5.0
+    home_kb.remove_fact("object_at", "glasses", "kitchen", source="kp'.object_at")
+    cands.step(5.0)
+    assert not home_kb.holds("found", "glasses")
+    assert candidates(home_kb, "glasses")
+    # held by the robot: located, found stays
+    clock[0] = 8.0
+    with home_kb.batch():
+        home_kb.add_fact("holding", "r2d2", "glasses", source="dispatcher", status=EFFECT)
+        home_kb.add_fact("found", "glasses", source="dispatcher", status=EFFECT)
+    cands.step(8.0)
+    assert home_kb.holds("found", "glasses")
