@@ -25,6 +25,7 @@ Errors are :class:`~core.errors.LanguageError` with one line for the user; an am
 
 from __future__ import annotations
 
+import copy
 from collections.abc import Sequence
 from dataclasses import dataclass, field
 
@@ -219,7 +220,8 @@ class Reader:
         first_error: LanguageError | None = None
         for kind in kinds:
             try:
-                found = _INTERPRETERS[kind](self, clause, previous, groups)
+                # each reading starts from the clause as heard: an attempt marks arguments consumed
+                found = _INTERPRETERS[kind](self, copy.deepcopy(clause), previous, groups)
             except AmbiguityError:
                 raise
             except LanguageError as exc:

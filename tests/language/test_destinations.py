@@ -62,3 +62,21 @@ def test_without_a_later_destination_it_is_for_the_speaker(
 ) -> None:
     result = understand(text, other, speaker="maria")
     assert [str(g) for g in result.goals] == goals, result.reason
+
+
+@pytest.mark.parametrize(
+    ("text", "goals"),
+    [
+        ("bring oscar to the garage", ["(person_at oscar garage)"]),
+        ("please carry the keys to the study", ["(object_at keys study)"]),
+        ("get oscar to the lounge", ["(person_at oscar lounge)"]),
+    ],
+)
+def test_a_carry_verb_with_a_person_reads_as_accompanying(
+    other: Vocabulary, text: str, goals: list[str]
+) -> None:
+    """A verb with several readings tries each on the clause as heard (the first, failed, reading must not
+    leave its marks on the arguments the next one reads)."""
+    result = understand(text, other, speaker="maria")
+    assert result.accepted, result.reason
+    assert [str(g) for g in result.goals] == goals
