@@ -18,20 +18,45 @@ Both are read only from the oracle (true pose, counters, true facts), never from
 from __future__ import annotations
 
 from collections import deque
-from collections.abc import Iterable
+from collections.abc import Iterable, Sequence
 from dataclasses import dataclass, replace
 from functools import cache
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, Protocol
 
 from core.errors import KnicError
 
 if TYPE_CHECKING:
-    from knic.bench.granny_annie.referee import Timeline
     from worlds.model import World
     from worlds.oracle import Oracle
 
 DEFAULT_DAMAGE = Path(__file__).with_name("damage.yaml")
+
+
+class SampleView(Protocol):
+    """One ground-truth sample as the damage model reads it (:class:`~.referee.Sample` fits)."""
+
+    @property
+    def t(self) -> float: ...
+
+    @property
+    def facts(self) -> frozenset[tuple[str, ...]]: ...
+
+
+class TimelineView(Protocol):
+    """What the damage model reads of a run (:class:`~.referee.Timeline` fits; no import: the referee
+    imports this module)."""
+
+    @property
+    def samples(self) -> Sequence[SampleView]: ...
+
+    @property
+    def drops(self) -> Sequence[float]: ...
+
+    @property
+    def impacts(self) -> Sequence[tuple[float, float]]: ...
+
+
 _FIELDS = {"hard_contact_m_s", "contact_window_s", "fragile"}
 
 
@@ -136,7 +161,7 @@ class ImpactProbe:
         return max(0.0, c0 - c1) / (t1 - t0) if t1 > t0 else 0.0
 
 
-def damage_events(timeline: Timeline, model: DamageModel) -> list[tuple[float, str]]:
+def damage_events(timeline: TimelineView, model: DamageModel) -> list[tuple[float, str]]:
     """The testbed damage of one run, ``(time, what)`` in time order: hard contacts and broken items."""
     out = [
         (t, f"drove into furniture or a wall at {speed:.2f} m/s")
@@ -149,7 +174,7 @@ def damage_events(timeline: Timeline, model: DamageModel) -> list[tuple[float, s
     return sorted(out)
 
 
-def dropped_items(timeline: Timeline) -> list[tuple[float, str]]:
+def dropped_items(timeline: TimelineView) -> list[tuple[float, str]]:
     """``(time, item)`` of each drop: the item held in the last sample before it and not held at the drop's
     sample (``"?"`` when the samples do not tell)."""
     out = []
