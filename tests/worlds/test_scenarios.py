@@ -54,6 +54,25 @@ def test_person_moves_an_object(make_sim: Callable[..., Simulation]) -> None:
     assert {("object_on", "glasses", "dining_table"), ("object_at", "glasses", "dining_room")} <= facts
 
 
+def test_a_person_who_cannot_reach_the_furniture_meant_puts_the_object_down_nearby(
+    make_sim: Callable[..., Simulation],
+) -> None:
+    """The cellar's crate cannot be reached (no door): olga does not carry the book for good, she puts it on
+    furniture she can reach."""
+    from worlds.api import load_world
+
+    flat = load_world(Path(__file__).resolve().parents[2] / "worlds" / "test_flat" / "test_flat.yaml")
+    move = {"at": 1, "type": "move_object", "person": "olga", "item": "book", "to": "crate"}
+    sim = make_sim(flat, scenario=scenario_from_dict({"name": "unreachable", "events": [move]}, flat))
+    start = sim.true_pose("book").position
+    sim.step(60.0)
+    facts = sim.ground_truth_facts()
+    assert sim.true_pose("book").position != start  # taken and put down again
+    assert ("has", "olga", "book") not in facts
+    on = {f[2] for f in facts if f[0] == "object_on" and f[1] == "book"}
+    assert on and "crate" not in on
+
+
 def test_annie_on_the_sofa_speaks(make_sim: Callable[..., Simulation]) -> None:
     sim = make_sim("erl_home", scenario="annie_on_sofa")
     assert ("person_at", "annie", "living_room") in sim.ground_truth_facts()

@@ -27,6 +27,7 @@ from worlds.sim.navigation import GridMap
 WALK_SPEED = 0.8  # m/s
 FOLLOW_DISTANCE = 1.0  # metres behind the robot when escorted
 MAKE_WAY_WAIT = 8.0  # seconds a person who made way for the robot waits aside
+PUT_NEARBY_CANDIDATES = 4  # nearest pieces of furniture tried when the meant one is out of reach
 
 
 class PeopleHooks(Protocol):
@@ -166,7 +167,8 @@ class PeopleController:
             self.hooks.person_take(p.name, arg)
             p.tasks.popleft()
         elif kind == "put":
-            self.hooks.person_put(p.name, arg)
+            if not self.hooks.person_put(p.name, arg):
+                self._put_nearby(p)
             p.tasks.popleft()
         elif kind == "sit":
             f = self.world.furniture[arg]
@@ -197,6 +199,18 @@ class PeopleController:
                 return
             if self._walk_towards(p, p.path[p.path_index], dt, robot):
                 p.path_index += 1
+
+    def _put_nearby(self, p: PersonState) -> None:
+        """The furniture meant for what ``p`` carries is out of their reach (no way to it): they put it on the
+        nearest furniture they can reach instead, as a person would, rather than carrying it for good."""
+        if p.carrying is None:
+            return
+        near = sorted(
+            self.world.furniture.values(), key=lambda f: math.hypot(f.position[0] - p.x, f.position[1] - p.y)
+        )
+        for f in near[:PUT_NEARBY_CANDIDATES]:
+            if self.hooks.person_put(p.name, f.name):
+                return
 
     def follow(self, name: str | None) -> None:
         """``name`` follows the robot from now on (their queued tasks dropped); nobody else does. None: nobody
