@@ -34,11 +34,13 @@ import math
 import sqlite3
 from collections.abc import Iterable, Sequence
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from core.errors import JournalError
 from knowledge_base.model import BeliefStatus, Change, ChangeKind, Fact, Provenance, State, apply_change
-from knowledge_base.timeline import Timeline
+
+if TYPE_CHECKING:  # numpy (the timeline's) is imported only when a journal is opened
+    from knowledge_base.timeline import Timeline
 
 __all__ = ["CorruptRow", "Journal", "SqliteJournal", "recover"]
 
@@ -68,6 +70,8 @@ class Journal:
         self._monotone = True
         self._memory_events: list[Change] = []
         #: every record's validity interval (None until a SQLite journal with history first needs it)
+        from knowledge_base.timeline import Timeline
+
         self._timeline: Timeline | None = Timeline(self._base)
         self.meta: dict[str, str] = {}
 
@@ -139,6 +143,8 @@ class Journal:
         """The timeline of the whole history, brought up to the last event (built on first use)."""
         timeline = self._timeline
         if timeline is None:
+            from knowledge_base.timeline import Timeline
+
             timeline = self._timeline = Timeline(self._base)
         if timeline.seq < self.last_seq:
             for change in self.changes(timeline.seq, self.last_seq):
