@@ -371,7 +371,15 @@ class Dispatcher:
             self._busy_until = now + thought
         self.monitor.adopt((), goals)
         self._step_failures = 0
-        if result.status in (PlanStatus.TIMEOUT, PlanStatus.ERROR):
+        if result.status == PlanStatus.TIMEOUT:
+            # the same problem would time out again: the goals wait for news about them (as unreachable ones
+            # do) instead of a planner call per timeout until the run's limit
+            for goal in goals:
+                if goal not in task.facts:
+                    self.book.drop(goal, f"no plan within the planning timeout ({result.message})")
+            self.monitor.adopt((), self.book.active())
+            return
+        if result.status == PlanStatus.ERROR:
             self._charge_replan = True  # a planner that keeps failing counts against the goals' replan budget
             self._raise(Pending.REPLAN, f"planning {result.status.value}: {result.message}")
             return

@@ -161,11 +161,25 @@ def test_timeouts_are_bounded_and_the_goal_is_dropped_eventually() -> None:
     assert kb.holds("light_off", "hallway_light")
 
 
-def test_a_planner_that_keeps_timing_out_charges_the_goal_until_it_is_dropped() -> None:
+def test_a_planning_timeout_drops_the_goal_until_news_about_it() -> None:
     clock = SimClock(dt=1.0)
     kb = erl_kb(clock, goals=["(light_on hallway_light)"])
     timed_out = PlanResult(PlanStatus.TIMEOUT, engine="stub", message="no answer within 30 s")
     stub = StubPlanner([timed_out] * 10)
+    d = dispatcher(kb, World(), planner=stub, policy=RecoveryPolicy(max_replans_per_goal=2))
+    report = d.run(max_ticks=200, on_tick=clock.tick)
+    assert len(stub.tasks) == 1  # the same problem is not planned again every timeout
+    assert report.dropped == {
+        "(light_on hallway_light)": "no plan within the planning timeout (no answer within 30 s)"
+    }
+    assert report.state == DispatcherState.IDLE and not kb.holds("light_on", "hallway_light")
+
+
+def test_a_planner_that_keeps_failing_charges_the_goal_until_it_is_dropped() -> None:
+    clock = SimClock(dt=1.0)
+    kb = erl_kb(clock, goals=["(light_on hallway_light)"])
+    failed = PlanResult(PlanStatus.ERROR, engine="stub", message="the engine died")
+    stub = StubPlanner([failed] * 10)
     d = dispatcher(kb, World(), planner=stub, policy=RecoveryPolicy(max_replans_per_goal=2))
     report = d.run(max_ticks=200, on_tick=clock.tick)
     assert len(stub.tasks) == 3  # first call + two replans, then the goal is given up instead of looping
