@@ -25,6 +25,7 @@ from core.errors import KnicError, KnowledgeBaseError, LanguageError
 from knowledge_base import Fact, KnowledgeBase
 
 if TYPE_CHECKING:
+    from knic.language.speech import AnswerRecognizer
     from knic.language.understanding import Understanding
     from knic.language.vocabulary import Vocabulary
 
@@ -117,6 +118,8 @@ class GoalIntake:
         max_asks: how often a question is asked in all before the command is declined.
         recognise_command: WAV path -> transcript of a command (default: pocketsphinx with the grammar).
         recognise_answer: WAV path -> transcript of a yes/no answer (default: pocketsphinx answer grammar).
+        recognise_plain_answer: the same after the robot asked "Please answer yes or no" (default: the answer
+            grammar without its non-answer path; with only ``recognise_answer`` given, that one).
         on_added: called with each submission whose goals were added (after the batch committed).
     """
 
@@ -127,9 +130,11 @@ class GoalIntake:
     max_asks: int = 2
     recognise_command: Recognise | None = None
     recognise_answer: Recognise | None = None
+    recognise_plain_answer: Recognise | None = None
     on_added: Callable[[Submission], None] | None = None
     history: list[IntakeRecord] = field(default_factory=list)
     _pending: _Pending | None = None
+    _model: AnswerRecognizer | None = None
 
     # ------------------------------------------------------------------ queries
 
@@ -167,7 +172,10 @@ class GoalIntake:
     def submit_audio(self, wav: str | Path, *, speaker: str = "annie", source: str = "speech") -> IntakeReply:
         """Recognise a spoken command (or, while a question is open, a spoken answer) and take it."""
         if self._pending is not None:
-            return self.hear(self._answer_recogniser()(str(wav)))
+            # once asked to answer yes or no, the speaker is heard as saying one of the answers
+            plain = self._pending.asks > 0
+            recognise = self._plain_answer_recogniser() if plain else self._answer_recogniser()
+            return self.hear(recognise(str(wav)))
         try:
             text = self._command_recogniser()(str(wav))
         except LanguageError as exc:
@@ -276,11 +284,24 @@ class GoalIntake:
 
     def _answer_recogniser(self) -> Recognise:
         if self.recognise_answer is None:
-            from knic.language.speech import AnswerRecognizer, load_audio
-
-            recognizer = AnswerRecognizer()
-            self.recognise_answer = lambda wav: str(recognizer.recognize(load_audio(wav)))
+            recognizer = self._answer_model()
+            self.recognise_answer = lambda wav: str(recognizer.recognize(wav))
         return self.recognise_answer
+
+    def _plain_answer_recogniser(self) -> Recognise:
+        if self.recognise_plain_answer is None:
+            if self.recognise_answer is not None and self._model is None:
+                return self.recognise_answer  # a recogniser of the caller's: it hears every answer
+            recognizer = self._answer_model()
+            self.recognise_plain_answer = lambda wav: str(recognizer.recognize(wav, closed=True))
+        return self.recognise_plain_answer
+
+    def _answer_model(self) -> AnswerRecognizer:
+        if self._model is None:
+            from knic.language.speech import AnswerRecognizer
+
+            self._model = AnswerRecognizer()
+        return self._model
 
 
 def source_goals(understood: Understanding, kb: KnowledgeBase) -> list[Fact]:

@@ -76,6 +76,28 @@ def test_spoken_commands_go_through_the_same_door() -> None:
     assert (reply.outcome is Outcome.ADDED) == bool(gi.kb.goals())
 
 
+def test_after_please_answer_yes_or_no_the_spoken_reply_is_heard_as_an_answer() -> None:
+    """Once the robot asked for a plain yes or no, the reply is heard with the closed answer grammar (no
+    non-answer path); the goals are added on its yes."""
+    sure = SPEECH.parent / "speech_answers" / "answer_021.wav"  # "sure" (development answer set)
+    gi, said = intake(confirm=True)
+    gi.submit("switch on the bedroom lights")
+    assert gi.hear("hmm").outcome is Outcome.ASKED_AGAIN
+    assert said[-1] == "Please answer yes or no."
+    assert gi.submit_audio(sure).outcome is Outcome.ADDED
+    assert gi.recognise_plain_answer is not None and gi.recognise_answer is None  # heard closed
+    assert Fact("light_on", ("bedroom_left_light",)) in gi.kb.goals()
+
+
+def test_the_closed_answer_grammar_hears_speech_as_an_answer_the_open_one_refuses() -> None:
+    from knic.language.speech import AnswerRecognizer
+
+    recognizer = AnswerRecognizer()
+    chatter = SPEECH.parent / "speech_ood_dev" / "ood_dev_001.wav"  # "good morning how did you sleep"
+    assert recognizer.recognize(chatter) == ""
+    assert recognizer.recognize(chatter, closed=True) != ""
+
+
 @pytest.mark.parametrize("text", ["", "(object_at glasses", "object_at glasses bedroom)", "(a) junk"])
 def test_malformed_pddl_is_a_one_line_error(text: str) -> None:
     with pytest.raises(KnowledgeBaseError) as info:
