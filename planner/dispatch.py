@@ -383,6 +383,13 @@ class Dispatcher:
             self._charge_replan = True  # a planner that keeps failing counts against the goals' replan budget
             self._raise(Pending.REPLAN, f"planning {result.status.value}: {result.message}")
             return
+        retire = self.book.superseded(result.conflicts, task.facts)
+        for goal, older in retire:  # planned again at the next step, without the older goals
+            self.kb.remove_goal(older[0], *older[1:], source=SOURCE, at=now)
+            reason = f"superseded by {atom_str(goal)}"
+            self.trace.emit(TraceEvent(EventKind.GOAL_DROPPED, now, goal=atom_str(older), reason=reason))
+        if retire:
+            return
         why = {g: f"can never hold together with {atom_str(o)}" for g, o in result.conflicts}
         for goal in result.unreachable_goals:
             self.book.drop(

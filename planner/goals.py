@@ -119,6 +119,14 @@ class GoalBook:
         self._touched.discard(goal)
         self.trace.emit(TraceEvent(EventKind.GOAL_DROPPED, now, goal=atom_str(goal), reason=reason))
 
+    def superseded(
+        self, conflicts: Iterable[tuple[Atom, Atom]], facts: frozenset[Atom]
+    ) -> list[tuple[Atom, Atom]]:
+        """The (new goal, older goal) pairs where a new goal can never hold together with an older goal that
+        was already achieved and still holds ("the glasses to the living room", done; later "to the
+        bedroom"): the new wish replaces the old one, which should leave the goals."""
+        return [(g, o) for g, o in conflicts if o in self.achieved and o in facts and g not in facts]
+
     def count_replan(self, goals: list[Atom], facts: frozenset[Atom], bound: int) -> None:
         """Charge a replan to every open goal of ``goals``; drop those past ``bound`` replans."""
         for goal in goals:

@@ -490,3 +490,20 @@ def test_planning_time_passes_on_the_dispatcher_clock() -> None:
     again = dispatcher(erl_kb(SimClock(), goals=["(robot_at r2d2 kitchen)"]), World(), planning_time="model")
     again.run(max_ticks=300, on_tick=SimClock().tick)
     assert again.thinking_s == d.thinking_s
+
+
+def test_a_new_goal_replaces_an_achieved_older_goal_it_can_never_hold_together_with() -> None:
+    clock = SimClock(dt=1.0)
+    kb = erl_kb(clock, goals=["(light_on hallway_light)"])
+    d = dispatcher(kb, World())
+    d.run(max_ticks=200, on_tick=clock.tick)
+    assert kb.holds("light_on", "hallway_light")
+    kb.add_goal("light_off", "hallway_light")  # later: "switch it off again"
+    report = d.run(max_ticks=200, on_tick=clock.tick)
+    assert kb.holds("light_off", "hallway_light") and not kb.holds("light_on", "hallway_light")
+    assert [str(g) for g in kb.goals()] == ["(light_off hallway_light)"]
+    dropped = [e for e in d.trace.of_kind(EventKind.GOAL_DROPPED)]
+    assert [(e.goal, e.reason) for e in dropped] == [
+        ("(light_on hallway_light)", "superseded by (light_off hallway_light)")
+    ]
+    assert not report.dropped
