@@ -104,13 +104,9 @@ def parse_options(pairs: list[str]) -> dict[str, object]:
 
 def word_errors(reference: list[str], hypothesis: list[str]) -> int:
     """Word-level edit distance (substitutions, insertions, deletions)."""
-    previous = list(range(len(hypothesis) + 1))
-    for i, ref_word in enumerate(reference, start=1):
-        current = [i] + [0] * len(hypothesis)
-        for j, hyp_word in enumerate(hypothesis, start=1):
-            current[j] = min(previous[j] + 1, current[j - 1] + 1, previous[j - 1] + (ref_word != hyp_word))
-        previous = current
-    return previous[-1]
+    from knic.language.speech import edit_distance
+
+    return edit_distance(reference, hypothesis)
 
 
 def evaluate(

@@ -36,7 +36,7 @@ from __future__ import annotations
 import struct
 import tempfile
 import time
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 
@@ -404,7 +404,7 @@ class AnswerRecognizer:
             for w in FILLER_WORDS
             if w not in self.answer_words
             and decoder.lookup_word(w)
-            and all(_phone_distance(str(decoder.lookup_word(w)).split(), a) > 1 for a in answer_phones)
+            and all(edit_distance(str(decoder.lookup_word(w)).split(), a) > 1 for a in answer_phones)
         )
         graph = answer_graph(self.answers, fillers, filler_weight, openers=openers, closers=closers)
         # closed: the answers alone, for speech that is an answer (the robot asked for a plain yes or no)
@@ -444,13 +444,13 @@ class AnswerRecognizer:
         return " ".join(words) if words and set(words) <= self.answer_words else ""
 
 
-def _phone_distance(first: list[str], second: list[str]) -> int:
-    """Edit distance between two phone sequences."""
+def edit_distance(first: Sequence[str], second: Sequence[str]) -> int:
+    """Edit distance between two token sequences (phones, words): substitutions, insertions, deletions."""
     previous = list(range(len(second) + 1))
-    for i, phone in enumerate(first, start=1):
+    for i, token in enumerate(first, start=1):
         current = [i] + [0] * len(second)
         for j, other in enumerate(second, start=1):
-            current[j] = min(previous[j] + 1, current[j - 1] + 1, previous[j - 1] + (phone != other))
+            current[j] = min(previous[j] + 1, current[j - 1] + 1, previous[j - 1] + (token != other))
         previous = current
     return previous[-1]
 
