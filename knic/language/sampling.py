@@ -12,7 +12,7 @@ import random
 from collections.abc import Iterator
 from dataclasses import dataclass
 
-from knic.language.commands import command_grammar
+from knic.language.commands import command_grammar, command_language
 from knic.language.frames import CommandFrame
 from knic.language.grammar import Alt, Bind, Frame, Grammar, Node, Opt, Ref, Repeat, Seq, Slot, Words
 from knic.language.reader import chain
@@ -23,6 +23,9 @@ from knic.language.vocabulary import Vocabulary, level_percent
 #: lowers the word error rate (0.15 -> 0.10) at the same frame accuracy but lets one out-of-domain utterance
 #: of five through (rejection 1.0 -> 0.8), so it stays off.
 FIRST_PHRASE_SHARE = 0.0
+#: Walks of one action before it is dropped because its pronoun stands for nothing said before (the
+#: phrasings with a pronoun then keep their share wherever a referent exists).
+PRONOUN_TRIES = 8
 
 
 @dataclass(frozen=True)
@@ -73,6 +76,20 @@ class _Walker:
         self.rng = rng
         #: actions dropped outside a repetition (the sentence is then not used)
         self.dropped = 0
+        #: pronoun -> the type it refers to ("any": whatever the frame needs)
+        self.pronouns = command_language().pronouns
+
+    def _referent(self, pronoun: str, wanted: str, frames: list[CommandFrame]) -> str | None:
+        """The latest thing of the type ``wanted`` (that the pronoun's type allows) an earlier action names
+        as its theme or beneficiary (as the reader: the latest one mentioned)."""
+        if pronoun not in ("any", wanted):
+            return None
+        for frame in reversed(frames):
+            for role in ("beneficiary", "theme"):
+                name = frame.get(role)
+                if name and self.vocabulary.is_subtype(self.vocabulary.type_of(name) or "", wanted):
+                    return name
+        return None
 
     def walk(self, node: Node, words: list[str], frames: list[CommandFrame], args: dict[str, str]) -> None:
         rng = self.rng
@@ -111,27 +128,27 @@ class _Walker:
                     del words[start:]
                     self.dropped -= 1
         elif isinstance(node, Frame):
-            inner: dict[str, str] = {}
             start = len(words)
-            try:
-                self.walk(node.body, words, frames, inner)
-            except _Dead:
-                del words[start:]
-                self.dropped += 1
-                return
-            kind = node.kind
-            if inner.get("theme") == "it":  # the previous action's object, else no sentence starts so
-                things = [
-                    f["theme"]
-                    for f in frames
-                    if f.get("theme")
-                    and self.vocabulary.is_subtype(self.vocabulary.type_of(f["theme"]) or "", "item")
-                ]
-                if not things:
+            for _ in range(PRONOUN_TRIES):  # a pronoun with nothing before it to stand for: say it again
+                inner: dict[str, str] = {}
+                try:
+                    self.walk(node.body, words, frames, inner)
+                except _Dead:
                     del words[start:]
                     self.dropped += 1
                     return
-                inner["theme"] = things[-1]
+                kind = node.kind
+                pronoun = self.pronouns.get(inner.get("theme", ""))
+                if pronoun is None:
+                    break
+                referent = self._referent(pronoun, "person" if kind == "ACCOMPANYING" else "item", frames)
+                if referent is not None:
+                    inner["theme"] = referent
+                    break
+                del words[start:]
+            else:
+                self.dropped += 1
+                return
             if kind == "BRINGING" and "goal" not in inner and "beneficiary" not in inner:
                 kind = "TAKING"  # as the reader: a later action may say where it goes, else it is for me
             frames.append(CommandFrame(kind, inner))

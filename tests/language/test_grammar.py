@@ -57,6 +57,27 @@ def test_sampled_sentences_are_in_the_word_graph_and_read_with_their_frames(voca
     )  # a few samples are truly ambiguous ("set the dimmer to half open the blinds")
 
 
+def test_pronouns_are_sampled_for_what_was_said_before_and_read_the_same(vocabulary: Vocabulary) -> None:
+    """The speech model hears "lead her" and "bring them": the pronouns the reader resolves (each stands for the
+    latest earlier thing of its kind, and a sentence never starts with one)."""
+    graph = compile_word_graph(command_grammar(), vocabulary)
+    said: dict[str, int] = {}
+    for sample in sample_sentences(vocabulary, 1500, seed=11):
+        words = sample.text.split()
+        pronouns = [w for w in words if w in ("it", "them", "her", "him")]
+        if not pronouns:
+            continue
+        for word in pronouns:
+            said[word] = said.get(word, 0) + 1
+        assert sample.frames[0].get("theme") not in ("it", "them", "her", "him"), sample.text
+        assert accepts(graph, sample.text), sample.text
+        got = understand(sample.text, vocabulary).frames
+        assert [f.to_dict() for f in got] == [f.to_dict() for f in sample.frames], sample.text
+    assert set(said) == {"it", "them", "her", "him"}, said
+    assert accepts(graph, "locate tracy and lead her to the kitchen")
+    assert accepts(graph, "find my glasses and bring them to me")
+
+
 def test_sampling_is_seeded(vocabulary: Vocabulary) -> None:
     first = [s.text for s in sample_sentences(vocabulary, 20, seed=3)]
     assert first == [s.text for s in sample_sentences(vocabulary, 20, seed=3)]
