@@ -1,0 +1,95 @@
+"""Chains of actions in one command: pronouns and what one action hands on to the next.
+
+Pronouns ("it", "them", "her", "him") take the latest earlier action's theme or beneficiary of their type; a
+TAKING followed by a carry of the same object hands it its source; a MOTION followed by an action on a thing
+gives it its source or ground ("go to the dining table and take the cups"); a TAKING that nothing carries on
+is a BRINGING to the speaker.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+from dataclasses import dataclass, field
+
+from core.errors import LanguageError
+from knic.language.chunks import Chunk
+from knic.language.frames import SPEAKER, CommandFrame
+from knic.language.vocabulary import Vocabulary
+
+
+@dataclass
+class Reading:
+    """Frames read from a command, before goals."""
+
+    frames: list[CommandFrame]
+    waypoints: set[int] = field(default_factory=set)  # indices of MOTION frames whose place went on
+
+
+def referent(
+    chunk: Chunk,
+    categories: Sequence[str],
+    groups: list[list[CommandFrame]],
+    vocabulary: Vocabulary,
+) -> list[str]:
+    """What a pronoun stands for: the latest earlier action's themes or beneficiaries of the pronoun's type
+    and of one of ``categories`` (all of them for "them", the last one otherwise).
+
+    Raises:
+        LanguageError: nothing said earlier in the command fits.
+    """
+    wanted = chunk.role
+    for group in reversed(groups):
+        found: list[str] = []
+        for frame in group:
+            for role in ("theme", "beneficiary"):
+                value = frame.get(role)
+                if value is None or value == SPEAKER:
+                    continue
+                value_type = vocabulary.type_of(value) or ""
+                fits = any(vocabulary.is_subtype(value_type, c) for c in categories)
+                if (
+                    fits
+                    and (wanted == "any" or vocabulary.is_subtype(value_type, wanted))
+                    and value not in found
+                ):
+                    found.append(value)
+        if found:
+            return found if chunk.text == "them" else found[-1:]
+    thing = "an object" if wanted == "item" else "a person" if wanted == "person" else "anything"
+    raise LanguageError(f"'{chunk.text}' does not refer to {thing} named earlier in the command")
+
+
+def chain(frames: list[CommandFrame], vocabulary: Vocabulary) -> Reading:
+    """Hand sources on along a chain; a TAKING that nothing carries on becomes a BRINGING to the speaker.
+
+    A carry with no destination said ("fetch the book", "grab the cup") reads as a TAKING, so a destination
+    said later for the same object ("... and put it in the lounge", "... then take it to the kitchen")
+    replaces the speaker as where it ends.
+    """
+    del vocabulary  # the chain rules need no names; kept for callers
+    out = list(frames)
+    waypoints: set[int] = set()
+    for index, frame in enumerate(out):
+        later = out[index + 1 :]
+        if frame.kind == "MOTION" and later:
+            nxt = later[0]
+            role = "ground" if nxt.kind == "SEARCHING" else "source"
+            theme = nxt.get("theme")
+            if nxt.kind in ("SEARCHING", "TAKING", "BRINGING") and nxt.get(role) is None and theme:
+                out[index + 1] = CommandFrame(nxt.kind, {**nxt.args, role: frame["goal"]})
+                waypoints.add(index)
+        if frame.kind == "TAKING":
+            carried = [  # a later carry of the same object, not one fetched again from elsewhere
+                j
+                for j in range(index + 1, len(out))
+                if out[j].kind in ("BRINGING", "PLACING")
+                and out[j].get("theme") == frame.get("theme")
+                and out[j].get("source") in (None, frame.get("source"))
+            ]
+            if carried:
+                j = carried[0]
+                if out[j].get("source") is None and frame.get("source") is not None:
+                    out[j] = CommandFrame(out[j].kind, {**out[j].args, "source": frame["source"]})
+            else:
+                out[index] = CommandFrame("BRINGING", {**frame.args, "beneficiary": SPEAKER})
+    return Reading(out, waypoints)

@@ -1,0 +1,204 @@
+"""Roles of a clause's arguments, one interpreter per frame kind.
+
+Each interpreter takes a clause as heard and gives the frames it means, or raises
+:class:`~core.errors.LanguageError` when the arguments do not fit the kind (the reader then tries the verb's
+next kind: "take Tracy to the bedroom" is not a TAKING of an object, so it is an ACCOMPANYING). Prepositions
+give roles ("from": source, "to": goal, "in"/"on"/"near": source, ground or goal by kind); a person said first
+is who a carry is for ("bring me the glasses"); a place said right after furniture or a device narrows it down
+(:meth:`Resolver.narrow`).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+from typing import Protocol
+
+from core.errors import LanguageError
+from knic.language.clauses import Arg, Clause
+from knic.language.frames import SPEAKER, CommandFrame
+from knic.language.vocabulary import Term
+
+Frames = list[CommandFrame]
+
+
+class Resolver(Protocol):
+    """What the interpreters ask of the reader (:class:`knic.language.reader.Reader`)."""
+
+    def is_a(self, term: Term, category: str) -> bool:
+        """Whether a name's type is ``category`` or a subtype of it."""
+
+    def resolve(
+        self, arg: Arg, categories: Sequence[str], previous: Frames, groups: list[Frames]
+    ) -> list[str]:
+        """The symbols an argument names, of one of ``categories``."""
+
+    def narrow(self, args: list[Arg]) -> None:
+        """Narrow furniture and devices by the place said next to them."""
+
+
+def _bringing(reader: Resolver, clause: Clause, previous: Frames, groups: list[Frames]) -> Frames:
+    return _carry(reader, clause, previous, groups, "BRINGING")
+
+
+def _taking(reader: Resolver, clause: Clause, previous: Frames, groups: list[Frames]) -> Frames:
+    return _carry(reader, clause, previous, groups, "TAKING")
+
+
+def _placing(reader: Resolver, clause: Clause, previous: Frames, groups: list[Frames]) -> Frames:
+    return _carry(reader, clause, previous, groups, "PLACING")
+
+
+def _carry(
+    reader: Resolver, clause: Clause, previous: Frames, groups: list[Frames], kind: str
+) -> list[CommandFrame]:
+    args = list(clause.args)
+    reader.narrow(args)
+    themes: list[str] = []
+    roles: dict[str, str] = {}
+    bare = [a for a in args if a.prep is None and not a.consumed]
+    first_is_person = bare and (
+        bare[0].chunk.kind == "me"
+        or (bare[0].chunk.kind == "pronoun" and bare[0].chunk.role == "person")
+        or (bare[0].chunk.terms and all(reader.is_a(t, "person") for t in bare[0].chunk.terms))
+    )
+    if (len(bare) >= 2 and not bare[1].joined) or (len(bare) == 1 and first_is_person and kind != "TAKING"):
+        # "bring me the glasses", "give Tracy the cup": a person first is who it is for
+        try:
+            roles["beneficiary"] = reader.resolve(bare[0], ("person",), previous, groups)[0]
+            bare[0].consumed = True
+        except LanguageError:
+            pass
+    for arg in args:
+        if arg.consumed:
+            continue
+        if arg.prep is None:
+            themes += reader.resolve(arg, ("item",), previous, groups)
+        elif arg.prep == "beneficiary":
+            roles["beneficiary"] = reader.resolve(arg, ("person",), previous, groups)[0]
+        elif arg.prep == "source":
+            roles["source"] = reader.resolve(arg, ("room", "furniture"), previous, groups)[0]
+        elif arg.prep == "goal" or (arg.prep in ("place", "level") and kind == "PLACING"):
+            if arg.prep == "level" and arg.prep_text not in ("to",):
+                continue
+            if (
+                arg.chunk.kind == "me"
+                or any(reader.is_a(t, "person") for t in arg.chunk.terms)
+                or (arg.chunk.kind == "pronoun" and arg.chunk.role == "person")
+            ):
+                roles["beneficiary"] = reader.resolve(arg, ("person",), previous, groups)[0]
+            else:
+                roles["goal"] = reader.resolve(arg, ("room", "furniture"), previous, groups)[0]
+        elif arg.prep == "place":
+            if not themes:
+                raise LanguageError(f"'{arg.prep_text} {arg.chunk.text}' but no object to {kind.lower()}")
+            roles.setdefault("source", reader.resolve(arg, ("room", "furniture"), previous, groups)[0])
+    if not themes:
+        raise LanguageError(f"{_verb(clause)} what? I heard no object of this world")
+    if kind == "PLACING" and "goal" not in roles:
+        raise LanguageError(f"{_verb(clause)} the {themes[0]} where? I heard no place")
+    if kind == "TAKING" and ("goal" in roles or "beneficiary" in roles):
+        kind = "BRINGING"
+    if clause.verb is not None and clause.verb.beneficiary and "goal" not in roles:
+        roles.setdefault("beneficiary", SPEAKER)
+    if kind == "BRINGING" and "goal" not in roles and "beneficiary" not in roles:
+        # "fetch the book": no one and nowhere said; a later "put it in the lounge" says where it goes,
+        # else chain() makes it a BRINGING to the speaker
+        kind = "TAKING"
+    return [CommandFrame(kind, {"theme": theme, **roles}) for theme in dict.fromkeys(themes)]
+
+
+def _verb(clause: Clause) -> str:
+    return clause.verb.text.capitalize() if clause.verb is not None else "Do"
+
+
+def _searching(reader: Resolver, clause: Clause, previous: Frames, groups: list[Frames]) -> Frames:
+    args = list(clause.args)
+    reader.narrow(args)
+    themes: list[str] = []
+    ground: str | None = None
+    for arg in args:
+        if arg.consumed:
+            continue
+        if arg.prep is None:
+            themes += reader.resolve(arg, ("item", "person"), previous, groups)
+        elif arg.prep in ("place", "source"):
+            ground = reader.resolve(arg, ("room", "furniture"), previous, groups)[0]
+    if not themes:
+        raise LanguageError(f"{_verb(clause)} what? I heard no object or person of this world")
+    extra = {"ground": ground} if ground else {}
+    return [CommandFrame("SEARCHING", {"theme": t, **extra}) for t in dict.fromkeys(themes)]
+
+
+def _accompanying(reader: Resolver, clause: Clause, previous: Frames, groups: list[Frames]) -> Frames:
+    args = list(clause.args)
+    reader.narrow(args)
+    people: list[str] = []
+    goal: str | None = None
+    for arg in args:
+        if arg.consumed:
+            continue
+        if arg.prep is None:
+            people += reader.resolve(arg, ("person",), previous, groups)
+        elif arg.prep in ("goal", "place", "level"):
+            goal = reader.resolve(arg, ("room", "furniture"), previous, groups)[0]
+    if not people:
+        raise LanguageError(f"{_verb(clause)} whom? I heard no person of this world")
+    if goal is None:
+        raise LanguageError(f"{_verb(clause)} {people[0]} where? I heard no room")
+    return [CommandFrame("ACCOMPANYING", {"theme": p, "goal": goal}) for p in dict.fromkeys(people)]
+
+
+def _motion(reader: Resolver, clause: Clause, previous: Frames, groups: list[Frames]) -> Frames:
+    args = list(clause.args)
+    reader.narrow(args)
+    for arg in args:
+        if not arg.consumed and arg.prep is None and arg.chunk.kind != "entity":
+            raise LanguageError(f"{_verb(clause)} where? '{arg.chunk.text}' is not a place")
+        if (
+            not arg.consumed
+            and arg.prep is None
+            and not any(reader.is_a(t, "room") or reader.is_a(t, "furniture") for t in arg.chunk.terms)
+        ):
+            raise LanguageError(f"{_verb(clause)} where? the {arg.chunk.text} is not a room or furniture")
+    places = [a for a in args if not a.consumed and a.prep in ("goal", "place", "level", None)]
+    if not places:
+        raise LanguageError(f"{_verb(clause)} where? I heard no room or furniture of this world")
+    goal = reader.resolve(places[-1], ("room", "furniture"), previous, groups)[0]
+    return [CommandFrame("MOTION", {"goal": goal})]
+
+
+def _operating(reader: Resolver, clause: Clause, previous: Frames, groups: list[Frames]) -> Frames:
+    args = list(clause.args)
+    reader.narrow(args)
+    devices: list[str] = []
+    for arg in args:
+        if arg.consumed:
+            continue
+        if arg.chunk.kind == "entity" and not any(reader.is_a(t, "device") for t in arg.chunk.terms):
+            if arg.prep is None:
+                raise LanguageError(f"'{arg.chunk.text}' is not a device I can operate")
+            continue
+        devices += reader.resolve(arg, ("device",), previous, groups)
+    if not devices:
+        raise LanguageError(f"{_verb(clause)} what? I heard no light, dimmer or blinds of this world")
+    state = clause.verb.state if clause.verb is not None else None
+    if clause.levels:
+        state = str(clause.levels[-1])
+    elif clause.states:
+        state = clause.states[-1]
+    if state is None:
+        raise LanguageError(f"{_verb(clause)} the {' and '.join(devices)} to what? Say on, off or a level")
+    return [CommandFrame("OPERATING", {"device": d, "state": state}) for d in dict.fromkeys(devices)]
+
+
+Interpreter = Callable[[Resolver, Clause, Frames, list[Frames]], Frames]
+#: frame kind -> its interpreter
+INTERPRETERS: dict[str, Interpreter] = {
+    "BRINGING": _bringing,
+    "TAKING": _taking,
+    "PLACING": _placing,
+    "SEARCHING": _searching,
+    "ACCOMPANYING": _accompanying,
+    "MOTION": _motion,
+    "OPERATING": _operating,
+}
