@@ -7,8 +7,9 @@ ambiguous one also prints the question to ask back.
 ``knic goal -`` reads one command per line on standard input and prints one JSON object per line (blank lines
 are skipped); it exits 0 when every command was understood, else 4 after the last line.
 
-The world's vocabulary is read straight from its PDDL files (:func:`knic.language.world.read_vocabulary`), so
-the command answers without importing the planning libraries.
+The world's vocabulary is read straight from its PDDL files (:func:`knic.language.world.read_vocabulary`),
+or with ``--world FILE`` from a world file as ``knic run --world`` takes (its rooms, furniture, objects,
+people and devices, typed by the domain), so the command answers without importing the planning libraries.
 """
 
 from __future__ import annotations
@@ -17,25 +18,80 @@ import argparse
 import json
 from typing import Any
 
-from core.errors import LanguageError
+from core.errors import KnicError, LanguageError
 
 
 def add_world_arguments(parser: argparse.ArgumentParser) -> None:
     """Options shared by ``knic goal`` and ``knic say``: the world and the speaker."""
     parser.add_argument("--json", action="store_true", help="print one JSON object")
-    parser.add_argument("--speaker", default="annie", help="the person 'me' refers to (default: annie)")
+    parser.add_argument(
+        "--speaker",
+        help="the person 'me' refers to (default: annie; with --world, annie if the world has her, else its "
+        "first person)",
+    )
+    parser.add_argument(
+        "--world",
+        help="a world file (as for knic run, e.g. worlds/test_flat/test_flat.yaml) or name (erl_home): its "
+        "rooms, furniture, objects, people and devices with the domain's types; instead of --problem",
+    )
     parser.add_argument("--domain", help="PDDL domain (default: worlds/erl_home/domain.pddl)")
     parser.add_argument("--problem", help="PDDL problem (default: worlds/erl_home/erl_home_problem.pddl)")
-    parser.add_argument("--lexicon", help="spoken names (default: lexicon.yaml beside the problem or domain)")
+    parser.add_argument(
+        "--lexicon",
+        help="spoken names (default: lexicon.yaml beside the problem, the world file or the domain; with "
+        "--world and none beside it, the ERL lexicon, as knic run)",
+    )
 
 
 def load_vocabulary(args: argparse.Namespace) -> Any:
-    """The vocabulary of the world chosen by the options."""
+    """The vocabulary of the world chosen by the options; sets ``args.speaker`` when it was not given.
+
+    Raises:
+        KnicError: both --world and --problem, or a world file that is missing or invalid (one line).
+    """
     from knic.language.world import DEFAULT_DOMAIN, DEFAULT_PROBLEM, read_vocabulary
 
     domain = args.domain or DEFAULT_DOMAIN
+    if getattr(args, "world", None) is not None:
+        if args.problem is not None:
+            raise KnicError("--world and --problem both say what the world holds: give one of them")
+        vocabulary, people = world_vocabulary(args.world, domain, args.lexicon)
+        if args.speaker is None:
+            args.speaker = "annie" if "annie" in people else next(iter(people), "annie")
+        return vocabulary
+    args.speaker = args.speaker or "annie"
     problem = args.problem or (DEFAULT_PROBLEM if args.domain is None else None)
     return read_vocabulary(domain, problem, args.lexicon)
+
+
+def world_vocabulary(world: str, domain: Any, lexicon: str | None) -> tuple[Any, list[str]]:
+    """The vocabulary of a world file (what the robot knows before a run: its instances and which room each
+    piece of furniture is in) with the domain's types, constants and predicates, and the people it knows.
+
+    Only the world file is read (no simulator, no planning library), so ``knic goal`` stays quick to start.
+
+    Raises:
+        WorldError: the world is neither a known name nor a valid world file.
+        LanguageError: the domain or the lexicon is unreadable.
+    """
+    from knic.language.vocabulary import Lexicon, Vocabulary
+    from knic.language.world import WORLDS, find_lexicon, read_vocabulary
+    from worlds.loader import load_world, resolve_world_path
+
+    path = resolve_world_path(world)
+    model = load_world(path)
+    base = read_vocabulary(domain, None, None)  # the domain's types, constants (levels) and predicates
+    strangers = {name for name, person in model.people.items() if not person.known}
+    instances = {**base.instances}
+    instances.update({s: t for s, t in model.symbols().items() if s not in strangers})
+    locations: dict[str, list[str]] = {}
+    for predicate, *args in sorted(model.static_facts()):
+        if predicate == "furniture_in":
+            locations.setdefault(args[0], []).append(args[1])
+    lexicon_path = lexicon or find_lexicon(domain, path) or WORLDS / "erl_home" / "lexicon.yaml"
+    names = Lexicon.load(lexicon_path)
+    vocabulary = Vocabulary.from_instances(instances, base.types, names, base.predicates, locations)
+    return vocabulary, [p for p in model.people if p not in strangers]
 
 
 def print_understanding(data: dict[str, Any], as_json: bool) -> None:

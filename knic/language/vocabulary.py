@@ -274,6 +274,11 @@ class Vocabulary:
         """Every instance and constant of the world: {symbol: type}."""
         return dict(self._instances)
 
+    @property
+    def types(self) -> dict[str, str | None]:
+        """The domain's type hierarchy: {type: parent type}."""
+        return dict(self._types)
+
     def level(self, percent: int) -> str | None:
         """The ``level`` constant for a percentage (50 -> ``"l50"``), or None when the domain has none."""
         for symbol, type_name in self._instances.items():

@@ -47,3 +47,38 @@ def test_say_json(capsys: pytest.CaptureFixture[str]) -> None:
     assert data["transcript"] == "bring me my glasses"
     assert data["goals"] == ["(has annie glasses)"] and data["accepted"] is True
     assert data["audio"]["duration_s"] > 0.5
+
+
+FLAT = Path(__file__).resolve().parents[2] / "worlds" / "test_flat" / "test_flat.yaml"
+
+
+def test_goal_world_file_uses_that_worlds_names(capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["goal", "--world", str(FLAT), "--json", "carry the teacup to the lounge"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert data["frames"] == [{"frame": "BRINGING", "theme": "teacup", "goal": "lounge"}]
+    assert data["goals"] == ["(object_at teacup lounge)"]
+    # "me" is the world's own person when it has no annie; furniture is placed in its room
+    assert main(["goal", "--world", str(FLAT), "--json", "bring me the book from the desk"]) == 0
+    data = json.loads(capsys.readouterr().out)
+    assert "(has olga book)" in data["goals"] and "(possibly_at book study)" in data["hints"]
+
+
+def test_goal_world_file_refuses_what_it_lacks(capsys: pytest.CaptureFixture[str]) -> None:
+    assert main(["goal", "--world", str(FLAT), "--json", "bring me my glasses"]) == 4
+    data = json.loads(capsys.readouterr().out)
+    assert data["accepted"] is False and "glasses" in data["reason"]
+
+
+@pytest.mark.parametrize(
+    ("argv", "message"),
+    [
+        (["--world", "no/such/world.yaml"], "unknown world 'no/such/world.yaml'"),
+        (["--world", str(FLAT), "--problem", str(FLAT)], "--world and --problem"),
+    ],
+)
+def test_goal_bad_world_is_one_line(
+    argv: list[str], message: str, capsys: pytest.CaptureFixture[str]
+) -> None:
+    assert main(["goal", *argv, "go to the lounge"]) == 2
+    captured = capsys.readouterr()
+    assert captured.out == "" and message in captured.err and captured.err.count("\n") == 1
