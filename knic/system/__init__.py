@@ -38,6 +38,11 @@ class TaskFlow(Component):
     def busy(self) -> bool:
         """Whether the flow still has something to do (the run does not stop meanwhile)."""
 
+    def holds_robot(self) -> bool:
+        """Whether the flow needs the robot to stay where it is (a dialogue): no revisit starts meanwhile
+        (:mod:`knic.system.revisits`). Default: never."""
+        return False
+
 
 def drop_sentence(kb: KnowledgeBase, goal: Fact, reason: str) -> str:
     """What the robot says when it drops ``goal``: that it looked everywhere for an entity it has no
@@ -111,6 +116,8 @@ class KnicSystem:
         not stop while it is busy, and it may add goals while the robot runs."""
         self.flows.append(flow)
         self.scheduler.add(flow)
+        if self.parts.revisits is not None:
+            self.parts.revisits.holds.append(flow.holds_robot)
 
     # ------------------------------------------------------------------ running
 

@@ -11,10 +11,13 @@
    the robot's sensors, and the perception the actions steer by (:class:`knic.kgm3.sightings.BusPerception`);
 4. the ERL actions (:func:`actions.erl.build_erl_registry`) commanding the robot, and the steppable
    :class:`~planner.dispatch.Dispatcher` with its recovery policy and trace (unless ``dispatch`` is off);
-5. one :class:`~knic.scheduler.Scheduler` stepping, in this order at each instant: the simulator
-   (:class:`SimulationComponent`), the pipeline's components, the dispatcher (:class:`DispatcherComponent`).
+5. under a role with revisit data (the companion), the :class:`~knic.system.revisits.RevisitDriver`: while
+   the robot has nothing to do it goes back to look where the role says (beliefs only);
+6. one :class:`~knic.scheduler.Scheduler` stepping, in this order at each instant: the simulator
+   (:class:`SimulationComponent`), the pipeline's components, the dispatcher (:class:`DispatcherComponent`),
+   the revisit driver.
 
-Steps 2-4 do not depend on the robot behind the seam: :func:`build_agent` builds them on any
+Steps 2-5 do not depend on the robot behind the seam: :func:`build_agent` builds them on any
 :class:`~core.robot.Robot` (the ROS 2 split run builds its KnIC with it). Nothing runs here;
 :class:`~knic.system.loop.RunLoop` runs a scheduler.
 """
@@ -33,6 +36,7 @@ from knic.pipeline import Pipeline, build_pipeline
 from knic.scheduler import Component, Scheduler
 from knic.seed import seed_kb_from_world
 from knic.system.config import ACTION_TIME_LIMITS, DOMAIN, RunConfig
+from knic.system.revisits import RevisitDriver, dispatcher_free
 from knowledge_base import KnowledgeBase
 from planner.dispatch import Dispatcher
 from planner.engines import TaskPlanner, silence_up
@@ -117,6 +121,7 @@ class Assembly:
     trace: Trace
     dispatcher: Dispatcher | None
     scheduler: Scheduler
+    revisits: RevisitDriver | None = None
 
     @property
     def robot(self) -> Robot:
@@ -173,12 +178,13 @@ def assemble(config: RunConfig) -> Assembly:
         agent.trace,
         agent.dispatcher,
         scheduler,
+        agent.revisits,
     )
 
 
 @dataclass
 class Agent:
-    """KnIC's side of a run on any robot (steps 2-4 of the module docstring): what :func:`assemble` builds
+    """KnIC's side of a run on any robot (steps 2-5 of the module docstring): what :func:`assemble` builds
     on the simulator in process and :class:`knic.ros.split.RosRun` on a robot reached over ROS 2, so both
     share one recovery policy, one set of action time limits and one planning-time model."""
 
@@ -189,12 +195,16 @@ class Agent:
     registry: ActionRegistry
     trace: Trace
     dispatcher: Dispatcher | None
+    revisits: RevisitDriver | None = None
 
     def components(self) -> list[Component]:
-        """The pipeline's components, then the dispatcher's, in the order a scheduler steps them."""
+        """The pipeline's components, then the dispatcher's, then the revisit driver, in the order a
+        scheduler steps them."""
         out: list[Component] = list(self.pipeline)
         if self.dispatcher is not None:
             out.append(DispatcherComponent(self.dispatcher))
+        if self.revisits is not None:
+            out.append(self.revisits)
         return out
 
 
@@ -228,7 +238,14 @@ def build_agent(config: RunConfig, world: World, robot: Robot, clock: Callable[[
             planning_time=config.planning_time,
             replan_settle_s=config.replan_settle_s,
         )
-    return Agent(kb, pipeline, perception, context, registry, trace, dispatcher)
+    revisits = None
+    revisit = pipeline.role.revisit
+    if dispatcher is not None and config.revisits and (revisit.people or revisit.rooms):
+        from knic.kgm2.attention import Revisits, rooms_from_kb
+
+        policy = Revisits(kb, revisit, rooms_from_kb(kb))
+        revisits = RevisitDriver(robot, policy, dispatcher_free(kb, dispatcher), trace)
+    return Agent(kb, pipeline, perception, context, registry, trace, dispatcher, revisits)
 
 
 def open_kb(journal: Path | None, clock: Callable[[], float]) -> KnowledgeBase:

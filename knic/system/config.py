@@ -61,6 +61,8 @@ class RunConfig:
         max_replans_per_goal: the recovery policy's replanning budget per goal.
         real_time_factor: the scheduler's overrun budget is period / factor (wall seconds per step).
         dispatch: plan and act (the dispatcher runs); False: perception only (benchmarks drive the robot).
+        revisits: under a role with revisit data, the robot goes back to look where the role says while it
+            has nothing to do (:mod:`knic.system.revisits`); False: it waits where it is.
         robot_wrapper: wraps the simulator's robot seam before KnIC sees it (fault injection in
             ``knic bench reliability``); None: KnIC talks to the simulator directly.
     """
@@ -83,6 +85,7 @@ class RunConfig:
     max_replans_per_goal: int = 12
     real_time_factor: float = 1.0
     dispatch: bool = True
+    revisits: bool = True
     robot_wrapper: Callable[[Robot], Robot] | None = None
 
 

@@ -25,8 +25,11 @@ and the robot's voice:
 
 The door bell is heard as ``(sound_at doorbell ?room)``; the reaction is data per role
 (:data:`DOORBELL_REACTION`): ``note`` (a trace event), ``tell`` (tell Annie), ``go`` (go to the door: a goal
-joining the running plan, withdrawn when reached). Every step is a ``task`` trace event (``action`` names it).
-Times are simulated seconds.
+joining the running plan, withdrawn when reached). The visitor is nobody the robot knows: perception makes
+them a new person instance when it first sees them (``visitor_1``, ...; :mod:`knic.kgm3.people`); the flow
+notes every person met that way (a ``visitor`` event naming the instance and the room it is believed in) and,
+under ``tell`` and ``go``, tells Annie where the visitor is. Every step is a ``task`` trace event (``action``
+names it). Times are simulated seconds.
 """
 
 from __future__ import annotations
@@ -132,6 +135,8 @@ class GrannyAnnieFlow(TaskFlow):
         self._grammar: Callable[[str], str] | None = None  # the one before (None: the intake default)
         self._custom_recogniser = recognise_command is not None
         self._bells: set[float] = set()
+        #: the people the robot knew when the flow started, then every visitor it noted since
+        self._people: set[str] = set(self.kb.instances("person"))
         self._now = 0.0
         self._given_up_from: float | None = None  # since when every open goal is dropped and nothing runs
         system.trace.subscribe(self._goal_news)
@@ -142,12 +147,17 @@ class GrannyAnnieFlow(TaskFlow):
         """True until the robot has told Annie the request is done (or given up asking)."""
         return self.phase != Phase.DONE
 
+    def holds_robot(self) -> bool:
+        """While the robot goes to Annie and talks with her, it stays on that (no revisit starts)."""
+        return self.phase in (Phase.GO, Phase.LISTEN, Phase.CONFIRM)
+
     def step(self, now: float) -> None:
         """Hear, react to the door bell, withdraw reached transient goals, advance the phase."""
         self._now = now
         for utterance in self.robot.poll_utterances():
             self._heard(utterance.text, utterance.speaker, utterance.audio_path, utterance.position, now)
         self._doorbell(now)
+        self._visitors(now)
         for goal in [g for g in self._transient if self.kb.holds(g)]:
             self._transient.discard(goal)
             self.kb.remove_goal(goal.predicate, *goal.args, source="task")
@@ -315,6 +325,25 @@ class GrannyAnnieFlow(TaskFlow):
             elif self.reaction == "go":
                 self.say("Someone rang the door bell; I am going to the door.")
                 self.add_transient(Fact("robot_at", (self._me(), room)))
+
+    def _visitors(self, now: float) -> None:
+        """Note each person instance met since the start (a visitor) once it is believed in a room."""
+        for person in self.kb.instances("person"):
+            if person in self._people:
+                continue
+            rooms = [f.args[1] for f in self.kb.facts("person_at", person)]
+            if not rooms:
+                continue
+            self._people.add(person)
+            room = rooms[0]
+            self.event(
+                "visitor",
+                now,
+                reason=f"met {person} in the {spoken(room)}",
+                data={"person": person, "room": room},
+            )
+            if self.reaction in ("tell", "go"):
+                self.say(f"{spoken(self.person).capitalize()}, a visitor is in the {spoken(room)}.")
 
     # ------------------------------------------------------------------ helpers
 
