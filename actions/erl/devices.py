@@ -80,7 +80,7 @@ def spoken(symbol: str) -> str:
 
 
 class ReportAction(ErlAction):
-    """``(report ?r ?e)``: say where the entity was found (``object_at``, ``person_at``, ``holding``)."""
+    """``(report ?r ?e)``: say where the entity was found (its room, the gripper, or who has it)."""
 
     def __init__(self, args: tuple[str, ...], ctx: ErlContext) -> None:
         super().__init__("report", args, ctx)
@@ -99,6 +99,10 @@ class ReportAction(ErlAction):
             where = f"in the {spoken(places[0].args[1])}"
         elif kb.facts("holding", None, e):
             where = "in my gripper"
+        elif kb.facts("has", None, e):  # already handed over: with that person, where they are
+            holder = kb.facts("has", None, e)[0].args[0]
+            rooms = kb.facts("person_at", holder)
+            where = f"with {spoken(holder)}" + (f" in the {spoken(rooms[0].args[1])}" if rooms else "")
         else:
             where = ""
         self.text = f"I found the {spoken(e)} {where}".strip() + "."

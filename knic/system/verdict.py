@@ -191,14 +191,25 @@ class Referee:
 
     def _places(self, entity: str, truth: Iterable[tuple[str, ...]]) -> list[str]:
         """How a report may say where ``entity`` is, given the true facts ``truth``."""
-        places = []
-        for f in truth:
-            if f[0] in ("object_at", "person_at") and f[1] == entity:
-                places.append(f"in the {self.spoken_name(f[2])}")
-            if f[0] == "holding" and f[2] == entity:
-                places.append("in my gripper")
-        return places
+        return true_places(entity, truth, self.spoken_name)
 
     def unmet(self, goals: Iterable[Fact]) -> list[Fact]:
         """The goals that do not hold in ground truth."""
         return [g for g in goals if not self.holds(g)]
+
+
+def true_places(
+    entity: str, truth: Iterable[tuple[str, ...]], spoken_name: Callable[[str], str]
+) -> list[str]:
+    """The phrases a true report of where ``entity`` is may contain, given the true facts ``truth``: its room,
+    "in my gripper" when the robot holds it, or the room of the person who has it (an item already handed
+    over is where that person is)."""
+    facts = list(truth)
+    rooms = {f[1]: f[2] for f in facts if f[0] in ("object_at", "person_at")}
+    places = [f"in the {spoken_name(rooms[entity])}"] if entity in rooms else []
+    for f in facts:
+        if f[0] == "holding" and f[2] == entity:
+            places.append("in my gripper")
+        if f[0] == "has" and f[2] == entity and f[1] in rooms:
+            places.append(f"in the {spoken_name(rooms[f[1]])}")
+    return places

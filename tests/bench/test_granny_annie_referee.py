@@ -136,6 +136,16 @@ def test_a_report_counts_when_it_was_true_when_made() -> None:
     assert judge(ep, true_then).achieved["found"] == 1
     assert judge(ep, stale).achieved["found"] == 0
     assert judge(ep, gripper).achieved["found"] == 1
+    # already handed to Annie: the remote is where she is (and nowhere else)
+    handed = changed(set(before), (("object_at", "remote", "living_room"), ("has", "annie", "remote")))
+    annie_room = next(f[2] for f in handed if f[0] == "person_at" and f[1] == "annie")
+    samples = moving(before, 0.0, 10.0) + moving(handed, 10.5, 20.0)
+    report = f"I found the remote in the {annie_room.replace('_', ' ')}."
+    with_her = Timeline(samples=samples, said=[(15.0, report)], end=20.0)
+    wrong_room = "kitchen" if annie_room != "kitchen" else "bathroom"
+    elsewhere = Timeline(samples=samples, said=[(15.0, f"I found the remote in the {wrong_room}.")], end=20.0)
+    assert judge(ep, with_her).achieved["found"] == 1
+    assert judge(ep, elsewhere).achieved["found"] == 0
 
 
 def test_penalties_and_disqualifications_are_counted() -> None:

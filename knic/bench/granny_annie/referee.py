@@ -32,6 +32,8 @@ from collections.abc import Sequence
 from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Any
 
+from knic.system.verdict import true_places
+
 if TYPE_CHECKING:
     from knic.bench.granny_annie.damage import DamageModel
     from knic.bench.granny_annie.episodes import Episode
@@ -226,14 +228,7 @@ def _true_report(timeline: Timeline, entity: str, name: Any) -> float | None:
         for sample in timeline.samples:
             if abs(sample.t - t) > REPORT_SLACK_S:
                 continue
-            places = [
-                f"in the {name(f[2])}"
-                for f in sample.facts
-                if f[0] in ("object_at", "person_at") and f[1] == entity
-            ]
-            if any(f[0] == "holding" and f[2] == entity for f in sample.facts):
-                places.append("in my gripper")
-            if any(p in said for p in places):
+            if any(p in said for p in true_places(entity, sample.facts, name)):
                 return t
     return None
 

@@ -295,3 +295,13 @@ def test_report_says_where_the_entity_was_found(setup: Setup) -> None:
     started, status = drive(create(ctx, "(report r2d2 glasses)"), robot)
     assert started and status is ActionStatus.SUCCEEDED
     assert robot.said == ["I found the glasses on the entrance shelf in the entrance."]
+
+
+def test_report_after_the_hand_over_says_who_has_it_and_where(setup: Setup) -> None:
+    robot, kb, ctx = setup
+    with kb.batch():
+        kb.add_fact("has", "annie", "glasses", source="test", status=BeliefStatus.OBSERVED)
+        kb.add_fact("person_at", "annie", "bedroom", source="test", status=BeliefStatus.OBSERVED)
+    started, status = drive(create(ctx, "(report r2d2 glasses)"), robot)
+    assert started and status is ActionStatus.SUCCEEDED
+    assert robot.said == ["I found the glasses with annie in the bedroom."]

@@ -35,3 +35,15 @@ def test_a_report_is_judged_by_where_the_entity_was_when_said() -> None:
     truth.facts |= {("object_at", "remote", "living_room")}
     referee.observe(3.0)
     assert not referee.holds(Fact("reported", ("remote",)))
+
+
+def test_a_report_after_the_hand_over_names_the_person_and_their_room() -> None:
+    truth = Truth({("has", "annie", "tablet"), ("person_at", "annie", "living_room")})
+    said: list[str] = []
+    referee = Referee(truth, lambda: said, spoken)
+    said.append("I found the tablet with annie in the bedroom.")
+    referee.observe(0.0)
+    assert not referee.holds(Fact("reported", ("tablet",)))
+    said.append("I found the tablet with annie in the living room.")
+    referee.observe(1.0)
+    assert referee.holds(Fact("reported", ("tablet",)))
