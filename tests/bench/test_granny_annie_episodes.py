@@ -5,6 +5,7 @@ from __future__ import annotations
 
 from pathlib import Path
 
+import numpy as np
 import pytest
 import yaml
 
@@ -154,3 +155,26 @@ def test_a_world_without_priors_devices_or_other_people_works(world: World, tmp_
         assert not any(ev["type"] in ("doorbell", "move_object") for ev in e.after_command)
         scenario_from_dict(e.scenario(), flat)
         scenario_from_dict(e.later_scenario(), flat)
+
+
+def test_requests_name_only_people_the_robot_knows(world: World, episodes: list[Episode]) -> None:
+    from dataclasses import replace
+
+    from knic.bench.granny_annie.commands import draw_requests
+
+    assert not world.people["jack"].known  # the door-bell visitor is a stranger to the robot
+    visits = [ev for e in episodes for ev in e.after_command if ev["type"] == "doorbell"]
+    assert visits and {ev["visitor"] for ev in visits} == {"jack"}  # he still rings (the truth's name)
+    assert "jack" not in {t for e in episodes for r in e.requests for t in r.targets}
+    # even standing in the living room, a stranger is never led anywhere; once known, he may be
+    inside = replace(world.people["jack"], position=(8.0, 2.6), present=True)
+    for known in (False, True):
+        jack = replace(inside, known=known)
+        w = replace(world, people={**world.people, "jack": jack})
+        vocab = world_vocabulary(w)
+        placements = {i: it.on for i, it in w.items.items() if it.on}
+        led: set[str] = set()
+        for i in range(60):
+            requests = draw_requests(w, vocab, np.random.default_rng([11, i]), placements)
+            led |= {t for r in requests if r.kind == "accompany" for t in r.targets}
+        assert ("jack" in led) is known, (known, led)

@@ -159,12 +159,13 @@ def _sync(system: KnicSystem) -> None:
 
 
 def true_sightings(system: KnicSystem) -> None:
-    """Hand the true position of every item and every present person to the perception the actions steer
-    by (as if perceived now)."""
+    """Hand the true position of every item and every present person the robot knows to the perception the
+    actions steer by (as if perceived now); a stranger has no symbol until perception meets them."""
     from actions.erl.perception import Sighting
 
     sim, now = system.sim, system.sim.time
-    names = [*system.world.items, *(p for p in system.world.people if sim.person_present(p))]
+    people = system.world.people
+    names = [*system.world.items, *(p for p in people if people[p].known and sim.person_present(p))]
     for name in names:
         position = sim.true_pose(name).position
         system.perceived.record(name, Sighting((position[0], position[1], position[2]), now))
@@ -177,7 +178,10 @@ def write_truth(system: KnicSystem, *, source: str, status: BeliefStatus = Belie
     truth = {f for f in system.sim.ground_truth_facts() if f[0] in TRUTH_PREDICATES}
     known = set(kb.instances())
     truth = {f for f in truth if all(a in known for a in f[1:])}  # a visitor not yet met is no instance
+    # a visitor met (visitor_1, ...) has no name in the truth: what perception believes of them stays
+    met = {p for p in kb.instances("person") if p not in system.world.people}
     believed = {(f.predicate, *f.args) for p in TRUTH_PREDICATES for f in kb.facts(p)}
+    believed = {f for f in believed if not met & set(f[1:])}
     placed = {f[1] for f in truth if f[0] in ("object_at", "person_at")}
     writes = 0
     with kb.batch():

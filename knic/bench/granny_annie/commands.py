@@ -15,7 +15,8 @@ lead / guide / escort / accompany P to the R    ``(person_at P R)``
 ==============================================  ==========================================
 
 A device request always asks for a state the device is not in at the start (so it cannot pass untouched); an
-accompany request names a room the person is not in. Every phrase names exactly one symbol of its kind. A
+accompany request names a person the robot knows (never a stranger such as the door-bell visitor, whom the
+robot has no name for) and a room the person is not in. Every phrase names exactly one symbol of its kind. A
 command has at most one bring request (a simulated person holds one object at a time) and at most one
 accompany request.
 """
@@ -182,6 +183,7 @@ def _people(world: World, phrases: _Phrases, used: set[str]) -> list[str]:
         p.name
         for p in sorted(world.people.values(), key=lambda p: p.name)
         if p.present
+        and p.known
         and p.name != ANNIE
         and p.name not in used
         and p.name in phrases.by_symbol
