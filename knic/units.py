@@ -9,7 +9,8 @@
 * :class:`CKU` (cognitive knowledge unit), made by KGM-2: an LLKU put in context. It names the entity's PDDL
   symbol, its class, the octomap that represents the space it occupies (in the world frame), the voxel keys
   currently occupied in that octomap, the priority the robot's role gives it, and the ids of the LLKUs behind
-  it (for provenance: the KB's ``support``).
+  it (for provenance: the KB's ``support``). The keys of a tracked entity are an octomap query made when a
+  consumer first reads them (:class:`CKU`), not work done for every unit published.
 
 Time stamps are **simulated seconds** (the scheduler's clock), never wall-clock time. Units are immutable once
 made; the arrays they carry are marked read-only so a consumer cannot change what another consumer sees.
@@ -18,10 +19,10 @@ made; the arrays they carry are marked read-only so a consumer cannot change wha
 from __future__ import annotations
 
 import itertools
-from collections.abc import Mapping
+from collections.abc import Callable, Mapping
 from dataclasses import dataclass, field
 from enum import StrEnum
-from typing import TYPE_CHECKING, Any, Protocol
+from typing import TYPE_CHECKING, Any, Protocol, cast, overload
 
 import numpy as np
 import numpy.typing as npt
@@ -161,6 +162,53 @@ class Scan:
     withheld: frozenset[str] = field(default_factory=frozenset)
 
 
+#: A CKU's voxel keys as given to it: the keys themselves, or the query that reads them (called at most once).
+KeySource = Keys | Callable[[], Keys]
+
+
+def _checked_keys(value: Any, symbol: str) -> Keys:
+    keys = np.asarray(value, dtype=np.int64)
+    if keys.size == 0:
+        return _EMPTY_KEYS
+    if keys.ndim != 2 or keys.shape[1] != 3:
+        raise InferenceError(f"CKU {symbol}: keys must have shape (N, 3), got {keys.shape}")
+    keys.setflags(write=False)
+    return keys
+
+
+class _LazyKeys:
+    """The ``keys`` field of :class:`CKU`: holds the keys, or the query that reads them until first read.
+
+    A data descriptor (dataclasses' descriptor-typed field): ``CKU(..., keys=array)`` checks the array at
+    once; ``CKU(..., keys=query)`` keeps the zero-argument callable and calls it on the first ``cku.keys``,
+    then checks and keeps its answer (every later read returns the same array).
+    """
+
+    def __set_name__(self, owner: type, name: str) -> None:
+        self._slot = f"_{name}_source"
+
+    @overload
+    def __get__(self, obj: None, objtype: type | None = None) -> None: ...
+
+    @overload
+    def __get__(self, obj: CKU, objtype: type | None = None) -> Keys: ...
+
+    def __get__(self, obj: CKU | None, objtype: type | None = None) -> Keys | None:
+        if obj is None:
+            return None  # the field's default (dataclasses ask the class): no voxels
+        value = obj.__dict__[self._slot]
+        if callable(value):
+            value = _checked_keys(value(), obj.symbol)
+            obj.__dict__[self._slot] = value
+        return cast(Keys, value)
+
+    def __set__(self, obj: CKU, value: KeySource | None) -> None:
+        if value is None:
+            obj.__dict__[self._slot] = _EMPTY_KEYS
+        else:
+            obj.__dict__[self._slot] = value if callable(value) else _checked_keys(value, obj.symbol)
+
+
 @dataclass(frozen=True, eq=False)
 class CKU:
     """A cognitive knowledge unit: a tracked entity or a location in its spatial and motivational context.
@@ -171,12 +219,17 @@ class CKU:
         kind: what it is about.
         octomap: the entity's ``pyoctomap.OcTree`` in the world frame (owned and updated by KGM-2; read it, do
             not write), or None for units without volume (pose, sound, device).
-        keys: voxel keys occupied by the latest observation, in the octomap key space of
-            :data:`knic.spatial.DEFAULT_RESOLUTION`; what KP' intersect with room and furniture volumes.
         position: the entity's tracked centroid in the world frame, metres.
         role_priority: priority the active role gives this class / room (higher first).
         stamp: simulated time of the last update, seconds.
         confidence: KGM-2's confidence in the association, in [0, 1].
+        keys: the voxel keys the entity occupies (default None: none), in the octomap key space of
+            :data:`knic.spatial.DEFAULT_RESOLUTION`; what KP' intersect with room and furniture volumes.
+            Given as an (N, 3) array, or (KGM-2's tracked entities) as a query of the entity's octomap that
+            runs when ``keys`` is first read: the answer is the voxels the tree holds occupied at that moment
+            (a unit read after its track was updated again sees the newer tree, as its ``octomap`` does), kept
+            for every later read. A unit nobody reads the keys of costs no query. Reads return a read-only
+            array.
         support: ids of the LLKUs behind this update.
         track_id: KGM-2's track id (stable while the entity is tracked).
         attributes: copied from the LLKU (device state, sound source, yaw ...).
@@ -187,22 +240,12 @@ class CKU:
     cls: str
     kind: Kind
     octomap: pyoctomap.OcTree | None
-    keys: Keys
     position: tuple[float, float, float]
     role_priority: int
     stamp: float
     confidence: float
+    keys: _LazyKeys = _LazyKeys()
     support: tuple[str, ...] = ()
     track_id: int = 0
     attributes: Mapping[str, Any] = field(default_factory=dict)
     uid: str = field(default_factory=lambda: new_unit_id("cku"))
-
-    def __post_init__(self) -> None:
-        keys = np.asarray(self.keys, dtype=np.int64)
-        if keys.size == 0:
-            keys = _EMPTY_KEYS
-        elif keys.ndim != 2 or keys.shape[1] != 3:
-            raise InferenceError(f"CKU {self.symbol}: keys must have shape (N, 3), got {keys.shape}")
-        else:
-            keys.setflags(write=False)
-        object.__setattr__(self, "keys", keys)

@@ -5,7 +5,8 @@ One :class:`CognitiveLayer` component drains every percept (``percept.#``) at ea
 * groups camera units by scan (a :class:`~knic.units.Scan` marker closes a frame) and, per entity
   class, runs the class's :class:`~knic.kgm2.tracking.Tracker` when the role says the class is due (its
   ``rate_hz`` for the room the camera is in; rate 0: not processed at all) in decreasing role priority;
-  matched and new tracks update their octomap and are published as CKUs on ``cognition.<kind>.<symbol>``;
+  matched and new tracks update their octomap and are published as CKUs on ``cognition.<kind>.<symbol>``
+  (their keys are a query of the track's octomap, run when a KP' first reads them);
   tracks dropped after their misses are published once with ``attributes["lost"] = True`` and no keys;
 * passes robot pose, sound and device units through as CKUs (rate-limited by the role for their class);
 * turns each location unit into a location CKU carrying the place's octomap (``cognition.location.<name>``).
@@ -341,7 +342,7 @@ class CognitiveLayer(Component):
             cls=track.cls,
             kind=det.kind,
             octomap=track.octomap.tree,
-            keys=track.keys,
+            keys=track.octomap.read_keys,  # a query the KP' run when they read the keys, not now
             position=(x, y, z),
             role_priority=policy.priority,
             stamp=stamp,

@@ -65,7 +65,7 @@ class Track:
 
     @property
     def keys(self) -> Keys:
-        """Voxel keys of the latest observation."""
+        """Voxel keys the track's octomap holds occupied (a query of the tree, see :class:`EntityOctomap`)."""
         return self.octomap.keys
 
 

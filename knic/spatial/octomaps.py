@@ -1,8 +1,8 @@
 """Entity octomaps: the octomap (``pyoctomap.OcTree``, world frame) of one tracked entity (seed 004, III.B).
 
 KGM-2 owns one :class:`EntityOctomap` per track and feeds it the depth points of each sighting; the CKU it
-publishes carries the tree (read it, do not write) and the voxel keys of the latest sighting, which KP'
-intersect with the volumes of :mod:`knic.spatial.volumes`.
+publishes carries the tree (read it, do not write) and the query of its occupied voxel keys
+(:meth:`EntityOctomap.read_keys`), which KP' intersect with the volumes of :mod:`knic.spatial.volumes`.
 """
 
 from __future__ import annotations
@@ -34,12 +34,16 @@ class EntityOctomap:
     The tree carries the evidence: each cloud raises the log-odds of the voxels it hits (and lowers those its
     rays cross), :meth:`miss` lowers the log-odds of every occupied voxel when the entity was not seen where
     the camera could see it, and octomap's clamping (``clamp_min`` .. ``clamp_max`` probability) bounds both,
-    so long-standing evidence still yields to a few views without the entity. :attr:`keys` is read from the
-    tree itself (its occupied voxels, distinct keys; every ``full_scan_every`` updates from all its leaves,
-    :meth:`occupied_keys`, in between by searching the tree for the voxels that can be occupied,
-    :meth:`occupied_among`): what the KP' intersect with the room and furniture volumes is the octomap's own
-    state, not the latest cloud. While the entity has no
-    occupied voxel (the map was just reset, or misses emptied it), the keys are the centroid's.
+    so long-standing evidence still yields to a few views without the entity.
+
+    :attr:`keys` (:meth:`read_keys`) is a query of the tree, made when asked, not on every update: the
+    distinct keys of its occupied voxels. Once ``full_scan_every`` updates have passed since the last full
+    read, the query reads every leaf (:meth:`occupied_keys`, so a voxel changed by anyone else is seen too);
+    otherwise it searches the tree for the voxels that can be occupied (:meth:`occupied_among`): those
+    occupied at the previous read and those the clouds inserted since then hit (the clouds are kept, not
+    their keys, until the next read). What the KP' intersect with the room and furniture volumes is therefore
+    the octomap's own state at the moment they reason, not the latest cloud. While the entity has no occupied
+    voxel after an update (the map was just reset), the keys are the centroid's; after a miss they are empty.
     """
 
     def __init__(
@@ -59,24 +63,34 @@ class EntityOctomap:
         self.tree = pyoctomap.OcTree(resolution)
         self.tree.setClampingThresMin(clamp_min)
         self.tree.setClampingThresMax(clamp_max)
-        self.keys: Keys = EMPTY_KEYS
         self.anchor: tuple[float, float, float] | None = None
         self.updates = 0
         self.resets = 0
         self.misses = 0
-        #: every this many updates the keys are read from every leaf of the tree, between them from the
-        #: candidate voxels only (those occupied before and those the new cloud hit)
+        #: once this many updates passed since the last read of every leaf, the next query reads them all
         self.full_scan_every = 10
-        self._occupied: Keys = EMPTY_KEYS
+        #: how many queries answered from every leaf / from the candidate voxels (for tests and benchmarks)
+        self.full_scans = 0
+        self.searches = 0
+        self._occupied: Keys = EMPTY_KEYS  # the occupied voxels at the last query
+        self._inserted: list[Points] = []  # the clouds inserted since then
+        self._changed = False  # the tree changed since the last query
+        self._scanned_at: int | None = None  # ``updates`` at the last full read
+        self._keys: Keys = EMPTY_KEYS
+        self._centroid: tuple[float, float, float] | None = None  # the keys' fallback after an update
 
     def update(
         self, points: Points, centroid: tuple[float, float, float], origin: Sequence[float] | None
-    ) -> Keys:
-        """Insert ``points`` (world frame) seen from ``origin``; return and keep the voxel keys they hit."""
+    ) -> None:
+        """Insert ``points`` (world frame) seen from ``origin`` (None: the points are occupied, no rays).
+
+        Nothing is read back from the tree here: :attr:`keys` asks it when a consumer needs the voxels.
+        """
         if self.anchor is None or math.dist(centroid, self.anchor) > self.reset_distance:
             if self.anchor is not None:
                 self.tree.clear()
                 self._occupied = EMPTY_KEYS
+                self._inserted.clear()
                 self.resets += 1
             self.anchor = centroid
         if len(points):
@@ -86,29 +100,61 @@ class EntityOctomap:
                 self.tree.insertPointCloud(
                     points, self.ray_origin(centroid, origin), -1.0, False, self.discretize
                 )
-        if self.updates % self.full_scan_every == 0:
-            self.keys = self.occupied_keys()
-        else:  # the voxels that can be occupied now: those that were, and those this cloud hit
-            hit = keys_of(points, self.resolution)
-            self.keys = self.occupied_among(np.concatenate([self._occupied, hit]))
-        self._occupied = self.keys
-        if len(self.keys) == 0:
-            self.keys = keys_of(np.array([centroid], dtype=np.float64), self.resolution)
+            self._inserted.append(points)
+        self._changed = True
+        self._centroid = centroid
         self.updates += 1
-        return self.keys
+        if self._full_scan_due():  # the next query reads every leaf: the clouds are not needed
+            self._inserted.clear()
+
+    def _full_scan_due(self) -> bool:
+        return self._scanned_at is None or self.updates - self._scanned_at >= self.full_scan_every
+
+    @property
+    def keys(self) -> Keys:
+        """The distinct keys of the voxels the tree holds occupied now (see :meth:`read_keys`)."""
+        return self.read_keys()
+
+    def read_keys(self) -> Keys:
+        """Query the tree for its occupied voxels (cached until the tree changes); what a CKU's keys read.
+
+        Returns the centroid's key when the last update left no occupied voxel, nothing after a miss did.
+        """
+        if self._changed:
+            self._query()
+            occupied = self._occupied
+            if len(occupied) == 0 and self._centroid is not None:
+                occupied = keys_of(np.array([self._centroid], dtype=np.float64), self.resolution)
+            self._keys = occupied
+        return self._keys
+
+    def _query(self) -> None:
+        """Refresh :attr:`_occupied` from the tree: every leaf when due, else the candidate voxels."""
+        if self._full_scan_due():
+            self._occupied = self.occupied_keys()
+            self._scanned_at = self.updates
+            self.full_scans += 1
+        else:
+            candidates = [self._occupied, *(keys_of(p, self.resolution) for p in self._inserted)]
+            self._occupied = self.occupied_among(np.concatenate(candidates))
+            self.searches += 1
+        self._inserted.clear()
+        self._changed = False
 
     def miss(self) -> int:
         """Evidence against the entity: one miss update (octomap's ``prob_miss``) on every occupied voxel.
 
         Called when a camera frame could see where the entity is and did not detect it. Returns how many
-        voxels are still occupied; :attr:`keys` is refreshed from the tree (empty when none is left).
+        voxels are still occupied (both counts are tree queries); :attr:`keys` is empty when none is left.
         """
-        occupied = self.occupied_among(self._occupied)
-        if len(occupied):
-            self.tree.updateNodes(key_centers(occupied, self.resolution), False)
+        self._changed = True  # the tree is searched afresh, whoever changed it since the last query
+        self._query()
+        if len(self._occupied):
+            self.tree.updateNodes(key_centers(self._occupied, self.resolution), False)
         self.misses += 1
-        self.keys = self._occupied = self.occupied_among(occupied)
-        return len(self.keys)
+        self._centroid = None
+        self._changed = True
+        return len(self.read_keys())
 
     def occupied_among(self, keys: Keys) -> Keys:
         """The distinct ones of ``keys`` whose voxel the tree holds occupied (a tree search per voxel)."""

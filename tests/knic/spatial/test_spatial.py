@@ -108,6 +108,35 @@ def test_entity_keys_are_read_from_the_tree() -> None:
     assert {tuple(k) for k in keys} == {tuple(k) for k in unique_keys(keys_of(elsewhere))}
 
 
+def test_entity_keys_are_a_query_made_when_read() -> None:
+    octo = EntityOctomap()
+    origin = (0.0, 0.0, 1.2)
+    clouds = [blob((2.0, 0.0, 0.8), spread=0.02, seed=i) for i in range(4)]
+    for cloud in clouds:
+        octo.update(cloud, (2.0, 0.0, 0.8), origin)
+    assert (octo.full_scans, octo.searches) == (0, 0)  # inserting reads nothing back from the tree
+    first = octo.keys
+    assert octo.full_scans == 1 and octo.keys is first  # cached until the tree changes
+    hit = unique_keys(keys_of(np.concatenate(clouds)))
+    assert {tuple(k) for k in first} == {tuple(k) for k in octo.occupied_keys()} <= {tuple(k) for k in hit}
+    # three clouds inserted unread: one search of the voxels they hit and the ones occupied before
+    later = [blob((2.05, 0.0, 0.8), spread=0.02, seed=10 + i) for i in range(3)]
+    for cloud in later:
+        octo.update(cloud, (2.05, 0.0, 0.8), origin)
+    keys = octo.keys
+    assert (octo.full_scans, octo.searches) == (1, 1)
+    assert {tuple(k) for k in keys} == {tuple(k) for k in octo.occupied_keys()}
+
+
+def test_unread_clouds_are_not_kept_once_a_full_read_is_due() -> None:
+    octo = EntityOctomap()
+    cloud = blob((2.0, 0.0, 0.8), spread=0.02)
+    for _ in range(3 * octo.full_scan_every):
+        octo.update(cloud, (2.0, 0.0, 0.8), (0.0, 0.0, 1.2))
+    assert not octo._inserted  # nobody read the keys: memory stays bounded
+    assert len(octo.keys) > 0 and octo.full_scans == 1
+
+
 def test_bad_prisms_are_refused() -> None:
     with pytest.raises(InferenceError, match="polygon"):
         Prism("x", np.array([[0.0, 0.0], [1.0, 1.0]]), 0.0, 1.0)
