@@ -8,13 +8,18 @@ is a BRINGING to the speaker.
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Collection, Sequence
 from dataclasses import dataclass, field
 
 from core.errors import LanguageError
 from knic.language.chunks import Chunk
 from knic.language.frames import SPEAKER, CommandFrame
 from knic.language.vocabulary import Vocabulary
+
+
+class AmbiguityError(LanguageError):
+    """A name fits several things, or something needed is left unsaid; the message is the question to ask
+    back."""
 
 
 @dataclass
@@ -59,15 +64,25 @@ def referent(
     raise LanguageError(f"'{chunk.text}' does not refer to {thing} named earlier in the command")
 
 
-def chain(frames: list[CommandFrame], vocabulary: Vocabulary) -> Reading:
+def chain(frames: list[CommandFrame], vocabulary: Vocabulary, *, ask_where: Collection[int] = ()) -> Reading:
     """Hand sources on along a chain; a TAKING that nothing carries on becomes a BRINGING to the speaker.
 
     A carry with no destination said ("fetch the book", "grab the cup") reads as a TAKING, so a destination
     said later for the same object ("... and put it in the lounge", "... then take it to the kitchen")
-    replaces the speaker as where it ends.
+    replaces the speaker as where it ends. A person fetched with no room said ("fetch tracy") is taken
+    wherever a later action takes them ("... and bring her to the bedroom"); that frame then goes.
+
+    Args:
+        frames: the frames of the clauses, in order.
+        vocabulary: the world's names (for the questions).
+        ask_where: indices of TAKING frames said with a destination left unsaid ("take the cup away"): when
+            nothing later carries them on, the reader asks where instead of bringing them to the speaker.
+
+    Raises:
+        AmbiguityError: where to is not said for a frame that needs it (the message asks).
     """
-    del vocabulary  # the chain rules need no names; kept for callers
     out = list(frames)
+    dropped: set[int] = set()
     waypoints: set[int] = set()
     for index, frame in enumerate(out):
         later = out[index + 1 :]
@@ -90,6 +105,22 @@ def chain(frames: list[CommandFrame], vocabulary: Vocabulary) -> Reading:
                 j = carried[0]
                 if out[j].get("source") is None and frame.get("source") is not None:
                     out[j] = CommandFrame(out[j].kind, {**out[j].args, "source": frame["source"]})
+            elif index in ask_where:
+                thing = vocabulary.phrase_of(frame["theme"])
+                raise AmbiguityError(f"where should I take the {thing}: to which room or piece of furniture?")
             else:
                 out[index] = CommandFrame("BRINGING", {**frame.args, "beneficiary": SPEAKER})
+        if frame.kind == "ACCOMPANYING" and frame.get("goal") is None:
+            later_same = [
+                f for f in later if f.kind == "ACCOMPANYING" and f.get("theme") == frame.get("theme")
+            ]
+            if not any(f.get("goal") for f in later_same):
+                who = frame.get("theme")
+                name = "you" if who == SPEAKER else vocabulary.phrase_of(who or "")
+                raise AmbiguityError(f"where should I take {name}: to which room?")
+            dropped.add(index)  # "fetch tracy and bring her to the bedroom": the later action says where
+    if dropped:
+        kept = [i for i in range(len(out)) if i not in dropped]
+        out = [out[i] for i in kept]
+        waypoints = {kept.index(i) for i in waypoints if i in kept}
     return Reading(out, waypoints)

@@ -23,12 +23,13 @@ _TENS = {w: 10 * i for i, w in enumerate(TENS_WORDS) if w != "_"}
 @dataclass
 class Chunk:
     """One piece of a command: ``kind`` is entity, me, pronoun, verb, prep, state, level, number, join, det,
-    percent or unknown."""
+    percent, partitive, vague (a level not said: "a bit"), unsaid (a destination not said: "away"), quant
+    (role: "all" or "both"), everything or unknown."""
 
     kind: str
     text: str
     terms: tuple[Term, ...] = ()
-    role: str = ""  # prep: its role table name; pronoun: the referent type
+    role: str = ""  # prep: its role table name; pronoun: the referent type; entity: "plural" ("lamps")
     frames: tuple[str, ...] = ()  # verb: frame kinds it may start
     state: str | None = None  # verb: implied state; state: the state; prep "on"/"off": also a state
     value: int | None = None  # level, number: percent
@@ -58,6 +59,10 @@ class Chunker:
             for variant in variants:
                 if variant not in self._full:
                     self._partial.setdefault(variant, []).append(term)
+        #: plurals of a name's last word ("lamps" for the left and the right lamp): all of them are meant
+        self._plural = {
+            p for p, ts in self._partial.items() if any(p == t.phrase.split()[-1] + "s" for t in ts)
+        }
         table: dict[str, tuple[int, Chunk | None]] = {}  # phrase -> (priority, chunk); None drops it
 
         def put(phrase: str, priority: int, chunk: Chunk | None) -> None:
@@ -74,6 +79,16 @@ class Chunker:
             put(phrase, 3, Chunk("partitive", phrase))
         for phrase in lang.percent:
             put(normalize(phrase) or phrase, 3, Chunk("percent", phrase))
+        for kind, phrases in (
+            ("vague", lang.vague_levels),
+            ("unsaid", lang.unsaid_goal),
+            ("everything", lang.everything),
+        ):
+            for phrase in phrases:
+                put(phrase, 3, Chunk(kind, phrase))
+        for quantity, phrases in lang.quantifiers.items():
+            for phrase in phrases:
+                put(phrase, 3, Chunk("quant", phrase, role=quantity))
         for state, phrases in lang.states.items():
             for phrase in phrases:
                 put(phrase, 4, Chunk("state", phrase, state=state))
@@ -98,6 +113,13 @@ class Chunker:
             put(phrase, 8, Chunk("pronoun", phrase, role=kind))
         put("me", 8, Chunk("me", "me"))
         self._table = table
+        #: the verb a command of noun phrases only is read with ("the remote please": "i want the remote")
+        self.bare_verb: Chunk | None = None
+        bare = next((v for v in lang.verbs if v.name == lang.bare_request), None)
+        if bare is not None:
+            self.bare_verb = Chunk(
+                "verb", bare.phrases[0], frames=bare.frames, state=bare.state, beneficiary=bare.beneficiary
+            )
         self._longest = max((len(p.split()) for p in list(table) + list(self._full)), default=1)
 
     # ------------------------------------------------------------------ chunks
@@ -117,7 +139,8 @@ class Chunker:
                     priority, chunk = self._table[phrase]
                     best = (length, priority, chunk)
                 elif phrase in self._partial and best is None:
-                    best = (length, 9, Chunk("entity", phrase, tuple(self._partial[phrase])))
+                    plural = "plural" if phrase in self._plural else ""
+                    best = (length, 9, Chunk("entity", phrase, tuple(self._partial[phrase]), role=plural))
                 if best is not None and best[0] == length:
                     break
             if number is not None and (best is None or number[0] - i >= best[0]):

@@ -1,9 +1,11 @@
 """Clauses of a command: chunks split into one clause per action, each with its noun phrases and roles.
 
 A new action starts at every verb (with or without "and" / "then" before it); "and" before a noun joins
-several objects in one action. A verb right after a bare motion verb says what to do ("go get the cup"). A
-clause without a verb is a device command when it names a device and a state ("lights off"), otherwise the
-words before the first verb are taken as address. See :mod:`knic.language.reader` for the whole reading.
+several objects in one action. A verb right after a bare motion verb says what to do ("go get the cup"); a
+verb that implies a state, said after the thing it is about, is that state ("i want the blinds open"). Words
+before the first verb are a clause of their own when they make a device command ("lights off") or, when the
+command has no verb at all, a request for the things they name ("the remote please"); otherwise they are
+taken as address. See :mod:`knic.language.reader` for the whole reading.
 """
 
 from __future__ import annotations
@@ -12,6 +14,8 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 
 from knic.language.chunks import Chunk
+
+_NOUNS = ("entity", "me", "pronoun", "everything")
 
 
 @dataclass
@@ -23,6 +27,7 @@ class Arg:
     prep_text: str = ""
     joined: bool = False  # "and" before it: the same role as the previous argument
     consumed: bool = False  # used to narrow down the previous argument
+    quantity: str | None = None  # "all" or "both" said before it
 
 
 @dataclass
@@ -34,14 +39,38 @@ class Clause:
     states: list[str] = field(default_factory=list)
     levels: list[int] = field(default_factory=list)
     missing: list[str] = field(default_factory=list)  # unknown words where a name was expected
+    unknown: list[str] = field(default_factory=list)  # other unknown words
+    vague: bool = False  # "a bit", "a little": a level meant but not said
+    unsaid_goal: bool = False  # "away", "back": a destination meant but not said
+
+    def empty(self) -> bool:
+        """Nothing said in the clause (besides its verb)."""
+        return not (self.args or self.states or self.levels or self.missing or self.unknown)
 
 
-def split_clauses(chunks: list[Chunk], names_device: Callable[[Chunk], bool]) -> list[Clause]:
+@dataclass
+class _Filling:
+    """What the words read so far in a clause leave pending for the next one."""
+
+    prep: Chunk | None = None
+    joined: bool = False
+    expecting: bool = False  # a noun phrase is expected (after a determiner or a preposition)
+    quantity: Chunk | None = None
+
+
+def split_clauses(
+    chunks: list[Chunk],
+    names_device: Callable[[Chunk], bool],
+    names_item: Callable[[Chunk], bool] = lambda chunk: False,
+    bare_verb: Chunk | None = None,
+) -> list[Clause]:
     """Split chunks into clauses at verbs.
 
     Args:
         chunks: the command's chunks (:class:`~knic.language.chunks.Chunker`).
         names_device: whether an entity chunk may name a device (for a verbless "lights off").
+        names_item: whether an entity chunk may name an object (for a verbless "the remote please").
+        bare_verb: the verb a command without any verb is read with when it names objects; None: refused.
     """
     chunks = [  # "her glasses": a possessive, not the pronoun
         Chunk("det", c.text)
@@ -52,48 +81,86 @@ def split_clauses(chunks: list[Chunk], names_device: Callable[[Chunk], bool]) ->
         else c
         for i, c in enumerate(chunks)
     ]
+    preamble = Clause(None)
     clauses: list[Clause] = []
-    current: Clause | None = None
-    preamble: list[Chunk] = []
-    pending_prep: Chunk | None = None
-    joined = False
-    expecting = False  # a noun phrase is expected (after a determiner or a preposition)
+    current = preamble
+    filling = _Filling()
     for index, chunk in enumerate(chunks):
         nxt = chunks[index + 1] if index + 1 < len(chunks) else None
         if chunk.kind == "verb":
-            if current is not None and current.verb is not None and not current.args and not current.states:
-                if "MOTION" in current.verb.frames and current.verb.frames == ("MOTION",):
+            if current.verb is not None and not current.args and not current.states:
+                if current.verb.frames == ("MOTION",):
                     current.verb = chunk  # "go get the cup": the second verb says what to do
                     continue
                 if current.verb.frames == ("OPERATING",) and chunk.frames[0] == "OPERATING":
                     current.verb = chunk
                     continue
+            if (
+                chunk.state
+                and current.args
+                and not current.states
+                and not current.levels
+                and (nxt is None or nxt.kind == "join")
+            ):
+                current.states.append(chunk.state)  # "i want the blinds open", "leave the lights on"
+                continue
             current = Clause(chunk)
             clauses.append(current)
-            pending_prep, joined = None, False
+            filling = _Filling()
             continue
-        if current is None:
-            preamble.append(chunk)
-            continue
-        if chunk.kind == "partitive" and current.args and nxt is not None and nxt.kind in ("entity", "det"):
-            container = current.args.pop()  # "a glass of water": the water is meant
-            pending_prep = Chunk("prep", container.prep_text, role=container.prep) if container.prep else None
-            joined = container.joined
-            continue
-        if chunk.kind == "join":
-            joined = nxt is not None and nxt.kind in ("entity", "det", "pronoun", "me", "unknown")
-            continue
-        add_to_clause(current, chunk, nxt, pending_prep, joined, expecting)
-        expecting = chunk.kind in ("det", "prep") or (expecting and chunk.kind == "unknown")
-        if chunk.kind == "prep":
-            pending_prep = chunk
-        elif chunk.kind in ("entity", "pronoun", "me"):
-            pending_prep, joined = None, False
-    if preamble:
-        verbless = _verbless(preamble, names_device)
-        if verbless is not None:
-            clauses.insert(0, verbless)
+        _fill(current, chunk, nxt, filling)
+    if preamble.empty():
+        return clauses
+    devices = [a for a in preamble.args if names_device(a.chunk)]
+    if devices and (preamble.states or preamble.levels):
+        clauses.insert(0, preamble)
+    elif (
+        not clauses
+        and bare_verb is not None
+        and not preamble.unknown
+        and not preamble.states
+        and (
+            preamble.missing
+            or any(a.chunk.kind == "everything" or names_item(a.chunk) for a in preamble.args)
+        )
+    ):
+        preamble.verb = bare_verb  # "the remote please": a request for it
+        clauses.append(preamble)
     return clauses
+
+
+def _fill(clause: Clause, chunk: Chunk, nxt: Chunk | None, filling: _Filling) -> None:
+    """Add one chunk (not a verb) to a clause, updating what is pending for the next chunk."""
+    if chunk.kind == "partitive" and clause.args and nxt is not None and nxt.kind in ("entity", "det"):
+        container = clause.args.pop()  # "a glass of water": the water is meant
+        filling.prep = Chunk("prep", container.prep_text, role=container.prep) if container.prep else None
+        filling.joined = container.joined
+        return
+    if chunk.kind == "join":
+        filling.joined = nxt is not None and nxt.kind in (*_NOUNS, "det", "unknown", "quant")
+        return
+    if chunk.kind == "quant":
+        if nxt is not None and nxt.kind in ("entity", "det"):
+            filling.quantity = chunk  # "all the lights", "both lamps"
+            return
+        chunk = Chunk("everything", chunk.text)  # "turn off all": all of what is not said
+    if chunk.kind == "vague":
+        clause.vague = True
+        return
+    if chunk.kind == "unsaid":
+        clause.unsaid_goal = True
+        return
+    quantity = filling.quantity.role if filling.quantity is not None and chunk.kind == "entity" else None
+    if quantity is None and chunk.kind == "entity" and chunk.role == "plural":
+        quantity = "all"  # "turn on the lamps": every lamp
+    add_to_clause(clause, chunk, nxt, filling.prep, filling.joined, filling.expecting)
+    if quantity is not None:
+        clause.args[-1].quantity = quantity
+    filling.expecting = chunk.kind in ("det", "prep") or (filling.expecting and chunk.kind == "unknown")
+    if chunk.kind == "prep":
+        filling.prep = chunk
+    elif chunk.kind in _NOUNS:
+        filling.prep, filling.joined, filling.quantity = None, False, None
 
 
 def add_to_clause(
@@ -104,23 +171,16 @@ def add_to_clause(
     joined: bool,
     expecting: bool = False,
 ) -> None:
-    """Add one chunk to a clause: a noun phrase as an argument, a state, a level, or a missing name."""
-    if chunk.kind in ("entity", "me", "pronoun"):
+    """Add one chunk to a clause: a noun phrase as an argument, a state, a level, or an unknown word (a
+    missing name when a noun phrase was expected and none follows)."""
+    if chunk.kind in _NOUNS:
         clause.args.append(Arg(chunk, prep.role if prep else None, prep.text if prep else "", joined))
     elif chunk.kind == "state" or (chunk.kind == "prep" and chunk.state):
         clause.states.append(chunk.state or "")
     elif chunk.kind in ("level", "number"):
         clause.levels.append(chunk.value or 0)
-    elif chunk.kind == "unknown" and expecting and (nxt is None or nxt.kind in ("join", "prep", "verb")):
-        clause.missing.append(chunk.text)
-
-
-def _verbless(preamble: list[Chunk], names_device: Callable[[Chunk], bool]) -> Clause | None:
-    clause = Clause(None)
-    for index, chunk in enumerate(preamble):
-        nxt = preamble[index + 1] if index + 1 < len(preamble) else None
-        add_to_clause(clause, chunk, nxt, None, False)
-    devices = [a for a in clause.args if names_device(a.chunk)]
-    if devices and (clause.states or clause.levels):
-        return clause
-    return None
+    elif chunk.kind == "unknown":
+        if expecting and (nxt is None or nxt.kind in ("join", "prep", "verb")):
+            clause.missing.append(chunk.text)
+        else:
+            clause.unknown.append(chunk.text)

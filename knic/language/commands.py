@@ -75,6 +75,11 @@ class CommandLanguage:
     closers: tuple[str, ...]
     source: str = ""
     lists: dict[str, tuple[str, ...]] = field(default_factory=dict)
+    vague_levels: tuple[str, ...] = ()
+    unsaid_goal: tuple[str, ...] = ()
+    quantifiers: dict[str, tuple[str, ...]] = field(default_factory=dict)
+    everything: tuple[str, ...] = ()
+    bare_request: str | None = None
 
     def verb_frames(self) -> dict[str, tuple[tuple[str, ...], str | None]]:
         """Verb phrase -> (frame kinds in order, implied state); a phrase in several classes gets all."""
@@ -148,7 +153,7 @@ def load_language(path: str | Path = DEFAULT_PATH) -> CommandLanguage:
             )
         )
     tables: dict[str, dict[str, tuple[str, ...]]] = {}
-    for key in ("prepositions", "states", "levels"):
+    for key in ("prepositions", "states", "levels", "quantifiers"):
         raw = data.get(key) or {}
         if not isinstance(raw, dict):
             raise LanguageError(f"{source}: '{key}' must map names to phrase lists")
@@ -164,6 +169,14 @@ def load_language(path: str | Path = DEFAULT_PATH) -> CommandLanguage:
             raise LanguageError(f"{source}: template {text!r} must start with a frame kind and ': '")
         templates.append((kind, body))
     pronouns = {str(k): str(v) for k, v in (data.get("pronouns") or {}).items()}
+    unknown_quantifiers = sorted(set(tables["quantifiers"]) - {"all", "both"})
+    if unknown_quantifiers:
+        raise LanguageError(
+            f"{source}: quantifiers are 'all' and 'both', not {', '.join(unknown_quantifiers)}"
+        )
+    bare = data.get("bare_request")
+    if bare is not None and bare not in {v.name for v in verbs}:
+        raise LanguageError(f"{source}: bare_request {bare!r} is not a verb class")
     language = CommandLanguage(
         fillers=_phrases(data, "fillers", source),
         joiners=_phrases(data, "joiners", source),
@@ -179,11 +192,19 @@ def load_language(path: str | Path = DEFAULT_PATH) -> CommandLanguage:
         openers=_phrases(data, "openers", source),
         closers=_phrases(data, "closers", source),
         source=source,
+        vague_levels=_phrases(data, "vague_levels", source),
+        unsaid_goal=_phrases(data, "unsaid_goal", source),
+        quantifiers=tables["quantifiers"],
+        everything=_phrases(data, "everything", source),
+        bare_request=bare,
     )
     lists: dict[str, tuple[str, ...]] = {v.name: v.phrases for v in verbs}
     spoken = _phrases(data, "spoken_determiners", source) or language.determiners
     lists.update(det=spoken, fillers=language.fillers, joiners=language.joiners)
     lists.update(percent=language.percent, openers=language.openers, closers=language.closers)
+    lists.update(vague_levels=language.vague_levels, unsaid_goal=language.unsaid_goal)
+    lists.update(everything=language.everything)
+    lists.update({f"quantifier_{k}": v for k, v in language.quantifiers.items()})
     object.__setattr__(language, "lists", lists)
     language.template_nodes()  # fail early on a malformed template
     return language

@@ -32,7 +32,7 @@ import copy
 from collections.abc import Sequence
 
 from core.errors import LanguageError
-from knic.language.chains import Reading, chain, referent
+from knic.language.chains import AmbiguityError, Reading, chain, referent
 from knic.language.chunks import Chunk, Chunker
 from knic.language.clauses import Arg, Clause, split_clauses
 from knic.language.commands import CommandLanguage, command_language
@@ -41,10 +41,6 @@ from knic.language.roles import INTERPRETERS
 from knic.language.vocabulary import Term, Vocabulary, level_percent, normalize
 
 MAX_ACTIONS = 3
-
-
-class AmbiguityError(LanguageError):
-    """A name fits several things; the message is the question to ask back."""
 
 
 class Reader:
@@ -61,7 +57,12 @@ class Reader:
 
     def clauses(self, chunks: list[Chunk]) -> list[Clause]:
         """Split chunks into clauses at verbs (see :mod:`knic.language.clauses`)."""
-        return split_clauses(chunks, lambda chunk: any(self.is_a(t, "device") for t in chunk.terms))
+        return split_clauses(
+            chunks,
+            lambda chunk: any(self.is_a(t, "device") for t in chunk.terms),
+            lambda chunk: any(self.is_a(t, "item") for t in chunk.terms),
+            self.chunker.bare_verb,
+        )
 
     # ------------------------------------------------------------------ reading
 
@@ -86,11 +87,14 @@ class Reader:
             raise LanguageError(f"{len(clauses)} actions in one command; I take up to {MAX_ACTIONS} at once")
         frames: list[CommandFrame] = []
         groups: list[list[CommandFrame]] = []
+        ask_where: set[int] = set()  # "take the cup away": where to, unless a later action says so
         for clause in clauses:
             group = self._frames_of(clause, frames, groups)
+            if clause.unsaid_goal and clause.verb is not None and clause.verb.frames[0] == "TAKING":
+                ask_where.update(range(len(frames), len(frames) + len(group)))
             groups.append(group)
             frames.extend(group)
-        return chain(frames, self.vocabulary)
+        return chain(frames, self.vocabulary, ask_where=ask_where)
 
     def _frames_of(
         self, clause: Clause, previous: list[CommandFrame], groups: list[list[CommandFrame]]
@@ -140,16 +144,35 @@ class Reader:
             return [SPEAKER]
         if chunk.kind == "pronoun":
             return referent(chunk, categories, groups, self.vocabulary)
+        if chunk.kind == "everything":  # "bring me everything": which things is not said
+            things = " or ".join(_PLURALS.get(c, c) for c in categories)
+            raise AmbiguityError(f"which {things} do you mean by '{chunk.text}'? Name them, please")
         terms = [t for t in chunk.terms if any(self.is_a(t, c) for c in categories)]
         if not terms:
             kinds = " or ".join(_NAMES.get(c, c) for c in categories)
             raise LanguageError(f"'{chunk.text}' is not {kinds}")
         symbols = list(dict.fromkeys(t.symbol for t in terms))
+        if arg.quantity == "all" and not ({"room", "furniture"} & set(categories)):
+            group = self.vocabulary.group_of(symbols) if len(symbols) > 1 else None
+            return [group] if group is not None else symbols
+        if arg.quantity == "both":
+            return self._both(chunk, symbols)
         if len(symbols) > 1:
-            options = [self.vocabulary.phrase_of(s) for s in symbols]
-            listed = ", ".join(f"the {o}" for o in options[:-1]) + f" or the {options[-1]}"
-            raise AmbiguityError(f"which {chunk.text} do you mean: {listed}?")
+            raise AmbiguityError(f"which {chunk.text} do you mean: {self._listed(symbols)}?")
         return symbols
+
+    def _both(self, chunk: Chunk, symbols: list[str]) -> list[str]:
+        """The two things "both ..." names: two names, or one group of two; else a question."""
+        if len(symbols) == 2 or (len(symbols) == 1 and len(self.vocabulary.members(symbols[0])) == 2):
+            return symbols
+        options = symbols if len(symbols) > 1 else list(self.vocabulary.members(symbols[0]))
+        if len(options) < 2:
+            raise LanguageError(f"there is only one {chunk.text} here, not two")
+        raise AmbiguityError(f"which two {chunk.text} do you mean: {self._listed(options, 'and')}?")
+
+    def _listed(self, symbols: Sequence[str], last: str = "or") -> str:
+        options = [self.vocabulary.phrase_of(s) for s in symbols]
+        return ", ".join(f"the {o}" for o in options[:-1]) + f" {last} the {options[-1]}"
 
     def narrow(self, args: list[Arg]) -> None:
         """Narrow furniture and devices by the place said right after them ("the table in the kitchen",
@@ -170,12 +193,22 @@ class Reader:
             narrowable = [t for t in head.chunk.terms if self.is_a(t, "furniture") or self.is_a(t, "device")]
             if not rooms or not narrowable or len(narrowable) != len(head.chunk.terms):
                 continue
-            kept = tuple(t for t in head.chunk.terms if any(self._within(t, r) for r in rooms))
+            grouped = any(t.is_group for t in head.chunk.terms)
+            candidates = self._members(head.chunk.terms) if grouped else head.chunk.terms
+            kept = tuple(t for t in candidates if any(self._within(t, r) for r in rooms))
             if not kept:
                 where = self.vocabulary.phrase_of(rooms[0].symbol)
                 raise LanguageError(f"there is no {head.chunk.text} in the {where} in this world")
-            head.chunk = Chunk("entity", head.chunk.text, kept)
+            head.chunk = Chunk("entity", head.chunk.text, kept, role=head.chunk.role)
+            if grouped:  # "the lights in the bedroom": those of the group that are there
+                head.quantity = head.quantity or "all"
             place.consumed = True
+
+    def _members(self, terms: Sequence[Term]) -> tuple[Term, ...]:
+        """The terms of every member of the groups among ``terms`` (one term per member symbol)."""
+        symbols = {m for t in terms for m in t.members}
+        firsts = {t.symbol: t for t in reversed(self.vocabulary.terms) if t.symbol in symbols}
+        return tuple(firsts[s] for s in sorted(firsts))
 
     def _within(self, term: Term, place: Term) -> bool:
         if place.symbol in self.vocabulary.locations.get(term.symbol, ()):
@@ -192,6 +225,13 @@ _NAMES = {
     "furniture": "a piece of furniture",
     "device": "a device",
     "light": "a light",
+}
+_PLURALS = {
+    "item": "objects",
+    "person": "people",
+    "room": "rooms",
+    "furniture": "furniture",
+    "device": "devices",
 }
 
 

@@ -14,15 +14,18 @@ from collections.abc import Callable, Sequence
 from typing import Protocol
 
 from core.errors import LanguageError
+from knic.language.chains import AmbiguityError
 from knic.language.clauses import Arg, Clause
 from knic.language.frames import SPEAKER, CommandFrame
-from knic.language.vocabulary import Term
+from knic.language.vocabulary import Term, Vocabulary, level_percent
 
 Frames = list[CommandFrame]
 
 
 class Resolver(Protocol):
     """What the interpreters ask of the reader (:class:`knic.language.reader.Reader`)."""
+
+    vocabulary: Vocabulary
 
     def is_a(self, term: Term, category: str) -> bool:
         """Whether a name's type is ``category`` or a subtype of it."""
@@ -94,6 +97,9 @@ def _carry(
             roles.setdefault("source", reader.resolve(arg, ("room", "furniture"), previous, groups)[0])
     if not themes:
         raise LanguageError(f"{_verb(clause)} what? I heard no object of this world")
+    if kind == "PLACING" and "goal" not in roles and clause.unsaid_goal:  # "put the mug back"
+        thing = reader.vocabulary.phrase_of(themes[0])
+        raise AmbiguityError(f"where should I put the {thing}: on which piece of furniture or in which room?")
     if kind == "PLACING" and "goal" not in roles:
         raise LanguageError(f"{_verb(clause)} the {themes[0]} where? I heard no place")
     if kind == "TAKING" and ("goal" in roles or "beneficiary" in roles):
@@ -116,10 +122,14 @@ def _searching(reader: Resolver, clause: Clause, previous: Frames, groups: list[
     reader.narrow(args)
     themes: list[str] = []
     ground: str | None = None
+    # "check the kitchen for the lemon": the thing looked for after "for", the place said bare
+    sought = any(a.prep == "beneficiary" and a.chunk.kind != "me" for a in args)
     for arg in args:
         if arg.consumed:
             continue
-        if arg.prep is None:
+        if arg.prep is None and sought and _names_only_places(reader, arg):
+            ground = reader.resolve(arg, ("room", "furniture"), previous, groups)[0]
+        elif arg.prep is None or (arg.prep == "beneficiary" and arg.chunk.kind != "me"):
             themes += reader.resolve(arg, ("item", "person"), previous, groups)
         elif arg.prep in ("place", "source"):
             ground = reader.resolve(arg, ("room", "furniture"), previous, groups)[0]
@@ -127,6 +137,11 @@ def _searching(reader: Resolver, clause: Clause, previous: Frames, groups: list[
         raise LanguageError(f"{_verb(clause)} what? I heard no object or person of this world")
     extra = {"ground": ground} if ground else {}
     return [CommandFrame("SEARCHING", {"theme": t, **extra}) for t in dict.fromkeys(themes)]
+
+
+def _names_only_places(reader: Resolver, arg: Arg) -> bool:
+    terms = arg.chunk.terms
+    return bool(terms) and all(reader.is_a(t, "room") or reader.is_a(t, "furniture") for t in terms)
 
 
 def _accompanying(reader: Resolver, clause: Clause, previous: Frames, groups: list[Frames]) -> Frames:
@@ -143,9 +158,11 @@ def _accompanying(reader: Resolver, clause: Clause, previous: Frames, groups: li
             goal = reader.resolve(arg, ("room", "furniture"), previous, groups)[0]
     if not people:
         raise LanguageError(f"{_verb(clause)} whom? I heard no person of this world")
-    if goal is None:
+    if goal is None and SPEAKER in people:
         raise LanguageError(f"{_verb(clause)} {people[0]} where? I heard no room")
-    return [CommandFrame("ACCOMPANYING", {"theme": p, "goal": goal}) for p in dict.fromkeys(people)]
+    # no room said ("fetch tracy"): a later action may say where (else the chain asks)
+    where = {"goal": goal} if goal is not None else {}
+    return [CommandFrame("ACCOMPANYING", {"theme": p, **where}) for p in dict.fromkeys(people)]
 
 
 def _motion(reader: Resolver, clause: Clause, previous: Frames, groups: list[Frames]) -> Frames:
@@ -181,14 +198,28 @@ def _operating(reader: Resolver, clause: Clause, previous: Frames, groups: list[
         devices += reader.resolve(arg, ("device",), previous, groups)
     if not devices:
         raise LanguageError(f"{_verb(clause)} what? I heard no light, dimmer or blinds of this world")
+    if clause.vague and not clause.levels:
+        _ask_level(reader.vocabulary, list(dict.fromkeys(devices)))
     state = clause.verb.state if clause.verb is not None else None
     if clause.levels:
         state = str(clause.levels[-1])
     elif clause.states:
         state = clause.states[-1]
     if state is None:
-        raise LanguageError(f"{_verb(clause)} the {' and '.join(devices)} to what? Say on, off or a level")
+        named = " and the ".join(reader.vocabulary.phrase_of(d) for d in devices)
+        raise LanguageError(f"{_verb(clause)} the {named} to what? Say on, off or a level")
     return [CommandFrame("OPERATING", {"device": d, "state": state}) for d in dict.fromkeys(devices)]
+
+
+def _ask_level(vocabulary: Vocabulary, devices: list[str]) -> None:
+    """A level meant but not said ("turn the dimmer up a bit"): raise the question to ask back."""
+    named = " and the ".join(vocabulary.phrase_of(d) for d in devices)
+    members = [m for d in devices for m in vocabulary.members(d)]
+    if all(vocabulary.is_subtype(vocabulary.type_of(m) or "", "light") for m in members):
+        raise AmbiguityError(f"the {named} can only be switched on or off: on or off?")
+    levels = sorted(p for p in (level_percent(s) for s in vocabulary.instances) if p is not None)
+    offered = ", ".join(str(p) for p in levels[:-1]) + f" or {levels[-1]}" if levels else "a level"
+    raise AmbiguityError(f"how far should I set the {named}: {offered} percent?")
 
 
 Interpreter = Callable[[Resolver, Clause, Frames, list[Frames]], Frames]

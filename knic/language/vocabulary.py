@@ -334,6 +334,14 @@ class Vocabulary:
                 return term.members
         return (symbol,)
 
+    def group_of(self, symbols: Iterable[str]) -> str | None:
+        """The group whose members are exactly ``symbols`` ({left, right bedroom light}: bedroom_lights)."""
+        wanted = set(symbols)
+        for term in self._terms:
+            if term.is_group and set(term.members) == wanted:
+                return term.symbol
+        return None
+
     def phrase_of(self, symbol: str) -> str:
         """The first spoken phrase for a symbol (for replies), or the symbol spoken."""
         for term in self._terms:
