@@ -282,3 +282,35 @@ def test_a_person_seen_leaving_and_then_lost_is_retracted(
     send(bus, cku("annie", Kind.PERSON, (6.0, 6.6, 0.9), 9.0, cls="person", lost=True))
     kp.step(9.0)
     assert not paper_kb.facts("person_at", "annie")
+
+
+def test_an_item_glimpsed_twice_a_few_seconds_apart_is_placed(
+    paper_kb: KnowledgeBase, paper_locations: LocationModel
+) -> None:
+    # a small item behind another is seen in glimpses: two sightings 3 s apart are consistent evidence
+    bus = Bus()
+    publish_place_ckus(bus, paper_locations)
+    kp = ObjectPlaceKP(bus, paper_kb, needed=2)
+    for t in (1.0, 4.2):
+        send(bus, cku("glasses", Kind.OBJECT, SHELF_TOP, t))
+        kp.step(t)
+    assert paper_kb.holds("object_on", "glasses", "entrance_shelf")
+
+
+def test_an_explored_room_leaves_a_tracked_item_to_kgm2(
+    paper_kb: KnowledgeBase, paper_locations: LocationModel
+) -> None:
+    # the room's coverage says nothing of the item's own spot: while KGM-2 tracks the item (no lost CKU),
+    # only a lost track retracts it
+    bus = Bus()
+    publish_place_ckus(bus, paper_locations)
+    kp = ObjectPlaceKP(bus, paper_kb, needed=2, explored_grace_s=5.0)
+    for t in (1.0, 1.2):
+        send(bus, cku("glasses", Kind.OBJECT, SHELF_TOP, t))
+    kp.step(1.2)
+    paper_kb.add_fact("explored", "entrance", source="kp'.explored", at=30.0, status=BeliefStatus.OBSERVED)
+    kp.step(30.0 + kp.explored_settle_s)
+    assert paper_kb.holds("object_at", "glasses", "entrance")
+    send(bus, cku("glasses", Kind.OBJECT, SHELF_TOP, 40.0, lost=True))
+    kp.step(40.0)
+    assert not paper_kb.facts("object_at", "glasses")
