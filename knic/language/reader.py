@@ -163,8 +163,11 @@ class Reader:
 
     def _both(self, chunk: Chunk, symbols: list[str]) -> list[str]:
         """The two things "both ..." names: two names, or one group of two; else a question."""
-        if len(symbols) == 2 or (len(symbols) == 1 and len(self.vocabulary.members(symbols[0])) == 2):
+        if len(symbols) == 1 and len(self.vocabulary.members(symbols[0])) == 2:
             return symbols
+        if len(symbols) == 2:
+            group = self.vocabulary.group_of(symbols)
+            return [group] if group is not None else symbols
         options = symbols if len(symbols) > 1 else list(self.vocabulary.members(symbols[0]))
         if len(options) < 2:
             raise LanguageError(f"there is only one {chunk.text} here, not two")

@@ -259,3 +259,95 @@ def test_a_refused_goal_adds_nothing(fresh_kb: Any) -> None:
     with pytest.raises(LanguageError, match="refused"):
         add_goals(fresh_kb, goals)
     assert list(fresh_kb.goals()) == before
+
+
+# Issue 13: phrasings people use that name no verb of the templates, leave something unsaid, or quantify.
+PHRASED = [
+    ("go check whether the tablet is in the living room", ["SEARCHING theme=tablet ground=living_room"]),
+    ("see if tracy is in the kitchen", ["SEARCHING theme=tracy ground=kitchen"]),
+    ("check the bedroom for my glasses", ["SEARCHING theme=glasses ground=bedroom"]),
+    ("fetch tracy and bring her to the bedroom", ["ACCOMPANYING theme=tracy goal=bedroom"]),
+    ("make sure the hallway light is off", ["OPERATING device=hallway_light state=off"]),
+    ("make sure the mug is on the kitchen table", ["PLACING theme=mug goal=kitchen_table"]),
+    ("the remote please", ["BRINGING theme=remote beneficiary=me"]),
+    ("a cup of water please", ["BRINGING theme=water beneficiary=me"]),
+    ("can I have the tablet", ["BRINGING theme=tablet beneficiary=me"]),
+    ("I'd like the tablet brought to the kitchen", ["BRINGING theme=tablet goal=kitchen"]),
+    ("i need the blinds open", ["OPERATING device=bedroom_blinds state=open"]),
+    ("take the cup back to the kitchen", ["BRINGING theme=cup goal=kitchen"]),
+    ("take the cup away and put it on the bin", ["TAKING theme=cup", "PLACING theme=cup goal=bin"]),
+    ("set the dimmer to thirty percent please", None),  # refused below: no such level
+    ("turn the dimmer to 25%", ["OPERATING device=living_room_dimmer state=25"]),
+    ("turn off the lights in the bedroom", ["OPERATING device=bedroom_lights state=off"]),
+    ("switch off every light", ["OPERATING device=all_lights state=off"]),
+    ("turn on both lamps", ["OPERATING device=bedroom_lights state=on"]),
+]
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"), [p for p in PHRASED if p[1]], ids=[p[0] for p in PHRASED if p[1]]
+)
+def test_people_phrasings_are_read(vocabulary: Vocabulary, text: str, frames: list[str]) -> None:
+    result = understand(text, vocabulary)
+    assert result.accepted, result.reason
+    assert [f.to_dict() for f in result.frames] == [frame(f) for f in frames]
+
+
+# text -> a word the question back must contain: what is ambiguous or unsaid is asked, never guessed
+ASKED = [
+    ("fetch tracy", "where should i take tracy"),
+    ("take the cup away", "where should i take the cup"),
+    ("put the mug back", "where should i put the mug"),
+    ("turn the dimmer up a bit", "25, 50"),
+    ("open the blinds a little", "how far"),
+    ("dim the lights a bit", "on or off"),
+    ("turn off both the lights", "which two lights"),
+    ("bring me everything", "which objects"),
+    ("turn everything off", "which devices"),
+    ("make sure the light is on", "which light"),
+]
+
+
+@pytest.mark.parametrize(("text", "clue"), ASKED, ids=[a[0] for a in ASKED])
+def test_what_is_unsaid_or_ambiguous_is_asked(vocabulary: Vocabulary, text: str, clue: str) -> None:
+    result = understand(text, vocabulary)
+    assert not result.accepted and result.goals == ()
+    assert clue in result.question.lower()
+    assert result.to_dict()["question"] == result.question
+
+
+def test_what_the_world_lacks_is_named(vocabulary: Vocabulary) -> None:
+    assert "30 percent" in understand("set the dimmer to thirty percent please", vocabulary).reason
+    assert "'banana'" in understand("the banana please", vocabulary).reason
+    assert "'banana'" in understand("can i have the banana", vocabulary).reason
+    # a person alone is no request, and out-of-domain talk stays refused
+    assert "no action" in understand("tracy please", vocabulary).reason
+    assert "no action" in understand("the tablet is in the kitchen", vocabulary).reason
+
+
+def test_quantifiers_without_a_lexicon() -> None:
+    types = {"object": None, "entity": "object", "device": "object", "light": "device", "room": "object"}
+    types.update(person="entity", robot="entity")
+    lamps = {"desk_lamp": "light", "floor_lamp": "light", "den": "room", "ann": "person", "bot": "robot"}
+    two = Vocabulary.from_instances(lamps, types, predicates={"light_on": (("?d", "light"),)})
+    result = understand("turn on both lamps", two, speaker="ann")
+    assert [str(g) for g in result.goals] == ["(light_on desk_lamp)", "(light_on floor_lamp)"]
+    three = Vocabulary.from_instances(
+        {**lamps, "wall_lamp": "light"}, types, predicates={"light_on": (("?d", "light"),)}
+    )
+    assert understand("turn on all the lamps", three, speaker="ann").accepted
+    asked = understand("turn on both lamps", three, speaker="ann")
+    assert "which two lamps" in asked.question.lower()
+
+
+def test_the_command_language_checks_its_new_tables(tmp_path: Any) -> None:
+    from knic.language.commands import DEFAULT_PATH, load_language
+
+    text = DEFAULT_PATH.read_text(encoding="utf-8")
+    bad = tmp_path / "commands.yaml"
+    bad.write_text(text.replace("bare_request: want", "bare_request: wish"), encoding="utf-8")
+    with pytest.raises(LanguageError, match="bare_request 'wish' is not a verb class"):
+        load_language(bad)
+    bad.write_text(text.replace("  both: [both,", "  few: [both,"), encoding="utf-8")
+    with pytest.raises(LanguageError, match="quantifiers are 'all' and 'both', not few"):
+        load_language(bad)
