@@ -9,7 +9,8 @@ goals, so the dispatcher is not stepped. Measured, in simulated time:
   truth: ``precision`` (share of believed facts that are true) and ``recall`` (share of true facts the robot
   could have perceived that are believed). A true fact about an item or person counts as perceivable once the
   entity was in a camera frame (the oracle's :meth:`~worlds.oracle.Oracle.frame_truth`) after the fact became
-  true; the robot's room, devices and sounds always count.
+  true; the robot's room, devices and sounds always count. The visitor is a stranger to the robot: the
+  instance perception makes for him (``visitor_1``) is compared as him (the stranger last in view).
 * ``staleness_median_s``: for each change of a perceivable true fact (appearing or disappearing, sampled at
   5 Hz), the time until the knowledge base made the same change; changes it never made are counted in
   ``changes_unreflected``.
@@ -26,7 +27,9 @@ goals, so the dispatcher is not stepped. Measured, in simulated time:
   (``missed_samples``): which fact kinds cost precision and recall.
 
 * ``families``: per predicate family (:data:`FAMILIES`: ``robot_at``, ``object_at``, ``object_on``,
-  ``person_at``, ``person_near``, ``device``) of the companion episode: ``precision`` and ``recall`` pooled
+  ``person_at``, ``person_near``, ``device``) of the companion episode (an item a person carries is in no
+  room's ``object_at`` but in their hands, ``(has ?p ?o)``: both are where an item is, the ``object_at``
+  family): ``precision`` and ``recall`` pooled
   over the one-second samples, ``f1``, ``assert_latency_p50_s`` / ``assert_latency_p95_s`` and
   ``retract_latency_p50_s`` (from the truth's change to the knowledge base's, for the changes counted in
   the staleness), ``change_latency_after_seen_p50_s`` (the same from the first camera frame that showed the
@@ -72,6 +75,7 @@ COMPARED = frozenset(
         "person_at",
         "object_at",
         "object_on",
+        "has",
         "person_near",
         "sound_at",
         "light_on",
@@ -258,6 +262,25 @@ class _Recorder:
     reversals: list[tuple[Atom, float, float]] = field(default_factory=list)
     #: fact -> simulated times at which its truth changed (sampled at 5 Hz)
     truth_changes: dict[Atom, list[float]] = field(default_factory=dict)
+    #: people the robot does not know beforehand (the truth's names)
+    strangers: frozenset[str] = frozenset()
+    #: instance perception made for a stranger it met (``visitor_1``) -> the stranger's name in the truth
+    aliases: dict[str, str] = field(default_factory=dict)
+
+    def alias(self, atom: Atom) -> Atom:
+        """The atom in the truth's names (a met visitor's instance as the stranger it is)."""
+        return tuple(self.aliases.get(a, a) for a in atom)
+
+    def bind(self, instance: str) -> None:
+        """A person instance made for someone met is, for the referee, the stranger last in the camera's view
+        and not bound yet (none: the instance stays unnamed and its facts count as false)."""
+        free = [
+            (self.seen[s][-1], s)
+            for s in self.strangers
+            if self.seen.get(s) and s not in self.aliases.values()
+        ]
+        if instance not in self.aliases and free:
+            self.aliases[instance] = max(free)[1]
 
     def tally(self, facts: set[Atom], slot: int) -> None:
         for fact in facts:
@@ -322,7 +345,9 @@ def _episode(parts: Assembly, duration: float) -> dict[str, Any]:
     """Patrol the assembled robot (no dispatcher) for ``duration`` simulated seconds under the probes."""
     robot, oracle, kb, world = parts.robot, parts.oracle, parts.kb, parts.world
     entities = frozenset(world.items) | frozenset(world.people)
-    rec = _Recorder(entities)
+    rec = _Recorder(
+        entities, strangers=frozenset(p for p, person in world.people.items() if not person.known)
+    )
     camera_hz = parts.pipeline.component("kp.camera_objects").frequency
     loop: RunLoop[None] = RunLoop(parts.scheduler)
     loop.add_probe(Patrol.name, Patrol.frequency, Patrol(parts).step)
@@ -331,9 +356,11 @@ def _episode(parts: Assembly, duration: float) -> dict[str, Any]:
     loop.add_probe("bench.compare", 1.0, lambda now: _compare(oracle, kb, rec, now))
 
     def reflect(change: Any) -> None:
+        if change.kind.value == "add_instance" and change.name == "person" and change.args[0] not in entities:
+            rec.bind(change.args[0])
         if change.kind.value not in ("add_fact", "remove_fact"):
             return
-        atom = (change.name, *change.args)
+        atom = rec.alias((change.name, *change.args))
         added = change.kind.value == "add_fact"
         rec.kb_change(atom, added, change.time)
         for ch in rec.pending:
@@ -433,13 +460,13 @@ def _truth(oracle: Oracle) -> set[Atom]:
     return {f for f in oracle.ground_truth_facts() if f[0] in COMPARED}
 
 
-def _beliefs(kb: Any) -> set[Atom]:
-    return {(f.predicate, *f.args) for f in kb.facts() if f.predicate in COMPARED}
+def _beliefs(kb: Any, rec: _Recorder) -> set[Atom]:
+    return {rec.alias((f.predicate, *f.args)) for f in kb.facts() if f.predicate in COMPARED}
 
 
 def _changes(oracle: Oracle, kb: Any, rec: _Recorder, now: float) -> None:
     truth = _truth(oracle)
-    beliefs = _beliefs(kb)
+    beliefs = _beliefs(kb, rec)
     for fact in truth ^ set(rec.truth_since):
         rec.truth_changes.setdefault(fact, []).append(now)
     for fact in truth - set(rec.truth_since):
@@ -458,7 +485,7 @@ def _changes(oracle: Oracle, kb: Any, rec: _Recorder, now: float) -> None:
 
 def _compare(oracle: Oracle, kb: Any, rec: _Recorder, now: float) -> None:
     truth = _truth(oracle)
-    beliefs = _beliefs(kb)
+    beliefs = _beliefs(kb, rec)
     if beliefs:
         rec.precision.append(len(beliefs & truth) / len(beliefs))
     perceivable = {f for f in truth if rec.perceivable(f, rec.truth_since.get(f, now))}
@@ -467,7 +494,8 @@ def _compare(oracle: Oracle, kb: Any, rec: _Recorder, now: float) -> None:
     rec.tally(beliefs, 0)
     rec.tally(beliefs - truth, 1)
     for fact in beliefs:
-        prov = kb.why(Fact(fact[0], fact[1:]))
+        named = {v: k for k, v in rec.aliases.items()}  # back to the knowledge base's names
+        prov = kb.why(Fact(fact[0], tuple(named.get(a, a) for a in fact[1:])))
         if prov is not None and prov.status != BeliefStatus.ASSUMED:
             counts = rec.fresh.setdefault(fact[0], [0, 0])
             counts[0] += 1
