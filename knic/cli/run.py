@@ -20,6 +20,11 @@ Roles (``knic/roles.yaml``) decide what happens before the goals reach the knowl
   the command line are the operator's (provenance source ``operator``) and run as usual, with the perception
   pipeline grounding the knowledge base at the role's rates.
 * other roles: the robot repeats each command back and goes ahead.
+
+A role with revisit data (companion) also says what the robot does when it has nothing to do (no goal, or
+every open goal dropped and waiting for news, and no dialogue going on): it goes back to look at the people
+whose belief aged and at the rooms not looked at for longest (:mod:`knic.system.revisits`; ``revisit`` and
+``revisited`` task events in the trace). ``--no-revisits`` keeps it where it is.
 """
 
 from __future__ import annotations
@@ -123,6 +128,11 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         "--max-sim-time", type=float, default=600.0, metavar="S", help="simulated seconds (default 600)"
     )
     parser.add_argument("--gui", action="store_true", help="open the pybullet GUI window")
+    parser.add_argument(
+        "--no-revisits",
+        action="store_true",
+        help="when it has nothing to do, the robot waits where it is instead of the role's revisits",
+    )
     parser.add_argument("--json", action="store_true", help="print only a JSON summary at the end")
 
 
@@ -162,6 +172,7 @@ def run(args: argparse.Namespace) -> int:
             journal=journal,
             trace_stream=trace_file,
             gui=args.gui,
+            revisits=not args.no_revisits,
         )
         args.speaker = args.speaker or runtask.default_speaker(config.world)
         with KnicSystem(config) as system, serving(args, system, journal), ros_attached(args, system):

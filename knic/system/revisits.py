@@ -16,7 +16,8 @@ whose belief aged first, then the rooms not looked at for longest, the role's ro
 
 It reads beliefs only (the knowledge base, the dispatcher's book), never the simulator's truth. Every trip is
 a ``task`` trace event ``revisit`` (``data``: the room and why: ``person`` with the person whose belief aged,
-or ``room``), every completed sweep a ``revisited`` event. Times are simulated seconds.
+or ``room``), every completed sweep a ``revisited`` event, a trip given up because the robot is needed a
+``revisit interrupted`` event. Times are simulated seconds.
 """
 
 from __future__ import annotations
@@ -81,7 +82,7 @@ class RevisitDriver(Component):
         """Start, advance or abandon a revisit (see the module docstring)."""
         if not self.free() or any(hold() for hold in self.holds):
             self._free_since = None
-            self._yield()
+            self._yield(now)
             return
         if self._free_since is None:
             self._free_since = now
@@ -125,7 +126,7 @@ class RevisitDriver(Component):
         self.room, self.arrived = room, None
         self._event("revisit", now, room, "person" if self.for_person else "room")
 
-    def _yield(self) -> None:
+    def _yield(self, now: float) -> None:
         """Leave the robot to whoever needs it: stop the driver's own trip if it is still under way."""
         if self.room is None:
             return
@@ -134,6 +135,7 @@ class RevisitDriver(Component):
             self.robot.stop()
         if self.arrived is not None:
             self.robot.pan_camera(0.0)
+        self._event("revisit interrupted", now, self.room, "person" if self.for_person else "room")
         self.room, self.arrived = None, None
 
     def _event(self, what: str, now: float, room: str, why: str) -> None:
