@@ -336,14 +336,13 @@ class CognitiveLayer(Component):
         return True
 
     def _publish_track(self, track: Track, det: LLKU, policy: Policy, stamp: float) -> None:
-        x, y, z = (float(v) for v in track.centroid)
         cku = CKU(
             symbol=track.symbol,
             cls=track.cls,
             kind=det.kind,
             octomap=track.octomap.tree,
             keys=track.octomap.read_keys,  # a query the KP' run when they read the keys, not now
-            position=(x, y, z),
+            position=track.centroid,
             role_priority=policy.priority,
             stamp=stamp,
             confidence=track.confidence,

@@ -139,20 +139,23 @@ class Tracker:
         used: set[int] = set()
         pending: list[LLKU] = []
         for det in self._one_per_identity(detections):
-            track = self.by_symbol(det.identity) if det.identity else None
+            track = self._by_symbol.get(det.identity) if det.identity else None
             if track is None:
                 pending.append(det)
             elif self._jump_confirmed(track, det, now):
                 self._update(track, det, now)
                 used.add(track.track_id)
                 result.updated.append((track, det))
-        matched: set[int] = set()
-        free = []
         if pending:
-            free = [
-                t for t in self.tracks.values() if t.track_id not in used and not self._claimed(t, pending)
-            ]
-        if pending and free:
+            self._match_pending(pending, used, result, now)
+        self._count_misses(used, visible, result, now)
+        return result
+
+    def _match_pending(self, pending: list[LLKU], used: set[int], result: Association, now: float) -> None:
+        """Lines 2.1.2-2.1.15 for detections no identity placed: greedy nearest matching, then new tracks."""
+        matched: set[int] = set()
+        free = [t for t in self.tracks.values() if t.track_id not in used and not self._claimed(t, pending)]
+        if free:
             det_pos = np.array([d.position for d in pending])
             trk_pos = np.array([t.centroid for t in free])
             dist = np.linalg.norm(det_pos[:, None, :] - trk_pos[None, :, :], axis=2)
@@ -174,8 +177,6 @@ class Tracker:
                 track = self._create(det, now)
                 used.add(track.track_id)
                 result.created.append((track, det))
-        self._count_misses(used, visible, result, now)
-        return result
 
     def _jump_confirmed(self, track: Track, det: LLKU, now: float) -> bool:
         """Whether an identified detection may update its track: near it, or a far sighting seen again.
@@ -209,6 +210,8 @@ class Tracker:
         A symbol names one individual, so it has at most one track; a second detection with the same identity
         in one scan is a false positive or a confusion and is discarded (counted in :attr:`duplicates`).
         """
+        if len(detections) == 1:
+            return list(detections)
         best: dict[str, LLKU] = {}
         out: list[LLKU] = []
         for det in detections:
@@ -244,6 +247,8 @@ class Tracker:
     def _count_misses(
         self, used: set[int], visible: Visibility | None, result: Association, now: float | None = None
     ) -> None:
+        if len(used) >= len(self.tracks):  # every track was updated by this scan
+            return
         stale = [t for t in self.tracks.values() if t.track_id not in used]
         if not stale:
             return
@@ -296,8 +301,10 @@ class Tracker:
         self._count_face(track, det)
 
     def _count_face(self, track: Track, det: LLKU) -> None:
+        if not self.face_pixels or det.identity is not None:
+            return
         pixels = det.attributes.get("pixels", 0)
-        if not self.face_pixels or det.identity is not None or not isinstance(pixels, int | np.integer):
+        if not isinstance(pixels, int | np.integer):
             return
         if pixels >= self.face_pixels:
             track.face_views += 1

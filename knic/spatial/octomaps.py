@@ -196,7 +196,9 @@ class EntityOctomap:
         if self.ray_length <= 0 or distance <= self.ray_length:
             return np.array(origin, dtype=np.float64)
         f = self.ray_length / distance
-        return np.array([c + (o - c) * f for c, o in zip(centroid, origin, strict=True)], dtype=np.float64)
+        cx, cy, cz = centroid
+        ox, oy, oz = origin
+        return np.array((cx + (ox - cx) * f, cy + (oy - cy) * f, cz + (oz - cz) * f), dtype=np.float64)
 
     def occupied_at(self, point: Sequence[float]) -> bool:
         """Whether the octree holds an occupied voxel at a world-frame point (reads the tree itself)."""
