@@ -1,6 +1,8 @@
 ; The seven-room ERL apartment as the robot knows it before a run: the map (rooms, doors, furniture), the
 ; devices, the people and objects of the task, and the candidate places from the task's priors (assumed).
 ; Where things really are is the simulator's business (worlds/erl_home/erl_home.yaml).
+; jack is named here for the language and planning examples that mention him; in a simulated run he is the
+; door-bell visitor, a stranger the robot has no symbol for until it meets him (visitor_1, ...).
 (define (problem erl_home_initial)
   (:domain erl_home)
   (:objects
