@@ -90,14 +90,15 @@ def chain(frames: list[CommandFrame], vocabulary: Vocabulary, *, ask_where: Coll
             nxt = later[0]
             role = "ground" if nxt.kind == "SEARCHING" else "source"
             theme = nxt.get("theme")
-            if nxt.kind in ("SEARCHING", "TAKING", "BRINGING") and nxt.get(role) is None and theme:
+            said = nxt.get(role) in (None, frame["goal"])  # "go to the kitchen and find the cup (there)"
+            if nxt.kind in ("SEARCHING", "TAKING", "BRINGING") and said and theme:
                 out[index + 1] = CommandFrame(nxt.kind, {**nxt.args, role: frame["goal"]})
                 waypoints.add(index)
         if frame.kind == "TAKING":
             carried = [  # a later carry of the same object, not one fetched again from elsewhere
                 j
                 for j in range(index + 1, len(out))
-                if out[j].kind in ("BRINGING", "PLACING")
+                if out[j].kind in ("BRINGING", "PLACING", "TAKING")
                 and out[j].get("theme") == frame.get("theme")
                 and out[j].get("source") in (None, frame.get("source"))
             ]

@@ -10,7 +10,7 @@ numbers 0..100 said as words become numbers; anything else is an ``unknown`` chu
 from __future__ import annotations
 
 from collections.abc import Sequence
-from dataclasses import dataclass
+from dataclasses import dataclass, replace
 
 from knic.language.commands import CommandLanguage
 from knic.language.vocabulary import TENS_WORDS, UNIT_WORDS, Term, Vocabulary, normalize
@@ -34,6 +34,7 @@ class Chunk:
     state: str | None = None  # verb: implied state; state: the state; prep "on"/"off": also a state
     value: int | None = None  # level, number: percent
     beneficiary: str | None = None  # verb: who it is for when unsaid ("i need ...": "me")
+    soft: bool = False  # verb said as "-ing" ("getting"): its clause may be talk ("it's getting late")
 
 
 class Chunker:
@@ -80,6 +81,7 @@ class Chunker:
         for phrase in lang.percent:
             put(normalize(phrase) or phrase, 3, Chunk("percent", phrase))
         for kind, phrases in (
+            ("there", lang.there),
             ("vague", lang.vague_levels),
             ("unsaid", lang.unsaid_goal),
             ("everything", lang.everything),
@@ -113,6 +115,11 @@ class Chunker:
             put(phrase, 8, Chunk("pronoun", phrase, role=kind))
         put("me", 8, Chunk("me", "me"))
         self._table = table
+        #: first words of verb phrases, for "-ing" forms ("would you mind getting me ...": get)
+        self._verb_heads = {p.split()[0] for v in lang.verbs for p in v.phrases}
+        self._known_words = {
+            w for p in list(table) + list(self._full) + list(self._partial) for w in p.split()
+        }
         #: the verb a command of noun phrases only is read with ("the remote please": "i want the remote")
         self.bare_verb: Chunk | None = None
         bare = next((v for v in lang.verbs if v.name == lang.bare_request), None)
@@ -126,6 +133,9 @@ class Chunker:
 
     def chunks(self, tokens: Sequence[str]) -> list[Chunk]:
         """The chunks of a normalised token list (fillers dropped)."""
+        lemmas = [self._lemma(t) for t in tokens]
+        inflected = {i for i, (word, lemma) in enumerate(zip(tokens, lemmas, strict=True)) if word != lemma}
+        tokens = lemmas
         out: list[Chunk] = []
         i = 0
         while i < len(tokens):
@@ -159,9 +169,21 @@ class Chunker:
                 i += 1
                 continue
             if best[2] is not None:
-                out.append(best[2])
+                soft = best[2].kind == "verb" and i in inflected
+                out.append(replace(best[2], soft=True) if soft else best[2])
             i += best[0]
         return out
+
+    def _lemma(self, word: str) -> str:
+        """A verb's "-ing" form as the verb ("switching": switch, "getting": get, "closing": close), when the
+        word is no phrase of the language or the world; any other word as it is."""
+        if not word.endswith("ing") or len(word) < 5 or word in self._known_words:
+            return word
+        stem = word[:-3]
+        for candidate in (stem, stem + "e", stem[:-1] if len(stem) > 2 and stem[-1] == stem[-2] else ""):
+            if candidate in self._verb_heads:
+                return candidate
+        return word
 
 
 def _number(tokens: Sequence[str], i: int) -> tuple[int, int] | None:

@@ -15,7 +15,7 @@ from dataclasses import dataclass, field
 
 from knic.language.chunks import Chunk
 
-_NOUNS = ("entity", "me", "pronoun", "everything")
+_NOUNS = ("entity", "me", "pronoun", "everything", "there")
 
 
 @dataclass
@@ -85,8 +85,22 @@ def split_clauses(
     clauses: list[Clause] = []
     current = preamble
     filling = _Filling()
+    after_state = False  # the last word said a state ("switch the hallway light on")
     for index, chunk in enumerate(chunks):
         nxt = chunks[index + 1] if index + 1 < len(chunks) else None
+        if (
+            chunk.kind == "join"
+            and after_state
+            and current.verb is not None
+            and nxt is not None
+            and nxt.kind in ("det", "entity")
+        ):
+            # "switch the hallway light on and the bedroom lights off": the same verb again
+            current = Clause(current.verb)
+            clauses.append(current)
+            filling, after_state = _Filling(), False
+            continue
+        after_state = chunk.kind == "state" or (chunk.kind == "prep" and chunk.state is not None)
         if chunk.kind == "verb":
             if current.verb is not None and not current.args and not current.states:
                 if current.verb.frames == ("MOTION",):
@@ -95,6 +109,14 @@ def split_clauses(
                 if current.verb.frames == ("OPERATING",) and chunk.frames[0] == "OPERATING":
                     current.verb = chunk
                     continue
+            if (
+                current.verb is not None
+                and current.verb.frames == ("ACCOMPANYING",)
+                and [a.chunk.kind for a in current.args] == ["me"]
+                and not current.states
+            ):
+                current.verb, current.args = chunk, []  # "help me find my glasses": the second verb
+                continue
             if (
                 chunk.state
                 and current.args
@@ -112,8 +134,8 @@ def split_clauses(
     if preamble.empty():
         return clauses
     devices = [a for a in preamble.args if names_device(a.chunk)]
-    if devices and (preamble.states or preamble.levels):
-        clauses.insert(0, preamble)
+    if devices and (preamble.states or preamble.levels or not clauses):
+        clauses.insert(0, preamble)  # "lights off"; "the lights please" (the reader asks on or off)
     elif (
         not clauses
         and bare_verb is not None
@@ -173,7 +195,9 @@ def add_to_clause(
 ) -> None:
     """Add one chunk to a clause: a noun phrase as an argument, a state, a level, or an unknown word (a
     missing name when a noun phrase was expected and none follows)."""
-    if chunk.kind in _NOUNS:
+    if chunk.kind == "there":  # a place: where an earlier action was (the reader resolves it)
+        clause.args.append(Arg(chunk, prep.role if prep else "place", prep.text if prep else "in", joined))
+    elif chunk.kind in _NOUNS:
         clause.args.append(Arg(chunk, prep.role if prep else None, prep.text if prep else "", joined))
     elif chunk.kind == "state" or (chunk.kind == "prep" and chunk.state):
         clause.states.append(chunk.state or "")

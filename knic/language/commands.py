@@ -79,6 +79,7 @@ class CommandLanguage:
     unsaid_goal: tuple[str, ...] = ()
     quantifiers: dict[str, tuple[str, ...]] = field(default_factory=dict)
     everything: tuple[str, ...] = ()
+    there: tuple[str, ...] = ()
     bare_request: str | None = None
 
     def verb_frames(self) -> dict[str, tuple[tuple[str, ...], str | None]]:
@@ -196,6 +197,7 @@ def load_language(path: str | Path = DEFAULT_PATH) -> CommandLanguage:
         unsaid_goal=_phrases(data, "unsaid_goal", source),
         quantifiers=tables["quantifiers"],
         everything=_phrases(data, "everything", source),
+        there=_phrases(data, "there", source),
         bare_request=bare,
     )
     lists: dict[str, tuple[str, ...]] = {v.name: v.phrases for v in verbs}
@@ -203,7 +205,7 @@ def load_language(path: str | Path = DEFAULT_PATH) -> CommandLanguage:
     lists.update(det=spoken, fillers=language.fillers, joiners=language.joiners)
     lists.update(percent=language.percent, openers=language.openers, closers=language.closers)
     lists.update(vague_levels=language.vague_levels, unsaid_goal=language.unsaid_goal)
-    lists.update(everything=language.everything)
+    lists.update(everything=language.everything, there=language.there)
     lists.update({f"quantifier_{k}": v for k, v in language.quantifiers.items()})
     object.__setattr__(language, "lists", lists)
     language.template_nodes()  # fail early on a malformed template

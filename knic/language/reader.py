@@ -89,7 +89,14 @@ class Reader:
         groups: list[list[CommandFrame]] = []
         ask_where: set[int] = set()  # "take the cup away": where to, unless a later action says so
         for clause in clauses:
-            group = self._frames_of(clause, frames, groups)
+            try:
+                group = self._frames_of(clause, frames, groups)
+            except AmbiguityError:
+                raise
+            except LanguageError:
+                if clause.verb is None or not clause.verb.soft or len(clauses) == 1:
+                    raise
+                continue  # "it's getting late, close the blinds": the "-ing" verb was talk, not a command
             if clause.unsaid_goal and clause.verb is not None and clause.verb.frames[0] == "TAKING":
                 ask_where.update(range(len(frames), len(frames) + len(group)))
             groups.append(group)
@@ -102,6 +109,7 @@ class Reader:
         if clause.missing:
             word = clause.missing[0]
             raise LanguageError(f"there is no '{word}' here: this world has nothing called that")
+        self._there(clause, previous)
         kinds = clause.verb.frames if clause.verb is not None else ("OPERATING",)
         first_error: LanguageError | None = None
         for kind in kinds:
@@ -117,6 +125,19 @@ class Reader:
                 return found
         verb = clause.verb.text if clause.verb is not None else "the command"
         raise first_error or LanguageError(f"I do not know how to '{verb}' that")
+
+    def _there(self, clause: Clause, previous: list[CommandFrame]) -> None:
+        """'there': the place the latest earlier action named (its goal, ground or source). With no place
+        named before, "there" points at what the robot cannot see ("the cup over there") and is left out."""
+        places = [f.get(r) for f in reversed(previous) for r in ("goal", "ground", "source") if f.get(r)]
+        for arg in list(clause.args):
+            if arg.chunk.kind != "there":
+                continue
+            if not places:
+                clause.args.remove(arg)
+                continue
+            terms = tuple(t for t in self.vocabulary.terms if t.symbol == places[0])[:1]
+            arg.chunk = Chunk("entity", arg.chunk.text, terms)
 
     # ------------------------------------------------------------------ arguments
 

@@ -58,6 +58,9 @@ def _carry(
     reader.narrow(args)
     themes: list[str] = []
     roles: dict[str, str] = {}
+    # where each object is taken from: "the remote from the living room and the glasses from the bedroom"
+    sources: dict[str, str] = {}
+    said_from: set[str] = set()  # objects whose source a "from" said (a bare "in"/"on" yields to it)
     bare = [a for a in args if a.prep is None and not a.consumed]
     first_is_person = bare and (
         bare[0].chunk.kind == "me"
@@ -79,7 +82,11 @@ def _carry(
         elif arg.prep == "beneficiary":
             roles["beneficiary"] = reader.resolve(arg, ("person",), previous, groups)[0]
         elif arg.prep == "source":
-            roles["source"] = reader.resolve(arg, ("room", "furniture"), previous, groups)[0]
+            where = reader.resolve(arg, ("room", "furniture"), previous, groups)[0]
+            for theme in themes or [""]:
+                if theme not in said_from:
+                    sources[theme] = where
+                    said_from.add(theme)
         elif arg.prep == "goal" or (arg.prep in ("place", "level") and kind == "PLACING"):
             if arg.prep == "level" and arg.prep_text not in ("to",):
                 continue
@@ -94,7 +101,9 @@ def _carry(
         elif arg.prep == "place":
             if not themes:
                 raise LanguageError(f"'{arg.prep_text} {arg.chunk.text}' but no object to {kind.lower()}")
-            roles.setdefault("source", reader.resolve(arg, ("room", "furniture"), previous, groups)[0])
+            where = reader.resolve(arg, ("room", "furniture"), previous, groups)[0]
+            for theme in themes:
+                sources.setdefault(theme, where)
     if not themes:
         raise LanguageError(f"{_verb(clause)} what? I heard no object of this world")
     if kind == "PLACING" and "goal" not in roles and clause.unsaid_goal:  # "put the mug back"
@@ -110,7 +119,12 @@ def _carry(
         # "fetch the book": no one and nowhere said; a later "put it in the lounge" says where it goes,
         # else chain() makes it a BRINGING to the speaker
         kind = "TAKING"
-    return [CommandFrame(kind, {"theme": theme, **roles}) for theme in dict.fromkeys(themes)]
+    before = sources.pop("", None)  # "from the kitchen" said before the object ("get from the kitchen ...")
+    frames = []
+    for theme in dict.fromkeys(themes):
+        source = sources.get(theme, before)
+        frames.append(CommandFrame(kind, {"theme": theme, **roles, **({"source": source} if source else {})}))
+    return frames
 
 
 def _verb(clause: Clause) -> str:
@@ -189,7 +203,7 @@ def _operating(reader: Resolver, clause: Clause, previous: Frames, groups: list[
     reader.narrow(args)
     devices: list[str] = []
     for arg in args:
-        if arg.consumed:
+        if arg.consumed or arg.prep == "beneficiary":  # "close the blinds for me"
             continue
         if arg.chunk.kind == "entity" and not any(reader.is_a(t, "device") for t in arg.chunk.terms):
             if arg.prep is None:
@@ -205,6 +219,8 @@ def _operating(reader: Resolver, clause: Clause, previous: Frames, groups: list[
         state = str(clause.levels[-1])
     elif clause.states:
         state = clause.states[-1]
+    if state is None and clause.verb is None:  # "the lights please"
+        _ask_level(reader.vocabulary, list(dict.fromkeys(devices)))
     if state is None:
         named = " and the ".join(reader.vocabulary.phrase_of(d) for d in devices)
         raise LanguageError(f"{_verb(clause)} the {named} to what? Say on, off or a level")
