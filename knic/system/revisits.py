@@ -17,7 +17,8 @@ whose belief aged first, then the rooms not looked at for longest, the role's ro
 It reads beliefs only (the knowledge base, the dispatcher's book), never the simulator's truth. Every trip is
 a ``task`` trace event ``revisit`` (``data``: the room and why: ``person`` with the person whose belief aged,
 or ``room``), every completed sweep a ``revisited`` event, a trip given up because the robot is needed a
-``revisit interrupted`` event. Times are simulated seconds.
+``revisit interrupted`` event, a trip that failed a ``revisit failed`` event (that room then waits its turn
+again, and the robot pauses ``idle_before_s``). Times are simulated seconds.
 """
 
 from __future__ import annotations
@@ -93,13 +94,20 @@ class RevisitDriver(Component):
             return
         status = self.robot.nav_status()
         if self.arrived is None:
-            if status.goal_id == self.goal and status.state is NavState.ACTIVE:
+            if status.goal_id != self.goal:
+                if status.goal_id > self.goal:
+                    self.room = None  # something else took the base: choose again when free
+                return  # else the robot has not reported the trip yet (a remote robot's status lags)
+            if status.state is NavState.ACTIVE:
                 urgent = self.revisits.person_room(now)
                 if self.for_person is None and urgent is not None and urgent != self.room:
                     self._start(now)  # a person's belief aged on the way: go to them first
                 return
-            if status.goal_id != self.goal or status.state is not NavState.SUCCEEDED:
-                self.room = None  # the trip failed or something else took the base: choose again
+            if status.state is not NavState.SUCCEEDED:
+                # the trip failed: the room goes to the back of the queue, and a pause before the next choice
+                self._event("revisit failed", now, self.room, "person" if self.for_person else "room")
+                self.revisits.looked(self.room, now)
+                self.room, self._free_since = None, now
                 return
             self.arrived = now
         if now - self.arrived < self.sweep_s:

@@ -2,12 +2,17 @@
 
 from __future__ import annotations
 
+from typing import cast
+
+from core.robot import NavState, NavStatus, Robot
+from knic.kgm2.attention import Revisits, RoomView
+from knic.kgm2.roles import Revisit
 from knic.system import KnicSystem, RunConfig
 from knic.system.loop import RunLoop
-from knic.system.revisits import dispatcher_free
+from knic.system.revisits import RevisitDriver, dispatcher_free
 from knowledge_base import BeliefStatus, Fact
 from planner.dispatch import Dispatcher
-from planner.trace import EventKind, TraceEvent
+from planner.trace import EventKind, Trace, TraceEvent
 from tests.planner.doubles import SimClock, StubPlanner, World, erl_kb, scripted_registry
 
 
@@ -59,3 +64,51 @@ def test_the_robot_is_free_only_with_nothing_to_work_on() -> None:
     kb.remove_goal("light_on", "hallway_light")
     kb.add_goal("light_off", "hallway_light")
     assert kb.holds("light_off", "hallway_light") and not free()  # every goal holds: the robot stays
+
+
+class FakeBase:
+    """A base whose goals end as told: ``outcome`` (None: the status lags, still showing the last goal)."""
+
+    def __init__(self) -> None:
+        self.goals: list[tuple[float, float]] = []
+        self.outcome: NavState | None = NavState.FAILED
+        self.stops = 0
+        self.pans: list[float] = []
+
+    def navigate_to_point(self, x: float, y: float, yaw: float | None = None) -> int:
+        self.goals.append((x, y))
+        return len(self.goals)
+
+    def nav_status(self) -> NavStatus:
+        if self.outcome is None:
+            return NavStatus(goal_id=len(self.goals) - 1, state=NavState.SUCCEEDED)
+        return NavStatus(goal_id=len(self.goals), state=self.outcome)
+
+    def stop(self) -> None:
+        self.stops += 1
+
+    def pan_camera(self, angle: float) -> None:
+        self.pans.append(angle)
+
+
+def test_a_failed_trip_sends_the_room_to_the_back_and_a_lagging_status_is_waited_for() -> None:
+    kb = erl_kb(SimClock(), goals=[])
+    rooms = {"bedroom": RoomView((1.0, 1.0), (2.0, 2.0)), "kitchen": RoomView((5.0, 5.0), (6.0, 6.0))}
+    policy = Revisits(kb, Revisit(rooms=("bedroom", "kitchen")), rooms)
+    base, trace, free = FakeBase(), Trace(), [True]
+    driver = RevisitDriver(cast("Robot", base), policy, lambda: free[0], trace, idle_before_s=1.0)
+    for k in range(6):  # 0.0 .. 1.0 s: free for idle_before_s, then the first trip (it fails at once)
+        driver.step(0.2 * k)
+    assert base.goals == [(1.0, 1.0)]
+    driver.step(1.2)  # the failure is seen: event, bedroom to the back of the queue, a pause
+    assert [e.action for e in trace.events] == ["revisit", "revisit failed"]
+    driver.step(1.4)
+    assert base.goals == [(1.0, 1.0)]  # pausing
+    base.outcome = None  # the next trip is not reported yet by the robot
+    for k in range(8):
+        driver.step(2.4 + 0.2 * k)
+    assert base.goals == [(1.0, 1.0), (5.0, 5.0)]  # the kitchen, once, while the status lags
+    free[0] = False
+    base.outcome = NavState.ACTIVE
+    driver.step(4.2)  # a goal arrived: the trip under way is stopped
+    assert base.stops == 1 and trace.events[-1].action == "revisit interrupted"
