@@ -13,7 +13,9 @@ next room to visit:
    believed ``revisit.items`` item counts ``revisit.priority_weight`` times its age, other rooms once.
 
 A room counts as looked at when the caller says so (:meth:`Revisits.looked`, after a camera sweep in it). The
-policy reads beliefs only, never the simulator's truth. Times are simulated seconds.
+policy reads beliefs only, never the simulator's truth. Times are simulated seconds. Two callers drive the
+robot by it: a run (:mod:`knic.system.revisits`, while the robot has nothing else to do) and the grounding
+bench's patrol (:mod:`knic.bench.patrol`).
 """
 
 from __future__ import annotations
