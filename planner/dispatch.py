@@ -60,6 +60,7 @@ from planner.monitor import PlanMonitor
 from planner.plan import PlanResult, PlanStatus, PlanStep
 from planner.problem import task_from_kb
 from planner.recovery import Recovery, RecoveryPolicy
+from planner.thinking import PLANNING_TIME, thinking_seconds
 from planner.trace import EventKind, Trace, TraceEvent
 from planner.validate import check_plan, unmet_conditions
 
@@ -310,6 +311,20 @@ class Dispatcher:
             self.executor.cancel(reason)
         self.state = DispatcherState.STOPPED
 
+    def resume(self) -> bool:
+        """Take up work again after :meth:`cancel`: the next step looks at the goals afresh (plans for the
+        open ones; dropped goals stay dropped until :meth:`retry` or news about them).
+
+        Returns:
+            False (and nothing changes) when the dispatcher was not stopped.
+        """
+        if self.state != DispatcherState.STOPPED:
+            return False
+        self.monitor.forget()  # the plan that ran before the stop is not resumed half-way
+        self.state = DispatcherState.IDLE
+        self._raise(Pending.GOALS)
+        return True
+
     def retry(self, goal: Atom) -> bool:
         """Hand a dropped goal back: forget why it was dropped, so the next step plans for it again.
 
@@ -508,30 +523,6 @@ class Dispatcher:
         else:
             self.monitor.forget()
         self.state = DispatcherState.IDLE
-
-
-#: how planning time is charged on the dispatcher's clock
-PLANNING_TIME = ("off", "model", "wall")
-#: model: seconds an external engine (a Fast Downward fallback) is charged per call
-EXTERNAL_ENGINE_S = 10.0
-
-
-def thinking_seconds(result: PlanResult, mode: str, timeout: float) -> float:
-    """Clock seconds a planner call costs the robot (see the module docstring), in tenths of a second.
-
-    ``model``: 0.1 s plus 0.1 s per 2,000 ground actions for the in-process search, ``EXTERNAL_ENGINE_S``
-    for another engine, the whole ``timeout`` for a call that timed out; ``wall``: the wall time spent,
-    rounded up; ``off``: nothing.
-    """
-    if mode == "off":
-        return 0.0
-    if mode == "wall":
-        return math.ceil(result.planning_ms / 100.0 - 1e-9) / 10.0
-    if result.status == PlanStatus.TIMEOUT:
-        return float(timeout)
-    if result.engine and result.engine != "knic":
-        return EXTERNAL_ENGINE_S
-    return round(0.1 + math.floor(result.stats.get("ground_actions", 0.0) / 2000.0) / 10.0, 1)
 
 
 #: actions cancelled at once when a knowledge change breaks a later step of the plan (others finish first)

@@ -65,7 +65,6 @@ def soak(
 ) -> dict[str, Any]:
     """Run errands for ``sim_s`` simulated seconds and report (see the module docstring)."""
     from knic.system import KnicSystem, RunConfig
-    from planner.dispatch import DispatcherState
 
     samples: list[tuple[float, float]] = []
     next_sample = [0.0]
@@ -87,8 +86,7 @@ def soak(
             atom = system.add_goal(goal)
             # a run that ends unfinished stops the dispatcher for good (KnicSystem.run is one episode): the
             # soak's next errand takes it up again, and a goal dropped in an earlier round is tried afresh
-            if system.dispatcher.state is DispatcherState.STOPPED:
-                system.dispatcher.state = DispatcherState.IDLE
+            system.dispatcher.resume()
             system.dispatcher.retry((atom.predicate, *atom.args))
             errands += 1
             before = system.sim.time

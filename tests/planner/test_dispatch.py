@@ -245,6 +245,25 @@ def test_removed_goal_cancels_the_running_action() -> None:
     assert report.state == DispatcherState.IDLE and kb.holds("robot_at", "r2d2", "entrance_hall")
 
 
+def test_a_cancelled_dispatcher_resumes_and_reaches_the_goal() -> None:
+    clock = SimClock()
+    kb = erl_kb(clock, goals=["(robot_at r2d2 kitchen)"])
+    d = dispatcher(kb, World(steps_per_action=5))
+
+    def stop(tick: int) -> None:
+        clock.tick()
+        if tick == 3:
+            d.cancel("operator stop")
+
+    report = d.run(max_ticks=30, on_tick=stop)
+    assert report.state == DispatcherState.STOPPED and [e.outcome for e in d.trace.of_kind(EventKind.FAILURE)]
+    assert kb.holds("robot_at", "r2d2", "entrance_hall")
+    assert d.resume() and not d.resume()  # resuming twice changes nothing
+    report = d.run(max_ticks=200, on_tick=clock.tick)
+    assert report.state == DispatcherState.IDLE and report.achieved == ["(robot_at r2d2 kitchen)"]
+    assert kb.holds("robot_at", "r2d2", "kitchen") and len(d.trace.of_kind(EventKind.PLAN)) == 2
+
+
 def test_drop_goal_policy_drops_the_goals_of_the_failed_plan() -> None:
     clock = SimClock()
     kb = erl_kb(clock, goals=["(light_on hallway_light)", "(robot_at r2d2 hallway)"])
