@@ -56,7 +56,7 @@ class RunConfig:
             (new knowledge may bring a goal back meanwhile).
         planning_time: how planning time is charged on the simulated clock: ``model`` (a deterministic
             estimate, reproducible under the seed), ``wall`` (the wall time spent) or ``off``
-            (:func:`planner.dispatch.thinking_seconds`).
+            (:func:`planner.thinking.thinking_seconds`).
         replan_settle_s: simulated seconds planning waits after a knowledge change broke the plan.
         max_replans_per_goal: the recovery policy's replanning budget per goal.
         real_time_factor: the scheduler's overrun budget is period / factor (wall seconds per step).
