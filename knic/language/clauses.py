@@ -63,6 +63,7 @@ def split_clauses(
     names_device: Callable[[Chunk], bool],
     names_item: Callable[[Chunk], bool] = lambda chunk: False,
     bare_verb: Chunk | None = None,
+    context: list[Arg] | None = None,
 ) -> list[Clause]:
     """Split chunks into clauses at verbs.
 
@@ -71,6 +72,8 @@ def split_clauses(
         names_device: whether an entity chunk may name a device (for a verbless "lights off").
         names_item: whether an entity chunk may name an object (for a verbless "the remote please").
         bare_verb: the verb a command without any verb is read with when it names objects; None: refused.
+        context: when given, receives the noun phrases said before the first verb that make no clause ("my
+            glasses are in the bedroom, bring them to me": the glasses), for pronouns to refer to.
     """
     chunks = [  # "her glasses": a possessive, not the pronoun
         Chunk("det", c.text)
@@ -148,6 +151,8 @@ def split_clauses(
     ):
         preamble.verb = bare_verb  # "the remote please": a request for it
         clauses.append(preamble)
+    elif context is not None:
+        context.extend(preamble.args)
     return clauses
 
 

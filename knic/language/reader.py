@@ -55,13 +55,15 @@ class Reader:
         """The chunks of a normalised token list (see :class:`~knic.language.chunks.Chunker`)."""
         return self.chunker.chunks(tokens)
 
-    def clauses(self, chunks: list[Chunk]) -> list[Clause]:
-        """Split chunks into clauses at verbs (see :mod:`knic.language.clauses`)."""
+    def clauses(self, chunks: list[Chunk], context: list[Arg] | None = None) -> list[Clause]:
+        """Split chunks into clauses at verbs (see :mod:`knic.language.clauses`); ``context`` receives the
+        noun phrases said before the first verb that make no clause."""
         return split_clauses(
             chunks,
             lambda chunk: any(self.is_a(t, "device") for t in chunk.terms),
             lambda chunk: any(self.is_a(t, "item") for t in chunk.terms),
             self.chunker.bare_verb,
+            context,
         )
 
     # ------------------------------------------------------------------ reading
@@ -77,7 +79,8 @@ class Reader:
         if not tokens:
             raise LanguageError("nothing to understand: the command is empty")
         chunks = self.chunks(tokens)
-        clauses = self.clauses(chunks)
+        context: list[Arg] = []
+        clauses = self.clauses(chunks, context)
         if not clauses:
             unknown = [c.text for c in chunks if c.kind == "unknown"]
             if unknown:
@@ -86,7 +89,7 @@ class Reader:
         if len(clauses) > MAX_ACTIONS:
             raise LanguageError(f"{len(clauses)} actions in one command; I take up to {MAX_ACTIONS} at once")
         frames: list[CommandFrame] = []
-        groups: list[list[CommandFrame]] = []
+        groups: list[list[CommandFrame]] = [self._mentions(context)]
         ask_where: set[int] = set()  # "take the cup away": where to, unless a later action says so
         for clause in clauses:
             try:
@@ -125,6 +128,16 @@ class Reader:
                 return found
         verb = clause.verb.text if clause.verb is not None else "the command"
         raise first_error or LanguageError(f"I do not know how to '{verb}' that")
+
+    def _mentions(self, context: list[Arg]) -> list[CommandFrame]:
+        """Things named before the first verb without making an action ("my glasses are in the bedroom,
+        bring them to me"), as frames for pronouns to refer to (the earliest group; never goals)."""
+        mentioned: list[CommandFrame] = []
+        for arg in context:
+            symbols = {t.symbol for t in arg.chunk.terms}
+            if arg.chunk.kind == "entity" and len(symbols) == 1:
+                mentioned.append(CommandFrame("SEARCHING", {"theme": symbols.pop()}))
+        return mentioned
 
     def _there(self, clause: Clause, previous: list[CommandFrame]) -> None:
         """'there': the place the latest earlier action named (its goal, ground or source). With no place

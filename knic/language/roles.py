@@ -168,6 +168,9 @@ def _accompanying(reader: Resolver, clause: Clause, previous: Frames, groups: li
             continue
         if arg.prep is None:
             people += reader.resolve(arg, ("person",), previous, groups)
+        elif arg.prep in ("goal", "place", "level") and arg.chunk.kind == "me":
+            who = reader.vocabulary.phrase_of(people[0]) if people else "them"
+            raise AmbiguityError(f"where should I take {who}? Say the room: I do not know where you are")
         elif arg.prep in ("goal", "place", "level"):
             goal = reader.resolve(arg, ("room", "furniture"), previous, groups)[0]
     if not people:
