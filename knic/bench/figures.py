@@ -5,10 +5,11 @@ from __future__ import annotations
 import math
 from typing import Any
 
-#: predicate families reported one by one (``families``): family -> its predicates
+#: predicate families reported one by one (``families``): family -> its predicates; where an item is: in a
+#: room (``object_at``) or, carried, in a person's hands (``has``)
 FAMILIES: dict[str, frozenset[str]] = {
     "robot_at": frozenset({"robot_at"}),
-    "object_at": frozenset({"object_at"}),
+    "object_at": frozenset({"object_at", "has"}),
     "object_on": frozenset({"object_on"}),
     "person_at": frozenset({"person_at"}),
     "person_near": frozenset({"person_near"}),

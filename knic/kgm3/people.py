@@ -84,7 +84,9 @@ class PersonPlaceKP(_EntityPlaceKP):
         An unnamed person's track becomes the instance ``visitor_<n>`` once the face recogniser saw them well
         ``visitor_views`` times without knowing them (KGM-2's ``face_views``) and no known person was seen
         within ``visitor_clearance`` metres in the last ``visitor_window_s`` seconds (a known person whose
-        face was missed in a few frames has a named track nearby). The track keeps the instance from then on.
+        face was missed in a few frames has a named track nearby); when a visitor met before is out of sight
+        (:meth:`visitor_out_of_sight`) the track is that visitor met again. The track keeps the instance from
+        then on.
         """
         anonymous = bool(cku.track_id) and cku.symbol == f"{cku.cls}_{cku.track_id}"
         if not anonymous:
@@ -96,7 +98,25 @@ class PersonPlaceKP(_EntityPlaceKP):
             return None
         if self.known_near(cku.position, cku.stamp):
             return None
+        again = self.visitor_out_of_sight()
+        if again is not None:
+            self.discovered[cku.track_id] = again
+            return again
         return self.discover(self.visitor_prefix, cku)
+
+    def visitor_out_of_sight(self) -> str | None:
+        """The visitor met before whom KGM-2 no longer tracks (their track was lost), last seen latest; None
+        when every visitor met is tracked now.
+
+        A stranger met again after their track was lost is far likelier the visitor already met than a new
+        one (visitors come one at a time): the new track takes that visitor's instance instead of making a
+        ``visitor_<n+1>`` for the same person. A second stranger seen while the first is still tracked is a
+        new visitor.
+        """
+        gone = [v for v in dict.fromkeys(self.discovered.values()) if v not in self.tracked]
+        if not gone:
+            return None
+        return max(gone, key=lambda v: self.last_seen.get(v, -math.inf))
 
     def known_near(self, position: tuple[float, float, float], stamp: float) -> bool:
         """Whether a known (not discovered) person was seen near ``position`` lately."""

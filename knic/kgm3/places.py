@@ -22,7 +22,10 @@ seen for the role's ``person_ttl_s`` (sooner, ``moving_ttl_s``, when last seen w
 its belief aged: it is re-written ASSUMED at half its confidence (belief in time), and the next sighting
 makes it OBSERVED again.
 
-Items the robot holds or has given to someone are left to the actions that moved them.
+Items the robot holds or has given to someone are left to the actions that moved them. An item seen in a
+person's hands (off every surface, at hand height next to a recognised person,
+:class:`knic.kgm3.carried.PeopleHands`) is confirmed like a place and written ``(has ?p ?o)`` by this KP',
+its ``object_at`` / ``object_on`` retracted; seen at a place again, or its track lost, that ``has`` goes.
 """
 
 from __future__ import annotations
@@ -35,11 +38,15 @@ import numpy as np
 from core.errors import KnowledgeBaseError
 from knic.bus import Bus
 from knic.kgm3.base import Confirmer, KPPrime
+from knic.kgm3.carried import PeopleHands
 from knic.spatial import DEFAULT_RESOLUTION, points_in_polygon
 from knic.units import CKU
 from knowledge_base import BeliefStatus, Fact, KnowledgeBase
 
 log = logging.getLogger(__name__)
+
+#: the place value of an item believed in a person's hands: ``(HAND, person)``
+HAND = "@hand"
 
 
 class RobotAtKP(KPPrime):
@@ -199,7 +206,7 @@ class _EntityPlaceKP(KPPrime):
         room, furniture = self.place_of(cku)
         if room is None:
             return
-        current = (self.value_of(self.place_predicate, cku.symbol), self.current_support(cku.symbol))
+        current = self.current_value(cku.symbol)
         support = (cku.uid, *cku.support)
         weight = int(cku.attributes.get("sightings", 1))
         if self.confirmer.observe(cku.symbol, (room, furniture), cku.confidence, current, cku.stamp, weight):
@@ -208,6 +215,11 @@ class _EntityPlaceKP(KPPrime):
         elif current == (room, furniture):
             # the belief already holds (maybe as an action's effect): mark it observed, once
             self.write_place(cku.symbol, room, furniture, cku.stamp, support, cku.confidence)
+
+    def current_value(self, symbol: str) -> tuple[str | None, str | None]:
+        """What the knowledge base holds of the entity's place, as the confirmer compares it:
+        ``(room, furniture)``."""
+        return (self.value_of(self.place_predicate, symbol), self.current_support(symbol))
 
     def current_support(self, symbol: str) -> str | None:
         """The furniture the entity is believed on (None for people)."""
@@ -315,13 +327,78 @@ class ObjectPlaceKP(_EntityPlaceKP):
             window_s,
         )
         self.min_support_share = min_support_share
+        #: the recognised people's places, for items seen in someone's hands
+        self.hands = PeopleHands(bus, lambda symbol: self.is_a(symbol, "person"))
         self.anchors = anchors
         self.anchor_step = anchor_step
         self._anchored: dict[str, tuple[float, float, float]] = {}
 
     def moved_by_action(self, symbol: str) -> bool:
-        """Held by the robot or handed to a person: the actions own its place."""
-        return bool(self.kb.facts("holding", None, symbol) or self.kb.facts("has", None, symbol))
+        """Held by the robot or handed to a person by it: the actions own its place (a ``has`` this KP'
+        wrote, an item seen in someone's hands, stays perception's)."""
+        if self.kb.facts("holding", None, symbol):
+            return True
+        return any(self._source(f) != self.name for f in self.kb.facts("has", None, symbol))
+
+    def _source(self, fact: Fact) -> str | None:
+        prov = self.kb.why(fact)
+        return prov.source if prov is not None else None
+
+    def holder_of(self, symbol: str) -> str | None:
+        """The person this KP' believes holds the item (its own ``has``), or None."""
+        for fact in self.kb.facts("has", None, symbol):
+            if self._source(fact) == self.name:
+                return fact.args[0]
+        return None
+
+    def current_value(self, symbol: str) -> tuple[str | None, str | None]:
+        """``(HAND, person)`` while the item is believed in someone's hands, else its room and surface."""
+        holder = self.holder_of(symbol)
+        return (HAND, holder) if holder is not None else super().current_value(symbol)
+
+    def seen(self, cku: CKU) -> None:
+        """One sighting: in a person's hands (off every surface, at hand height next to them) it confirms
+        ``(has ?p ?o)``; elsewhere, as for every entity."""
+        room, furniture = self.place_of(cku)
+        holder = self.hands.holder(cku) if room is not None and furniture is None else None
+        if holder is None:
+            super().seen(cku)
+            return
+        self.last_seen[cku.symbol] = cku.stamp
+        self.tracked.add(cku.symbol)
+        current = self.current_value(cku.symbol)
+        support = (cku.uid, *cku.support)
+        weight = int(cku.attributes.get("sightings", 1))
+        if self.confirmer.observe(cku.symbol, (HAND, holder), cku.confidence, current, cku.stamp, weight):
+            self.write_holder(cku.symbol, holder, cku.stamp, support, cku.confidence)
+
+    def write_holder(
+        self, symbol: str, person: str, at: float, support: tuple[str, ...], conf: float
+    ) -> None:
+        """The item is in ``person``'s hands: assert ``has`` and ``found``, retract its places."""
+        with self.kb.batch():
+            self.assert_fact("has", person, symbol, at=at, support=support, confidence=conf)
+            self._retract_held(symbol, at, support, keep=person)
+            self.retract_all("object_at", symbol, None, at=at, support=support)
+            self.retract_all("object_on", symbol, None, at=at, support=support)
+            self.assert_fact("found", symbol, at=at, support=support, confidence=conf)
+
+    def _retract_held(
+        self, symbol: str, at: float, support: tuple[str, ...], keep: str | None = None
+    ) -> None:
+        """Retract this KP''s own ``has`` facts about the item (but ``keep``'s)."""
+        for fact in self.kb.facts("has", None, symbol):
+            if fact.args[0] != keep and self._source(fact) == self.name:
+                self.retract_fact("has", *fact.args, at=at, support=support)
+
+    def lost(self, cku: CKU) -> None:
+        """As for every entity; an item believed in someone's hands whose track KGM-2 dropped where the
+        camera could see it is no longer known to be with them."""
+        if self.holder_of(cku.symbol) is not None:
+            self.tracked.discard(cku.symbol)
+            self.forget_place(cku.symbol, cku.stamp, (cku.uid, *cku.support))
+            return
+        super().lost(cku)
 
     def step(self, now: float) -> None:
         """As for every entity, then: an item held or handed over is on no furniture any more."""
@@ -360,7 +437,9 @@ class ObjectPlaceKP(_EntityPlaceKP):
     def write_place(
         self, symbol: str, room: str, furniture: str | None, at: float, support: tuple[str, ...], conf: float
     ) -> None:
-        """Assert object_at, object_on (or retract it when on no surface) and found; anchor the position."""
+        """Assert object_at, object_on (or retract it when on no surface) and found; anchor the position.
+        An item seen at a place is in nobody's hands (this KP''s ``has`` goes)."""
+        self._retract_held(symbol, at, support)
         super().write_place(symbol, room, furniture, at, support, conf)
         if furniture is not None:
             self.assert_fact("object_on", symbol, furniture, at=at, support=support, confidence=conf)
@@ -371,8 +450,9 @@ class ObjectPlaceKP(_EntityPlaceKP):
         self._anchor(symbol, at, support)
 
     def forget_place(self, symbol: str, at: float, support: tuple[str, ...]) -> None:
-        """Retract object_at, object_on and found."""
+        """Retract object_at, object_on, found and this KP''s ``has``."""
         with self.kb.batch():
+            self._retract_held(symbol, at, support)
             super().forget_place(symbol, at, support)
             self.retract_all("object_on", symbol, None, at=at, support=support)
 

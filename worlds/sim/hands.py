@@ -199,8 +199,7 @@ class Hands:
             r = self.base
             it.x, it.y, it.z = r.x + 0.3 * math.cos(r.yaw), r.y + 0.3 * math.sin(r.yaw), 0.8
         elif it.holder is not None:
-            p = self.people[it.holder]
-            it.x, it.y, it.z = p.x, p.y, p.z_base(self.world) + 0.9
+            it.x, it.y, it.z = self.people[it.holder].hand_point(self.world)
 
     def _nearest_spot(self, furniture: str, it: ItemState, origin: Point, reach: float) -> Point | None:
         spots = free_spots(self.world.furniture[furniture], it, list(self.items.values()))

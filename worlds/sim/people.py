@@ -28,6 +28,8 @@ WALK_SPEED = 0.8  # m/s
 FOLLOW_DISTANCE = 1.0  # metres behind the robot when escorted
 MAKE_WAY_WAIT = 8.0  # seconds a person who made way for the robot waits aside
 PUT_NEARBY_CANDIDATES = 4  # nearest pieces of furniture tried when the meant one is out of reach
+HAND_REACH = 0.12  # metres in front of the body's surface where a carried item is held
+HAND_HEIGHT = 0.95  # metres above the feet where a carried item is held
 
 
 class PeopleHooks(Protocol):
@@ -82,6 +84,17 @@ class PersonState:
     def z_base(self, world: World) -> float:
         """Height of the person's feet: the furniture top when sitting or lying, else 0."""
         return world.furniture[self.on].height if self.on else 0.0
+
+    def hand_point(self, world: World) -> tuple[float, float, float]:
+        """Where an item the person carries is (world frame, metres): held in front of the body at
+        :data:`HAND_REACH` metres beyond its surface, at :data:`HAND_HEIGHT` above their feet. Outside the
+        body, so a camera facing them sees it (from behind, the body hides it)."""
+        reach = self.radius + HAND_REACH
+        return (
+            self.x + reach * math.cos(self.yaw),
+            self.y + reach * math.sin(self.yaw),
+            self.z_base(world) + HAND_HEIGHT,
+        )
 
 
 class PeopleController:

@@ -314,3 +314,83 @@ def test_an_explored_room_leaves_a_tracked_item_to_kgm2(
     send(bus, cku("glasses", Kind.OBJECT, SHELF_TOP, 40.0, lost=True))
     kp.step(40.0)
     assert not paper_kb.facts("object_at", "glasses")
+
+
+def test_an_item_seen_in_a_persons_hands_is_with_them_until_seen_put_down(
+    paper_kb: KnowledgeBase, paper_locations: LocationModel
+) -> None:
+    bus = Bus()
+    publish_place_ckus(bus, paper_locations)
+    kp = ObjectPlaceKP(bus, paper_kb, needed=2)
+    for t in (1.0, 1.2):
+        send(bus, cku("glasses", Kind.OBJECT, SHELF_TOP, t))
+    kp.step(1.2)
+    assert paper_kb.holds("object_on", "glasses", "entrance_shelf")
+    # annie walks through the kitchen with the glasses at hand height in front of her
+    for t in (5.0, 5.2):
+        send(bus, cku("annie", Kind.PERSON, (KITCHEN[0], KITCHEN[1], 0.9), t, cls="person"))
+        send(bus, cku("glasses", Kind.OBJECT, (KITCHEN[0] + 0.35, KITCHEN[1], 0.95), t))
+        kp.step(t)
+    assert paper_kb.holds("has", "annie", "glasses")
+    assert not paper_kb.facts("object_at", "glasses") and not paper_kb.facts("object_on", "glasses")
+    assert paper_kb.holds("found", "glasses")
+    why = paper_kb.why(Fact("has", ("annie", "glasses")))
+    assert why is not None and why.source == "kp'.object_at" and why.status is BeliefStatus.OBSERVED
+    # seen put down on the kitchen table: with nobody any more, on the table
+    for t in (9.0, 9.2):
+        send(bus, cku("glasses", Kind.OBJECT, (6.0, 6.6, 0.78), t))
+        kp.step(t)
+    assert not paper_kb.facts("has", None, "glasses")
+    assert paper_kb.holds("object_on", "glasses", "kitchen_table")
+
+
+def test_an_item_beside_nobody_or_lost_from_someones_hands(
+    paper_kb: KnowledgeBase, paper_locations: LocationModel
+) -> None:
+    bus = Bus()
+    publish_place_ckus(bus, paper_locations)
+    kp = ObjectPlaceKP(bus, paper_kb, needed=2)
+    # a person seen long ago (not fresh) does not make an item at hand height theirs
+    send(bus, cku("annie", Kind.PERSON, (KITCHEN[0], KITCHEN[1], 0.9), 1.0, cls="person"))
+    for t in (5.0, 5.2):
+        send(bus, cku("glasses", Kind.OBJECT, (KITCHEN[0] + 0.35, KITCHEN[1], 0.95), t))
+        kp.step(t)
+    assert not paper_kb.facts("has") and paper_kb.holds("object_at", "glasses", "kitchen")
+    for t in (8.0, 8.2):
+        send(bus, cku("annie", Kind.PERSON, (KITCHEN[0], KITCHEN[1], 0.9), t, cls="person"))
+        send(bus, cku("glasses", Kind.OBJECT, (KITCHEN[0] + 0.35, KITCHEN[1], 0.95), t))
+        kp.step(t)
+    assert paper_kb.holds("has", "annie", "glasses") and not paper_kb.facts("object_at", "glasses")
+    # KGM-2 lost the track where the camera saw its voxels: nobody is known to hold it any more
+    send(bus, cku("glasses", Kind.OBJECT, (KITCHEN[0] + 0.35, KITCHEN[1], 0.95), 12.0, lost=True))
+    kp.step(12.0)
+    assert not paper_kb.facts("has") and not paper_kb.holds("found", "glasses")
+
+
+def test_a_visitor_met_again_after_the_track_was_lost_is_the_same_visitor(
+    paper_kb: KnowledgeBase, paper_locations: LocationModel
+) -> None:
+    bus = Bus()
+    publish_place_ckus(bus, paper_locations)
+    kp = PersonPlaceKP(bus, paper_kb, needed=2, visitor_views=2)
+
+    def stranger(tid: int, where: tuple[float, float, float], t: float, views: int, **extra: bool) -> None:
+        unit = cku(f"person_{tid}", Kind.PERSON, where, t, cls="person", hits=views, face_views=views)
+        unit = replace(unit, attributes={**unit.attributes, **extra})
+        send(bus, replace(unit, track_id=tid))
+        kp.step(t)
+
+    for i in range(3):
+        stranger(910, (KITCHEN[0], KITCHEN[1], 1.0), 1.0 + 0.2 * i, i + 1)
+    assert kp.discovered == {910: "visitor_1"}
+    stranger(910, (KITCHEN[0], KITCHEN[1], 1.0), 5.0, 3, lost=True)  # looked at, gone
+    assert not paper_kb.facts("person_at", "visitor_1")
+    # an unknown person in the bedroom later: the visitor again, not a second one
+    for i in range(3):
+        stranger(911, (BEDROOM[0], BEDROOM[1], 1.0), 20.0 + 0.2 * i, i + 1)
+    assert kp.discovered[911] == "visitor_1" and paper_kb.type_of("visitor_2") is None
+    assert paper_kb.holds("person_at", "visitor_1", "bedroom")
+    # a stranger seen while the visitor is tracked is a second visitor
+    for i in range(3):
+        stranger(912, (KITCHEN[0], KITCHEN[1], 1.0), 30.0 + 0.2 * i, i + 1)
+    assert kp.discovered[912] == "visitor_2"
