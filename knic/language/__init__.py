@@ -5,7 +5,9 @@ Pipeline (one module per step; the grammar is defined once and shared by text an
 * :mod:`~knic.language.vocabulary` -- spoken names of a world's instances (knowledge base + lexicon).
 * :mod:`~knic.language.commands` -- how people phrase commands, as data (``commands.yaml``): fillers, verbs,
   prepositions, levels and templates; the one source of the reader, the speech grammar and the samples.
-* :mod:`~knic.language.chunks` / :mod:`~knic.language.reader` -- reading text: chunks, clauses, frames.
+* :mod:`~knic.language.chunks` / :mod:`~knic.language.reader` -- reading text: chunks, then clauses
+  (:mod:`~knic.language.clauses`), roles (:mod:`~knic.language.roles`) and chains and pronouns
+  (:mod:`~knic.language.chains`).
 * :mod:`~knic.language.grammar` -- grammar nodes and the JSGF form of the templates.
 * :mod:`~knic.language.sampling` -- sentences with their frames sampled from the templates.
 * :mod:`~knic.language.ngram` -- an ARPA n-gram model of sampled sentences for the speech recogniser.

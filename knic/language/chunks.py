@@ -115,6 +115,11 @@ class Chunker:
             put(phrase, 8, Chunk("pronoun", phrase, role=kind))
         put("me", 8, Chunk("me", "me"))
         self._table = table
+        #: verbs only when they open the command ("is the remote in the living room?")
+        self._opening = {
+            phrase: Chunk("verb", phrase, frames=v.frames, state=v.state, beneficiary=v.beneficiary)
+            for phrase, v in lang.opening_verbs().items()
+        }
         #: first words of verb phrases, for "-ing" forms ("would you mind getting me ...": get)
         self._verb_heads = {p.split()[0] for v in lang.verbs for p in v.phrases}
         self._known_words = {
@@ -153,6 +158,11 @@ class Chunker:
                     best = (length, 9, Chunk("entity", phrase, tuple(self._partial[phrase]), role=plural))
                 if best is not None and best[0] == length:
                     break
+            opening = self._opening_at(tokens, i) if not out else None
+            if opening is not None and (best is None or len(opening.text.split()) >= best[0]):
+                out.append(opening)  # "is the remote in the living room?"
+                i += len(opening.text.split())
+                continue
             if number is not None and (best is None or number[0] - i >= best[0]):
                 value = number[1]
                 if best is not None and best[2] is not None and best[2].kind == "det" and number[0] - i == 1:
@@ -173,6 +183,14 @@ class Chunker:
                 out.append(replace(best[2], soft=True) if soft else best[2])
             i += best[0]
         return out
+
+    def _opening_at(self, tokens: Sequence[str], i: int) -> Chunk | None:
+        """The longest opening verb at ``tokens[i:]``, else None."""
+        for length in range(min(4, len(tokens) - i), 0, -1):
+            chunk = self._opening.get(" ".join(tokens[i : i + length]))
+            if chunk is not None:
+                return chunk
+        return None
 
     def _lemma(self, word: str) -> str:
         """A verb's "-ing" form as the verb ("switching": switch, "getting": get, "closing": close), when the

@@ -46,14 +46,16 @@ _TOKEN = re.compile(r"\{[^}]+\}|=[a-z_]+:[A-Za-z0-9_-]+|[\[\]()|]|[^\s\[\]()|{}=
 
 @dataclass(frozen=True)
 class VerbClass:
-    """A verb class: its phrases, the frame kinds it can start (in order), the state it implies and the
-    beneficiary it implies ("i need ..." is for the speaker)."""
+    """A verb class: its phrases, the frame kinds it can start (in order), the state it implies, the
+    beneficiary it implies ("i need ..." is for the speaker), and whether its phrases are verbs only when
+    they open the command ("is the remote in the living room?")."""
 
     name: str
     phrases: tuple[str, ...]
     frames: tuple[str, ...]
     state: str | None = None
     beneficiary: str | None = None
+    opening: bool = False
 
 
 @dataclass(frozen=True)
@@ -86,6 +88,8 @@ class CommandLanguage:
         """Verb phrase -> (frame kinds in order, implied state); a phrase in several classes gets all."""
         table: dict[str, tuple[tuple[str, ...], str | None]] = {}
         for verb in self.verbs:
+            if verb.opening:
+                continue
             for phrase in verb.phrases:
                 kinds, state = table.get(phrase, ((), None))
                 merged = kinds + tuple(k for k in verb.frames if k not in kinds)
@@ -95,6 +99,10 @@ class CommandLanguage:
     def verb_beneficiaries(self) -> dict[str, str]:
         """Verb phrase -> the beneficiary it implies, for the phrases of classes that imply one."""
         return {p: v.beneficiary for v in self.verbs if v.beneficiary for p in v.phrases}
+
+    def opening_verbs(self) -> dict[str, VerbClass]:
+        """Phrase -> its class, for the classes whose phrases are verbs only when they open the command."""
+        return {p: v for v in self.verbs if v.opening for p in v.phrases}
 
     def words(self) -> set[str]:
         """Every word of every phrase table (not the world's names)."""
@@ -151,6 +159,7 @@ def load_language(path: str | Path = DEFAULT_PATH) -> CommandLanguage:
                 tuple(spec["frames"]),
                 spec.get("state"),
                 beneficiary,
+                bool(spec.get("opening", False)),
             )
         )
     tables: dict[str, dict[str, tuple[str, ...]]] = {}
