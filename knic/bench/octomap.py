@@ -4,11 +4,16 @@ Both sides insert the same camera-like point clouds (objects seen from a moving 
 detection's deprojected points, ray cast from the camera) into one octree per object at the same resolution:
 
 * raw: ``OcTree.insertPointCloud`` called directly, cloud after cloud, from the camera with its default
-  arguments; and once more in the mode KGM-2 uses (``discretize=True``, rays from 1 m before the entity, see
-  :class:`~knic.spatial.EntityOctomap`) to isolate the cost of the Python around the insertion;
+  arguments; and once more in the mode KGM-2 uses (``discretize=True``, rays from 1 m before the entity,
+  the entity octomaps' clamping thresholds, see :class:`~knic.spatial.EntityOctomap`) to isolate the cost of
+  the Python around the insertion;
 * KGM-2: the LLKUs of each frame published on the bus with their scan marker and processed by
-  :class:`~knic.kgm2.cognition.CognitiveLayer` (association, octomap update, key mirror, CKU
-  publication) under a role that processes every class at every frame, so nothing is skipped.
+  :class:`~knic.kgm2.cognition.CognitiveLayer` (association, octomap update, CKU publication) under a role
+  that processes every class at every frame, so nothing is skipped. Nothing downstream reads the CKUs
+  here, so their keys (a query of the entity's octomap run when a KP' reads them, see
+  :class:`~knic.units.CKU`) are never asked: the comparison is the insertion path, the same insertions on
+  both sides. A second KGM-2 run reads every CKU's keys as the place KP' do, to show what those octomap
+  queries add.
 
 The ratio is KGM-2 points per second over raw points per second (1.0: no overhead). Times are the process's
 CPU time (``time.process_time``), the two sides run interleaved, and the best of ``repeats`` runs of each side
@@ -26,7 +31,7 @@ import pyoctomap
 from knic.bus import Bus
 from knic.kgm2.cognition import CognitiveLayer, TrackingConfig
 from knic.kgm2.roles import Policy, Role
-from knic.spatial import DEFAULT_RESOLUTION, ROOM, Location, Prism
+from knic.spatial import DEFAULT_RESOLUTION, ROOM, EntityOctomap, Location, Prism
 from knic.units import LLKU, Kind, Scan
 
 
@@ -74,6 +79,7 @@ def _raw(
     *,
     discretize: bool = False,
     ray_length: float = 0.0,
+    clamping: tuple[float, float] | None = None,
 ) -> float:
     jobs = []
     for origin, clouds in scene:
@@ -92,12 +98,21 @@ def _raw(
         tree = trees.get(label)
         if tree is None:
             tree = trees[label] = pyoctomap.OcTree(resolution)
+            if clamping is not None:  # the same trees as KGM-2's entity octomaps
+                tree.setClampingThresMin(clamping[0])
+                tree.setClampingThresMax(clamping[1])
         tree.insertPointCloud(cloud, start, -1.0, False, discretize)
     return time.process_time() - begin
 
 
-def _kgm2(scene: list[tuple[np.ndarray, list[tuple[str, np.ndarray]]]], resolution: float) -> float:
+def _kgm2(
+    scene: list[tuple[np.ndarray, list[tuple[str, np.ndarray]]]],
+    resolution: float,
+    *,
+    read_keys: bool = False,
+) -> float:
     bus = Bus()
+    ckus = bus.inbox("cognition.object", capacity=20000) if read_keys else None
     outline = np.array([[0.0, 0.0], [8.0, 0.0], [8.0, 8.0], [0.0, 8.0]])
     room = Location("room", ROOM, outline, Prism("room", outline, 0.0, 2.5), waypoint=(4.0, 4.0))
     role = Role("bench", "every class at every frame", Policy(1000.0, 1))
@@ -132,6 +147,9 @@ def _kgm2(scene: list[tuple[np.ndarray, list[tuple[str, np.ndarray]]]], resoluti
         scan = Scan(Kind.OBJECT, stamp, _AllVisible(origin), "camera")
         bus.publish("percept.vision.scan.object", scan, source="bench", stamp=stamp)
         layer.step(stamp)
+        if ckus is not None:  # as the place KP' do: every CKU's keys, read after the layer's step
+            for message in ckus.drain():
+                _ = message.payload.keys
     elapsed = time.process_time() - start
     if layer.stats.processed != sum(len(u) for _, u in units):
         raise RuntimeError("benchmark role skipped units; the comparison would be unfair")
@@ -152,20 +170,26 @@ def measure_octomap_throughput(
     Returns:
         ``octomap_throughput_ratio`` (against default ``insertPointCloud``),
         ``octomap_overhead_ratio_same_mode`` (against ``insertPointCloud`` in the mode KGM-2 uses: what the
-        Python around the insertion costs), ``kgm2_points_per_s``,
+        Python around the insertion costs), ``octomap_ratio_with_key_reads`` (the same, with every CKU's
+        keys read as the place KP' read them: the octomap queries the reasoning adds), ``kgm2_points_per_s``,
         ``raw_points_per_s``, ``clouds``, ``points_per_cloud``, ``resolution_m``.
     """
     scene = _scene(objects, frames, points, seed)
     total = objects * frames * points
-    raws, same, kgm2s = [], [], []
+    ray_length = TrackingConfig().ray_length
+    probe = EntityOctomap(resolution, ray_length=ray_length)
+    clamping = (probe.tree.getClampingThresMin(), probe.tree.getClampingThresMax())
+    raws, same, kgm2s, reads = [], [], [], []
     for _ in range(repeats):  # interleaved, so all sides see the same machine load
         raws.append(_raw(scene, resolution))
-        same.append(_raw(scene, resolution, discretize=True, ray_length=TrackingConfig().ray_length))
+        same.append(_raw(scene, resolution, discretize=True, ray_length=ray_length, clamping=clamping))
         kgm2s.append(_kgm2(scene, resolution))
+        reads.append(_kgm2(scene, resolution, read_keys=True))
     raw, raw_same, kgm2 = min(raws), min(same), min(kgm2s)
     return {
         "octomap_throughput_ratio": round(raw / kgm2, 3),
         "octomap_overhead_ratio_same_mode": round(raw_same / kgm2, 3),
+        "octomap_ratio_with_key_reads": round(raw_same / min(reads), 3),
         "kgm2_points_per_s": round(total / kgm2),
         "raw_points_per_s": round(total / raw),
         "clouds": objects * frames,

@@ -65,6 +65,11 @@ class TrackingConfig:
     face_pixels: int = 40
 
 
+def _plan_order(plan: tuple[Policy, str]) -> tuple[int, str]:
+    """Classes of a scan in decreasing role priority, then by name."""
+    return (-plan[0].priority, plan[1])
+
+
 @dataclass
 class CognitionStats:
     """Counters: units processed, units skipped by the role's rates, CKUs published, tracks dropped,
@@ -119,6 +124,9 @@ class CognitiveLayer(Component):
         #: a label confusion is suspected only on a track seen this recently (simulated seconds): an object
         #: misread while the camera looks at it; a stale track of an object since moved away blocks nothing
         self.confusion_recent_s = 3.0
+        self._topics: dict[tuple[Kind, str], str] = {}  # (kind, symbol) -> CKU topic
+        self._policies: dict[tuple[str, str | None], Policy] = {}  # (class, room) -> policy of _policies_of
+        self._policies_of = role
 
     # ------------------------------------------------------------------ lifecycle
 
@@ -205,16 +213,18 @@ class CognitiveLayer(Component):
         self._associate_scan(units, scan.stamp, scan, scan.kind)
 
     def _associate_scan(self, units: list[LLKU], stamp: float, scan: Scan | None, kind: Kind) -> None:
+        person = kind is Kind.PERSON
         by_class: dict[str, list[LLKU]] = defaultdict(list)
         for unit in units:
-            by_class[PERSON_CLASS if kind is Kind.PERSON else unit.label].append(unit)
+            by_class[PERSON_CLASS if person else unit.label].append(unit)
         withheld = scan.withheld if scan is not None else frozenset()
         if kind is Kind.OBJECT:
             self._set_aside_confusions(by_class, withheld)
         classes = set(by_class)
         if scan is not None:
-            classes |= {c for c, t in self.trackers.items() if t.tracks and self._kind_of(c) is kind}
-        classes -= withheld
+            classes.update(c for c, t in self.trackers.items() if t.tracks and (c == PERSON_CLASS) is person)
+        if withheld:
+            classes -= withheld
         camera_room = None
         if scan is not None:
             pos = scan.view.position
@@ -226,20 +236,19 @@ class CognitiveLayer(Component):
             if room is None and dets:
                 p = dets[0].position
                 room = self.locations.room_at(p[0], p[1])
-            plans.append((self.role.policy(cls, room), cls))
-        plans.sort(key=lambda pc: (-pc[0].priority, pc[1]))
+            plans.append((self._policy(cls, room), cls))
+        plans.sort(key=_plan_order)
+        visible = scan.view.visible if scan is not None else None
         for policy, cls in plans:
             dets = by_class.get(cls, [])
-            tracker = self.tracker(cls, kind)
-            admitted = self._admitted.get(cls) == stamp
+            tracker = self.trackers.get(cls) or self.tracker(cls, kind)
             if (
-                not admitted
+                self._admitted.get(cls) != stamp
                 and not self._due(cls, "scan", policy, stamp)
                 and not (policy.rate_hz > 0 and self._unsettled(tracker, dets))
             ):
                 self.stats.skipped += len(dets)
                 continue
-            visible = scan.view.visible if scan is not None else None
             if dets:
                 result = tracker.associate(dets, stamp, visible)
                 for track, det in result.updated + result.created:
@@ -265,22 +274,21 @@ class CognitiveLayer(Component):
         Counted in ``stats.confusions``.
         """
         for cls, dets in list(by_class.items()):
-            kept: list[LLKU] = []
-            for det in dets:
-                if self._confused(cls, det, by_class, withheld):
-                    self.stats.confusions += 1
-                else:
-                    kept.append(det)
-            by_class[cls] = kept
+            kept = [det for det in dets if not self._confused(cls, det, by_class, withheld)]
+            if len(kept) < len(dets):
+                self.stats.confusions += len(dets) - len(kept)
+                by_class[cls] = kept
 
     def _confused(
         self, cls: str, det: LLKU, by_class: dict[str, list[LLKU]], withheld: frozenset[str]
     ) -> bool:
         own = self.trackers.get(cls)
-        if own is not None and any(
-            math.dist(det.position, t.centroid) < own.radius for t in own.tracks.values()
-        ):
-            return False
+        if own is not None:
+            mine = own.by_symbol(det.identity) if det.identity else None
+            if mine is not None and math.dist(det.position, mine.centroid) < own.radius:
+                return False  # the common case: a recognised entity where its track is
+            if any(math.dist(det.position, t.centroid) < own.radius for t in own.tracks.values()):
+                return False
         for other_cls, tracker in self.trackers.items():
             if other_cls in (cls, PERSON_CLASS) or other_cls in withheld:
                 continue
@@ -322,8 +330,16 @@ class CognitiveLayer(Component):
                 return True
         return False
 
-    def _kind_of(self, cls: str) -> Kind:
-        return Kind.PERSON if cls == PERSON_CLASS else Kind.OBJECT
+    def _policy(self, cls: str, room: str | None) -> Policy:
+        """The role's policy for ``cls`` in ``room``, remembered per role (roles are immutable data)."""
+        if self._policies_of is not self.role:
+            self._policies.clear()
+            self._policies_of = self.role
+        key = (cls, room)
+        found = self._policies.get(key)
+        if found is None:
+            found = self._policies[key] = self.role.policy(cls, room)
+        return found
 
     def _due(self, cls: str, stream: str, policy: Policy, stamp: float) -> bool:
         if policy.rate_hz <= 0:
@@ -430,6 +446,9 @@ class CognitiveLayer(Component):
         self._emit(cku)
 
     def _emit(self, cku: CKU) -> None:
-        topic = f"cognition.{cku.kind.value}.{topic_level(cku.symbol)}"
+        key = (cku.kind, cku.symbol)
+        topic = self._topics.get(key)
+        if topic is None:
+            topic = self._topics[key] = f"cognition.{cku.kind.value}.{topic_level(cku.symbol)}"
         self.bus.publish(topic, cku, source=self.name, stamp=cku.stamp)
         self.stats.published += 1

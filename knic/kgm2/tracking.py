@@ -138,7 +138,7 @@ class Tracker:
         result = Association()
         used: set[int] = set()
         pending: list[LLKU] = []
-        for det in self._one_per_identity(detections):
+        for det in detections if len(detections) == 1 else self._one_per_identity(detections):
             track = self._by_symbol.get(det.identity) if det.identity else None
             if track is None:
                 pending.append(det)
@@ -210,8 +210,6 @@ class Tracker:
         A symbol names one individual, so it has at most one track; a second detection with the same identity
         in one scan is a false positive or a confusion and is discarded (counted in :attr:`duplicates`).
         """
-        if len(detections) == 1:
-            return list(detections)
         best: dict[str, LLKU] = {}
         out: list[LLKU] = []
         for det in detections:

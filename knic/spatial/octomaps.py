@@ -104,8 +104,8 @@ class EntityOctomap:
         self._changed = True
         self._centroid = centroid
         self.updates += 1
-        if self._full_scan_due():  # the next query reads every leaf: the clouds are not needed
-            self._inserted.clear()
+        if self._scanned_at is None or self.updates - self._scanned_at >= self.full_scan_every:
+            self._inserted.clear()  # the next query reads every leaf: the clouds are not needed
 
     def _full_scan_due(self) -> bool:
         return self._scanned_at is None or self.updates - self._scanned_at >= self.full_scan_every

@@ -11,6 +11,7 @@ def test_measure_octomap_throughput_reports_its_figures() -> None:
     assert set(figures) >= {
         "octomap_throughput_ratio",
         "octomap_overhead_ratio_same_mode",
+        "octomap_ratio_with_key_reads",
         "kgm2_points_per_s",
     }
     assert figures["octomap_throughput_ratio"] > 0 and figures["raw_points_per_s"] > 0
