@@ -82,6 +82,7 @@ class CommandLanguage:
     quantifiers: dict[str, tuple[str, ...]] = field(default_factory=dict)
     everything: tuple[str, ...] = ()
     there: tuple[str, ...] = ()
+    containment: tuple[str, ...] = ()
     bare_request: str | None = None
 
     def verb_frames(self) -> dict[str, tuple[tuple[str, ...], str | None]]:
@@ -207,6 +208,7 @@ def load_language(path: str | Path = DEFAULT_PATH) -> CommandLanguage:
         quantifiers=tables["quantifiers"],
         everything=_phrases(data, "everything", source),
         there=_phrases(data, "there", source),
+        containment=_phrases(data, "containment", source),
         bare_request=bare,
     )
     lists: dict[str, tuple[str, ...]] = {v.name: v.phrases for v in verbs}

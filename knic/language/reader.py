@@ -233,6 +233,8 @@ class Reader:
             grouped = any(t.is_group for t in head.chunk.terms)
             candidates = self._members(head.chunk.terms) if grouped else head.chunk.terms
             kept = tuple(t for t in candidates if any(self._within(t, r) for r in rooms))
+            if not kept and place.prep is not None and place.prep_text not in self.language.containment:
+                kept = self._near(candidates, rooms)  # "the bedside table next to the bed"
             if not kept:
                 where = self.vocabulary.phrase_of(rooms[0].symbol)
                 raise LanguageError(f"there is no {head.chunk.text} in the {where} in this world")
@@ -240,6 +242,15 @@ class Reader:
             if grouped:  # "the lights in the bedroom": those of the group that are there
                 head.quantity = head.quantity or "all"
             place.consumed = True
+
+    def _near(self, candidates: Sequence[Term], landmarks: Sequence[Term]) -> tuple[Term, ...]:
+        """Of the candidates said with a landmark ("next to the bed"), those in the landmark's room; a lone
+        candidate stays whatever the world says of its room."""
+        rooms = {r.symbol for r in landmarks if self.is_a(r, "room")}
+        rooms |= {p for r in landmarks for p in self.vocabulary.locations.get(r.symbol, ())}
+        others = [t for t in candidates if t.symbol not in {r.symbol for r in landmarks}]
+        kept = tuple(t for t in others if rooms & set(self.vocabulary.locations.get(t.symbol, ())))
+        return kept or (tuple(candidates) if len(candidates) == 1 else ())
 
     def _members(self, terms: Sequence[Term]) -> tuple[Term, ...]:
         """The terms of every member of the groups among ``terms`` (one term per member symbol)."""
