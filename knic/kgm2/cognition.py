@@ -251,7 +251,9 @@ class CognitiveLayer(Component):
                 continue
             if dets:
                 result = tracker.associate(dets, stamp, visible)
-                for track, det in result.updated + result.created:
+                for track, det in result.updated:
+                    self._publish_track(track, det, policy, stamp)
+                for track, det in result.created:
                     self._publish_track(track, det, policy, stamp)
                 dropped = result.dropped
             else:

@@ -148,7 +148,8 @@ class Tracker:
                 result.updated.append((track, det))
         if pending:
             self._match_pending(pending, used, result, now)
-        self._count_misses(used, visible, result, now)
+        if len(used) < len(self.tracks):  # some track was not updated by this scan
+            self._count_misses(used, visible, result, now)
         return result
 
     def _match_pending(self, pending: list[LLKU], used: set[int], result: Association, now: float) -> None:
@@ -296,7 +297,8 @@ class Tracker:
         track.misses = 0
         track.confidence = 0.5 * track.confidence + 0.5 * det.confidence
         track.support.append(det.uid)
-        self._count_face(track, det)
+        if self.face_pixels:
+            self._count_face(track, det)
 
     def _count_face(self, track: Track, det: LLKU) -> None:
         if not self.face_pixels or det.identity is not None:

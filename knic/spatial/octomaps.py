@@ -78,6 +78,7 @@ class EntityOctomap:
         self._scanned_at: int | None = None  # ``updates`` at the last full read
         self._keys: Keys = EMPTY_KEYS
         self._centroid: tuple[float, float, float] | None = None  # the keys' fallback after an update
+        self._start = np.zeros(3, dtype=np.float64)  # where the rays of the cloud being inserted start
 
     def update(
         self, points: Points, centroid: tuple[float, float, float], origin: Sequence[float] | None
@@ -97,9 +98,8 @@ class EntityOctomap:
             if origin is None:
                 self.tree.updateNodes(points, True)
             else:
-                self.tree.insertPointCloud(
-                    points, self.ray_origin(centroid, origin), -1.0, False, self.discretize
-                )
+                start = self._ray_start(centroid, origin)
+                self.tree.insertPointCloud(points, start, -1.0, False, self.discretize)
             self._inserted.append(points)
         self._changed = True
         self._centroid = centroid
@@ -192,13 +192,20 @@ class EntityOctomap:
 
     def ray_origin(self, centroid: Sequence[float], origin: Sequence[float]) -> npt.NDArray[np.float64]:
         """Where rays start: the sensor, or the point ``ray_length`` metres from the centroid towards it."""
+        return self._ray_start(centroid, origin).copy()
+
+    def _ray_start(self, centroid: Sequence[float], origin: Sequence[float]) -> npt.NDArray[np.float64]:
+        # :meth:`ray_origin` written into one buffer this octomap reuses (octomap copies it at once)
+        start = self._start
+        ox, oy, oz = origin
         distance = math.dist(origin, centroid)
         if self.ray_length <= 0 or distance <= self.ray_length:
-            return np.array(origin, dtype=np.float64)
+            start[0], start[1], start[2] = ox, oy, oz
+            return start
         f = self.ray_length / distance
         cx, cy, cz = centroid
-        ox, oy, oz = origin
-        return np.array((cx + (ox - cx) * f, cy + (oy - cy) * f, cz + (oz - cz) * f), dtype=np.float64)
+        start[0], start[1], start[2] = cx + (ox - cx) * f, cy + (oy - cy) * f, cz + (oz - cz) * f
+        return start
 
     def occupied_at(self, point: Sequence[float]) -> bool:
         """Whether the octree holds an occupied voxel at a world-frame point (reads the tree itself)."""
