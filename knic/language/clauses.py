@@ -43,6 +43,10 @@ class Clause:
     vague: bool = False  # "a bit", "a little": a level meant but not said
     unsaid_goal: bool = False  # "away", "back": a destination meant but not said
 
+    def names_nothing(self) -> bool:
+        """No noun phrase, state, level or missing name: only the verb and words not understood."""
+        return not (self.args or self.states or self.levels or self.missing)
+
     def empty(self) -> bool:
         """Nothing said in the clause (besides its verb)."""
         return not (self.args or self.states or self.levels or self.missing or self.unknown)

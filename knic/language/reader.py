@@ -97,9 +97,11 @@ class Reader:
             except AmbiguityError:
                 raise
             except LanguageError:
-                if clause.verb is None or not clause.verb.soft or len(clauses) == 1:
+                talk = clause.verb is not None and (clause.verb.soft or clause.names_nothing())
+                if not talk or len(clauses) == 1:
                     raise
-                continue  # "it's getting late, close the blinds": the "-ing" verb was talk, not a command
+                # "it's getting late, close the blinds", "look, bring me the mug": talk, not an action
+                continue
             if clause.unsaid_goal and clause.verb is not None and clause.verb.frames[0] == "TAKING":
                 ask_where.update(range(len(frames), len(frames) + len(group)))
             groups.append(group)
