@@ -137,7 +137,7 @@ def split_clauses(
             clauses.append(current)
             filling = _Filling()
             continue
-        _fill(current, chunk, nxt, filling)
+        _fill(current, chunk, nxt, filling, names_item)
     if preamble.empty():
         return clauses
     devices = [a for a in preamble.args if names_device(a.chunk)]
@@ -160,7 +160,13 @@ def split_clauses(
     return clauses
 
 
-def _fill(clause: Clause, chunk: Chunk, nxt: Chunk | None, filling: _Filling) -> None:
+def _fill(
+    clause: Clause,
+    chunk: Chunk,
+    nxt: Chunk | None,
+    filling: _Filling,
+    names_item: Callable[[Chunk], bool] = lambda chunk: False,
+) -> None:
     """Add one chunk (not a verb) to a clause, updating what is pending for the next chunk."""
     if chunk.kind == "partitive" and clause.args and nxt is not None and nxt.kind in ("entity", "det"):
         container = clause.args.pop()  # "a glass of water": the water is meant
@@ -181,6 +187,13 @@ def _fill(clause: Clause, chunk: Chunk, nxt: Chunk | None, filling: _Filling) ->
     if chunk.kind == "unsaid":
         clause.unsaid_goal = True
         return
+    if (
+        chunk.kind == "pronoun"
+        and chunk.role in ("item", "any")
+        and filling.prep is None
+        and any(a.prep is None and a.chunk.kind == "entity" and names_item(a.chunk) for a in clause.args)
+    ):
+        return  # "find the cup, it should be in the kitchen": the pronoun is the object just named
     quantity = filling.quantity.role if filling.quantity is not None and chunk.kind == "entity" else None
     if quantity is None and chunk.kind == "entity" and chunk.role == "plural":
         quantity = "all"  # "turn on the lamps": every lamp

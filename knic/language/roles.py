@@ -198,6 +198,16 @@ def _motion(reader: Resolver, clause: Clause, previous: Frames, groups: list[Fra
     if not places:
         raise LanguageError(f"{_verb(clause)} where? I heard no room or furniture of this world")
     goal = reader.resolve(places[-1], ("room", "furniture"), previous, groups)[0]
+    # "go with tracy to the kitchen": she goes too; "come with me to the kitchen": the robot goes
+    others = [
+        p
+        for a in args
+        if a.prep == "companion" and not a.consumed
+        for p in reader.resolve(a, ("person",), previous, groups)
+        if p != SPEAKER
+    ]
+    if others:
+        return [CommandFrame("ACCOMPANYING", {"theme": p, "goal": goal}) for p in dict.fromkeys(others)]
     return [CommandFrame("MOTION", {"goal": goal})]
 
 
