@@ -301,6 +301,10 @@ PHRASED = [
         "go to the bedroom and turn off the lights there",
         ["MOTION goal=bedroom", "OPERATING device=bedroom_lights state=off"],
     ),
+    ("go with tracy to the kitchen", ["ACCOMPANYING theme=tracy goal=kitchen"]),
+    ("find the cup, it should be in the kitchen", ["SEARCHING theme=cup ground=kitchen"]),
+    ("put the glasses on the bedside table next to the bed", ["PLACING theme=glasses goal=bedside_table"]),
+    ("look, could you bring me the mug", ["BRINGING theme=mug beneficiary=me"]),
 ]
 
 
@@ -327,6 +331,7 @@ ASKED = [
     ("make sure the light is on", "which light"),
     ("the dimmer please", "how far"),
     ("go and find jack then bring him to me", "where should i take jack"),
+    ("bring me the cup from the table next to the sofa", "the coffee table, the side table or the tv table"),
 ]
 
 
