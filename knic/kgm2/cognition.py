@@ -40,6 +40,9 @@ LOCATION_PERCEPTS = "percept.map.location"
 #: tracker class of a person percept (people are one class; identity tells them apart)
 PERSON_CLASS = "person"
 
+#: the kinds KGM-2 tracks (camera units, grouped by scan); the others pass through
+_TRACKED_KINDS = frozenset({Kind.OBJECT, Kind.PERSON})
+
 
 @dataclass
 class TrackingConfig:
@@ -144,7 +147,7 @@ class CognitiveLayer(Component):
             if isinstance(payload, Scan):
                 self._scan(payload, pending.pop(payload.kind, []))
             elif isinstance(payload, LLKU):
-                if payload.kind in (Kind.OBJECT, Kind.PERSON):
+                if payload.kind in _TRACKED_KINDS:
                     pending[payload.kind].append(payload)
                 else:
                     self._passthrough(payload, message)
@@ -276,15 +279,20 @@ class CognitiveLayer(Component):
         Counted in ``stats.confusions``.
         """
         for cls, dets in list(by_class.items()):
-            kept = [det for det in dets if not self._confused(cls, det, by_class, withheld)]
+            own = self.trackers.get(cls)
+            kept = [det for det in dets if not self._confused(cls, det, by_class, withheld, own)]
             if len(kept) < len(dets):
                 self.stats.confusions += len(dets) - len(kept)
                 by_class[cls] = kept
 
     def _confused(
-        self, cls: str, det: LLKU, by_class: dict[str, list[LLKU]], withheld: frozenset[str]
+        self,
+        cls: str,
+        det: LLKU,
+        by_class: dict[str, list[LLKU]],
+        withheld: frozenset[str],
+        own: Tracker | None,
     ) -> bool:
-        own = self.trackers.get(cls)
         if own is not None:
             mine = own.by_symbol(det.identity) if det.identity else None
             if mine is not None and math.dist(det.position, mine.centroid) < own.radius:
