@@ -68,7 +68,7 @@ class TrackingConfig:
     face_pixels: int = 40
 
 
-def _plan_order(plan: tuple[Policy, str]) -> tuple[int, str]:
+def _plan_order(plan: tuple[Policy, str, list[LLKU]]) -> tuple[int, str]:
     """Classes of a scan in decreasing role priority, then by name."""
     return (-plan[0].priority, plan[1])
 
@@ -232,25 +232,25 @@ class CognitiveLayer(Component):
         if scan is not None:
             pos = scan.view.position
             camera_room = self.locations.room_at(float(pos[0]), float(pos[1]))
-        plans: list[tuple[Policy, str]] = []
+        plans: list[tuple[Policy, str, list[LLKU]]] = []
         for cls in classes:
-            dets = by_class.get(cls, [])
+            dets = by_class.get(cls) or []
             room = camera_room
             if room is None and dets:
                 p = dets[0].position
                 room = self.locations.room_at(p[0], p[1])
-            plans.append((self._policy(cls, room), cls))
+            plans.append((self._policy(cls, room), cls, dets))
         plans.sort(key=_plan_order)
         visible = scan.view.visible if scan is not None else None
-        for policy, cls in plans:
-            dets = by_class.get(cls, [])
+        stats = self.stats
+        for policy, cls, dets in plans:
             tracker = self.trackers.get(cls) or self.tracker(cls, kind)
             if (
                 self._admitted.get(cls) != stamp
                 and not self._due(cls, "scan", policy, stamp)
                 and not (policy.rate_hz > 0 and self._unsettled(tracker, dets))
             ):
-                self.stats.skipped += len(dets)
+                stats.skipped += len(dets)
                 continue
             if dets:
                 result = tracker.associate(dets, stamp, visible)
@@ -261,8 +261,8 @@ class CognitiveLayer(Component):
                 dropped = result.dropped
             else:
                 dropped = tracker.miss_scan(visible, stamp) if scan is not None else []
-            self.stats.processed += len(dets)
-            self.stats.by_class[cls] += len(dets)
+            stats.processed += len(dets)
+            stats.by_class[cls] += len(dets)
             for track in dropped:
                 self._publish_lost(track, kind, stamp)
 
