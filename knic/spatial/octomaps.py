@@ -135,7 +135,10 @@ class EntityOctomap:
             self._scanned_at = self.updates
             self.full_scans += 1
         else:
-            candidates = [self._occupied, *(keys_of(p, self.resolution) for p in self._inserted)]
+            # octomap keys the points as single-precision coordinates: a point a hair below a voxel
+            # boundary in double precision lies in the next voxel for the tree
+            hit = (keys_of(p.astype(np.float32).astype(np.float64), self.resolution) for p in self._inserted)
+            candidates = [self._occupied, *hit]
             self._occupied = self.occupied_among(np.concatenate(candidates))
             self.searches += 1
         self._inserted.clear()

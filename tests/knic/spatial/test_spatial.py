@@ -128,6 +128,21 @@ def test_entity_keys_are_a_query_made_when_read() -> None:
     assert {tuple(k) for k in keys} == {tuple(k) for k in octo.occupied_keys()}
 
 
+def test_a_point_on_a_voxel_boundary_is_searched_where_the_tree_put_it() -> None:
+    octo = EntityOctomap()
+    origin = (-1.0, 1.0, 1.2)
+    octo.update(blob((0.1, 1.0, 1.0), spread=0.01), (0.1, 1.0, 1.0), origin)
+    assert octo.full_scans == 0 and len(octo.keys) > 0 and octo.full_scans == 1
+    # a hair below x = 0.15 in double precision, but 0.15000000596 in the single precision octomap keys in
+    edge = np.array([[0.15 - 1e-9, 1.0125, 1.0125]] * 5)
+    assert keys_of(edge)[0, 0] + 1 == octo.tree.coordToKey(edge[0])[0]
+    for _ in range(3):
+        octo.update(edge, (0.12, 1.0, 1.0), origin)
+    keys = octo.keys
+    assert octo.searches == 1  # not a full read: the search found the voxel the tree keyed
+    assert {tuple(k) for k in keys} == {tuple(k) for k in octo.occupied_keys()}
+
+
 def test_unread_clouds_are_not_kept_once_a_full_read_is_due() -> None:
     octo = EntityOctomap()
     cloud = blob((2.0, 0.0, 0.8), spread=0.02)
