@@ -25,7 +25,12 @@ EMPTY_KEYS.setflags(write=False)
 
 
 def keys_of(points: Points, resolution: float = DEFAULT_RESOLUTION) -> Keys:
-    """Octomap voxel keys of world-frame points (same rounding as ``OcTree.coordToKey``), shape (N, 3)."""
+    """Octomap voxel keys of world-frame points (octomap's formula), shape (N, 3).
+
+    The points are keyed in double precision; octomap's trees key single-precision coordinates, which for a
+    point a hair below a voxel boundary can be the next voxel (round the points through ``np.float32`` to
+    get the tree's keys).
+    """
     if len(points) == 0:
         return EMPTY_KEYS
     return np.floor(points * (1.0 / resolution)).astype(np.int64) + KEY_OFFSET
