@@ -21,10 +21,7 @@ Roles (``knic/roles.yaml``) decide what happens before the goals reach the knowl
   pipeline grounding the knowledge base at the role's rates.
 * other roles: the robot repeats each command back and goes ahead.
 
-A role with revisit data (companion) also says what the robot does when it has nothing to do (no goal, or
-every open goal dropped and waiting for news, and no dialogue going on): it goes back to look at the people
-whose belief aged and at the rooms not looked at for longest (:mod:`knic.system.revisits`; ``revisit`` and
-``revisited`` task events in the trace). ``--no-revisits`` keeps it where it is.
+With nothing to do, a companion revisits as its role says (:mod:`knic.system.revisits`); ``--no-revisits``.
 """
 
 from __future__ import annotations
@@ -128,11 +125,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         "--max-sim-time", type=float, default=600.0, metavar="S", help="simulated seconds (default 600)"
     )
     parser.add_argument("--gui", action="store_true", help="open the pybullet GUI window")
-    parser.add_argument(
-        "--no-revisits",
-        action="store_true",
-        help="when it has nothing to do, the robot waits where it is instead of the role's revisits",
-    )
+    parser.add_argument("--no-revisits", action="store_true", help="an idle robot waits, no revisits")
     parser.add_argument("--json", action="store_true", help="print only a JSON summary at the end")
 
 
