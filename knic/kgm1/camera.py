@@ -58,6 +58,8 @@ class CameraKP(KnowledgeProvider):
         edge_px: pixels at each image border where an entity counts as not visible (a partly visible entity
             at the frame edge may be missed without having gone).
         sensor: sensor name written into the units.
+        miss_footprint_m: half size, metres, of the entities this kind reports, for the visibility test
+            (:class:`~knic.kgm1.sources.FrameView` ``footprint_m``): a partly hidden entity is not missed.
 
     Deprojection: the mask's pixels (at most ``max_points``) become world points; points whose depth lies
     farther than ``depth_tolerance`` metres (or three median absolute deviations, whichever is larger) from
@@ -81,6 +83,7 @@ class CameraKP(KnowledgeProvider):
         edge_px: int = 0,
         depth_tolerance: float = 0.15,
         sensor: str = "head_camera",
+        miss_footprint_m: float = 0.0,
     ) -> None:
         super().__init__(name, frequency, bus, kb, "vision")
         self.camera = camera
@@ -90,6 +93,7 @@ class CameraKP(KnowledgeProvider):
         self.min_pixels = min_pixels
         self.miss_range = 0.8 * detect_range if miss_range is None else miss_range
         self.edge_px = edge_px
+        self.miss_footprint_m = miss_footprint_m
         self.depth_tolerance = depth_tolerance
         self.sensor = sensor
         self.frames = 0
@@ -168,7 +172,7 @@ class CameraKP(KnowledgeProvider):
 
     def publish_scan(self, frame: CameraFrame, withheld: frozenset[str] = frozenset()) -> None:
         """Publish the end-of-frame marker for this KP's kind (``withheld``: classes the gate held back)."""
-        view = FrameView(frame, self.miss_range, edge_px=self.edge_px)
+        view = FrameView(frame, self.miss_range, edge_px=self.edge_px, footprint_m=self.miss_footprint_m)
         scan = Scan(self.kind, frame.stamp, view, self.sensor, withheld)
         self.bus.publish(f"percept.vision.scan.{self.kind.value}", scan, source=self.name, stamp=frame.stamp)
 
@@ -189,6 +193,8 @@ class CameraObjectsKP(CameraKP):
 
     Args:
         class_symbols: detector class -> item symbol, for classes that name exactly one item.
+        miss_footprint_m: half size, metres, of an item for the visibility test (the household items are
+            7 to 20 cm across): an item partly hidden is not counted missed.
         Others as :class:`CameraKP`.
     """
 
@@ -208,6 +214,7 @@ class CameraObjectsKP(CameraKP):
         min_pixels: int = 1,
         miss_range: float | None = None,
         edge_px: int = 0,
+        miss_footprint_m: float = 0.04,
     ) -> None:
         super().__init__(
             name,
@@ -221,6 +228,7 @@ class CameraObjectsKP(CameraKP):
             min_pixels=min_pixels,
             miss_range=miss_range,
             edge_px=edge_px,
+            miss_footprint_m=miss_footprint_m,
         )
         self.class_symbols = dict(class_symbols)
 

@@ -79,10 +79,23 @@ class FrameView:
         margin: depth tolerance, metres.
         edge_px: pixels at each image border treated as outside the image (an entity there is only partly in
             view and may not be detected).
+        footprint_m: metres, the half size of the entity around a point: the point is visible only when the
+            pixels at that distance around its projection (left, right, above, below) are not hidden either.
+            An entity partly hidden (a small glass behind a bottle, an item at a person's side) shows too few
+            pixels to be detected reliably, so not seeing it there is no evidence of its absence. 0: the
+            point's own pixel only.
     """
 
-    def __init__(self, frame: CameraFrame, max_range: float, margin: float = 0.2, edge_px: int = 0) -> None:
+    def __init__(
+        self,
+        frame: CameraFrame,
+        max_range: float,
+        margin: float = 0.2,
+        edge_px: int = 0,
+        footprint_m: float = 0.0,
+    ) -> None:
         self.stamp = frame.stamp
+        self.footprint_m = max(0.0, footprint_m)
         self.position = np.asarray(frame.camera_pose.position, dtype=np.float64)
         self._rot = frame.camera_pose.rotation_matrix()
         self._k: CameraIntrinsics = frame.intrinsics
@@ -112,4 +125,22 @@ class FrameView:
         if idx.size:
             seen_depth = self._depth[v[idx], u[idx]].astype(np.float64)
             result[idx] = seen_depth >= z[idx] - self.margin
+        if self.footprint_m > 0:
+            idx = np.flatnonzero(result)
+            if idx.size:
+                result[idx] = self._unhidden_around(u[idx], v[idx], z[idx])
         return result
+
+    def _unhidden_around(
+        self, u: npt.NDArray[np.int64], v: npt.NDArray[np.int64], z: npt.NDArray[np.float64]
+    ) -> npt.NDArray[np.bool_]:
+        """Whether the pixels ``footprint_m`` around each projection (clipped to the image) are not hidden."""
+        k = self._k
+        du = np.maximum(1, np.round(k.fx * self.footprint_m / z)).astype(np.int64)
+        dv = np.maximum(1, np.round(k.fy * self.footprint_m / z)).astype(np.int64)
+        clear = np.ones(len(z), dtype=bool)
+        for su, sv in ((-1, 0), (1, 0), (0, -1), (0, 1)):
+            uu = np.clip(u + su * du, 0, k.width - 1)
+            vv = np.clip(v + sv * dv, 0, k.height - 1)
+            clear &= self._depth[vv, uu].astype(np.float64) >= z - self.margin
+        return clear

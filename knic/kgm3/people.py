@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import math
 from collections import deque
+from dataclasses import replace
 
 from knic.bus import Bus
 from knic.kgm3.places import _EntityPlaceKP
@@ -69,6 +70,12 @@ class PersonPlaceKP(_EntityPlaceKP):
         self.visitor_views = visitor_views
         self.visitor_clearance = 1.0
         self.visitor_window_s = 3.0
+        #: face views without recognition after which an unnamed person may be a visitor met before
+        self.rebind_views = min(3, visitor_views)
+        #: seconds an unnamed person's sighting stays a candidate for a visitor whose track is lost later
+        self.rebind_window_s = 15.0
+        #: KGM-2 track id -> the latest CKU of an unnamed person seen well, not yet an instance
+        self._unbound: dict[int, CKU] = {}
         self.moving_ttl_s = min(moving_ttl_s, ttl_s)
         self.dwell_share = dwell_share
         self.max_ttl_s = max(max_ttl_s, ttl_s)
@@ -93,16 +100,40 @@ class PersonPlaceKP(_EntityPlaceKP):
             return super().instance_of(cku)
         found = self.discovered.get(cku.track_id)
         if found is not None or cku.attributes.get("lost"):
+            self._unbound.pop(cku.track_id, None)
             return found
-        if int(cku.attributes.get("face_views", 0)) < self.visitor_views:
-            return None
-        if self.known_near(cku.position, cku.stamp):
+        views = int(cku.attributes.get("face_views", 0))
+        if views < self.rebind_views or self.known_near(cku.position, cku.stamp):
             return None
         again = self.visitor_out_of_sight()
         if again is not None:
+            self._unbound.pop(cku.track_id, None)
             self.discovered[cku.track_id] = again
             return again
+        if views < self.visitor_views:
+            self._unbound[cku.track_id] = cku  # maybe the visitor, once their old track is gone
+            return None
+        self._unbound.pop(cku.track_id, None)
         return self.discover(self.visitor_prefix, cku)
+
+    def rebind_pending(self, now: float) -> None:
+        """A visitor's track was lost while an unnamed person, seen well ``rebind_views`` times in the last
+        ``rebind_window_s`` seconds, was somewhere else: that person is the visitor, who had walked on (the
+        robot looked away before the new track had ``visitor_views`` face views). Their latest sighting is
+        processed as the visitor's, standing for as many sightings as the track had hits."""
+        for tid, cku in list(self._unbound.items()):
+            if now - cku.stamp > self.rebind_window_s:
+                del self._unbound[tid]
+        if not self._unbound:
+            return
+        again = self.visitor_out_of_sight()
+        if again is None:
+            return
+        tid, cku = max(self._unbound.items(), key=lambda item: item[1].stamp)
+        del self._unbound[tid]
+        self.discovered[tid] = again
+        hits = int(cku.attributes.get("hits", 1))
+        self.seen(replace(cku, symbol=again, attributes={**cku.attributes, "sightings": hits}))
 
     def visitor_out_of_sight(self) -> str | None:
         """The visitor met before whom KGM-2 no longer tracks (their track was lost), last seen latest; None
@@ -179,8 +210,10 @@ class PersonPlaceKP(_EntityPlaceKP):
         return min(self.max_ttl_s, max(self.ttl_s, self.dwell_share * dwell))
 
     def step(self, now: float) -> None:
-        """Process sightings and explored rooms, then age the beliefs of people unseen for their TTL."""
+        """Process sightings and explored rooms, bind a visitor met again (:meth:`rebind_pending`), then age
+        the beliefs of people unseen for their TTL."""
         super().step(now)
+        self.rebind_pending(now)
         for fact in self.kb.facts("person_at"):
             symbol = fact.args[0]
             prov = self.kb.why(fact)

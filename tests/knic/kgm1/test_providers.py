@@ -163,3 +163,18 @@ def test_camera_gate_withholds_classes_before_deprojection(paper_kb: KnowledgeBa
     assert [m.topic for m in got] == ["percept.vision.object.glasses", "percept.vision.scan.object"]
     assert sorted(asked) == [("glasses", 3.0), ("mug", 3.0)]  # one question per class and frame
     assert got[1].payload.withheld == frozenset({"mug"}) and kp.withheld == 2
+
+
+def test_frame_view_with_a_footprint_does_not_see_a_partly_hidden_entity() -> None:
+    from tests.knic.synthetic import INTRINSICS
+
+    # a bottle 1 m in front covers the image right of the pixel where a glass 2 m ahead projects
+    cu = int(INTRINSICS.cx)
+    bottle = ("water", (cu + 1, 0, INTRINSICS.width, INTRINSICS.height), 1.0, None)
+    beside = frame(0.0, CAMERA, boxes=[bottle])
+    glass = np.array([[7.0, 2.0, 1.2]])
+    assert FrameView(beside, max_range=4.0).visible(glass).tolist() == [True]
+    # the glass's own pixel is clear, its right side is hidden: not seeing it there proves nothing
+    assert FrameView(beside, max_range=4.0, footprint_m=0.1).visible(glass).tolist() == [False]
+    # in the open the footprint changes nothing
+    assert FrameView(frame(0.0, CAMERA), max_range=4.0, footprint_m=0.1).visible(glass).tolist() == [True]

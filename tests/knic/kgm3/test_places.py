@@ -394,3 +394,29 @@ def test_a_visitor_met_again_after_the_track_was_lost_is_the_same_visitor(
     for i in range(3):
         stranger(912, (KITCHEN[0], KITCHEN[1], 1.0), 30.0 + 0.2 * i, i + 1)
     assert kp.discovered[912] == "visitor_2"
+
+
+def test_a_visitor_seen_elsewhere_before_the_old_track_was_lost_is_bound_when_it_is(
+    paper_kb: KnowledgeBase, paper_locations: LocationModel
+) -> None:
+    bus = Bus()
+    publish_place_ckus(bus, paper_locations)
+    kp = PersonPlaceKP(bus, paper_kb, needed=2, visitor_views=5)
+
+    def stranger(tid: int, where: tuple[float, float, float], t: float, views: int, **extra: bool) -> None:
+        unit = cku(f"person_{tid}", Kind.PERSON, where, t, cls="person", hits=views, face_views=views)
+        send(bus, replace(unit, track_id=tid, attributes={**unit.attributes, **extra}))
+        kp.step(t)
+
+    for i in range(6):
+        stranger(920, (KITCHEN[0], KITCHEN[1], 1.0), 1.0 + 0.2 * i, i + 1)
+    assert kp.discovered == {920: "visitor_1"} and paper_kb.holds("person_at", "visitor_1", "kitchen")
+    # the visitor walked to the bedroom unseen; an unnamed person is seen there well three times, then the
+    # robot looks away; while visitor_1's old track lives, that person is nobody yet
+    for i in range(3):
+        stranger(921, (BEDROOM[0], BEDROOM[1], 1.0), 10.0 + 0.2 * i, i + 1)
+    assert 921 not in kp.discovered
+    # the kitchen is looked at: visitor_1's track is lost there; the person in the bedroom is the visitor
+    stranger(920, (KITCHEN[0], KITCHEN[1], 1.0), 14.0, 5, lost=True)
+    assert kp.discovered[921] == "visitor_1" and paper_kb.type_of("visitor_2") is None
+    assert paper_kb.facts("person_at", "visitor_1") == [Fact("person_at", ("visitor_1", "bedroom"))]
