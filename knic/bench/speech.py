@@ -27,7 +27,9 @@ Figures (wall-clock time; the decoder is built once before timing):
   that's wrong", "of course"); both are development sets.
 
 ``--fixtures DIR`` runs another set in the same layout, e.g. ``tests/fixtures/speech_dev``, the dev set
-(other sentences and voices, to tune on without touching the test set); ``--option KEY=VALUE`` (repeatable),
+(other sentences and voices, to tune on without touching the test set), ``speech_voices_dev`` (the
+development commands and other speech in four more voices, for measures that must carry across voices) or
+``speech_ood_dev``; ``--option KEY=VALUE`` (repeatable),
 ``--no-branch-penalty`` and ``--acoustic-model NAME|DIR`` (``espeak``, the default, or ``base``, the
 unadapted model: see :mod:`knic.language.acoustic`) change the recogniser for that run only.
 """
