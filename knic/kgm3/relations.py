@@ -95,9 +95,18 @@ def floor_centre(cku: CKU) -> tuple[float, float]:
     return (float(centres[:, 0].mean()), float(centres[:, 1].mean()))
 
 
+#: metres outside every room within which a sound is still placed in the nearest room
+SOUND_SNAP_M = 0.75
+
+
 class SoundAtKP(KPPrime):
     """``(sound_at ?s ?room)``: the room holding the sound's source (rooms from the location CKUs), for
-    ``ttl_s`` seconds after it was heard."""
+    ``ttl_s`` seconds after it was heard.
+
+    The source's position is an estimate (microphone-array localisation is off by decimetres): one that
+    falls just outside every room, as a door bell mounted on a wall does, is taken to be in the room whose
+    outline is nearest, within ``snap_m`` metres; farther away it is outside the home and ignored.
+    """
 
     def __init__(
         self,
@@ -105,11 +114,13 @@ class SoundAtKP(KPPrime):
         kb: KnowledgeBase,
         *,
         ttl_s: float = 2.0,
+        snap_m: float = SOUND_SNAP_M,
         frequency: float = 10.0,
         name: str = "kp'.sound_at",
     ) -> None:
         super().__init__(name, frequency, bus, kb, "cognition.sound", places=True)
         self.ttl_s = ttl_s
+        self.snap_m = snap_m
         self.heard: dict[tuple[str, str], float] = {}
 
     def step(self, now: float) -> None:
@@ -117,7 +128,7 @@ class SoundAtKP(KPPrime):
         assert self.inbox is not None
         for message in self.inbox.drain():
             cku: CKU = message.payload
-            room = self.locations.room_at(cku.position[0], cku.position[1])
+            room = self.locations.room_near(cku.position[0], cku.position[1], self.snap_m)
             if room is None or not self.is_a(cku.symbol, "sound"):
                 continue
             self.heard[(cku.symbol, room)] = cku.stamp

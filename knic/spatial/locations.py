@@ -111,3 +111,8 @@ class LocationModel:
     def room_at(self, x: float, y: float, z: float = 0.5) -> str | None:
         """The room containing a world point, or None (outside, or in a wall gap)."""
         return self.rooms.at_point((x, y, z))
+
+    def room_near(self, x: float, y: float, within: float, z: float = 0.5) -> str | None:
+        """The room containing a world point, else the room nearest it within ``within`` metres, else
+        None."""
+        return self.rooms.nearest((x, y, z), within)

@@ -213,3 +213,30 @@ class VolumeSet:
             ):
                 return name
         return None
+
+    def nearest(self, point: Sequence[float], within: float) -> str | None:
+        """The volume containing a world-frame point, else the one whose outline passes nearest it in the
+        plane, if no farther than ``within`` metres (a point a little outside every room: a noisy estimate
+        of a source near a wall); None when there is none that near."""
+        inside = self.at_point(point)
+        if inside is not None or within <= 0:
+            return inside
+        x, y = float(point[0]), float(point[1])
+        best, best_d = None, float(within)
+        for name, prism in self.prisms.items():
+            d = _distance_to_outline(x, y, prism.polygon)
+            if d <= best_d:
+                best, best_d = name, d
+        return best
+
+
+def _distance_to_outline(x: float, y: float, polygon: npt.NDArray[np.float64]) -> float:
+    """Planar distance from (x, y) to the closed polygon's edges (M, 2)."""
+    a = np.asarray(polygon, dtype=np.float64)[:, :2]
+    b = np.roll(a, -1, axis=0)
+    ab = b - a
+    length2 = np.maximum((ab**2).sum(axis=1), 1e-12)
+    t = np.clip(((x - a[:, 0]) * ab[:, 0] + (y - a[:, 1]) * ab[:, 1]) / length2, 0.0, 1.0)
+    dx = a[:, 0] + t * ab[:, 0] - x
+    dy = a[:, 1] + t * ab[:, 1] - y
+    return float(np.sqrt(dx**2 + dy**2).min())

@@ -64,6 +64,23 @@ def test_sound_at_lives_for_its_ttl(home_kb: KnowledgeBase, home_world: World) -
     assert not home_kb.facts("sound_at")
 
 
+def test_a_sound_heard_just_outside_the_walls_is_in_the_nearest_room(
+    home_kb: KnowledgeBase, home_world: World
+) -> None:
+    locations: LocationModel = build_location_model(home_world)
+    bus = Bus()
+    publish_place_ckus(bus, locations)
+    kp = SoundAtKP(bus, home_kb, ttl_s=2.0)
+    # the door bell hangs 0.2 m inside the entrance hall's outer wall: a noisy estimate 0.3 m outside it
+    send(bus, cku("doorbell", Kind.SOUND, (4.1, -0.1, 1.5), 3.0, cls="doorbell"))
+    kp.step(3.0)
+    assert home_kb.facts("sound_at") == [Fact("sound_at", ("doorbell", "entrance_hall"))]
+    # far outside the home: nobody's door bell
+    send(bus, cku("doorbell", Kind.SOUND, (4.1, -3.0, 1.5), 6.0, cls="doorbell"))
+    kp.step(6.0)
+    assert not home_kb.facts("sound_at")
+
+
 def test_device_states(home_kb: KnowledgeBase) -> None:
     bus = Bus()
     kp = DeviceStateKP(bus, home_kb)
