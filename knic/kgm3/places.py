@@ -277,6 +277,8 @@ class _EntityPlaceKP(KPPrime):
             if now - explored.since < self.explored_settle_s:
                 continue  # the camera is still in the room: let the sightings of this instant come in
             seen = self.last_seen.get(symbol, float("-inf"))
+            if belief.status is BeliefStatus.EFFECT:  # the robot put it there itself: as good as a sighting
+                seen = max(seen, belief.since)
             if seen < explored.since - self.explored_grace_s:
                 self.forget_place(symbol, now, ())
 

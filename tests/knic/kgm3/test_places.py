@@ -106,6 +106,25 @@ def test_explored_room_without_the_object_retracts_the_belief(
     assert not paper_kb.facts("object_at", "glasses")
 
 
+def test_an_item_the_robot_just_put_down_outlives_the_look_around_that_follows(
+    paper_kb: KnowledgeBase, paper_locations: LocationModel
+) -> None:
+    """The robot's own placing is as good as a sighting: the room explored right after it (the camera
+    turned away on leaving) does not refute it; an exploration well after it, without a sighting, does."""
+    bus = Bus()
+    publish_place_ckus(bus, paper_locations)
+    kp = ObjectPlaceKP(bus, paper_kb, needed=2, explored_grace_s=5.0)
+    effect = BeliefStatus.EFFECT
+    paper_kb.add_fact("object_at", "glasses", "kitchen", source="dispatcher", at=20.0, status=effect)
+    paper_kb.add_fact("explored", "kitchen", source="kp'.explored", at=24.0, status=BeliefStatus.OBSERVED)
+    kp.step(24.0 + kp.explored_settle_s)
+    assert paper_kb.facts("object_at", "glasses")
+    paper_kb.remove_fact("explored", "kitchen", source="kp'.explored", at=50.0)  # the exploration aged out
+    paper_kb.add_fact("explored", "kitchen", source="kp'.explored", at=60.0, status=BeliefStatus.OBSERVED)
+    kp.step(60.0 + kp.explored_settle_s)
+    assert not paper_kb.facts("object_at", "glasses")
+
+
 def test_items_in_the_hand_are_left_to_the_actions(
     paper_kb: KnowledgeBase, paper_locations: LocationModel
 ) -> None:
