@@ -70,7 +70,7 @@ class Chunker:
             if phrase and (phrase not in table or table[phrase][0] < priority):
                 table[phrase] = (priority, chunk)
 
-        for phrase in lang.fillers:
+        for phrase in (*lang.fillers, *lang.anywhere):  # "search the house for ...": anywhere
             put(phrase, 1, None)
         for phrase in lang.determiners:
             put(phrase, 2, Chunk("det", phrase))

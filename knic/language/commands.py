@@ -83,6 +83,7 @@ class CommandLanguage:
     everything: tuple[str, ...] = ()
     there: tuple[str, ...] = ()
     containment: tuple[str, ...] = ()
+    anywhere: tuple[str, ...] = ()
     bare_request: str | None = None
 
     def verb_frames(self) -> dict[str, tuple[tuple[str, ...], str | None]]:
@@ -209,6 +210,7 @@ def load_language(path: str | Path = DEFAULT_PATH) -> CommandLanguage:
         everything=_phrases(data, "everything", source),
         there=_phrases(data, "there", source),
         containment=_phrases(data, "containment", source),
+        anywhere=_phrases(data, "anywhere", source),
         bare_request=bare,
     )
     lists: dict[str, tuple[str, ...]] = {v.name: v.phrases for v in verbs}
@@ -216,7 +218,7 @@ def load_language(path: str | Path = DEFAULT_PATH) -> CommandLanguage:
     lists.update(det=spoken, fillers=language.fillers, joiners=language.joiners)
     lists.update(percent=language.percent, openers=language.openers, closers=language.closers)
     lists.update(vague_levels=language.vague_levels, unsaid_goal=language.unsaid_goal)
-    lists.update(everything=language.everything, there=language.there)
+    lists.update(everything=language.everything, there=language.there, anywhere=language.anywhere)
     lists.update({f"quantifier_{k}": v for k, v in language.quantifiers.items()})
     object.__setattr__(language, "lists", lists)
     language.template_nodes()  # fail early on a malformed template
