@@ -25,13 +25,18 @@ import random
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
-from typing import Protocol
+from typing import TYPE_CHECKING, Protocol
 
 from core.errors import WorldError
 from core.inputs import read_yaml
-from core.robot import Utterance
 from worlds.scenario import CALL_TEXT, Event, Scenario
 
+if TYPE_CHECKING:
+    from core.robot import Utterance
+    from worlds.model import World
+
+#: who the task serves ("me") in a world that has her
+DEFAULT_PERSON = "annie"
 #: the voice bank shipped with the ERL apartment
 DEFAULT_BANK = Path(__file__).resolve().parent / "erl_home" / "voices" / "bank.yaml"
 #: words in what the robot says that Annie takes as "what do you need?" / "is that right?"
@@ -39,6 +44,32 @@ ASKS_REQUEST = ("what can i do for you", "how can i help")
 ASKS_ANSWER = ("is that right",)
 #: what the robot says when it did not get her answer: she then says it plainly
 ASKS_PLAIN_ANSWER = ("please answer yes or no",)
+
+
+def first_person(world: World) -> str | None:
+    """Who "me" is in ``world`` when nobody is named: annie when the world knows her, else its first known
+    person in file order, else None (the rule of ``knic goal --world``, ``knic run``, ``knic sweep --suite
+    flat`` and the Granny Annie benchmark; strangers, ``known: false``, are never "me")."""
+    known = [name for name, person in world.people.items() if person.known]
+    return DEFAULT_PERSON if DEFAULT_PERSON in known else next(iter(known), None)
+
+
+def served_person(world: World, name: str | None = None) -> str:
+    """The person the Granny Annie task serves in ``world``: ``name`` when given, else :func:`first_person`.
+
+    Raises:
+        WorldError: ``name`` is not a known person of the world, or the world knows nobody.
+    """
+    known = [n for n, person in world.people.items() if person.known]
+    if name is not None:
+        if name not in known:
+            offered = ", ".join(known) or "none"
+            raise WorldError(f"world {world.name}: no known person {name!r} to serve (known: {offered})")
+        return name
+    chosen = first_person(world)
+    if chosen is None:
+        raise WorldError(f"world {world.name}: no known person to serve")
+    return chosen
 
 
 @dataclass(frozen=True)

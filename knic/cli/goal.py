@@ -55,18 +55,19 @@ def load_vocabulary(args: argparse.Namespace) -> Any:
     if getattr(args, "world", None) is not None:
         if args.problem is not None:
             raise KnicError("--world and --problem both say what the world holds: give one of them")
-        vocabulary, people = world_vocabulary(args.world, domain, args.lexicon)
+        vocabulary, me = world_vocabulary(args.world, domain, args.lexicon)
         if args.speaker is None:
-            args.speaker = "annie" if "annie" in people else next(iter(people), "annie")
+            args.speaker = me or "annie"
         return vocabulary
     args.speaker = args.speaker or "annie"
     problem = args.problem or (DEFAULT_PROBLEM if args.domain is None else None)
     return read_vocabulary(domain, problem, args.lexicon)
 
 
-def world_vocabulary(world: str, domain: Any, lexicon: str | None) -> tuple[Any, list[str]]:
+def world_vocabulary(world: str, domain: Any, lexicon: str | None) -> tuple[Any, str | None]:
     """The vocabulary of a world file (what the robot knows before a run: its instances and which room each
-    piece of furniture is in) with the domain's types, constants and predicates, and the people it knows.
+    piece of furniture is in) with the domain's types, constants and predicates, and who "me" is there
+    (:func:`worlds.granny_annie.first_person`; None when it knows nobody).
 
     Only the world file is read (no simulator, no planning library), so ``knic goal`` stays quick to start.
 
@@ -76,6 +77,7 @@ def world_vocabulary(world: str, domain: Any, lexicon: str | None) -> tuple[Any,
     """
     from knic.language.vocabulary import Lexicon, Vocabulary
     from knic.language.world import WORLDS, find_lexicon, read_vocabulary
+    from worlds.granny_annie import first_person
     from worlds.loader import load_world, resolve_world_path
 
     path = resolve_world_path(world)
@@ -91,7 +93,7 @@ def world_vocabulary(world: str, domain: Any, lexicon: str | None) -> tuple[Any,
     lexicon_path = lexicon or find_lexicon(domain, path) or WORLDS / "erl_home" / "lexicon.yaml"
     names = Lexicon.load(lexicon_path)
     vocabulary = Vocabulary.from_instances(instances, base.types, names, base.predicates, locations)
-    return vocabulary, [p for p in model.people if p not in strangers]
+    return vocabulary, first_person(model)
 
 
 def print_understanding(data: dict[str, Any], as_json: bool) -> None:

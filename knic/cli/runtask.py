@@ -7,7 +7,7 @@ import argparse
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from core.errors import KnicError
+from core.errors import KnicError, WorldError
 
 if TYPE_CHECKING:
     from knic.system import KnicSystem
@@ -68,8 +68,30 @@ def task_episode(args: argparse.Namespace) -> Any:
     from worlds.granny_annie import episode
     from worlds.scenario import load_scenario
 
-    scenario = load_scenario(args.scenario, load_world(args.world))
+    world = load_world(args.world)
+    try:
+        scenario = load_scenario(args.scenario, world)
+    except WorldError as exc:
+        written_for = _scenario_world(args.scenario)
+        if written_for is None or written_for == world.name:
+            raise
+        raise WorldError(
+            f"scenario {args.scenario} is written for world {written_for}, not {world.name} ({exc}); for the"
+            f" Granny Annie task there run: knic bench granny-annie --world {args.world} --episodes 1"
+        ) from None
     return episode(scenario, args.seed) if scenario.task is not None else None
+
+
+def _scenario_world(scenario: str) -> str | None:
+    """The world a scenario file says it was written for (its ``world:``), or None."""
+    from core.inputs import read_yaml
+    from worlds.scenario import resolve_scenario_path
+
+    try:
+        data = read_yaml(resolve_scenario_path(scenario), "scenario", WorldError)
+    except WorldError:
+        return None
+    return str(data["world"]) if isinstance(data, dict) and data.get("world") else None
 
 
 def task_summary(flow: Any) -> dict[str, Any]:
@@ -99,11 +121,11 @@ def judge_task(result: Any, flow: Any, request: str) -> None:
 
 
 def default_speaker(world: Any) -> str:
-    """Who "me" is without ``--speaker``: annie if the world has her, else its first person, else annie."""
+    """Who "me" is without ``--speaker``: :func:`worlds.granny_annie.first_person`, else annie."""
     from worlds.api import load_world
+    from worlds.granny_annie import DEFAULT_PERSON, first_person
 
-    people = load_world(world).people
-    return "annie" if "annie" in people else next(iter(people), "annie")
+    return first_person(load_world(world)) or DEFAULT_PERSON
 
 
 class TaskReferee:
@@ -125,7 +147,7 @@ class TaskReferee:
             meant = [str(g) for g in flow.intake.understand(text, speaker=flow.person).goals]
         except KnicError:
             meant = []
-        self.episode = episode_of_task(system.world, text, episode.seat, episode.seed, meant)
+        self.episode = episode_of_task(system.world, text, episode.seat, episode.seed, meant, flow.person)
         self.flow = flow
         self.recorder = Recorder(system.sim, system.sim, system.kb, system.pipeline.bus)
         self.recorder.attach(system.scheduler)

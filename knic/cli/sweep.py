@@ -81,9 +81,10 @@ def cases(suites: list[str], seeds: list[int], world: str | None, limit: float) 
             if world is None:
                 raise KnicError("knic sweep: the flat suite needs --world FILE")
             from worlds.api import load_world
+            from worlds.granny_annie import DEFAULT_PERSON, first_person
 
             flat = load_world(world)
-            speaker = sorted(flat.people)[0] if flat.people else "annie"
+            speaker = first_person(flat) or DEFAULT_PERSON
             out += [
                 {
                     "suite": suite,

@@ -5,7 +5,8 @@ microphone hears (:meth:`core.robot.Robot.poll_utterances`) and acts only throug
 and the robot's voice:
 
 1. ``wait_call``: Annie's tablet call arrives (:data:`worlds.scenario.CALL_TEXT`, localised where she tapped);
-   the room holding that point becomes ``(person_at annie room)`` (source ``tablet``) and the goal
+   the room holding that point becomes ``(person_at annie room)`` (source ``tablet``; annie, or whoever the
+   flow serves) and the goal
    ``(robot_at r2d2 room)`` joins the running goals;
 2. ``go``: once the robot believes it is in her room, that goal is withdrawn and the robot asks what she
    needs;
@@ -47,7 +48,7 @@ from knic.system import TaskFlow
 from knowledge_base import BeliefStatus, Fact
 from planner.dispatch import DispatcherState
 from planner.trace import EventKind, TraceEvent
-from worlds.granny_annie import AnnieActor, Episode
+from worlds.granny_annie import AnnieActor, Episode, served_person
 from worlds.scenario import CALL_TEXT
 
 if TYPE_CHECKING:
@@ -81,7 +82,8 @@ class GrannyAnnieFlow(TaskFlow):
 
     Args:
         system: the assembled run (knowledge base, robot, dispatcher, trace, voice).
-        person: who calls and asks.
+        person: who calls and asks (default: :func:`worlds.granny_annie.served_person` of the run's world:
+            annie, else its first known person).
         role: the robot's role name (for the door bell reaction).
         max_asks: how often the robot asks for the request in all.
         answer_timeout_s: simulated seconds without an answer after which the robot asks again.
@@ -96,7 +98,7 @@ class GrannyAnnieFlow(TaskFlow):
         self,
         system: KnicSystem,
         *,
-        person: str = "annie",
+        person: str | None = None,
         role: str = "companion",
         max_asks: int = 3,
         answer_timeout_s: float = 20.0,
@@ -109,7 +111,7 @@ class GrannyAnnieFlow(TaskFlow):
         self.system = system
         self.kb = system.kb
         self.robot = system.parts.robot
-        self.person = person
+        self.person = person if person is not None else served_person(system.world)
         self.reaction = DOORBELL_REACTION.get(role, "tell")
         self.max_asks = max_asks
         self.answer_timeout_s = answer_timeout_s
@@ -457,19 +459,21 @@ def start_with_request(
     system: KnicSystem,
     request: str,
     *,
-    person: str = "annie",
+    person: str | None = None,
     request_audio: str | Path | None = None,
     answer: str = "yes",
     call_at: float = 2.0,
     role: str | None = None,
 ) -> GrannyAnnieFlow:
     """Start a Granny Annie episode in a run set up elsewhere (a benchmark's own world file and scenario):
-    ``person`` calls at ``call_at``, asks ``request`` (the recording ``request_audio``, else the voice bank's
+    ``person`` (default: the world's served person, annie or its first known person) calls at ``call_at``,
+    asks ``request`` (the recording ``request_audio``, else the voice bank's
     recording of those words, else the words as text) and answers ``answer`` (yes or no) when the robot
     repeats the request back. Call ``system.run()`` afterwards; the flow tells how it ended."""
     from worlds.granny_annie import custom_episode
 
-    episode = custom_episode(person, request, request_audio=request_audio, answer=answer, call_at=call_at)
+    who = person or served_person(system.world)
+    episode = custom_episode(who, request, request_audio=request_audio, answer=answer, call_at=call_at)
     return start_granny_annie(system, episode, role=role)
 
 

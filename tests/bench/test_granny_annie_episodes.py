@@ -52,8 +52,8 @@ def test_episodes_cover_the_task(world: World, episodes: list[Episode]) -> None:
     kinds = {r.kind for e in episodes for r in e.requests}
     assert kinds == {"device", "find", "bring", "accompany"}
     assert {len(e.requests) for e in episodes} == {1, 2, 3}
-    assert {e.annie_on for e in episodes} == {"bed", "sofa"}
-    assert all(e.annie_room == world.furniture[e.annie_on].room for e in episodes if e.annie_on)
+    assert {e.person_on for e in episodes} == {"bed", "sofa"}
+    assert all(e.person_room == world.furniture[e.person_on].room for e in episodes if e.person_on)
     spoken = [e for e in episodes if e.audio is not None]
     assert spoken and all(Path(e.audio).is_file() for e in spoken if e.audio)
     assert any(e.off_prior for e in episodes)
@@ -101,7 +101,7 @@ def test_generated_commands_are_understood_as_the_goals_written(
 
 def test_bank_commands_read_back_into_requests(world: World, vocab: Vocabulary) -> None:
     placements = {"apple": "kitchen_cabinet", "remote": "coffee_table", "glasses": "bedside_table"}
-    candidates = candidate_requests(world, vocab, placements)
+    candidates = candidate_requests(world, vocab, placements, "annie")
     chain = requests_of_text(
         "switch on the hallway light, find the remote and bring me my glasses", candidates
     )
@@ -148,7 +148,7 @@ def test_a_world_without_priors_devices_or_other_people_works(world: World, tmp_
     flat = load_world(path)
     eps = generate_episodes(str(path), 12, 0)
     assert {r.kind for e in eps for r in e.requests} <= {"find", "bring"}
-    assert all(e.annie_on in ("bed", "sofa") for e in eps)
+    assert all(e.person_on in ("bed", "sofa") for e in eps)
     for e in eps:
         for item, furniture in e.placements.items():  # without priors: the file's place unless off-prior
             assert (furniture == flat.items[item].on) != (item in e.off_prior)
@@ -175,6 +175,6 @@ def test_requests_name_only_people_the_robot_knows(world: World, episodes: list[
         placements = {i: it.on for i, it in w.items.items() if it.on}
         led: set[str] = set()
         for i in range(60):
-            requests = draw_requests(w, vocab, np.random.default_rng([11, i]), placements)
+            requests = draw_requests(w, vocab, np.random.default_rng([11, i]), placements, "annie")
             led |= {t for r in requests if r.kind == "accompany" for t in r.targets}
         assert ("jack" in led) is known, (known, led)

@@ -39,8 +39,8 @@ def episode(text: str, *requests: Request, audio: str | None = None, index: int 
         seed=0,
         world="erl_home",
         lexicon=None,
-        annie_on="sofa",
-        annie_room="living_room",
+        person_on="sofa",
+        person_room="living_room",
         placements={"remote": "coffee_table", "tablet": "side_table"},
         off_prior=(),
         requests=requests,
@@ -63,15 +63,19 @@ APPLE = Request(
 def test_a_repeat_back_is_judged_by_its_meaning(vocabulary: Vocabulary) -> None:
     assert from_her_side("bring the remote to you") == "bring the remote to me"
     said = "You asked me to bring the remote to you. Is that right?"
-    assert repeat_back_means(said, ("(has annie remote)",), vocabulary)
-    assert not repeat_back_means(said, ("(has annie tablet)",), vocabulary)
-    assert not repeat_back_means(said, ("(has annie remote)", "(light_on hallway_light)"), vocabulary)
+    assert repeat_back_means(said, ("(has annie remote)",), vocabulary, "annie")
+    assert not repeat_back_means(said, ("(has annie tablet)",), vocabulary, "annie")
+    assert not repeat_back_means(
+        said, ("(has annie remote)", "(light_on hallway_light)"), vocabulary, "annie"
+    )
     chain = "You asked me to switch on the hallway light and then bring the apple from the kitchen cabinet"
     chain += " to you."
     goals = ("(light_on hallway_light)", "(has annie apple)", "(taken_from apple kitchen_cabinet)")
-    assert repeat_back_means(chain + " Is that right?", goals, vocabulary)
-    assert not repeat_back_means(chain + " Is that right?", goals[:2], vocabulary)  # the source is part of it
-    assert not repeat_back_means("Sorry, I did not understand.", goals, vocabulary)
+    assert repeat_back_means(chain + " Is that right?", goals, vocabulary, "annie")
+    assert not repeat_back_means(
+        chain + " Is that right?", goals[:2], vocabulary, "annie"
+    )  # the source is part of it
+    assert not repeat_back_means("Sorry, I did not understand.", goals, vocabulary, "annie")
 
 
 @dataclass
@@ -98,7 +102,11 @@ class Room:
 def annie_in(room: Room, ep: Episode, vocabulary: Vocabulary) -> JudgingAnnie:
     task, no, plain_no = task_episode(ep)
     return JudgingAnnie(
-        room, task, no=no, plain_no=plain_no, agrees=lambda s: repeat_back_means(s, ep.goals, vocabulary)
+        room,
+        task,
+        no=no,
+        plain_no=plain_no,
+        agrees=lambda s: repeat_back_means(s, ep.goals, vocabulary, "annie"),
     )
 
 

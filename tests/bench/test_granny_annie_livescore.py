@@ -69,7 +69,7 @@ def test_a_task_scenarios_command_becomes_the_referees_requests() -> None:
         ("device", ("(light_on bedroom_left_light)",)),
         ("bring", ("(has annie remote)",)),
     ]
-    assert ep.annie_room == "bedroom" and ep.annie_on == "bed"
+    assert ep.person_room == "bedroom" and ep.person_on == "bed"
     # words the benchmark cannot read back: one request per goal they mean
     meant = ["(reported tablet)", "(has annie tablet)"]
     ep = episode_of_task(world, "locate the tablet and bring it to me", "sofa", 3, meant)

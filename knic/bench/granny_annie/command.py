@@ -31,6 +31,12 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     )
     parser.add_argument("--world", default="erl_home", help="world name or world file (default erl_home)")
     parser.add_argument(
+        "--person",
+        default=None,
+        metavar="NAME",
+        help="the person served, who calls and asks (default annie; else the world's first known person)",
+    )
+    parser.add_argument(
         "--baseline",
         default=",".join(BASELINES),
         help="comma-separated baselines of knic, static, oracle (default all)",
@@ -85,7 +91,7 @@ def run(args: argparse.Namespace) -> int:
         if reason is not None:
             raise KnicError(f"{where}: --backend ray: {reason}")
     wall0 = time.perf_counter()
-    episodes = generate_episodes(args.world, args.episodes, args.seed)
+    episodes = generate_episodes(args.world, args.episodes, args.seed, args.person)
     out: Path = args.out
     write_world_files(out, episodes)
     tasks = [
@@ -105,6 +111,7 @@ def run(args: argparse.Namespace) -> int:
     )
     config = {
         "world": args.world,
+        "person": episodes[0].person,
         "episodes": args.episodes,
         "seed": args.seed,
         "role": args.role,

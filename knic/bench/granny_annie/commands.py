@@ -9,16 +9,16 @@ switch on/off a light (or a lexicon group)      ``(light_on d)`` / ``(light_off 
 set the dimmer to N percent                     ``(device_level d lN)``
 open / close / half open the blinds             ``(device_level d l100)`` / ``l0`` / ``l50``
 find / locate / look for / search for the X     ``(reported X)``
-bring me / get me / fetch me the X             ``(has annie X)``
+bring me / get me / fetch me the X             ``(has P X)``, P the served person
 bring me ... the X from F                       also ``(taken_from X F)`` (when the domain has it)
 lead / guide / escort / accompany P to the R    ``(person_at P R)``
 ==============================================  ==========================================
 
 A device request always asks for a state the device is not in at the start (so it cannot pass untouched); an
-accompany request names a person the robot knows (never a stranger such as the door-bell visitor, whom the
-robot has no name for) and a room the person is not in. Every phrase names exactly one symbol of its kind. A
-command has at most one bring request (a simulated person holds one object at a time) and at most one
-accompany request.
+accompany request names a person the robot knows other than the served person (never a stranger such as the
+door-bell visitor, whom the robot has no name for) and a room the person is not in. Every phrase names
+exactly one symbol of its kind. A command has at most one bring request (a simulated person holds one
+object at a time) and at most one accompany request.
 """
 
 from __future__ import annotations
@@ -36,8 +36,6 @@ if TYPE_CHECKING:
 CHAIN_WEIGHTS = (0.45, 0.35, 0.20)
 #: request kinds and their weights when drawing a request
 KIND_WEIGHTS = {"device": 0.3, "find": 0.25, "bring": 0.3, "accompany": 0.15}
-#: the person the requests come from ("me")
-ANNIE = "annie"
 #: percent levels the domain names (l0 ... l100)
 LEVELS = (0, 25, 50, 75, 100)
 #: blinds commands by target percent
@@ -59,8 +57,8 @@ class Request:
     Attributes:
         kind: ``device``, ``find``, ``bring`` or ``accompany``.
         text: the words, in the world's vocabulary ("switch on the hallway light").
-        goals: the PDDL goals the request means, e.g. ``("(has annie remote)",)``; a device request has one
-            goal per device it operates.
+        goals: the PDDL goals the request means, e.g. ``("(has annie remote)",)`` when annie asks; a device
+            request has one goal per device it operates.
         targets: the devices, the item, or the person concerned.
         room: the destination room of an accompany request, else None.
     """
@@ -116,9 +114,10 @@ class _Phrases:
 
 
 def draw_requests(
-    world: World, vocab: Vocabulary, rng: np.random.Generator, placements: dict[str, str]
+    world: World, vocab: Vocabulary, rng: np.random.Generator, placements: dict[str, str], person: str
 ) -> list[Request]:
-    """1-3 requests the world supports, with distinct targets (see the module docstring)."""
+    """1-3 requests the world supports, with distinct targets, as ``person`` (the served person, "me") says
+    them (see the module docstring)."""
     phrases = _Phrases(vocab)
     count = int(pick(rng, [1, 2, 3], list(CHAIN_WEIGHTS)))
     used: set[str] = set()
@@ -130,7 +129,9 @@ def draw_requests(
             "bring": [i for i in sorted(placements) if i not in used and i in phrases.by_symbol]
             if not any(r.kind == "bring" for r in out)
             else [],
-            "accompany": _people(world, phrases, used) if not any(r.kind == "accompany" for r in out) else [],
+            "accompany": _people(world, phrases, used, person)
+            if not any(r.kind == "accompany" for r in out)
+            else [],
         }
         kinds = [k for k in KIND_WEIGHTS if options[k]]
         if not kinds:
@@ -148,7 +149,7 @@ def draw_requests(
             verb = pick(rng, list(BRING_VERBS))
             text = f"{verb} the {phrases.of(rng, target)}"
             source = placements[target]
-            goals: tuple[str, ...] = (f"(has {ANNIE} {target})",)
+            goals: tuple[str, ...] = (f"(has {person} {target})",)
             if rng.random() < SOURCE_P and source in phrases.by_symbol:
                 text += f" from the {phrases.of(rng, source)}"
                 goals += _source_goal(vocab, target, source)
@@ -178,13 +179,13 @@ def _devices(world: World, phrases: _Phrases, used: set[str]) -> list[str]:
     ]
 
 
-def _people(world: World, phrases: _Phrases, used: set[str]) -> list[str]:
+def _people(world: World, phrases: _Phrases, used: set[str], person: str) -> list[str]:
     return [
         p.name
         for p in sorted(world.people.values(), key=lambda p: p.name)
         if p.present
         and p.known
-        and p.name != ANNIE
+        and p.name != person
         and p.name not in used
         and p.name in phrases.by_symbol
         and world.room_of(*p.position) is not None
@@ -232,9 +233,12 @@ def _device_request(
 # ------------------------------------------------------------------------------------ reading a command back
 
 
-def candidate_requests(world: World, vocab: Vocabulary, placements: dict[str, str]) -> dict[str, Request]:
-    """Every single request the world supports at the start, by its normalised wording (all verbs, phrases
-    and determiners); used to read a recorded command back into requests (:func:`requests_of_text`)."""
+def candidate_requests(
+    world: World, vocab: Vocabulary, placements: dict[str, str], person: str
+) -> dict[str, Request]:
+    """Every single request the world supports at the start as ``person`` says it, by its normalised wording
+    (all verbs, phrases and determiners); used to read a recorded command back into requests
+    (:func:`requests_of_text`). A wording naming anything the world lacks is not a candidate."""
     from knic.language.vocabulary import normalize, number_words
 
     phrases = _Phrases(vocab)
@@ -277,21 +281,21 @@ def candidate_requests(world: World, vocab: Vocabulary, placements: dict[str, st
                 for verb in SEARCH_VERBS:
                     add(f"{verb} {det} {phrase}", Request("find", "", (f"(reported {item})",), (item,)))
                 for verb in BRING_VERBS:
-                    request = Request("bring", "", (f"(has {ANNIE} {item})",), (item,))
+                    request = Request("bring", "", (f"(has {person} {item})",), (item,))
                     add(f"{verb} {det} {phrase}", request)
                     sourced = Request(
                         "bring", "", request.goals + _source_goal(vocab, item, placements[item]), (item,)
                     )
                     for source in phrases.by_symbol.get(placements[item], []):
                         add(f"{verb} {det} {phrase} from the {source}", sourced)
-    for person in _people(world, phrases, set()):
-        here = world.room_of(*world.people[person].position)
+    for other in _people(world, phrases, set(), person):
+        here = world.room_of(*world.people[other].position)
         for room in sorted(world.rooms):
             if room == here or room not in phrases.by_symbol:
                 continue
-            request = Request("accompany", "", (f"(person_at {person} {room})",), (person,), room)
+            request = Request("accompany", "", (f"(person_at {other} {room})",), (other,), room)
             for verb in ACCOMPANY_VERBS:
-                for who in phrases.by_symbol[person]:
+                for who in phrases.by_symbol[other]:
                     for where in phrases.by_symbol[room]:
                         add(f"{verb} {who} to the {where}", request)
     return out

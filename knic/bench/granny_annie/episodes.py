@@ -3,7 +3,10 @@
 An :class:`Episode` is everything the referee and the runner need to know about one run, decided before it
 starts:
 
-* where Annie waits (on the bed or the sofa when her priors or the world offer them, else where the world file
+* who is served ("Annie": the person who calls and asks, "me" in her requests): ``annie`` when the world
+  knows her, else the world's first known person in file order, or the person named
+  (:func:`worlds.granny_annie.served_person`);
+* where she waits (on the bed or the sofa when her priors or the world offer them, else where the world file
   puts her);
 * where every item stands: drawn from its priors (weighted), and with probability ``placement.OFF_PRIOR_P`` on
   furniture none of its priors names ("off-prior"); an item without priors stays where the world file puts it
@@ -12,8 +15,11 @@ starts:
 * Annie's command: 1-3 chained ERL requests (operate a device, find an object, bring an object, accompany a
   person to a room) phrased in the world's vocabulary (its lexicon), each with the PDDL goals it means
   (:mod:`~knic.bench.granny_annie.commands`). With probability :data:`BANK_P` the command is one of the voice
-  bank's (``worlds/erl_home/voices/bank.yaml``) that this episode supports, read back into requests; a
-  command the bank has a recording of is spoken with probability :data:`SPOKEN_P`, else typed;
+  bank's (``worlds/erl_home/voices/bank.yaml``) that this episode supports, read back into requests (only a
+  command every name of which the world has: its items, places, devices and people, with "me" the served
+  person; the bank speaks erl_home's names, so another apartment mostly gets generated commands); a
+  command the bank has a recording of in the served person's voice (annie's: the bank is hers) is spoken
+  with probability :data:`SPOKEN_P`, else typed;
 * dynamic events as scenario events (:mod:`worlds.scenario`), timed from the moment the robot takes the
   command: the door bell with a visitor walking in, a person moving an object mid-run (often one Annie asked
   for), people walking between rooms.
@@ -43,7 +49,8 @@ from knic.bench.granny_annie.commands import (
     requests_of_text,
 )
 from knic.bench.granny_annie.events import draw_events
-from knic.bench.granny_annie.placement import draw_annie, draw_placements
+from knic.bench.granny_annie.placement import draw_placements, draw_seat
+from worlds.granny_annie import served_person
 
 if TYPE_CHECKING:
     from knic.language.vocabulary import Vocabulary
@@ -66,24 +73,26 @@ class Episode:
         seed: the run's seed; also the simulator's seed for this episode (``seed * 1000 + index``).
         world: the world name or file the episode was drawn for.
         lexicon: the lexicon file of the world's spoken names, or None.
-        annie_on: the furniture Annie waits on, or None (standing where the world file puts her).
-        annie_room: the room Annie waits in.
+        person_on: the furniture the served person waits on, or None (standing where the world file puts
+            them).
+        person_room: the room the served person waits in.
         placements: item -> furniture it stands on at the start.
         off_prior: items placed where none of their priors says.
         requests: the chained requests, in the order Annie says them.
         text: the whole command as said or typed.
         audio: the voice bank recording of ``text`` when the command is spoken, else None.
-        events: scenario events at the start (``worlds.scenario`` format): Annie's placement.
+        events: scenario events at the start (``worlds.scenario`` format): the served person's placement.
         after_command: scenario events whose ``at`` is seconds after the robot took the command (door bell,
             moved object, people walking; :mod:`.events`).
+        person: the served person: who calls and asks, "me" of the requests (``(has person X)``).
     """
 
     index: int
     seed: int
     world: str
     lexicon: str | None
-    annie_on: str | None
-    annie_room: str
+    person_on: str | None
+    person_room: str
     placements: dict[str, str]
     off_prior: tuple[str, ...]
     requests: tuple[Request, ...]
@@ -91,6 +100,7 @@ class Episode:
     audio: str | None = None
     events: tuple[dict[str, Any], ...] = field(default_factory=tuple)
     after_command: tuple[dict[str, Any], ...] = field(default_factory=tuple)
+    person: str = "annie"
 
     @property
     def name(self) -> str:
@@ -125,6 +135,9 @@ class Episode:
         d["off_prior"] = tuple(d["off_prior"])
         d["events"] = tuple(d["events"])
         d["after_command"] = tuple(d.get("after_command", ()))
+        for old, new in (("annie_on", "person_on"), ("annie_room", "person_room")):  # files written before
+            if old in d:
+                d[new] = d.pop(old)
         return cls(**d)
 
     def scenario(self) -> dict[str, Any]:
@@ -156,50 +169,60 @@ def json_ready(value: Any) -> Any:
 # ---------------------------------------------------------------------------------------------- generation
 
 
-def generate_episodes(world: str | Path, count: int, seed: int) -> list[Episode]:
-    """``count`` episodes of ``world`` (a name or file) for ``seed``.
+def generate_episodes(world: str | Path, count: int, seed: int, person: str | None = None) -> list[Episode]:
+    """``count`` episodes of ``world`` (a name or file) for ``seed``, serving ``person`` (default: annie when
+    the world knows her, else its first known person).
 
     Raises:
-        core.errors.WorldError: the world cannot be loaded.
-        KnicError: the world has nothing Annie could ask for (no device, item or other person).
+        core.errors.WorldError: the world cannot be loaded, or it knows no such person.
+        KnicError: the world has nothing the person could ask for (no device, item or other person).
     """
     from worlds.api import load_world
 
     loaded = load_world(world)
+    served = served_person(loaded, person)
     vocab = world_vocabulary(loaded)
-    return [generate_episode(loaded, str(world), seed, i, vocab) for i in range(count)]
+    return [generate_episode(loaded, str(world), seed, i, vocab, person=served) for i in range(count)]
 
 
 def generate_episode(
-    world: World, world_ref: str, seed: int, index: int, vocab: Vocabulary | None = None
+    world: World,
+    world_ref: str,
+    seed: int,
+    index: int,
+    vocab: Vocabulary | None = None,
+    *,
+    person: str | None = None,
 ) -> Episode:
-    """Episode ``index`` of ``seed`` in ``world`` (see the module docstring); ``vocab`` defaults to
-    :func:`world_vocabulary`."""
+    """Episode ``index`` of ``seed`` in ``world`` serving ``person`` (see the module docstring; default
+    :func:`worlds.granny_annie.served_person`); ``vocab`` defaults to :func:`world_vocabulary`."""
     rng = np.random.default_rng([seed, index])
     vocab = vocab or world_vocabulary(world)
-    annie_on, annie_room = draw_annie(world, rng)
+    person = served_person(world, person)
+    person_on, person_room = draw_seat(world, rng, person)
     placements, off_prior = draw_placements(world, rng)
-    candidates = candidate_requests(world, vocab, placements)
-    usable = [(t, wav, rs) for t, wav in voice_bank() if (rs := requests_of_text(t, candidates)) is not None]
+    candidates = candidate_requests(world, vocab, placements, person)
+    # a bank command is usable only when every name it says is the world's (and "me" is the served person)
+    usable = [(t, w, rs) for t, w, _ in voice_bank() if (rs := requests_of_text(t, candidates)) is not None]
     from_bank = rng.random() < BANK_P
     if usable and from_bank:
         text, _wav, requests = pick(rng, usable)
     else:
-        requests = draw_requests(world, vocab, rng, placements)
+        requests = draw_requests(world, vocab, rng, placements, person)
         if not requests:
-            raise KnicError(f"world {world.name}: nothing Annie could ask for (no device, item or person)")
+            raise KnicError(f"world {world.name}: nothing {person} could ask for (no device, item or person)")
         text = join_requests([r.text for r in requests])
-    recorded = bank_recording(text)
+    recorded = bank_recording(text, person)
     spoken = rng.random() < SPOKEN_P
     audio = str(recorded) if recorded is not None and spoken else None
-    events, after_command = draw_events(world, rng, requests, placements, annie_on)
+    events, after_command = draw_events(world, rng, requests, placements, person_on, person)
     return Episode(
         index=index,
         seed=seed,
         world=world_ref,
         lexicon=str(lexicon_of(world)) if lexicon_of(world) else None,
-        annie_on=annie_on,
-        annie_room=annie_room,
+        person_on=person_on,
+        person_room=person_room,
         placements=placements,
         off_prior=tuple(off_prior),
         requests=tuple(requests),
@@ -207,6 +230,7 @@ def generate_episode(
         audio=audio,
         events=tuple(events),
         after_command=tuple(after_command),
+        person=person,
     )
 
 
@@ -231,22 +255,23 @@ def world_vocabulary(world: World, lexicon: str | Path | None = None) -> Vocabul
 
 
 @lru_cache(maxsize=1)
-def voice_bank() -> tuple[tuple[str, Path], ...]:
-    """(text, WAV file) of the shipped voice bank's requests whose recording exists."""
+def voice_bank() -> tuple[tuple[str, Path, str], ...]:
+    """(text, WAV file, speaker) of the shipped voice bank's requests whose recording exists."""
     bank = VOICES / "bank.yaml"
     if not bank.is_file():
         return ()
     data = read_yaml(bank, "voice bank", KnicError) or {}
     return tuple(
-        (str(u["text"]), VOICES / str(u["file"]))
+        (str(u["text"]), VOICES / str(u["file"]), str(u.get("speaker", "")))
         for u in data.get("utterances", [])
         if u.get("kind") == "request" and (VOICES / str(u["file"])).is_file()
     )
 
 
-def bank_recording(text: str) -> Path | None:
-    """The voice bank's recording of exactly ``text`` (punctuation and case aside), or None."""
+def bank_recording(text: str, person: str = "annie") -> Path | None:
+    """The voice bank's recording of exactly ``text`` (punctuation and case aside) in ``person``'s voice, or
+    None (the bank speaks annie's requests: another served person types them)."""
     from knic.language.vocabulary import normalize
 
     wanted = normalize(text)
-    return next((wav for t, wav in voice_bank() if normalize(t) == wanted), None)
+    return next((wav for t, wav, who in voice_bank() if who == person and normalize(t) == wanted), None)

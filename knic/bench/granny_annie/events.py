@@ -5,7 +5,7 @@ Annie's place is set at t=0. Every other event is timed from the moment the robo
 events happen while the robot works on her request, whatever the trip took; :class:`~.flow.EventsAfterCommand`
 schedules them in the run. The windows are simulated seconds after the command.
 
-* Annie's place: ``person_to`` onto her furniture at t=0 (teleport).
+* Annie's place (the served person's): ``person_to`` onto her furniture at t=0 (teleport).
 * The door bell (probability :data:`VISITOR_P`, when the world has a bell and a person outside): a
   ``doorbell`` event with the visitor walking in to one of their prior rooms.
 * A person moving an object mid-run (probability :data:`MOVE_P`): ``move_object`` by someone other than Annie
@@ -20,7 +20,7 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from knic.bench.granny_annie.commands import ANNIE, Request, pick
+from knic.bench.granny_annie.commands import Request, pick
 from knic.bench.granny_annie.placement import within_arm_height
 
 if TYPE_CHECKING:
@@ -44,15 +44,15 @@ def draw_events(
     rng: np.random.Generator,
     requests: list[Request],
     placements: dict[str, str],
-    annie_on: str | None,
+    seat: str | None,
+    person: str,
 ) -> tuple[list[dict[str, Any]], list[dict[str, Any]]]:
     """The episode's scenario events (see the module docstring): ``(at the start, after the command)``, each
-    sorted by time; the ``at`` of the second list is seconds after the robot took the command."""
+    sorted by time; the ``at`` of the second list is seconds after the robot took the command. ``person`` is
+    the served person (seated on ``seat``; never moved by the other events)."""
     start: list[dict[str, Any]] = []
-    if annie_on is not None:
-        start.append(
-            {"at": 0.0, "type": "person_to", "person": ANNIE, "furniture": annie_on, "teleport": True}
-        )
+    if seat is not None:
+        start.append({"at": 0.0, "type": "person_to", "person": person, "furniture": seat, "teleport": True})
     events: list[dict[str, Any]] = []
     escorted = {t for r in requests if r.kind == "accompany" for t in r.targets}
     bells = [d for d in world.devices.values() if d.kind == "bell"]
@@ -65,7 +65,7 @@ def draw_events(
             {"at": _time(rng, VISITOR_AT), "type": "doorbell", "visitor": visitor, "to": pick(rng, rooms)}
         )
     present = sorted(
-        p.name for p in world.people.values() if p.present and p.name != ANNIE and p.name not in escorted
+        p.name for p in world.people.values() if p.present and p.name != person and p.name not in escorted
     )
     mover = None
     move = rng.random() < MOVE_P

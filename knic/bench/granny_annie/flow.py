@@ -3,7 +3,8 @@
 :func:`start_with_task_flow` is the runner's :data:`~.runner.Starter`. It schedules two parts in the
 assembled run:
 
-* Annie (world side): a :class:`JudgingAnnie`, who makes the tablet call at :data:`CALL_AT_S`, says her
+* Annie (world side; the episode's served person, ``annie`` or whoever the world's is): a
+  :class:`JudgingAnnie`, who makes the tablet call at :data:`CALL_AT_S`, says her
   command when the robot asks what she needs (the voice bank recording when the generator picked one, else
   the words, as typed), and answers the robot's repeat-back: yes only when what it repeated means her
   request, no otherwise (a recording of the bank when her command was spoken, else the word);
@@ -42,7 +43,6 @@ if TYPE_CHECKING:
 
 #: when Annie makes the tablet call (simulated seconds)
 CALL_AT_S = 2.0
-PERSON = "annie"
 _REPEATED = re.compile(r"you asked me to (?P<what>.*?)[.!]?\s*is that right")
 
 
@@ -51,9 +51,7 @@ def from_her_side(words: str) -> str:
     return re.sub(r"\byou\b", "me", re.sub(r"\byour\b", "my", words))
 
 
-def repeat_back_means(
-    said: str, goals: tuple[str, ...], vocabulary: Vocabulary, person: str = PERSON
-) -> bool:
+def repeat_back_means(said: str, goals: tuple[str, ...], vocabulary: Vocabulary, person: str) -> bool:
     """Whether the robot's repeat-back ``said`` ("You asked me to ... Is that right?") means exactly
     ``goals`` (PDDL strings) when ``person`` understands it."""
     from knic.language.understanding import understand
@@ -187,23 +185,25 @@ def task_episode(episode: Episode) -> tuple[TaskEpisode, VoiceClip, VoiceClip]:
     from worlds.granny_annie import Episode as TaskEpisodeType
     from worlds.scenario import Scenario
 
+    person = episode.person
+
     def answers(kind: str) -> tuple[VoiceClip, VoiceClip]:
         if episode.audio is None:
-            word = VoiceClip(Path(), PERSON, kind, kind)
+            word = VoiceClip(Path(), person, kind, kind)
             return word, word
-        clips = [c for c in load_bank(DEFAULT_BANK) if c.speaker == PERSON and c.kind == kind]
+        clips = [c for c in load_bank(DEFAULT_BANK) if c.speaker == person and c.kind == kind]
         if not clips:
-            word = VoiceClip(Path(), PERSON, kind, kind)
+            word = VoiceClip(Path(), person, kind, kind)
             return word, word
         plain = min(clips, key=lambda c: (len(c.text.split()), c.text))
         return clips[episode.sim_seed % len(clips)], plain
 
-    request = VoiceClip(Path(episode.audio) if episode.audio else Path(), PERSON, "request", episode.text)
+    request = VoiceClip(Path(episode.audio) if episode.audio else Path(), person, "request", episode.text)
     yes, plain_yes = answers("yes")
     no, plain_no = answers("no")
     scenario = Scenario(f"granny_annie_{episode.name}", "", ())
-    seat = episode.annie_on or ""
-    task = TaskEpisodeType(episode.sim_seed, PERSON, seat, request, yes, plain_yes, scenario, CALL_AT_S)
+    seat = episode.person_on or ""
+    task = TaskEpisodeType(episode.sim_seed, person, seat, request, yes, plain_yes, scenario, CALL_AT_S)
     return task, no, plain_no
 
 
@@ -222,13 +222,13 @@ def start_with_task_flow(system: KnicSystem, episode: Episode, recorder: Recorde
         task,
         no=no,
         plain_no=plain_no,
-        agrees=lambda said: repeat_back_means(said, episode.goals, vocabulary),
+        agrees=lambda said: repeat_back_means(said, episode.goals, vocabulary, episode.person),
     )
     system.add_flow(AnnieInRun(annie))
     later = scenario_from_dict(episode.later_scenario(), system.world)
     events = EventsAfterCommand(system.sim, later.events)
     system.add_flow(events)
-    flow = GrannyAnnieFlow(system, person=PERSON, role=system.config.role, lexicon=lexicon)
+    flow = GrannyAnnieFlow(system, person=episode.person, role=system.config.role, lexicon=lexicon)
 
     def taken(submission: Submission) -> None:
         recorder.command(system.sim.time, submission.text)

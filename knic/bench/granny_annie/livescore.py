@@ -169,17 +169,19 @@ _KIND_OF = {
 }
 
 
-def episode_of_task(world: Any, text: str, seat: str | None, seed: int, goals: list[str]) -> Episode:
+def episode_of_task(
+    world: Any, text: str, seat: str | None, seed: int, goals: list[str], person: str = "annie"
+) -> Episode:
     """The benchmark episode the referee judges for a task scenario's run (``knic run --scenario
     granny_annie``): Annie's words read back into the benchmark's requests (:func:`.commands.
     requests_of_text`), else one request per goal her words mean (``goals``); items where the world file puts
-    them.
+    them; ``person`` is who asked (the task's person).
     """
     from knic.bench.granny_annie.commands import Request, candidate_requests, requests_of_text
     from knic.bench.granny_annie.episodes import Episode, lexicon_of, world_vocabulary
 
     placements = {name: item.on for name, item in world.items.items() if item.on}
-    requests = requests_of_text(text, candidate_requests(world, world_vocabulary(world), placements))
+    requests = requests_of_text(text, candidate_requests(world, world_vocabulary(world), placements, person))
     if requests is None:
         requests = []
         for goal in goals:
@@ -195,10 +197,11 @@ def episode_of_task(world: Any, text: str, seat: str | None, seed: int, goals: l
         seed=seed,
         world=world.name,
         lexicon=str(lexicon) if lexicon else None,
-        annie_on=seat or None,
-        annie_room=room,
+        person_on=seat or None,
+        person_room=room,
         placements=placements,
         off_prior=(),
         requests=tuple(requests),
         text=text,
+        person=person,
     )

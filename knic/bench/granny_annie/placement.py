@@ -1,4 +1,4 @@
-"""Where Annie waits and where the items stand at the start of an episode.
+"""Where the served person (Annie) waits and where the items stand at the start of an episode.
 
 Items are drawn from their priors (weighted by probability) and, with probability :data:`OFF_PRIOR_P`, put
 on a surface none of their priors names. The world loader spreads the items of one piece of furniture along
@@ -15,7 +15,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from core.errors import KnicError
-from knic.bench.granny_annie.commands import ANNIE, pick
+from knic.bench.granny_annie.commands import pick
 
 if TYPE_CHECKING:
     from worlds.model import World
@@ -24,16 +24,16 @@ if TYPE_CHECKING:
 OFF_PRIOR_P = 0.1
 
 
-def draw_annie(world: World, rng: np.random.Generator) -> tuple[str | None, str]:
-    """(furniture Annie waits on or None, her room): her priors' furniture, else the bed or the sofa, else
-    where the world file puts her.
+def draw_seat(world: World, rng: np.random.Generator, person: str) -> tuple[str | None, str]:
+    """(furniture ``person`` waits on or None, their room): their priors' furniture, else the bed or the sofa,
+    else where the world file puts them.
 
     Raises:
-        KnicError: the world has no ``annie`` or she stands outside every room.
+        KnicError: the world has no such person present, or they stand outside every room.
     """
-    annie = world.people.get(ANNIE)
-    if annie is None:
-        raise KnicError(f"world {world.name}: no person {ANNIE!r} to serve")
+    annie = world.people.get(person)
+    if annie is None or not annie.present:
+        raise KnicError(f"world {world.name}: no person {person!r} in the apartment to serve")
     options = [p for p in annie.priors if p.furniture is not None]
     if options:
         on = pick(rng, [p.furniture for p in options], [p.probability for p in options])
@@ -44,7 +44,7 @@ def draw_annie(world: World, rng: np.random.Generator) -> tuple[str | None, str]
         return on, world.furniture[on].room
     room = world.room_of(*annie.position)
     if room is None:
-        raise KnicError(f"world {world.name}: annie stands outside every room")
+        raise KnicError(f"world {world.name}: {person} stands outside every room")
     return None, room
 
 

@@ -7,7 +7,8 @@ robot's knowledge base.
 
 Score sheet (``../shared/erl_granny_annie.md``), per episode:
 
-* achievements: ``entered_room`` (the robot was in the room where Annie was, at the same sample);
+* achievements: ``entered_room`` (the robot was in the room where Annie, the
+  served person, was, at the same sample);
   ``understood`` (the goals the robot took equal the generated request's goals); ``devices`` (per device
   goal: holds at the end and did not at the start); ``found`` (per find request: the robot said "I found the
   X in the R" while X truly was in R, or "in my gripper" while holding it); ``brought`` (per bring request:
@@ -173,11 +174,11 @@ def judge(
         achieved[kind] += int(ok)
         details.append(f"{kind}: {what}: {'yes' if ok else 'no'}")
 
-    entered = next((s.t for s in timeline.samples if _with_annie(s.facts)), None)
+    entered = next((s.t for s in timeline.samples if _with_person(s.facts, episode.person)), None)
     count(
         "entered_room",
         entered is not None,
-        "robot in Annie's room" + (f" at {entered:.1f} s" if entered else ""),
+        f"robot in {episode.person}'s room" + (f" at {entered:.1f} s" if entered else ""),
     )
     understood = timeline.understood is not None and set(timeline.understood) == set(episode.goals)
     count("understood", understood, f"took {list(timeline.understood or ())} for {list(episode.goals)}")
@@ -213,9 +214,10 @@ def _atom(goal: str) -> Atom:
     return tuple(goal.strip().strip("()").split())
 
 
-def _with_annie(facts: frozenset[Atom]) -> bool:
-    annie = {f[2] for f in facts if f[0] == "person_at" and f[1] == "annie"}
-    return any(f[0] == "robot_at" and f[2] in annie for f in facts)
+def _with_person(facts: frozenset[Atom], person: str) -> bool:
+    """The robot is in the room where ``person`` (the served person) is."""
+    rooms = {f[2] for f in facts if f[0] == "person_at" and f[1] == person}
+    return any(f[0] == "robot_at" and f[2] in rooms for f in facts)
 
 
 def _true_report(timeline: Timeline, entity: str, name: Any) -> float | None:

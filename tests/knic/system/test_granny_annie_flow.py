@@ -72,7 +72,7 @@ def _working_flow() -> tuple[SimClock, FlowSystem, GrannyAnnieFlow]:
     policy = RecoveryPolicy(goal_retry=GoalRetry(times=20, after_s=math.inf))
     dispatcher = Dispatcher(kb, StubPlanner([]), scripted_registry(kb, World()), policy=policy, trace=trace)
     system = FlowSystem(kb, dispatcher, trace)
-    flow = GrannyAnnieFlow(cast("KnicSystem", system))
+    flow = GrannyAnnieFlow(cast("KnicSystem", system), person="annie")
     flow.goals, flow.phase, flow.since = (GOAL,), Phase.WORK, 0.0  # her request was confirmed at t=0
     return clock, system, flow
 
