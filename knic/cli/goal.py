@@ -27,7 +27,7 @@ def add_world_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--speaker",
         help="the person 'me' refers to (default: annie; with --world, annie if the world has her, else its "
-        "first person)",
+        "first known person)",
     )
     parser.add_argument(
         "--world",

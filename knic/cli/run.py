@@ -86,7 +86,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
         help="a goal given while the robot runs, at S simulated seconds, through the goal intake "
         "(repeatable)",
     )
-    parser.add_argument("--speaker", help='who "me" is (default annie; else the world\'s first person)')
+    parser.add_argument("--speaker", help='who "me" is (default annie; else the world\'s first known person)')
     parser.add_argument(
         "--role", default="companion", help="robot role from knic/roles.yaml (default companion)"
     )
