@@ -148,3 +148,11 @@ def test_the_command_line_refuses_a_person_the_world_lacks(capsys: pytest.Captur
     err = capsys.readouterr().err.strip()
     assert code != 0 and len(err.splitlines()) == 1
     assert "no known person 'annie' to serve (known: walter, rosa)" in err
+
+
+def test_knic_run_says_the_erl_task_scenario_is_not_the_bungalows(capsys: pytest.CaptureFixture[str]) -> None:
+    code = main(["run", "--scenario", "granny_annie", "--world", BUNGALOW])
+    err = capsys.readouterr().err.strip()
+    assert code != 0 and len(err.splitlines()) == 1
+    assert "scenario granny_annie is written for world erl_home, not bungalow" in err
+    assert f"knic bench granny-annie --world {BUNGALOW}" in err
