@@ -107,8 +107,7 @@ class PersonPlaceKP(_EntityPlaceKP):
             return None
         again = self.visitor_out_of_sight()
         if again is not None:
-            self._unbound.pop(cku.track_id, None)
-            self.discovered[cku.track_id] = again
+            self.bind(cku.track_id, again)
             return again
         if views < self.visitor_views:
             self._unbound[cku.track_id] = cku  # maybe the visitor, once their old track is gone
@@ -130,24 +129,41 @@ class PersonPlaceKP(_EntityPlaceKP):
         if again is None:
             return
         tid, cku = max(self._unbound.items(), key=lambda item: item[1].stamp)
-        del self._unbound[tid]
-        self.discovered[tid] = again
+        self.bind(tid, again)
         hits = int(cku.attributes.get("hits", 1))
         self.seen(replace(cku, symbol=again, attributes={**cku.attributes, "sightings": hits}))
 
     def visitor_out_of_sight(self) -> str | None:
-        """The visitor met before whom KGM-2 no longer tracks (their track was lost), last seen latest; None
-        when every visitor met is tracked now.
+        """The visitor met before who is out of sight (KGM-2 lost their track, or their place aged unseen),
+        last seen latest; None when every visitor met is in sight.
 
         A stranger met again after their track was lost is far likelier the visitor already met than a new
         one (visitors come one at a time): the new track takes that visitor's instance instead of making a
         ``visitor_<n+1>`` for the same person. A second stranger seen while the first is still tracked is a
         new visitor.
         """
-        gone = [v for v in dict.fromkeys(self.discovered.values()) if v not in self.tracked]
+        gone = [v for v in dict.fromkeys(self.discovered.values()) if not self._in_sight(v)]
         if not gone:
             return None
         return max(gone, key=lambda v: self.last_seen.get(v, -math.inf))
+
+    def _in_sight(self, visitor: str) -> bool:
+        """Whether KGM-2 tracks the visitor and their place is believed as observed (not aged: a visitor
+        unseen for their time to live may well have walked on)."""
+        if visitor not in self.tracked:
+            return False
+        return not any(
+            (prov := self.kb.why(fact)) is not None and prov.status is BeliefStatus.ASSUMED
+            for fact in self.kb.facts(self.place_predicate, visitor)
+        )
+
+    def bind(self, track_id: int, visitor: str) -> None:
+        """The track is ``visitor`` from now on; their older tracks are not (a lost CKU of an old track, where
+        the visitor no longer is, must not retract where they are now)."""
+        for tid in [t for t, v in self.discovered.items() if v == visitor]:
+            del self.discovered[tid]
+        self.discovered[track_id] = visitor
+        self._unbound.pop(track_id, None)
 
     def known_near(self, position: tuple[float, float, float], stamp: float) -> bool:
         """Whether a known (not discovered) person was seen near ``position`` lately."""

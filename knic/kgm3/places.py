@@ -60,9 +60,22 @@ class RobotAtKP(KPPrime):
         needed: int = 2,
         frequency: float = 10.0,
         name: str = "kp'.robot_at",
+        boundary_m: float = 0.1,
     ) -> None:
         super().__init__(name, frequency, bus, kb, "cognition.robot", places=True)
         self.confirmer: Confirmer[str] = Confirmer(needed)
+        self.boundary_m = boundary_m
+
+    def room_of(self, x: float, y: float, current: str | None) -> str | None:
+        """The room at ``(x, y)``, but the believed one while the pose is within ``boundary_m`` of it: a
+        robot standing in a doorway, its localisation noise scattering the pose across the boundary, stays
+        where it was believed until it is clearly through."""
+        room = self.locations.room_at(x, y)
+        if room is None or current is None or room == current or self.boundary_m <= 0:
+            return room
+        m = self.boundary_m
+        near = ((x + m, y), (x - m, y), (x, y + m), (x, y - m))
+        return current if any(self.locations.room_at(px, py) == current for px, py in near) else room
 
     def step(self, now: float) -> None:
         """Confirm the room of every pose received; write robot_at when it changes."""
@@ -70,10 +83,12 @@ class RobotAtKP(KPPrime):
         for message in self.inbox.drain():
             cku: CKU = message.payload
             x, y, _ = cku.position
-            room = self.locations.room_at(x, y)
-            if room is None or not self.is_a(cku.symbol, "robot"):
+            if not self.is_a(cku.symbol, "robot"):
                 continue
             current = self.value_of("robot_at", cku.symbol)
+            room = self.room_of(x, y, current)
+            if room is None:
+                continue
             if self.confirmer.observe(cku.symbol, room, cku.confidence, current, cku.stamp):
                 support = (cku.uid, *cku.support)
                 with self.kb.batch():

@@ -439,3 +439,29 @@ def test_a_visitor_seen_elsewhere_before_the_old_track_was_lost_is_bound_when_it
     stranger(920, (KITCHEN[0], KITCHEN[1], 1.0), 14.0, 5, lost=True)
     assert kp.discovered[921] == "visitor_1" and paper_kb.type_of("visitor_2") is None
     assert paper_kb.facts("person_at", "visitor_1") == [Fact("person_at", ("visitor_1", "bedroom"))]
+
+
+def test_a_visitor_whose_place_aged_is_the_unnamed_person_seen_elsewhere(
+    paper_kb: KnowledgeBase, paper_locations: LocationModel
+) -> None:
+    bus = Bus()
+    publish_place_ckus(bus, paper_locations)
+    kp = PersonPlaceKP(bus, paper_kb, needed=2, visitor_views=5, ttl_s=10.0)
+
+    def stranger(tid: int, where: tuple[float, float, float], t: float, views: int, **extra: bool) -> None:
+        unit = cku(f"person_{tid}", Kind.PERSON, where, t, cls="person", hits=views, face_views=views)
+        send(bus, replace(unit, track_id=tid, attributes={**unit.attributes, **extra}))
+        kp.step(t)
+
+    for i in range(6):
+        stranger(930, (KITCHEN[0], KITCHEN[1], 1.0), 1.0 + 0.2 * i, i + 1)
+    kp.step(30.0)  # unseen for longer than the time to live: the kitchen belief aged
+    why = paper_kb.why(Fact("person_at", ("visitor_1", "kitchen")))
+    assert why is not None and why.status is BeliefStatus.ASSUMED
+    for i in range(4):
+        stranger(931, (BEDROOM[0], BEDROOM[1], 1.0), 31.0 + 0.2 * i, i + 1)
+    assert kp.discovered == {931: "visitor_1"} and paper_kb.type_of("visitor_2") is None
+    assert paper_kb.facts("person_at", "visitor_1") == [Fact("person_at", ("visitor_1", "bedroom"))]
+    # the old kitchen track is lost later: that says nothing of where the visitor is now
+    stranger(930, (KITCHEN[0], KITCHEN[1], 1.0), 40.0, 6, lost=True)
+    assert paper_kb.holds("person_at", "visitor_1", "bedroom")
