@@ -14,14 +14,18 @@ vocabulary (:mod:`knic.language.vocabulary`).
 
 from __future__ import annotations
 
+import contextlib
+import hashlib
+import json
 import re
+import tempfile
 from dataclasses import dataclass, field
 from functools import lru_cache
 from pathlib import Path
 from typing import Any
 
 from core.errors import LanguageError
-from core.inputs import read_yaml
+from core.inputs import MAX_YAML_BYTES, read_text_limited, safe_yaml
 from knic.language.grammar import Alt, Bind, Frame, Grammar, Node, Opt, Ref, Repeat, Seq, Slot, Words
 
 DEFAULT_PATH = Path(__file__).resolve().parent / "commands.yaml"
@@ -141,7 +145,7 @@ def load_language(path: str | Path = DEFAULT_PATH) -> CommandLanguage:
     """
     path = Path(path)
     source = str(path)
-    data = read_yaml(path, "command language", LanguageError)
+    data = _parsed(path)
     if not isinstance(data, dict):
         raise LanguageError(f"{source}: the command language is a mapping of tables")
     verbs = []
@@ -223,6 +227,24 @@ def load_language(path: str | Path = DEFAULT_PATH) -> CommandLanguage:
     object.__setattr__(language, "lists", lists)
     language.template_nodes()  # fail early on a malformed template
     return language
+
+
+def _parsed(path: Path) -> Any:
+    """The file's YAML as data, through a JSON copy in the temporary folder keyed by the file's content
+    (parsing the YAML takes most of ``knic goal``'s own start-up; the copy is checked like the file).
+
+    Raises:
+        LanguageError: the file is unreadable, too large, not UTF-8 or not valid YAML.
+    """
+    text = read_text_limited(path, MAX_YAML_BYTES, "command language", LanguageError)
+    digest = hashlib.sha256(text.encode("utf-8")).hexdigest()[:20]
+    cache = Path(tempfile.gettempdir()) / f"knic-commands-{digest}.json"
+    with contextlib.suppress(OSError, ValueError):
+        return json.loads(cache.read_text(encoding="utf-8"))
+    data = safe_yaml(text, str(path), LanguageError)
+    with contextlib.suppress(OSError, TypeError, ValueError):  # no copy: parsed again next time
+        cache.write_text(json.dumps(data), encoding="utf-8")
+    return data
 
 
 @lru_cache(maxsize=4)

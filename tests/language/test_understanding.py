@@ -380,3 +380,16 @@ def test_the_command_language_checks_its_new_tables(tmp_path: Any) -> None:
     bad.write_text(text.replace("  both: [both,", "  few: [both,"), encoding="utf-8")
     with pytest.raises(LanguageError, match="quantifiers are 'all' and 'both', not few"):
         load_language(bad)
+
+
+def test_the_command_language_reads_the_same_from_its_parsed_copy(tmp_path: Any, monkeypatch: Any) -> None:
+    import tempfile
+
+    from knic.language.commands import DEFAULT_PATH, load_language
+
+    monkeypatch.setattr(tempfile, "tempdir", str(tmp_path))
+    first = load_language(DEFAULT_PATH)  # parses the YAML, writes the copy
+    assert len(list(tmp_path.glob("knic-commands-*.json"))) == 1
+    assert load_language(DEFAULT_PATH) == first  # read from the copy
+    next(tmp_path.glob("knic-commands-*.json")).write_text("{not json", encoding="utf-8")
+    assert load_language(DEFAULT_PATH) == first  # a broken copy: the YAML again
