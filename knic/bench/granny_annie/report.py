@@ -115,8 +115,8 @@ def markdown(report: dict[str, Any], baselines: list[str]) -> str:
     lines = [
         "# Granny Annie benchmark",
         "",
-        f"World `{cfg['world']}`, {cfg['episodes']} episodes from seed {cfg['seed']}, role `{cfg['role']}`, "
-        f"{report['wall_s']} s wall.",
+        f"World `{cfg['world']}` serving `{cfg.get('person', 'annie')}`, {cfg['episodes']} episodes from seed"
+        f" {cfg['seed']}, role `{cfg['role']}`, {report['wall_s']} s wall.",
         "",
         "## Summary",
         "",
