@@ -58,8 +58,8 @@ def test_sampled_sentences_are_in_the_word_graph_and_read_with_their_frames(voca
 
 
 def test_pronouns_are_sampled_for_what_was_said_before_and_read_the_same(vocabulary: Vocabulary) -> None:
-    """The speech model hears "lead her" and "bring them": the pronouns the reader resolves (each stands for the
-    latest earlier thing of its kind, and a sentence never starts with one)."""
+    """The speech model hears "lead her" and "bring them", the pronouns the reader resolves (each stands for
+    the latest earlier thing of its kind, and a sentence never starts with one)."""
     graph = compile_word_graph(command_grammar(), vocabulary)
     said: dict[str, int] = {}
     for sample in sample_sentences(vocabulary, 1500, seed=11):
