@@ -14,7 +14,14 @@ from typing import Any
 
 from core.errors import WorldError
 from core.inputs import MAX_YAML_BYTES, read_text_limited, safe_yaml
-from worlds.geometry import point_on_boundary, polygon_area, polygons_overlap, self_intersection
+from worlds.geometry import (
+    Point,
+    point_on_boundary,
+    polygon_area,
+    polygons_overlap,
+    segment_distance,
+    self_intersection,
+)
 from worlds.model import (
     DEVICE_KINDS,
     Device,
@@ -404,10 +411,14 @@ def _people(
         _no_unknown(ctx, entry, d, allowed)
         name = _str(ctx, entry + ".name", _req(ctx, entry, d, "name"))
         on = d.get("furniture")
+        radius = _num(ctx, entry + ".radius", d.get("radius", 0.22), positive=True)
         if on is not None:
             if on not in furniture:
                 raise ctx.fail(entry, f"on unknown furniture {on!r}")
             pos = furniture[on].position
+            if not furniture[on].seat:  # a table, a counter: the person stands beside it
+                pos = _beside(ctx, entry, furniture[on], furniture, rooms[furniture[on].room], radius)
+                on = None
         elif "position" in d:
             p = _vec(ctx, entry + ".position", d["position"], 2)
             pos = (p[0], p[1])
@@ -428,12 +439,26 @@ def _people(
             behaviour=behaviour,
             present=present,
             known=_known(ctx, entry, d.get("known", True)),
-            radius=_num(ctx, entry + ".radius", d.get("radius", 0.22), positive=True),
+            radius=radius,
             height=_num(ctx, entry + ".height", d.get("height", 1.65), positive=True),
             color=_color(ctx, entry + ".color", d["color"]) if "color" in d else (0.9, 0.7, 0.55, 1.0),
             priors=_priors(ctx, entry, d.get("priors", []), rooms, furniture),
         )
     return out
+
+
+def _beside(
+    ctx: _Ctx, entry: str, at: Furniture, furniture: dict[str, Furniture], room: Room, radius: float
+) -> Point:
+    """The first free place beside ``at`` for a person of body ``radius`` (see :meth:`Furniture.beside`):
+    inside its room, clear of the walls and of every piece of furniture."""
+    edges = list(zip(room.polygon, room.polygon[1:] + room.polygon[:1], strict=True))
+    for x, y in at.beside(radius):
+        if not room.contains(x, y) or any(segment_distance(x, y, a, b) < radius for a, b in edges):
+            continue
+        if all(f.distance(x, y) >= radius for f in furniture.values()):
+            return (x, y)
+    raise ctx.fail(entry, f"no free place beside {at.name!r} to stand at (it is too high to sit on)")
 
 
 def _known(ctx: _Ctx, entry: str, value: Any) -> bool:

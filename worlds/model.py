@@ -12,6 +12,10 @@ from pathlib import Path
 
 from worlds.geometry import Point, point_in_polygon, polygon_centroid, rect_corners, rect_distance
 
+#: the highest furniture top a person sits or lies on (a bed, a sofa, an armchair); at a higher piece
+#: (a table, a counter, a desk) a person stands beside it
+SEAT_MAX_HEIGHT = 0.65
+
 #: device kinds and the PDDL type they have
 DEVICE_KINDS = ("light", "dimmer", "blinds", "bell")
 
@@ -82,6 +86,20 @@ class Furniture:
         """Height of the top surface in metres."""
         return self.size[2]
 
+    @property
+    def seat(self) -> bool:
+        """True when a person sits or lies on its top (no higher than :data:`SEAT_MAX_HEIGHT`)."""
+        return self.size[2] <= SEAT_MAX_HEIGHT
+
+    def beside(self, radius: float, clearance: float = 0.1) -> list[Point]:
+        """Where a person of body ``radius`` stands next to it: the middle of each side, ``clearance`` m off
+        the edge, long sides first (the caller keeps those that are free)."""
+        sx, sy = self.size[0] / 2, self.size[1] / 2
+        sides = [(0.0, sy + radius + clearance), (0.0, -sy - radius - clearance)]
+        ends = [(sx + radius + clearance, 0.0), (-sx - radius - clearance, 0.0)]
+        order = sides + ends if sx >= sy else ends + sides
+        return [self.to_world(dx, dy) for dx, dy in order]
+
     def footprint(self) -> list[Point]:
         """Footprint corners (counter-clockwise)."""
         return rect_corners(self.position[0], self.position[1], self.size[0], self.size[1], self.yaw)
@@ -141,7 +159,8 @@ class Person:
     Attributes:
         name: PDDL person symbol.
         position: initial ``(x, y)`` (resolved from ``on`` by the loader).
-        on: furniture the person sits or lies on (``bed``, ``sofa``), or ``None`` (standing).
+        on: furniture the person sits or lies on (``bed``, ``sofa``), or ``None`` (standing). A person a
+            world file puts at furniture too high to sit on (:attr:`Furniture.seat`) stands beside it.
         behaviour: ``"static"`` (stays unless a scenario moves them) or ``"wander"`` (walks between room
             waypoints at random, seeded).
         present: False for a visitor outside the apartment until a scenario lets them in.

@@ -103,8 +103,12 @@ def apply_event(
         person = a["person"]
         if "furniture" in a:
             f = w.furniture[a["furniture"]]
-            if a.get("teleport"):
+            if a.get("teleport") and f.seat:
                 people.teleport(person, f.position[0], f.position[1], on=f.name)
+            elif a.get("teleport"):  # a table, a counter: the free place beside it nearest its middle
+                spots = sorted(sim.approach_points(f.name), key=lambda q: f.distance(*q))
+                if spots:
+                    people.teleport(person, *spots[0])
             else:
                 people.sit(person, f.name)
         else:

@@ -131,7 +131,8 @@ class PeopleController:
         self.people[name].tasks.append(("goto", list(points)))
 
     def sit(self, name: str, furniture: str) -> None:
-        """Queue walking to the furniture and sitting (or lying) on it."""
+        """Queue walking to the furniture and sitting (or lying) on it; at furniture too high to sit on
+        (:attr:`~worlds.model.Furniture.seat`) the person stands beside it."""
         self.go_to(name, self.hooks.approach_points(furniture))
         self.people[name].tasks.append(("sit", furniture))
 
@@ -185,7 +186,8 @@ class PeopleController:
             p.tasks.popleft()
         elif kind == "sit":
             f = self.world.furniture[arg]
-            p.x, p.y, p.on = f.position[0], f.position[1], arg
+            if f.seat:  # at a table or a counter the person stays standing where they walked to
+                p.x, p.y, p.on = f.position[0], f.position[1], arg
             p.tasks.popleft()
         elif kind == "straight":
             if self._walk_towards(p, arg, dt, robot):

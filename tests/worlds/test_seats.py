@@ -1,0 +1,67 @@
+"""People at furniture: they sit or lie on a bed, a sofa, an armchair; at a table or a counter (too high to
+sit on) they stand beside it on the floor, in its room and clear of every piece of furniture."""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Callable
+from typing import Any
+
+import pytest
+
+from core.errors import WorldError
+from worlds.loader import world_from_dict
+from worlds.scenario import scenario_from_dict
+from worlds.simulation import Simulation
+
+
+def _tracy_at(doc: dict[str, Any], furniture: str) -> dict[str, Any]:
+    tracy = next(p for p in doc["people"] if p["name"] == "tracy")
+    tracy.pop("position", None)
+    tracy["furniture"] = furniture
+    return doc
+
+
+def test_a_person_at_a_table_stands_beside_it(doc: dict[str, Any]) -> None:
+    world = world_from_dict(_tracy_at(doc, "dining_table"))
+    tracy, table = world.people["tracy"], world.furniture["dining_table"]
+    assert tracy.on is None
+    assert world.room_of(*tracy.position) == "dining_room"
+    assert all(f.distance(*tracy.position) >= tracy.radius for f in world.furniture.values())
+    assert table.distance(*tracy.position) < 0.5  # beside it, not somewhere else in the room
+
+
+def test_a_person_on_the_sofa_sits_on_it(doc: dict[str, Any]) -> None:
+    world = world_from_dict(_tracy_at(doc, "sofa"))
+    assert world.people["tracy"].on == "sofa"
+    assert world.people["tracy"].position == world.furniture["sofa"].position
+
+
+def test_no_room_beside_a_table_is_one_clear_error(doc: dict[str, Any]) -> None:
+    # the bathroom drawer stands against two walls; two low chests take its two free sides
+    doc["furniture"].append(
+        {"name": "chest", "room": "bathroom", "position": [0.5, 3.0], "size": [1.0, 0.5, 0.4]}
+    )
+    doc["furniture"].append(
+        {"name": "box", "room": "bathroom", "position": [1.3, 2.35], "size": [0.3, 0.5, 0.4]}
+    )
+    with pytest.raises(WorldError, match=re.escape("no free place beside 'bathroom_drawer'")) as info:
+        world_from_dict(_tracy_at(doc, "bathroom_drawer"), file="bad.yaml")
+    assert "\n" not in str(info.value)
+
+
+def test_sent_to_a_table_a_person_stands_on_the_floor(
+    make_sim: Callable[..., Simulation], doc: dict[str, Any]
+) -> None:
+    world = world_from_dict(doc)
+    events = [
+        {"at": 0, "type": "person_to", "person": "annie", "furniture": "kitchen_table", "teleport": True},
+        {"at": 0, "type": "person_to", "person": "tracy", "furniture": "dining_table"},
+    ]
+    sim = make_sim(world, scenario=scenario_from_dict({"name": "tables", "events": events}, world))
+    sim.step(60.0)
+    for person, table in (("annie", "kitchen_table"), ("tracy", "dining_table")):
+        x, y, z = sim.true_pose(person).position
+        assert z == 0.0  # on the floor, not on the table top
+        assert world.furniture[table].distance(x, y) > 0.1
+        assert ("person_at", person, world.furniture[table].room) in sim.ground_truth_facts()
