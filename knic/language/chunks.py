@@ -159,6 +159,12 @@ class Chunker:
                 if best is not None and best[0] == length:
                     break
             opening = self._opening_at(tokens, i) if not out else None
+            if opening is not None and best is not None and best[2] is None:
+                # a filler, then a longer verb ("can you see to it that ..." is no "can you see ...")
+                after = i + best[0]
+                verb = self._longest_verb_at(tokens, after)
+                if verb and after + verb > i + len(opening.text.split()):
+                    opening = None
             if opening is not None and (best is None or len(opening.text.split()) >= best[0]):
                 out.append(opening)  # "is the remote in the living room?"
                 i += len(opening.text.split())
@@ -183,6 +189,14 @@ class Chunker:
                 out.append(replace(best[2], soft=True) if soft else best[2])
             i += best[0]
         return out
+
+    def _longest_verb_at(self, tokens: Sequence[str], i: int) -> int:
+        """The length of the longest verb phrase at ``tokens[i:]`` (0: none)."""
+        for length in range(min(self._longest, len(tokens) - i), 0, -1):
+            entry = self._table.get(" ".join(tokens[i : i + length]))
+            if entry is not None and entry[1] is not None and entry[1].kind == "verb":
+                return length
+        return 0
 
     def _opening_at(self, tokens: Sequence[str], i: int) -> Chunk | None:
         """The longest opening verb at ``tokens[i:]``, else None."""

@@ -76,7 +76,7 @@ class CommandLanguage:
     levels: dict[int, tuple[str, ...]]
     percent: tuple[str, ...]
     partitive: tuple[str, ...]
-    templates: tuple[tuple[str, str], ...]
+    templates: tuple[tuple[str, str], ...]  # (kind, body); kind "alone KIND": a whole command only
     openers: tuple[str, ...]
     closers: tuple[str, ...]
     source: str = ""
@@ -125,7 +125,11 @@ class CommandLanguage:
             LanguageError: a template is malformed; the message names the template.
         """
         return [
-            Frame(kind, _parse_template(text, self.lists, f"{self.source}: template {kind}: {text!r}"))
+            Frame(
+                kind.removeprefix("alone "),
+                _parse_template(text, self.lists, f"{self.source}: template {kind}: {text!r}"),
+                kind.startswith("alone "),
+            )
             for kind, text in self.templates
         ]
 
@@ -181,8 +185,10 @@ def load_language(path: str | Path = DEFAULT_PATH) -> CommandLanguage:
     templates = []
     for text in data.get("templates") or []:
         kind, sep, body = str(text).partition(": ")
-        if not sep or kind not in TEMPLATE_KINDS:
-            raise LanguageError(f"{source}: template {text!r} must start with a frame kind and ': '")
+        if not sep or kind.removeprefix("alone ") not in TEMPLATE_KINDS:
+            raise LanguageError(
+                f"{source}: template {text!r} must start with a frame kind (or 'alone' and a kind) and ': '"
+            )
         templates.append((kind, body))
     pronouns = {str(k): str(v) for k, v in (data.get("pronouns") or {}).items()}
     unknown_quantifiers = sorted(set(tables["quantifiers"]) - {"all", "both"})

@@ -90,10 +90,13 @@ class Repeat:
 
 @dataclass(frozen=True)
 class Frame:
-    """A command: its body's bindings become one command frame of kind ``kind`` (e.g. ``"BRINGING"``)."""
+    """A command: its body's bindings become one command frame of kind ``kind`` (e.g. ``"BRINGING"``).
+    ``alone``: the phrasing is a whole command, never chained ("is the remote in the kitchen", "the remote
+    please"); the grammar still admits it anywhere, the sampler says it only alone."""
 
     kind: str
     body: Node
+    alone: bool = False
 
 
 Node = Words | Seq | Alt | Opt | Slot | Bind | Ref | Repeat | Frame

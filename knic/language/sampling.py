@@ -76,6 +76,8 @@ class _Walker:
         self.rng = rng
         #: actions dropped outside a repetition (the sentence is then not used)
         self.dropped = 0
+        #: a whole-command phrasing (:attr:`Frame.alone`) was said: no further action
+        self.closed = False
         #: pronoun -> the type it refers to ("any": whatever the frame needs)
         self.pronouns = command_language().pronouns
 
@@ -129,6 +131,10 @@ class _Walker:
                     self.dropped -= 1
         elif isinstance(node, Frame):
             start = len(words)
+            if self.closed or (node.alone and frames):
+                self.dropped += 1
+                return
+            self.closed = node.alone
             for _ in range(PRONOUN_TRIES):  # a pronoun with nothing before it to stand for: say it again
                 inner: dict[str, str] = {}
                 try:
