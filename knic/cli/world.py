@@ -1,8 +1,9 @@
 """``knic world check FILE`` and ``knic world render FILE --out map.png``.
 
 FILE is a world name (``erl_home``, ``erl_home_paper``) or a world YAML path. ``check`` validates the world
-(and optionally scenarios against it) and prints a summary; an invalid world exits non-zero with one line
-naming the entry and the problem. ``render`` draws the map as a PNG.
+(and optionally scenarios against it) and prints a summary, with a warning for every room and piece of
+furniture the robot cannot drive to from its start (a door blocked by furniture); an invalid world exits
+non-zero with one line naming the entry and the problem. ``render`` draws the map as a PNG.
 """
 
 from __future__ import annotations
@@ -39,8 +40,11 @@ def run(args: argparse.Namespace) -> int:
     world = load_world(args.file)
     if args.world_command == "check":
         from worlds.scenario import load_scenario
+        from worlds.sim.goals import unreachable
+        from worlds.sim.navigation import GridMap
 
         scenarios = [load_scenario(s, world).name for s in args.scenario]
+        rooms_out, furniture_out = unreachable(world, GridMap.from_world(world))
         summary = {
             "world": world.name,
             "file": str(world.source) if world.source else None,
@@ -53,6 +57,8 @@ def run(args: argparse.Namespace) -> int:
             "people": len(world.people),
             "devices": len(world.devices),
             "scenarios": scenarios,
+            "unreachable_rooms": rooms_out,
+            "unreachable_furniture": furniture_out,
         }
         if args.json:
             print(json.dumps(summary))
@@ -63,6 +69,13 @@ def run(args: argparse.Namespace) -> int:
                 f"{summary['devices']} devices"
                 + (f"; scenarios ok: {', '.join(scenarios)}" if scenarios else "")
             )
+            if rooms_out:
+                print(
+                    f"warning: the robot cannot reach {', '.join(rooms_out)} from its start (no free way in)"
+                )
+            if furniture_out:
+                names = ", ".join(furniture_out)
+                print(f"warning: the robot cannot reach {names} (no free floor within its reach)")
         return 0
     from worlds.render import render_map
 

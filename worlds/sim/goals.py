@@ -74,3 +74,20 @@ def person_points(grid: GridMap, x: float, y: float, far: float) -> list[Point]:
     d = np.hypot(xs - x, ys - y)
     sel = free & (d <= far) & (d >= 0.5)
     return list(zip(xs[sel].tolist(), ys[sel].tolist(), strict=True))
+
+
+def unreachable(world: World, grid: GridMap) -> tuple[list[str], list[str]]:
+    """What the robot cannot drive to from its start pose, people aside: ``(rooms, furniture)``, each in
+    file order. A room counts when no point of :func:`room_points` is reachable (a door blocked by
+    furniture, or no door at all); a piece of furniture when no point within the gripper's reach of it is
+    (a shelf against a wall behind a sofa). A world file may mean some of it (a locked cellar); a check
+    reports it rather than refusing the world."""
+    start = (world.robot.start[0], world.robot.start[1])
+    rooms = [r for r in world.rooms if grid.plan(start, room_points(world, grid, r, ())) is None]
+    furniture = [
+        f.name
+        for f in world.furniture.values()
+        if f.room not in rooms
+        and grid.plan(start, approach_points(world, grid, f.name, None, world.robot.reach)) is None
+    ]
+    return rooms, furniture
