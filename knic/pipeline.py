@@ -74,7 +74,7 @@ class PipelineOptions:
         miss_range_share: share of the detect range within which an undetected tracked entity counts as
             missed (near the range limit entities shrink under the pixel gate).
         edge_px: image border, pixels, where an undetected entity does not count as missed.
-        needed: consecutive consistent observations before a place fact changes.
+        needed: consecutive consistent observations before a place fact of an item or a person changes.
         explored_ttl_s: seconds an ``explored`` fact lives.
         fusion_half_life_s: simulated seconds over which a standing belief's weight halves in the knowledge
             base's fusion (:mod:`knic.kgm3.fusion`).
@@ -184,6 +184,7 @@ def build_pipeline(
             bus,
             kb,
             class_symbols,
+            class_colours=_class_colours(world),
             frequency=camera_hz,
             detect_range=opts.object_detect_range,
             max_points=opts.points_per_detection,
@@ -216,7 +217,7 @@ def build_pipeline(
         if opts.early_role_filter and isinstance(provider, CameraObjectsKP | CameraPeopleKP):
             provider.gate = cognition.admits
     kp_primes: list[Component] = [
-        RobotAtKP(bus, kb, needed=opts.needed),
+        RobotAtKP(bus, kb),  # its hysteresis is a margin at the room boundary (see the class)
         ObjectPlaceKP(bus, kb, needed=opts.needed, resolution=resolution),
         PersonPlaceKP(bus, kb, ttl_s=the_role.person_ttl_s, needed=opts.needed, resolution=resolution),
         PersonNearKP(bus, kb, needed=opts.needed),
@@ -241,6 +242,14 @@ def build_pipeline(
         camera=camera,
         fusion=fusion,
     )
+
+
+def _class_colours(world: World) -> dict[str, dict[str, tuple[float, float, float]]]:
+    """Detector class -> {item symbol: its known colour} for the classes that name several items."""
+    by_class: dict[str, dict[str, tuple[float, float, float]]] = {}
+    for name, item in world.items.items():
+        by_class.setdefault(item.cls, {})[name] = (item.color[0], item.color[1], item.color[2])
+    return {cls: known for cls, known in by_class.items() if len(known) > 1}
 
 
 def _unique_classes(world: World) -> dict[str, str]:

@@ -7,8 +7,11 @@ LLKU per detection; then it publishes a scan marker (:class:`~knic.units.Scan` o
 could have seen but did not report.
 
 Object detections carry a class label only (``worlds.api.Detection.identity`` is None for objects); a class
-that names exactly one item of the world is recognised as that item's symbol. People are recognised when the
-detector says who they are; unrecognised people are published as anonymous ``person`` units.
+that names exactly one item of the world is recognised as that item's symbol. Where a class names several
+known items (a red mug and a blue mug), the colour the RGB image shows under the detection's mask tells
+them apart when it is clearly nearest one item's known colour (:func:`colour_match`); else the unit stays
+anonymous and KGM-2 makes an instance of it. People are recognised when the detector says who they are;
+unrecognised people are published as anonymous ``person`` units.
 """
 
 from __future__ import annotations
@@ -30,6 +33,31 @@ if TYPE_CHECKING:
     from knowledge_base import KnowledgeBase
 
 PERSON_LABEL = "person"
+#: largest angle, radians, between a seen colour and an item's known colour (RGB as a vector: shading
+#: scales it, the direction stays) for the item to be recognised by colour
+COLOUR_MAX_ANGLE = 0.2
+#: the nearest item's angle must be at most this share of the next one's
+COLOUR_MARGIN = 0.6
+
+
+def colour_match(
+    seen: npt.NDArray[np.float64], known: Mapping[str, tuple[float, float, float]]
+) -> str | None:
+    """The item whose known colour (RGB, 0..1) is nearest in direction to the ``seen`` mean colour, when it
+    is near (:data:`COLOUR_MAX_ANGLE`) and clearly nearer than every other (:data:`COLOUR_MARGIN`)."""
+    norm = float(np.linalg.norm(seen))
+    if norm < 1e-6:
+        return None
+    angles = []
+    for symbol, rgb in known.items():
+        ref = np.asarray(rgb, dtype=np.float64)
+        cos = float(ref @ seen) / max(float(np.linalg.norm(ref)) * norm, 1e-9)
+        angles.append((float(np.arccos(min(1.0, max(-1.0, cos)))), symbol))
+    angles.sort()
+    best, symbol = angles[0]
+    if best > COLOUR_MAX_ANGLE or (len(angles) > 1 and best > COLOUR_MARGIN * angles[1][0]):
+        return None
+    return symbol
 
 
 #: Early role filter of a camera KP: (tracker class, camera position in the world frame (metres), frame stamp)
@@ -146,7 +174,7 @@ class CameraKP(KnowledgeProvider):
                 position=(float(centroid[0]), float(centroid[1]), float(centroid[2])),
                 points=points,
                 sensor_origin=(origin[0], origin[1], origin[2]),
-                identity=self.identify(det),
+                identity=self.identify(det, frame),
                 attributes={"pixels": det.pixel_count},
             )
             if unit.identity is not None:
@@ -184,8 +212,8 @@ class CameraKP(KnowledgeProvider):
         """Whether this KP reports the detection."""
 
     @abstractmethod
-    def identify(self, det: Detection) -> str | None:
-        """The PDDL symbol of the detected individual, or None."""
+    def identify(self, det: Detection, frame: CameraFrame) -> str | None:
+        """The PDDL symbol of the detected individual in ``frame``, or None."""
 
 
 class CameraObjectsKP(CameraKP):
@@ -193,6 +221,8 @@ class CameraObjectsKP(CameraKP):
 
     Args:
         class_symbols: detector class -> item symbol, for classes that name exactly one item.
+        class_colours: detector class -> {item symbol: known RGB colour (0..1)}, for classes that name
+            several items (told apart by colour, see :func:`colour_match`).
         miss_footprint_m: half size, metres, of an item for the visibility test (the household items are
             7 to 20 cm across): an item partly hidden is not counted missed.
         Others as :class:`CameraKP`.
@@ -207,6 +237,7 @@ class CameraObjectsKP(CameraKP):
         kb: KnowledgeBase | None,
         class_symbols: Mapping[str, str],
         *,
+        class_colours: Mapping[str, Mapping[str, tuple[float, float, float]]] | None = None,
         frequency: float = 5.0,
         name: str = "kp.camera_objects",
         max_points: int = 64,
@@ -231,14 +262,21 @@ class CameraObjectsKP(CameraKP):
             miss_footprint_m=miss_footprint_m,
         )
         self.class_symbols = dict(class_symbols)
+        self.class_colours = {cls: dict(known) for cls, known in (class_colours or {}).items()}
 
     def wants(self, det: Detection) -> bool:
         """Every non-person detection."""
         return det.label != PERSON_LABEL
 
-    def identify(self, det: Detection) -> str | None:
-        """The item named by the detection's class, when the class names exactly one item."""
-        return self.class_symbols.get(det.label)
+    def identify(self, det: Detection, frame: CameraFrame) -> str | None:
+        """The item named by the detection's class when the class names exactly one item; among several
+        items of the class, the one whose colour the masked pixels show."""
+        symbol = self.class_symbols.get(det.label)
+        known = self.class_colours.get(det.label)
+        if symbol is not None or not known:
+            return symbol
+        seen = frame.rgb[det.mask].astype(np.float64).mean(axis=0) / 255.0
+        return colour_match(seen, known)
 
 
 class CameraPeopleKP(CameraKP):
@@ -282,6 +320,6 @@ class CameraPeopleKP(CameraKP):
         """Every person is tracked in the one ``person`` class."""
         return PERSON_LABEL
 
-    def identify(self, det: Detection) -> str | None:
+    def identify(self, det: Detection, frame: CameraFrame) -> str | None:
         """The recognised name, or None for an unrecognised person."""
         return det.identity
