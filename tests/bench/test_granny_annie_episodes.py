@@ -12,7 +12,7 @@ import yaml
 from knic.bench.granny_annie.commands import candidate_requests, requests_of_text
 from knic.bench.granny_annie.episodes import Episode, generate_episode, generate_episodes, world_vocabulary
 from knic.bench.granny_annie.events import MOVE_AT, VISITOR_AT, WALK_AT
-from knic.bench.granny_annie.placement import graspable, world_document
+from knic.bench.granny_annie.placement import graspable, under_sitter, world_document
 from knic.language.understanding import understand
 from knic.language.vocabulary import Vocabulary
 from worlds.api import load_world
@@ -62,6 +62,7 @@ def test_episodes_cover_the_task(world: World, episodes: list[Episode]) -> None:
             assert e.placements[item] not in {p.furniture for p in world.items[item].priors}
         for item, furniture in e.placements.items():
             assert graspable(world, e.placements, item), (e.index, item, furniture)
+            assert not under_sitter(world, e.placements, item, e.person, e.person_on), (e.index, item)
     types = {ev["type"] for e in episodes for ev in e.after_command}
     assert {"person_to", "doorbell", "move_object"} <= types
     for e in episodes:  # every episode's events are a valid scenario of the world

@@ -200,7 +200,7 @@ def generate_episode(
     vocab = vocab or world_vocabulary(world)
     person = served_person(world, person)
     person_on, person_room = draw_seat(world, rng, person)
-    placements, off_prior = draw_placements(world, rng)
+    placements, off_prior = draw_placements(world, rng, person, person_on)
     candidates = candidate_requests(world, vocab, placements, person)
     # a bank command is usable only when every name it says is the world's (and "me" is the served person)
     usable = [(t, w, rs) for t, w, _ in voice_bank() if (rs := requests_of_text(t, candidates)) is not None]

@@ -48,8 +48,15 @@ def draw_seat(world: World, rng: np.random.Generator, person: str) -> tuple[str 
     return None, room
 
 
-def draw_placements(world: World, rng: np.random.Generator) -> tuple[dict[str, str], list[str]]:
-    """Item -> furniture (priors weighted, sometimes off-prior) and the items placed off-prior."""
+def draw_placements(
+    world: World, rng: np.random.Generator, sitter: str | None = None, seat: str | None = None
+) -> tuple[dict[str, str], list[str]]:
+    """Item -> furniture (priors weighted, sometimes off-prior) and the items placed off-prior; a spot where
+    ``sitter`` sits on ``seat`` (its middle) is no place for an item (it would stand inside them)."""
+
+    def takeable(name: str) -> bool:
+        return graspable(world, placements, name) and not under_sitter(world, placements, name, sitter, seat)
+
     surfaces = sorted(f.name for f in world.furniture.values() if f.surface)
     placements: dict[str, str] = {}
     for name in sorted(world.items):
@@ -65,14 +72,14 @@ def draw_placements(world: World, rng: np.random.Generator) -> tuple[dict[str, s
         elif item.on is not None:
             placements[name] = item.on
     for name in sorted(placements):
-        if graspable(world, placements, name):
+        if takeable(name):
             continue
         usual = [p.furniture for p in world.items[name].priors if p.furniture is not None]
         on = world.items[name].on
         original = [on] if on is not None else []
         for f in [*usual, *original, *surfaces]:
             placements[name] = f
-            if graspable(world, placements, name):
+            if takeable(name):
                 break
     return placements, [n for n in sorted(placements) if _off_prior(world, n, placements[n])]
 
@@ -106,6 +113,19 @@ def graspable(world: World, placements: dict[str, str], name: str, margin: float
     if key not in cache:
         cache[key] = _free_point_near(world, f.room, x, y, world.robot.reach - margin)
     return bool(cache[key])
+
+
+def under_sitter(
+    world: World, placements: dict[str, str], name: str, sitter: str | None, seat: str | None
+) -> bool:
+    """True when the item's spot lies where ``sitter`` sits on ``seat`` (within their body radius plus the
+    item's half length and 5 cm of the seat's middle, where the simulation seats people)."""
+    if sitter is None or seat is None or placements.get(name) != seat:
+        return False
+    x, y = item_spot(world, placements, name)
+    cx, cy = world.furniture[seat].position
+    item = world.items[name]
+    return math.hypot(x - cx, y - cy) < world.people[sitter].radius + max(item.size[:2]) / 2 + 0.05
 
 
 def within_arm_height(world: World, furniture: str, item: str | None = None) -> bool:
