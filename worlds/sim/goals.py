@@ -76,18 +76,46 @@ def person_points(grid: GridMap, x: float, y: float, far: float) -> list[Point]:
     return list(zip(xs[sel].tolist(), ys[sel].tolist(), strict=True))
 
 
+def reachable_cells(grid: GridMap, start: Point) -> npt.NDArray[np.bool_]:
+    """The free cells the robot can drive to from ``start`` (8-connected, as :meth:`GridMap.plan` moves),
+    as a grid mask; all False when the start cell is not free."""
+    rows, cols = grid.shape
+    free = ~grid.blocked
+    seen = np.zeros((rows, cols), dtype=bool)
+    r0, c0 = grid.cell(*start)
+    if not (grid.in_grid(r0, c0) and free[r0, c0]):
+        return seen
+    seen[r0, c0] = True
+    frontier = [(r0, c0)]
+    while frontier:
+        nxt = []
+        for r, c in frontier:
+            for dr in (-1, 0, 1):
+                for dc in (-1, 0, 1):
+                    rr, cc = r + dr, c + dc
+                    if 0 <= rr < rows and 0 <= cc < cols and free[rr, cc] and not seen[rr, cc]:
+                        seen[rr, cc] = True
+                        nxt.append((rr, cc))
+        frontier = nxt
+    return seen
+
+
 def unreachable(world: World, grid: GridMap) -> tuple[list[str], list[str]]:
     """What the robot cannot drive to from its start pose, people aside: ``(rooms, furniture)``, each in
     file order. A room counts when no point of :func:`room_points` is reachable (a door blocked by
-    furniture, or no door at all); a piece of furniture when no point within the gripper's reach of it is
-    (a shelf against a wall behind a sofa). A world file may mean some of it (a locked cellar); a check
+    furniture, or no door at all); a piece of furniture in a room it reaches when no point within the
+    gripper's reach of it is (a shelf against a wall behind a sofa). A world file may mean some of it (a locked cellar); a check
     reports it rather than refusing the world."""
-    start = (world.robot.start[0], world.robot.start[1])
-    rooms = [r for r in world.rooms if grid.plan(start, room_points(world, grid, r, ())) is None]
+    seen = reachable_cells(grid, (world.robot.start[0], world.robot.start[1]))
+
+    def any_reached(points: list[Point]) -> bool:
+        return any(seen[grid.cell(x, y)] for x, y in points)
+
+    rooms = [r for r in world.rooms if not any_reached(room_points(world, grid, r, ()))]
     furniture = [
         f.name
         for f in world.furniture.values()
         if f.room not in rooms
-        and grid.plan(start, approach_points(world, grid, f.name, None, world.robot.reach)) is None
+        and not any_reached(approach_points(world, grid, f.name, None, world.robot.reach))
     ]
     return rooms, furniture
