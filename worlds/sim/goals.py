@@ -104,8 +104,8 @@ def unreachable(world: World, grid: GridMap) -> tuple[list[str], list[str]]:
     """What the robot cannot drive to from its start pose, people aside: ``(rooms, furniture)``, each in
     file order. A room counts when no point of :func:`room_points` is reachable (a door blocked by
     furniture, or no door at all); a piece of furniture in a room it reaches when no point within the
-    gripper's reach of it is (a shelf against a wall behind a sofa). A world file may mean some of it (a locked cellar); a check
-    reports it rather than refusing the world."""
+    gripper's reach of it is (a shelf against a wall behind a sofa). A world file may mean some of it (a
+    locked cellar); a check reports it rather than refusing the world."""
     seen = reachable_cells(grid, (world.robot.start[0], world.robot.start[1]))
 
     def any_reached(points: list[Point]) -> bool:
