@@ -2,11 +2,17 @@
 
 WAV files of any rate and channel count are converted in-process; other formats are refused (exit 2). Speech
 that matches no command is rejected with its reason (exit 4), never forced onto the nearest command.
+
+The n-gram decoder (:class:`knic.language.lmspeech.NgramRecognizer`) listens by default: it hears people's
+phrasings better than the template grammar (``knic bench speech``) and starts in a fraction of the time
+(its model is cached on disk; the grammar's word graph is compiled anew, about 2.5 s). ``--decoder grammar``
+uses the template grammar (:class:`knic.language.speech.Recognizer`).
 """
 
 from __future__ import annotations
 
 import argparse
+from typing import Any
 
 from knic.cli.goal import add_world_arguments, load_vocabulary, print_understanding
 
@@ -18,6 +24,12 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("wav", help="the spoken command as a WAV file")
     add_world_arguments(parser)
     add_acoustic_argument(parser)
+    parser.add_argument(
+        "--decoder",
+        choices=("ngram", "grammar"),
+        default="ngram",
+        help="ngram (the command language model with a confidence, default) or grammar (the templates only)",
+    )
 
 
 def add_acoustic_argument(parser: argparse.ArgumentParser) -> None:
@@ -34,15 +46,23 @@ def add_acoustic_argument(parser: argparse.ArgumentParser) -> None:
 def run(args: argparse.Namespace) -> int:
     from core.errors import AudioError
     from core.inputs import check_input_file
-    from knic.language.speech import Recognizer, load_audio
-    from knic.language.understanding import default_grammar, understand_transcript
+    from knic.language.speech import load_audio
+    from knic.language.understanding import understand_transcript
 
     check_input_file(args.wav, MAX_AUDIO_BYTES, "audio file", AudioError)  # never read /dev/zero
     audio = load_audio(args.wav)  # refuse a bad file before loading the world
     vocabulary = load_vocabulary(args)
-    transcript = Recognizer(default_grammar(), vocabulary, acoustic_model=args.acoustic_model).recognize(
-        audio
-    )
+    recognizer: Any
+    if getattr(args, "decoder", "ngram") == "grammar":
+        from knic.language.speech import Recognizer
+        from knic.language.understanding import default_grammar
+
+        recognizer = Recognizer(default_grammar(), vocabulary, acoustic_model=args.acoustic_model)
+    else:
+        from knic.language.lmspeech import NgramRecognizer
+
+        recognizer = NgramRecognizer(vocabulary, acoustic_model=args.acoustic_model)
+    transcript = recognizer.recognize(audio)
     result = understand_transcript(transcript, vocabulary, speaker=args.speaker)
     print_understanding(result.to_dict(), args.json)
     return 0

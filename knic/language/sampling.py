@@ -16,7 +16,7 @@ from knic.language.commands import command_grammar, command_language
 from knic.language.frames import CommandFrame
 from knic.language.grammar import Alt, Bind, Frame, Grammar, Node, Opt, Ref, Repeat, Seq, Slot, Words
 from knic.language.reader import chain
-from knic.language.vocabulary import Vocabulary, level_percent
+from knic.language.vocabulary import Term, Vocabulary, level_percent
 
 #: Share of samples that take the first phrase of a phrase list ("the" of the determiners, "please" of the
 #: openers); the rest choose uniformly. Measured on the spoken development set with the n-gram decoder: 0.4
@@ -43,6 +43,7 @@ def sample_sentences(
     seed: int = 0,
     grammar: Grammar | None = None,
     exclude_words: frozenset[str] = frozenset(),
+    frames: bool = True,
 ) -> Iterator[Sample]:
     """``count`` sentences of the grammar, chains of one to three actions, with their frames.
 
@@ -52,26 +53,36 @@ def sample_sentences(
         seed: the random seed.
         grammar: default :func:`~knic.language.commands.command_grammar`.
         exclude_words: words (e.g. ones the recogniser cannot pronounce) no sentence may contain.
+        frames: False: each sample's frames are those of the walk, not resolved as the reader resolves
+            them (pronouns, what a later action says), which is quicker when only the text is wanted.
     """
     grammar = grammar or command_grammar()
     rng = random.Random(seed)
+    terms: dict[tuple[tuple[str, ...], bool], list[Term]] = {}  # the slots' phrases, looked up once
     made = 0
     tries = 0
     while made < count and tries < count * 20:
         tries += 1
-        walker = _Walker(grammar, vocabulary, rng)
+        walker = _Walker(grammar, vocabulary, rng, terms)
         words: list[str] = []
-        frames: list[CommandFrame] = []
-        walker.walk(grammar.rule(grammar.top), words, frames, {})
-        if not frames or walker.dropped or exclude_words.intersection(words):
+        said: list[CommandFrame] = []
+        walker.walk(grammar.rule(grammar.top), words, said, {})
+        if not said or walker.dropped or exclude_words.intersection(words):
             continue
         made += 1
-        yield Sample(" ".join(words), tuple(chain(frames, vocabulary).frames))
+        yield Sample(" ".join(words), tuple(chain(said, vocabulary).frames) if frames else tuple(said))
 
 
 class _Walker:
-    def __init__(self, grammar: Grammar, vocabulary: Vocabulary, rng: random.Random):
+    def __init__(
+        self,
+        grammar: Grammar,
+        vocabulary: Vocabulary,
+        rng: random.Random,
+        terms: dict[tuple[tuple[str, ...], bool], list[Term]],
+    ):
         self.grammar = grammar
+        self.terms = terms
         self.vocabulary = vocabulary
         self.rng = rng
         #: actions dropped outside a repetition (the sentence is then not used)
@@ -111,7 +122,10 @@ class _Walker:
             if rng.random() < 0.5:
                 self.walk(node.part, words, frames, args)
         elif isinstance(node, Slot):
-            terms = self.vocabulary.terms_of(node.categories, groups=node.groups)
+            key = (tuple(node.categories), node.groups)
+            if key not in self.terms:
+                self.terms[key] = list(self.vocabulary.terms_of(node.categories, groups=node.groups))
+            terms = self.terms[key]
             if not terms:
                 raise _Dead
             term = rng.choice(terms)

@@ -68,7 +68,8 @@ def test_people_phrasings_are_heard_and_other_speech_is_rejected(
     heard = recognizer.recognize(DEV / command["file"])
     assert heard.in_grammar
     assert [f.to_dict() for f in understand(heard.text, vocabulary).frames] == command["frames"]
-    others = [e for e in gold.values() if not e["in_grammar"]]
+    entries = json.loads((DEV / "gold.json").read_text())["utterances"]
+    others = [e for e in entries if not e["in_grammar"]]
     accepted = [
         e["text"]
         for e in others
