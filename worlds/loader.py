@@ -121,7 +121,7 @@ def world_from_dict(data: Any, *, file: str = "<world>", source: Path | None = N
     doors = _doors(ctx, _list(ctx, "doors", data.get("doors", [])), rooms)
     furniture = _furniture(ctx, _list(ctx, "furniture", data.get("furniture", [])), rooms)
     items = _items(ctx, _list(ctx, "items", data.get("items", [])), rooms, furniture)
-    people = _people(ctx, _list(ctx, "people", data.get("people", [])), rooms, furniture)
+    people = _people(ctx, _list(ctx, "people", data.get("people", [])), rooms, furniture, items)
     devices = _devices(ctx, _list(ctx, "devices", data.get("devices", [])), rooms)
     robot = _robot(ctx, _req(ctx, "document", data, "robot"), rooms)
     names: dict[str, str] = {}
@@ -402,7 +402,11 @@ def _items(
 
 
 def _people(
-    ctx: _Ctx, raw: list[Any], rooms: dict[str, Room], furniture: dict[str, Furniture]
+    ctx: _Ctx,
+    raw: list[Any],
+    rooms: dict[str, Room],
+    furniture: dict[str, Furniture],
+    items: dict[str, Item],
 ) -> dict[str, Person]:
     out: dict[str, Person] = {}
     allowed = {"name", "furniture", "position", "behaviour", "present", "known", "radius", "height", "color"}
@@ -415,7 +419,11 @@ def _people(
         if on is not None:
             if on not in furniture:
                 raise ctx.fail(entry, f"on unknown furniture {on!r}")
-            pos = furniture[on].position
+            on_it = [
+                ((i.position[0], i.position[1]), max(i.size[:2]) / 2) for i in items.values() if i.on == on
+            ]
+            on_it += [(q.position, q.radius) for q in out.values() if q.on == on]  # who sits there already
+            pos = furniture[on].seat_spot(radius, on_it)
             if not furniture[on].seat:  # a table, a counter: the person stands beside it
                 pos = _beside(ctx, entry, furniture[on], furniture, rooms[furniture[on].room], radius)
                 on = None

@@ -91,6 +91,21 @@ class Furniture:
         """True when a person sits or lies on its top (no higher than :data:`SEAT_MAX_HEIGHT`)."""
         return self.size[2] <= SEAT_MAX_HEIGHT
 
+    def seat_spot(self, radius: float, items: list[tuple[Point, float]]) -> Point:
+        """Where a person of body ``radius`` sits on it: its middle, unless one of ``items`` (their centre
+        and half length) stands there; then the place along its long side farthest from every item."""
+
+        def room_left(p: Point) -> float:
+            return min((math.dist(p, q) - half - radius for q, half in items), default=math.inf)
+
+        if room_left(self.position) >= 0.05:
+            return self.position
+        long_x = self.size[0] >= self.size[1]
+        free = max(0.0, (self.size[0] if long_x else self.size[1]) / 2 - radius)
+        offsets = [free * (k / 4 - 1) for k in range(9)]
+        spots = [self.to_world(t, 0.0) if long_x else self.to_world(0.0, t) for t in offsets]
+        return max(spots, key=lambda p: (room_left(p), -math.dist(p, self.position)))
+
     def beside(self, radius: float, clearance: float = 0.1) -> list[Point]:
         """Where a person of body ``radius`` stands next to it: the middle of each side, ``clearance`` m off
         the edge, long sides first (the caller keeps those that are free)."""

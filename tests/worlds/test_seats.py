@@ -3,6 +3,7 @@ sit on) they stand beside it on the floor, in its room and clear of every piece 
 
 from __future__ import annotations
 
+import math
 import re
 from collections.abc import Callable
 from typing import Any
@@ -65,3 +66,23 @@ def test_sent_to_a_table_a_person_stands_on_the_floor(
         assert z == 0.0  # on the floor, not on the table top
         assert world.furniture[table].distance(x, y) > 0.1
         assert ("person_at", person, world.furniture[table].room) in sim.ground_truth_facts()
+
+
+def test_a_person_sits_beside_what_lies_on_the_seat(
+    make_sim: Callable[..., Simulation], doc: dict[str, Any]
+) -> None:
+    remote = next(i for i in doc["items"] if i["name"] == "remote")
+    remote["furniture"] = "sofa"  # alone on the sofa: in its middle
+    world = world_from_dict(_tracy_at(doc, "sofa"))
+    tracy, item = world.people["tracy"], world.items["remote"]
+    assert tracy.on == "sofa" and tracy.position != world.furniture["sofa"].position
+    assert math.dist(tracy.position, item.position[:2]) > tracy.radius + max(item.size[:2]) / 2
+    events = [{"at": 0, "type": "person_to", "person": "annie", "furniture": "sofa", "teleport": True}]
+    sim = make_sim(world, scenario=scenario_from_dict({"name": "sofa", "events": events}, world))
+    sim.step(1.0)
+    annie = sim.true_pose("annie").position
+    assert annie[2] == world.furniture["sofa"].height  # on the sofa
+    tracy_now = sim.true_pose("tracy").position
+    for who in (annie, tracy_now):  # neither sits on the remote
+        assert math.dist(who[:2], sim.true_pose("remote").position[:2]) > 0.22 + 0.08
+    assert math.dist(annie[:2], tracy_now[:2]) > 2 * 0.22  # nor on each other

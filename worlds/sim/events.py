@@ -103,8 +103,9 @@ def apply_event(
         person = a["person"]
         if "furniture" in a:
             f = w.furniture[a["furniture"]]
-            if a.get("teleport") and f.seat:
-                people.teleport(person, f.position[0], f.position[1], on=f.name)
+            if a.get("teleport") and f.seat:  # in the middle, or beside the items standing there
+                spot = f.seat_spot(people.people[person].radius, people.taken(f.name, person))
+                people.teleport(person, spot[0], spot[1], on=f.name)
             elif a.get("teleport"):  # a table, a counter: the free place beside it nearest its middle
                 spots = sorted(sim.approach_points(f.name), key=lambda q: f.distance(*q))
                 if spots:

@@ -16,7 +16,7 @@ from core.robot import CAUSE_HAND, CAUSE_NOT_AT_BELIEF, CAUSE_OUT_OF_REACH, Comm
 from worlds.geometry import Point
 from worlds.model import World
 from worlds.sim.goals import approach_points
-from worlds.sim.items import ItemState, free_spots
+from worlds.sim.items import ItemState, free_spots, items_on
 from worlds.sim.navigation import GridMap
 from worlds.sim.people import PersonState
 from worlds.sim.robot import BaseController
@@ -54,6 +54,10 @@ class Hands:
         self.people: Mapping[str, PersonState] = {}
 
     # ------------------------------------------------------------------------------------------ gripper
+
+    def items_on(self, furniture: str) -> list[tuple[Point, float]]:
+        """Centre ``(x, y)`` and half length of every item standing on the furniture."""
+        return items_on(self.items, furniture)
 
     def pick(self, item: str, at: Vec3 | None = None) -> CommandResult:
         """Attach an item within reach to the empty gripper.

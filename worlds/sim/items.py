@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import math
+from collections.abc import Mapping
 from dataclasses import dataclass
 
 from worlds.geometry import Point
@@ -42,6 +43,15 @@ class ItemState:
         """Initial state from world data."""
         x, y, z = item.position
         return cls(name=item.name, cls=item.cls, size=item.size, x=x, y=y, z=z, on=item.on)
+
+
+def items_on(items: Mapping[str, ItemState], furniture: str) -> list[tuple[Point, float]]:
+    """Centre ``(x, y)`` and half length of every item standing on the furniture."""
+    return [
+        ((it.x, it.y), max(it.size[0], it.size[1]) / 2)
+        for it in items.values()
+        if it.on == furniture and it.holder is None
+    ]
 
 
 def support_below(world: World, x: float, y: float, z_bottom: float) -> tuple[float, str | None]:

@@ -47,6 +47,10 @@ class PeopleHooks(Protocol):
         """Free points from which the furniture (or ``near`` on it) is within reach."""
         ...
 
+    def items_on(self, furniture: str) -> list[tuple[Point, float]]:
+        """Centre and half length of every item standing on the furniture."""
+        ...
+
 
 @dataclass
 class PersonState:
@@ -141,6 +145,14 @@ class PeopleController:
         ``wait`` s."""
         self.people[name].tasks.append((task, arg))
 
+    def taken(self, furniture: str, person: str) -> list[tuple[Point, float]]:
+        """Centre and half size of what is on the furniture that ``person`` would not sit on: the items
+        there and the other people sitting there."""
+        others = [
+            ((q.x, q.y), q.radius) for q in self.people.values() if q.on == furniture and q.name != person
+        ]
+        return self.hooks.items_on(furniture) + others
+
     def teleport(self, name: str, x: float, y: float, on: str | None = None) -> None:
         """Put a person somewhere at once (present), dropping their queued tasks."""
         p = self.people[name]
@@ -187,7 +199,7 @@ class PeopleController:
         elif kind == "sit":
             f = self.world.furniture[arg]
             if f.seat:  # at a table or a counter the person stays standing where they walked to
-                p.x, p.y, p.on = f.position[0], f.position[1], arg
+                (p.x, p.y), p.on = f.seat_spot(p.radius, self.taken(arg, p.name)), arg
             p.tasks.popleft()
         elif kind == "straight":
             if self._walk_towards(p, arg, dt, robot):
