@@ -35,7 +35,7 @@ from core.errors import InferenceError
 _LEVEL = re.compile(r"^[a-z0-9_]+$")
 
 
-@dataclass(frozen=True)
+@dataclass(frozen=True, init=False)
 class Message:
     """One published message.
 
@@ -52,6 +52,11 @@ class Message:
     source: str
     stamp: float
     seq: int
+
+    def __init__(self, topic: str, payload: Any, source: str, stamp: float, seq: int) -> None:
+        # the dataclass's own __init__ without its per-field frozen ``object.__setattr__`` calls (one
+        # message per unit published)
+        self.__dict__.update(topic=topic, payload=payload, source=source, stamp=stamp, seq=seq)
 
 
 def check_topic(topic: str) -> tuple[str, ...]:

@@ -209,7 +209,7 @@ class _LazyKeys:
             obj.__dict__[self._slot] = value if callable(value) else _checked_keys(value, obj.symbol)
 
 
-@dataclass(frozen=True, eq=False)
+@dataclass(frozen=True, eq=False, init=False)
 class CKU:
     """A cognitive knowledge unit: a tracked entity or a location in its spatial and motivational context.
 
@@ -249,3 +249,41 @@ class CKU:
     track_id: int = 0
     attributes: Mapping[str, Any] = field(default_factory=dict)
     uid: str = field(default_factory=lambda: new_unit_id("cku"))
+
+    def __init__(
+        self,
+        symbol: str,
+        cls: str,
+        kind: Kind,
+        octomap: pyoctomap.OcTree | None,
+        position: tuple[float, float, float],
+        role_priority: int,
+        stamp: float,
+        confidence: float,
+        keys: KeySource | None = None,
+        support: tuple[str, ...] = (),
+        track_id: int = 0,
+        attributes: Mapping[str, Any] | None = None,
+        uid: str | None = None,
+    ) -> None:
+        # the dataclass's own __init__, less its per-field frozen ``object.__setattr__`` calls: KGM-2 makes
+        # one unit per tracked sighting, and those calls were most of what making one cost
+        self.__dict__.update(
+            symbol=symbol,
+            cls=cls,
+            kind=kind,
+            octomap=octomap,
+            position=position,
+            role_priority=role_priority,
+            stamp=stamp,
+            confidence=confidence,
+            _keys_source=_EMPTY_KEYS
+            if keys is None
+            else keys
+            if callable(keys)
+            else _checked_keys(keys, symbol),
+            support=support,
+            track_id=track_id,
+            attributes={} if attributes is None else attributes,
+            uid=new_unit_id("cku") if uid is None else uid,
+        )
