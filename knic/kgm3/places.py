@@ -50,17 +50,25 @@ HAND = "@hand"
 
 
 class RobotAtKP(KPPrime):
-    """``(robot_at ?r ?room)`` from the localisation CKU and the room octomaps."""
+    """``(robot_at ?r ?room)`` from the localisation CKU and the room octomaps.
+
+    The hysteresis is in space, not in time: a pose within ``boundary_m`` of the believed room keeps it (the
+    localisation's noise scatters a robot standing in a doorway across the boundary), and a pose farther
+    inside another room is that room at once (``needed`` 1: a second reading only adds a pose period of
+    delay to every room change). ``boundary_m`` is about 2.5 standard deviations of the localisation's
+    position noise (2 cm per axis on the default robot, ``worlds/noise.yaml``): a standing robot's noise
+    crosses it about once in a hundred readings, and a reading that does is undone by the next.
+    """
 
     def __init__(
         self,
         bus: Bus,
         kb: KnowledgeBase,
         *,
-        needed: int = 2,
+        needed: int = 1,
         frequency: float = 10.0,
         name: str = "kp'.robot_at",
-        boundary_m: float = 0.1,
+        boundary_m: float = 0.05,
     ) -> None:
         super().__init__(name, frequency, bus, kb, "cognition.robot", places=True)
         self.confirmer: Confirmer[str] = Confirmer(needed)

@@ -42,6 +42,25 @@ def test_robot_at_switches_after_consistent_readings_and_does_not_flap(
     assert why.support[0].startswith("cku:") and "llku:test:r2d2:1.0" in why.support
 
 
+def test_robot_at_changes_at_once_past_the_localisation_margin_and_not_within_it(
+    paper_kb: KnowledgeBase, paper_locations: LocationModel
+) -> None:
+    bus = Bus()
+    publish_place_ckus(bus, paper_locations)
+    kp = RobotAtKP(bus, paper_kb)  # one reading, a 5 cm margin at the boundary (bedroom | kitchen at x = 4)
+    assert paper_kb.holds("robot_at", "r2d2", "bedroom")
+    for t, x in ((0.1, 4.03), (0.2, 4.04), (0.3, 3.98)):  # in the doorway: noise across the boundary
+        send(bus, cku("r2d2", Kind.ROBOT, (x, 5.3, 0.0), t, cls="robot"))
+        kp.step(t)
+        assert paper_kb.facts("robot_at") == [Fact("robot_at", ("r2d2", "bedroom"))]
+    send(bus, cku("r2d2", Kind.ROBOT, (4.08, 5.3, 0.0), 0.4, cls="robot"))  # clearly through
+    kp.step(0.4)
+    assert paper_kb.facts("robot_at") == [Fact("robot_at", ("r2d2", "kitchen"))]
+    send(bus, cku("r2d2", Kind.ROBOT, (3.97, 5.3, 0.0), 0.5, cls="robot"))  # 3 cm back: still the kitchen
+    kp.step(0.5)
+    assert paper_kb.facts("robot_at") == [Fact("robot_at", ("r2d2", "kitchen"))]
+
+
 def test_object_on_furniture_found_and_anchored(
     paper_kb: KnowledgeBase, paper_locations: LocationModel
 ) -> None:
