@@ -213,6 +213,13 @@ class MeetAction(PersonApproachAction):
         return f"{self.person} will not follow: {reason}"
 
 
+#: metres inside the walls a guided person must be seen for the robot to believe them in the room: their
+#: body's radius and the perceived position's error (a person stopping in the doorway is not in the room)
+GUIDE_DEPTH = 0.35
+#: times the robot walks deeper into the room to draw in a person seen in or near the doorway
+GUIDE_DRAW_INS = 2
+
+
 class GuideAction(ErlAction):
     """``(guide ?r ?p ?from ?to)``: walk to room ``to`` with the person following.
 
@@ -220,7 +227,10 @@ class GuideAction(ErlAction):
     name stands there the action fails and the belief is refuted, so the next plan looks for them.
 
     Phases: ``nav`` (person following) -> ``turn`` (face back to see them) -> ``wait`` (until the person is
-    perceived inside ``to``). Deactivation ends the escort, so the person stays where they are.
+    perceived :data:`GUIDE_DEPTH` inside ``to``). A person seen short of that (following a step behind, they
+    stop in the doorway of a small room) is drawn in: the robot walks on to the room's point farthest from
+    them, up to :data:`GUIDE_DRAW_INS` times. Deactivation ends the escort, so the person stays where they
+    are.
     """
 
     def __init__(self, args: tuple[str, ...], ctx: ErlContext) -> None:
@@ -246,6 +256,7 @@ class GuideAction(ErlAction):
         if not self.nav.start():
             self.ctx.robot.stop_escort()
             return self.refuse(self.nav.reason)
+        self.draw_ins = 0
         self.enter("nav")
         return True
 
@@ -265,12 +276,34 @@ class GuideAction(ErlAction):
                 return ActionStatus.RUNNING
             self.enter("wait")
         seen = self.ctx.perceived.seen_since(self.person, self.phase_since)
-        if seen is not None and self.room.contains(seen.position[0], seen.position[1]):
+        if seen is not None and self.room.depth(seen.position[0], seen.position[1]) >= GUIDE_DEPTH:
             return ActionStatus.SUCCEEDED
+        if seen is not None and self.draw_ins < GUIDE_DRAW_INS:
+            return self.draw_in((seen.position[0], seen.position[1]))
         if self.in_phase_for() > self.ctx.follow_timeout_s:
             return self.fail(
                 f"{self.person} was not seen in {self.target} {self.ctx.follow_timeout_s:g} s after arrival"
             )
+        return ActionStatus.RUNNING
+
+    def draw_in(self, seen: Point) -> ActionStatus:
+        """Walk on to the room's point farthest from where the person is seen (they keep following)."""
+        self.draw_ins += 1
+        pose = self.ctx.robot.robot_pose()
+        here = math.dist((pose.x, pose.y), seen)
+        deeper = [
+            p for p in [*self.room.waypoints, *self.room.inner_points()] if math.dist(p, seen) > here + 0.3
+        ]
+        if not deeper:
+            self.draw_ins = GUIDE_DRAW_INS  # nowhere deeper: wait for them where the robot stands
+            return ActionStatus.RUNNING
+        far = sorted(deeper, key=lambda p: -math.dist(p, seen))
+        self.nav = NavGoal(self.ctx, [to_point(self.ctx, p) for p in far], self.target)
+        if not self.nav.start():
+            return self.fail(
+                f"cannot walk deeper into {self.target} to draw {self.person} in: {self.nav.reason}"
+            )
+        self.enter("nav")
         return ActionStatus.RUNNING
 
     def deactivation(self) -> bool:

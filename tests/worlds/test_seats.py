@@ -6,6 +6,7 @@ from __future__ import annotations
 import math
 import re
 from collections.abc import Callable
+from pathlib import Path
 from typing import Any
 
 import pytest
@@ -14,6 +15,8 @@ from core.errors import WorldError
 from worlds.loader import world_from_dict
 from worlds.scenario import scenario_from_dict
 from worlds.simulation import Simulation
+
+BUNGALOW = str(Path(__file__).resolve().parents[2] / "worlds" / "test_bungalow" / "test_bungalow.yaml")
 
 
 def _tracy_at(doc: dict[str, Any], furniture: str) -> dict[str, Any]:
@@ -86,3 +89,17 @@ def test_a_person_sits_beside_what_lies_on_the_seat(
     for who in (annie, tracy_now):  # neither sits on the remote
         assert math.dist(who[:2], sim.true_pose("remote").position[:2]) > 0.22 + 0.08
     assert math.dist(annie[:2], tracy_now[:2]) > 2 * 0.22  # nor on each other
+
+
+def test_a_seated_person_escorted_gets_up_clear_of_the_robot() -> None:
+    # walter sits in the bungalow's armchair, in a corner; the robot comes up close and asks him to follow
+    # (getting up, he used to land on the nearest free point beside the chair: where the robot stood)
+    from knic.system import build_system
+
+    system = build_system(["(person_at walter hall)"], world=BUNGALOW, seed=1)
+    try:
+        system.run()
+        assert system.sim.counters().person_hits == 0
+        assert ("person_at", "walter", "hall") in system.sim.ground_truth_facts()
+    finally:
+        system.close()

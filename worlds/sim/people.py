@@ -205,8 +205,8 @@ class PeopleController:
             if self._walk_towards(p, arg, dt, robot):
                 p.tasks.popleft()
         elif kind == "goto":
-            if p.on is not None:
-                self._stand_up(p)
+            if not self._stand_up(p, robot):
+                return
             if not p.path:
                 path = self.grid.plan((p.x, p.y), arg)
                 if path is None:  # nowhere to go: give the task up
@@ -301,13 +301,25 @@ class PeopleController:
                     out.append((x, y))
         return out
 
-    def _stand_up(self, p: PersonState) -> None:
+    def _stand_up(self, p: PersonState, robot: tuple[float, float, float]) -> bool:
+        """Get up from the furniture onto the nearest free floor point beside it that is clear of the robot
+        and of everyone standing (``robot``: x, y, radius). False when there is none yet: the person stays
+        seated and tries again next step (the robot standing close by is in the way)."""
         if p.on is None:
-            return
-        spot = self.hooks.approach_points(p.on, (p.x, p.y))
-        if spot:
-            p.x, p.y = min(spot, key=lambda q: math.hypot(q[0] - p.x, q[1] - p.y))
+            return True
+        rx, ry, rr = robot
+        standing = [(q.x, q.y, q.radius) for q in self.people.values() if q.present and q.on is None]
+        clear = [
+            q
+            for q in self.hooks.approach_points(p.on, (p.x, p.y))
+            if math.hypot(q[0] - rx, q[1] - ry) >= rr + p.radius + 0.1
+            and all(math.hypot(q[0] - x, q[1] - y) >= r + p.radius + 0.05 for x, y, r in standing)
+        ]
+        if not clear:
+            return False
+        p.x, p.y = min(clear, key=lambda q: math.hypot(q[0] - p.x, q[1] - p.y))
         p.on = None
+        return True
 
     def _walk_towards(
         self, p: PersonState, target: Point, dt: float, robot: tuple[float, float, float]
@@ -331,8 +343,8 @@ class PeopleController:
         return step >= dist - 1e-9
 
     def _follow(self, p: PersonState, dt: float, now: float, robot: tuple[float, float, float]) -> None:
-        if p.on is not None:
-            self._stand_up(p)
+        if not self._stand_up(p, robot):
+            return
         rx, ry, _ = robot
         if math.hypot(rx - p.x, ry - p.y) <= FOLLOW_DISTANCE:
             p.path = []

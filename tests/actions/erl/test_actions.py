@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import math
+
 import pytest
 
 from actions.base import Action, ActionStatus
@@ -230,6 +232,28 @@ def test_guide_walks_with_the_person_and_ends_the_escort(
     action.deactivation()
     assert status is ActionStatus.SUCCEEDED
     assert robot.escorting is None
+
+
+def test_guide_draws_in_a_person_seen_in_the_doorway(setup: Setup) -> None:
+    robot, _kb, ctx = setup
+    robot.people["annie"] = (3.2, 5.0)
+    record(ctx, "annie", Sighting((3.3, 5.1, 0.9), 0.0))
+    action = create(ctx, "(guide r2d2 annie bedroom kitchen)")
+    assert action.activation()
+    status, goals_at_doorway = ActionStatus.RUNNING, 0
+    for i in range(300):
+        robot.tick()
+        if i == 20:  # seen 10 cm past the kitchen's wall: in the doorway, not in the kitchen
+            record(ctx, "annie", Sighting((4.1, 6.0, 0.9), robot.time))
+            goals_at_doorway = len(robot.goals)
+        if i == 60:  # the robot walked on; she followed it in
+            assert len(robot.goals) > goals_at_doorway
+            assert math.dist((robot.x, robot.y), (4.1, 6.0)) > math.dist((5.5, 5.3), (4.1, 6.0))
+            record(ctx, "annie", Sighting((5.6, 6.2, 0.9), robot.time))
+        status = action.step()
+        if status is not ActionStatus.RUNNING:
+            break
+    assert status is ActionStatus.SUCCEEDED and i >= 60  # not before she was seen inside
 
 
 def test_guide_addresses_the_believed_position_and_refutes_a_wrong_belief(setup: Setup) -> None:
