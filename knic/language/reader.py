@@ -175,6 +175,8 @@ class Reader:
         """
         chunk = arg.chunk
         if chunk.kind == "me":
+            if "person" not in categories and "room" in categories:  # "come to me"
+                raise AmbiguityError("where are you: in which room?")
             if "person" not in categories:
                 raise LanguageError("'me' cannot be that")
             return [SPEAKER]
@@ -237,6 +239,8 @@ class Reader:
             kept = tuple(t for t in candidates if any(self._within(t, r) for r in rooms))
             if not kept and place.prep is not None and place.prep_text not in self.language.containment:
                 kept = self._near(candidates, rooms)  # "the bedside table next to the bed"
+            if not kept and all(self.is_a(t, "light") for t in candidates):
+                kept = self._dimmers_in(rooms)  # "the living room light" where a dimmer is the room's light
             if not kept:
                 where = self.vocabulary.phrase_of(rooms[0].symbol)
                 raise LanguageError(f"there is no {head.chunk.text} in the {where} in this world")
@@ -244,6 +248,11 @@ class Reader:
             if grouped:  # "the lights in the bedroom": those of the group that are there
                 head.quantity = head.quantity or "all"
             place.consumed = True
+
+    def _dimmers_in(self, rooms: Sequence[Term]) -> tuple[Term, ...]:
+        """The dimmers (dimmable lights) in the rooms, one term each."""
+        found = {t.symbol: t for t in self.vocabulary.terms if self.is_a(t, "dimmer") and not t.is_group}
+        return tuple(t for t in found.values() if any(self._within(t, r) for r in rooms))
 
     def _near(self, candidates: Sequence[Term], landmarks: Sequence[Term]) -> tuple[Term, ...]:
         """Of the candidates said with a landmark ("next to the bed"), those in the landmark's room; a lone
