@@ -131,3 +131,27 @@ def test_normalize_and_numbers() -> None:
         "ninety nine",
         "one hundred",
     ]
+
+
+def test_alone_templates_are_sampled_only_as_a_whole_command(
+    vocabulary: Vocabulary, tmp_path: object
+) -> None:
+    """A question or a bare request ("is the cup in the kitchen", "the cup please") is never chained."""
+    from pathlib import Path
+
+    from knic.language.commands import load_language
+
+    path = Path(str(tmp_path)) / "commands.yaml"
+    path.write_text(
+        "verbs:\n  search:\n    frames: [SEARCHING]\n    phrases: [find]\n"
+        "joiners: [and]\nopeners: [please]\nclosers: [please]\n"
+        "templates:\n  - 'SEARCHING: find {item:theme}'\n"
+        "  - 'alone SEARCHING: is the {item:theme} in the {room:ground}'\n"
+    )
+    language = load_language(path)
+    assert [f.alone for f in language.template_nodes()] == [False, True]
+    samples = list(sample_sentences(vocabulary, 300, seed=5, grammar=command_grammar(language=language)))
+    questions = [s for s in samples if s.text.removeprefix("please ").startswith("is the")]
+    assert questions and all(len(s.frames) == 1 for s in questions)
+    assert not any("find" in s.text and " is the " in s.text for s in samples)  # never after another action
+    assert any(len(s.frames) > 1 for s in samples)  # the other template still chains
