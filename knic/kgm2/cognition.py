@@ -66,6 +66,12 @@ class TrackingConfig:
     #: least mask pixels of a person's sighting in which the face recogniser could have named a known person
     #: (the robot's recogniser's own limit); an unnamed track counts such sightings (``face_views``)
     face_pixels: int = 40
+    #: metres above a person track's centroid also tested for visibility (the upper body, see ``Tracker``)
+    person_probe_up_m: float = 0.5
+    #: metres per second a person track's association radius grows while unseen (see ``Tracker``)
+    person_gate_growth: float = 0.2
+    #: metres a person track's centroid moves before its octomap restarts (see ``Tracker``)
+    person_reset_m: float = 0.3
 
 
 def _plan_order(plan: tuple[Policy, str, list[LLKU]]) -> tuple[int, str]:
@@ -170,6 +176,9 @@ class CognitiveLayer(Component):
                 min_lost_s=cfg.person_min_lost_s if person else cfg.object_min_lost_s,
                 jump_confirm=cfg.person_jump_confirm if person else cfg.object_jump_confirm,
                 face_pixels=cfg.face_pixels if person else 0,
+                probe_up_m=cfg.person_probe_up_m if person else 0.0,
+                gate_growth=cfg.person_gate_growth if person else 0.0,
+                reset_distance=cfg.person_reset_m if person else None,
             )
             self.trackers[cls] = found
         return found

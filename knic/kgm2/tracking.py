@@ -94,6 +94,20 @@ class Tracker:
         face_pixels: a sighting without identity whose mask has at least this many pixels (LLKU attribute
             ``pixels``) counts as a face view: the recogniser saw the person well and did not know them
             (0: nothing counted; for classes without faces).
+        probe_up_m: metres above a track's centroid where the entity's body still is (a person's upper body
+            above the hip-high centroid); a scan that could see that point could see the entity, so it counts
+            a miss too (a robot passing close by a person sees the torso while the centroid is below the
+            view). 0: the centroid only.
+        gate_growth: metres per second the association radius of a track grows with the time since it
+            was last seen, up to ``max_gate`` metres (None: twice the radius): an entity unseen for a while
+            may have moved (a person who walked on while the camera looked away), so an unnamed detection a
+            little beyond the radius of a stale track is that track's entity rather than someone new. 0: a
+            fixed radius (items do not move by themselves).
+        reset_distance: metres the track's centroid may move from where its octomap was started before the
+            octomap restarts (None: the radius). A person's octomap restarts after a smaller move than the
+            association radius: the voxels of where they stood before would otherwise outvote where they
+            stand now (a person who stepped from the dining room to just inside the living room was still
+            believed in the dining room).
     """
 
     def __init__(
@@ -109,6 +123,10 @@ class Tracker:
         jump_window_s: float = 2.0,
         min_lost_s: float = 0.0,
         face_pixels: int = 0,
+        probe_up_m: float = 0.0,
+        gate_growth: float = 0.0,
+        max_gate: float | None = None,
+        reset_distance: float | None = None,
     ) -> None:
         if radius <= 0 or max_misses < 0 or not 0 < gain <= 1:
             raise InferenceError(f"tracker {cls}: radius > 0, max_misses >= 0 and 0 < gain <= 1 required")
@@ -122,6 +140,10 @@ class Tracker:
         self.jump_window_s = jump_window_s
         self.min_lost_s = min_lost_s
         self.face_pixels = face_pixels
+        self.probe_up_m = max(0.0, probe_up_m)
+        self.gate_growth = max(0.0, gate_growth)
+        self.reset_distance = radius if reset_distance is None else reset_distance
+        self.max_gate = max(radius, max_gate if max_gate is not None else 2.0 * radius)
         self.tracks: dict[int, Track] = {}
         self._by_symbol: dict[str, Track] = {}
         self.duplicates = 0
@@ -160,10 +182,14 @@ class Tracker:
             det_pos = np.array([d.position for d in pending])
             trk_pos = np.array([t.centroid for t in free])
             dist = np.linalg.norm(det_pos[:, None, :] - trk_pos[None, :, :], axis=2)
+            gates = [self.gate(t, now) for t in free]
+            widest = max(gates)
             for flat in np.argsort(dist, axis=None):
                 i, j = divmod(int(flat), len(free))
-                if dist[i, j] >= self.radius:
+                if dist[i, j] >= widest:
                     break
+                if dist[i, j] >= gates[j]:
+                    continue
                 det = pending[i]
                 if i in matched or free[j].track_id in used:
                     continue
@@ -178,6 +204,12 @@ class Tracker:
                 track = self._create(det, now)
                 used.add(track.track_id)
                 result.created.append((track, det))
+
+    def gate(self, track: Track, now: float) -> float:
+        """The association radius of ``track`` at simulated time ``now`` (see ``gate_growth``)."""
+        if self.gate_growth <= 0:
+            return self.radius
+        return min(self.max_gate, self.radius + self.gate_growth * max(0.0, now - track.last_seen))
 
     def _jump_confirmed(self, track: Track, det: LLKU, now: float) -> bool:
         """Whether an identified detection may update its track: near it, or a far sighting seen again.
@@ -253,6 +285,11 @@ class Tracker:
             return
         if visible is None:
             seen = np.ones(len(stale), dtype=bool)
+        elif self.probe_up_m > 0:
+            centroids = np.array([t.centroid for t in stale])
+            upper = centroids + np.array([0.0, 0.0, self.probe_up_m])
+            both = visible(np.concatenate([centroids, upper]))
+            seen = both[: len(stale)] | both[len(stale) :]
         else:
             seen = visible(np.array([t.centroid for t in stale]))
         for track, could_see in zip(stale, seen, strict=True):
@@ -268,7 +305,9 @@ class Tracker:
 
     def _create(self, det: LLKU, now: float) -> Track:
         tid = next(_track_ids)
-        octomap = EntityOctomap(self.resolution, reset_distance=self.radius, ray_length=self.ray_length)
+        octomap = EntityOctomap(
+            self.resolution, reset_distance=self.reset_distance, ray_length=self.ray_length
+        )
         centroid = det.position
         octomap.update(det.points, centroid, det.sensor_origin)
         track = Track(

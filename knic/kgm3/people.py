@@ -72,10 +72,15 @@ class PersonPlaceKP(_EntityPlaceKP):
         self.visitor_window_s = 3.0
         #: face views without recognition after which an unnamed person may be a visitor met before
         self.rebind_views = min(3, visitor_views)
+        #: metres per second a person may walk: a visitor unseen for ``visitor_window_s`` who could have
+        #: walked to where an unnamed person is seen well is out of sight (see :meth:`visitor_out_of_sight`)
+        self.person_speed = 1.5
         #: seconds an unnamed person's sighting stays a candidate for a visitor whose track is lost later
         self.rebind_window_s = 15.0
         #: KGM-2 track id -> the latest CKU of an unnamed person seen well, not yet an instance
         self._unbound: dict[int, CKU] = {}
+        #: tracks just bound to a visitor met before: their next sighting stands for all the track's hits
+        self._just_bound: set[int] = set()
         self.moving_ttl_s = min(moving_ttl_s, ttl_s)
         self.dwell_share = dwell_share
         self.max_ttl_s = max(max_ttl_s, ttl_s)
@@ -105,7 +110,7 @@ class PersonPlaceKP(_EntityPlaceKP):
         views = int(cku.attributes.get("face_views", 0))
         if views < self.rebind_views or self.known_near(cku.position, cku.stamp):
             return None
-        again = self.visitor_out_of_sight()
+        again = self.visitor_out_of_sight(cku.position, cku.stamp)
         if again is not None:
             self.bind(cku.track_id, again)
             return again
@@ -125,37 +130,52 @@ class PersonPlaceKP(_EntityPlaceKP):
                 del self._unbound[tid]
         if not self._unbound:
             return
-        again = self.visitor_out_of_sight()
+        tid, cku = max(self._unbound.items(), key=lambda item: item[1].stamp)
+        again = self.visitor_out_of_sight(cku.position, cku.stamp)
         if again is None:
             return
-        tid, cku = max(self._unbound.items(), key=lambda item: item[1].stamp)
         self.bind(tid, again)
-        hits = int(cku.attributes.get("hits", 1))
-        self.seen(replace(cku, symbol=again, attributes={**cku.attributes, "sightings": hits}))
+        self.seen(replace(cku, symbol=again))
 
-    def visitor_out_of_sight(self) -> str | None:
-        """The visitor met before who is out of sight (KGM-2 lost their track, or their place aged unseen),
-        last seen latest; None when every visitor met is in sight.
+    def visitor_out_of_sight(
+        self, where: tuple[float, float, float] | None = None, at: float | None = None
+    ) -> str | None:
+        """The visitor met before who is out of sight (KGM-2 lost their track, their place aged unseen, or
+        they could have walked to ``where`` since last seen), last seen latest; None when every visitor met
+        is in sight.
 
         A stranger met again after their track was lost is far likelier the visitor already met than a new
         one (visitors come one at a time): the new track takes that visitor's instance instead of making a
-        ``visitor_<n+1>`` for the same person. A second stranger seen while the first is still tracked is a
-        new visitor.
+        ``visitor_<n+1>`` for the same person. So is an unnamed person seen well at ``where`` (at simulated
+        time ``at``) while the visitor's own track has not been seen for ``visitor_window_s`` seconds and is
+        near enough to have walked there at ``person_speed`` since: a track the camera no longer looks at
+        does not speak for where the visitor is. A second stranger seen while the first is in view, or too
+        far from them to be them, is a new visitor.
         """
-        gone = [v for v in dict.fromkeys(self.discovered.values()) if not self._in_sight(v)]
+        gone = [v for v in dict.fromkeys(self.discovered.values()) if not self._in_sight(v, where, at)]
         if not gone:
             return None
         return max(gone, key=lambda v: self.last_seen.get(v, -math.inf))
 
-    def _in_sight(self, visitor: str) -> bool:
+    def _in_sight(
+        self, visitor: str, where: tuple[float, float, float] | None = None, at: float | None = None
+    ) -> bool:
         """Whether KGM-2 tracks the visitor and their place is believed as observed (not aged: a visitor
-        unseen for their time to live may well have walked on)."""
+        unseen for their time to live may well have walked on), and, given an unnamed person seen at
+        ``where`` at ``at``, the visitor was seen lately or could not have walked there since."""
         if visitor not in self.tracked:
             return False
-        return not any(
+        if any(
             (prov := self.kb.why(fact)) is not None and prov.status is BeliefStatus.ASSUMED
             for fact in self.kb.facts(self.place_predicate, visitor)
-        )
+        ):
+            return False
+        if where is None or at is None:
+            return True
+        seen, last = self.last_seen.get(visitor), self.last_position.get(visitor)
+        if seen is None or last is None or at - seen < self.visitor_window_s:
+            return True
+        return math.dist(last[:2], where[:2]) > self.person_speed * (at - seen)
 
     def bind(self, track_id: int, visitor: str) -> None:
         """The track is ``visitor`` from now on; their older tracks are not (a lost CKU of an old track, where
@@ -164,6 +184,7 @@ class PersonPlaceKP(_EntityPlaceKP):
             del self.discovered[tid]
         self.discovered[track_id] = visitor
         self._unbound.pop(track_id, None)
+        self._just_bound.add(track_id)
 
     def known_near(self, position: tuple[float, float, float], stamp: float) -> bool:
         """Whether a known (not discovered) person was seen near ``position`` lately."""
@@ -177,7 +198,15 @@ class PersonPlaceKP(_EntityPlaceKP):
         return False
 
     def seen(self, cku: CKU) -> None:
-        """One sighting: remember the recent trail (for the walking test), then as for every entity."""
+        """One sighting: remember the recent trail (for the walking test), then as for every entity.
+
+        The first sighting of a track just bound to a visitor met before stands for as many sightings as the
+        track had hits (the track saw them there that often before it was known to be them)."""
+        if cku.track_id in self._just_bound:
+            self._just_bound.discard(cku.track_id)
+            hits = int(cku.attributes.get("hits", 1))
+            if hits > int(cku.attributes.get("sightings", 1)):
+                cku = replace(cku, attributes={**cku.attributes, "sightings": hits})
         trail = self._trail.setdefault(cku.symbol, deque())
         trail.append((cku.stamp, cku.position))
         while len(trail) > 2 and cku.stamp - trail[1][0] >= self.speed_window_s:

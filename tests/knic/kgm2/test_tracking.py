@@ -98,3 +98,48 @@ def test_unnamed_person_tracks_count_the_views_the_face_recogniser_had() -> None
     seen(500, 0.6, identity="jack")  # a named sighting goes to jack's own track and counts nothing
     assert tracker.by_symbol("jack") is not None and tracker.by_symbol("jack").face_views == 0  # type: ignore[union-attr]
     assert Tracker("mug").face_pixels == 0
+
+
+def test_a_person_whose_upper_body_is_in_view_is_missed_though_the_centroid_is_below_the_view() -> None:
+    # a robot passing close by: the hip-high centroid is under the camera's view, the torso above it is not
+    above_1m = lambda pts: np.asarray(pts)[:, 2] > 1.0  # noqa: E731
+    person = Tracker("person", radius=0.8, max_misses=1, probe_up_m=0.5)
+    centroid_only = Tracker("person", radius=0.8, max_misses=1)
+    for tracker in (person, centroid_only):
+        tracker.associate([percept(Kind.PERSON, "person", (3.0, 2.0, 0.7), 0.0)], 0.0)
+    assert person.miss_scan(above_1m) == [] and centroid_only.miss_scan(above_1m) == []
+    assert [t.misses for t in person.tracks.values()] == [1]
+    assert [t.misses for t in centroid_only.tracks.values()] == [0]
+    assert [t.cls for t in person.miss_scan(above_1m)] == ["person"] and person.tracks == {}
+    assert centroid_only.miss_scan(above_1m) == [] and len(centroid_only.tracks) == 1
+
+
+def test_an_unnamed_person_beyond_the_radius_of_a_track_unseen_for_a_while_is_that_track() -> None:
+    # the person walked on while the camera looked away: the stale track's gate has grown
+    growing = Tracker("person", radius=0.8, gate_growth=0.2)
+    fixed = Tracker("person", radius=0.8)
+    for tracker in (growing, fixed):
+        tracker.associate([percept(Kind.PERSON, "person", (3.0, 2.0, 0.9), 0.0)], 0.0)
+    assert growing.gate(next(iter(growing.tracks.values())), 5.0) == 1.6  # 0.8 + 0.2 m/s * 5 s, at most 2x
+    late = percept(Kind.PERSON, "person", (4.1, 2.0, 0.9), 5.0)  # 1.1 m away, 5 s later
+    moved = growing.associate([late], 5.0)
+    assert len(moved.updated) == 1 and not moved.created and len(growing.tracks) == 1
+    ((track, _),) = moved.updated
+    assert track.centroid == (4.1, 2.0, 0.9)  # beyond the radius: the track jumps there
+    assert len(fixed.associate([late], 5.0).created) == 1 and len(fixed.tracks) == 2
+    # seen a moment ago, the gate is the radius: someone 1.1 m away is someone else
+    fresh = growing.associate([percept(Kind.PERSON, "person", (5.2, 2.0, 0.9), 5.2)], 5.2)
+    assert len(fresh.created) == 1
+
+
+def test_a_person_octomap_restarts_after_a_step_smaller_than_the_association_radius() -> None:
+    person = Tracker("person", radius=0.8, reset_distance=0.3)
+    item_like = Tracker("person", radius=0.8)
+    for tracker in (person, item_like):
+        tracker.associate([percept(Kind.PERSON, "person", (3.0, 2.0, 0.9), 0.0)], 0.0)
+        tracker.associate([percept(Kind.PERSON, "person", (3.45, 2.0, 0.9), 0.2)], 0.2)
+    ((track,),) = [list(person.tracks.values())]
+    ((other,),) = [list(item_like.tracks.values())]
+    assert track.octomap.resets == 1 and other.octomap.resets == 0
+    # the restarted map holds only voxels of where the person stands now
+    assert min(track.keys[:, 0]) > min(other.keys[:, 0])
