@@ -56,7 +56,7 @@ class TrackingConfig:
     object_radius: float = 0.4
     person_radius: float = 0.8
     object_max_misses: int = 5
-    person_max_misses: int = 8
+    person_max_misses: int = 4
     resolution: float = DEFAULT_RESOLUTION
     ray_length: float = 1.0
     object_min_lost_s: float = 2.5
