@@ -37,6 +37,9 @@ class PersonPlaceKP(_EntityPlaceKP):
         visitor_views: face views without recognition after which an unnamed person becomes a visitor
             instance (see :meth:`instance_of`).
         resolution: metres, of the CKUs' voxel keys (KGM-2's tracking resolution).
+        doorway_m: a person believed in one room and seen in the next stays believed where they were while
+            their seen centroid is within this many metres of the believed room: the camera sees a body's
+            near side, so someone stopping in a doorway looks up to a body radius inside the robot's room.
     """
 
     pddl_type = "person"
@@ -60,11 +63,13 @@ class PersonPlaceKP(_EntityPlaceKP):
         frequency: float = 5.0,
         name: str = "kp'.person_at",
         resolution: float = DEFAULT_RESOLUTION,
+        doorway_m: float = 0.3,
     ) -> None:
         super().__init__(
             name, frequency, bus, kb, "cognition.person", needed, min_confidence, explored_grace_s, resolution
         )
         self.ttl_s = ttl_s
+        self.doorway_m = doorway_m
         self.anonymous_classes = frozenset({"person"})
         self.visitor_prefix = "visitor"
         self.visitor_views = visitor_views
@@ -212,6 +217,20 @@ class PersonPlaceKP(_EntityPlaceKP):
         while len(trail) > 2 and cku.stamp - trail[1][0] >= self.speed_window_s:
             trail.popleft()
         super().seen(cku)
+
+    def place_of(self, cku: CKU) -> tuple[str | None, str | None]:
+        """As for every entity, but the believed room while the seen centroid is within :attr:`doorway_m` of
+        it (someone in a doorway is not yet in the next room)."""
+        room, furniture = super().place_of(cku)
+        current = self.value_of(self.place_predicate, cku.symbol)
+        if room is None or current is None or room == current or self.doorway_m <= 0:
+            return room, furniture
+        x, y, _ = cku.position
+        m = self.doorway_m
+        near = ((x + m, y), (x - m, y), (x, y + m), (x, y - m))
+        if any(self.locations.room_at(px, py) == current for px, py in near):
+            return current, furniture
+        return room, furniture
 
     def walking(self, symbol: str) -> bool:
         """Whether the person moved faster than ``walking_speed`` over their last sightings."""

@@ -1,0 +1,36 @@
+"""person_at across a doorway: the camera sees a body's near side, so a person standing in a doorway looks a
+little inside the next room; they stay believed where they were until seen clearly through."""
+
+from __future__ import annotations
+
+from knic.bus import Bus
+from knic.kgm3.people import PersonPlaceKP
+from knic.spatial import LocationModel
+from knic.units import Kind
+from knowledge_base import Fact, KnowledgeBase
+from tests.knic.kgm3.helpers import cku, send
+from tests.knic.places import publish_place_ckus
+
+
+def test_a_person_in_the_doorway_stays_in_the_room_they_were_in(
+    paper_kb: KnowledgeBase, paper_locations: LocationModel
+) -> None:
+    bus = Bus()
+    publish_place_ckus(bus, paper_locations)
+    kp = PersonPlaceKP(bus, paper_kb, needed=2)  # the paper's bedroom | kitchen wall is x = 4, door at y = 6
+    t = 0.0
+    for x in (3.0, 3.0):
+        t += 0.2
+        send(bus, cku("annie", Kind.PERSON, (x, 6.0, 1.0), t, cls="person"))
+        kp.step(t)
+    assert paper_kb.facts("person_at") == [Fact("person_at", ("annie", "bedroom"))]
+    for x in (4.1, 4.15, 4.2, 4.1):  # seen 10-20 cm into the kitchen: in the doorway
+        t += 0.2
+        send(bus, cku("annie", Kind.PERSON, (x, 6.0, 1.0), t, cls="person"))
+        kp.step(t)
+        assert paper_kb.facts("person_at") == [Fact("person_at", ("annie", "bedroom"))]
+    for x in (4.5, 4.6):  # clearly through
+        t += 0.2
+        send(bus, cku("annie", Kind.PERSON, (x, 6.0, 1.0), t, cls="person"))
+        kp.step(t)
+    assert paper_kb.facts("person_at") == [Fact("person_at", ("annie", "kitchen"))]
