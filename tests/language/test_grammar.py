@@ -63,7 +63,7 @@ def test_pronouns_are_sampled_for_what_was_said_before_and_read_the_same(vocabul
     graph = compile_word_graph(command_grammar(), vocabulary)
     said: dict[str, int] = {}
     for sample in sample_sentences(vocabulary, 1500, seed=11):
-        words = sample.text.split()
+        words = sample.text.replace("see to it that", "").split()  # that "it" stands for nothing
         pronouns = [w for w in words if w in ("it", "them", "her", "him")]
         if not pronouns:
             continue
