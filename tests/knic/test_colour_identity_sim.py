@@ -10,13 +10,13 @@ import numpy as np
 import pytest
 import yaml
 
-from core.robot import NavState
 from knic.kgm1.camera import colour_match
 from knic.pipeline import build_pipeline
 from knic.scheduler import Scheduler
 from knic.seed import seed_kb_from_world
 from knowledge_base import KnowledgeBase
 from tests.knic.synthetic import DOMAIN
+from tests.knic.test_pipeline_sim import drive_to
 from worlds.api import NoiseConfig
 from worlds.loader import WORLD_NAMES, world_from_dict
 from worlds.simulation import Simulation
@@ -46,11 +46,7 @@ def _run_entrance(colours: tuple[list[float], list[float]]) -> KnowledgeBase:
         scheduler = Scheduler(real_time_factor=1.0)
         for component in build_pipeline(kb, sim, world, role="companion"):
             scheduler.add(component)
-        sim.navigate_to_room("entrance")
-        end = sim.time + 60.0
-        while sim.nav_status().state is NavState.ACTIVE and sim.time < end:
-            sim.step(0.1)
-            scheduler.tick(sim.time)
+        drive_to(sim, scheduler, "entrance")
         for _ in range(40):  # four seconds looking around the entrance
             sim.step(0.1)
             scheduler.tick(sim.time)
