@@ -388,6 +388,7 @@ class CognitiveLayer(Component):
                 "hits": track.hits,
                 "face_views": track.face_views,
                 "sightings": track.sightings,
+                "sensor_origin": det.sensor_origin,
             },
         )
         self._emit(cku)

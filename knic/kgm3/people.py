@@ -220,14 +220,25 @@ class PersonPlaceKP(_EntityPlaceKP):
 
     def place_of(self, cku: CKU) -> tuple[str | None, str | None]:
         """As for every entity, but the believed room while the seen centroid is within :attr:`doorway_m` of
-        it (someone in a doorway is not yet in the next room)."""
+        it on the far side from the camera (the camera sees a body's near side: someone in a doorway is not
+        yet in the robot's room). When the CKU names the camera (``attributes["sensor_origin"]``) only the
+        point :attr:`doorway_m` beyond the centroid along the line of sight counts: a person seen from the
+        believed room, standing just beyond its doorway, is in the next room (kept there while seen, they
+        were believed in the room they had left for as long as they stood by the door)."""
         room, furniture = super().place_of(cku)
         current = self.value_of(self.place_predicate, cku.symbol)
         if room is None or current is None or room == current or self.doorway_m <= 0:
             return room, furniture
         x, y, _ = cku.position
         m = self.doorway_m
-        near = ((x + m, y), (x - m, y), (x, y + m), (x, y - m))
+        origin = cku.attributes.get("sensor_origin")
+        near: tuple[tuple[float, float], ...]
+        if isinstance(origin, tuple) and len(origin) >= 2:
+            dx, dy = x - float(origin[0]), y - float(origin[1])
+            norm = math.hypot(dx, dy)
+            near = ((x + m * dx / norm, y + m * dy / norm),) if norm > 1e-6 else ()
+        else:
+            near = ((x + m, y), (x - m, y), (x, y + m), (x, y - m))
         if any(self.locations.room_at(px, py) == current for px, py in near):
             return current, furniture
         return room, furniture

@@ -34,3 +34,31 @@ def test_a_person_in_the_doorway_stays_in_the_room_they_were_in(
         send(bus, cku("annie", Kind.PERSON, (x, 6.0, 1.0), t, cls="person"))
         kp.step(t)
     assert paper_kb.facts("person_at") == [Fact("person_at", ("annie", "kitchen"))]
+
+
+def test_seen_from_the_room_believed_a_person_just_beyond_its_door_is_in_the_next_room(
+    paper_kb: KnowledgeBase, paper_locations: LocationModel
+) -> None:
+    # the camera sees a body's near side: the room behind the seen centroid along the line of sight is what
+    # the doorway margin keeps, not the room in front of it
+    bus = Bus()
+    publish_place_ckus(bus, paper_locations)
+    kp = PersonPlaceKP(bus, paper_kb, needed=2)
+    t = 0.0
+    for x in (3.0, 3.0):
+        t += 0.2
+        send(bus, cku("annie", Kind.PERSON, (x, 6.0, 1.0), t, cls="person", sensor_origin=(1.0, 6.0, 1.2)))
+        kp.step(t)
+    assert paper_kb.facts("person_at") == [Fact("person_at", ("annie", "bedroom"))]
+    # seen from the kitchen side 15 cm into the kitchen: in the doorway, still the bedroom
+    for _ in range(3):
+        t += 0.2
+        send(bus, cku("annie", Kind.PERSON, (4.15, 6.0, 1.0), t, cls="person", sensor_origin=(6.5, 6.0, 1.2)))
+        kp.step(t)
+        assert paper_kb.facts("person_at") == [Fact("person_at", ("annie", "bedroom"))]
+    # the same spot seen from the bedroom: the body's far side is farther into the kitchen
+    for _ in range(2):
+        t += 0.2
+        send(bus, cku("annie", Kind.PERSON, (4.15, 6.0, 1.0), t, cls="person", sensor_origin=(1.0, 6.0, 1.2)))
+        kp.step(t)
+    assert paper_kb.facts("person_at") == [Fact("person_at", ("annie", "kitchen"))]
