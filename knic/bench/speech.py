@@ -19,8 +19,9 @@ Figures (wall-clock time; the decoder is built once before timing):
 * ``ms_per_utterance`` -- mean recognition plus understanding time per utterance;
 * ``by_voice`` -- frame-with-arguments accuracy of the in-grammar utterances of each voice in ``gold.json``;
 * ``by_class`` -- the same per phrasing class (fillers, relative, chains, levels, several, ...) when given;
-* ``dev`` -- the same main figures on the development set (``tests/fixtures/speech_dev``: voices and sentences
-  the test set does not have), to see how far the figures carry to unseen voices;
+* ``dev`` -- the same main figures on the development set (``tests/fixtures/speech_people/dev``: every
+  command of the text dev set, 115, and 6 other utterances, in voices and sentences the test set does not
+  have), to see how far the figures carry to unseen voices;
 * ``answer_accuracy`` -- share of ``tests/fixtures/speech_answers`` (spoken yes, no, and speech that is no
   answer) that the confirmation recogniser takes as the right answer, or as no answer;
   ``answer_phrase_accuracy`` the same on ``speech_answers_dev`` beside it (answers of several words: "no,
