@@ -116,7 +116,7 @@ class GoalIntake:
         say: how the robot speaks (a run: the robot's speech through the seam).
         confirm: the role asks for a yes before acting (``Role.confirm_actions``).
         max_asks: how often a question is asked in all before the command is declined.
-        recognise_command: WAV path -> transcript of a command (default: pocketsphinx with the grammar).
+        recognise_command: WAV path -> transcript of a command (default: pocketsphinx with the n-gram model).
         recognise_answer: WAV path -> transcript of a yes/no answer (default: pocketsphinx answer grammar).
         recognise_plain_answer: the same after the robot asked "Please answer yes or no" (default: the answer
             grammar without its non-answer path; with only ``recognise_answer`` given, that one).
@@ -267,10 +267,9 @@ class GoalIntake:
 
     def _command_recogniser(self) -> Recognise:
         if self.recognise_command is None:
-            from knic.language.speech import Recognizer
-            from knic.language.understanding import default_grammar
+            from knic.language.lmspeech import command_recognizer
 
-            recognizer = Recognizer(default_grammar(), self.vocabulary)
+            recognizer = command_recognizer(self.vocabulary)
 
             def recognise(wav: str) -> str:
                 transcript = recognizer.recognize(wav)

@@ -15,7 +15,7 @@ import json
 
 from core.errors import AudioError
 from knic.cli.goal import add_world_arguments, load_vocabulary
-from knic.cli.say import add_acoustic_argument
+from knic.cli.say import add_acoustic_argument, add_decoder_argument
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -25,16 +25,19 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--count", type=int, default=0, help="stop after N utterances (0: never)")
     add_world_arguments(parser)
     add_acoustic_argument(parser)
+    add_decoder_argument(parser)
 
 
 def run(args: argparse.Namespace) -> int:
     from knic.language.listen import open_source, segments
-    from knic.language.speech import Recognizer
-    from knic.language.understanding import default_grammar, understand_transcript
+    from knic.language.lmspeech import command_recognizer
+    from knic.language.understanding import understand_transcript
 
     stream, recorder = open_source(stdin=args.stdin, wav=args.wav)
     vocabulary = load_vocabulary(args)
-    recognizer = Recognizer(default_grammar(), vocabulary, acoustic_model=args.acoustic_model)
+    recognizer = command_recognizer(
+        vocabulary, decoder=getattr(args, "decoder", "ngram"), acoustic_model=args.acoustic_model
+    )
     heard = 0
     try:
         if not args.json:

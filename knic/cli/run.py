@@ -516,10 +516,9 @@ def recognise(vocabulary: Any, wav: str, acoustic_model: str = "espeak") -> str:
         LanguageError: nothing in the grammar was recognised.
         AudioError: the file is not usable audio.
     """
-    from knic.language.speech import Recognizer
-    from knic.language.understanding import default_grammar
+    from knic.language.lmspeech import command_recognizer
 
-    transcript = Recognizer(default_grammar(), vocabulary, acoustic_model=acoustic_model).recognize(wav)
+    transcript = command_recognizer(vocabulary, acoustic_model=acoustic_model).recognize(wav)
     if not transcript.text or not transcript.in_grammar:
         heard = f' (heard "{transcript.text}")' if transcript.text else ""
         raise LanguageError(f"{wav}: no command recognised{heard}")

@@ -12,7 +12,6 @@ uses the template grammar (:class:`knic.language.speech.Recognizer`).
 from __future__ import annotations
 
 import argparse
-from typing import Any
 
 from knic.cli.goal import add_world_arguments, load_vocabulary, print_understanding
 
@@ -24,6 +23,11 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("wav", help="the spoken command as a WAV file")
     add_world_arguments(parser)
     add_acoustic_argument(parser)
+    add_decoder_argument(parser)
+
+
+def add_decoder_argument(parser: argparse.ArgumentParser) -> None:
+    """``--decoder ngram|grammar`` (shared by the commands that listen for commands)."""
     parser.add_argument(
         "--decoder",
         choices=("ngram", "grammar"),
@@ -52,16 +56,10 @@ def run(args: argparse.Namespace) -> int:
     check_input_file(args.wav, MAX_AUDIO_BYTES, "audio file", AudioError)  # never read /dev/zero
     audio = load_audio(args.wav)  # refuse a bad file before loading the world
     vocabulary = load_vocabulary(args)
-    recognizer: Any
-    if getattr(args, "decoder", "ngram") == "grammar":
-        from knic.language.speech import Recognizer
-        from knic.language.understanding import default_grammar
+    from knic.language.lmspeech import command_recognizer
 
-        recognizer = Recognizer(default_grammar(), vocabulary, acoustic_model=args.acoustic_model)
-    else:
-        from knic.language.lmspeech import NgramRecognizer
-
-        recognizer = NgramRecognizer(vocabulary, acoustic_model=args.acoustic_model)
+    decoder = getattr(args, "decoder", "ngram")
+    recognizer = command_recognizer(vocabulary, decoder=decoder, acoustic_model=args.acoustic_model)
     transcript = recognizer.recognize(audio)
     result = understand_transcript(transcript, vocabulary, speaker=args.speaker)
     print_understanding(result.to_dict(), args.json)

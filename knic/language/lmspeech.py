@@ -30,6 +30,7 @@ import tempfile
 import time
 from collections.abc import Callable, Mapping
 from pathlib import Path
+from typing import Protocol
 
 import numpy as np
 import numpy.typing as npt
@@ -293,3 +294,35 @@ def _model_words(arpa: str) -> set[str]:
         elif inside and line.strip():
             found.add(line.split()[1])
     return found
+
+
+#: the command decoders a listening command can use: ``ngram`` (:class:`NgramRecognizer`, the default: it
+#: hears people's phrasings better and starts faster, see ``knic bench speech``) and ``grammar`` (the
+#: template grammar, :class:`knic.language.speech.Recognizer`)
+DECODERS = ("ngram", "grammar")
+
+
+class CommandRecognizer(Protocol):
+    """What the listening commands need of a decoder: one utterance in, a :class:`Transcript` out."""
+
+    def recognize(self, audio: str | Path | npt.NDArray[np.int16]) -> Transcript:
+        """Decode one utterance (a WAV path or 16 kHz mono samples)."""
+        ...
+
+
+def command_recognizer(
+    vocabulary: Vocabulary, *, decoder: str = "ngram", acoustic_model: str | Path = DEFAULT_ACOUSTIC_MODEL
+) -> CommandRecognizer:
+    """The command recogniser of ``decoder`` (one of :data:`DECODERS`) for a world's vocabulary.
+
+    Raises:
+        LanguageError: an unknown decoder.
+    """
+    if decoder == "ngram":
+        return NgramRecognizer(vocabulary, acoustic_model=acoustic_model)
+    if decoder == "grammar":
+        from knic.language.speech import Recognizer
+        from knic.language.understanding import default_grammar
+
+        return Recognizer(default_grammar(), vocabulary, acoustic_model=acoustic_model)
+    raise LanguageError(f"unknown decoder {decoder!r} ({', '.join(DECODERS)})")

@@ -167,7 +167,9 @@ class KnicNode:
         self.pub_pose = n.create_publisher(PoseStamped, tp.ROBOT_POSE, q(10))
         self.pub_path = n.create_publisher(Path, tp.TRAJECTORY, q(10, latched=True))
         self.pub_map = n.create_publisher(OccupancyGrid, tp.KNIC_MAP, q(1, latched=True))
-        self.pub_goal_reply = n.create_publisher(String, tp.GOAL_REPLY, q(50))
+        # transient local: a subscriber that joins (or is matched by discovery) late still gets the recent
+        # replies; a spoken request in a lockstep run is answered within a second of start-up
+        self.pub_goal_reply = n.create_publisher(String, tp.GOAL_REPLY, q(50, latched=True))
         self.pub_kb_reply = n.create_publisher(String, tp.KB_REPLY, q(50))
         self.pub_question = n.create_publisher(String, tp.QUESTION, q(1, latched=True))
         self.questions = QuestionChannel(

@@ -91,10 +91,9 @@ class SpeechInput:
                     self._answer = AnswerRecognizer()
                 return str(self._answer.recognize(audio))
             if self._command is None:
-                from knic.language.speech import Recognizer
-                from knic.language.understanding import default_grammar
+                from knic.language.lmspeech import command_recognizer
 
-                self._command = Recognizer(default_grammar(), self.vocabulary)
+                self._command = command_recognizer(self.vocabulary)
             transcript = self._command.recognize(audio)
         if not transcript.text or not transcript.in_grammar:
             heard = f' (heard "{transcript.text}")' if transcript.text else ""

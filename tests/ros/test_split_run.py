@@ -54,7 +54,7 @@ class Watcher:
         for topic, msg_type, qos in (
             (tp.FACTS, String, q(1, latched=True)),
             (tp.FACT_EVENTS, String, q(1000)),
-            (tp.GOAL_REPLY, String, q(10)),
+            (tp.GOAL_REPLY, String, q(50, latched=True)),
             (tp.KB_REPLY, String, q(10)),
             (tp.PLAN, String, q(10, latched=True)),
             (tp.COMMAND_LOG, String, q(100)),
