@@ -206,7 +206,8 @@ def _episode_of(role: str, roles: tuple[str, ...], duration: float, seed: int) -
 
 
 def bench_scenario(duration: float) -> dict[str, Any]:
-    """The episode's events as a scenario document: people walking, a visitor, objects moved, a dimmer set."""
+    """The episode's events as a scenario document: people walking, sitting down beside annie (people near
+    each other), a visitor, objects moved, a dimmer set."""
     rooms = ("kitchen", "living_room", "bedroom", "dining_room", "hallway", "bathroom")
     events: list[dict[str, Any]] = [
         {"at": 0, "type": "person_to", "person": "annie", "furniture": "sofa", "teleport": True},
@@ -222,7 +223,10 @@ def bench_scenario(duration: float) -> dict[str, Any]:
     t, i = 20.0, 0
     while t < duration - 20:
         person = "tracy" if i % 2 == 0 else "jack"
-        events.append({"at": t, "type": "person_to", "person": person, "room": rooms[i % len(rooms)]})
+        if i % 4 == 2:  # sit down beside annie on the sofa for a while: people near each other
+            events.append({"at": t, "type": "person_to", "person": person, "furniture": "sofa"})
+        else:
+            events.append({"at": t, "type": "person_to", "person": person, "room": rooms[i % len(rooms)]})
         if i % 3 == 1:
             item, to = moves[(i // 3) % len(moves)]
             events.append({"at": t + 5, "type": "move_object", "person": "tracy", "item": item, "to": to})
