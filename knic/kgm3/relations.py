@@ -21,9 +21,10 @@ class PersonNearKP(KPPrime):
 
     Hysteresis: a pair becomes near after ``needed`` consecutive evaluations closer than ``near_m - band`` and
     stops being near after ``needed`` evaluations farther than ``near_m + band``; a pair whose members were
-    not
-    both seen within ``fresh_s`` is not evaluated, and the fact goes when one of them has not been seen for
-    ``ttl_s``.
+    not both seen within ``fresh_s`` is not evaluated. Retracted only on evidence or age, as person_at: when
+    KGM-2 lost one of them (the camera looked where they were and they were gone), when one of them is seen
+    farther than ``near_m + band`` from where the other was last seen, or when one of them has not been seen
+    for ``ttl_s`` (two people sitting together stay together while the robot looks elsewhere).
     """
 
     def __init__(
@@ -35,7 +36,7 @@ class PersonNearKP(KPPrime):
         band_m: float = 0.1,
         needed: int = 2,
         fresh_s: float = 1.0,
-        ttl_s: float = 10.0,
+        ttl_s: float = 120.0,
         frequency: float = 5.0,
         name: str = "kp'.person_near",
     ) -> None:
@@ -74,8 +75,20 @@ class PersonNearKP(KPPrime):
             if prov is None or prov.source != self.name:
                 continue
             stamps = [self.latest[s].stamp if s in self.latest else -math.inf for s in (p, q)]
-            if now - min(stamps) > self.ttl_s:
+            if now - min(stamps) > self.ttl_s or self._seen_apart(p, q, now):
                 self._write(min(p, q), max(p, q), False, now, ())
+
+    def _seen_apart(self, p: str, q: str, now: float) -> bool:
+        """One of the pair is seen now (within ``fresh_s``) farther than ``near_m + band`` from where the
+        other was last seen, while the other is not seen now (a pair both seen is evaluated as a pair)."""
+        a, b = self.latest.get(p), self.latest.get(q)
+        if a is None or b is None:
+            return False
+        fresh = [now - a.stamp <= self.fresh_s, now - b.stamp <= self.fresh_s]
+        if fresh[0] == fresh[1]:
+            return False
+        (ax, ay), (bx, by) = floor_centre(a), floor_centre(b)
+        return math.hypot(ax - bx, ay - by) > self.near_m + self.band_m
 
     def _write(self, p: str, q: str, near: bool, at: float, support: tuple[str, ...]) -> None:
         with self.kb.batch():

@@ -97,3 +97,19 @@ def test_device_states(home_kb: KnowledgeBase) -> None:
     why = home_kb.why(Fact("light_on", ("bedroom_left_light",)))
     assert why is not None and why.status is BeliefStatus.OBSERVED
     assert level_of(88) == "l100" and level_of(12.4) == "l0"
+
+
+def test_people_near_stay_near_while_unseen_until_seen_apart(paper_kb: KnowledgeBase) -> None:
+    paper_kb.add_instance("person", "jack", source="test", at=0.0)
+    bus = Bus()
+    kp = PersonNearKP(bus, paper_kb, needed=2, ttl_s=120.0)
+    for t in (0.0, 0.2):  # sitting together
+        send(bus, cku("annie", Kind.PERSON, (1.0, 6.0, 1.0), t, cls="person"))
+        send(bus, cku("jack", Kind.PERSON, (1.8, 6.0, 1.0), t, cls="person"))
+        kp.step(t)
+    assert paper_kb.holds("person_near", "annie", "jack")
+    kp.step(60.0)  # the robot looked elsewhere for a minute: nothing says they parted
+    assert paper_kb.holds("person_near", "annie", "jack")
+    send(bus, cku("jack", Kind.PERSON, (6.0, 6.0, 1.0), 61.0, cls="person"))  # jack seen in the kitchen
+    kp.step(61.0)
+    assert not paper_kb.facts("person_near")
