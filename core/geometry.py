@@ -1,4 +1,5 @@
-"""Planar geometry shared by every package: the one point-in-polygon test (world frame, metres).
+"""Planar geometry shared by every package: the one point-in-polygon test and the distance to a polygon's
+outline (world frame, metres).
 
 :func:`inside_polygon` takes one point (two floats) or many (two numpy arrays of the same shape) with the same
 arithmetic, so the simulator's scalar checks and KnIC's vectorised rasterisation agree to the last bit. Pure
@@ -54,3 +55,17 @@ def inside_polygon(x: Any, y: Any, polygon: PolygonLike) -> Any:
         x_at = x1 + (y - y1) * (x2 - x1) / (y2 - y1)
         inside = inside ^ (crosses & (x < x_at))
     return inside
+
+
+def distance_to_outline(x: float, y: float, polygon: PolygonLike) -> float:
+    """Distance from the point ``(x, y)`` to the nearest edge of the closed ``polygon`` (inside or out)."""
+    best = float("inf")
+    count = len(polygon)
+    for i in range(count):
+        x1, y1 = polygon[i]
+        x2, y2 = polygon[(i + 1) % count]
+        dx, dy = x2 - x1, y2 - y1
+        length2 = dx * dx + dy * dy
+        t = 0.0 if length2 == 0 else max(0.0, min(1.0, ((x - x1) * dx + (y - y1) * dy) / length2))
+        best = min(best, ((x - x1 - t * dx) ** 2 + (y - y1 - t * dy) ** 2) ** 0.5)
+    return float(best)

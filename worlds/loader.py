@@ -13,13 +13,13 @@ from pathlib import Path
 from typing import Any
 
 from core.errors import WorldError
+from core.geometry import distance_to_outline
 from core.inputs import MAX_YAML_BYTES, read_text_limited, safe_yaml
 from worlds.geometry import (
     Point,
     point_on_boundary,
     polygon_area,
     polygons_overlap,
-    segment_distance,
     self_intersection,
 )
 from worlds.model import (
@@ -419,12 +419,15 @@ def _people(
         if on is not None:
             if on not in furniture:
                 raise ctx.fail(entry, f"on unknown furniture {on!r}")
-            on_it = [
-                ((i.position[0], i.position[1]), max(i.size[:2]) / 2) for i in items.values() if i.on == on
-            ]
-            on_it += [(q.position, q.radius) for q in out.values() if q.on == on]  # who sits there already
-            pos = furniture[on].seat_spot(radius, on_it)
-            if not furniture[on].seat:  # a table, a counter: the person stands beside it
+            if furniture[on].seat:  # in the middle, or beside the items and people already there
+                taken = [
+                    ((i.position[0], i.position[1]), max(i.size[:2]) / 2)
+                    for i in items.values()
+                    if i.on == on
+                ]
+                taken += [(q.position, q.radius) for q in out.values() if q.on == on]
+                pos = furniture[on].seat_spot(radius, taken)
+            else:  # a table, a counter: the person stands beside it
                 pos = _beside(ctx, entry, furniture[on], furniture, rooms[furniture[on].room], radius)
                 on = None
         elif "position" in d:
@@ -460,9 +463,8 @@ def _beside(
 ) -> Point:
     """The first free place beside ``at`` for a person of body ``radius`` (see :meth:`Furniture.beside`):
     inside its room, clear of the walls and of every piece of furniture."""
-    edges = list(zip(room.polygon, room.polygon[1:] + room.polygon[:1], strict=True))
     for x, y in at.beside(radius):
-        if not room.contains(x, y) or any(segment_distance(x, y, a, b) < radius for a, b in edges):
+        if not room.contains(x, y) or distance_to_outline(x, y, room.polygon) < radius:
             continue
         if all(f.distance(x, y) >= radius for f in furniture.values()):
             return (x, y)

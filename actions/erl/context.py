@@ -20,6 +20,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from actions.erl.perception import Perception
+from core.geometry import distance_to_outline
 from core.robot import Pose2D, Robot
 from knowledge_base import KnowledgeBase
 
@@ -50,8 +51,7 @@ class RoomMap:
     def depth(self, x: float, y: float) -> float:
         """How far ``(x, y)`` lies inside the region, metres: the distance to the nearest wall, negative
         outside."""
-        pts = self.region
-        nearest = min(_segment_distance((x, y), pts[i - 1], pts[i]) for i in range(len(pts)))
+        nearest = distance_to_outline(x, y, self.region)
         return nearest if self.contains(x, y) else -nearest
 
     def inner_points(self, share: float = 0.5) -> list[Point]:
@@ -82,14 +82,6 @@ class FurnitureMap:
     def height(self) -> float:
         """Height of its top surface, metres."""
         return self.size[2]
-
-
-def _segment_distance(p: Point, a: Point, b: Point) -> float:
-    ax, ay = a
-    dx, dy = b[0] - ax, b[1] - ay
-    length2 = dx * dx + dy * dy
-    t = 0.0 if length2 == 0 else max(0.0, min(1.0, ((p[0] - ax) * dx + (p[1] - ay) * dy) / length2))
-    return math.hypot(p[0] - ax - t * dx, p[1] - ay - t * dy)
 
 
 def room_map(kb: KnowledgeBase, room: str) -> RoomMap | None:

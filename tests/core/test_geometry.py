@@ -1,10 +1,12 @@
-"""The one point-in-polygon test: scalar and vectorised calls agree, concave shapes and holes in the map."""
+"""Planar geometry: the one point-in-polygon test (scalar and vectorised calls agree, concave shapes and holes
+in the map) and the distance to an outline."""
 
 from __future__ import annotations
 
 import numpy as np
+import pytest
 
-from core.geometry import inside_polygon
+from core.geometry import distance_to_outline, inside_polygon
 
 #: an L-shaped (concave) room
 L_SHAPE = [(0.0, 0.0), (4.0, 0.0), (4.0, 1.0), (1.0, 1.0), (1.0, 3.0), (0.0, 3.0)]
@@ -30,3 +32,11 @@ def test_degenerate_polygon_holds_nothing() -> None:
     flat = [(0.0, 1.0), (2.0, 1.0), (1.0, 1.0)]
     assert not inside_polygon(1.0, 1.0, flat)
     assert inside_polygon(np.array([1.0]), np.array([1.0]), flat).tolist() == [False]
+
+
+def test_distance_to_outline_inside_outside_and_at_a_corner() -> None:
+    square = [(0.0, 0.0), (4.0, 0.0), (4.0, 4.0), (0.0, 4.0)]
+    assert distance_to_outline(1.0, 2.0, square) == pytest.approx(1.0)  # nearest wall x = 0
+    assert distance_to_outline(2.0, 5.5, square) == pytest.approx(1.5)  # outside, above
+    assert distance_to_outline(7.0, 8.0, square) == pytest.approx(5.0)  # nearest the corner (4, 4)
+    assert distance_to_outline(4.0, 1.0, square) == 0.0  # on an edge
