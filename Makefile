@@ -12,6 +12,8 @@ $(STAMP): pyproject.toml requirements.lock
 	$(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
 	$(BIN)/python -m pip install --quiet -c requirements.lock -e '.[dev,web,ros]'
+	# byte-compile the sources once: where PYTHONDONTWRITEBYTECODE is set, every CLI start would compile them
+	$(BIN)/python -m compileall -q core knic knowledge_base planner actions worlds > /dev/null
 	touch $(STAMP)
 
 venv: $(STAMP)

@@ -111,3 +111,24 @@ def test_read_yaml_reads_a_plain_document(tmp_path: Path) -> None:
     assert read_yaml(path, "test file") == {"a": [1, {"b": "two"}]}
     with pytest.raises(KnicError, match="cannot read test file"):
         read_yaml(tmp_path / "missing.yaml", "test file")
+
+
+@pytest.mark.parametrize("libyaml", [True, False], ids=["libyaml", "pure-python"])
+def test_both_yaml_parsers_read_alike_and_refuse_alike(
+    libyaml: bool, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    import yaml
+
+    from core.inputs import safe_yaml
+
+    if libyaml and not yaml.__with_libyaml__:
+        pytest.skip("PyYAML without libyaml")
+    monkeypatch.setattr(yaml, "__with_libyaml__", libyaml)
+    assert safe_yaml("a: [1, {b: two}]\nc: null\n", "ok.yaml") == {"a": [1, {"b": "two"}], "c": None}
+    assert safe_yaml("x: " + "[" * 63 + "]" * 63, "deep.yaml", max_depth=64) is not None
+    with pytest.raises(KnicError, match=r"^bomb\.yaml:2: YAML aliases"):
+        safe_yaml(BOMB, "bomb.yaml")
+    with pytest.raises(KnicError, match=r"^deep\.yaml:1: YAML nested deeper than 64 levels$"):
+        safe_yaml("x: " + "[" * 64 + "]" * 64, "deep.yaml")
+    with pytest.raises(KnicError, match=r"^bad\.yaml:2: not valid YAML"):
+        safe_yaml("a: 1\n b: [\n", "bad.yaml")
