@@ -38,6 +38,7 @@ class Clause:
     args: list[Arg] = field(default_factory=list)
     states: list[str] = field(default_factory=list)
     levels: list[int] = field(default_factory=list)
+    level_in_words: bool = False  # the last level was said in words ("fully"): how far, not where
     missing: list[str] = field(default_factory=list)  # unknown words where a name was expected
     unknown: list[str] = field(default_factory=list)  # other unknown words
     vague: bool = False  # "a bit", "a little": a level meant but not said
@@ -60,6 +61,14 @@ class _Filling:
     joined: bool = False
     expecting: bool = False  # a noun phrase is expected (after a determiner or a preposition)
     quantity: Chunk | None = None
+
+
+def _subject(clause: Clause) -> Arg | None:
+    """Take the noun phrase said last, with no preposition, from ``clause``: the subject of the verb that
+    follows ("tracy needs the remote"); None when there is none."""
+    if clause.args and clause.args[-1].prep is None and clause.args[-1].chunk.kind in ("entity", "pronoun"):
+        return clause.args.pop()
+    return None
 
 
 def split_clauses(
@@ -129,11 +138,14 @@ def split_clauses(
                 and current.args
                 and not current.states
                 and not current.levels
-                and (nxt is None or nxt.kind == "join")
+                and (nxt is None or nxt.kind in ("join", "verb"))
             ):
                 current.states.append(chunk.state)  # "i want the blinds open", "leave the lights on"
                 continue
+            subject = _subject(current) if chunk.beneficiary == "subject" else None
             current = Clause(chunk)
+            if subject is not None:  # "tracy needs the remote": the remote is for tracy
+                current.args.append(Arg(subject.chunk, "beneficiary", "for", False))
             clauses.append(current)
             filling = _Filling()
             continue
@@ -225,6 +237,7 @@ def add_to_clause(
         clause.states.append(chunk.state or "")
     elif chunk.kind in ("level", "number"):
         clause.levels.append(chunk.value or 0)
+        clause.level_in_words = chunk.kind == "level"
     elif chunk.kind == "unknown":
         if expecting and (nxt is None or nxt.kind in ("join", "prep", "verb")):
             clause.missing.append(chunk.text)

@@ -160,8 +160,10 @@ def load_language(path: str | Path = DEFAULT_PATH) -> CommandLanguage:
         if unknown:
             raise LanguageError(f"{source}: verbs.{name}: unknown frame kind(s) {', '.join(unknown)}")
         beneficiary = spec.get("beneficiary")
-        if beneficiary not in (None, "me"):
-            raise LanguageError(f"{source}: verbs.{name}: beneficiary may only be 'me', not {beneficiary!r}")
+        if beneficiary not in (None, "me", "subject"):
+            raise LanguageError(
+                f"{source}: verbs.{name}: beneficiary may only be 'me' or 'subject', not {beneficiary!r}"
+            )
         verbs.append(
             VerbClass(
                 str(name),

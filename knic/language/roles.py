@@ -113,7 +113,7 @@ def _carry(
         raise LanguageError(f"{_verb(clause)} the {themes[0]} where? I heard no place")
     if kind == "TAKING" and ("goal" in roles or "beneficiary" in roles):
         kind = "BRINGING"
-    if clause.verb is not None and clause.verb.beneficiary and "goal" not in roles:
+    if clause.verb is not None and clause.verb.beneficiary == "me" and "goal" not in roles:
         roles.setdefault("beneficiary", SPEAKER)
     if kind == "BRINGING" and "goal" not in roles and "beneficiary" not in roles:
         # "fetch the book": no one and nowhere said; a later "put it in the lounge" says where it goes,
@@ -229,7 +229,10 @@ def _operating(reader: Resolver, clause: Clause, previous: Frames, groups: list[
         _ask_level(reader.vocabulary, list(dict.fromkeys(devices)))
     state = clause.verb.state if clause.verb is not None else None
     if clause.levels:
-        state = str(clause.levels[-1])
+        level = clause.levels[-1]
+        if state == "closed" and clause.level_in_words:  # "close the blinds fully": closed all the way
+            level = 100 - level
+        state = str(level)
     elif clause.states:
         state = clause.states[-1]
     if state is None and clause.verb is None:  # "the lights please"

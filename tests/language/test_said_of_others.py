@@ -1,0 +1,56 @@
+"""Wishes said of someone else, staying somewhere, and blinds closed "all the way"."""
+
+from __future__ import annotations
+
+import pytest
+
+from knic.language import understand
+from knic.language.vocabulary import Vocabulary
+
+
+@pytest.mark.parametrize(
+    ("text", "goals"),
+    [
+        ("tracy needs the tablet", ["(has tracy tablet)"]),
+        ("tracy would like a glass of water please", ["(has tracy water)"]),
+        ("could you get the remote, tracy wants it", ["(has tracy remote)"]),
+        ("fetch the mug and the glass, annie could use them", ["(has annie mug)", "(has annie glass)"]),
+        ("i need the lemon", ["(has annie lemon)"]),
+    ],
+)
+def test_a_wish_said_of_someone_is_brought_to_them(
+    vocabulary: Vocabulary, text: str, goals: list[str]
+) -> None:
+    result = understand(text, vocabulary)
+    assert result.accepted, result.reason
+    assert sorted(str(g) for g in result.goals) == sorted(goals)
+
+
+@pytest.mark.parametrize(
+    ("text", "goal"),
+    [
+        ("wait next to the sofa", "(robot_at r2d2 living_room)"),
+        ("stay in the kitchen please", "(robot_at r2d2 kitchen)"),
+    ],
+)
+def test_waiting_somewhere_is_going_there(vocabulary: Vocabulary, text: str, goal: str) -> None:
+    result = understand(text, vocabulary)
+    assert result.accepted, result.reason
+    assert [str(g) for g in result.goals] == [goal]
+
+
+@pytest.mark.parametrize(
+    ("text", "level"),
+    [
+        ("close the blinds all the way", "l0"),
+        ("shut the blinds fully", "l0"),
+        ("lower the blinds a quarter", "l75"),
+        ("close the blinds halfway", "l50"),
+        ("open the blinds all the way", "l100"),
+        ("set the blinds to 25 percent", "l25"),
+    ],
+)
+def test_how_far_blinds_close_is_counted_from_open(vocabulary: Vocabulary, text: str, level: str) -> None:
+    result = understand(text, vocabulary)
+    assert result.accepted, result.reason
+    assert [str(g) for g in result.goals] == [f"(device_level bedroom_blinds {level})"]
