@@ -187,6 +187,9 @@ def _fill(
         return
     if chunk.kind == "join":
         filling.joined = nxt is not None and nxt.kind in (*_NOUNS, "det", "unknown", "quant")
+        last = clause.args[-1] if clause.args else None
+        if filling.joined and last is not None and last.quantity == "both" and last.chunk.role != "plural":
+            last.quantity = None  # "both the juice and the water": the two named, not two juices
         return
     if chunk.kind == "quant":
         if nxt is not None and nxt.kind in ("entity", "det"):

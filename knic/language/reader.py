@@ -249,6 +249,37 @@ class Reader:
                 head.quantity = head.quantity or "all"
             place.consumed = True
 
+    def prefer_devices(self, arg: Arg, wants_level: bool, places: Sequence[str]) -> None:
+        """Of the several devices one name fits, keep those that can do what is asked and are where the
+        command went: with a level asked for, the dimmers and blinds ("turn the lamp up to half"); then those
+        in the room of the latest place said before ("go to the living room and switch on the lamp"), where
+        a dimmer may be the room's light. Nothing changes when no device fits these."""
+        chunk = arg.chunk
+        terms = tuple(t for t in chunk.terms if self.is_a(t, "device"))
+        if chunk.kind != "entity" or arg.quantity or len({t.symbol for t in terms}) < 2:
+            return
+        if wants_level:
+            levelled = tuple(t for t in terms if self.is_a(t, "dimmer") or self.is_a(t, "blinds"))
+            if not levelled and all(self.is_a(t, "light") for t in terms):
+                levelled = self._dimmers_in(tuple(t for t in self.vocabulary.terms if self.is_a(t, "room")))
+            terms = levelled or terms
+        for place in places:
+            rooms = [t for t in self.vocabulary.terms if t.symbol == place and self.is_a(t, "room")]
+            rooms += [
+                t
+                for t in self.vocabulary.terms
+                if t.symbol in self.vocabulary.locations.get(place, ()) and self.is_a(t, "room")
+            ]
+            if not rooms:
+                continue
+            there = tuple(t for t in terms if any(self._within(t, r) for r in rooms))
+            if not there and all(self.is_a(t, "light") for t in terms):
+                there = self._dimmers_in(rooms)
+            terms = there or terms
+            break
+        if len({t.symbol for t in terms}) < len({t.symbol for t in chunk.terms}):
+            arg.chunk = Chunk("entity", chunk.text, terms, role=chunk.role)
+
     def _dimmers_in(self, rooms: Sequence[Term]) -> tuple[Term, ...]:
         """The dimmers (dimmable lights) in the rooms, one term each."""
         found = {t.symbol: t for t in self.vocabulary.terms if self.is_a(t, "dimmer") and not t.is_group}

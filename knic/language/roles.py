@@ -38,6 +38,9 @@ class Resolver(Protocol):
     def narrow(self, args: list[Arg]) -> None:
         """Narrow furniture and devices by the place said next to them."""
 
+    def prefer_devices(self, arg: Arg, wants_level: bool, places: Sequence[str]) -> None:
+        """Of the devices a name fits, keep those that can take a level and are where the command went."""
+
 
 def _bringing(reader: Resolver, clause: Clause, previous: Frames, groups: list[Frames]) -> Frames:
     return _carry(reader, clause, previous, groups, "BRINGING")
@@ -222,6 +225,8 @@ def _operating(reader: Resolver, clause: Clause, previous: Frames, groups: list[
             if arg.prep is None:
                 raise LanguageError(f"'{arg.chunk.text}' is not a device I can operate")
             continue
+        places = [f.get(r) or "" for f in reversed(previous) for r in ("goal", "ground") if f.get(r)]
+        reader.prefer_devices(arg, bool(clause.levels or clause.vague), places)
         devices += reader.resolve(arg, ("device",), previous, groups)
     if not devices:
         raise LanguageError(f"{_verb(clause)} what? I heard no light, dimmer or blinds of this world")

@@ -54,3 +54,28 @@ def test_how_far_blinds_close_is_counted_from_open(vocabulary: Vocabulary, text:
     result = understand(text, vocabulary)
     assert result.accepted, result.reason
     assert [str(g) for g in result.goals] == [f"(device_level bedroom_blinds {level})"]
+
+
+@pytest.mark.parametrize(
+    ("text", "goals"),
+    [
+        # the living room's light is its dimmer; "the lamp" alone also names the bedroom's two lights
+        (
+            "go to the living room and switch on the lamp",
+            ["(robot_at r2d2 living_room)", "(device_level living_room_dimmer l100)"],
+        ),
+        ("turn the lamp up to half", ["(device_level living_room_dimmer l50)"]),
+        ("bring both the juice and the water to tracy", ["(has tracy juice)", "(has tracy water)"]),
+    ],
+)
+def test_what_is_asked_and_where_narrow_the_device(
+    vocabulary: Vocabulary, text: str, goals: list[str]
+) -> None:
+    result = understand(text, vocabulary)
+    assert result.accepted, result.reason
+    assert [str(g) for g in result.goals] == goals
+
+
+def test_a_device_name_left_open_is_still_asked_about(vocabulary: Vocabulary) -> None:
+    result = understand("go to the bedroom and switch on the lamp", vocabulary)
+    assert not result.accepted and result.question is not None and "left light" in result.question
