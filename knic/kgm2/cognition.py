@@ -72,6 +72,10 @@ class TrackingConfig:
     person_gate_growth: float = 0.2
     #: metres a person track's centroid moves before its octomap restarts (see ``Tracker``)
     person_reset_m: float = 0.3
+    #: simulated seconds unseen after which a person track is stale, and the misses a stale track tolerates
+    #: (see ``Tracker``): a person unseen for a while who is missed where the camera looks has walked away
+    person_stale_s: float | None = 10.0
+    person_stale_misses: int = 1
 
 
 def _plan_order(plan: tuple[Policy, str, list[LLKU]]) -> tuple[int, str]:
@@ -179,6 +183,8 @@ class CognitiveLayer(Component):
                 probe_up_m=cfg.person_probe_up_m if person else 0.0,
                 gate_growth=cfg.person_gate_growth if person else 0.0,
                 reset_distance=cfg.person_reset_m if person else None,
+                stale_s=cfg.person_stale_s if person else None,
+                stale_misses=cfg.person_stale_misses,
             )
             self.trackers[cls] = found
         return found

@@ -103,6 +103,13 @@ class Tracker:
             may have moved (a person who walked on while the camera looked away), so an unnamed detection a
             little beyond the radius of a stale track is that track's entity rather than someone new. 0: a
             fixed radius (items do not move by themselves).
+        stale_s: simulated seconds unseen after which a track is stale (None: never): a stale track is dropped
+            after more than ``stale_misses`` consecutive misses instead of ``max_misses``. ``max_misses`` and
+            ``min_lost_s`` guard a track just seen against a brief occlusion (someone passing in front, the
+            detector missing a frame); a person not seen for a while whose spot the camera looks at again
+            without seeing them has most likely walked away while the camera looked elsewhere (a robot
+            sweeping a room may have the spot in view for a few frames only, fewer than ``max_misses``).
+        stale_misses: the misses a stale track tolerates (see ``stale_s``).
         reset_distance: metres the track's centroid may move from where its octomap was started before the
             octomap restarts (None: the radius). A person's octomap restarts after a smaller move than the
             association radius: the voxels of where they stood before would otherwise outvote where they
@@ -127,6 +134,8 @@ class Tracker:
         gate_growth: float = 0.0,
         max_gate: float | None = None,
         reset_distance: float | None = None,
+        stale_s: float | None = None,
+        stale_misses: int = 1,
     ) -> None:
         if radius <= 0 or max_misses < 0 or not 0 < gain <= 1:
             raise InferenceError(f"tracker {cls}: radius > 0, max_misses >= 0 and 0 < gain <= 1 required")
@@ -144,6 +153,8 @@ class Tracker:
         self.gate_growth = max(0.0, gate_growth)
         self.reset_distance = radius if reset_distance is None else reset_distance
         self.max_gate = max(radius, max_gate if max_gate is not None else 2.0 * radius)
+        self.stale_s = stale_s
+        self.stale_misses = max(0, min(stale_misses, max_misses))
         self.tracks: dict[int, Track] = {}
         self._by_symbol: dict[str, Track] = {}
         self.duplicates = 0
@@ -298,10 +309,17 @@ class Tracker:
             track.misses += 1
             left = track.octomap.miss()  # the view without the entity is evidence in its octomap
             long_enough = now is None or now - track.last_seen >= self.min_lost_s
-            if (track.misses > self.max_misses or left == 0) and long_enough:
+            if (track.misses > self.misses_allowed(track, now) or left == 0) and long_enough:
                 del self.tracks[track.track_id]
                 self._by_symbol.pop(track.symbol, None)
                 result.dropped.append(track)
+
+    def misses_allowed(self, track: Track, now: float | None) -> int:
+        """Consecutive misses ``track`` tolerates at simulated time ``now``: ``max_misses``, or
+        ``stale_misses`` once it has not been seen for ``stale_s`` seconds."""
+        if self.stale_s is not None and now is not None and now - track.last_seen >= self.stale_s:
+            return self.stale_misses
+        return self.max_misses
 
     def _create(self, det: LLKU, now: float) -> Track:
         tid = next(_track_ids)

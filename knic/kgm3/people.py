@@ -40,6 +40,12 @@ class PersonPlaceKP(_EntityPlaceKP):
         doorway_m: a person believed in one room and seen in the next stays believed where they were while
             their seen centroid is within this many metres of the believed room: the camera sees a body's
             near side, so someone stopping in a doorway looks up to a body radius inside the robot's room.
+        walk_on_s: a person last seen walking and not seen for at least ``min_unseen_s`` seconds is
+            predicted on along their last velocity for up to this many seconds (0: no prediction); when that
+            walk leads at least ``doorway_m`` into a room next to the believed one (``connected`` in the
+            knowledge base, when it knows the map's doors), they are taken to have walked out of view and
+            out of the room: the belief is retracted (see :meth:`walked_out`).
+        min_unseen_s: see ``walk_on_s``; longer than the gaps between sightings of a person in view.
     """
 
     pddl_type = "person"
@@ -64,12 +70,16 @@ class PersonPlaceKP(_EntityPlaceKP):
         name: str = "kp'.person_at",
         resolution: float = DEFAULT_RESOLUTION,
         doorway_m: float = 0.3,
+        walk_on_s: float = 4.0,
+        min_unseen_s: float = 1.0,
     ) -> None:
         super().__init__(
             name, frequency, bus, kb, "cognition.person", needed, min_confidence, explored_grace_s, resolution
         )
         self.ttl_s = ttl_s
         self.doorway_m = doorway_m
+        self.walk_on_s = walk_on_s
+        self.min_unseen_s = min_unseen_s
         self.anonymous_classes = frozenset({"person"})
         self.visitor_prefix = "visitor"
         self.visitor_views = visitor_views
@@ -243,15 +253,47 @@ class PersonPlaceKP(_EntityPlaceKP):
             return current, furniture
         return room, furniture
 
-    def walking(self, symbol: str) -> bool:
-        """Whether the person moved faster than ``walking_speed`` over their last sightings."""
+    def velocity(self, symbol: str) -> tuple[float, float] | None:
+        """The person's planar velocity (m/s) over their last sightings, None when too few."""
         trail = self._trail.get(symbol)
         if not trail or len(trail) < 2:
-            return False
+            return None
         (t0, p0), (t1, p1) = trail[0], trail[-1]
         if t1 - t0 < 0.5 * self.speed_window_s:
+            return None
+        return ((p1[0] - p0[0]) / (t1 - t0), (p1[1] - p0[1]) / (t1 - t0))
+
+    def walking(self, symbol: str) -> bool:
+        """Whether the person moved faster than ``walking_speed`` over their last sightings."""
+        v = self.velocity(symbol)
+        return v is not None and math.hypot(*v) > self.walking_speed
+
+    def walked_out(self, symbol: str, believed: str, now: float) -> bool:
+        """Whether the person, last seen walking and unseen since, has walked out of the believed room.
+
+        Their last sighting is carried on along their velocity for the time unseen, at most ``walk_on_s``
+        seconds: when that point and the point ``doorway_m`` short of it (clearly through, not in a doorway)
+        lie in another room, one next to the believed room when the knowledge base knows which rooms are
+        connected, the person walked on out of view (the camera turned away as they left). A walk that leads
+        into a wall ends outside every room or in a room not connected, and counts for nothing."""
+        seen = self.last_seen.get(symbol)
+        trail = self._trail.get(symbol)
+        if self.walk_on_s <= 0 or seen is None or not trail or now - seen < self.min_unseen_s:
             return False
-        return math.dist(p0[:2], p1[:2]) / (t1 - t0) > self.walking_speed
+        v = self.velocity(symbol)
+        speed = math.hypot(*v) if v is not None else 0.0
+        if v is None or speed <= self.walking_speed:
+            return False
+        x, y, _ = trail[-1][1]
+        dt = min(now - seen, self.walk_on_s)
+        px, py = x + v[0] * dt, y + v[1] * dt
+        room = self.locations.room_at(px, py)
+        if room is None or room == believed:
+            return False
+        back = self.doorway_m / speed
+        if self.locations.room_at(px - v[0] * back, py - v[1] * back) != room:
+            return False
+        return not self.kb.facts("connected") or bool(self.kb.facts("connected", believed, room))
 
     def left_belief(self, symbol: str, believed: str, room: str | None) -> bool:
         """A person whose track was last seen outside the believed room, after the belief was made, and is
@@ -285,14 +327,20 @@ class PersonPlaceKP(_EntityPlaceKP):
         return min(self.max_ttl_s, max(self.ttl_s, self.dwell_share * dwell))
 
     def step(self, now: float) -> None:
-        """Process sightings and explored rooms, bind a visitor met again (:meth:`rebind_pending`), then age
+        """Process sightings and explored rooms, bind a visitor met again (:meth:`rebind_pending`), retract
+        the place of a person who walked on out of view and out of the room (:meth:`walked_out`), then age
         the beliefs of people unseen for their TTL."""
         super().step(now)
         self.rebind_pending(now)
         for fact in self.kb.facts("person_at"):
             symbol = fact.args[0]
             prov = self.kb.why(fact)
-            if prov is None or prov.source != self.name or prov.status is not BeliefStatus.OBSERVED:
+            if prov is None or prov.source != self.name:
+                continue
+            if self.walked_out(symbol, fact.args[1], now):
+                self.forget_place(symbol, now, ())
+                continue
+            if prov.status is not BeliefStatus.OBSERVED:
                 continue
             if now - self.last_seen.get(symbol, prov.since) > self.ttl_of(symbol):
                 self.assert_fact(

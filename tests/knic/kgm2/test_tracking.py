@@ -143,3 +143,27 @@ def test_a_person_octomap_restarts_after_a_step_smaller_than_the_association_rad
     assert track.octomap.resets == 1 and other.octomap.resets == 0
     # the restarted map holds only voxels of where the person stands now
     assert min(track.keys[:, 0]) > min(other.keys[:, 0])
+
+
+def test_a_person_unseen_for_a_while_and_missed_in_view_is_dropped_after_fewer_misses() -> None:
+    # the robot sweeping a room has the spot where the person was in view for a few frames only: a person
+    # unseen for a while (stale) who is not there is dropped after stale_misses misses, not max_misses
+    shown = lambda pts: np.ones(len(pts), dtype=bool)  # noqa: E731
+    stale = Tracker("person", radius=0.8, max_misses=4, min_lost_s=2.5, stale_s=10.0, stale_misses=1)
+    for tracker in (stale, Tracker("person", radius=0.8, max_misses=4, min_lost_s=2.5)):
+        tracker.associate([percept(Kind.PERSON, "person", (3.0, 2.0, 0.9), 0.0)], 0.0)
+        # just seen: a brief occlusion never drops the track, however many frames it lasts within 2.5 s
+        assert all(tracker.miss_scan(shown, 0.2 * k) == [] for k in range(1, 5))
+    assert [t.misses for t in stale.tracks.values()] == [4]
+    assert stale.misses_allowed(next(iter(stale.tracks.values())), 5.0) == 4
+    # looked at again 20 s later: dropped at the next miss
+    assert [t.cls for t in stale.miss_scan(shown, 20.0)] == ["person"] and stale.tracks == {}
+    # a track seen lately is kept through stale_misses + 1 misses
+    fresh = Tracker("person", radius=0.8, max_misses=4, min_lost_s=2.5, stale_s=10.0, stale_misses=1)
+    fresh.associate([percept(Kind.PERSON, "person", (3.0, 2.0, 0.9), 0.0)], 0.0)
+    assert fresh.miss_scan(shown, 3.0) == [] and fresh.miss_scan(shown, 3.2) == [] and len(fresh.tracks) == 1
+    # unseen for stale_s: two misses in view drop it
+    late = Tracker("person", radius=0.8, max_misses=4, min_lost_s=2.5, stale_s=10.0, stale_misses=1)
+    late.associate([percept(Kind.PERSON, "person", (3.0, 2.0, 0.9), 0.0)], 0.0)
+    assert late.miss_scan(shown, 12.0) == []
+    assert [t.cls for t in late.miss_scan(shown, 12.2)] == ["person"]

@@ -62,3 +62,42 @@ def test_seen_from_the_room_believed_a_person_just_beyond_its_door_is_in_the_nex
         send(bus, cku("annie", Kind.PERSON, (4.15, 6.0, 1.0), t, cls="person", sensor_origin=(1.0, 6.0, 1.2)))
         kp.step(t)
     assert paper_kb.facts("person_at") == [Fact("person_at", ("annie", "kitchen"))]
+
+
+def test_a_person_last_seen_walking_to_the_door_and_unseen_since_has_walked_out_of_the_room(
+    paper_kb: KnowledgeBase, paper_locations: LocationModel
+) -> None:
+    # the paper's bedroom | kitchen wall is x = 4, door at y = 6: annie walks east towards it at 0.8 m/s and
+    # the camera turns away; carried on along her walk she is through the door: her bedroom belief goes
+    bus = Bus()
+    publish_place_ckus(bus, paper_locations)
+    kp = PersonPlaceKP(bus, paper_kb, needed=2)
+    t, x = 0.0, 1.6
+    while t < 1.9:
+        t, x = t + 0.2, x + 0.16
+        send(bus, cku("annie", Kind.PERSON, (x, 6.0, 1.0), t, cls="person"))
+        kp.step(t)
+    assert paper_kb.facts("person_at") == [Fact("person_at", ("annie", "bedroom"))]
+    assert kp.walking("annie")
+    kp.step(t + 0.6)  # a moment unseen: as between sightings
+    assert paper_kb.facts("person_at") == [Fact("person_at", ("annie", "bedroom"))]
+    kp.step(t + 2.0)  # x 3.2 + 0.8 m/s * 2 s: 0.8 m into the kitchen
+    assert paper_kb.facts("person_at") == []
+
+
+def test_a_person_walking_towards_a_wall_is_not_taken_out_of_the_room(
+    paper_kb: KnowledgeBase, paper_locations: LocationModel
+) -> None:
+    bus = Bus()
+    publish_place_ckus(bus, paper_locations)
+    kp = PersonPlaceKP(bus, paper_kb, needed=2)
+    t = 0.0
+    # annie walks west in the bedroom, towards its outer wall (nothing beyond), and is not seen for long after
+    for k in range(10):
+        t += 0.2
+        send(bus, cku("annie", Kind.PERSON, (1.6 - 0.16 * k, 6.0, 1.0), t, cls="person"))
+        kp.step(t)
+    assert kp.walking("annie")
+    for dt in (1.0, 3.0, 10.0):
+        kp.step(t + dt)
+        assert paper_kb.facts("person_at") == [Fact("person_at", ("annie", "bedroom"))]
