@@ -281,6 +281,10 @@ class World:
     source: Path | None = None
     _cache: dict[str, object] = field(default_factory=dict, repr=False, compare=False)
 
+    def device_rooms(self) -> dict[str, str]:
+        """The room of each device (the domain has no fact for it; the language reads it from here)."""
+        return {name: device.room for name, device in self.devices.items()}
+
     def room_of(self, x: float, y: float) -> str | None:
         """The room whose floor contains ``(x, y)``, or ``None`` outside every room.
 

@@ -90,6 +90,8 @@ def world_vocabulary(world: str, domain: Any, lexicon: str | None) -> tuple[Any,
     for predicate, *args in sorted(model.static_facts()):
         if predicate == "furniture_in":
             locations.setdefault(args[0], []).append(args[1])
+    for device, room in model.device_rooms().items():
+        locations.setdefault(device, []).append(room)
     lexicon_path = lexicon or find_lexicon(domain, path) or WORLDS / "erl_home" / "lexicon.yaml"
     names = Lexicon.load(lexicon_path)
     vocabulary = Vocabulary.from_instances(instances, base.types, names, base.predicates, locations)

@@ -491,7 +491,9 @@ def world_vocabulary(system: KnicSystem) -> Any:
     """The spoken names of the run's knowledge base (with the ERL lexicon: "reading glasses" -> glasses)."""
     from knic.language.vocabulary import Vocabulary
 
-    return Vocabulary.from_knowledge_base(system.kb, LEXICON if LEXICON.is_file() else None)
+    return Vocabulary.from_knowledge_base(
+        system.kb, LEXICON if LEXICON.is_file() else None, system.world.device_rooms()
+    )
 
 
 def understand_text(vocabulary: Any, text: str, speaker: str) -> Any:

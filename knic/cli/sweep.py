@@ -155,7 +155,7 @@ def _goal_case(case: dict[str, Any]) -> tuple[Any, dict[str, Any]]:
     )
     with KnicSystem(config) as system:
         lexicon = LEXICON if case["world"] == "erl_home" else None
-        vocabulary = Vocabulary.from_knowledge_base(system.kb, lexicon)
+        vocabulary = Vocabulary.from_knowledge_base(system.kb, lexicon, system.world.device_rooms())
         intake = GoalIntake(system.kb, vocabulary, say=system.context.say, confirm=role.confirm_actions)
         source = "operator" if role.operator_only else "user"
         reply = intake.submit(case["goal"], speaker=case.get("speaker", "annie"), source=source)

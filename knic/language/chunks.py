@@ -60,6 +60,16 @@ class Chunker:
             for variant in variants:
                 if variant not in self._full:
                     self._partial.setdefault(variant, []).append(term)
+        named: dict[str, Term] = {}  # one term per single thing, for the nouns of its type
+        for term in vocabulary.terms:
+            if term.type != "level" and not term.is_group:
+                named.setdefault(term.symbol, term)
+        for type_name, nouns in lang.type_nouns.items():
+            things = [t for t in named.values() if vocabulary.is_subtype(t.type, type_name)]
+            for noun in nouns if things else ():
+                for variant in (noun, noun if noun.endswith("s") else noun + "s"):
+                    if variant not in self._full and variant not in self._partial:
+                        self._partial[variant] = list(things)
         #: plurals of a name's last word ("lamps" for the left and the right lamp): all of them are meant
         self._plural = {
             p for p, ts in self._partial.items() if any(p == t.phrase.split()[-1] + "s" for t in ts)

@@ -89,6 +89,7 @@ class CommandLanguage:
     containment: tuple[str, ...] = ()
     anywhere: tuple[str, ...] = ()
     bare_request: str | None = None
+    type_nouns: dict[str, tuple[str, ...]] = field(default_factory=dict)
 
     def verb_frames(self) -> dict[str, tuple[tuple[str, ...], str | None]]:
         """Verb phrase -> (frame kinds in order, implied state); a phrase in several classes gets all."""
@@ -175,7 +176,7 @@ def load_language(path: str | Path = DEFAULT_PATH) -> CommandLanguage:
             )
         )
     tables: dict[str, dict[str, tuple[str, ...]]] = {}
-    for key in ("prepositions", "states", "levels", "quantifiers"):
+    for key in ("prepositions", "states", "levels", "quantifiers", "type_nouns"):
         raw = data.get(key) or {}
         if not isinstance(raw, dict):
             raise LanguageError(f"{source}: '{key}' must map names to phrase lists")
@@ -224,6 +225,7 @@ def load_language(path: str | Path = DEFAULT_PATH) -> CommandLanguage:
         containment=_phrases(data, "containment", source),
         anywhere=_phrases(data, "anywhere", source),
         bare_request=bare,
+        type_nouns=tables["type_nouns"],
     )
     lists: dict[str, tuple[str, ...]] = {v.name: v.phrases for v in verbs}
     spoken = _phrases(data, "spoken_determiners", source) or language.determiners

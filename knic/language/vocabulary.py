@@ -241,13 +241,18 @@ class Vocabulary:
 
     @classmethod
     def from_knowledge_base(
-        cls, kb: KnowledgeSource, lexicon: Lexicon | str | Path | None = None
+        cls,
+        kb: KnowledgeSource,
+        lexicon: Lexicon | str | Path | None = None,
+        rooms: Mapping[str, str] | None = None,
     ) -> Vocabulary:
         """Build from a knowledge base's instances and its domain's ``level`` constants.
 
         Args:
             kb: the knowledge base (read once; later changes are not seen).
             lexicon: a :class:`Lexicon`, a lexicon file, or None for spoken symbol names only.
+            rooms: the room of things the domain has no fact for (a device's room, from the world file:
+                "the light in the sitting room" for its reading lamp).
         """
         if lexicon is not None and not isinstance(lexicon, Lexicon):
             lexicon = Lexicon.load(lexicon)
@@ -267,6 +272,9 @@ class Vocabulary:
                 if predicate in predicates:
                     for fact in facts(predicate):
                         locations.setdefault(str(fact.args[0]), []).append(str(fact.args[1]))
+        for thing, room in (rooms or {}).items():
+            if thing in instances and room not in locations.get(thing, []):
+                locations.setdefault(thing, []).append(room)
         return cls.from_instances(instances, types, lexicon, predicates, locations)
 
     @property

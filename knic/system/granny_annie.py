@@ -116,7 +116,7 @@ class GrannyAnnieFlow(TaskFlow):
         self.max_asks = max_asks
         self.answer_timeout_s = answer_timeout_s
         lex = lexicon if lexicon is not None else (LEXICON if LEXICON.is_file() else None)
-        vocabulary = Vocabulary.from_knowledge_base(self.kb, lex)
+        vocabulary = Vocabulary.from_knowledge_base(self.kb, lex, system.world.device_rooms())
         self.intake = GoalIntake(
             self.kb,
             vocabulary,

@@ -78,7 +78,9 @@ class LiveLink:
         self.pace = pace
         self.speaker = speaker
         self.snapshot_period = 1.0 / snapshot_hz
-        self.vocabulary = Vocabulary.from_knowledge_base(system.kb, LEXICON if LEXICON.is_file() else None)
+        self.vocabulary = Vocabulary.from_knowledge_base(
+            system.kb, LEXICON if LEXICON.is_file() else None, system.world.device_rooms()
+        )
         self.intake = GoalIntake(
             system.kb,
             self.vocabulary,

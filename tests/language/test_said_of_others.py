@@ -79,3 +79,18 @@ def test_what_is_asked_and_where_narrow_the_device(
 def test_a_device_name_left_open_is_still_asked_about(vocabulary: Vocabulary) -> None:
     result = understand("go to the bedroom and switch on the lamp", vocabulary)
     assert not result.accepted and result.question is not None and "left light" in result.question
+
+
+def test_a_device_is_also_called_by_its_type_in_its_room() -> None:
+    """The bungalow's reading lamp has no lexicon name "light": its type names it, and its room is the
+    world file's (the domain has no fact for a device's room)."""
+    from knic.cli.goal import world_vocabulary
+    from knic.language.world import DEFAULT_DOMAIN
+
+    vocabulary, speaker = world_vocabulary("worlds/test_bungalow/test_bungalow.yaml", DEFAULT_DOMAIN, None)
+    for text in ("turn on the light in the sitting room", "switch the sitting room lamp on"):
+        result = understand(text, vocabulary, speaker=speaker or "walter")
+        assert result.accepted, result.reason
+        assert [str(g) for g in result.goals] == ["(light_on reading_lamp)"]
+    result = understand("turn on the light in the hall", vocabulary, speaker=speaker or "walter")
+    assert not result.accepted and "no light in the hall" in result.reason
