@@ -12,11 +12,20 @@ from knic.language.vocabulary import Lexicon, Vocabulary, normalize, number_word
 
 from .test_understanding import REJECTED
 
+_INDEX: list[tuple[WordGraph, dict[tuple[int, str], set[int]]]] = []  # the latest graph and its index
+
 
 def accepts(graph: WordGraph, text: str) -> bool:
+    """Whether the word graph has a path from start to final that says exactly ``text``."""
+    if not _INDEX or _INDEX[0][0] is not graph:  # index the transitions by (state, word) once per graph
+        moves: dict[tuple[int, str], set[int]] = {}
+        for src, dst, _, word in graph.transitions:
+            moves.setdefault((src, word), set()).add(dst)
+        _INDEX[:] = [(graph, moves)]
+    moves = _INDEX[0][1]
     states = {graph.start}
     for word in text.split():
-        states = {d for s, d, _, w in graph.transitions if s in states and w == word}
+        states = {d for s in states for d in moves.get((s, word), ())}
     return graph.final in states
 
 
