@@ -9,12 +9,12 @@ from knic.cli import main
 
 
 def test_fuzzed_boundaries_refuse_with_one_line_errors_and_never_crash() -> None:
-    results = fuzz_all(40, seed=3)
+    results = fuzz_all(20, seed=3)  # the PDDL cases parse with unified-planning: about 1 s each
     assert set(results) == {"pddl_loader", "world_loader", "goal_parser", "kb_api"}
     for name, tally in results.items():
-        assert tally["cases"] == 40, name
+        assert tally["cases"] == 20, name
         assert tally["crashed"] == 0, (name, tally["first_crash"])
-        assert tally["accepted"] + tally["handled"] == 40, name
+        assert tally["accepted"] + tally["handled"] == 20, name
     assert results["pddl_loader"]["handled"] > 0 and results["pddl_loader"]["accepted"] > 0
 
 
