@@ -121,6 +121,8 @@ class Chunker:
         for percent, phrases in lang.levels.items():
             for phrase in phrases:
                 put(phrase, 7, Chunk("level", phrase, value=percent))
+        for phrase in lang.here:
+            put(phrase, 3, Chunk("me", phrase, role="here"))
         for phrase, kind in lang.pronouns.items():
             put(phrase, 8, Chunk("pronoun", phrase, role=kind))
         put("me", 8, Chunk("me", "me"))

@@ -209,6 +209,8 @@ def _fill(
         and any(a.prep is None and a.chunk.kind == "entity" and names_item(a.chunk) for a in clause.args)
     ):
         return  # "find the cup, it should be in the kitchen": the pronoun is the object just named
+    if chunk.kind == "me" and chunk.role == "here" and filling.prep is None:
+        filling.prep = Chunk("prep", "to", role="goal")  # "bring it here": to me
     quantity = filling.quantity.role if filling.quantity is not None and chunk.kind == "entity" else None
     if quantity is None and chunk.kind == "entity" and chunk.role == "plural":
         quantity = "all"  # "turn on the lamps": every lamp

@@ -86,6 +86,7 @@ class CommandLanguage:
     quantifiers: dict[str, tuple[str, ...]] = field(default_factory=dict)
     everything: tuple[str, ...] = ()
     there: tuple[str, ...] = ()
+    here: tuple[str, ...] = ()
     containment: tuple[str, ...] = ()
     anywhere: tuple[str, ...] = ()
     bare_request: str | None = None
@@ -222,6 +223,7 @@ def load_language(path: str | Path = DEFAULT_PATH) -> CommandLanguage:
         quantifiers=tables["quantifiers"],
         everything=_phrases(data, "everything", source),
         there=_phrases(data, "there", source),
+        here=_phrases(data, "here", source),
         containment=_phrases(data, "containment", source),
         anywhere=_phrases(data, "anywhere", source),
         bare_request=bare,

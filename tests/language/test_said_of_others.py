@@ -94,3 +94,25 @@ def test_a_device_is_also_called_by_its_type_in_its_room() -> None:
         assert [str(g) for g in result.goals] == ["(light_on reading_lamp)"]
     result = understand("turn on the light in the hall", vocabulary, speaker=speaker or "walter")
     assert not result.accepted and "no light in the hall" in result.reason
+
+
+@pytest.mark.parametrize("text", ["come here", "could you come over here please"])
+def test_here_is_where_the_speaker_is(vocabulary: Vocabulary, text: str) -> None:
+    result = understand(text, vocabulary)
+    assert not result.accepted and result.question == "Where are you: in which room?"
+
+
+@pytest.mark.parametrize(
+    ("text", "goals"),
+    [
+        ("the remote, can you bring it over here", ["(has annie remote)"]),
+        ("my glasses, where are they", ["(reported glasses)"]),
+        ("tracy is in the kitchen, could you check on her", ["(reported tracy)"]),
+    ],
+)
+def test_what_is_said_first_is_what_they_and_it_mean(
+    vocabulary: Vocabulary, text: str, goals: list[str]
+) -> None:
+    result = understand(text, vocabulary)
+    assert result.accepted, result.reason
+    assert [str(g) for g in result.goals] == goals
