@@ -22,6 +22,7 @@ CKUs carrying their octomaps, and the KP' that need places learn them from those
 
 from __future__ import annotations
 
+import math
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Protocol
@@ -219,7 +220,14 @@ def build_pipeline(
     kp_primes: list[Component] = [
         RobotAtKP(bus, kb),  # its hysteresis is a margin at the room boundary (see the class)
         ObjectPlaceKP(bus, kb, needed=opts.needed, resolution=resolution),
-        PersonPlaceKP(bus, kb, ttl_s=the_role.person_ttl_s, needed=opts.needed, resolution=resolution),
+        PersonPlaceKP(
+            bus,
+            kb,
+            ttl_s=the_role.person_ttl_s,
+            needed=opts.needed,
+            resolution=resolution,
+            stale_s=opts.tracking.person_stale_s if opts.tracking.person_stale_s is not None else math.inf,
+        ),
         PersonNearKP(bus, kb, needed=opts.needed),
         SoundAtKP(bus, kb),
         DeviceStateKP(bus, kb),

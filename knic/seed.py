@@ -91,6 +91,16 @@ def seed_kb_from_world(
                 {
                     "region": [list(p) for p in room.polygon],
                     "waypoints": [list(room.waypoint)],
+                    # the openings in its walls: centre, clear width and the room beyond (None: outside)
+                    "doors": [
+                        {
+                            "position": list(door.position),
+                            "width": door.width,
+                            "to": next((r for r in door.rooms if r != room.name), None),
+                        }
+                        for door in world.doors
+                        if room.name in door.rooms
+                    ],
                     "frame": "world",
                 },
             )

@@ -42,10 +42,16 @@ class PersonPlaceKP(_EntityPlaceKP):
             near side, so someone stopping in a doorway looks up to a body radius inside the robot's room.
         walk_on_s: a person last seen walking and not seen for at least ``min_unseen_s`` seconds is
             predicted on along their last velocity for up to this many seconds (0: no prediction); when that
-            walk leads at least ``doorway_m`` into a room next to the believed one (``connected`` in the
-            knowledge base, when it knows the map's doors), they are taken to have walked out of view and
-            out of the room: the belief is retracted (see :meth:`walked_out`).
+            walk leads at least ``doorway_m`` into another room through one of the believed room's doors
+            (the map's doors, from the room's anchor; without them, into a room ``connected`` to it), they
+            are taken to have walked out of view and out of the room: the belief is retracted (see
+            :meth:`walked_out`).
         min_unseen_s: see ``walk_on_s``; longer than the gaps between sightings of a person in view.
+        lost_grace_s: a track KGM-2 dropped when the person had not been seen for ``stale_s`` seconds
+            retracts the belief only this many seconds later, unless the person is seen again meanwhile: a
+            person unseen for a while may have moved a little within the room, so the spot where they were
+            is empty while they are a step away, seen a moment later (0: at once).
+        stale_s: see ``lost_grace_s`` (KGM-2's ``person_stale_s``).
     """
 
     pddl_type = "person"
@@ -72,6 +78,8 @@ class PersonPlaceKP(_EntityPlaceKP):
         doorway_m: float = 0.3,
         walk_on_s: float = 4.0,
         min_unseen_s: float = 1.0,
+        lost_grace_s: float = 3.0,
+        stale_s: float = 10.0,
     ) -> None:
         super().__init__(
             name, frequency, bus, kb, "cognition.person", needed, min_confidence, explored_grace_s, resolution
@@ -80,6 +88,13 @@ class PersonPlaceKP(_EntityPlaceKP):
         self.doorway_m = doorway_m
         self.walk_on_s = walk_on_s
         self.min_unseen_s = min_unseen_s
+        #: metres beyond a door's half width where a walk still goes through it (the centroid's noise)
+        self.door_margin_m = 0.3
+        self._doors: dict[str, list[tuple[tuple[float, float], float, str | None]] | None] = {}
+        self.lost_grace_s = lost_grace_s
+        self.stale_s = stale_s
+        #: person -> the lost CKU of their stale track, awaiting ``lost_grace_s``
+        self._losing: dict[str, CKU] = {}
         self.anonymous_classes = frozenset({"person"})
         self.visitor_prefix = "visitor"
         self.visitor_views = visitor_views
@@ -273,9 +288,10 @@ class PersonPlaceKP(_EntityPlaceKP):
 
         Their last sighting is carried on along their velocity for the time unseen, at most ``walk_on_s``
         seconds: when that point and the point ``doorway_m`` short of it (clearly through, not in a doorway)
-        lie in another room, one next to the believed room when the knowledge base knows which rooms are
-        connected, the person walked on out of view (the camera turned away as they left). A walk that leads
-        into a wall ends outside every room or in a room not connected, and counts for nothing."""
+        lie in another room, and the walk leaves the believed room through one of its doors to that room
+        (within ``door_margin_m`` of the opening), the person walked on out of view (the camera turned away
+        as they left). A walk that leads into a wall counts for nothing. Without a map of the doors, a walk
+        into a room ``connected`` to the believed one counts."""
         seen = self.last_seen.get(symbol)
         trail = self._trail.get(symbol)
         if self.walk_on_s <= 0 or seen is None or not trail or now - seen < self.min_unseen_s:
@@ -293,7 +309,57 @@ class PersonPlaceKP(_EntityPlaceKP):
         back = self.doorway_m / speed
         if self.locations.room_at(px - v[0] * back, py - v[1] * back) != room:
             return False
-        return not self.kb.facts("connected") or bool(self.kb.facts("connected", believed, room))
+        doors = self.doors_of(believed)
+        if doors is None:  # no map of the doors: the rooms must at least be connected
+            return not self.kb.facts("connected") or bool(self.kb.facts("connected", believed, room))
+        # where the walk leaves the believed room must be one of its doors to that room
+        steps = max(1, math.ceil(math.hypot(px - x, py - y) / 0.05))
+        for k in range(1, steps + 1):
+            cx, cy = x + (px - x) * k / steps, y + (py - y) * k / steps
+            if self.locations.room_at(cx, cy) != believed:
+                return any(
+                    to == room and math.dist(at, (cx, cy)) <= 0.5 * width + self.door_margin_m
+                    for at, width, to in doors
+                )
+        return False
+
+    def doors_of(self, room: str) -> list[tuple[tuple[float, float], float, str | None]] | None:
+        """The room's doors from its anchor in the knowledge base (the map the robot was given): (centre,
+        width, the room beyond); None when the anchor names no doors."""
+        found = self._doors.get(room)
+        if found is None and room not in self._doors:
+            geometry = self.kb.anchor(room) or {}
+            raw = geometry.get("doors") if isinstance(geometry, dict) else None
+            if isinstance(raw, list):
+                found = [
+                    ((float(d["position"][0]), float(d["position"][1])), float(d["width"]), d.get("to"))
+                    for d in raw
+                    if isinstance(d, dict)
+                ]
+            self._doors[room] = found
+        return found
+
+    def lost(self, cku: CKU) -> None:
+        """As for every entity, but a stale track's loss (the person unseen for ``stale_s`` before KGM-2
+        dropped it) is held back ``lost_grace_s`` seconds (see :meth:`settle_losses`)."""
+        last = cku.attributes.get("last_seen")
+        stale = isinstance(last, int | float) and cku.stamp - float(last) >= self.stale_s
+        if self.lost_grace_s <= 0 or not stale:
+            self._losing.pop(cku.symbol, None)
+            super().lost(cku)
+            return
+        self.tracked.discard(cku.symbol)
+        self._losing[cku.symbol] = cku
+
+    def settle_losses(self, now: float) -> None:
+        """The stale losses held back: cancelled by a sighting of the person since, carried out (the
+        belief retracted as for any lost track) once ``lost_grace_s`` passed."""
+        for symbol, cku in list(self._losing.items()):
+            if self.last_seen.get(symbol, -math.inf) > cku.stamp:
+                del self._losing[symbol]
+            elif now - cku.stamp >= self.lost_grace_s:
+                del self._losing[symbol]
+                super().lost(replace(cku, stamp=now))
 
     def left_belief(self, symbol: str, believed: str, room: str | None) -> bool:
         """A person whose track was last seen outside the believed room, after the belief was made, and is
@@ -327,11 +393,12 @@ class PersonPlaceKP(_EntityPlaceKP):
         return min(self.max_ttl_s, max(self.ttl_s, self.dwell_share * dwell))
 
     def step(self, now: float) -> None:
-        """Process sightings and explored rooms, bind a visitor met again (:meth:`rebind_pending`), retract
-        the place of a person who walked on out of view and out of the room (:meth:`walked_out`), then age
-        the beliefs of people unseen for their TTL."""
+        """Process sightings and explored rooms, bind a visitor met again (:meth:`rebind_pending`), settle
+        the stale losses held back (:meth:`settle_losses`), retract the place of a person who walked on out of
+        view and out of the room (:meth:`walked_out`), then age the beliefs of people unseen for their TTL."""
         super().step(now)
         self.rebind_pending(now)
+        self.settle_losses(now)
         for fact in self.kb.facts("person_at"):
             symbol = fact.args[0]
             prov = self.kb.why(fact)

@@ -3,6 +3,8 @@ little inside the next room; they stay believed where they were until seen clear
 
 from __future__ import annotations
 
+import pytest
+
 from knic.bus import Bus
 from knic.kgm3.people import PersonPlaceKP
 from knic.spatial import LocationModel
@@ -85,17 +87,23 @@ def test_a_person_last_seen_walking_to_the_door_and_unseen_since_has_walked_out_
     assert paper_kb.facts("person_at") == []
 
 
+@pytest.mark.parametrize(
+    ("x0", "y", "step"),
+    [
+        (1.6, 6.0, -0.16),  # west, towards the bedroom's outer wall (nothing beyond)
+        (1.6, 7.5, 0.16),  # east, towards the kitchen wall 1.5 m beside the door: through the wall
+    ],
+)
 def test_a_person_walking_towards_a_wall_is_not_taken_out_of_the_room(
-    paper_kb: KnowledgeBase, paper_locations: LocationModel
+    paper_kb: KnowledgeBase, paper_locations: LocationModel, x0: float, y: float, step: float
 ) -> None:
     bus = Bus()
     publish_place_ckus(bus, paper_locations)
     kp = PersonPlaceKP(bus, paper_kb, needed=2)
     t = 0.0
-    # annie walks west in the bedroom, towards its outer wall (nothing beyond), and is not seen for long after
-    for k in range(10):
+    for k in range(10):  # annie walks at 0.8 m/s, then is not seen for long
         t += 0.2
-        send(bus, cku("annie", Kind.PERSON, (1.6 - 0.16 * k, 6.0, 1.0), t, cls="person"))
+        send(bus, cku("annie", Kind.PERSON, (x0 + step * k, y, 1.0), t, cls="person"))
         kp.step(t)
     assert kp.walking("annie")
     for dt in (1.0, 3.0, 10.0):
