@@ -48,7 +48,6 @@ if TYPE_CHECKING:
     from knic.system import KnicSystem
     from knowledge_base import Change, Fact
 
-LEXICON = Path(__file__).resolve().parents[2] / "worlds" / "erl_home" / "lexicon.yaml"
 #: predicates whose perception changes are printed with the trace
 WATCHED = ("object_at", "object_on", "person_at", "found", "has", "light_on", "light_off", "device_level")
 
@@ -488,12 +487,10 @@ def run_dialogue(system: KnicSystem, listen: Callable[[], str | None], stream: T
 
 
 def world_vocabulary(system: KnicSystem) -> Any:
-    """The spoken names of the run's knowledge base (with the ERL lexicon: "reading glasses" -> glasses)."""
-    from knic.language.vocabulary import Vocabulary
+    """The spoken names of the run's knowledge base, with its world's lexicon (:mod:`knic.system.names`)."""
+    from knic.system.names import run_vocabulary
 
-    return Vocabulary.from_knowledge_base(
-        system.kb, LEXICON if LEXICON.is_file() else None, system.world.device_rooms()
-    )
+    return run_vocabulary(system)
 
 
 def understand_text(vocabulary: Any, text: str, speaker: str) -> Any:

@@ -145,17 +145,15 @@ def _granny_annie(case: dict[str, Any]) -> tuple[Any, dict[str, Any]]:
 def _goal_case(case: dict[str, Any]) -> tuple[Any, dict[str, Any]]:
     from knic.intake import GoalIntake, Outcome
     from knic.kgm2.roles import load_role
-    from knic.language.vocabulary import Vocabulary
     from knic.system import KnicSystem, RunConfig
-    from knic.system.granny_annie import LEXICON
+    from knic.system.names import run_vocabulary
 
     role = load_role(case["role"])
     config = RunConfig(
         world=case["world"], seed=case["seed"], role=case["role"], max_sim_time=case["max_sim_time"]
     )
     with KnicSystem(config) as system:
-        lexicon = LEXICON if case["world"] == "erl_home" else None
-        vocabulary = Vocabulary.from_knowledge_base(system.kb, lexicon, system.world.device_rooms())
+        vocabulary = run_vocabulary(system)
         intake = GoalIntake(system.kb, vocabulary, say=system.context.say, confirm=role.confirm_actions)
         source = "operator" if role.operator_only else "user"
         reply = intake.submit(case["goal"], speaker=case.get("speaker", "annie"), source=source)

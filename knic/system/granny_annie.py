@@ -54,7 +54,6 @@ from worlds.scenario import CALL_TEXT
 if TYPE_CHECKING:
     from knic.system import KnicSystem
 
-LEXICON = Path(__file__).resolve().parents[2] / "worlds" / "erl_home" / "lexicon.yaml"
 #: how the robot reacts to the door bell, per role (roles not listed: ``tell``)
 DOORBELL_REACTION = {
     "companion": "tell",
@@ -106,7 +105,7 @@ class GrannyAnnieFlow(TaskFlow):
         recognise_command: Callable[[str], str] | None = None,
         recognise_answer: Callable[[str], str] | None = None,
     ) -> None:
-        from knic.language.vocabulary import Vocabulary
+        from knic.system.names import run_vocabulary
 
         self.system = system
         self.kb = system.kb
@@ -115,8 +114,7 @@ class GrannyAnnieFlow(TaskFlow):
         self.reaction = DOORBELL_REACTION.get(role, "tell")
         self.max_asks = max_asks
         self.answer_timeout_s = answer_timeout_s
-        lex = lexicon if lexicon is not None else (LEXICON if LEXICON.is_file() else None)
-        vocabulary = Vocabulary.from_knowledge_base(self.kb, lex, system.world.device_rooms())
+        vocabulary = run_vocabulary(system, lexicon)
         self.intake = GoalIntake(
             self.kb,
             vocabulary,

@@ -24,7 +24,6 @@ import time
 from collections.abc import Callable
 from concurrent.futures import Future
 from dataclasses import dataclass
-from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from knic.intake import GoalIntake
@@ -34,7 +33,6 @@ from knic.units import CKU, LLKU
 if TYPE_CHECKING:
     from knic.system import KnicSystem
 
-LEXICON = Path(__file__).resolve().parents[2] / "worlds" / "erl_home" / "lexicon.yaml"
 #: most voxels drawn per track, most messages shown per topic, most topics
 MAX_VOXELS, MAX_MESSAGES, MAX_TOPICS = 600, 5, 300
 
@@ -72,15 +70,13 @@ class LiveLink:
         speaker: str = "annie",
         snapshot_hz: float = 5.0,
     ) -> None:
-        from knic.language.vocabulary import Vocabulary
+        from knic.system.names import run_vocabulary
 
         self.system = system
         self.pace = pace
         self.speaker = speaker
         self.snapshot_period = 1.0 / snapshot_hz
-        self.vocabulary = Vocabulary.from_knowledge_base(
-            system.kb, LEXICON if LEXICON.is_file() else None, system.world.device_rooms()
-        )
+        self.vocabulary = run_vocabulary(system)
         self.intake = GoalIntake(
             system.kb,
             self.vocabulary,

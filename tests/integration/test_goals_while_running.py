@@ -5,9 +5,8 @@ from __future__ import annotations
 import logging
 
 from knic.intake import GoalIntake, Outcome
-from knic.language.vocabulary import Vocabulary
 from knic.system import KnicSystem, RunConfig
-from knic.system.granny_annie import LEXICON
+from knic.system.names import run_vocabulary
 from knic.system.timed import TimedGoals
 from planner.trace import EventKind
 
@@ -16,9 +15,7 @@ logging.getLogger("knic.scheduler").setLevel(logging.ERROR)
 
 def test_a_goal_given_while_the_robot_searches_joins_the_plan() -> None:
     with KnicSystem(RunConfig(seed=0, max_sim_time=200.0)) as system:
-        intake = GoalIntake(
-            system.kb, Vocabulary.from_knowledge_base(system.kb, LEXICON), say=system.context.say
-        )
+        intake = GoalIntake(system.kb, run_vocabulary(system), say=system.context.say)
         assert intake.submit("locate the tablet").outcome == Outcome.ADDED
         system.add_flow(TimedGoals(system, intake, [(25.0, "switch on the hallway light")]))
         result = system.run()

@@ -7,9 +7,9 @@ from __future__ import annotations
 import logging
 
 from knic.intake import GoalIntake, Outcome
-from knic.language.vocabulary import Vocabulary
 from knic.system import KnicSystem, RunConfig
-from knic.system.granny_annie import LEXICON, granny_annie_system, understood_right
+from knic.system.granny_annie import granny_annie_system, understood_right
+from knic.system.names import run_vocabulary
 from planner.trace import EventKind
 
 logging.getLogger("knic.scheduler").setLevel(logging.ERROR)
@@ -45,9 +45,7 @@ def test_call_come_spoken_request_confirmation_actions_report() -> None:
 def test_the_rulebook_chain_keeps_the_source_and_succeeds() -> None:
     text = "Locate Tracy, lead her to the bedroom, and bring me an apple from the kitchen cabinet"
     with KnicSystem(RunConfig(seed=0, max_sim_time=300.0)) as system:
-        intake = GoalIntake(
-            system.kb, Vocabulary.from_knowledge_base(system.kb, LEXICON), say=system.context.say
-        )
+        intake = GoalIntake(system.kb, run_vocabulary(system), say=system.context.say)
         reply = intake.submit(text)
         assert reply.outcome == Outcome.ADDED
         assert "(taken_from apple kitchen_cabinet)" in reply.goals

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import pytest
 
 from knic.language import understand
@@ -116,3 +118,13 @@ def test_what_is_said_first_is_what_they_and_it_mean(
     result = understand(text, vocabulary)
     assert result.accepted, result.reason
     assert [str(g) for g in result.goals] == goals
+
+
+def test_a_world_is_read_with_the_lexicon_beside_it(tmp_path: Path) -> None:
+    from knic.system.names import ERL_LEXICON, world_lexicon
+
+    world = tmp_path / "flat.yaml"
+    world.write_text("name: flat\n", encoding="utf-8")
+    assert world_lexicon(world) == ERL_LEXICON  # none of its own: the ERL apartment's
+    (tmp_path / "lexicon.yaml").write_text("names: {}\n", encoding="utf-8")
+    assert world_lexicon(world) == tmp_path / "lexicon.yaml"
