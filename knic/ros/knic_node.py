@@ -28,7 +28,6 @@ from __future__ import annotations
 
 from collections import deque
 from collections.abc import Callable
-from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -57,7 +56,6 @@ if TYPE_CHECKING:
     from planner.trace import Trace, TraceEvent
     from worlds.model import World
 
-LEXICON = Path(__file__).resolve().parents[2] / "worlds" / "erl_home" / "lexicon.yaml"
 
 #: kb request op -> the keys it needs
 KB_OPS: dict[str, tuple[str, ...]] = {
@@ -153,7 +151,7 @@ class KnicNode:
         self.link, self.kb, self.trace, self.robot, self.world = link, kb, trace, robot, world
         self.cognition = cognition
         self.snapshot_period = snapshot_period
-        self.intake = intake or _intake(kb, robot, confirm)
+        self.intake = intake or _intake(kb, robot, world, confirm)
         from rclpy.parameter import Parameter
 
         # the node's clock follows /clock (simulated time); stamps come from the robot's time base anyway
@@ -418,11 +416,12 @@ def _parse_fact(text: Any) -> Fact:
     return facts[0]
 
 
-def _intake(kb: KnowledgeBase, robot: Robot, confirm: bool) -> GoalIntake:
+def _intake(kb: KnowledgeBase, robot: Robot, world: World, confirm: bool) -> GoalIntake:
     from knic.intake import GoalIntake
     from knic.language.vocabulary import Vocabulary
+    from knic.system.names import world_lexicon
 
-    vocabulary = Vocabulary.from_knowledge_base(kb, LEXICON if LEXICON.is_file() else None)
+    vocabulary = Vocabulary.from_knowledge_base(kb, world_lexicon(world.source), world.device_rooms())
     return GoalIntake(kb, vocabulary, say=robot.say, confirm=confirm)
 
 

@@ -14,10 +14,10 @@ from knic.language.vocabulary import Vocabulary
 from knic.ros import topics as tp
 from knic.ros.convert import MessageError, json_from_ros
 from knic.ros.env import ros_context
-from knic.ros.knic_node import LEXICON
 from knic.ros.questions import QuestionChannel
 from knic.seed import seed_kb_from_world
 from knic.system.assembly import open_kb
+from knic.system.names import ERL_LEXICON
 from tests.ros.conftest import Processes
 from tests.ros.test_split_run import Watcher
 from worlds.api import load_world
@@ -40,7 +40,7 @@ def channel() -> Any:
     kb = open_kb(None, lambda: 0.0)
     seed_kb_from_world(kb, load_world("erl_home"))
     said: list[str] = []
-    intake = GoalIntake(kb, Vocabulary.from_knowledge_base(kb, LEXICON), say=said.append, confirm=True)
+    intake = GoalIntake(kb, Vocabulary.from_knowledge_base(kb, ERL_LEXICON), say=said.append, confirm=True)
     sent = Sent()
     chan = QuestionChannel(
         intake,
