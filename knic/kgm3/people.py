@@ -119,6 +119,9 @@ class PersonPlaceKP(_EntityPlaceKP):
         self.walking_speed = walking_speed
         self.speed_window_s = speed_window_s
         self._trail: dict[str, deque[tuple[float, tuple[float, float, float]]]] = {}
+        #: KGM-2 track id -> the recent sightings of an unnamed person's track, not yet an instance: a visitor
+        #: met again takes their track's trail (they were walking before they were known to be them)
+        self._track_trails: dict[int, deque[tuple[float, tuple[float, float, float]]]] = {}
 
     def instance_of(self, cku: CKU) -> str | None:
         """As for every entity, and: a person met for the first time becomes a visitor.
@@ -136,7 +139,9 @@ class PersonPlaceKP(_EntityPlaceKP):
         found = self.discovered.get(cku.track_id)
         if found is not None or cku.attributes.get("lost"):
             self._unbound.pop(cku.track_id, None)
+            self._track_trails.pop(cku.track_id, None)
             return found
+        self._remember(self._track_trails.setdefault(cku.track_id, deque()), cku)
         views = int(cku.attributes.get("face_views", 0))
         if views < self.rebind_views or self.known_near(cku.position, cku.stamp):
             return None
@@ -215,6 +220,9 @@ class PersonPlaceKP(_EntityPlaceKP):
         self.discovered[track_id] = visitor
         self._unbound.pop(track_id, None)
         self._just_bound.add(track_id)
+        trail = self._track_trails.pop(track_id, None)
+        if trail:
+            self._trail[visitor] = trail
 
     def known_near(self, position: tuple[float, float, float], stamp: float) -> bool:
         """Whether a known (not discovered) person was seen near ``position`` lately."""
@@ -238,10 +246,19 @@ class PersonPlaceKP(_EntityPlaceKP):
             if hits > int(cku.attributes.get("sightings", 1)):
                 cku = replace(cku, attributes={**cku.attributes, "sightings": hits})
         trail = self._trail.setdefault(cku.symbol, deque())
+        if not trail or trail[-1][0] < cku.stamp:
+            self._remember(trail, cku)
+        super().seen(cku)
+
+    def _remember(self, trail: deque[tuple[float, tuple[float, float, float]]], cku: CKU) -> None:
+        """Append the sighting to a trail, keeping the last ``speed_window_s`` seconds (and two sightings);
+        a sighting from before a gap of more than twice that is dropped: the person was out of sight, and the
+        way from there to here says nothing of their walking speed."""
         trail.append((cku.stamp, cku.position))
         while len(trail) > 2 and cku.stamp - trail[1][0] >= self.speed_window_s:
             trail.popleft()
-        super().seen(cku)
+        while len(trail) > 1 and cku.stamp - trail[0][0] > 2.0 * self.speed_window_s:
+            trail.popleft()
 
     def place_of(self, cku: CKU) -> tuple[str | None, str | None]:
         """As for every entity, but the believed room while the seen centroid is within :attr:`doorway_m` of

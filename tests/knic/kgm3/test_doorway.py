@@ -109,3 +109,17 @@ def test_a_person_walking_towards_a_wall_is_not_taken_out_of_the_room(
     for dt in (1.0, 3.0, 10.0):
         kp.step(t + dt)
         assert paper_kb.facts("person_at") == [Fact("person_at", ("annie", "bedroom"))]
+
+
+def test_a_person_seen_again_after_a_gap_is_not_walking_for_the_way_they_went_unseen(
+    paper_kb: KnowledgeBase, paper_locations: LocationModel
+) -> None:
+    bus = Bus()
+    publish_place_ckus(bus, paper_locations)
+    kp = PersonPlaceKP(bus, paper_kb, needed=2)
+    for t, x in ((0.0, 1.0), (0.2, 1.0), (3.5, 3.0), (3.7, 3.0)):  # 2 m further after 3.3 s out of sight
+        send(bus, cku("annie", Kind.PERSON, (x, 6.0, 1.0), t, cls="person"))
+        kp.step(t)
+    assert not kp.walking("annie")
+    kp.step(6.0)
+    assert paper_kb.facts("person_at") == [Fact("person_at", ("annie", "bedroom"))]
