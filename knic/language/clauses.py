@@ -16,6 +16,8 @@ from dataclasses import dataclass, field
 from knic.language.chunks import Chunk
 
 _NOUNS = ("entity", "me", "pronoun", "everything", "there")
+#: words that end a noun phrase the world has no name for ("the front door is open")
+_LINKING = ("is", "are", "was", "were", "be")
 
 
 @dataclass
@@ -41,6 +43,7 @@ class Clause:
     level_in_words: bool = False  # the last level was said in words ("fully"): how far, not where
     missing: list[str] = field(default_factory=list)  # unknown words where a name was expected
     unknown: list[str] = field(default_factory=list)  # other unknown words
+    pending: list[str] = field(default_factory=list)  # unknown words since a noun phrase was expected
     vague: bool = False  # "a bit", "a little": a level meant but not said
     unsaid_goal: bool = False  # "away", "back": a destination meant but not said
 
@@ -245,6 +248,15 @@ def add_to_clause(
         clause.level_in_words = chunk.kind == "level"
     elif chunk.kind == "unknown":
         if expecting and (nxt is None or nxt.kind in ("join", "prep", "verb")):
-            clause.missing.append(chunk.text)
+            # the whole name not known ("the front door is open": 'front door'), not its last word
+            phrase = [*clause.pending, chunk.text]
+            while len(phrase) > 1 and phrase[-1] in _LINKING:
+                phrase.pop()
+            clause.missing.append(" ".join(phrase))
+            clause.pending.clear()
         else:
             clause.unknown.append(chunk.text)
+            if expecting:
+                clause.pending.append(chunk.text)
+    if chunk.kind != "unknown":
+        clause.pending.clear()

@@ -128,3 +128,15 @@ def test_a_world_is_read_with_the_lexicon_beside_it(tmp_path: Path) -> None:
     assert world_lexicon(world) == ERL_LEXICON  # none of its own: the ERL apartment's
     (tmp_path / "lexicon.yaml").write_text("names: {}\n", encoding="utf-8")
     assert world_lexicon(world) == tmp_path / "lexicon.yaml"
+
+
+@pytest.mark.parametrize(
+    ("text", "named"),
+    [
+        ("check whether the front door is open", "'front door'"),
+        ("bring me my fuzzy slippers from the bedroom", "'fuzzy slippers'"),
+    ],
+)
+def test_the_whole_name_the_world_lacks_is_named(vocabulary: Vocabulary, text: str, named: str) -> None:
+    result = understand(text, vocabulary)
+    assert not result.accepted and f"there is no {named} here" in result.reason
