@@ -18,6 +18,8 @@ from planner.dispatch import Dispatcher
 from planner.recovery import GoalRetry, RecoveryPolicy
 from planner.trace import EventKind, Trace
 from tests.planner.doubles import SimClock, StubPlanner, World, erl_kb, scripted_registry
+from worlds.api import load_world
+from worlds.model import World as WorldModel
 
 if TYPE_CHECKING:
     from knic.system import KnicSystem
@@ -63,6 +65,7 @@ class FlowSystem:
     parts: Parts = field(default_factory=lambda: Parts(Silent()))
     context: Voice = field(default_factory=Voice)
     config: Config = field(default_factory=Config)
+    world: WorldModel = field(default_factory=lambda: load_world("erl_home"))  # its lexicon and device rooms
 
 
 def _working_flow() -> tuple[SimClock, FlowSystem, GrannyAnnieFlow]:
