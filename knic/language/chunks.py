@@ -53,7 +53,9 @@ class Chunker:
             words = term.phrase.split()
             if term.type == "level" or term.is_group:
                 continue
-            variants = [term.phrase + "s", term.phrase + "es"] if not term.phrase.endswith("s") else []
+            # plurals of a name, and the singular of a plural name ("a car key" for the car keys)
+            plural = term.phrase.endswith("s") and not term.phrase.endswith("ss")
+            variants = [term.phrase[:-1]] if plural else [term.phrase + "s", term.phrase + "es"]
             if len(words) > 1:
                 variants.append(words[-1])
                 variants += [words[-1] + "s"] if not words[-1].endswith("s") else []

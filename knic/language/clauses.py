@@ -183,8 +183,14 @@ def _fill(
     names_item: Callable[[Chunk], bool] = lambda chunk: False,
 ) -> None:
     """Add one chunk (not a verb) to a clause, updating what is pending for the next chunk."""
-    if chunk.kind == "partitive" and clause.args and nxt is not None and nxt.kind in ("entity", "det"):
-        container = clause.args.pop()  # "a glass of water": the water is meant
+    if (
+        chunk.kind == "partitive"
+        and clause.args
+        and clause.args[-1].chunk.kind == "entity"
+        and nxt is not None
+        and nxt.kind in ("entity", "det")
+    ):
+        container = clause.args.pop()  # "a glass of water": the water is meant (not "me" in "hand me a ...")
         filling.prep = Chunk("prep", container.prep_text, role=container.prep) if container.prep else None
         filling.joined = container.joined
         return

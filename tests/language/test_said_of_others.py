@@ -86,3 +86,13 @@ def test_a_world_is_read_with_the_lexicon_beside_it(tmp_path: Path) -> None:
     assert world_lexicon(world) == ERL_LEXICON  # none of its own: the ERL apartment's
     (tmp_path / "lexicon.yaml").write_text("names: {}\n", encoding="utf-8")
     assert world_lexicon(world) == tmp_path / "lexicon.yaml"
+
+
+def test_a_plural_name_is_also_said_in_the_singular() -> None:
+    from knic.cli.goal import world_vocabulary
+    from knic.language.world import DEFAULT_DOMAIN
+
+    vocabulary, _ = world_vocabulary("worlds/test_bungalow/test_bungalow.yaml", DEFAULT_DOMAIN, None)
+    result = understand("could you bring me the car key", vocabulary, speaker="walter")
+    assert result.accepted, result.reason
+    assert [str(g) for g in result.goals] == ["(has walter car_keys)"]
