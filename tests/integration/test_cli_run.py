@@ -39,13 +39,13 @@ def test_text_goal_bring_me_my_glasses(tmp_path: Path, capsys: pytest.CaptureFix
     assert journal.stat().st_size > 0
 
 
-def test_speech_goal_find_my_reading_glasses(capsys: pytest.CaptureFixture[str]) -> None:
-    wav = SPEECH / "cmd_001.wav"  # "find my reading glasses"
+def test_speech_goal_look_for_my_glasses(capsys: pytest.CaptureFixture[str]) -> None:
+    wav = SPEECH.parent / "speech_dev" / "dev_002.wav"  # "look for my glasses" (a development utterance)
     code = main(["run", "--world", "erl_home_paper", "--speech", str(wav), "--max-sim-time", "200", "--json"])
     summary = json.loads(capsys.readouterr().out)
     assert code == 0, summary
     assert summary["goals"] == ["(reported glasses)"]
-    assert summary["commands"][0]["text"] == "find my reading glasses"
+    assert summary["commands"][0]["text"] == "look for my glasses"
 
 
 def test_unknown_goal_is_refused_with_one_line(capsys: pytest.CaptureFixture[str]) -> None:

@@ -17,8 +17,15 @@ from pathlib import Path
 
 from core.errors import LanguageError
 
-#: The espeak-ng adaptation (``means``, ``variances``, ``sendump``, ``manifest.json``) built by :mod:`.build`.
+#: The espeak-ng adaptation (``means``, ``variances``, ``sendump``, ``manifest.json``) built by :mod:`.build`
+#: from 480 sentences in 16 voices: the grammar decoder and the answer recogniser use it.
 MODEL_DIR = Path(__file__).resolve().parent / "espeak"
+#: The sub-folder of an adaptation that the n-gram decoder uses instead when it is there. ``espeak/ngram``:
+#: the adaptation built from 3000 sentences in 214 voices (``build --sentences 3000``), which raised the
+#: n-gram decoder's dev frame+args from 0.825 to 0.871 but broke the grammar decoder with its settings (most
+#: commands refused: speech_dev frame+args 0.89 -> 0.38) and the answer recogniser ("no" heard as "uh no uh
+#: huh"), so those keep the first adaptation.
+NGRAM_SUBFOLDER = "ngram"
 #: Named acoustic models: a folder of adapted files, or None for the wheel's model unchanged.
 ACOUSTIC_MODELS: dict[str, Path | None] = {"espeak": MODEL_DIR, "base": None}
 #: The model the recogniser loads unless told otherwise.
@@ -34,8 +41,9 @@ def wheel_model_dir() -> Path:
     return Path(pocketsphinx.__file__).resolve().parent / "model" / "en-us"
 
 
-def acoustic_model_options(model: str | Path) -> dict[str, object]:
-    """pocketsphinx options that load an acoustic model: a name of :data:`ACOUSTIC_MODELS` or a folder.
+def acoustic_model_options(model: str | Path, *, decoder: str = "grammar") -> dict[str, object]:
+    """pocketsphinx options that load an acoustic model: a name of :data:`ACOUSTIC_MODELS` or a folder; for
+    ``decoder="ngram"`` its :data:`NGRAM_SUBFOLDER` when that holds an adaptation.
 
     Raises:
         LanguageError: the name is unknown, or the folder lacks one of the adapted files.
@@ -49,6 +57,8 @@ def acoustic_model_options(model: str | Path) -> dict[str, object]:
         raise LanguageError(f"unknown acoustic model {model!r}: expected one of {names} or a folder")
     if folder is None:
         return {}
+    if decoder == "ngram" and all((folder / NGRAM_SUBFOLDER / name).is_file() for name in ADAPTED_FILES):
+        folder = folder / NGRAM_SUBFOLDER
     missing = [name for name in ADAPTED_FILES if not (folder / name).is_file()]
     if missing:
         raise LanguageError(f"acoustic model folder {folder}: missing {', '.join(missing)}")

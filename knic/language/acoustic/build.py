@@ -9,17 +9,22 @@ Run from the repository root; needs ``espeak-ng`` and ``sox`` (synthesis) and De
 
 What it does:
 
-1. Samples ``--sentences`` commands from the command grammar (random walks over the recogniser's word graph,
-   fixed seed), leaving out every sentence of the test set (``tests/fixtures/speech``), the development set
-   (``tests/fixtures/speech_dev``) and any ``--exclude`` gold file, and speaks each with one of
-   :data:`VOICES` -- espeak-ng voices none of which is a voice of either set -- at a speed between 130 and
-   175 words per minute. With ``--corpus DIR`` it uses recordings instead (a ``gold.json`` in the test set's
-   layout: ``file`` and ``text`` of each utterance), e.g. of the people a robot serves.
+1. Samples ``--sentences`` commands from the command templates (:mod:`knic.language.sampling`, the source
+   of the n-gram model, with another seed), leaving out every sentence of the spoken test and development
+   sets and of the text sets (:data:`HELD_OUT_SETS`, :data:`TEXT_SETS`) and of any ``--exclude`` gold file,
+   and speaks each in a voice drawn from :data:`VOICES` -- every espeak-ng English accent with every variant
+   of :data:`VARIANTS`, less the voices of the test and development sets (:data:`HELD_OUT_VOICES`) -- at a
+   speed and pitch drawn from :data:`SPEEDS` and :data:`PITCHES` (``--jobs`` at a time). With ``--corpus
+   DIR`` it uses recordings instead (a ``gold.json`` in the test set's layout: ``file`` and ``text`` of each
+   utterance), e.g. of the people a robot serves.
 2. Extracts features with the model's own ``feat.params`` (``sphinx_fe``), counts state occupancies with
-   Baum-Welch (``bw``) against the wheel's US English model, and estimates a MAP update of the Gaussian means,
-   variances and mixture weights (``map_adapt``; the wheel ships only the quantised ``sendump``, so the
-   mixture weights are first expanded from it, see :func:`sendump_to_mixw`).
-3. Writes the adapted ``means``, ``variances`` and ``sendump`` into :data:`~knic.language.acoustic.MODEL_DIR`
+   Baum-Welch (``bw``, ``--jobs`` processes on shares of the corpus) against the wheel's US English model,
+   and estimates a MAP update of the Gaussian means, variances and mixture weights (``map_adapt``; the wheel
+   ships only the quantised ``sendump``, so the mixture weights are first expanded from it, see
+   :func:`sendump_to_mixw`); ``--iterations`` rounds, each counting under the previous round's model (the
+   first round aligns fewer utterances: the wheel's model fails on many espeak-ng variants).
+3. Writes the adapted ``means``, ``variances`` and ``sendump`` into ``--out`` (default the n-gram decoder's
+   ``espeak/ngram``; the grammar decoder's ``espeak`` itself was built by the 480-sentence version of 27 Nov)
    with a ``manifest.json`` of what was used. The mdef, transition matrices and dictionary stay the wheel's.
 """
 
@@ -32,72 +37,163 @@ import shutil
 import struct
 import subprocess
 import tempfile
+from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
 import numpy as np
 
-from knic.language.acoustic import MODEL_DIR, wheel_model_dir
+from knic.language.acoustic import MODEL_DIR, NGRAM_SUBFOLDER, wheel_model_dir
 
 ROOT = Path(__file__).resolve().parents[3]
-TEST_SET = ROOT / "tests" / "fixtures" / "speech" / "gold.json"
-DEV_SET = ROOT / "tests" / "fixtures" / "speech_dev" / "gold.json"
-
-#: espeak-ng voices for adaptation: none is a voice (base and variant together) of the test or dev set.
-VOICES = [
-    "en-gb-x-gbcwmd",
-    "en-us+m2",
-    "en-us+m6",
-    "en-us+f1",
-    "en-us+f5",
-    "en-gb+f2",
-    "en-gb+m1",
-    "en-gb+m7",
-    "en-gb-x-rp+f5",
-    "en-gb-scotland+m3",
-    "en-us+Annie",
-    "en-gb+grandma",
-    "en-us+grandpa",
-    "en-029+f3",
-    "en-gb-x-gbclan+m6",
-    "en-us-nyc+f2",
+FIXTURES = ROOT / "tests" / "fixtures"
+#: The spoken test and development sets: their sentences are kept out of the adaptation corpus.
+HELD_OUT_SETS = [
+    FIXTURES / name / "gold.json"
+    for name in (
+        "speech",
+        "speech_people/test",
+        "speech_dev",
+        "speech_people/dev",
+        "speech_voices_dev",
+        "speech_ood_dev",
+    )
 ]
+#: The text test and development sets (people's phrasings), kept out likewise.
+TEXT_SETS = [FIXTURES / "language" / "test.yaml", FIXTURES / "language" / "dev.yaml"]
+
+#: espeak-ng voices (base language and variant) of the test and development sets: never used for adaptation.
+HELD_OUT_VOICES = frozenset(
+    {
+        # test sets (tests/fixtures/speech, speech_people/test)
+        "en-us+m5",
+        "en-gb-x-rp+f4",
+        "en-us+m1",
+        # development sets (speech_people/dev, speech_ood_dev, speech_dev, speech_voices_dev)
+        "en-us+m4",
+        "en-gb+f3",
+        "en-us+f4",
+        "en-029",
+        "en-gb+f1",
+        "en-gb+f4",
+        "en-gb+m2",
+        "en-gb-scotland",
+        "en-gb-x-gbclan",
+        "en-us-nyc",
+        "en-029+m7",
+        "en-gb-scotland+m3",
+        "en-gb-x-gbclan+f1",
+        "en-us-nyc+f2",
+    }
+)
+#: espeak-ng's English accents.
+BASES = [
+    "en-us",
+    "en-gb",
+    "en-gb-x-rp",
+    "en-gb-scotland",
+    "en-gb-x-gbclan",
+    "en-gb-x-gbcwmd",
+    "en-029",
+    "en-us-nyc",
+]
+#: espeak-ng voice variants (pitch, formants, breath). The variants of the test set's voices (m1, m5, f4) and
+#: of the people development set's (m4, f3) are left out with every accent, so both sets' voices stay unheard.
+VARIANTS = [
+    "",
+    "m2",
+    "m3",
+    "m6",
+    "m7",
+    "m8",
+    "f1",
+    "f2",
+    "f5",
+    "Annie",
+    "grandma",
+    "grandpa",
+    "aunty",
+    "belinda",
+    "benjamin",
+    "edward",
+    "linda",
+    "steph",
+    "john",
+    "max",
+    "quincy",
+    "travis",
+    "victor",
+    "zac",
+    "michael",
+    "paul",
+    "robert",
+    "david",
+]
+#: espeak-ng voices for adaptation: every accent with every variant, less the held-out voices.
+VOICES = [
+    f"{base}+{variant}" if variant else base
+    for variant in VARIANTS
+    for base in BASES
+    if (f"{base}+{variant}" if variant else base) not in HELD_OUT_VOICES
+]
+#: Speaking rates (words per minute) and pitch settings (espeak-ng ``-p``, 50 the voice's own) drawn
+#: uniformly for each sentence.
+SPEEDS = (120, 185)
+PITCHES = (25, 75)
 #: sox effects trimming silence (below 0.5 % of full scale) from the start, then (reversed) from the end.
 TRIM_BOTH_ENDS = ["silence", "1", "0.02", "0.5%", "reverse", "silence", "1", "0.02", "0.5%", "reverse"]
 
 
 def sample_sentences(count: int, exclude: set[str], seed: int = 7) -> list[str]:
-    """``count`` distinct commands from random walks over the command word graph (no filler loop)."""
-    from knic.language.fsg import compile_word_graph
-    from knic.language.understanding import default_grammar, understand
+    """``count`` distinct commands sampled from the command templates (:mod:`knic.language.sampling`, with a
+    seed other than the n-gram model's), none of them in ``exclude`` and none with a word the pronunciation
+    dictionary lacks."""
+    from knic.language.commands import command_language
+    from knic.language.sampling import sample_sentences as sample_templates
     from knic.language.world import load_world
 
     _, vocabulary = load_world()
-    graph = compile_word_graph(default_grammar(), vocabulary)
-    moves: dict[int, list[tuple[int, str]]] = {}
-    for src, dst, _, word in graph.transitions:
-        moves.setdefault(src, []).append((dst, word))
-    rng = random.Random(seed)
+    known = {
+        line.split(maxsplit=1)[0].split("(")[0]
+        for line in (wheel_model_dir() / "cmudict-en-us.dict").read_text(errors="replace").splitlines()
+        if line.strip()
+    }
+    unknown = frozenset(w for w in vocabulary.words() | command_language().words() if w not in known)
     sentences: list[str] = []
     seen = set(exclude)
-    while len(sentences) < count:
-        state, words = graph.start, list[str]()
-        while state != graph.final and state in moves and len(words) < 16:
-            state, word = rng.choice(moves[state])
-            words.append(word)
-        text = " ".join(words)
-        if state != graph.final or text in seen or not understand(text, vocabulary).accepted:
+    for sample in sample_templates(vocabulary, count * 3, seed=seed, exclude_words=unknown, frames=False):
+        if sample.text in seen or not set(sample.text.split()) <= known:
             continue
-        seen.add(text)
-        sentences.append(text)
+        seen.add(sample.text)
+        sentences.append(sample.text)
+        if len(sentences) == count:
+            break
     return sentences
 
 
-def synthesize(text: str, voice: str, speed: int, target: Path) -> None:
+def held_out_sentences() -> set[str]:
+    """The normalised sentences of every test and development set (speech and text): kept out."""
+    import yaml
+
+    from knic.language.vocabulary import normalize
+
+    texts: set[str] = set()
+    for gold in HELD_OUT_SETS:
+        if gold.exists():
+            texts |= {u["text"] for u in json.loads(gold.read_text(encoding="utf-8"))["utterances"]}
+    for cases in TEXT_SETS:
+        if cases.exists():
+            texts |= {str(c["text"]) for c in yaml.safe_load(cases.read_text(encoding="utf-8"))["cases"]}
+    return {normalize(t) for t in texts}
+
+
+def synthesize(text: str, voice: str, speed: int, target: Path, pitch: int = 50) -> None:
     """espeak-ng to a temporary WAV, then sox to 16 kHz mono 16-bit with silence trimmed at both ends (no
-    random dither, so the same espeak-ng version gives the same file)."""
+    random dither, so the same espeak-ng version gives the same file). ``pitch``: espeak-ng's ``-p`` (50: the
+    voice's own)."""
     with tempfile.TemporaryDirectory() as tmp:
         raw = Path(tmp) / "raw.wav"
-        subprocess.run(["espeak-ng", "-v", voice, "-s", str(speed), "-w", str(raw), text], check=True)
+        espeak = ["espeak-ng", "-v", voice, "-s", str(speed), "-p", str(pitch), "-w", str(raw), text]
+        subprocess.run(espeak, check=True)
         output = ["-r", "16000", "-c", "1", "-b", "16", str(target)]
         subprocess.run(["sox", "-R", str(raw), *output, *TRIM_BOTH_ENDS], check=True)
 
@@ -177,16 +273,24 @@ def model_flags(files: dict[str, Path], prefix: str = "") -> list[str]:
 
 
 def adapt_once(
-    work: Path, model: dict[str, Path], target: Path, dictionary: Path, tau: float, log: Path
+    work: Path,
+    model: dict[str, Path],
+    target: Path,
+    dictionary: Path,
+    tau: float,
+    log: Path,
+    parts: int = 1,
 ) -> tuple[dict[str, Path], int]:
-    """One round: Baum-Welch counts of the corpus under ``model``, then a MAP update written to ``target``.
+    """One round: Baum-Welch counts of the corpus under ``model`` (in ``parts`` parallel processes, each on
+    its share of the utterances), then a MAP update written to ``target``.
 
     Returns:
         (the updated model's files, the number of utterances Baum-Welch could align).
     """
-    acc = work / "acc"
-    shutil.rmtree(acc, ignore_errors=True)
-    acc.mkdir()
+    accs = [work / f"acc{part}" for part in range(1, parts + 1)]
+    for acc in accs:
+        shutil.rmtree(acc, ignore_errors=True)
+        acc.mkdir()
     common = ["-moddeffn", str(work / "mdef.txt"), "-ts2cbfn", ".ptm.", *model_flags(model)]
     features = ["-feat", "1s_c_d_dd", "-svspec", "0-12/13-25/26-38", "-cmn", "batch", "-agc", "none"]
     lexicon = [
@@ -203,9 +307,23 @@ def adapt_once(
         "-cepdir",
         str(work / "mfc"),
     ]
-    before = log.read_text().count(" ignored") if log.exists() else 0
-    run([str(SPHINXTRAIN / "bw"), *common, *features, *lexicon, *corpus, "-accumdir", str(acc)], log)
-    skipped = log.read_text().count(" ignored") - before
+    bw = [str(SPHINXTRAIN / "bw"), *common, *features, *lexicon, *corpus]
+    logs = [work / f"bw{part}.log" for part in range(1, parts + 1)]
+    for part_log in logs:
+        part_log.write_text("")
+    with ThreadPoolExecutor(max_workers=parts) as pool:
+        done = [
+            pool.submit(run, [*bw, "-npart", str(parts), "-part", str(part), "-accumdir", str(acc)], part_log)
+            for part, (acc, part_log) in enumerate(zip(accs, logs, strict=True), start=1)
+        ]
+        for future in done:
+            future.result()
+    skipped = 0
+    with log.open("a") as handle:
+        for part_log in logs:
+            text = part_log.read_text()
+            skipped += text.count(" ignored")
+            handle.write(text)
     target.mkdir(parents=True, exist_ok=True)
     updated = {name: target / name for name in MODEL_FILES}
     tau_flags = ["-fixedtau", "yes", "-tau", str(tau)] if tau > 0 else []
@@ -214,7 +332,7 @@ def adapt_once(
             str(SPHINXTRAIN / "map_adapt"),
             *common,
             "-accumdir",
-            str(acc),
+            ",".join(map(str, accs)),  # a list option: comma-separated
             *model_flags(updated, "map"),
             *tau_flags,
         ],
@@ -226,13 +344,14 @@ def adapt_once(
 
 def main(argv: list[str] | None = None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--sentences", type=int, default=480)
+    parser.add_argument("--sentences", type=int, default=3000)
     parser.add_argument("--workdir", default="", help="keep the corpus and accumulators here")
     parser.add_argument("--exclude", action="append", default=[], help="another gold.json to keep out")
     parser.add_argument("--tau", type=float, default=0.0, help="MAP prior weight (0: map_adapt's default)")
     parser.add_argument("--corpus", default="", help="adapt to these recordings (folder with gold.json)")
     parser.add_argument("--iterations", type=int, default=2, help="Baum-Welch + MAP rounds (3 overfits)")
-    parser.add_argument("--out", default=str(MODEL_DIR))
+    parser.add_argument("--out", default=str(MODEL_DIR / NGRAM_SUBFOLDER))
+    parser.add_argument("--jobs", type=int, default=2, help="parallel synthesis and Baum-Welch processes")
     args = parser.parse_args(argv)
     work = Path(args.workdir or tempfile.mkdtemp(prefix="knic-adapt-"))
     (work / "wav").mkdir(parents=True, exist_ok=True)
@@ -252,18 +371,21 @@ def main(argv: list[str] | None = None) -> int:
             ids.append(name)
         voices: list[str] = [f"recordings in {corpus}"]
     else:
-        exclude: set[str] = set()
-        for gold in [TEST_SET, DEV_SET, *map(Path, args.exclude)]:
-            if gold.exists():
-                exclude |= {u["text"] for u in json.loads(gold.read_text(encoding="utf-8"))["utterances"]}
+        exclude = held_out_sentences()
+        for gold in map(Path, args.exclude):
+            exclude |= {u["text"] for u in json.loads(gold.read_text(encoding="utf-8"))["utterances"]}
         sentences = sample_sentences(args.sentences, exclude)
         rng = random.Random(11)
+        jobs: list[tuple[str, str, int, Path, int]] = []
         for index, text in enumerate(sentences):
             name = f"adapt_{index:04d}"
             target = work / "wav" / f"{name}.wav"
+            voice, speed, pitch = rng.choice(VOICES), rng.randint(*SPEEDS), rng.randint(*PITCHES)
             if not target.exists():
-                synthesize(text, VOICES[index % len(VOICES)], rng.randint(130, 175), target)
+                jobs.append((text, voice, speed, target, pitch))
             ids.append(name)
+        with ThreadPoolExecutor(max_workers=args.jobs) as pool:
+            list(pool.map(lambda job: synthesize(*job), jobs))
         voices = VOICES
     (work / "fileids").write_text("".join(f"{i}\n" for i in ids))
     (work / "transcription").write_text(
@@ -304,7 +426,7 @@ def main(argv: list[str] | None = None) -> int:
     sendump_to_mixw(hmm / "sendump", current["mixture_weights"])
     aligned: list[int] = []
     for iteration in range(1, args.iterations + 1):
-        current, count = adapt_once(work, current, work / f"map{iteration}", model, args.tau, log)
+        current, count = adapt_once(work, current, work / f"map{iteration}", model, args.tau, log, args.jobs)
         aligned.append(count)
     run(
         [
@@ -330,7 +452,10 @@ def main(argv: list[str] | None = None) -> int:
         "sentences": len(sentences),
         "voices": voices,
         "tau": args.tau or "map_adapt default",
-        "excluded_gold_files": [str(p.relative_to(ROOT)) for p in (TEST_SET, DEV_SET)] + args.exclude,
+        "excluded_sentences": [str(p.relative_to(ROOT)) for p in (*HELD_OUT_SETS, *TEXT_SETS)] + args.exclude,
+        "held_out_voices": sorted(HELD_OUT_VOICES),
+        "speeds_wpm": list(SPEEDS),
+        "pitches": list(PITCHES),
         "iterations": args.iterations,
         "aligned_utterances_per_iteration": aligned,
     }
