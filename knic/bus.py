@@ -34,6 +34,10 @@ from core.errors import InferenceError
 
 _LEVEL = re.compile(r"^[a-z0-9_]+$")
 
+#: sets the ``__dict__`` of a frozen dataclass instance (its own ``__setattr__`` refuses)
+_set_dict = object.__setattr__
+_new_object = object.__new__
+
 
 @dataclass(frozen=True, init=False)
 class Message:
@@ -55,8 +59,12 @@ class Message:
 
     def __init__(self, topic: str, payload: Any, source: str, stamp: float, seq: int) -> None:
         # the dataclass's own __init__ without its per-field frozen ``object.__setattr__`` calls (one
-        # message per unit published)
-        self.__dict__.update(topic=topic, payload=payload, source=source, stamp=stamp, seq=seq)
+        # message per unit published): the instance's attributes given as one dict
+        _set_dict(
+            self,
+            "__dict__",
+            {"topic": topic, "payload": payload, "source": source, "stamp": stamp, "seq": seq},
+        )
 
 
 def check_topic(topic: str) -> tuple[str, ...]:
@@ -150,7 +158,9 @@ class Bus:
 
     def __init__(self, history: int = 20) -> None:
         self._subs: list[Subscription] = []
-        self._route_cache: dict[str, list[Subscription]] = {}
+        #: topic -> the subscriptions matching it, as a tuple: never changed in place (a subscription made
+        #: or ended clears the cache), so a delivery in progress goes on over the routes it started with
+        self._route_cache: dict[str, tuple[Subscription, ...]] = {}
         self._latest: dict[str, Message] = {}
         self._history: dict[str, deque[Message]] = {}
         self.history = max(0, history)
@@ -190,18 +200,30 @@ class Bus:
         route = self._route_cache.get(topic)
         if route is None:
             levels = check_topic(topic)
-            route = [s for s in self._subs if matches(s.levels, levels)]
+            route = tuple(s for s in self._subs if matches(s.levels, levels))
             self._route_cache[topic] = route
         if not source:
             raise InferenceError(f"message on {topic!r} has no publishing component")
-        message = Message(topic, payload, source, float(stamp), next(self._seq))
+        # Message(topic, payload, source, stamp, seq) without the class call (one per unit published)
+        message: Message = _new_object(Message)
+        _set_dict(
+            message,
+            "__dict__",
+            {
+                "topic": topic,
+                "payload": payload,
+                "source": source,
+                "stamp": float(stamp),
+                "seq": next(self._seq),
+            },
+        )
         self._latest[topic] = message
         recent = self._history.get(topic)
         if recent is None:
             recent = self._history[topic] = deque(maxlen=self.history)
         recent.append(message)
         self.published += 1
-        for sub in list(route):
+        for sub in route:  # a tuple nobody changes: no copy needed for callbacks that (un)subscribe
             if sub.active:
                 sub.callback(message)
         return message

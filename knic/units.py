@@ -44,6 +44,9 @@ _EMPTY_KEYS.setflags(write=False)
 
 _ids = itertools.count(1)
 
+#: sets the ``__dict__`` of a frozen dataclass instance (its own ``__setattr__`` refuses)
+_set_dict = object.__setattr__
+
 
 def new_unit_id(prefix: str) -> str:
     """Return a process-unique id such as ``"llku:17"``; ids are what fact provenance cites as support."""
@@ -267,23 +270,71 @@ class CKU:
         uid: str | None = None,
     ) -> None:
         # the dataclass's own __init__, less its per-field frozen ``object.__setattr__`` calls: KGM-2 makes
-        # one unit per tracked sighting, and those calls were most of what making one cost
-        self.__dict__.update(
-            symbol=symbol,
-            cls=cls,
-            kind=kind,
-            octomap=octomap,
-            position=position,
-            role_priority=role_priority,
-            stamp=stamp,
-            confidence=confidence,
-            _keys_source=_EMPTY_KEYS
-            if keys is None
-            else keys
-            if callable(keys)
-            else _checked_keys(keys, symbol),
-            support=support,
-            track_id=track_id,
-            attributes={} if attributes is None else attributes,
-            uid=new_unit_id("cku") if uid is None else uid,
+        # one unit per tracked sighting, and those calls were most of what making one cost; the attributes
+        # are given as one dict
+        _set_dict(
+            self,
+            "__dict__",
+            {
+                "symbol": symbol,
+                "cls": cls,
+                "kind": kind,
+                "octomap": octomap,
+                "position": position,
+                "role_priority": role_priority,
+                "stamp": stamp,
+                "confidence": confidence,
+                "_keys_source": _EMPTY_KEYS
+                if keys is None
+                else keys
+                if callable(keys)
+                else _checked_keys(keys, symbol),
+                "support": support,
+                "track_id": track_id,
+                "attributes": {} if attributes is None else attributes,
+                "uid": f"cku:{next(_ids)}" if uid is None else uid,
+            },
         )
+
+
+_new_object = object.__new__
+
+
+def make_cku(
+    symbol: str,
+    cls: str,
+    kind: Kind,
+    octomap: pyoctomap.OcTree | None,
+    position: tuple[float, float, float],
+    role_priority: int,
+    stamp: float,
+    confidence: float,
+    keys: KeySource,
+    support: tuple[str, ...],
+    track_id: int,
+    attributes: Mapping[str, Any],
+) -> CKU:
+    """``CKU(symbol, cls, ..., attributes)`` with every argument given by position, for KGM-2's per-sighting
+    path: the same unit (keys checked, or kept as the query they are, and a new ``uid``), made without the
+    class call's keyword and ``__init__`` machinery, which was most of what making one cost."""
+    unit: CKU = _new_object(CKU)
+    _set_dict(
+        unit,
+        "__dict__",
+        {
+            "symbol": symbol,
+            "cls": cls,
+            "kind": kind,
+            "octomap": octomap,
+            "position": position,
+            "role_priority": role_priority,
+            "stamp": stamp,
+            "confidence": confidence,
+            "_keys_source": keys if callable(keys) else _checked_keys(keys, symbol),
+            "support": support,
+            "track_id": track_id,
+            "attributes": attributes,
+            "uid": f"cku:{next(_ids)}",
+        },
+    )
+    return unit

@@ -32,7 +32,7 @@ from knic.kgm2.roles import Policy, Role
 from knic.kgm2.tracking import Track, Tracker
 from knic.scheduler import Component
 from knic.spatial import DEFAULT_RESOLUTION, ROOM, Location, LocationModel, keys_of
-from knic.units import CKU, LLKU, Kind, Scan
+from knic.units import CKU, LLKU, Kind, Scan, make_cku
 
 #: where KGM-1 publishes the places of the map
 LOCATION_PERCEPTS = "percept.map.location"
@@ -76,11 +76,6 @@ class TrackingConfig:
     #: (see ``Tracker``): a person unseen for a while who is missed where the camera looks has walked away
     person_stale_s: float | None = 10.0
     person_stale_misses: int = 1
-
-
-def _plan_order(plan: tuple[Policy, str, list[LLKU]]) -> tuple[int, str]:
-    """Classes of a scan in decreasing role priority, then by name."""
-    return (-plan[0].priority, plan[1])
 
 
 @dataclass
@@ -247,18 +242,20 @@ class CognitiveLayer(Component):
         if scan is not None:
             pos = scan.view.position
             camera_room = self.locations.room_at(float(pos[0]), float(pos[1]))
-        plans: list[tuple[Policy, str, list[LLKU]]] = []
+        # classes in decreasing role priority, then by name (unique: the policies are never compared)
+        plans: list[tuple[int, str, Policy, list[LLKU]]] = []
         for cls in classes:
             dets = by_class.get(cls) or []
             room = camera_room
             if room is None and dets:
                 p = dets[0].position
                 room = self.locations.room_at(p[0], p[1])
-            plans.append((self._policy(cls, room), cls, dets))
-        plans.sort(key=_plan_order)
+            policy = self._policy(cls, room)
+            plans.append((-policy.priority, cls, policy, dets))
+        plans.sort()
         visible = scan.view.visible if scan is not None else None
         stats = self.stats
-        for policy, cls, dets in plans:
+        for _, cls, policy, dets in plans:
             tracker = self.trackers.get(cls) or self.tracker(cls, kind)
             if (
                 self._admitted.get(cls) != stamp
@@ -293,9 +290,18 @@ class CognitiveLayer(Component):
         does it when Y's detections were ``withheld`` by the camera's role filter (nothing is known of Y).
         Counted in ``stats.confusions``.
         """
+        trackers = self.trackers
         for cls, dets in list(by_class.items()):
-            own = self.trackers.get(cls)
-            kept = [det for det in dets if not self._confused(cls, det, by_class, withheld, own)]
+            own = trackers.get(cls)
+            kept = []
+            for det in dets:
+                if own is not None and det.identity:  # the common case, asked first (see _confused)
+                    mine = own.by_symbol(det.identity)
+                    if mine is not None and math.dist(det.position, mine.centroid) < own.radius:
+                        kept.append(det)
+                        continue
+                if not self._confused(cls, det, by_class, withheld, own):
+                    kept.append(det)
             if len(kept) < len(dets):
                 self.stats.confusions += len(dets) - len(kept)
                 by_class[cls] = kept
@@ -371,25 +377,26 @@ class CognitiveLayer(Component):
             return False
         key = (cls, stream)
         last = self._last_run.get(key)
-        if last is not None and stamp - last < policy.period - 1e-6:
+        if last is not None and stamp - last < 1.0 / policy.rate_hz - 1e-6:  # policy.period, rate_hz > 0
             return False
         self._last_run[key] = stamp
         return True
 
     def _publish_track(self, track: Track, det: LLKU, policy: Policy, stamp: float) -> None:
-        cku = CKU(
-            symbol=track.symbol,
-            cls=track.cls,
-            kind=det.kind,
-            octomap=track.octomap.tree,
-            keys=track.octomap.read_keys,  # a query the KP' run when they read the keys, not now
-            position=track.centroid,
-            role_priority=policy.priority,
-            stamp=stamp,
-            confidence=track.confidence,
-            support=(det.uid,),
-            track_id=track.track_id,
-            attributes={
+        octomap = track.octomap
+        cku = make_cku(  # CKU(symbol, cls, kind, octomap, position, role_priority, stamp, ...), by position
+            track.symbol,
+            track.cls,
+            det.kind,
+            octomap.tree,
+            track.centroid,
+            policy.priority,
+            stamp,
+            track.confidence,
+            octomap.read_keys,  # keys: a query the KP' run when they read them, not now
+            (det.uid,),
+            track.track_id,
+            {
                 "identified": det.identity is not None,
                 "hits": track.hits,
                 "face_views": track.face_views,

@@ -175,8 +175,10 @@ class Tracker:
             track = self._by_symbol.get(det.identity) if det.identity else None
             if track is None:
                 pending.append(det)
-            elif self._jump_confirmed(track, det, now):
-                self._update(track, det, now)
+                continue
+            distance = math.dist(det.position, track.centroid)  # the centroid's move, asked twice below
+            if self._jump_confirmed(track, det, now, distance):
+                self._update(track, det, now, distance)
                 used.add(track.track_id)
                 result.updated.append((track, det))
         if pending:
@@ -222,15 +224,18 @@ class Tracker:
             return self.radius
         return min(self.max_gate, self.radius + self.gate_growth * max(0.0, now - track.last_seen))
 
-    def _jump_confirmed(self, track: Track, det: LLKU, now: float) -> bool:
+    def _jump_confirmed(self, track: Track, det: LLKU, now: float, distance: float | None = None) -> bool:
         """Whether an identified detection may update its track: near it, or a far sighting seen again.
 
         A recognised entity far from its track (beyond the radius) has either moved or is a false positive or
         a label confusion; the track moves only after ``jump_confirm`` sightings near the same far spot, each
-        within ``jump_window_s`` of the previous one. Until then the detection is set aside.
+        within ``jump_window_s`` of the previous one. Until then the detection is set aside. ``distance``: the
+        detection's from the track's centroid, when the caller has it.
         """
         track.sightings = 1
-        if math.dist(det.position, track.centroid) < self.radius:
+        if distance is None:
+            distance = math.dist(det.position, track.centroid)
+        if distance < self.radius:
             track.jump = None
             return True
         if self.jump_confirm <= 1:
@@ -337,9 +342,13 @@ class Tracker:
         self._by_symbol[track.symbol] = track
         return track
 
-    def _update(self, track: Track, det: LLKU, now: float) -> None:
+    def _update(self, track: Track, det: LLKU, now: float, distance: float | None = None) -> None:
+        """``det`` updates ``track``; ``distance``: ``math.dist`` of its position from the track's centroid,
+        when the caller has it."""
         new = det.position
-        if math.dist(new, track.centroid) >= self.radius:
+        if distance is None:
+            distance = math.dist(new, track.centroid)
+        if distance >= self.radius:
             track.centroid = new
         else:
             g, old = self.gain, track.centroid

@@ -94,18 +94,23 @@ class EntityOctomap:
                 self._inserted.clear()
                 self.resets += 1
             self.anchor = centroid
+        # after this update, the next query reads every leaf when due: the clouds are then not needed
+        updates = self.updates + 1
+        full_scan_due = self._scanned_at is None or updates - self._scanned_at >= self.full_scan_every
         if len(points):
             if origin is None:
                 self.tree.updateNodes(points, True)
             else:
-                start = self._ray_start(centroid, origin)
-                self.tree.insertPointCloud(points, start, -1.0, False, self.discretize)
-            self._inserted.append(points)
+                self.tree.insertPointCloud(
+                    points, self._ray_start(centroid, origin), -1.0, False, self.discretize
+                )
+            if not full_scan_due:
+                self._inserted.append(points)
+        if full_scan_due and self._inserted:
+            self._inserted.clear()
         self._changed = True
         self._centroid = centroid
-        self.updates += 1
-        if self._scanned_at is None or self.updates - self._scanned_at >= self.full_scan_every:
-            self._inserted.clear()  # the next query reads every leaf: the clouds are not needed
+        self.updates = updates
 
     def _full_scan_due(self) -> bool:
         return self._scanned_at is None or self.updates - self._scanned_at >= self.full_scan_every
