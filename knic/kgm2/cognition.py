@@ -344,11 +344,13 @@ class CognitiveLayer(Component):
         The role's rate keeps settled knowledge fresh; evidence that would change it is processed at the
         camera's rate until it settles, so confirming a sighting or a loss takes as few frames at a low rate
         as at the top one: a detection that no settled track (``settled_hits`` hits) explains, a pending
-        far sighting of a recognised entity, or a track being missed where the camera could see it.
+        far sighting of a recognised entity, a track being missed where the camera could see it, or a young
+        track (fewer than ``settled_hits`` hits): every frame that could see it and did not is counted
+        (``Track.missed``), so a spurious detection is not taken for an item seen twice.
         """
         radius = tracker.radius
         for track in tracker.tracks.values():
-            if track.misses > 0 or track.jump is not None:
+            if track.misses > 0 or track.jump is not None or track.hits < self.settled_hits:
                 return True
         for det in dets:
             explained = False
@@ -399,6 +401,7 @@ class CognitiveLayer(Component):
             {
                 "identified": det.identity is not None,
                 "hits": track.hits,
+                "missed": track.missed,
                 "face_views": track.face_views,
                 "sightings": track.sightings,
                 "sensor_origin": det.sensor_origin,

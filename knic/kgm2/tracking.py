@@ -62,6 +62,9 @@ class Track:
     sightings: int = 1
     #: unnamed sightings large enough for the face recogniser (see ``Tracker.face_pixels``)
     face_views: int = 0
+    #: scans that could see the track at its spot (since it started or last jumped) and did not detect it
+    #: (a real item is detected in most; a spot where the detector once fired spuriously, in few)
+    missed: int = 0
 
     @property
     def keys(self) -> Keys:
@@ -312,6 +315,7 @@ class Tracker:
             if not could_see:
                 continue
             track.misses += 1
+            track.missed += 1
             left = track.octomap.miss()  # the view without the entity is evidence in its octomap
             long_enough = now is None or now - track.last_seen >= self.min_lost_s
             if (track.misses > self.misses_allowed(track, now) or left == 0) and long_enough:
@@ -350,6 +354,7 @@ class Tracker:
             distance = math.dist(new, track.centroid)
         if distance >= self.radius:
             track.centroid = new
+            track.missed = 0  # a new spot: the views of the old one say nothing of it
         else:
             g, old = self.gain, track.centroid
             track.centroid = (

@@ -70,12 +70,15 @@ class Confirmer(Generic[V]):
         current: V | None,
         stamp: float = 0.0,
         weight: int = 1,
+        decisive: bool = True,
     ) -> bool:
         """Record one observation made at simulated time ``stamp``; True when ``value`` is now confirmed and
         differs from ``current``.
 
         ``weight`` is how many consistent sightings the observation stands for (KGM-2 moves a recognised
-        entity's track to a far spot only after several sightings there; they count here too).
+        entity's track to a far spot only after several sightings there; they count here too). An observation
+        that is not ``decisive`` counts toward its value but cannot confirm it (the source's own evidence is
+        still too thin, e.g. a young track): a later decisive one does.
         """
         if value == current:
             self._pending.pop(subject, None)
@@ -90,7 +93,7 @@ class Confirmer(Generic[V]):
         else:
             cand = _Candidate(value, weight, confidence * weight, stamp)
             self._pending[subject] = cand
-        if cand.count >= self.needed and cand.confidence_sum / cand.count >= self.min_confidence:
+        if decisive and cand.count >= self.needed and cand.confidence_sum / cand.count >= self.min_confidence:
             del self._pending[subject]
             return True
         return False

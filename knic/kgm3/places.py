@@ -119,6 +119,8 @@ class _EntityPlaceKP(KPPrime):
     place_predicate = "object_at"
     #: least track hits of a sighting whose position becomes the entity's last known position
     min_hits_for_position = 2
+    #: least hits of the track behind a sighting that confirms a new place (see :meth:`established`; 0: any)
+    min_track_hits = 0
 
     def __init__(
         self,
@@ -232,12 +234,32 @@ class _EntityPlaceKP(KPPrime):
         current = self.current_value(cku.symbol)
         support = (cku.uid, *cku.support)
         weight = int(cku.attributes.get("sightings", 1))
-        if self.confirmer.observe(cku.symbol, (room, furniture), cku.confidence, current, cku.stamp, weight):
+        if self.confirmer.observe(
+            cku.symbol, (room, furniture), cku.confidence, current, cku.stamp, weight, self.established(cku)
+        ):
             with self.kb.batch():
                 self.write_place(cku.symbol, room, furniture, cku.stamp, support, cku.confidence)
         elif current == (room, furniture):
             # the belief already holds (maybe as an action's effect): mark it observed, once
             self.write_place(cku.symbol, room, furniture, cku.stamp, support, cku.confidence)
+
+    def established(self, cku: CKU) -> bool:
+        """Whether the track behind ``cku`` has been seen consistently enough for its sighting to confirm a
+        new place: at least ``min_track_hits`` hits, and missed in fewer of the scans that could see it at
+        its spot (KGM-2's ``missed``, counted in every frame while the track is young) than detected.
+
+        A real item in view is detected in most frames; a false positive or a label confusion is a one-off
+        whose spot the camera then sees empty, frame after frame: two of them landing near each other (a
+        patch of a table read as "soap" twice in two seconds) make a track of two hits and several misses,
+        which confirms no place however many sightings the confirmer has counted. Its sightings still count
+        toward the place, so a real item is confirmed as soon as its track is consistent. CKUs without these
+        counts (not from KGM-2's tracker) are established.
+        """
+        if self.min_track_hits <= 0:
+            return True
+        hits = int(cku.attributes.get("hits", self.min_track_hits))
+        missed = int(cku.attributes.get("missed", 0))
+        return hits >= self.min_track_hits and missed < hits
 
     def current_value(self, symbol: str) -> tuple[str | None, str | None]:
         """What the knowledge base holds of the entity's place, as the confirmer compares it:
@@ -317,6 +339,9 @@ class ObjectPlaceKP(_EntityPlaceKP):
             by KGM-2 until seen again there, so a longer window than for people costs no precision.
         anchors: also anchor the item's last known position in the knowledge base (``set_anchor``) when it
             moved more than ``anchor_step`` metres.
+        min_track_hits: least hits of an item's track before its sightings confirm a new place (see
+            :meth:`established`, which also asks the track to have been detected in more of the frames that
+            could see it than not): two spurious detections that happened to land together confirm nothing.
         resolution: metres, of the CKUs' voxel keys (KGM-2's tracking resolution).
     """
 
@@ -338,6 +363,7 @@ class ObjectPlaceKP(_EntityPlaceKP):
         frequency: float = 5.0,
         name: str = "kp'.object_at",
         resolution: float = DEFAULT_RESOLUTION,
+        min_track_hits: int = 1,
     ) -> None:
         super().__init__(
             name,
@@ -352,6 +378,7 @@ class ObjectPlaceKP(_EntityPlaceKP):
             window_s,
         )
         self.min_support_share = min_support_share
+        self.min_track_hits = min_track_hits
         #: the recognised people's places, for items seen in someone's hands
         self.hands = PeopleHands(bus, lambda symbol: self.is_a(symbol, "person"))
         self.anchors = anchors
@@ -394,7 +421,10 @@ class ObjectPlaceKP(_EntityPlaceKP):
         current = self.current_value(cku.symbol)
         support = (cku.uid, *cku.support)
         weight = int(cku.attributes.get("sightings", 1))
-        if self.confirmer.observe(cku.symbol, (HAND, holder), cku.confidence, current, cku.stamp, weight):
+        decisive = self.established(cku)
+        if self.confirmer.observe(
+            cku.symbol, (HAND, holder), cku.confidence, current, cku.stamp, weight, decisive
+        ):
             self.write_holder(cku.symbol, holder, cku.stamp, support, cku.confidence)
 
     def write_holder(
@@ -419,6 +449,9 @@ class ObjectPlaceKP(_EntityPlaceKP):
     def lost(self, cku: CKU) -> None:
         """As for every entity; an item believed in someone's hands whose track KGM-2 dropped where the
         camera could see it is no longer known to be with them."""
+        # the spot seen empty, frame after frame, refutes the sightings still pending there: a later spurious
+        # detection at the same spot starts afresh instead of completing them
+        self.confirmer.forget(cku.symbol)
         if self.holder_of(cku.symbol) is not None:
             self.tracked.discard(cku.symbol)
             self.forget_place(cku.symbol, cku.stamp, (cku.uid, *cku.support))
