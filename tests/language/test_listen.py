@@ -67,7 +67,10 @@ def test_listen_prints_each_utterance_as_json(
     assert lines[0]["goals"] == ["(has annie glasses)"] and lines[2]["goals"] == [
         "(light_on bedroom_left_light)"
     ]
-    assert "matched no command" in lines[1]["reason"]
+    # other speech: refused by the confidence, or heard as words that ask for nothing
+    assert not lines[1]["goals"] and any(
+        why in lines[1]["reason"] for why in ("matched no command", "asks for nothing to achieve")
+    )
     assert lines[0]["end"] < lines[1]["start"] < lines[1]["end"] < lines[2]["start"]
 
 
