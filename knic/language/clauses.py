@@ -40,7 +40,7 @@ class Clause:
     args: list[Arg] = field(default_factory=list)
     states: list[str] = field(default_factory=list)
     levels: list[int] = field(default_factory=list)
-    level_in_words: bool = False  # the last level was said in words ("fully"): how far, not where
+    level_in_words: bool = False  # the last level said in words, not after "to" ("fully"): how far
     missing: list[str] = field(default_factory=list)  # unknown words where a name was expected
     unknown: list[str] = field(default_factory=list)  # other unknown words
     pending: list[str] = field(default_factory=list)  # unknown words since a noun phrase was expected
@@ -251,7 +251,7 @@ def add_to_clause(
         clause.states.append(chunk.state or "")
     elif chunk.kind in ("level", "number"):
         clause.levels.append(chunk.value or 0)
-        clause.level_in_words = chunk.kind == "level"
+        clause.level_in_words = chunk.kind == "level" and prep is None  # "to a quarter": where
     elif chunk.kind == "unknown":
         if expecting and (nxt is None or nxt.kind in ("join", "prep", "verb")):
             # the whole name not known ("the front door is open": 'front door'), not its last word

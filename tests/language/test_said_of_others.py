@@ -28,6 +28,7 @@ READ = [
     ("close the blinds halfway", ["(device_level bedroom_blinds l50)"]),
     ("open the blinds all the way", ["(device_level bedroom_blinds l100)"]),
     ("set the blinds to 25 percent", ["(device_level bedroom_blinds l25)"]),
+    ("lower the blinds to a quarter", ["(device_level bedroom_blinds l25)"]),  # "to": where, not how far
     # the living room's light is its dimmer; "the lamp" alone also names the bedroom's two lights
     (
         "go to the living room and switch on the lamp",
