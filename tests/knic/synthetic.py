@@ -132,3 +132,18 @@ class FakeSensors:
 
     def device_states(self) -> dict[str, float | bool]:
         return dict(self.devices)
+
+
+class SeesEverything:
+    """A frame view from ``position`` along ``axis`` that could see every point (a scan without a detection
+    is a miss)."""
+
+    def __init__(self, position: Sequence[float], axis: Sequence[float]) -> None:
+        self.position = np.array(position, dtype=float)
+        self._axis = np.array(axis, dtype=float)
+
+    def visible(self, points: npt.NDArray[np.float64]) -> npt.NDArray[np.bool_]:
+        return np.ones(len(points), dtype=bool)
+
+    def optical_axis(self) -> npt.NDArray[np.float64]:
+        return self._axis

@@ -9,9 +9,6 @@ view is detected in most frames: its track is confirmed a frame later than befor
 
 from __future__ import annotations
 
-import numpy as np
-import numpy.typing as npt
-
 from knic.bus import Bus
 from knic.kgm2.cognition import CognitiveLayer
 from knic.kgm2.roles import Policy, Role
@@ -20,21 +17,13 @@ from knic.spatial import LocationModel
 from knic.units import Kind, Scan
 from knowledge_base import Fact, KnowledgeBase
 from tests.knic.places import publish_place_percepts
-from tests.knic.synthetic import percept
+from tests.knic.synthetic import SeesEverything, percept
 
 KITCHEN_TABLE = (6.0, 6.6, 0.78)
 
 
-class _SeesEverything:
-    """A frame view that could see every point (a scan without a detection is a miss)."""
-
-    position = np.array([6.0, 5.0, 1.2])
-
-    def visible(self, points: npt.NDArray[np.float64]) -> npt.NDArray[np.bool_]:
-        return np.ones(len(points), dtype=bool)
-
-    def optical_axis(self) -> npt.NDArray[np.float64]:
-        return np.array([0.0, 1.0, 0.0])
+#: where the synthetic frames look from, and along which axis
+_VIEW = SeesEverything((6.0, 5.0, 1.2), (0.0, 1.0, 0.0))
 
 
 class _Run:
@@ -51,7 +40,7 @@ class _Run:
         if seen is not None:
             unit = percept(Kind.OBJECT, "glasses", seen, t, identity="glasses", confidence=0.66)
             self.bus.publish("percept.vision.object.glasses", unit, source="kp", stamp=t)
-        scan = Scan(Kind.OBJECT, t, _SeesEverything(), "cam")
+        scan = Scan(Kind.OBJECT, t, _VIEW, "cam")
         self.bus.publish("percept.vision.scan.object", scan, source="kp", stamp=t)
         self.layer.step(t)
         self.places.step(t)

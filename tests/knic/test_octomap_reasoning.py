@@ -7,9 +7,6 @@ control run and a run whose tree is corrupted between two frames must end with d
 
 from __future__ import annotations
 
-import numpy as np
-import numpy.typing as npt
-
 from knic.bus import Bus
 from knic.kgm2.cognition import CognitiveLayer
 from knic.kgm2.roles import Policy, Role
@@ -18,22 +15,14 @@ from knic.spatial import EntityOctomap, LocationModel, key_centers
 from knic.units import Kind, Scan
 from knowledge_base import Fact, KnowledgeBase
 from tests.knic.places import publish_place_percepts
-from tests.knic.synthetic import blob, percept
+from tests.knic.synthetic import SeesEverything, blob, percept
 
 SHELF_TOP = (7.75, 1.5, 0.92)
 KITCHEN_TABLE = (6.0, 6.6, 0.78)
 
 
-class _SeesEverything:
-    """A frame view that could see every point (a scan without a detection is a miss)."""
-
-    position = np.array([6.5, 1.5, 1.2])
-
-    def visible(self, points: npt.NDArray[np.float64]) -> npt.NDArray[np.bool_]:
-        return np.ones(len(points), dtype=bool)
-
-    def optical_axis(self) -> npt.NDArray[np.float64]:
-        return np.array([1.0, 0.0, 0.0])
+#: where the synthetic frames look from, and along which axis
+_VIEW = SeesEverything((6.5, 1.5, 1.2), (1.0, 0.0, 0.0))
 
 
 class _Run:
@@ -49,7 +38,7 @@ class _Run:
         if seen is not None:
             unit = percept(Kind.OBJECT, "glasses", seen, t, identity="glasses")
             self.bus.publish("percept.vision.object.glasses", unit, source="kp", stamp=t)
-        scan = Scan(Kind.OBJECT, t, _SeesEverything(), "cam")
+        scan = Scan(Kind.OBJECT, t, _VIEW, "cam")
         self.bus.publish("percept.vision.scan.object", scan, source="kp", stamp=t)
         self.layer.step(t)
         self.places.step(t)
