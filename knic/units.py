@@ -275,26 +275,44 @@ class CKU:
         _set_dict(
             self,
             "__dict__",
-            {
-                "symbol": symbol,
-                "cls": cls,
-                "kind": kind,
-                "octomap": octomap,
-                "position": position,
-                "role_priority": role_priority,
-                "stamp": stamp,
-                "confidence": confidence,
-                "_keys_source": _EMPTY_KEYS
-                if keys is None
-                else keys
-                if callable(keys)
-                else _checked_keys(keys, symbol),
-                "support": support,
-                "track_id": track_id,
-                "attributes": {} if attributes is None else attributes,
-                "uid": f"cku:{next(_ids)}" if uid is None else uid,
-            },
+            _cku_state(
+                symbol,
+                cls,
+                kind,
+                octomap,
+                position,
+                role_priority,
+                stamp,
+                confidence,
+                _EMPTY_KEYS if keys is None else keys if callable(keys) else _checked_keys(keys, symbol),
+                support,
+                track_id,
+                {} if attributes is None else attributes,
+                f"cku:{next(_ids)}" if uid is None else uid,
+            ),
         )
+
+
+def _cku_state(*values: Any) -> dict[str, Any]:
+    """A CKU's attribute dict from its field values in order (keys already checked or a query)."""
+    return dict(zip(_CKU_FIELDS, values, strict=True))
+
+
+_CKU_FIELDS = (
+    "symbol",
+    "cls",
+    "kind",
+    "octomap",
+    "position",
+    "role_priority",
+    "stamp",
+    "confidence",
+    "_keys_source",
+    "support",
+    "track_id",
+    "attributes",
+    "uid",
+)
 
 
 _new_object = object.__new__
@@ -318,23 +336,24 @@ def make_cku(
     path: the same unit (keys checked, or kept as the query they are, and a new ``uid``), made without the
     class call's keyword and ``__init__`` machinery, which was most of what making one cost."""
     unit: CKU = _new_object(CKU)
+    keys_source = keys if callable(keys) else _checked_keys(keys, symbol)
     _set_dict(
         unit,
         "__dict__",
-        {
-            "symbol": symbol,
-            "cls": cls,
-            "kind": kind,
-            "octomap": octomap,
-            "position": position,
-            "role_priority": role_priority,
-            "stamp": stamp,
-            "confidence": confidence,
-            "_keys_source": keys if callable(keys) else _checked_keys(keys, symbol),
-            "support": support,
-            "track_id": track_id,
-            "attributes": attributes,
-            "uid": f"cku:{next(_ids)}",
-        },
+        _cku_state(
+            symbol,
+            cls,
+            kind,
+            octomap,
+            position,
+            role_priority,
+            stamp,
+            confidence,
+            keys_source,
+            support,
+            track_id,
+            attributes,
+            f"cku:{next(_ids)}",
+        ),
     )
     return unit
