@@ -1,7 +1,10 @@
 """``knic bench language``: text understanding on the development and the held-out test set.
 
 The sets are ``tests/fixtures/language/dev.yaml`` (tuned on) and ``tests/fixtures/language/test.yaml``
-(written afterwards in other words and never tuned on). Each case is a command with its gold frames and goals,
+(written afterwards in other words), and ``people2/dev.yaml`` and ``people2/test.yaml`` (100 commands each,
+written blind: the writer saw the apartment's description and the gold format only, not the grammar, the
+reader, the lexicon or the earlier sets; ``people2-test`` is never tuned on). ``--file`` runs a set of one's
+own. Each case is a command with its gold frames and goals,
 or with a word the refusal (``reject``) or the question back (``question``) must contain. Cases run against
 the ERL apartment or, with ``world: other``, against a different house
 (``tests/fixtures/language/other_world``), to show that the language code knows no world's names. Figures:
@@ -11,7 +14,8 @@ the ERL apartment or, with ``world: other``, against a different house
 * ``main_argument_accuracy`` -- share whose kinds and main arguments (theme; goal for MOTION; device and
   state for OPERATING) are right;
 * ``frame_argument_accuracy`` -- share whose frames are right with every argument;
-* ``goal_accuracy`` -- share whose goals are exactly the gold goals;
+* ``goal_accuracy`` -- of the cases with gold goals, share whose goals are exactly those (a case without gold
+  goals is judged by its frames alone);
 * ``refusal_accuracy`` -- of the cases to refuse or ask about, share answered so;
 * ``by_class`` -- accuracy per phrasing class (fillers, relative, chains, levels, several, ...);
 * ``ms_per_command`` -- mean wall-clock time per command.
@@ -29,7 +33,12 @@ from core.errors import KnicError
 from core.inputs import read_yaml
 
 FIXTURES = Path(__file__).resolve().parents[2] / "tests" / "fixtures" / "language"
-SETS = {"dev": FIXTURES / "dev.yaml", "test": FIXTURES / "test.yaml"}
+SETS = {
+    "dev": FIXTURES / "dev.yaml",
+    "test": FIXTURES / "test.yaml",
+    "people2-dev": FIXTURES / "people2" / "dev.yaml",
+    "people2-test": FIXTURES / "people2" / "test.yaml",
+}
 OTHER_WORLD = FIXTURES / "other_world" / "problem.pddl"
 _MAIN = {"MOTION": ("goal",), "OPERATING": ("device", "state")}
 
@@ -38,6 +47,9 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--json", action="store_true", help="print one JSON object")
     parser.add_argument("--verbose", action="store_true", help="list every case that went wrong")
     parser.add_argument("--set", action="append", choices=sorted(SETS), help="only this set (repeatable)")
+    parser.add_argument(
+        "--file", action="append", default=[], metavar="YAML", help="a set of one's own, in the same layout"
+    )
 
 
 def frame_spec(spec: str) -> dict[str, str]:
@@ -70,6 +82,15 @@ def expected_goals(case: dict[str, Any], gold: list[dict[str, str]], vocabulary:
     return out
 
 
+#: device states that name the same level (the blinds open is the blinds at 100 percent)
+_SAME_STATE = {"open": "100", "closed": "0"}
+
+
+def _same_states(frames: list[dict[str, str]]) -> list[dict[str, str]]:
+    """Frames with each state written as the level it means, so that "open" and "100" compare equal."""
+    return [{k: _SAME_STATE.get(v, v) if k == "state" else v for k, v in f.items()} for f in frames]
+
+
 def _main(frame: dict[str, str]) -> tuple[str, ...]:
     roles = _MAIN.get(frame["frame"], ("theme",))
     return (frame["frame"], *(frame.get(r, "") for r in roles))
@@ -96,6 +117,7 @@ def evaluate(path: Path) -> dict[str, Any]:
         "main": 0,
         "args": 0,
         "goals": 0,
+        "goaled": 0,
         "framed": 0,
         "refusals": 0,
         "refuse": 0,
@@ -110,13 +132,17 @@ def evaluate(path: Path) -> dict[str, Any]:
         elapsed += time.perf_counter() - started
         got = [f.to_dict() for f in result.frames] if result.accepted else []
         if "frames" in case:
-            gold = [frame_spec(f) for f in case["frames"]]
+            gold = _same_states([frame_spec(f) for f in case["frames"]])
+            got = _same_states(got)
             tally["framed"] += 1
             tally["kinds"] += [f["frame"] for f in got] == [f["frame"] for f in gold]
             tally["main"] += [_main(f) for f in got] == [_main(f) for f in gold]
             tally["args"] += got == gold
-            goals_right = [str(g) for g in result.goals] == expected_goals(case, gold, vocabulary)
-            tally["goals"] += goals_right
+            goals_right = True  # a case without gold goals is judged by its frames
+            if "goals" in case:
+                goals_right = [str(g) for g in result.goals] == expected_goals(case, gold, vocabulary)
+                tally["goaled"] += 1
+                tally["goals"] += goals_right
             right = got == gold and goals_right
         else:
             tally["refuse"] += 1
@@ -138,7 +164,7 @@ def evaluate(path: Path) -> dict[str, Any]:
         "frame_accuracy": round(tally["kinds"] / framed, 4) if framed else None,
         "main_argument_accuracy": round(tally["main"] / framed, 4) if framed else None,
         "frame_argument_accuracy": round(tally["args"] / framed, 4) if framed else None,
-        "goal_accuracy": round(tally["goals"] / framed, 4) if framed else None,
+        "goal_accuracy": round(tally["goals"] / tally["goaled"], 4) if tally["goaled"] else None,
         "refusal_accuracy": round(tally["refusals"] / tally["refuse"], 4) if tally["refuse"] else None,
         "by_class": {k: round(ok / total, 4) for k, (ok, total) in sorted(classes.items())},
         "ms_per_command": round(elapsed * 1000.0 / n, 2) if n else None,
@@ -148,8 +174,10 @@ def evaluate(path: Path) -> dict[str, Any]:
 
 def run(args: argparse.Namespace) -> int:
     figures: dict[str, Any] = {}
-    for name in args.set or sorted(SETS):
-        figures[name] = evaluate(SETS[name])
+    chosen = {name: SETS[name] for name in args.set or ([] if args.file else sorted(SETS))}
+    chosen.update({path: Path(path) for path in args.file})
+    for name, path in chosen.items():
+        figures[name] = evaluate(path)
         if not args.verbose:
             figures[name].pop("errors")
     if args.json:

@@ -136,9 +136,10 @@ def evaluate(
     Raises:
         KnicError: the gold file is missing or malformed, or the decoder refuses an option.
     """
+    from knic.language.audio import load_audio
     from knic.language.frames import CommandFrame
     from knic.language.lmspeech import NgramRecognizer
-    from knic.language.speech import Recognizer, load_audio
+    from knic.language.speech import Recognizer
     from knic.language.understanding import default_grammar, understand_transcript
     from knic.language.vocabulary import normalize
     from knic.language.world import read_vocabulary

@@ -112,6 +112,8 @@ def print_understanding(data: dict[str, Any], as_json: bool) -> None:
             print(f"goal: {goal}")
         if data.get("question"):
             print(f"question: {data['question']}")
+        for note in data.get("notes", []):
+            print(f"note: {note}")
     if not data["accepted"]:
         raise LanguageError(f"not understood: {data['reason']}")
 

@@ -434,7 +434,8 @@ class SpokenAnswers:
         self._recognizer: Any = None
 
     def __call__(self) -> str | None:
-        from knic.language.speech import AnswerRecognizer, load_audio
+        from knic.language.audio import load_audio
+        from knic.language.speech import AnswerRecognizer
 
         if not self.wavs:
             return None

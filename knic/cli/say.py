@@ -50,17 +50,29 @@ def add_acoustic_argument(parser: argparse.ArgumentParser) -> None:
 def run(args: argparse.Namespace) -> int:
     from core.errors import AudioError
     from core.inputs import check_input_file
-    from knic.language.speech import load_audio
-    from knic.language.understanding import understand_transcript
+    from knic.language.audio import load_pcm
 
     check_input_file(args.wav, MAX_AUDIO_BYTES, "audio file", AudioError)  # never read /dev/zero
-    audio = load_audio(args.wav)  # refuse a bad file before loading the world
-    vocabulary = load_vocabulary(args)
-    from knic.language.lmspeech import command_recognizer
-
+    audio = load_pcm(args.wav)  # refuse a bad file before loading the world
     decoder = getattr(args, "decoder", "ngram")
-    recognizer = command_recognizer(vocabulary, decoder=decoder, acoustic_model=args.acoustic_model)
-    transcript = recognizer.recognize(audio)
+    if decoder == "ngram":
+        from knic.language.acoustic import acoustic_model_options
+        from knic.language.lmspeech import phone_score_in_background
+
+        acoustic_model_options(args.acoustic_model, decoder="ngram")  # a bad model is refused before the fork
+        # the confidence's phone-loop pass runs in a child while this process loads the world and decodes
+        phone_score = phone_score_in_background(audio, args.acoustic_model)
+    vocabulary = load_vocabulary(args)
+    from knic.language.lmspeech import NgramRecognizer, command_recognizer
+    from knic.language.understanding import understand_transcript
+
+    if decoder == "ngram":
+        transcript = NgramRecognizer(vocabulary, acoustic_model=args.acoustic_model).recognize(
+            audio, phone_score=phone_score
+        )
+    else:
+        recognizer = command_recognizer(vocabulary, decoder=decoder, acoustic_model=args.acoustic_model)
+        transcript = recognizer.recognize(audio)
     result = understand_transcript(transcript, vocabulary, speaker=args.speaker)
     print_understanding(result.to_dict(), args.json)
     return 0

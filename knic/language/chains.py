@@ -2,8 +2,8 @@
 
 Pronouns ("it", "them", "her", "him") take the latest earlier action's theme or beneficiary of their type; a
 TAKING followed by a carry of the same object hands it its source; a MOTION followed by an action on a thing
-gives it its source or ground ("go to the dining table and take the cups"); a TAKING that nothing carries on
-is a BRINGING to the speaker.
+gives it its source or ground ("go to the dining table and take the cups"); a carry with nowhere said that
+nothing carries on is a BRINGING to the speaker, and "pick up the box" a TAKING (the robot holds it).
 """
 
 from __future__ import annotations
@@ -64,19 +64,28 @@ def referent(
     raise LanguageError(f"'{chunk.text}' does not refer to {thing} named earlier in the command")
 
 
-def chain(frames: list[CommandFrame], vocabulary: Vocabulary, *, ask_where: Collection[int] = ()) -> Reading:
-    """Hand sources on along a chain; a TAKING that nothing carries on becomes a BRINGING to the speaker.
+def chain(
+    frames: list[CommandFrame],
+    vocabulary: Vocabulary,
+    *,
+    ask_where: Collection[int] = (),
+    held: Collection[int] = (),
+) -> Reading:
+    """Hand sources on along a chain; a carry with nowhere said that nothing carries on is for the speaker.
 
-    A carry with no destination said ("fetch the book", "grab the cup") reads as a TAKING, so a destination
-    said later for the same object ("... and put it in the lounge", "... then take it to the kitchen")
-    replaces the speaker as where it ends. A person fetched with no room said ("fetch tracy") is taken
-    wherever a later action takes them ("... and bring her to the bedroom"); that frame then goes.
+    A carry with no destination said ("fetch the book") reads as a TAKING, so a destination said later for
+    the same object ("... and put it in the lounge", "... then take it to the kitchen") replaces the speaker
+    as where it ends. A TAKING of a verb that only takes ("pick up the box", in ``held``) that nothing
+    carries on stays a TAKING: the robot ends up holding the thing. A person fetched with no room said
+    ("fetch tracy") is taken wherever a later action takes them ("... and bring her to the bedroom"); that
+    frame then goes.
 
     Args:
         frames: the frames of the clauses, in order.
         vocabulary: the world's names (for the questions).
         ask_where: indices of TAKING frames said with a destination left unsaid ("take the cup away"): when
             nothing later carries them on, the reader asks where instead of bringing them to the speaker.
+        held: indices of TAKING frames said with a verb that only takes ("pick up", "take").
 
     Raises:
         AmbiguityError: where to is not said for a frame that needs it (the message asks).
@@ -109,7 +118,7 @@ def chain(frames: list[CommandFrame], vocabulary: Vocabulary, *, ask_where: Coll
             elif index in ask_where:
                 thing = vocabulary.phrase_of(frame["theme"])
                 raise AmbiguityError(f"where should I take the {thing}: to which room or piece of furniture?")
-            else:
+            elif index not in held:
                 out[index] = CommandFrame("BRINGING", {**frame.args, "beneficiary": SPEAKER})
         if frame.kind == "ACCOMPANYING" and frame.get("goal") is None:
             later_same = [
@@ -120,6 +129,14 @@ def chain(frames: list[CommandFrame], vocabulary: Vocabulary, *, ask_where: Coll
                 name = "you" if who == SPEAKER else vocabulary.phrase_of(who or "")
                 raise AmbiguityError(f"where should I take {name}: to which room?")
             dropped.add(index)  # "fetch tracy and bring her to the bedroom": the later action says where
+    kept_frames: list[CommandFrame] = []
+    for index, frame in enumerate(out):  # "tracy wants her mug, take it to her": said twice, done once
+        if index in dropped:
+            continue
+        if any(frame.kind == k.kind and frame.args == k.args for k in kept_frames):
+            dropped.add(index)
+        else:
+            kept_frames.append(frame)
     if dropped:
         kept = [i for i in range(len(out)) if i not in dropped]
         out = [out[i] for i in kept]

@@ -24,7 +24,8 @@ _TENS = {w: 10 * i for i, w in enumerate(TENS_WORDS) if w != "_"}
 class Chunk:
     """One piece of a command: ``kind`` is entity, me, pronoun, verb, prep, state, level, number, join, det,
     percent, partitive, vague (a level not said: "a bit"), unsaid (a destination not said: "away"), quant
-    (role: "all" or "both"), everything or unknown."""
+    (role: "all" or "both"), everything, repair (the speaker corrects what came before: "no wait") or
+    unknown."""
 
     kind: str
     text: str
@@ -97,6 +98,7 @@ class Chunker:
             ("vague", lang.vague_levels),
             ("unsaid", lang.unsaid_goal),
             ("everything", lang.everything),
+            ("repair", lang.repairs),
         ):
             for phrase in phrases:
                 put(phrase, 3, Chunk(kind, phrase))
@@ -147,11 +149,20 @@ class Chunker:
                 "verb", bare.phrases[0], frames=bare.frames, state=bare.state, beneficiary=bare.beneficiary
             )
         self._longest = max((len(p.split()) for p in list(table) + list(self._full)), default=1)
+        #: first words of the world's names and of the determiners: after "jack's" they make it a possessive
+        self._noun_heads = {p.split()[0] for p in list(self._full) + list(self._partial)} | set(
+            lang.determiners
+        )
+        self._people = {
+            p for p, ts in self._full.items() if all(vocabulary.is_subtype(t.type, "person") for t in ts)
+        }
+        self._pronoun_words = {w for p in lang.pronouns for w in p.split()}
 
     # ------------------------------------------------------------------ chunks
 
     def chunks(self, tokens: Sequence[str]) -> list[Chunk]:
         """The chunks of a normalised token list (fillers dropped)."""
+        tokens = self._apostrophes(tokens)
         lemmas = [self._lemma(t) for t in tokens]
         inflected = {i for i, (word, lemma) in enumerate(zip(tokens, lemmas, strict=True)) if word != lemma}
         tokens = lemmas
@@ -204,6 +215,39 @@ class Chunker:
             i += best[0]
         return out
 
+    def _apostrophes(self, tokens: Sequence[str]) -> list[str]:
+        """Read "'s" after a word the tables do not know as it is: "is" ("the tablet's on the bed", "jack's
+        hungry"), or a possessive before a name or a determiner ("tracy's mug": the mug; a person who owns
+        it is dropped, "the kitchen's light" stays "kitchen light"). Pronouns and "there", "here", "what"
+        ("it's", "there's") are left as said."""
+        out: list[str] = []
+        for i, token in enumerate(tokens):
+            base = token[:-2]
+            if (
+                not token.endswith("'s")
+                or not base
+                or token in self._known_words
+                or base in self._pronoun_words
+                or base in _KEPT_CONTRACTIONS
+            ):
+                out.append(token)
+            elif i + 1 < len(tokens) and tokens[i + 1] in self._noun_heads:
+                owner = next(  # the words of a person's name ending here ("granny annie's")
+                    (
+                        n
+                        for n in range(min(len(out), 2), -1, -1)
+                        if " ".join([*out[len(out) - n :], base]) in self._people
+                    ),
+                    None,
+                )
+                if owner is None:
+                    out.append(base)
+                else:
+                    del out[len(out) - owner :]
+            else:
+                out += [base, "is"]
+        return out
+
     def _longest_verb_at(self, tokens: Sequence[str], i: int) -> int:
         """The length of the longest verb phrase at ``tokens[i:]`` (0: none)."""
         for length in range(min(self._longest, len(tokens) - i), 0, -1):
@@ -230,6 +274,10 @@ class Chunker:
             if candidate in self._verb_heads:
                 return candidate
         return word
+
+
+#: words whose "'s" is read as the tables and the reader already read it ("there's a mug on the table")
+_KEPT_CONTRACTIONS = frozenset({"there", "here", "what", "who", "where", "that", "let", "how"})
 
 
 def _number(tokens: Sequence[str], i: int) -> tuple[int, int] | None:

@@ -46,6 +46,7 @@ class Clause:
     pending: list[str] = field(default_factory=list)  # unknown words since a noun phrase was expected
     vague: bool = False  # "a bit", "a little": a level meant but not said
     unsaid_goal: bool = False  # "away", "back": a destination meant but not said
+    mine: bool = False  # "my" said: the speaker's own thing ("grab my glasses": for me)
 
     def names_nothing(self) -> bool:
         """No noun phrase, state, level or missing name: only the verb and words not understood."""
@@ -64,6 +65,10 @@ class _Filling:
     joined: bool = False
     expecting: bool = False  # a noun phrase is expected (after a determiner or a preposition)
     quantity: Chunk | None = None
+
+
+#: determiners that make a thing the speaker's own
+SPEAKERS_OWN = frozenset({"my", "our"})
 
 
 def _subject(clause: Clause) -> Arg | None:
@@ -208,6 +213,8 @@ def _fill(
     if chunk.kind == "vague":
         clause.vague = True
         return
+    if chunk.kind == "det" and chunk.text in SPEAKERS_OWN:
+        clause.mine = True
     if chunk.kind == "unsaid":
         clause.unsaid_goal = True
         return

@@ -91,6 +91,7 @@ class CommandLanguage:
     anywhere: tuple[str, ...] = ()
     bare_request: str | None = None
     type_nouns: dict[str, tuple[str, ...]] = field(default_factory=dict)
+    repairs: tuple[str, ...] = ()
 
     def verb_frames(self) -> dict[str, tuple[tuple[str, ...], str | None]]:
         """Verb phrase -> (frame kinds in order, implied state); a phrase in several classes gets all."""
@@ -228,6 +229,7 @@ def load_language(path: str | Path = DEFAULT_PATH) -> CommandLanguage:
         anywhere=_phrases(data, "anywhere", source),
         bare_request=bare,
         type_nouns=tables["type_nouns"],
+        repairs=_phrases(data, "repairs", source),
     )
     lists: dict[str, tuple[str, ...]] = {v.name: v.phrases for v in verbs}
     spoken = _phrases(data, "spoken_determiners", source) or language.determiners
@@ -235,6 +237,7 @@ def load_language(path: str | Path = DEFAULT_PATH) -> CommandLanguage:
     lists.update(percent=language.percent, openers=language.openers, closers=language.closers)
     lists.update(vague_levels=language.vague_levels, unsaid_goal=language.unsaid_goal)
     lists.update(everything=language.everything, there=language.there, anywhere=language.anywhere)
+    lists.update(repairs=language.repairs)
     lists.update({f"quantifier_{k}": v for k, v in language.quantifiers.items()})
     object.__setattr__(language, "lists", lists)
     language.template_nodes()  # fail early on a malformed template

@@ -10,6 +10,7 @@ BRINGING / PLACING theme X, goal room  ``(object_at X room)``
 BRINGING / PLACING theme X, goal f     ``(object_on X f)`` (f a piece of furniture)
 ... with source f (furniture)          also ``(taken_from X f)`` when the domain has that predicate
 TAKING theme X (carried on later)      none: the later action's goal says where X ends
+TAKING theme X (nothing carries on)    ``(holding R X)`` (R the robot: "pick up the box")
 SEARCHING theme X                      ``(reported X)``
 MOTION goal room                       ``(robot_at R room)`` (R the world's robot)
 MOTION goal f (furniture)              ``(robot_at R room)``, the room f is in (``furniture_in``)
@@ -49,6 +50,7 @@ def frames_to_goals(
     *,
     speaker: str,
     waypoints: Iterable[int] = (),
+    notes: list[str] | None = None,
 ) -> list[Fact]:
     """The PDDL goals that satisfy the frames, in utterance order, without duplicates.
 
@@ -57,6 +59,8 @@ def frames_to_goals(
         vocabulary: the world (instances, types, the domain's predicate signatures).
         speaker: the person symbol that "me" stands for.
         waypoints: indices of MOTION frames that only say where the next action happens (no goal).
+        notes: receives what the goals do differently from what was said, for the reply (a level the world
+            lacks is set to the nearest one it has: "dimmer: 50 percent, the nearest level to 40 ...").
 
     Raises:
         LanguageError: a frame lacks an argument its kind needs, names something of the wrong type, asks
@@ -68,9 +72,9 @@ def frames_to_goals(
     goals: list[Fact] = []
     skip = set(waypoints)
     for index, frame in enumerate(frames):
-        if index in skip or frame.kind == "TAKING":
+        if index in skip or (frame.kind == "TAKING" and _carried_on(frames, index)):
             continue
-        for goal in _frame_goals(frame, vocabulary, speaker):
+        for goal in _frame_goals(frame, vocabulary, speaker, notes if notes is not None else []):
             validate_goal(goal, vocabulary)
             if goal not in goals:
                 goals.append(goal)
@@ -129,7 +133,7 @@ class GoalSink(Protocol):
         """Add one goal; True when it is new."""
 
 
-def _frame_goals(frame: CommandFrame, vocabulary: Vocabulary, speaker: str) -> list[Fact]:
+def _frame_goals(frame: CommandFrame, vocabulary: Vocabulary, speaker: str, notes: list[str]) -> list[Fact]:
     def need(role: str) -> str:
         value = frame.get(role)
         if value is None:
@@ -150,6 +154,11 @@ def _frame_goals(frame: CommandFrame, vocabulary: Vocabulary, speaker: str) -> l
         return [*sourced, Fact("has", (need("beneficiary"), theme))]
     if kind == "SEARCHING":
         return [Fact("reported", (need("theme"),))]
+    if kind == "TAKING":
+        if vocabulary.robot is None:
+            raise LanguageError("the world has no robot to pick things up")
+        theme = need("theme")
+        return [*_sourced(frame, vocabulary, theme), Fact("holding", (vocabulary.robot, theme))]
     if kind == "MOTION":
         if vocabulary.robot is None:
             raise LanguageError("the world has no robot to move")
@@ -157,11 +166,21 @@ def _frame_goals(frame: CommandFrame, vocabulary: Vocabulary, speaker: str) -> l
     if kind == "ACCOMPANYING":
         return [Fact("person_at", (need("theme"), room_of(need("goal"), vocabulary)))]
     if kind == "OPERATING":
-        return _operating_goals(frame, vocabulary, need("device"), need("state"))
+        return _operating_goals(frame, vocabulary, need("device"), need("state"), notes)
     raise LanguageError(f"no goal for frame kind {kind!r}")
 
 
-def _operating_goals(frame: CommandFrame, vocabulary: Vocabulary, device: str, state: str) -> list[Fact]:
+def _carried_on(frames: Sequence[CommandFrame], index: int) -> bool:
+    """Whether a later frame carries the object of ``frames[index]`` on (its goal says where it ends)."""
+    theme = frames[index].get("theme")
+    return any(
+        f.kind in ("BRINGING", "PLACING", "TAKING") and f.get("theme") == theme for f in frames[index + 1 :]
+    )
+
+
+def _operating_goals(
+    frame: CommandFrame, vocabulary: Vocabulary, device: str, state: str, notes: list[str]
+) -> list[Fact]:
     devices = vocabulary.members(device)
     lights = all(_is(vocabulary, d, "light") for d in devices)
     if state in ("on", "off") and lights:
@@ -179,9 +198,24 @@ def _operating_goals(frame: CommandFrame, vocabulary: Vocabulary, device: str, s
     level = vocabulary.level(percent)
     if level is None:
         known = sorted(p for p in (level_percent(s) for s in vocabulary.instances) if p is not None)
-        offered = ", ".join(str(p) for p in known) or "none"
-        raise LanguageError(f"this world has no level of {percent} percent (it has {offered})")
+        nearest = nearest_level(percent, known)
+        if nearest is None:
+            raise LanguageError(f"this world has no level of {percent} percent (it has none)")
+        level = vocabulary.level(nearest) or ""
+        notes.append(
+            f"{vocabulary.phrase_of(device)}: {nearest} percent, the nearest level to {percent} this world "
+            f"has ({', '.join(str(p) for p in known)})"
+        )
     return [Fact("device_level", (d, level)) for d in devices]
+
+
+def nearest_level(percent: int, known: Sequence[int]) -> int | None:
+    """The level of ``known`` nearest to ``percent``; a level strictly between 0 and 100 goes to one strictly
+    between them where there is one ("lower the blinds to 10 percent" leaves them a little open, not shut).
+    Ties go to the lower level. None when ``known`` is empty."""
+    inner = [p for p in known if 0 < p < 100]
+    pool = inner if 0 < percent < 100 and inner else list(known)
+    return min(pool, key=lambda p: (abs(p - percent), p)) if pool else None
 
 
 def _sourced(frame: CommandFrame, vocabulary: Vocabulary, theme: str) -> list[Fact]:

@@ -25,7 +25,7 @@ import numpy as np
 import numpy.typing as npt
 
 from core.errors import AudioError
-from knic.language.speech import MODEL_RATE, load_audio
+from knic.language.audio import MODEL_RATE, load_audio
 
 #: The command that records the default microphone as raw 16 kHz mono 16-bit PCM.
 MICROPHONE_COMMAND = ["arecord", "-q", "-t", "raw", "-f", "S16_LE", "-r", str(MODEL_RATE), "-c", "1"]

@@ -27,23 +27,27 @@ import contextlib
 import hashlib
 import itertools
 import math
+import os
+import shutil
+import struct
 import tempfile
 import time
 from collections.abc import Callable, Mapping
 from pathlib import Path
-from typing import Protocol
-
-import numpy as np
-import numpy.typing as npt
+from typing import TYPE_CHECKING, Any, Protocol
 
 from core.errors import LanguageError
 from knic.language.acoustic import DEFAULT_ACOUSTIC_MODEL, acoustic_model_options, wheel_model_dir
+from knic.language.audio import Transcript, duration_of, pad_pcm, pcm_bytes
 from knic.language.commands import command_language
 from knic.language.ngram import arpa_from_sentences
 from knic.language.reader import AmbiguityError, Reader
 from knic.language.sampling import FIRST_PHRASE_SHARE, sample_sentences
-from knic.language.speech import MODEL_RATE, Transcript, load_audio, pad
 from knic.language.vocabulary import Vocabulary
+
+if TYPE_CHECKING:
+    import numpy as np
+    import numpy.typing as npt
 
 #: Sentences sampled for the model. Measured on the development sets with the templates of 28 Nov 2026 (263
 #: commands in 10 voices, 134 other utterances; see :data:`CONFIDENCE_THRESHOLD`): frame+args 0.817 with 4000,
@@ -64,8 +68,11 @@ SENTENCES = 12000
 #: word strings) gained at most one point of rejection for a point of frame+args. The previous measure (the
 #: difference of the two scores as probabilities, per frame) depended on the voice much more. With dither
 #: (below) a speech_voices_dev command fell to -0.00097: -0.001 keeps it, other speech rejected
-#: speech_ood_dev 1.0, speech_voices_dev 0.913 (at -0.0012: 0.917 and 0.902).
-CONFIDENCE_THRESHOLD = -0.001
+#: speech_ood_dev 1.0, speech_voices_dev 0.913 (at -0.0012: 0.917 and 0.902). With the stdlib padding noise
+#: of :mod:`knic.language.audio` (28 Nov 2026; the same dev sets, frame+args / other speech rejected):
+#: -0.0006: 0.825 / 0.963; -0.0008: 0.829 / 0.955; -0.001: 0.840 / 0.925; -0.0011: 0.840 / 0.925; -0.0012:
+#: 0.844 / 0.910. -0.0011 keeps a speech_voices_dev command that fell to -0.00110 at the same rejection.
+CONFIDENCE_THRESHOLD = -0.0011
 #: Decoder options, set on the development set (``knic bench speech --decoder ngram --fixtures
 #: tests/fixtures/speech_people/dev --option KEY=VALUE``, decoding once and reading the figures per option):
 #: the lattice best path on (the n-gram search benefits from it, and the N-best list comes from the lattice);
@@ -74,7 +81,8 @@ CONFIDENCE_THRESHOLD = -0.001
 #: (0.69), wider beams (0.69), maxhmmpf 3000 with topn 2 (0.69, 15% less CPU), ds 2 (0.67, 20% less CPU);
 #: all at wip 0.65. With the 3000-sentence adaptation: the 2 best Gaussians per mixture instead of 4 (topn:
 #: the n-gram pass ~20% less CPU; dev frame+args 0.878 -> 0.871, people's dev set 0.887 -> 0.896).
-#: Dither (a half bit of noise, fixed seed): digital silence, as in synthesised recordings, is not what a
+#: Dither (a half bit of noise, fixed seed, restarted for every utterance so that a result does not depend on
+#: what was decoded before): digital silence, as in synthesised recordings, is not what a
 #: microphone gives: without it the 3000-sentence adaptation added words at the end of the Granny Annie voice
 #: bank's requests ("switch on the hallway plant"); with it the bank's requests read right 15 -> 20 of 24,
 #: people's dev set 0.896 -> 0.904, speech_voices_dev 0.821 -> 0.810, other speech rejected 1.0 both.
@@ -134,8 +142,8 @@ class NgramRecognizer:
             hypotheses it reads becomes the transcript (0: the best hypothesis, always).
         reads: whether the reader understands a text (default: the world's
             :class:`~knic.language.reader.Reader` reads it, or finds it ambiguous).
-        phone_options: pocketsphinx options of the phone-loop pass over :data:`PHONE_DECODER_OPTIONS` (when
-            both are empty the phone loop is a second search of the n-gram decoder).
+        phone_options: pocketsphinx options of the phone-loop pass (:class:`PhoneLoop`) over
+            ``decoder_options`` and :data:`PHONE_DECODER_OPTIONS`.
 
     Raises:
         LanguageError: pocketsphinx refuses the options, the model or the phone loop.
@@ -179,40 +187,28 @@ class NgramRecognizer:
                 decoder = Decoder(lm=None, loglevel="FATAL", **{**options, "dict": str(dictionary)})
             except (KeyError, ValueError, TypeError, RuntimeError) as exc:
                 raise LanguageError(f"pocketsphinx refused the decoder options {options}: {exc}") from exc
-            path = Path(tmp) / "commands.arpa"
-            path.write_text(arpa, encoding="utf-8")
-            phone_settings = {**PHONE_DECODER_OPTIONS, **(phone_options or {})}
             try:
-                decoder.add_lm_file("ngram", str(path))
-                if not phone_settings:  # the phone loop as a second search of the same decoder
-                    decoder.add_allphone_file("phones", str(wheel_model_dir() / "en-us-phone.lm.bin"))
+                decoder.add_lm("ngram", _binary_model(decoder, arpa))
                 decoder.activate_search("ngram")
             except (RuntimeError, ValueError) as exc:
                 raise LanguageError(f"pocketsphinx refused the command language model: {exc}") from exc
-            self._phones = decoder
-            if phone_settings:  # a decoder of its own, with its own frame rate and Gaussian selection
-                phone_dict = Path(tmp) / "phones.dict"
-                phone_dict.write_text("".join(lines[:1]), encoding="utf-8")
-                try:
-                    self._phones = Decoder(
-                        lm=None,
-                        loglevel="FATAL",
-                        **{**options, **phone_settings, "dict": str(phone_dict)},
-                    )
-                    self._phones.add_allphone_file("phones", str(wheel_model_dir() / "en-us-phone.lm.bin"))
-                    self._phones.activate_search("phones")
-                except (KeyError, ValueError, TypeError, RuntimeError) as exc:
-                    raise LanguageError(
-                        f"pocketsphinx refused the phone-loop options {phone_settings}: {exc}"
-                    ) from exc
         self._decoder = decoder
         self._initial_cmn = decoder.get_cmn()
-        self._phones_cmn = self._phones.get_cmn()
+        self._acoustic_model = acoustic_model
+        self._phone_options = {**(decoder_options or {}), **PHONE_DECODER_OPTIONS, **(phone_options or {})}
+        self._phone_loop: PhoneLoop | None = None
 
-    def _decode(self, search: str, raw: bytes) -> tuple[str, float, int]:
-        decoder = self._phones if search == "phones" else self._decoder
-        decoder.activate_search(search)
-        decoder.set_cmn(self._phones_cmn if search == "phones" else self._initial_cmn)
+    @property
+    def phone_loop(self) -> PhoneLoop:
+        """The phone-loop pass, built on first use (it is not needed for speech the reader refuses)."""
+        if self._phone_loop is None:
+            self._phone_loop = PhoneLoop(self._acoustic_model, self._phone_options)
+        return self._phone_loop
+
+    def _decode(self, raw: bytes) -> tuple[str, float, int]:
+        decoder = self._decoder
+        decoder.reinit_feat()  # the dither's noise starts afresh: the same audio decodes the same way
+        decoder.set_cmn(self._initial_cmn)
         decoder.start_utt()
         decoder.process_raw(raw, full_utt=True)
         decoder.end_utt()
@@ -239,7 +235,12 @@ class NgramRecognizer:
         snapped = next((h for h in hypotheses if h and h != text and self.reads(h)), None)
         return (snapped, True) if snapped else (text, False)
 
-    def recognize(self, audio: str | Path | npt.NDArray[np.int16]) -> Transcript:
+    def recognize(
+        self,
+        audio: str | Path | bytes | npt.NDArray[np.int16],
+        *,
+        phone_score: Callable[[], float] | None = None,
+    ) -> Transcript:
         """Decode one utterance; ``in_grammar`` is False when the confidence is below the threshold.
 
         When the reader reads none of the hypotheses the command is refused whatever the confidence, so the
@@ -247,22 +248,119 @@ class NgramRecognizer:
         turns away most other speech at half the cost (dev: the reader refused 86% of it, and 17% of the
         commands, which it would have refused as well).
 
+        Args:
+            audio: a WAV path, raw 16 kHz mono 16-bit PCM bytes, or samples.
+            phone_score: the phone loop's best path score of this utterance when it is computed elsewhere
+                (:func:`phone_score_in_background`); default: this recogniser's :attr:`phone_loop`.
+
         Raises:
             AudioError: the file is not usable audio.
         """
-        samples = audio if isinstance(audio, np.ndarray) else load_audio(audio)
-        raw = pad(samples).tobytes()
-        duration = len(samples) / MODEL_RATE
+        samples = pcm_bytes(audio)
+        raw = pad_pcm(samples)
         started = time.perf_counter()
-        text, score, frames = self._decode("ngram", raw)
+        text, score, frames = self._decode(raw)
         text, read = self._snap(text)
         if not read:
             elapsed = (time.perf_counter() - started) * 1000.0
-            return Transcript(text, False, math.nan if text else float("-inf"), duration, elapsed)
-        _, phone_score, _ = self._decode("phones", raw)
+            return Transcript(text, False, math.nan if text else float("-inf"), duration_of(samples), elapsed)
+        reference = phone_score() if phone_score is not None else self.phone_loop.score(raw)
         elapsed = (time.perf_counter() - started) * 1000.0
-        level = confidence(score, phone_score, frames)
-        return Transcript(text, level >= self.threshold, level, duration, elapsed)
+        level = confidence(score, reference, frames)
+        return Transcript(text, level >= self.threshold, level, duration_of(samples), elapsed)
+
+
+class PhoneLoop:
+    """pocketsphinx's unconstrained phone loop: the best path score of any phone sequence for an utterance,
+    the reference of :func:`confidence`.
+
+    Args:
+        acoustic_model: as for :class:`NgramRecognizer`.
+        options: pocketsphinx options over :data:`PHONE_DECODER_OPTIONS`.
+
+    Raises:
+        LanguageError: pocketsphinx refuses the options or the phone model.
+    """
+
+    def __init__(
+        self, acoustic_model: str | Path = DEFAULT_ACOUSTIC_MODEL, options: Mapping[str, object] | None = None
+    ):
+        from pocketsphinx import Decoder, set_loglevel
+
+        set_loglevel("FATAL")
+        settings = {
+            **NGRAM_DECODER_OPTIONS,  # dither and the rest as in the n-gram pass it is set against
+            **acoustic_model_options(acoustic_model, decoder="ngram"),
+            **PHONE_DECODER_OPTIONS,
+            **(options or {}),
+        }
+        with tempfile.TemporaryDirectory(prefix="knic-phones-") as tmp:
+            dictionary = Path(tmp) / "phones.dict"  # the decoder wants a dictionary; the phone loop uses none
+            dictionary.write_text("a AH\n", encoding="utf-8")
+            try:
+                self._decoder = Decoder(lm=None, loglevel="FATAL", **{**settings, "dict": str(dictionary)})
+                self._decoder.add_allphone_file("phones", str(wheel_model_dir() / "en-us-phone.lm.bin"))
+                self._decoder.activate_search("phones")
+            except (KeyError, ValueError, TypeError, RuntimeError) as exc:
+                raise LanguageError(f"pocketsphinx refused the phone-loop options {settings}: {exc}") from exc
+        self._initial_cmn = self._decoder.get_cmn()
+
+    def score(self, raw: bytes) -> float:
+        """The best phone path's score (a probability, as pocketsphinx hands it over; 0.0: no path) of padded
+        raw audio."""
+        decoder = self._decoder
+        decoder.reinit_feat()
+        decoder.set_cmn(self._initial_cmn)
+        decoder.start_utt()
+        decoder.process_raw(raw, full_utt=True)
+        decoder.end_utt()
+        hyp = decoder.hyp()
+        return float(hyp.best_score) if hyp is not None else 0.0
+
+
+def phone_score_in_background(
+    samples: bytes, acoustic_model: str | Path = DEFAULT_ACOUSTIC_MODEL
+) -> Callable[[], float]:
+    """Start the phone-loop pass of one utterance in a child process; the returned call waits for its score.
+
+    For one-shot listening (``knic say``): the child loads its decoder and decodes while this process loads
+    the world and the command model and decodes, so on two cores the two passes overlap. The child is forked,
+    so call this before the process starts threads. Where ``os.fork`` is missing, or the child fails, the
+    score is computed here when asked for. A score never asked for leaves the child to finish on its own.
+
+    Args:
+        samples: the utterance as raw 16 kHz mono 16-bit PCM, unpadded
+            (:func:`~knic.language.audio.load_pcm`).
+    """
+    raw = pad_pcm(samples)
+
+    def here() -> float:
+        return PhoneLoop(acoustic_model).score(raw)
+
+    if not hasattr(os, "fork"):
+        return here
+    read_end, write_end = os.pipe()
+    pid = os.fork()
+    if pid == 0:  # the child: score, write 8 bytes, leave without running the parent's exit handlers
+        status = 1
+        try:
+            os.close(read_end)
+            os.write(write_end, struct.pack("<d", PhoneLoop(acoustic_model).score(raw)))
+            status = 0
+        finally:
+            os._exit(status)
+    os.close(write_end)
+
+    def wait() -> float:
+        try:
+            with os.fdopen(read_end, "rb") as pipe:
+                data = pipe.read(8)
+        finally:
+            with contextlib.suppress(ChildProcessError):
+                os.waitpid(pid, 0)
+        return struct.unpack("<d", data)[0] if len(data) == 8 else here()
+
+    return wait
 
 
 def confidence(score: float, phone_score: float, frames: int) -> float:
@@ -324,11 +422,36 @@ def _dictionary_lines(source: Path, words: set[str]) -> list[str]:
     return lines
 
 
+def _binary_model(decoder: Any, arpa: str) -> Any:
+    """The ARPA model as pocketsphinx's ``NGramModel``, read from a binary copy kept in the temporary folder
+    by content (reading the binary form takes about 1 ms, parsing the ARPA text about 60).
+
+    Raises:
+        RuntimeError, ValueError: pocketsphinx cannot read the model.
+    """
+    from pocketsphinx import NGramModel
+
+    key = hashlib.sha256(arpa.encode()).hexdigest()[:20]
+    cache = Path(tempfile.gettempdir()) / f"knic-ngram-{key}.lm.bin"
+    if cache.is_file():
+        with contextlib.suppress(RuntimeError, ValueError, OSError):  # unreadable: made again below
+            return NGramModel(decoder.config, decoder.logmath, str(cache))
+    with tempfile.TemporaryDirectory(prefix="knic-lm-") as tmp:
+        path = Path(tmp) / "commands.arpa"
+        path.write_text(arpa, encoding="utf-8")
+        model = NGramModel(decoder.config, decoder.logmath, str(path))
+        with contextlib.suppress(OSError, RuntimeError, ValueError):  # no cache: parsed again next time
+            partial = Path(tmp) / "commands.lm.bin"
+            model.write(str(partial), NGramModel.str_to_type("bin"))
+            shutil.move(str(partial), cache)
+    return model
+
+
 def _model_words(arpa: str) -> set[str]:
     """The words of an ARPA model's 1-grams."""
     found: set[str] = set()
     inside = False
-    for line in arpa.splitlines():
+    for line in arpa.split("\\2-grams:", 1)[0].splitlines():
         if line.startswith("\\1-grams:"):
             inside = True
         elif line.startswith("\\"):
@@ -348,8 +471,8 @@ DECODERS = ("ngram", "grammar")
 class CommandRecognizer(Protocol):
     """What the listening commands need of a decoder: one utterance in, a :class:`Transcript` out."""
 
-    def recognize(self, audio: str | Path | npt.NDArray[np.int16]) -> Transcript:
-        """Decode one utterance (a WAV path or 16 kHz mono samples)."""
+    def recognize(self, audio: str | Path | bytes | npt.NDArray[np.int16]) -> Transcript:
+        """Decode one utterance (a WAV path, raw 16 kHz mono 16-bit PCM or samples)."""
         ...
 
 

@@ -28,6 +28,7 @@ Errors are :class:`~core.errors.LanguageError` with one line for the user; an am
 
 from __future__ import annotations
 
+import contextlib
 import copy
 from collections.abc import Sequence
 
@@ -41,6 +42,8 @@ from knic.language.roles import INTERPRETERS
 from knic.language.vocabulary import Term, Vocabulary, level_percent, normalize
 
 MAX_ACTIONS = 3
+#: "is", "are": after words the world has no name for, what follows is talk, not part of the action
+_COPULAS = frozenset({"is", "are", "was", "were"})
 
 
 class Reader:
@@ -78,7 +81,9 @@ class Reader:
         tokens = normalize(text).split()
         if not tokens:
             raise LanguageError("nothing to understand: the command is empty")
-        chunks = self.chunks(tokens)
+        chunks = self._talk_dropped(self._repaired(self.chunks(tokens)))
+        if not chunks:
+            raise LanguageError(f"no action in '{' '.join(tokens)}': say what to do, e.g. 'bring me ...'")
         context: list[Arg] = []
         clauses = self.clauses(chunks, context)
         if not clauses:
@@ -89,24 +94,118 @@ class Reader:
         if len(clauses) > MAX_ACTIONS:
             raise LanguageError(f"{len(clauses)} actions in one command; I take up to {MAX_ACTIONS} at once")
         frames: list[CommandFrame] = []
-        groups: list[list[CommandFrame]] = [self._mentions(context)]
+        mentioned, located = self._mentions(context)
+        groups: list[list[CommandFrame]] = [mentioned]
         ask_where: set[int] = set()  # "take the cup away": where to, unless a later action says so
+        held: set[int] = set()  # TAKING frames of verbs that only take: nothing carries them on, it holds
+        skipped: LanguageError | None = None  # why the first clause taken as talk was no action
         for clause in clauses:
             try:
                 group = self._frames_of(clause, frames, groups)
             except AmbiguityError:
                 raise
-            except LanguageError:
+            except LanguageError as exc:
                 talk = clause.verb is not None and (clause.verb.soft or clause.names_nothing())
                 if not talk or len(clauses) == 1:
                     raise
                 # "it's getting late, close the blinds", "look, bring me the mug": talk, not an action
+                skipped = skipped or exc
                 continue
-            if clause.unsaid_goal and clause.verb is not None and clause.verb.frames[0] == "TAKING":
-                ask_where.update(range(len(frames), len(frames) + len(group)))
+            indices = range(len(frames), len(frames) + len(group))
+            takes_only = clause.verb is not None and clause.verb.frames[0] == "TAKING"
+            if clause.unsaid_goal and takes_only:
+                ask_where.update(indices)
+            if takes_only and not clause.mine:  # "pick up the box": held; "grab my glasses": for me
+                held.update(indices)
             groups.append(group)
             frames.extend(group)
-        return chain(frames, self.vocabulary, ask_where=ask_where)
+        if not frames:  # every clause was talk
+            raise skipped or LanguageError(f"no action in '{' '.join(tokens)}'")
+        return chain(self._placed(frames, located), self.vocabulary, ask_where=ask_where, held=held)
+
+    def _repaired(self, chunks: list[Chunk]) -> list[Chunk]:
+        """Apply the speaker's corrections ("go to the kitchen, no wait, the dining room"; "bring me the cup,
+        sorry, I meant the mug"; "switch on the light, no, scratch that, open the blinds").
+
+        What follows a repair phrase up to the next verb or joiner replaces the last thing of the same kind
+        said before it (an object, a person, a place, a device, a level or a state); when it starts with a
+        verb, it replaces the last action. A repair with nothing before or after it is dropped.
+        """
+        while any(c.kind == "repair" for c in chunks):
+            at = max(i for i, c in enumerate(chunks) if c.kind == "repair")
+            before, after = chunks[:at], chunks[at + 1 :]
+            words = [c for c in after if c.kind not in ("det", "prep")]
+            if not before or not words:
+                chunks = before + after
+                continue
+            if words[0].kind == "verb":
+                verbs = [i for i, c in enumerate(before) if c.kind == "verb"]
+                start = verbs[-1] if verbs else 0
+                while start > 0 and before[start - 1].kind == "join":
+                    start -= 1
+                chunks = before[:start] + after
+                continue
+            end = next((i for i, c in enumerate(after) if c.kind in ("verb", "join")), len(after))
+            replacement, rest = after[:end], after[end:]
+            kind = self._kind_of(next((c for c in replacement if c.kind not in ("det", "prep")), words[0]))
+            target = next(
+                (i for i in range(len(before) - 1, -1, -1) if self._kind_of(before[i]) == kind), None
+            )
+            if target is None:
+                chunks = before + after
+                continue
+            start = target
+            while start > 0 and before[start - 1].kind == "det":
+                start -= 1
+            if (
+                replacement
+                and replacement[0].kind == "prep"
+                and start > 0
+                and before[start - 1].kind == "prep"
+            ):
+                start -= 1  # "to the kitchen ... no, to the dining room"
+            chunks = before[:start] + replacement + before[target + 1 :] + rest
+        return chunks
+
+    def _kind_of(self, chunk: Chunk) -> str:
+        """What a chunk names, for corrections: object, person, place, device, level, state or its kind."""
+        if chunk.kind == "me":
+            return "person"
+        if chunk.kind in ("level", "number"):
+            return "level"
+        if chunk.kind != "entity" or not chunk.terms:
+            return chunk.kind
+        for kind, categories in (
+            ("person", ("person",)),
+            ("object", ("item",)),
+            ("device", ("device",)),
+            ("place", ("room", "furniture")),
+        ):
+            if any(self.is_a(t, c) for t in chunk.terms for c in categories):
+                return kind
+        return "entity"
+
+    def _talk_dropped(self, chunks: list[Chunk]) -> list[Chunk]:
+        """Drop what is said about things the world lacks after an action ("close the blinds, the sun's in
+        my eyes"): a copula after words the world has no name for, from those words to the next verb or
+        joiner. Such talk before the first verb already makes no action."""
+        out = list(chunks)
+        at = len(out)
+        while at > 1:
+            at = min(at, len(out)) - 1
+            if out[at].kind != "unknown" or out[at].text not in _COPULAS:
+                continue
+            start = at
+            while start > 0 and out[start - 1].kind in ("unknown", "det"):
+                start -= 1
+            subject = out[start:at]
+            verbs = [i for i, c in enumerate(out[:start]) if c.kind == "verb"]
+            said = verbs and any(c.kind in ("entity", "me", "pronoun") for c in out[verbs[-1] : start])
+            if not said or not any(c.kind == "unknown" for c in subject):
+                continue  # "check whether the front door is open": what the verb asks about
+            end = next((i for i in range(at, len(out)) if out[i].kind in ("verb", "join")), len(out))
+            del out[start:end]
+        return out
 
     def _frames_of(
         self, clause: Clause, previous: list[CommandFrame], groups: list[list[CommandFrame]]
@@ -131,15 +230,46 @@ class Reader:
         verb = clause.verb.text if clause.verb is not None else "the command"
         raise first_error or LanguageError(f"I do not know how to '{verb}' that")
 
-    def _mentions(self, context: list[Arg]) -> list[CommandFrame]:
+    def _mentions(self, context: list[Arg]) -> tuple[list[CommandFrame], dict[str, str]]:
         """Things named before the first verb without making an action ("my glasses are in the bedroom,
-        bring them to me"), as frames for pronouns to refer to (the earliest group; never goals)."""
+        bring them to me"), as frames for pronouns to refer to (the earliest group; never goals), and where
+        the command says each of them is ("there's a mug on the table in the kitchen": the kitchen table).
+        """
         mentioned: list[CommandFrame] = []
-        for arg in context:
+        located: dict[str, str] = {}
+        args = copy.deepcopy(context)
+        with contextlib.suppress(LanguageError):  # a place that fits nothing leaves the things unplaced
+            self.narrow(args)
+        last: str | None = None
+        for arg in args:
             symbols = {t.symbol for t in arg.chunk.terms}
-            if arg.chunk.kind == "entity" and len(symbols) == 1:
-                mentioned.append(CommandFrame("SEARCHING", {"theme": symbols.pop()}))
-        return mentioned
+            if arg.consumed or arg.chunk.kind != "entity" or len(symbols) != 1:
+                continue
+            symbol = symbols.pop()
+            if arg.prep is None:
+                mentioned.append(CommandFrame("SEARCHING", {"theme": symbol}))
+                last = symbol
+            elif (
+                arg.prep == "place"
+                and last is not None
+                and any(self.is_a(t, "room") or self.is_a(t, "furniture") for t in arg.chunk.terms)
+            ):
+                located.setdefault(last, symbol)
+        return mentioned, located
+
+    @staticmethod
+    def _placed(frames: list[CommandFrame], located: dict[str, str]) -> list[CommandFrame]:
+        """Give each action on a thing the command said is somewhere that place as its source or ground,
+        where the action says none."""
+        out = []
+        for frame in frames:
+            role = "ground" if frame.kind == "SEARCHING" else "source"
+            where = located.get(frame.get("theme") or "")
+            carry = frame.kind in ("BRINGING", "TAKING", "PLACING", "SEARCHING")
+            if where and carry and frame.get(role) is None and where != frame.get("goal"):
+                frame = CommandFrame(frame.kind, {**frame.args, role: where})
+            out.append(frame)
+        return out
 
     def _there(self, clause: Clause, previous: list[CommandFrame]) -> None:
         """'there': the place the latest earlier action named (its goal, ground or source). With no place

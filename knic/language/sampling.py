@@ -12,6 +12,7 @@ import random
 from collections.abc import Iterator
 from dataclasses import dataclass
 
+from knic.language.clauses import SPEAKERS_OWN
 from knic.language.commands import command_grammar, command_language
 from knic.language.frames import CommandFrame
 from knic.language.grammar import Alt, Bind, Frame, Grammar, Node, Opt, Ref, Repeat, Seq, Slot, Words
@@ -70,7 +71,8 @@ def sample_sentences(
         if not said or walker.dropped or exclude_words.intersection(words):
             continue
         made += 1
-        yield Sample(" ".join(words), tuple(chain(said, vocabulary).frames) if frames else tuple(said))
+        resolved = chain(said, vocabulary, held=walker.held).frames if frames else said
+        yield Sample(" ".join(words), tuple(resolved))
 
 
 class _Walker:
@@ -89,6 +91,8 @@ class _Walker:
         self.dropped = 0
         #: a whole-command phrasing (:attr:`Frame.alone`) was said: no further action
         self.closed = False
+        #: indices of the TAKING frames said with a verb that only takes (:func:`~knic.language.chains.chain`)
+        self.held: set[int] = set()
         #: pronoun -> the type it refers to ("any": whatever the frame needs)
         self.pronouns = command_language().pronouns
 
@@ -171,6 +175,10 @@ class _Walker:
                 return
             if kind == "BRINGING" and "goal" not in inner and "beneficiary" not in inner:
                 kind = "TAKING"  # as the reader: a later action may say where it goes, else it is for me
+            elif kind == "TAKING" and not SPEAKERS_OWN.intersection(words[start:]):
+                self.held.add(
+                    len(frames)
+                )  # as the reader: "pick up the box" is held ("grab my glasses": mine)
             frames.append(CommandFrame(kind, inner))
 
 

@@ -1,10 +1,7 @@
 """Spoken commands: WAV audio to a transcript with pocketsphinx and a JSGF grammar from the vocabulary.
 
-Audio: WAV files only (RIFF/WAVE, integer PCM of 8, 16, 24 or 32 bits or IEEE float of 32 or 64 bits, any
-rate, any channel count). Audio is mixed down to mono and resampled in-process to the acoustic model's 16 kHz
-(windowed-sinc low-pass, then linear interpolation), then padded with silence (0.2 s before, 0.5 s after: the
-grammar search needs trailing silence to finish the last word). Anything else raises
-:class:`~core.errors.AudioError` before the decoder is touched.
+Audio: WAV files or 16 kHz mono 16-bit samples, read and padded by :mod:`knic.language.audio` (its names are
+see there).
 
 Recognition: pocketsphinx 5 with the US English acoustic model and dictionary from the wheel, by default
 MAP-adapted to espeak-ng speech (:mod:`knic.language.acoustic`: the simulated apartment's people speak with
@@ -33,28 +30,23 @@ Lifecycle: build one :class:`Recognizer` per vocabulary (about 0.3 s: model load
 
 from __future__ import annotations
 
-import struct
 import tempfile
 import time
 from collections.abc import Mapping, Sequence
-from dataclasses import dataclass
 from pathlib import Path
+from typing import TYPE_CHECKING
 
-import numpy as np
-import numpy.typing as npt
-
-from core.errors import AudioError, LanguageError
+from core.errors import LanguageError
 from knic.language.acoustic import DEFAULT_ACOUSTIC_MODEL, acoustic_model_options
 from knic.language.answers import answer_phrases
+from knic.language.audio import Transcript, duration_of, pad_pcm, pcm_bytes
 from knic.language.fsg import answer_graph, compile_word_graph
 from knic.language.grammar import Grammar, grammar_words, to_jsgf
 from knic.language.vocabulary import Vocabulary
 
-#: The acoustic model's sample rate (Hz).
-MODEL_RATE = 16000
-#: Silence added before and after the audio (s).
-LEAD_SILENCE = 0.2
-TRAIL_SILENCE = 0.5
+if TYPE_CHECKING:
+    import numpy as np
+    import numpy.typing as npt
 
 #: Decoder options (pocketsphinx configuration names).
 #: bestpath off: the lattice best-path pass of pocketsphinx 5 can return a partial path that does not reach
@@ -93,136 +85,6 @@ _FILLER_TEXT = """
     best since man own getting another few bad part live family ever gonna went someone
 """
 FILLER_WORDS = tuple(_FILLER_TEXT.split())
-
-
-@dataclass(frozen=True)
-class Transcript:
-    """What the recogniser heard.
-
-    Attributes:
-        text: the best hypothesis (lowercase words); "" when nothing matched the grammar at all.
-        in_grammar: False when the hypothesis went through the filler loop or nothing was decoded.
-        score: the decoder's path score for the hypothesis (log domain, larger is better; 0 when empty).
-        duration: audio length before padding (s).
-        decode_ms: wall-clock decoding time (ms).
-    """
-
-    text: str
-    in_grammar: bool
-    score: float
-    duration: float
-    decode_ms: float
-
-
-def read_wav(path: str | Path) -> tuple[npt.NDArray[np.float64], int]:
-    """Read a WAV file as float samples in [-1, 1], shape (frames, channels), and its sample rate (Hz).
-
-    Raises:
-        AudioError: the file is missing, not RIFF/WAVE, uses an unsupported encoding, or holds no samples.
-    """
-    path = Path(path)
-    try:
-        data = path.read_bytes()
-    except OSError as exc:
-        raise AudioError(f"{path}: cannot read audio file: {exc.strerror or exc}") from exc
-    if len(data) < 12 or data[:4] != b"RIFF" or data[8:12] != b"WAVE":
-        raise AudioError(f"{path}: not a WAV file (RIFF/WAVE header missing); only WAV audio is accepted")
-    fmt: tuple[int, int, int, int] | None = None
-    pcm: bytes | None = None
-    offset = 12
-    while offset + 8 <= len(data):
-        chunk_id, size = data[offset : offset + 4], struct.unpack("<I", data[offset + 4 : offset + 8])[0]
-        body = data[offset + 8 : offset + 8 + size]
-        if chunk_id == b"fmt " and len(body) >= 16:
-            tag, channels, rate, _, _, bits = struct.unpack("<HHIIHH", body[:16])
-            if tag == 0xFFFE and len(body) >= 26:  # WAVE_FORMAT_EXTENSIBLE: the sub-format's first two bytes
-                tag = struct.unpack("<H", body[24:26])[0]
-            fmt = (tag, channels, rate, bits)
-        elif chunk_id == b"data":
-            pcm = body
-        offset += 8 + size + (size & 1)
-    if fmt is None or pcm is None:
-        raise AudioError(f"{path}: WAV file without a 'fmt ' or 'data' chunk")
-    tag, channels, rate, bits = fmt
-    if channels < 1 or rate < 1000:
-        raise AudioError(f"{path}: implausible WAV header ({channels} channels, {rate} Hz)")
-    samples = _decode_samples(path, pcm, tag, bits)
-    usable = len(samples) - len(samples) % channels
-    if usable == 0:
-        raise AudioError(f"{path}: WAV file holds no audio samples")
-    return samples[:usable].reshape(-1, channels), rate
-
-
-def _decode_samples(path: Path, pcm: bytes, tag: int, bits: int) -> npt.NDArray[np.float64]:
-    if tag == 1 and bits == 8:
-        return (np.frombuffer(pcm, dtype=np.uint8).astype(np.float64) - 128.0) / 128.0
-    if tag == 1 and bits == 16:
-        return np.frombuffer(pcm[: len(pcm) // 2 * 2], dtype="<i2").astype(np.float64) / 32768.0
-    if tag == 1 and bits == 24:
-        raw = np.frombuffer(pcm[: len(pcm) // 3 * 3], dtype=np.uint8).reshape(-1, 3).astype(np.int32)
-        values = raw[:, 0] | (raw[:, 1] << 8) | (raw[:, 2] << 16)
-        values = np.where(values >= 1 << 23, values - (1 << 24), values)
-        return values.astype(np.float64) / float(1 << 23)
-    if tag == 1 and bits == 32:
-        return np.frombuffer(pcm[: len(pcm) // 4 * 4], dtype="<i4").astype(np.float64) / float(1 << 31)
-    if tag == 3 and bits in (32, 64):
-        dtype = "<f4" if bits == 32 else "<f8"
-        size = bits // 8
-        return np.clip(
-            np.frombuffer(pcm[: len(pcm) // size * size], dtype=dtype).astype(np.float64), -1.0, 1.0
-        )
-    raise AudioError(f"{path}: unsupported WAV encoding (format tag {tag}, {bits} bits); use PCM or float")
-
-
-def to_model_audio(samples: npt.NDArray[np.float64], rate: int) -> npt.NDArray[np.int16]:
-    """Mix down to mono, resample to :data:`MODEL_RATE` and convert to 16-bit PCM.
-
-    Args:
-        samples: float samples in [-1, 1], shape (frames,) or (frames, channels).
-        rate: their sample rate (Hz).
-    """
-    mono = samples.mean(axis=1) if samples.ndim == 2 else samples
-    if rate != MODEL_RATE:
-        mono = resample(mono, rate, MODEL_RATE)
-    return np.asarray(np.clip(np.round(mono * 32767.0), -32768, 32767), dtype=np.int16)
-
-
-def resample(signal: npt.NDArray[np.float64], rate: int, target: int) -> npt.NDArray[np.float64]:
-    """Resample a mono signal: windowed-sinc low-pass below the lower Nyquist rate, then linear interpolation.
-
-    Args:
-        signal: mono samples.
-        rate: their rate (Hz).
-        target: the wanted rate (Hz).
-    """
-    if rate == target or len(signal) == 0:
-        return signal
-    if target < rate:
-        cutoff = 0.45 * target / rate  # cycles per input sample, a little under the new Nyquist rate
-        taps = np.arange(-32, 33)
-        kernel = 2 * cutoff * np.sinc(2 * cutoff * taps) * np.hamming(len(taps))
-        signal = np.convolve(signal, kernel / kernel.sum(), mode="same")
-    count = max(1, round(len(signal) * target / rate))
-    positions = np.arange(count) * (rate / target)
-    return np.interp(positions, np.arange(len(signal)), signal)
-
-
-def load_audio(path: str | Path) -> npt.NDArray[np.int16]:
-    """A WAV file as 16 kHz mono 16-bit samples ready for the decoder (no padding)."""
-    samples, rate = read_wav(path)
-    return to_model_audio(samples, rate)
-
-
-def pad(audio: npt.NDArray[np.int16]) -> npt.NDArray[np.int16]:
-    """Add :data:`LEAD_SILENCE` and :data:`TRAIL_SILENCE` of near-silence.
-
-    The padding is faint deterministic noise (about 3 LSB RMS), not digital zeros: all-zero frames have no
-    defined log energy and upset the decoder's cepstral normalisation.
-    """
-    rng = np.random.default_rng(0)
-    lead = rng.normal(0.0, 3.0, int(LEAD_SILENCE * MODEL_RATE))
-    trail = rng.normal(0.0, 3.0, int(TRAIL_SILENCE * MODEL_RATE))
-    return np.concatenate([lead.astype(np.int16), audio, trail.astype(np.int16)])
 
 
 class Recognizer:
@@ -319,22 +181,22 @@ class Recognizer:
                     known.append(variant)
                     self.added_pronunciations[name] = variant
 
-    def recognize(self, audio: str | Path | npt.NDArray[np.int16]) -> Transcript:
-        """Decode one utterance: a WAV file path or 16 kHz mono int16 samples.
+    def recognize(self, audio: str | Path | bytes | npt.NDArray[np.int16]) -> Transcript:
+        """Decode one utterance: a WAV file path, raw 16 kHz mono 16-bit PCM or int16 samples.
 
         Raises:
-            AudioError: the file is not usable audio (see :func:`read_wav`).
+            AudioError: the file is not usable audio (see :func:`knic.language.audio.read_wav`).
         """
-        samples = audio if isinstance(audio, np.ndarray) else load_audio(audio)
+        raw = pcm_bytes(audio)
         started = time.perf_counter()
         decoder = self._decoder
         decoder.set_cmn(self._initial_cmn)  # every utterance starts from the same cepstral mean: order-free
         decoder.start_utt()
-        decoder.process_raw(pad(samples).tobytes(), full_utt=True)
+        decoder.process_raw(pad_pcm(raw), full_utt=True)
         decoder.end_utt()
         hyp = decoder.hyp()
         elapsed = (time.perf_counter() - started) * 1000.0
-        duration = len(samples) / MODEL_RATE
+        duration = duration_of(raw)
         if hyp is None or not hyp.hypstr.strip():
             return Transcript("", False, 0.0, duration, elapsed)
         text = " ".join(hyp.hypstr.split())
@@ -421,7 +283,7 @@ class AnswerRecognizer:
         self._decoder = decoder
         self._initial_cmn = decoder.get_cmn()
 
-    def recognize(self, audio: str | Path | npt.NDArray[np.int16], *, closed: bool = False) -> str:
+    def recognize(self, audio: str | Path | bytes | npt.NDArray[np.int16], *, closed: bool = False) -> str:
         """The answer words heard ("yes", "no please", ...), or "" when the speech was not an answer.
 
         Args:
@@ -432,12 +294,12 @@ class AnswerRecognizer:
         Raises:
             AudioError: the file is not usable audio.
         """
-        samples = audio if isinstance(audio, np.ndarray) else load_audio(audio)
+        raw = pcm_bytes(audio)
         decoder = self._decoder
         decoder.activate_search("closed" if closed else "answer")
         decoder.set_cmn(self._initial_cmn)
         decoder.start_utt()
-        decoder.process_raw(pad(samples).tobytes(), full_utt=True)
+        decoder.process_raw(pad_pcm(raw), full_utt=True)
         decoder.end_utt()
         hyp = decoder.hyp()
         words = hyp.hypstr.split() if hyp is not None else []

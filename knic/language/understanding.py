@@ -22,7 +22,7 @@ from knic.language.vocabulary import Vocabulary
 from knowledge_base import Fact
 
 if TYPE_CHECKING:
-    from knic.language.speech import Transcript
+    from knic.language.audio import Transcript
 
 DEFAULT_SPEAKER = "annie"
 
@@ -41,6 +41,8 @@ class Understanding:
         question: for an ambiguous command, the question to ask back ("which table do you mean: ...?").
         hints: where the command says things are, as ``possibly_at`` assumptions for the planner's search
             (see :func:`knic.language.goals.hints`); not goals.
+        notes: what the goals do differently from what was said, to tell the speaker (a level the world
+            lacks set to the nearest one it has).
     """
 
     text: str
@@ -52,6 +54,7 @@ class Understanding:
     extra: dict[str, Any] = field(default_factory=dict, compare=False)
     question: str = ""
     hints: tuple[Fact, ...] = ()
+    notes: tuple[str, ...] = ()
 
     def to_dict(self) -> dict[str, Any]:
         """The JSON form printed by ``knic goal --json``.
@@ -70,6 +73,8 @@ class Understanding:
             data["question"] = self.question
         if self.hints:
             data["hints"] = [str(h) for h in self.hints]
+        if self.notes:
+            data["notes"] = list(self.notes)
         data.update(self.extra)
         return data
 
@@ -110,14 +115,21 @@ def understand(
     except LanguageError as exc:
         return Understanding(text, reason=str(exc), speaker=speaker)
     frames = tuple(reading.frames)
+    notes: list[str] = []
     try:
-        goals = frames_to_goals(frames, vocabulary, speaker=speaker, waypoints=reading.waypoints)
+        goals = frames_to_goals(frames, vocabulary, speaker=speaker, waypoints=reading.waypoints, notes=notes)
     except LanguageError as exc:
         return Understanding(text, frames, reason=str(exc), speaker=speaker)
     if not goals:
         return Understanding(text, frames, reason="the command asks for nothing to achieve", speaker=speaker)
     return Understanding(
-        text, frames, tuple(goals), accepted=True, speaker=speaker, hints=tuple(hints(frames, vocabulary))
+        text,
+        frames,
+        tuple(goals),
+        accepted=True,
+        speaker=speaker,
+        hints=tuple(hints(frames, vocabulary)),
+        notes=tuple(notes),
     )
 
 

@@ -31,7 +31,7 @@ def decode_wav(data: bytes) -> npt.NDArray[np.int16]:
     Raises:
         AudioError: not a PCM WAV file, no samples, or longer than :data:`MAX_SECONDS`.
     """
-    from knic.language.speech import to_model_audio
+    from knic.language.audio import to_model_audio
 
     if len(data) < 12 or data[:4] != b"RIFF" or data[8:12] != b"WAVE":
         raise AudioError("upload: not a WAV file (RIFF/WAVE header missing)")

@@ -25,8 +25,27 @@ def test_a_room_light_may_be_its_dimmer(vocabulary: Vocabulary, text: str, goal:
 def test_what_the_world_lacks_is_named(vocabulary: Vocabulary) -> None:
     result = understand("turn off the kitchen light", vocabulary)
     assert not result.accepted and "no light in the kitchen" in result.reason
-    result = understand("dim the living room light to thirty percent", vocabulary)
-    assert not result.accepted and "no level of 30 percent (it has 0, 25, 50, 75, 100)" in result.reason
+
+
+@pytest.mark.parametrize(
+    ("text", "level"),
+    [
+        ("dim the living room light to thirty percent", "living_room_dimmer l25"),
+        ("set the dimmer to 40%", "living_room_dimmer l50"),
+        ("lower the blinds to 10 percent", "bedroom_blinds l25"),  # a little open, not shut
+        ("open the blinds to 95 percent", "bedroom_blinds l75"),
+        ("set the dimmer to 3 percent", "living_room_dimmer l25"),
+    ],
+)
+def test_a_level_the_world_lacks_goes_to_the_nearest_with_a_note(
+    vocabulary: Vocabulary, text: str, level: str
+) -> None:
+    result = understand(text, vocabulary)
+    assert result.accepted, result.reason
+    assert [str(g) for g in result.goals] == [f"(device_level {level})"]
+    said = result.frames[0]["state"]
+    assert len(result.notes) == 1 and f"nearest level to {said}" in result.notes[0]
+    assert result.to_dict()["notes"] == list(result.notes)
 
 
 @pytest.mark.parametrize("text", ["come to me", "take the mug to the kitchen and then come back to me"])

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+from pathlib import Path
 
 import pytest
 
@@ -25,7 +26,24 @@ def test_the_held_out_set_stays_above_the_floor() -> None:
 def test_bench_language_prints_dev_and_test(capsys: pytest.CaptureFixture[str]) -> None:
     assert main(["bench", "language", "--json"]) == 0
     data = json.loads(capsys.readouterr().out)
-    assert set(data) == {"dev", "test"}
+    assert set(data) == {"dev", "test", "people2-dev", "people2-test"}
     for figures in data.values():
         assert 0.0 <= figures["accuracy"] <= 1.0 and figures["cases"] >= 40
         assert {"fillers", "relative", "chains", "levels", "several"} <= set(figures["by_class"])
+
+
+def test_bench_language_runs_a_set_of_ones_own(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    own = tmp_path / "mine.yaml"
+    own.write_text(
+        "cases:\n"
+        '  - {text: "pick up the apple", frames: ["TAKING theme=apple"], class: plain}\n'
+        '  - {text: "fully open the blinds", frames: ["OPERATING device=bedroom_blinds state=open"]}\n'
+        '  - {text: "bring me the banana", reject: "banana", class: missing}\n'
+    )
+    assert main(["bench", "language", "--file", str(own), "--json"]) == 0
+    figures = json.loads(capsys.readouterr().out)[str(own)]
+    assert figures["cases"] == 3 and figures["accuracy"] == 1.0  # "open" is the blinds at 100 percent
+    assert figures["goal_accuracy"] is None  # no gold goals: judged by the frames
+    own.write_text("cases: [{text: 1}\n")
+    assert main(["bench", "language", "--file", str(own)]) == 2
+    assert "mine.yaml:2: not valid YAML" in capsys.readouterr().err

@@ -10,8 +10,8 @@ import numpy as np
 import pytest
 
 from knic.cli import main
+from knic.language.audio import MODEL_RATE, load_audio
 from knic.language.listen import segments
-from knic.language.speech import MODEL_RATE, load_audio
 
 from .conftest import SPEECH_FIXTURES
 

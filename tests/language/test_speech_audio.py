@@ -10,7 +10,7 @@ import numpy as np
 import pytest
 
 from core.errors import AudioError
-from knic.language.speech import MODEL_RATE, load_audio, pad, read_wav, resample
+from knic.language.audio import MODEL_RATE, load_audio, pad, read_wav, resample
 
 from .conftest import SPEECH_FIXTURES
 

@@ -183,7 +183,6 @@ REJECTED = [
     ("colorless green ideas sleep furiously", "colorless"),  # nonsense
     ("", "empty"),
     ("bring me", "what?"),
-    ("set the dimmer to 30 percent", "30 percent"),  # a level the domain has no constant for
     ("lead the mug to the kitchen", "mug"),  # wrong kind of thing
     ("bring it to me", "'it'"),  # pronoun without a referent
     ("go to the kitchen and go to the bedroom", "contradict"),
@@ -282,7 +281,10 @@ PHRASED = [
     ("switch off every light", ["OPERATING device=all_lights state=off"]),
     ("turn on both lamps", ["OPERATING device=bedroom_lights state=on"]),
     ("is the remote in the living room?", ["SEARCHING theme=remote ground=living_room"]),
-    ("my glasses are in the bedroom, bring them to me", ["BRINGING theme=glasses beneficiary=me"]),
+    (
+        "my glasses are in the bedroom, bring them to me",
+        ["BRINGING theme=glasses source=bedroom beneficiary=me"],
+    ),
     ("would you mind getting me the remote", ["BRINGING theme=remote beneficiary=me"]),
     ("it's getting late, could you close the blinds", ["OPERATING device=bedroom_blinds state=closed"]),
     ("help me find my glasses", ["SEARCHING theme=glasses"]),
@@ -344,7 +346,6 @@ def test_what_is_unsaid_or_ambiguous_is_asked(vocabulary: Vocabulary, text: str,
 
 
 def test_what_the_world_lacks_is_named(vocabulary: Vocabulary) -> None:
-    assert "30 percent" in understand("set the dimmer to thirty percent please", vocabulary).reason
     assert "'banana'" in understand("the banana please", vocabulary).reason
     assert "'banana'" in understand("can i have the banana", vocabulary).reason
     # a person alone is no request, and out-of-domain talk stays refused

@@ -1,0 +1,79 @@
+"""Speakers correcting themselves, saying where things are in passing, talking around the command, picking
+things up, and asking for levels the world lacks (found with the blind people2 development set)."""
+
+from __future__ import annotations
+
+import pytest
+
+from knic.language import understand
+from knic.language.vocabulary import Vocabulary
+
+READ = [
+    # corrections: what follows replaces the last thing of its kind, or the last action
+    ("bring me the apple, sorry, I meant the lemon", ["(has annie lemon)"]),
+    ("go to the bedroom... no wait, the bathroom", ["(robot_at r2d2 bathroom)"]),
+    ("take the juice to the kitchen, no, to the dining room", ["(object_at juice dining_room)"]),
+    ("switch on the hallway light, actually open the blinds", ["(device_level bedroom_blinds l100)"]),
+    ("set the dimmer to twenty five, i mean seventy five", ["(device_level living_room_dimmer l75)"]),
+    ("give tracy the soap, oops, jack", ["(has jack soap)"]),
+    # where things are, said in passing: the source or the ground of the action on them
+    ("the remote's on the sofa, bring it here", ["(taken_from remote sofa)", "(has annie remote)"]),
+    ("tracy is in the bathroom, could you look for her", ["(reported tracy)"]),
+    # "'s": "is", or a possessive
+    ("tracy's thirsty, give her the water", ["(has tracy water)"]),
+    ("bring me jack's mug", ["(has annie mug)"]),
+    ("see if the candle's on the coffee table", ["(reported candle)"]),
+    # talk about things the world lacks, after the action
+    ("close the blinds please, the glare is awful", ["(device_level bedroom_blinds l0)"]),
+    # picking up: held, unless it is the speaker's own; carry verbs with nowhere said are for the speaker
+    ("pick up the candle", ["(holding r2d2 candle)"]),
+    (
+        "take the sponge off the kitchen counter",
+        ["(taken_from sponge kitchen_counter)", "(holding r2d2 sponge)"],
+    ),
+    ("pick up my glasses please", ["(has annie glasses)"]),
+    ("can you grab the tissues", ["(has annie tissues)"]),
+    # the same action said twice is done once
+    ("where did I put my glasses? find them for me", ["(reported glasses)"]),
+    ("make your way to the kitchen", ["(robot_at r2d2 kitchen)"]),
+]
+
+
+@pytest.mark.parametrize(("text", "goals"), READ)
+def test_read_as_meant(vocabulary: Vocabulary, text: str, goals: list[str]) -> None:
+    result = understand(text, vocabulary)
+    assert result.accepted, result.reason
+    assert [str(g) for g in result.goals] == goals
+
+
+def test_where_things_are_said_becomes_their_source_or_ground(vocabulary: Vocabulary) -> None:
+    result = understand("there's a cup on the table in the kitchen, bring it to me", vocabulary)
+    assert [f.to_dict() for f in result.frames] == [
+        {"frame": "BRINGING", "theme": "cup", "source": "kitchen_table", "beneficiary": "me"}
+    ]
+    result = understand("jack is in the dining room, go and find him", vocabulary)
+    assert [f.to_dict() for f in result.frames] == [
+        {"frame": "SEARCHING", "theme": "jack", "ground": "dining_room"}
+    ]
+
+
+def test_a_picked_up_thing_carried_on_is_two_actions(vocabulary: Vocabulary) -> None:
+    result = understand("pick up the apple and put it on the dining table", vocabulary)
+    assert [f.kind for f in result.frames] == ["TAKING", "PLACING"]
+    assert [str(g) for g in result.goals] == ["(object_on apple dining_table)"]  # not also held
+
+
+NOT_READ = [
+    ("check whether the front door is open", "there is no 'front door' here"),  # asked about: named
+    ("bring me the banana, sorry, I meant the cherry", "there is no 'cherry' here"),
+    ("go to the garage, no wait, the kitchen", None),  # corrected away: read
+]
+
+
+@pytest.mark.parametrize(("text", "reason"), NOT_READ)
+def test_what_the_world_lacks_is_still_named(vocabulary: Vocabulary, text: str, reason: str | None) -> None:
+    result = understand(text, vocabulary)
+    if reason is None:
+        assert result.accepted and [str(g) for g in result.goals] == ["(robot_at r2d2 kitchen)"]
+    else:
+        assert not result.accepted and reason in result.reason
