@@ -38,6 +38,7 @@ SETS = {
     "test": FIXTURES / "test.yaml",
     "people2-dev": FIXTURES / "people2" / "dev.yaml",
     "people2-test": FIXTURES / "people2" / "test.yaml",
+    "people3-dev": FIXTURES / "people3" / "dev.yaml",
 }
 OTHER_WORLD = FIXTURES / "other_world" / "problem.pddl"
 _MAIN = {"MOTION": ("goal",), "OPERATING": ("device", "state")}
@@ -68,7 +69,7 @@ def expected_goals(case: dict[str, Any], gold: list[dict[str, str]], vocabulary:
     carried = iter(
         f
         for f in gold
-        if f["frame"] in ("BRINGING", "PLACING")
+        if f["frame"] in ("BRINGING", "PLACING", "TAKING")
         and vocabulary.type_of(f.get("source", ""))
         and vocabulary.is_subtype(vocabulary.type_of(f["source"]) or "", "furniture")
     )

@@ -113,7 +113,8 @@ def chain(
             ]
             if carried:
                 j = carried[0]
-                if out[j].get("source") is None and frame.get("source") is not None:
+                handed = out[j].kind != "PLACING"  # where a thing is put is all a placing says
+                if handed and out[j].get("source") is None and frame.get("source") is not None:
                     out[j] = CommandFrame(out[j].kind, {**out[j].args, "source": frame["source"]})
             elif index in ask_where:
                 thing = vocabulary.phrase_of(frame["theme"])

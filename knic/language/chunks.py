@@ -24,8 +24,8 @@ _TENS = {w: 10 * i for i, w in enumerate(TENS_WORDS) if w != "_"}
 class Chunk:
     """One piece of a command: ``kind`` is entity, me, pronoun, verb, prep, state, level, number, join, det,
     percent, partitive, vague (a level not said: "a bit"), unsaid (a destination not said: "away"), quant
-    (role: "all" or "both"), everything, repair (the speaker corrects what came before: "no wait") or
-    unknown."""
+    (role: "all" or "both"), everything, repair (the speaker corrects what came before: "no wait"), owner
+    (a person said as whose a thing is: "tracy's mug") or unknown."""
 
     kind: str
     text: str
@@ -213,7 +213,7 @@ class Chunker:
                 soft = best[2].kind == "verb" and i in inflected
                 out.append(replace(best[2], soft=True) if soft else best[2])
             i += best[0]
-        return out
+        return _owned(out) if _OWNER in tokens else out
 
     def _apostrophes(self, tokens: Sequence[str]) -> list[str]:
         """Read "'s" after a word the tables do not know as it is: "is" ("the tablet's on the bed", "jack's
@@ -240,10 +240,9 @@ class Chunker:
                     ),
                     None,
                 )
-                if owner is None:
-                    out.append(base)
-                else:
-                    del out[len(out) - owner :]
+                out.append(base)
+                if owner is not None:
+                    out.append(_OWNER)  # "annie's glasses": the glasses; annie is said, for "her"
             else:
                 out += [base, "is"]
         return out
@@ -276,8 +275,23 @@ class Chunker:
         return word
 
 
+#: the token after a person's name said as an owner ("tracy's mug"): the name becomes an ``owner`` chunk
+_OWNER = "'s"
 #: words whose "'s" is read as the tables and the reader already read it ("there's a mug on the table")
 _KEPT_CONTRACTIONS = frozenset({"there", "here", "what", "who", "where", "that", "let", "how"})
+
+
+def _owned(chunks: list[Chunk]) -> list[Chunk]:
+    """Mark the people said as owners ("tracy's mug"): the person before the owner mark becomes an
+    ``owner`` chunk, which is no argument of the action but is there for a later "her" or "him"."""
+    out: list[Chunk] = []
+    for chunk in chunks:
+        if chunk.kind == "unknown" and chunk.text == _OWNER:
+            if out and out[-1].kind == "entity":
+                out[-1] = replace(out[-1], kind="owner")
+            continue
+        out.append(chunk)
+    return out
 
 
 def _number(tokens: Sequence[str], i: int) -> tuple[int, int] | None:

@@ -105,6 +105,11 @@ def split_clauses(
         else c
         for i, c in enumerate(chunks)
     ]
+    for i, chunk in enumerate(chunks):  # "the light of the hallway": of a place is where it is
+        after = next((c for c in chunks[i + 1 :] if c.kind != "det"), None)
+        placed = after is not None and after.kind == "entity" and not names_item(after)
+        if chunk.kind == "partitive" and placed:
+            chunks[i] = Chunk("prep", chunk.text, role="place")
     preamble = Clause(None)
     clauses: list[Clause] = []
     current = preamble

@@ -92,6 +92,7 @@ class CommandLanguage:
     bare_request: str | None = None
     type_nouns: dict[str, tuple[str, ...]] = field(default_factory=dict)
     repairs: tuple[str, ...] = ()
+    spellings: dict[str, str] = field(default_factory=dict)
 
     def verb_frames(self) -> dict[str, tuple[tuple[str, ...], str | None]]:
         """Verb phrase -> (frame kinds in order, implied state); a phrase in several classes gets all."""
@@ -230,6 +231,7 @@ def load_language(path: str | Path = DEFAULT_PATH) -> CommandLanguage:
         bare_request=bare,
         type_nouns=tables["type_nouns"],
         repairs=_phrases(data, "repairs", source),
+        spellings=_spellings(data, source),
     )
     lists: dict[str, tuple[str, ...]] = {v.name: v.phrases for v in verbs}
     spoken = _phrases(data, "spoken_determiners", source) or language.determiners
@@ -242,6 +244,21 @@ def load_language(path: str | Path = DEFAULT_PATH) -> CommandLanguage:
     object.__setattr__(language, "lists", lists)
     language.template_nodes()  # fail early on a malformed template
     return language
+
+
+def _spellings(data: dict[str, Any], source: str) -> dict[str, str]:
+    """The ``spellings`` table: one word -> the words it stands for.
+
+    Raises:
+        LanguageError: not a mapping of single words to phrases.
+    """
+    raw = data.get("spellings") or {}
+    if not isinstance(raw, dict) or not all(
+        isinstance(k, str) and isinstance(v, str) and len(k.split()) == 1 and v.split()
+        for k, v in raw.items()
+    ):
+        raise LanguageError(f"{source}: 'spellings' maps single words to the words they stand for")
+    return {k: " ".join(v.split()) for k, v in raw.items()}
 
 
 def _parsed(path: Path) -> Any:

@@ -9,7 +9,7 @@ BRINGING theme X, beneficiary P        ``(has P X)`` ("me" is the speaker)
 BRINGING / PLACING theme X, goal room  ``(object_at X room)``
 BRINGING / PLACING theme X, goal f     ``(object_on X f)`` (f a piece of furniture)
 ... with source f (furniture)          also ``(taken_from X f)`` when the domain has that predicate
-TAKING theme X (carried on later)      none: the later action's goal says where X ends
+TAKING theme X (carried on later)      only ``(taken_from X f)``: the later action's goal says where X ends
 TAKING theme X (nothing carries on)    ``(holding R X)`` (R the robot: "pick up the box")
 SEARCHING theme X                      ``(reported X)``
 MOTION goal room                       ``(robot_at R room)`` (R the world's robot)
@@ -72,9 +72,14 @@ def frames_to_goals(
     goals: list[Fact] = []
     skip = set(waypoints)
     for index, frame in enumerate(frames):
-        if index in skip or (frame.kind == "TAKING" and _carried_on(frames, index)):
+        if index in skip:
             continue
-        for goal in _frame_goals(frame, vocabulary, speaker, notes if notes is not None else []):
+        if frame.kind == "TAKING" and _carried_on(frames, index):
+            # where it ends is the later action's; where it is taken from is this one's
+            made = _sourced(frame, vocabulary, frame.get("theme") or "")
+        else:
+            made = _frame_goals(frame, vocabulary, speaker, notes if notes is not None else [])
+        for goal in made:
             validate_goal(goal, vocabulary)
             if goal not in goals:
                 goals.append(goal)

@@ -30,6 +30,7 @@ from __future__ import annotations
 
 import contextlib
 import copy
+import re
 from collections.abc import Sequence
 
 from core.errors import LanguageError
@@ -44,6 +45,48 @@ from knic.language.vocabulary import Term, Vocabulary, level_percent, normalize
 MAX_ACTIONS = 3
 #: "is", "are": after words the world has no name for, what follows is talk, not part of the action
 _COPULAS = frozenset({"is", "are", "was", "were"})
+#: where a stretch of a typed command ends (sentences and commas); recognised speech has none
+_SEGMENT_END = re.compile(r"[.?!;,]+|\s-\s")
+
+
+def _unplaced(chunks: list[Chunk]) -> list[Chunk]:
+    """The names of things among ``chunks`` that no preposition governs (what an action was about)."""
+    out: list[Chunk] = []
+    previous: Chunk | None = None
+    for chunk in chunks:
+        if chunk.kind == "entity" and (previous is None or previous.kind != "prep"):
+            out.append(chunk)
+        if chunk.kind != "det":
+            previous = chunk
+    return out
+
+
+def _unsaid_negated(chunks: list[Chunk]) -> list[Chunk]:
+    """A correction without what it takes back ("no sorry, not the tissues, the soap": the soap)."""
+    if chunks and chunks[0].kind == "unknown" and chunks[0].text == "not":
+        rest = chunks[1:]
+        while rest and rest[0].kind == "det":
+            rest = rest[1:]
+        if rest and rest[0].kind in ("entity", "me", "pronoun"):
+            return rest[1:]
+    return chunks
+
+
+def _fluent(tokens: list[str]) -> list[str]:
+    """Drop a false start said again right after ("take me to the take me to the kitchen", "the the")."""
+    out = list(tokens)
+    changed = True
+    while changed:
+        changed = False
+        for size in range(1, min(6, len(out) // 2) + 1):
+            for i in range(len(out) - 2 * size + 1):
+                if out[i : i + size] == out[i + size : i + 2 * size]:
+                    del out[i : i + size]
+                    changed = True
+                    break
+            if changed:
+                break
+    return out
 
 
 class Reader:
@@ -78,9 +121,42 @@ class Reader:
             AmbiguityError: a name fits several things (the message asks which).
             LanguageError: the command is not understood (the message says what is missing or unknown).
         """
-        tokens = normalize(text).split()
-        if not tokens:
+        segments = [self._spelled(normalize(part).split()) for part in _SEGMENT_END.split(text)]
+        segments = [segment for segment in segments if segment]
+        if not segments:
             raise LanguageError("nothing to understand: the command is empty")
+        try:
+            return self._read_tokens(_fluent([t for segment in segments for t in segment]))
+        except LanguageError:
+            # "... bring me the sponge, love, I want to wipe up a little spill": what names nothing of the
+            # world around the request is talk; read without it before giving up
+            kept = [segment for segment in segments if self._names_things(segment)]
+            pieces = [self.chunks(segment) for segment in segments]
+            corrected = any(chunk.kind == "repair" for piece in pieces for chunk in piece)
+            if not kept and len(segments) > 1 and not corrected:  # name what the request lacks, not the talk
+                for segment in segments:
+                    if any(chunk.kind == "verb" for chunk in self.chunks(segment)):
+                        self._read_tokens(_fluent(segment))
+                        break
+            if not kept or len(kept) == len(segments):
+                raise
+            return self._read_tokens(_fluent([t for segment in kept for t in segment]))
+
+    def _spelled(self, tokens: list[str]) -> list[str]:
+        """Shortenings as the words they stand for ("gimme": give me; :attr:`CommandLanguage.spellings`)."""
+        spellings = self.language.spellings
+        return [word for token in tokens for word in spellings.get(token, token).split()]
+
+    def _names_things(self, tokens: list[str]) -> bool:
+        """Whether a stretch of a command names an object, a place or a device of the world."""
+        return any(
+            chunk.kind == "entity"
+            and any(self.is_a(t, c) for t in chunk.terms for c in ("item", "room", "furniture", "device"))
+            for chunk in self.chunks(tokens)
+        )
+
+    def _read_tokens(self, tokens: list[str]) -> Reading:
+        """:meth:`read` of normalised tokens."""
         chunks = self._talk_dropped(self._repaired(self.chunks(tokens)))
         if not chunks:
             raise LanguageError(f"no action in '{' '.join(tokens)}': say what to do, e.g. 'bring me ...'")
@@ -95,6 +171,10 @@ class Reader:
             raise LanguageError(f"{len(clauses)} actions in one command; I take up to {MAX_ACTIONS} at once")
         frames: list[CommandFrame] = []
         mentioned, located = self._mentions(context)
+        for chunk in chunks:  # "annie's glasses are on the shelf, take them to her": annie is said
+            symbols = {t.symbol for t in chunk.terms}
+            if chunk.kind == "owner" and len(symbols) == 1:
+                mentioned.insert(0, CommandFrame("SEARCHING", {"theme": symbols.pop()}))
         groups: list[list[CommandFrame]] = [mentioned]
         ask_where: set[int] = set()  # "take the cup away": where to, unless a later action says so
         held: set[int] = set()  # TAKING frames of verbs that only take: nothing carries them on, it holds
@@ -133,7 +213,7 @@ class Reader:
         """
         while any(c.kind == "repair" for c in chunks):
             at = max(i for i, c in enumerate(chunks) if c.kind == "repair")
-            before, after = chunks[:at], chunks[at + 1 :]
+            before, after = chunks[:at], _unsaid_negated(chunks[at + 1 :])
             words = [c for c in after if c.kind not in ("det", "prep")]
             if not before or not words:
                 chunks = before + after
@@ -143,7 +223,9 @@ class Reader:
                 start = verbs[-1] if verbs else 0
                 while start > 0 and before[start - 1].kind == "join":
                     start -= 1
-                chunks = before[:start] + after
+                # the things the dropped action named stay said, for an "it" in the new one ("place the
+                # candle on the shelf; correction: place it on the side table")
+                chunks = _unplaced(before[start:]) + before[:start] + after
                 continue
             end = next((i for i, c in enumerate(after) if c.kind in ("verb", "join")), len(after))
             replacement, rest = after[:end], after[end:]
@@ -265,7 +347,7 @@ class Reader:
         for frame in frames:
             role = "ground" if frame.kind == "SEARCHING" else "source"
             where = located.get(frame.get("theme") or "")
-            carry = frame.kind in ("BRINGING", "TAKING", "PLACING", "SEARCHING")
+            carry = frame.kind in ("BRINGING", "TAKING", "SEARCHING")
             if where and carry and frame.get(role) is None and where != frame.get("goal"):
                 frame = CommandFrame(frame.kind, {**frame.args, role: where})
             out.append(frame)

@@ -10,11 +10,13 @@ is who a carry is for ("bring me the glasses"); a place said right after furnitu
 
 from __future__ import annotations
 
+import contextlib
 from collections.abc import Callable, Sequence
 from typing import Protocol
 
 from core.errors import LanguageError
-from knic.language.chains import AmbiguityError
+from knic.language.chains import AmbiguityError, referent
+from knic.language.chunks import Chunk
 from knic.language.clauses import Arg, Clause
 from knic.language.frames import SPEAKER, CommandFrame
 from knic.language.vocabulary import Term, Vocabulary, level_percent
@@ -108,7 +110,7 @@ def _carry(
             for theme in themes:
                 sources.setdefault(theme, where)
     if not themes:
-        raise LanguageError(f"{_verb(clause)} what? I heard no object of this world")
+        themes = _implicit(clause, groups, reader.vocabulary, "item", "object")
     if kind == "PLACING" and "goal" not in roles and clause.unsaid_goal:  # "put the mug back"
         thing = reader.vocabulary.phrase_of(themes[0])
         raise AmbiguityError(f"where should I put the {thing}: on which piece of furniture or in which room?")
@@ -229,7 +231,7 @@ def _operating(reader: Resolver, clause: Clause, previous: Frames, groups: list[
         reader.prefer_devices(arg, bool(clause.levels or clause.vague), places)
         devices += reader.resolve(arg, ("device",), previous, groups)
     if not devices:
-        raise LanguageError(f"{_verb(clause)} what? I heard no light, dimmer or blinds of this world")
+        devices = _implicit(clause, groups, reader.vocabulary, "device", "light, dimmer or blinds")
     if clause.vague and not clause.levels:
         _ask_level(reader.vocabulary, list(dict.fromkeys(devices)))
     state = clause.verb.state if clause.verb is not None else None
@@ -240,12 +242,39 @@ def _operating(reader: Resolver, clause: Clause, previous: Frames, groups: list[
         state = str(level)
     elif clause.states:
         state = clause.states[-1]
+    members = [m for d in devices for m in reader.vocabulary.members(d)]
+    lights = all(reader.vocabulary.is_subtype(reader.vocabulary.type_of(m) or "", "light") for m in members)
+    if state in _LIGHT_STATES and lights:
+        state = _LIGHT_STATES[state]  # "open the left light": switch it on
     if state is None and clause.verb is None:  # "the lights please"
         _ask_level(reader.vocabulary, list(dict.fromkeys(devices)))
     if state is None:
         named = " and the ".join(reader.vocabulary.phrase_of(d) for d in devices)
         raise LanguageError(f"{_verb(clause)} the {named} to what? Say on, off or a level")
     return [CommandFrame("OPERATING", {"device": d, "state": state}) for d in dict.fromkeys(devices)]
+
+
+#: a light "opened" or "closed" is switched on or off (as several languages say it)
+_LIGHT_STATES = {"open": "on", "closed": "off"}
+
+
+def _implicit(
+    clause: Clause, groups: list[Frames], vocabulary: Vocabulary, category: str, what: str
+) -> list[str]:
+    """What an action said without its object is about: the thing of ``category`` said last before it
+    ("the cup on the dining table, bring to me"; "mug is on the counter, take it and give to tracy"), as
+    if "it" were said.
+
+    Raises:
+        LanguageError: nothing of that kind was said before; a word the world does not know stood where the
+            object goes ("bring me banana from kitchen") is named.
+    """
+    with contextlib.suppress(LanguageError):
+        if not clause.unknown:
+            return referent(Chunk("pronoun", "it", role=category), (category,), groups, vocabulary)
+    if clause.unknown:
+        raise LanguageError(f"there is no '{clause.unknown[0]}' here: this world has nothing called that")
+    raise LanguageError(f"{_verb(clause)} what? I heard no {what} of this world")
 
 
 def _ask_level(vocabulary: Vocabulary, devices: list[str]) -> None:

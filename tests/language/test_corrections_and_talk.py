@@ -36,6 +36,26 @@ READ = [
     # the same action said twice is done once
     ("where did I put my glasses? find them for me", ["(reported glasses)"]),
     ("make your way to the kitchen", ["(robot_at r2d2 kitchen)"]),
+    # found with the blind people3 development set (personas)
+    ("fetch me the lemon, dear. My hands are shaking today.", ["(has annie lemon)"]),  # talk around it
+    ("open the blinds please, I need some daylight in here", ["(device_level bedroom_blinds l100)"]),
+    ("gimme the remote", ["(has annie remote)"]),  # shortenings
+    ("uh switch off the the switch off the hallway light", ["(light_off hallway_light)"]),  # false starts
+    (
+        "The apple on the kitchen table, bring to me.",
+        ["(taken_from apple kitchen_table)", "(has annie apple)"],
+    ),
+    (
+        "Candle is on the coffee table. Take it and give to Jack.",
+        ["(taken_from candle coffee_table)", "(has jack candle)"],
+    ),
+    ("Please the dimmer you put to fifty.", ["(device_level living_room_dimmer l50)"]),  # object first
+    ("tracy's tablet is on the sofa, bring it to her", ["(taken_from tablet sofa)", "(has tracy tablet)"]),
+    ("please close the right light of bedroom", ["(light_off bedroom_right_light)"]),  # open/close a light
+    ("open the blinds until seventy five", ["(device_level bedroom_blinds l75)"]),
+    ("bring me the soap, no, not the soap, the sponge", ["(has annie sponge)"]),
+    ("put the mug on the bookshelf. Correction: put it on the armchair.", ["(object_on mug armchair)"]),
+    ("turn off the light in the hall", ["(light_off hallway_light)"]),  # the hall is the hallway here
 ]
 
 
@@ -65,6 +85,8 @@ def test_a_picked_up_thing_carried_on_is_two_actions(vocabulary: Vocabulary) -> 
 
 NOT_READ = [
     ("check whether the front door is open", "there is no 'front door' here"),  # asked about: named
+    ("please bring me banana from kitchen", "there is no 'banana' here"),  # no determiner: still named
+    ("bring me the banana. I'm hungry.", "there is no 'banana' here"),  # the request itself lacks it
     ("bring me the banana, sorry, I meant the cherry", "there is no 'cherry' here"),
     ("go to the garage, no wait, the kitchen", None),  # corrected away: read
 ]
