@@ -180,7 +180,9 @@ def split_rtf(domain: int) -> dict[str, Any]:
 
 def run(args: argparse.Namespace) -> int:
     from knic.ros.env import require_ros
+    from knic.ros.libraries import ensure_ros_libraries
 
+    ensure_ros_libraries()
     require_ros()
     if args.events < 10 or args.rate <= 0:
         raise KnicError("bench ros: --events must be at least 10 and --rate positive")

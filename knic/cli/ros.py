@@ -56,7 +56,9 @@ def run(args: argparse.Namespace) -> int:
     if args.max_sim_time <= 0:
         raise KnicError(f"knic ros: --max-sim-time must be positive, got {args.max_sim_time}")
     from knic.ros.env import require_ros, ros_context
+    from knic.ros.libraries import ensure_ros_libraries
 
+    ensure_ros_libraries()
     require_ros()
     from knic.ros.robot import RosLink
     from knic.ros.split import RosRun

@@ -134,6 +134,11 @@ def run(args: argparse.Namespace) -> int:
     from knic.kgm2.roles import load_role
     from knic.system import KnicSystem, RunConfig
 
+    if getattr(args, "ros", False):
+        from knic.ros.libraries import ensure_ros_libraries
+
+        ensure_ros_libraries()  # before anything is done: the command may start again with ROS 2's libraries
+
     logging.getLogger("knic.scheduler").setLevel(logging.ERROR)  # overruns are counted, printed at the end
     episode = task_episode(args)  # a task scenario (granny_annie): the episode drawn for the seed
     later = timed_goals(args.goal_at)

@@ -57,7 +57,7 @@ def run(args: argparse.Namespace) -> int:
     decoder = getattr(args, "decoder", "ngram")
     if decoder == "ngram":
         from knic.language.acoustic import acoustic_model_options
-        from knic.language.lmspeech import phone_score_in_background
+        from knic.language.phoneloop import phone_score_in_background
 
         acoustic_model_options(args.acoustic_model, decoder="ngram")  # a bad model is refused before the fork
         # the confidence's phone-loop pass runs in a child while this process loads the world and decodes

@@ -44,7 +44,9 @@ def run(args: argparse.Namespace) -> int:
     if args.max_sim_time <= 0:
         raise KnicError(f"knic sim: --max-sim-time must be positive, got {args.max_sim_time}")
     from knic.ros.env import require_ros, ros_context
+    from knic.ros.libraries import ensure_ros_libraries
 
+    ensure_ros_libraries()
     require_ros()
     from knic.ros.sim_node import SimNode
     from worlds.simulation import Simulation

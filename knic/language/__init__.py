@@ -26,12 +26,31 @@ Typical use::
         knic.language.add_goals(kb, result.goals, source="speech")
 """
 
-from knic.language.commands import command_grammar
-from knic.language.frames import CommandFrame
-from knic.language.goals import add_goals
-from knic.language.grammar import to_jsgf
-from knic.language.understanding import Understanding, understand
-from knic.language.vocabulary import Lexicon, Vocabulary
+from __future__ import annotations
+
+import importlib
+from typing import TYPE_CHECKING, Any
+
+if TYPE_CHECKING:
+    from knic.language.commands import command_grammar
+    from knic.language.frames import CommandFrame
+    from knic.language.goals import add_goals
+    from knic.language.grammar import to_jsgf
+    from knic.language.understanding import Understanding, understand
+    from knic.language.vocabulary import Lexicon, Vocabulary
+
+#: public name -> the module it lives in; imported on first use, so that a submodule (the audio reader, the
+#: acoustic model's options) is imported without the whole reader (``knic say`` starts its first pass sooner)
+_EXPORTS = {
+    "CommandFrame": "knic.language.frames",
+    "Lexicon": "knic.language.vocabulary",
+    "Understanding": "knic.language.understanding",
+    "Vocabulary": "knic.language.vocabulary",
+    "add_goals": "knic.language.goals",
+    "command_grammar": "knic.language.commands",
+    "to_jsgf": "knic.language.grammar",
+    "understand": "knic.language.understanding",
+}
 
 __all__ = [
     "CommandFrame",
@@ -43,3 +62,9 @@ __all__ = [
     "to_jsgf",
     "understand",
 ]
+
+
+def __getattr__(name: str) -> Any:
+    if name in _EXPORTS:
+        return getattr(importlib.import_module(_EXPORTS[name]), name)
+    raise AttributeError(f"module 'knic.language' has no attribute {name!r}")

@@ -1,12 +1,10 @@
 """Whether ROS 2 (rclpy from PyPI) is usable here, and one rclpy context per node process.
 
-rclpy from PyPI needs its shared libraries on ``LD_LIBRARY_PATH``: the ``ros-wheels-bootstrapper`` package
-(a dependency of ``ros-rclpy``) does it with a ``.pth`` file that, at interpreter start-up, sets
-``LD_LIBRARY_PATH`` to the venv's ``ros_*.libs`` folders and re-executes the interpreter once (guard variable
-``_ROS_WHEELS_BOOTSTRAP_COMPLETE``). Nothing is to be set by hand; ``AMENT_PREFIX_PATH`` is not needed (the
-messages' type support loads as Python extension modules). A child process started with a copy of the
-environment inherits the paths. An interpreter started without site processing (``python -S`` or ``-I``)
-skips the bootstrap and cannot load rclpy: :func:`require_ros` says so in one line.
+rclpy from PyPI needs its shared libraries on ``LD_LIBRARY_PATH``, set only for the processes that use ROS 2
+(:mod:`knic.ros.libraries`: the ROS commands re-execute themselves once with it; ``make test`` runs the
+suite with it). Nothing is to be set by hand; ``AMENT_PREFIX_PATH`` is not needed (the messages' type support
+loads as Python extension modules). A child process started with a copy of the environment inherits the
+paths. Where they are missing, :func:`require_ros` says so in one line.
 """
 
 from __future__ import annotations
@@ -43,7 +41,7 @@ def require_ros() -> None:
     except ImportError as exc:
         detail = str(exc).splitlines()[0] if str(exc) else type(exc).__name__
         if "cannot open shared object" in detail:
-            hint = "the interpreter did not run the ros-wheels bootstrap (started with -S or -I?)"
+            hint = "its libraries are not on LD_LIBRARY_PATH: run through python -m knic.ros.libraries"
         else:
             hint = "install the extra: pip install -e '.[ros]'"
         raise RosUnavailable(f"ROS 2 is not usable here ({detail}); {hint}") from None

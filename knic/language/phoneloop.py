@@ -1,0 +1,142 @@
+"""The phone-loop pass of the n-gram recogniser, light enough to start before the rest of the language code.
+
+The confidence of :class:`knic.language.lmspeech.NgramRecognizer` sets the command model's best path against
+pocketsphinx's unconstrained phone loop (:class:`PhoneLoop`). ``knic say`` runs this pass in a child process
+(:func:`phone_score_in_background`) from its first milliseconds, while the parent imports the reader, loads
+the world and decodes with the command model; this module therefore imports only pocketsphinx, the acoustic
+model's options and the audio helpers.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import struct
+import tempfile
+from collections.abc import Callable, Mapping
+from pathlib import Path
+
+from core.errors import LanguageError
+from knic.language.acoustic import DEFAULT_ACOUSTIC_MODEL, acoustic_model_options, wheel_model_dir
+from knic.language.audio import pad_pcm
+
+#: Decoder options, set on the development set (``knic bench speech --decoder ngram --fixtures
+#: tests/fixtures/speech_people/dev --option KEY=VALUE``, decoding once and reading the figures per option):
+#: the lattice best path on (the n-gram search benefits from it, and the N-best list comes from the lattice);
+#: fwdflat off (the second flat-lexicon pass took a third of the time and changed no dev result); word
+#: insertion penalty 0.2 instead of 0.65 (frame+args 0.69 -> 0.71). Tried without gain: lw 4 (0.67), lw 9
+#: (0.69), wider beams (0.69), maxhmmpf 3000 with topn 2 (0.69, 15% less CPU), ds 2 (0.67, 20% less CPU);
+#: all at wip 0.65. With the 3000-sentence adaptation: the 2 best Gaussians per mixture instead of 4 (topn:
+#: the n-gram pass ~20% less CPU; dev frame+args 0.878 -> 0.871, people's dev set 0.887 -> 0.896).
+#: Dither (a half bit of noise, fixed seed, restarted for every utterance so that a result does not depend on
+#: what was decoded before): digital silence, as in synthesised recordings, is not what a
+#: microphone gives: without it the 3000-sentence adaptation added words at the end of the Granny Annie voice
+#: bank's requests ("switch on the hallway plant"); with it the bank's requests read right 15 -> 20 of 24,
+#: people's dev set 0.896 -> 0.904, speech_voices_dev 0.821 -> 0.810, other speech rejected 1.0 both.
+NGRAM_DECODER_OPTIONS: dict[str, object] = {
+    "bestpath": True,
+    "fwdflat": False,
+    "wip": 0.2,
+    "topn": 2,
+    "dither": True,
+}
+#: The phone-loop pass runs in a decoder of its own over every second frame (ds 2, topn 2): it was the
+#: larger part of the CPU (~250 of ~410 ms per utterance), now ~150. It only needs the best path's score; on
+#: the dev sets it separates commands from other speech as well as the full-rate pass at its own threshold
+#: (frame+args / other speech rejected at the best thresholds, with the 3000-sentence adaptation: full rate
+#: 0.875 / 0.955, ds 2 0.875 / 0.955, ds 2 topn 2 0.871 / 0.955, ds 3 topn 2 0.875 / 0.955 but steeper; ds 2
+#: topn 1 0.878 / 0.933; narrower beams (1e-20) lost 0.05-0.1 of frame+args at the same rejection).
+PHONE_DECODER_OPTIONS: dict[str, object] = {"ds": 2, "topn": 2}
+
+
+class PhoneLoop:
+    """pocketsphinx's unconstrained phone loop: the best path score of any phone sequence for an utterance,
+    the reference of :func:`confidence`.
+
+    Args:
+        acoustic_model: as for :class:`NgramRecognizer`.
+        options: pocketsphinx options over :data:`PHONE_DECODER_OPTIONS`.
+
+    Raises:
+        LanguageError: pocketsphinx refuses the options or the phone model.
+    """
+
+    def __init__(
+        self, acoustic_model: str | Path = DEFAULT_ACOUSTIC_MODEL, options: Mapping[str, object] | None = None
+    ):
+        from pocketsphinx import Decoder, set_loglevel
+
+        set_loglevel("FATAL")
+        settings = {
+            **NGRAM_DECODER_OPTIONS,  # dither and the rest as in the n-gram pass it is set against
+            **acoustic_model_options(acoustic_model, decoder="ngram"),
+            **PHONE_DECODER_OPTIONS,
+            **(options or {}),
+        }
+        with tempfile.TemporaryDirectory(prefix="knic-phones-") as tmp:
+            dictionary = Path(tmp) / "phones.dict"  # the decoder wants a dictionary; the phone loop uses none
+            dictionary.write_text("a AH\n", encoding="utf-8")
+            try:
+                self._decoder = Decoder(lm=None, loglevel="FATAL", **{**settings, "dict": str(dictionary)})
+                self._decoder.add_allphone_file("phones", str(wheel_model_dir() / "en-us-phone.lm.bin"))
+                self._decoder.activate_search("phones")
+            except (KeyError, ValueError, TypeError, RuntimeError) as exc:
+                raise LanguageError(f"pocketsphinx refused the phone-loop options {settings}: {exc}") from exc
+        self._initial_cmn = self._decoder.get_cmn()
+
+    def score(self, raw: bytes) -> float:
+        """The best phone path's score (a probability, as pocketsphinx hands it over; 0.0: no path) of padded
+        raw audio."""
+        decoder = self._decoder
+        decoder.reinit_feat()
+        decoder.set_cmn(self._initial_cmn)
+        decoder.start_utt()
+        decoder.process_raw(raw, full_utt=True)
+        decoder.end_utt()
+        hyp = decoder.hyp()
+        return float(hyp.best_score) if hyp is not None else 0.0
+
+
+def phone_score_in_background(
+    samples: bytes, acoustic_model: str | Path = DEFAULT_ACOUSTIC_MODEL
+) -> Callable[[], float]:
+    """Start the phone-loop pass of one utterance in a child process; the returned call waits for its score.
+
+    For one-shot listening (``knic say``): the child loads its decoder and decodes while this process loads
+    the world and the command model and decodes, so on two cores the two passes overlap. The child is forked,
+    so call this before the process starts threads. Where ``os.fork`` is missing, or the child fails, the
+    score is computed here when asked for. A score never asked for leaves the child to finish on its own.
+
+    Args:
+        samples: the utterance as raw 16 kHz mono 16-bit PCM, unpadded
+            (:func:`~knic.language.audio.load_pcm`).
+    """
+    raw = pad_pcm(samples)
+
+    def here() -> float:
+        return PhoneLoop(acoustic_model).score(raw)
+
+    if not hasattr(os, "fork"):
+        return here
+    read_end, write_end = os.pipe()
+    pid = os.fork()
+    if pid == 0:  # the child: score, write 8 bytes, leave without running the parent's exit handlers
+        status = 1
+        try:
+            os.close(read_end)
+            os.write(write_end, struct.pack("<d", PhoneLoop(acoustic_model).score(raw)))
+            status = 0
+        finally:
+            os._exit(status)
+    os.close(write_end)
+
+    def wait() -> float:
+        try:
+            with os.fdopen(read_end, "rb") as pipe:
+                data = pipe.read(8)
+        finally:
+            with contextlib.suppress(ChildProcessError):
+                os.waitpid(pid, 0)
+        return struct.unpack("<d", data)[0] if len(data) == 8 else here()
+
+    return wait
