@@ -47,6 +47,7 @@ class Clause:
     vague: bool = False  # "a bit", "a little": a level meant but not said
     unsaid_goal: bool = False  # "away", "back": a destination meant but not said
     mine: bool = False  # "my" said: the speaker's own thing ("grab my glasses": for me)
+    implicit: bool = False  # read with an unsaid object taken from before (the reader's second try)
 
     def names_nothing(self) -> bool:
         """No noun phrase, state, level or missing name: only the verb and words not understood."""

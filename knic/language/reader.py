@@ -72,23 +72,6 @@ def _unsaid_negated(chunks: list[Chunk]) -> list[Chunk]:
     return chunks
 
 
-def _fluent(tokens: list[str]) -> list[str]:
-    """Drop a false start said again right after ("take me to the take me to the kitchen", "the the")."""
-    out = list(tokens)
-    changed = True
-    while changed:
-        changed = False
-        for size in range(1, min(6, len(out) // 2) + 1):
-            for i in range(len(out) - 2 * size + 1):
-                if out[i : i + size] == out[i + size : i + 2 * size]:
-                    del out[i : i + size]
-                    changed = True
-                    break
-            if changed:
-                break
-    return out
-
-
 class Reader:
     """Reads normalised commands against one vocabulary (build once per vocabulary; :meth:`read` is pure)."""
 
@@ -126,21 +109,44 @@ class Reader:
         if not segments:
             raise LanguageError("nothing to understand: the command is empty")
         try:
-            return self._read_tokens(_fluent([t for segment in segments for t in segment]))
-        except LanguageError:
-            # "... bring me the sponge, love, I want to wipe up a little spill": what names nothing of the
-            # world around the request is talk; read without it before giving up
-            kept = [segment for segment in segments if self._names_things(segment)]
-            pieces = [self.chunks(segment) for segment in segments]
-            corrected = any(chunk.kind == "repair" for piece in pieces for chunk in piece)
-            if not kept and len(segments) > 1 and not corrected:  # name what the request lacks, not the talk
-                for segment in segments:
-                    if any(chunk.kind == "verb" for chunk in self.chunks(segment)):
-                        self._read_tokens(_fluent(segment))
+            return self._read_tokens(self._fluent([t for segment in segments for t in segment]))
+        except LanguageError as exc:
+            whole = exc
+        # "... bring me the sponge, love, I want to wipe up a little spill": what names nothing of the world
+        # around the request is talk; read without it before giving up
+        kept = [segment for segment in segments if self._names_things(segment)]
+        corrected = any(chunk.kind == "repair" for segment in segments for chunk in self.chunks(segment))
+        if not kept and len(segments) > 1 and not corrected:  # name what the request lacks, not the talk
+            for segment in segments:
+                if any(chunk.kind == "verb" for chunk in self.chunks(segment)):
+                    self._read_tokens(self._fluent(segment))
+                    break
+        if not kept or len(kept) == len(segments):
+            raise whole
+        try:
+            return self._read_tokens(self._fluent([t for segment in kept for t in segment]))
+        except LanguageError as exc:
+            acts = any(chunk.kind == "verb" for segment in kept for chunk in self.chunks(segment))
+            raise (exc if acts else whole) from None
+
+    def _fluent(self, tokens: list[str]) -> list[str]:
+        """Drop a false start said again right after ("take me to the take me to the kitchen", "the the"):
+        a repeated stretch of two or more words, or a repeated determiner ("to half half open" stays)."""
+        out = list(tokens)
+        single = set(self.language.determiners)
+        changed = True
+        while changed:
+            changed = False
+            for size in range(1, min(6, len(out) // 2) + 1):
+                for i in range(len(out) - 2 * size + 1):
+                    stretch = out[i : i + size]
+                    if stretch == out[i + size : i + 2 * size] and (size > 1 or stretch[0] in single):
+                        del out[i : i + size]
+                        changed = True
                         break
-            if not kept or len(kept) == len(segments):
-                raise
-            return self._read_tokens(_fluent([t for segment in kept for t in segment]))
+                if changed:
+                    break
+        return out
 
     def _spelled(self, tokens: list[str]) -> list[str]:
         """Shortenings as the words they stand for ("gimme": give me; :attr:`CommandLanguage.spellings`)."""
@@ -298,17 +304,27 @@ class Reader:
         self._there(clause, previous)
         kinds = clause.verb.frames if clause.verb is not None else ("OPERATING",)
         first_error: LanguageError | None = None
-        for kind in kinds:
-            try:
-                # each reading starts from the clause as heard: an attempt marks arguments consumed
-                found = INTERPRETERS[kind](self, copy.deepcopy(clause), previous, groups)
-            except AmbiguityError:
-                raise
-            except LanguageError as exc:
-                first_error = first_error or exc
-                continue
-            if found:
-                return found
+        question: AmbiguityError | None = None
+        # every kind as said first; then with an object left unsaid taken from before ("the cup on the
+        # table, bring to me"), so that "move next to the counter" stays a motion
+        for implicit in (False, True):
+            for kind in kinds:
+                heard = copy.deepcopy(clause)  # each reading starts from the clause as heard
+                heard.implicit = implicit
+                try:
+                    found = INTERPRETERS[kind](self, heard, previous, groups)
+                except AmbiguityError as exc:
+                    if implicit:
+                        raise
+                    question = question or exc
+                    break  # asked as said: the unsaid object may still settle it
+                except LanguageError as exc:
+                    first_error = first_error or exc
+                    continue
+                if found:
+                    return found
+        if question is not None:
+            raise question
         verb = clause.verb.text if clause.verb is not None else "the command"
         raise first_error or LanguageError(f"I do not know how to '{verb}' that")
 

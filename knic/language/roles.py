@@ -270,7 +270,7 @@ def _implicit(
             object goes ("bring me banana from kitchen") is named.
     """
     with contextlib.suppress(LanguageError):
-        if not clause.unknown:
+        if clause.implicit and not clause.unknown:
             return referent(Chunk("pronoun", "it", role=category), (category,), groups, vocabulary)
     if clause.unknown:
         raise LanguageError(f"there is no '{clause.unknown[0]}' here: this world has nothing called that")

@@ -166,6 +166,29 @@ class Lexicon:
         return cls(names=names, groups=tuple(groups))
 
 
+def _synonym_variants(terms: Sequence[Term], synonyms: Sequence[Sequence[str]]) -> list[Term]:
+    """The names synonyms give: each whole-word synonym in a name (the longest at each place) replaced by the
+    others of its set, where that makes no name the world already has."""
+    taken = {t.phrase for t in terms}
+    sets = [[s.split() for s in sorted(group, key=lambda p: -len(p.split()))] for group in synonyms]
+    out: list[Term] = []
+    for term in terms:
+        if term.type == "level":
+            continue
+        words = term.phrase.split()
+        for i in range(len(words)):
+            for members in sets:
+                said = next((m for m in members if words[i : i + len(m)] == m), None)
+                if said is None:
+                    continue
+                for other in members:
+                    phrase = " ".join([*words[:i], *other, *words[i + len(said) :]])
+                    if other != said and phrase not in taken:
+                        taken.add(phrase)
+                        out.append(Term(phrase, term.symbol, term.type, term.members))
+    return out
+
+
 def level_percent(symbol: str) -> int | None:
     """The percentage of a ``level`` constant named ``lNN`` (``"l50"`` -> 50), else None."""
     match = _LEVEL_CONSTANT.match(symbol)
@@ -211,12 +234,16 @@ class Vocabulary:
         lexicon: Lexicon | None = None,
         predicates: Mapping[str, tuple[tuple[str, str], ...]] | None = None,
         locations: Mapping[str, Sequence[str]] | None = None,
+        synonyms: Sequence[Sequence[str]] | None = None,
     ) -> Vocabulary:
         """Build from ``{instance or constant: type}``, ``{type: parent type}`` and the domain's predicates.
 
         Symbols get their lexicon phrases, or their own name spoken (underscores as spaces). Lexicon
         entries for symbols not in ``instances`` are ignored. Groups whose members are all missing are left
-        out; members that are missing are dropped from the group.
+        out; members that are missing are dropped from the group. Each name also gets the variants that
+        common English synonyms give (``synonyms``, default the command language's: "the couch" for a
+        world's ``sofa``, "the kitchen cupboard" for its ``kitchen_cabinet``), unless a variant is already a
+        name of the world.
         """
         lexicon = lexicon or Lexicon()
         terms: list[Term] = []
@@ -227,6 +254,11 @@ class Vocabulary:
             else:
                 phrases = lexicon.names.get(symbol) or (normalize(symbol),)
             terms.extend(Term(p, symbol, type_name, (symbol,)) for p in phrases)
+        if synonyms is None:
+            from knic.language.commands import command_language  # the command language imports this module
+
+            synonyms = command_language().synonyms
+        terms += _synonym_variants(terms, synonyms)
         for group in lexicon.groups:
             if group.type is not None:
                 members = tuple(s for s, t in sorted(instances.items()) if _is_subtype(types, t, group.type))

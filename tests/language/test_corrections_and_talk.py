@@ -99,3 +99,35 @@ def test_what_the_world_lacks_is_still_named(vocabulary: Vocabulary, text: str, 
         assert result.accepted and [str(g) for g in result.goals] == ["(robot_at r2d2 kitchen)"]
     else:
         assert not result.accepted and reason in result.reason
+
+
+def test_common_synonyms_name_the_things_of_a_world_without_a_lexicon() -> None:
+    """A house whose symbols are couch, desk and shelf_unit, with no lexicon: English synonyms still apply
+    ("sofa", "settee" for the couch), and a synonym that is another thing's own name is left to that thing."""
+    other = Vocabulary.from_instances(
+        {
+            "lounge": "room",
+            "couch": "furniture",
+            "tv_stand": "furniture",
+            "cup": "item",
+            "mug": "item",
+            "maria": "person",
+            "tiago": "robot",
+            "kitchen_cupboard": "furniture",
+        },
+        {
+            "room": "location",
+            "location": None,
+            "furniture": None,
+            "item": None,
+            "person": None,
+            "robot": None,
+        },
+    )
+    names = {t.phrase: t.symbol for t in other.terms}
+    assert names["sofa"] == names["settee"] == "couch"
+    assert names["television stand"] == names["telly stand"] == "tv_stand"
+    assert names["kitchen cabinet"] == "kitchen_cupboard"
+    assert names["cup"] == "cup" and names["mug"] == "mug"  # not synonyms: two things
+    plain = Vocabulary.from_instances({"couch": "furniture"}, {"furniture": None}, synonyms=[])
+    assert [t.phrase for t in plain.terms] == ["couch"]

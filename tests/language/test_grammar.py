@@ -125,6 +125,7 @@ def test_vocabulary_of_a_smaller_world() -> None:
         {"glasses": "item", "kitchen": "room", "r2d2": "robot"},
         {"item": "entity", "room": "object", "robot": "entity", "entity": "object"},
         lexicon,
+        synonyms=[],  # the lexicon's names only (synonyms: test_corrections_and_talk)
     )
     assert [(t.phrase, t.symbol) for t in small.terms_of(("item",))] == [("reading glasses", "glasses")]
     assert small.terms_of(("furniture",)) == []
