@@ -221,14 +221,15 @@ def _padding() -> tuple[bytes, bytes]:
     return noise(LEAD_SILENCE), noise(TRAIL_SILENCE)
 
 
-def pad_pcm(pcm: bytes) -> bytes:
-    """Add :data:`LEAD_SILENCE` and :data:`TRAIL_SILENCE` of near-silence to raw audio.
+def pad_pcm(pcm: bytes, trail: float = TRAIL_SILENCE) -> bytes:
+    """Add :data:`LEAD_SILENCE` and ``trail`` seconds (at most :data:`TRAIL_SILENCE`) of near-silence to raw
+    audio.
 
     The padding is faint deterministic noise (:data:`PAD_NOISE`), not digital zeros: all-zero frames have no
     defined log energy and upset the decoder's cepstral normalisation.
     """
-    lead, trail = _padding()
-    return lead + pcm + trail
+    lead, after = _padding()
+    return lead + pcm + after[: 2 * int(min(trail, TRAIL_SILENCE) * MODEL_RATE)]
 
 
 def pad(audio: npt.NDArray[np.int16]) -> npt.NDArray[np.int16]:

@@ -39,7 +39,12 @@ from knic.language.acoustic import DEFAULT_ACOUSTIC_MODEL, acoustic_model_option
 from knic.language.audio import Transcript, duration_of, pad_pcm, pcm_bytes
 from knic.language.commands import command_language
 from knic.language.ngram import arpa_from_sentences
-from knic.language.phoneloop import NGRAM_DECODER_OPTIONS, PHONE_DECODER_OPTIONS, PhoneLoop
+from knic.language.phoneloop import (
+    NGRAM_DECODER_OPTIONS,
+    NGRAM_TRAIL_SILENCE,
+    PHONE_DECODER_OPTIONS,
+    PhoneLoop,
+)
 from knic.language.reader import AmbiguityError, Reader
 from knic.language.sampling import FIRST_PHRASE_SHARE, sample_sentences
 from knic.language.vocabulary import Vocabulary
@@ -75,6 +80,9 @@ CONFIDENCE_THRESHOLD = -0.0011
 #: Hypotheses of the N-best list tried when the best one is not a command the reader understands (dev:
 #: frame+args 0.71 -> 0.76 with 10; 30 gave the same).
 NBEST = 10
+#: Hypotheses (the best, then the N-best) tried without their last one or two words when none is read whole
+#: (dev: see :data:`~knic.language.phoneloop.NGRAM_TRAIL_SILENCE`).
+TRIMMED = 3
 
 
 def build_model(
@@ -190,8 +198,10 @@ class NgramRecognizer:
         return " ".join(hyp.hypstr.split()), float(hyp.best_score), max(1, decoder.n_frames())
 
     def _snap(self, text: str) -> tuple[str, bool]:
-        """The best hypothesis if the reader reads it, else the first N-best one it reads, else the best;
-        and whether the reader reads the one returned."""
+        """The best hypothesis if the reader reads it, else the first N-best one it reads, else the first of
+        the :data:`TRIMMED` best that it reads without its last word or two (a word heard in the silence
+        after the command: "... from the kitchen cabinet take"), else the best; and whether the reader reads
+        the one returned."""
         if not text:
             return text, False
         if self.reads(text):
@@ -205,7 +215,15 @@ class NgramRecognizer:
         except (RuntimeError, ValueError):  # no lattice for this utterance
             return text, False
         snapped = next((h for h in hypotheses if h and h != text and self.reads(h)), None)
-        return (snapped, True) if snapped else (text, False)
+        if snapped:
+            return snapped, True
+        for hypothesis in [text, *(h for h in hypotheses if h != text)][:TRIMMED]:
+            words = hypothesis.split()
+            for cut in (1, 2):
+                shorter = " ".join(words[:-cut])
+                if len(words) > cut + 1 and self.reads(shorter):
+                    return shorter, True
+        return text, False
 
     def recognize(
         self,
@@ -229,7 +247,7 @@ class NgramRecognizer:
             AudioError: the file is not usable audio.
         """
         samples = pcm_bytes(audio)
-        raw = pad_pcm(samples)
+        raw = pad_pcm(samples, NGRAM_TRAIL_SILENCE)
         started = time.perf_counter()
         text, score, frames = self._decode(raw)
         text, read = self._snap(text)
