@@ -39,6 +39,7 @@ SETS = {
     "people2-dev": FIXTURES / "people2" / "dev.yaml",
     "people2-test": FIXTURES / "people2" / "test.yaml",
     "people3-dev": FIXTURES / "people3" / "dev.yaml",
+    "people4-dev": FIXTURES / "people4" / "dev.yaml",
 }
 OTHER_WORLD = FIXTURES / "other_world" / "problem.pddl"
 _MAIN = {"MOTION": ("goal",), "OPERATING": ("device", "state")}

@@ -69,10 +69,14 @@ class Chunker:
                 named.setdefault(term.symbol, term)
         for type_name, nouns in lang.type_nouns.items():
             things = [t for t in named.values() if vocabulary.is_subtype(t.type, type_name)]
-            for noun in nouns if things else ():
+            for rank, noun in enumerate(nouns if things else ()):
                 for variant in (noun, noun if noun.endswith("s") else noun + "s"):
-                    if variant not in self._full and variant not in self._partial:
-                        self._partial[variant] = list(things)
+                    if variant in self._full or (rank and variant in self._partial):
+                        continue
+                    # the type's own word is any of its things: "the light" is also the "desk lamp" beside
+                    # the "garage light"; the others ("lamp") are the things named so, where some are
+                    known = self._partial.setdefault(variant, [])
+                    known += [t for t in things if t.symbol not in {k.symbol for k in known}]
         #: plurals of a name's last word ("lamps" for the left and the right lamp): all of them are meant
         self._plural = {
             p for p, ts in self._partial.items() if any(p == t.phrase.split()[-1] + "s" for t in ts)

@@ -45,6 +45,8 @@ from knic.language.vocabulary import Term, Vocabulary, level_percent, normalize
 MAX_ACTIONS = 3
 #: "is", "are": after words the world has no name for, what follows is talk, not part of the action
 _COPULAS = frozenset({"is", "are", "was", "were"})
+#: what a correction may say again in place of what was said before
+_CORRECTED = frozenset({"entity", "me", "number", "level", "state"})
 #: where a stretch of a typed command ends (sentences and commas); recognised speech has none
 _SEGMENT_END = re.compile(r"[.?!;,]+|\s-\s")
 
@@ -192,6 +194,17 @@ class Reader:
                 raise
             except LanguageError as exc:
                 talk = clause.verb is not None and (clause.verb.soft or clause.names_nothing())
+                if (
+                    talk
+                    and len(clauses) == 1
+                    and clause.verb is not None
+                    and clause.verb.soft
+                    and not clause.args
+                ):
+                    # "what's the weather going to be like": "going" asks nothing of the robot
+                    raise LanguageError(
+                        f"I do not know what to do: no action I know in '{' '.join(tokens)}'"
+                    ) from None
                 if not talk or len(clauses) == 1:
                     raise
                 # "it's getting late, close the blinds", "look, bring me the mug": talk, not an action
@@ -235,6 +248,13 @@ class Reader:
                 continue
             end = next((i for i, c in enumerate(after) if c.kind in ("verb", "join")), len(after))
             replacement, rest = after[:end], after[end:]
+            # what is said again ("actually make it 40": the 40), with its determiners and preposition
+            named = [i for i, c in enumerate(replacement) if c.kind in _CORRECTED]
+            if named:
+                first = named[0]
+                while first > 0 and replacement[first - 1].kind in ("det", "prep"):
+                    first -= 1
+                replacement = replacement[first : named[0] + 1] + replacement[named[0] + 1 :]
             kind = self._kind_of(next((c for c in replacement if c.kind not in ("det", "prep")), words[0]))
             target = next(
                 (i for i in range(len(before) - 1, -1, -1) if self._kind_of(before[i]) == kind), None

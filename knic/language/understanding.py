@@ -115,7 +115,12 @@ def understand(
     except LanguageError as exc:
         return Understanding(text, reason=str(exc), speaker=speaker)
     frames = tuple(reading.frames)
-    notes: list[str] = []
+    notes: list[str] = [
+        f"the {vocabulary.phrase_of(frames[i]['goal'])} on the way is no goal I can keep: I go to the "
+        f"{vocabulary.phrase_of(frames[i + 1]['goal'])}"
+        for i in sorted(reading.waypoints)
+        if i + 1 < len(frames) and frames[i].kind == frames[i + 1].kind == "MOTION"
+    ]
     try:
         goals = frames_to_goals(frames, vocabulary, speaker=speaker, waypoints=reading.waypoints, notes=notes)
     except LanguageError as exc:

@@ -32,7 +32,9 @@ READ = [
         ["(taken_from sponge kitchen_counter)", "(holding r2d2 sponge)"],
     ),
     ("pick up my glasses please", ["(has annie glasses)"]),
-    ("can you grab the tissues", ["(has annie tissues)"]),
+    ("can you grab the tissues", ["(holding r2d2 tissues)"]),
+    ("could you pick up the sponge for me", ["(holding r2d2 sponge)"]),  # "for me": a favour
+    ("fetch the candle", ["(has annie candle)"]),  # a carry verb with nowhere said: for the speaker
     # the same action said twice is done once
     ("where did I put my glasses? find them for me", ["(reported glasses)"]),
     ("make your way to the kitchen", ["(robot_at r2d2 kitchen)"]),
@@ -131,3 +133,23 @@ def test_common_synonyms_name_the_things_of_a_world_without_a_lexicon() -> None:
     assert names["cup"] == "cup" and names["mug"] == "mug"  # not synonyms: two things
     plain = Vocabulary.from_instances({"couch": "furniture"}, {"furniture": None}, synonyms=[])
     assert [t.phrase for t in plain.terms] == ["couch"]
+
+
+def test_two_places_in_a_row_keep_the_last_and_say_so(vocabulary: Vocabulary) -> None:
+    result = understand("go to the kitchen, then come back to the bedroom", vocabulary)
+    assert [f.kind for f in result.frames] == ["MOTION", "MOTION"]
+    assert [str(g) for g in result.goals] == ["(robot_at r2d2 bedroom)"]
+    assert result.notes == ("the kitchen on the way is no goal I can keep: I go to the bedroom",)
+
+
+def test_the_type_word_names_every_thing_of_the_type() -> None:
+    house = Vocabulary.from_instances(
+        {"garage_light": "light", "desk_lamp": "light", "study": "room", "maria": "person", "tiago": "robot"},
+        {"light": "device", "device": None, "room": None, "person": None, "robot": None},
+    )
+    result = understand("turn the light off", house, speaker="maria")
+    assert "garage light" in result.question and "desk lamp" in result.question
+    lamp = understand("switch off the lamp", house, speaker="maria")  # the one thing named a lamp
+    assert [f.to_dict() for f in lamp.frames] == [
+        {"frame": "OPERATING", "device": "desk_lamp", "state": "off"}
+    ]
