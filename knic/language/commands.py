@@ -93,7 +93,6 @@ class CommandLanguage:
     type_nouns: dict[str, tuple[str, ...]] = field(default_factory=dict)
     repairs: tuple[str, ...] = ()
     spellings: dict[str, str] = field(default_factory=dict)
-    synonyms: tuple[tuple[str, ...], ...] = ()
 
     def verb_frames(self) -> dict[str, tuple[tuple[str, ...], str | None]]:
         """Verb phrase -> (frame kinds in order, implied state); a phrase in several classes gets all."""
@@ -233,7 +232,6 @@ def load_language(path: str | Path = DEFAULT_PATH) -> CommandLanguage:
         type_nouns=tables["type_nouns"],
         repairs=_phrases(data, "repairs", source),
         spellings=_spellings(data, source),
-        synonyms=_synonyms(data, source),
     )
     lists: dict[str, tuple[str, ...]] = {v.name: v.phrases for v in verbs}
     spoken = _phrases(data, "spoken_determiners", source) or language.determiners
@@ -261,21 +259,6 @@ def _spellings(data: dict[str, Any], source: str) -> dict[str, str]:
     ):
         raise LanguageError(f"{source}: 'spellings' maps single words to the words they stand for")
     return {k: " ".join(v.split()) for k, v in raw.items()}
-
-
-def _synonyms(data: dict[str, Any], source: str) -> tuple[tuple[str, ...], ...]:
-    """The ``synonyms`` table: sets of words or phrases that name the same kind of thing.
-
-    Raises:
-        LanguageError: not a list of lists of two or more phrases.
-    """
-    raw = data.get("synonyms") or []
-    if not isinstance(raw, list) or not all(
-        isinstance(group, list) and len(group) >= 2 and all(isinstance(p, str) and p.split() for p in group)
-        for group in raw
-    ):
-        raise LanguageError(f"{source}: 'synonyms' is a list of sets of two or more phrases")
-    return tuple(tuple(" ".join(p.lower().split()) for p in group) for group in raw)
 
 
 def _parsed(path: Path) -> Any:

@@ -30,7 +30,6 @@ from __future__ import annotations
 
 import contextlib
 import copy
-import re
 from collections.abc import Sequence
 
 from core.errors import LanguageError
@@ -40,38 +39,10 @@ from knic.language.clauses import Arg, Clause, split_clauses
 from knic.language.commands import CommandLanguage, command_language
 from knic.language.frames import SPEAKER, CommandFrame
 from knic.language.roles import INTERPRETERS
+from knic.language.tidy import SEGMENT_END, fluent, repaired, spelled, talk_dropped
 from knic.language.vocabulary import Term, Vocabulary, level_percent, normalize
 
 MAX_ACTIONS = 3
-#: "is", "are": after words the world has no name for, what follows is talk, not part of the action
-_COPULAS = frozenset({"is", "are", "was", "were"})
-#: what a correction may say again in place of what was said before
-_CORRECTED = frozenset({"entity", "me", "number", "level", "state"})
-#: where a stretch of a typed command ends (sentences and commas); recognised speech has none
-_SEGMENT_END = re.compile(r"[.?!;,]+|\s-\s")
-
-
-def _unplaced(chunks: list[Chunk]) -> list[Chunk]:
-    """The names of things among ``chunks`` that no preposition governs (what an action was about)."""
-    out: list[Chunk] = []
-    previous: Chunk | None = None
-    for chunk in chunks:
-        if chunk.kind == "entity" and (previous is None or previous.kind != "prep"):
-            out.append(chunk)
-        if chunk.kind != "det":
-            previous = chunk
-    return out
-
-
-def _unsaid_negated(chunks: list[Chunk]) -> list[Chunk]:
-    """A correction without what it takes back ("no sorry, not the tissues, the soap": the soap)."""
-    if chunks and chunks[0].kind == "unknown" and chunks[0].text == "not":
-        rest = chunks[1:]
-        while rest and rest[0].kind == "det":
-            rest = rest[1:]
-        if rest and rest[0].kind in ("entity", "me", "pronoun"):
-            return rest[1:]
-    return chunks
 
 
 class Reader:
@@ -106,7 +77,9 @@ class Reader:
             AmbiguityError: a name fits several things (the message asks which).
             LanguageError: the command is not understood (the message says what is missing or unknown).
         """
-        segments = [self._spelled(normalize(part).split()) for part in _SEGMENT_END.split(text)]
+        segments = [
+            spelled(normalize(part).split(), self.language.spellings) for part in SEGMENT_END.split(text)
+        ]
         segments = [segment for segment in segments if segment]
         if not segments:
             raise LanguageError("nothing to understand: the command is empty")
@@ -132,28 +105,7 @@ class Reader:
             raise (exc if acts else whole) from None
 
     def _fluent(self, tokens: list[str]) -> list[str]:
-        """Drop a false start said again right after ("take me to the take me to the kitchen", "the the"):
-        a repeated stretch of two or more words, or a repeated determiner ("to half half open" stays)."""
-        out = list(tokens)
-        single = set(self.language.determiners)
-        changed = True
-        while changed:
-            changed = False
-            for size in range(1, min(6, len(out) // 2) + 1):
-                for i in range(len(out) - 2 * size + 1):
-                    stretch = out[i : i + size]
-                    if stretch == out[i + size : i + 2 * size] and (size > 1 or stretch[0] in single):
-                        del out[i : i + size]
-                        changed = True
-                        break
-                if changed:
-                    break
-        return out
-
-    def _spelled(self, tokens: list[str]) -> list[str]:
-        """Shortenings as the words they stand for ("gimme": give me; :attr:`CommandLanguage.spellings`)."""
-        spellings = self.language.spellings
-        return [word for token in tokens for word in spellings.get(token, token).split()]
+        return fluent(tokens, self.language.determiners)
 
     def _names_things(self, tokens: list[str]) -> bool:
         """Whether a stretch of a command names an object, a place or a device of the world."""
@@ -165,7 +117,7 @@ class Reader:
 
     def _read_tokens(self, tokens: list[str]) -> Reading:
         """:meth:`read` of normalised tokens."""
-        chunks = self._talk_dropped(self._repaired(self.chunks(tokens)))
+        chunks = talk_dropped(repaired(self.chunks(tokens), self._kind_of))
         if not chunks:
             raise LanguageError(f"no action in '{' '.join(tokens)}': say what to do, e.g. 'bring me ...'")
         context: list[Arg] = []
@@ -222,59 +174,6 @@ class Reader:
             raise skipped or LanguageError(f"no action in '{' '.join(tokens)}'")
         return chain(self._placed(frames, located), self.vocabulary, ask_where=ask_where, held=held)
 
-    def _repaired(self, chunks: list[Chunk]) -> list[Chunk]:
-        """Apply the speaker's corrections ("go to the kitchen, no wait, the dining room"; "bring me the cup,
-        sorry, I meant the mug"; "switch on the light, no, scratch that, open the blinds").
-
-        What follows a repair phrase up to the next verb or joiner replaces the last thing of the same kind
-        said before it (an object, a person, a place, a device, a level or a state); when it starts with a
-        verb, it replaces the last action. A repair with nothing before or after it is dropped.
-        """
-        while any(c.kind == "repair" for c in chunks):
-            at = max(i for i, c in enumerate(chunks) if c.kind == "repair")
-            before, after = chunks[:at], _unsaid_negated(chunks[at + 1 :])
-            words = [c for c in after if c.kind not in ("det", "prep")]
-            if not before or not words:
-                chunks = before + after
-                continue
-            if words[0].kind == "verb":
-                verbs = [i for i, c in enumerate(before) if c.kind == "verb"]
-                start = verbs[-1] if verbs else 0
-                while start > 0 and before[start - 1].kind == "join":
-                    start -= 1
-                # the things the dropped action named stay said, for an "it" in the new one ("place the
-                # candle on the shelf; correction: place it on the side table")
-                chunks = _unplaced(before[start:]) + before[:start] + after
-                continue
-            end = next((i for i, c in enumerate(after) if c.kind in ("verb", "join")), len(after))
-            replacement, rest = after[:end], after[end:]
-            # what is said again ("actually make it 40": the 40), with its determiners and preposition
-            named = [i for i, c in enumerate(replacement) if c.kind in _CORRECTED]
-            if named:
-                first = named[0]
-                while first > 0 and replacement[first - 1].kind in ("det", "prep"):
-                    first -= 1
-                replacement = replacement[first : named[0] + 1] + replacement[named[0] + 1 :]
-            kind = self._kind_of(next((c for c in replacement if c.kind not in ("det", "prep")), words[0]))
-            target = next(
-                (i for i in range(len(before) - 1, -1, -1) if self._kind_of(before[i]) == kind), None
-            )
-            if target is None:
-                chunks = before + after
-                continue
-            start = target
-            while start > 0 and before[start - 1].kind == "det":
-                start -= 1
-            if (
-                replacement
-                and replacement[0].kind == "prep"
-                and start > 0
-                and before[start - 1].kind == "prep"
-            ):
-                start -= 1  # "to the kitchen ... no, to the dining room"
-            chunks = before[:start] + replacement + before[target + 1 :] + rest
-        return chunks
-
     def _kind_of(self, chunk: Chunk) -> str:
         """What a chunk names, for corrections: object, person, place, device, level, state or its kind."""
         if chunk.kind == "me":
@@ -292,28 +191,6 @@ class Reader:
             if any(self.is_a(t, c) for t in chunk.terms for c in categories):
                 return kind
         return "entity"
-
-    def _talk_dropped(self, chunks: list[Chunk]) -> list[Chunk]:
-        """Drop what is said about things the world lacks after an action ("close the blinds, the sun's in
-        my eyes"): a copula after words the world has no name for, from those words to the next verb or
-        joiner. Such talk before the first verb already makes no action."""
-        out = list(chunks)
-        at = len(out)
-        while at > 1:
-            at = min(at, len(out)) - 1
-            if out[at].kind != "unknown" or out[at].text not in _COPULAS:
-                continue
-            start = at
-            while start > 0 and out[start - 1].kind in ("unknown", "det"):
-                start -= 1
-            subject = out[start:at]
-            verbs = [i for i, c in enumerate(out[:start]) if c.kind == "verb"]
-            said = verbs and any(c.kind in ("entity", "me", "pronoun") for c in out[verbs[-1] : start])
-            if not said or not any(c.kind == "unknown" for c in subject):
-                continue  # "check whether the front door is open": what the verb asks about
-            end = next((i for i in range(at, len(out)) if out[i].kind in ("verb", "join")), len(out))
-            del out[start:end]
-        return out
 
     def _frames_of(
         self, clause: Clause, previous: list[CommandFrame], groups: list[list[CommandFrame]]

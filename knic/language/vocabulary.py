@@ -14,6 +14,7 @@ from __future__ import annotations
 import re
 from collections.abc import Iterable, Mapping, Sequence
 from dataclasses import dataclass, field
+from functools import lru_cache
 from pathlib import Path
 from typing import Any, Protocol
 
@@ -166,6 +167,26 @@ class Lexicon:
         return cls(names=names, groups=tuple(groups))
 
 
+SYNONYMS_FILE = Path(__file__).with_name("synonyms.yaml")
+
+
+@lru_cache(maxsize=1)
+def english_synonyms() -> tuple[tuple[str, ...], ...]:
+    """The sets of :data:`SYNONYMS_FILE` (read once).
+
+    Raises:
+        LanguageError: the file is unreadable or not a list of sets of two or more phrases.
+    """
+    data = read_yaml(SYNONYMS_FILE, "synonyms", LanguageError) or {}
+    raw = data.get("synonyms") if isinstance(data, dict) else None
+    if not isinstance(raw, list) or not all(
+        isinstance(group, list) and len(group) >= 2 and all(isinstance(p, str) and p.split() for p in group)
+        for group in raw
+    ):
+        raise LanguageError(f"{SYNONYMS_FILE}: 'synonyms' is a list of sets of two or more phrases")
+    return tuple(tuple(" ".join(p.lower().split()) for p in group) for group in raw)
+
+
 def _synonym_variants(terms: Sequence[Term], synonyms: Sequence[Sequence[str]]) -> list[Term]:
     """The names synonyms give: each whole-word synonym in a name (the longest at each place) replaced by the
     others of its set, where that makes no name the world already has."""
@@ -241,7 +262,7 @@ class Vocabulary:
         Symbols get their lexicon phrases, or their own name spoken (underscores as spaces). Lexicon
         entries for symbols not in ``instances`` are ignored. Groups whose members are all missing are left
         out; members that are missing are dropped from the group. Each name also gets the variants that
-        common English synonyms give (``synonyms``, default the command language's: "the couch" for a
+        common English synonyms give (``synonyms``, default :func:`english_synonyms`: "the couch" for a
         world's ``sofa``, "the kitchen cupboard" for its ``kitchen_cabinet``), unless a variant is already a
         name of the world.
         """
@@ -254,11 +275,7 @@ class Vocabulary:
             else:
                 phrases = lexicon.names.get(symbol) or (normalize(symbol),)
             terms.extend(Term(p, symbol, type_name, (symbol,)) for p in phrases)
-        if synonyms is None:
-            from knic.language.commands import command_language  # the command language imports this module
-
-            synonyms = command_language().synonyms
-        terms += _synonym_variants(terms, synonyms)
+        terms += _synonym_variants(terms, english_synonyms() if synonyms is None else synonyms)
         for group in lexicon.groups:
             if group.type is not None:
                 members = tuple(s for s, t in sorted(instances.items()) if _is_subtype(types, t, group.type))

@@ -1,0 +1,133 @@
+"""What people say around a command, tidied before it is read: shortenings, false starts, corrections and
+talk about things the world lacks (used by :class:`knic.language.reader.Reader`)."""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Callable, Collection, Mapping
+
+from knic.language.chunks import Chunk
+
+#: "is", "are": after words the world has no name for, what follows is talk, not part of the action
+COPULAS = frozenset({"is", "are", "was", "were"})
+#: what a correction may say again in place of what was said before
+CORRECTED = frozenset({"entity", "me", "number", "level", "state"})
+#: where a stretch of a typed command ends (sentences and commas); recognised speech has none
+SEGMENT_END = re.compile(r"[.?!;,]+|\s-\s")
+
+
+def unplaced(chunks: list[Chunk]) -> list[Chunk]:
+    """The names of things among ``chunks`` that no preposition governs (what an action was about)."""
+    out: list[Chunk] = []
+    previous: Chunk | None = None
+    for chunk in chunks:
+        if chunk.kind == "entity" and (previous is None or previous.kind != "prep"):
+            out.append(chunk)
+        if chunk.kind != "det":
+            previous = chunk
+    return out
+
+
+def unsaid_negated(chunks: list[Chunk]) -> list[Chunk]:
+    """A correction without what it takes back ("no sorry, not the tissues, the soap": the soap)."""
+    if chunks and chunks[0].kind == "unknown" and chunks[0].text == "not":
+        rest = chunks[1:]
+        while rest and rest[0].kind == "det":
+            rest = rest[1:]
+        if rest and rest[0].kind in ("entity", "me", "pronoun"):
+            return rest[1:]
+    return chunks
+
+
+def fluent(tokens: list[str], determiners: Collection[str]) -> list[str]:
+    """Drop a false start said again right after ("take me to the take me to the kitchen", "the the"):
+    a repeated stretch of two or more words, or a repeated determiner ("to half half open" stays)."""
+    out = list(tokens)
+    changed = True
+    while changed:
+        changed = False
+        for size in range(1, min(6, len(out) // 2) + 1):
+            for i in range(len(out) - 2 * size + 1):
+                stretch = out[i : i + size]
+                if stretch == out[i + size : i + 2 * size] and (size > 1 or stretch[0] in determiners):
+                    del out[i : i + size]
+                    changed = True
+                    break
+            if changed:
+                break
+    return out
+
+
+def spelled(tokens: list[str], spellings: Mapping[str, str]) -> list[str]:
+    """Shortenings as the words they stand for ("gimme": give me; :attr:`CommandLanguage.spellings`)."""
+    return [word for token in tokens for word in spellings.get(token, token).split()]
+
+
+def repaired(chunks: list[Chunk], kind_of: Callable[[Chunk], str]) -> list[Chunk]:
+    """Apply the speaker's corrections ("go to the kitchen, no wait, the dining room"; "bring me the cup,
+    sorry, I meant the mug"; "switch on the light, no, scratch that, open the blinds").
+
+    What follows a repair phrase up to the next verb or joiner replaces the last thing of the same kind
+    said before it (an object, a person, a place, a device, a level or a state); when it starts with a
+    verb, it replaces the last action. A repair with nothing before or after it is dropped.
+    """
+    while any(c.kind == "repair" for c in chunks):
+        at = max(i for i, c in enumerate(chunks) if c.kind == "repair")
+        before, after = chunks[:at], unsaid_negated(chunks[at + 1 :])
+        words = [c for c in after if c.kind not in ("det", "prep")]
+        if not before or not words:
+            chunks = before + after
+            continue
+        if words[0].kind == "verb":
+            verbs = [i for i, c in enumerate(before) if c.kind == "verb"]
+            start = verbs[-1] if verbs else 0
+            while start > 0 and before[start - 1].kind == "join":
+                start -= 1
+            # the things the dropped action named stay said, for an "it" in the new one ("place the
+            # candle on the shelf; correction: place it on the side table")
+            chunks = unplaced(before[start:]) + before[:start] + after
+            continue
+        end = next((i for i, c in enumerate(after) if c.kind in ("verb", "join")), len(after))
+        replacement, rest = after[:end], after[end:]
+        # what is said again ("actually make it 40": the 40), with its determiners and preposition
+        named = [i for i, c in enumerate(replacement) if c.kind in CORRECTED]
+        if named:
+            first = named[0]
+            while first > 0 and replacement[first - 1].kind in ("det", "prep"):
+                first -= 1
+            replacement = replacement[first : named[0] + 1] + replacement[named[0] + 1 :]
+        kind = kind_of(next((c for c in replacement if c.kind not in ("det", "prep")), words[0]))
+        target = next((i for i in range(len(before) - 1, -1, -1) if kind_of(before[i]) == kind), None)
+        if target is None:
+            chunks = before + after
+            continue
+        start = target
+        while start > 0 and before[start - 1].kind == "det":
+            start -= 1
+        if replacement and replacement[0].kind == "prep" and start > 0 and before[start - 1].kind == "prep":
+            start -= 1  # "to the kitchen ... no, to the dining room"
+        chunks = before[:start] + replacement + before[target + 1 :] + rest
+    return chunks
+
+
+def talk_dropped(chunks: list[Chunk]) -> list[Chunk]:
+    """Drop what is said about things the world lacks after an action ("close the blinds, the sun's in
+    my eyes"): a copula after words the world has no name for, from those words to the next verb or
+    joiner. Such talk before the first verb already makes no action."""
+    out = list(chunks)
+    at = len(out)
+    while at > 1:
+        at = min(at, len(out)) - 1
+        if out[at].kind != "unknown" or out[at].text not in COPULAS:
+            continue
+        start = at
+        while start > 0 and out[start - 1].kind in ("unknown", "det"):
+            start -= 1
+        subject = out[start:at]
+        verbs = [i for i, c in enumerate(out[:start]) if c.kind == "verb"]
+        said = verbs and any(c.kind in ("entity", "me", "pronoun") for c in out[verbs[-1] : start])
+        if not said or not any(c.kind == "unknown" for c in subject):
+            continue  # "check whether the front door is open": what the verb asks about
+        end = next((i for i in range(at, len(out)) if out[i].kind in ("verb", "join")), len(out))
+        del out[start:end]
+    return out
