@@ -38,7 +38,6 @@ from core.errors import LanguageError
 from knic.language.acoustic import DEFAULT_ACOUSTIC_MODEL, acoustic_model_options, wheel_model_dir
 from knic.language.audio import Transcript, duration_of, pad_pcm, pcm_bytes
 from knic.language.commands import command_language
-from knic.language.ngram import arpa_from_sentences
 from knic.language.phoneloop import (
     NGRAM_DECODER_OPTIONS,
     NGRAM_TRAIL_SILENCE,
@@ -46,7 +45,6 @@ from knic.language.phoneloop import (
     PhoneLoop,
 )
 from knic.language.reader import AmbiguityError, Reader
-from knic.language.sampling import FIRST_PHRASE_SHARE, sample_sentences
 from knic.language.vocabulary import Vocabulary
 
 if TYPE_CHECKING:
@@ -98,12 +96,16 @@ def build_model(
     key.update(Path(language.source).read_bytes() if language.source else b"")
     for term in vocabulary.terms:
         key.update(f"{term.phrase}|{term.type}|{term.is_group};".encode())
+    from knic.language.sampling import FIRST_PHRASE_SHARE, sample_sentences  # only to build a model
+
     key.update(f"{sentences}|{seed}|{sorted(exclude)}|{FIRST_PHRASE_SHARE}".encode())
     cache = Path(tempfile.gettempdir()) / f"knic-ngram-{key.hexdigest()[:20]}.arpa"
     if cache.is_file():
         return cache.read_text(encoding="utf-8")
     samples = sample_sentences(vocabulary, sentences, seed=seed, exclude_words=exclude, frames=False)
     texts = [s.text for s in samples]
+    from knic.language.ngram import arpa_from_sentences
+
     arpa = arpa_from_sentences(texts)
     with contextlib.suppress(OSError):  # no cache: built again next time
         cache.write_text(arpa, encoding="utf-8")
