@@ -12,6 +12,7 @@ uses the template grammar (:class:`knic.language.speech.Recognizer`).
 from __future__ import annotations
 
 import argparse
+from pathlib import Path
 
 from knic.cli.goal import add_world_arguments, load_vocabulary, print_understanding
 
@@ -47,6 +48,17 @@ def add_acoustic_argument(parser: argparse.ArgumentParser) -> None:
     )
 
 
+def _world_files(args: argparse.Namespace) -> list[str]:
+    """The files the world's vocabulary is read from: those the options name, their lexicons, the defaults."""
+    from knic.language.world import DEFAULT_DOMAIN, DEFAULT_PROBLEM, LEXICON_NAME
+
+    named = [args.domain or DEFAULT_DOMAIN, getattr(args, "world", None), args.problem, args.lexicon]
+    if getattr(args, "world", None) is None and args.problem is None and args.domain is None:
+        named.append(DEFAULT_PROBLEM)
+    files = [str(f) for f in named if f]
+    return files + [str(Path(f).parent / LEXICON_NAME) for f in files]
+
+
 def run(args: argparse.Namespace) -> int:
     from core.errors import AudioError
     from core.inputs import check_input_file
@@ -55,21 +67,35 @@ def run(args: argparse.Namespace) -> int:
     check_input_file(args.wav, MAX_AUDIO_BYTES, "audio file", AudioError)  # never read /dev/zero
     audio = load_pcm(args.wav)  # refuse a bad file before loading the world
     decoder = getattr(args, "decoder", "ngram")
+    kept = None
     if decoder == "ngram":
+        from knic.language import oneshot
         from knic.language.acoustic import acoustic_model_options
         from knic.language.phoneloop import phone_score_in_background
 
         acoustic_model_options(args.acoustic_model, decoder="ngram")  # a bad model is refused before the fork
-        # the confidence's phone-loop pass runs in a child while this process loads the world and decodes
+        # both passes run in children while this process loads the world (the n-gram pass when this world's
+        # model is remembered from an earlier start)
+        key = oneshot.world_key(_world_files(args), args.acoustic_model)
+        model = oneshot.remembered_model(key)
+        decoded = oneshot.decoded_in_background(audio, model, args.acoustic_model) if model else None
         phone_score = phone_score_in_background(audio, args.acoustic_model)
-    vocabulary = load_vocabulary(args)
+        kept = oneshot.remembered_vocabulary(key)
+    if kept is not None:
+        vocabulary, args.speaker = kept[0], args.speaker or kept[1]
+    else:
+        given = args.speaker
+        vocabulary = load_vocabulary(args)
+        if decoder == "ngram" and given is None:
+            oneshot.remember_vocabulary(key, vocabulary, args.speaker)
     from knic.language.lmspeech import NgramRecognizer, command_recognizer
     from knic.language.understanding import understand_transcript
 
     if decoder == "ngram":
-        transcript = NgramRecognizer(vocabulary, acoustic_model=args.acoustic_model).recognize(
-            audio, phone_score=phone_score
-        )
+        ngram = NgramRecognizer(vocabulary, acoustic_model=args.acoustic_model, lazy=True)
+        transcript = ngram.recognize(audio, phone_score=phone_score, decoded=decoded)
+        if decoded is None and ngram.model_files is not None:
+            oneshot.remember_model(key, *ngram.model_files)
     else:
         recognizer = command_recognizer(vocabulary, decoder=decoder, acoustic_model=args.acoustic_model)
         transcript = recognizer.recognize(audio)

@@ -126,6 +126,8 @@ class NgramRecognizer:
             :class:`~knic.language.reader.Reader` reads it, or finds it ambiguous).
         phone_options: pocketsphinx options of the phone-loop pass (:class:`PhoneLoop`) over
             ``decoder_options`` and :data:`PHONE_DECODER_OPTIONS`.
+        lazy: build the decoder when it is first needed (not when the decoding is done elsewhere:
+            :meth:`recognize` ``decoded``).
 
     Raises:
         LanguageError: pocketsphinx refuses the options, the model or the phone loop.
@@ -141,18 +143,35 @@ class NgramRecognizer:
         nbest: int = NBEST,
         reads: Callable[[str], bool] | None = None,
         phone_options: Mapping[str, object] | None = None,
+        lazy: bool = False,
     ):
-        from pocketsphinx import Decoder, set_loglevel
-
-        set_loglevel("FATAL")
         self.threshold = threshold
         self.nbest = nbest
         self.reads = reads or _reader_check(vocabulary)
-        options = {
+        self._vocabulary = vocabulary
+        self._options = {
             **NGRAM_DECODER_OPTIONS,
             **acoustic_model_options(acoustic_model, decoder="ngram"),
             **(decoder_options or {}),
         }
+        self._acoustic_model = acoustic_model
+        self._phone_options = {**(decoder_options or {}), **PHONE_DECODER_OPTIONS, **(phone_options or {})}
+        self._phone_loop: PhoneLoop | None = None
+        self._decoder: Any = None
+        #: the model's dictionary and binary language model, once built (what :mod:`knic.language.oneshot`
+        #: remembers for the next one-shot start)
+        self.model_files: tuple[str, Path | None] | None = None
+        if not lazy:
+            self._build()
+
+    def _build(self) -> Any:
+        """The n-gram decoder (built on first use when the recogniser was made ``lazy``)."""
+        if self._decoder is not None:
+            return self._decoder
+        from pocketsphinx import Decoder, set_loglevel
+
+        set_loglevel("FATAL")
+        options, vocabulary = self._options, self._vocabulary
         words = vocabulary.words() | command_language().words()
         source = Path(str(options.get("dict") or wheel_model_dir() / "cmudict-en-us.dict"))
         lines = _dictionary_lines(source, words)
@@ -170,15 +189,15 @@ class NgramRecognizer:
             except (KeyError, ValueError, TypeError, RuntimeError) as exc:
                 raise LanguageError(f"pocketsphinx refused the decoder options {options}: {exc}") from exc
             try:
-                decoder.add_lm("ngram", _binary_model(decoder, arpa))
+                model, binary = _binary_model(decoder, arpa)
+                decoder.add_lm("ngram", model)
                 decoder.activate_search("ngram")
             except (RuntimeError, ValueError) as exc:
                 raise LanguageError(f"pocketsphinx refused the command language model: {exc}") from exc
         self._decoder = decoder
         self._initial_cmn = decoder.get_cmn()
-        self._acoustic_model = acoustic_model
-        self._phone_options = {**(decoder_options or {}), **PHONE_DECODER_OPTIONS, **(phone_options or {})}
-        self._phone_loop: PhoneLoop | None = None
+        self.model_files = ("".join(lines), binary)
+        return decoder
 
     @property
     def phone_loop(self) -> PhoneLoop:
@@ -188,7 +207,7 @@ class NgramRecognizer:
         return self._phone_loop
 
     def _decode(self, raw: bytes) -> tuple[str, float, int]:
-        decoder = self._decoder
+        decoder = self._build()
         decoder.reinit_feat()  # the dither's noise starts afresh: the same audio decodes the same way
         decoder.set_cmn(self._initial_cmn)
         decoder.start_utt()
@@ -199,7 +218,14 @@ class NgramRecognizer:
             return "", float("-inf"), max(1, decoder.n_frames())
         return " ".join(hyp.hypstr.split()), float(hyp.best_score), max(1, decoder.n_frames())
 
-    def _snap(self, text: str) -> tuple[str, bool]:
+    def _nbest(self) -> list[str]:
+        """The N-best hypotheses of the utterance just decoded (none without a lattice)."""
+        try:
+            return [" ".join(h.hypstr.split()) for h in itertools.islice(self._build().nbest(), self.nbest)]
+        except (RuntimeError, ValueError):  # no lattice for this utterance
+            return []
+
+    def _snap(self, text: str, nbest: Callable[[], list[str]] | None = None) -> tuple[str, bool]:
         """The best hypothesis if the reader reads it, else the first N-best one it reads, else the first of
         the :data:`TRIMMED` best that it reads without its last word or two (a word heard in the silence
         after the command: "... from the kitchen cabinet take"), else the best; and whether the reader reads
@@ -210,12 +236,7 @@ class NgramRecognizer:
             return text, True
         if self.nbest <= 0:
             return text, False
-        try:
-            hypotheses = [
-                " ".join(h.hypstr.split()) for h in itertools.islice(self._decoder.nbest(), self.nbest)
-            ]
-        except (RuntimeError, ValueError):  # no lattice for this utterance
-            return text, False
+        hypotheses = (nbest or self._nbest)()[: self.nbest]
         snapped = next((h for h in hypotheses if h and h != text and self.reads(h)), None)
         if snapped:
             return snapped, True
@@ -232,6 +253,7 @@ class NgramRecognizer:
         audio: str | Path | bytes | npt.NDArray[np.int16],
         *,
         phone_score: Callable[[], float] | None = None,
+        decoded: Callable[[], Decoded] | None = None,
     ) -> Transcript:
         """Decode one utterance; ``in_grammar`` is False when the confidence is below the threshold.
 
@@ -244,6 +266,8 @@ class NgramRecognizer:
             audio: a WAV path, raw 16 kHz mono 16-bit PCM bytes, or samples.
             phone_score: the phone loop's best path score of this utterance when it is computed elsewhere
                 (:func:`phone_score_in_background`); default: this recogniser's :attr:`phone_loop`.
+            decoded: the n-gram pass of this utterance done elsewhere, with this recogniser's model
+                (:func:`knic.language.oneshot.decoded_in_background`); default: done here.
 
         Raises:
             AudioError: the file is not usable audio.
@@ -251,8 +275,12 @@ class NgramRecognizer:
         samples = pcm_bytes(audio)
         raw = pad_pcm(samples, NGRAM_TRAIL_SILENCE)
         started = time.perf_counter()
-        text, score, frames = self._decode(raw)
-        text, read = self._snap(text)
+        if decoded is not None:
+            text, score, frames, hypotheses = decoded()
+            text, read = self._snap(text, lambda: list(hypotheses))
+        else:
+            text, score, frames = self._decode(raw)
+            text, read = self._snap(text)
         if not read:
             elapsed = (time.perf_counter() - started) * 1000.0
             return Transcript(text, False, math.nan if text else float("-inf"), duration_of(samples), elapsed)
@@ -260,6 +288,10 @@ class NgramRecognizer:
         elapsed = (time.perf_counter() - started) * 1000.0
         level = confidence(score, reference, frames)
         return Transcript(text, level >= self.threshold, level, duration_of(samples), elapsed)
+
+
+#: an n-gram pass's result: best hypothesis, its path score, frames decoded, the N-best hypotheses
+Decoded = tuple[str, float, int, tuple[str, ...]]
 
 
 def confidence(score: float, phone_score: float, frames: int) -> float:
@@ -321,9 +353,10 @@ def _dictionary_lines(source: Path, words: set[str]) -> list[str]:
     return lines
 
 
-def _binary_model(decoder: Any, arpa: str) -> Any:
+def _binary_model(decoder: Any, arpa: str) -> tuple[Any, Path | None]:
     """The ARPA model as pocketsphinx's ``NGramModel``, read from a binary copy kept in the temporary folder
-    by content (reading the binary form takes about 1 ms, parsing the ARPA text about 60).
+    by content (reading the binary form takes about 1 ms, parsing the ARPA text about 60), and that copy's
+    path (None when it could not be kept).
 
     Raises:
         RuntimeError, ValueError: pocketsphinx cannot read the model.
@@ -334,7 +367,7 @@ def _binary_model(decoder: Any, arpa: str) -> Any:
     cache = Path(tempfile.gettempdir()) / f"knic-ngram-{key}.lm.bin"
     if cache.is_file():
         with contextlib.suppress(RuntimeError, ValueError, OSError):  # unreadable: made again below
-            return NGramModel(decoder.config, decoder.logmath, str(cache))
+            return NGramModel(decoder.config, decoder.logmath, str(cache)), cache
     with tempfile.TemporaryDirectory(prefix="knic-lm-") as tmp:
         path = Path(tmp) / "commands.arpa"
         path.write_text(arpa, encoding="utf-8")
@@ -343,7 +376,7 @@ def _binary_model(decoder: Any, arpa: str) -> Any:
             partial = Path(tmp) / "commands.lm.bin"
             model.write(str(partial), NGramModel.str_to_type("bin"))
             shutil.move(str(partial), cache)
-    return model
+    return model, (cache if cache.is_file() else None)
 
 
 def _model_words(arpa: str) -> set[str]:

@@ -326,6 +326,38 @@ class Vocabulary:
                 locations.setdefault(thing, []).append(room)
         return cls.from_instances(instances, types, lexicon, predicates, locations)
 
+    def to_data(self) -> dict[str, Any]:
+        """The vocabulary as plain JSON data (:meth:`from_data` reads it back)."""
+        return {
+            "terms": [[t.phrase, t.symbol, t.type, list(t.members)] for t in self._terms],
+            "types": self._types,
+            "instances": self._instances,
+            "predicates": {k: [list(p) for p in v] for k, v in self.predicates.items()},
+            "locations": {k: list(v) for k, v in self.locations.items()},
+        }
+
+    @classmethod
+    def from_data(cls, data: Mapping[str, Any]) -> Vocabulary:
+        """A vocabulary from :meth:`to_data`'s form.
+
+        Raises:
+            LanguageError: the data is not in that form.
+        """
+        try:
+            terms = [Term(str(p), str(s), str(t), tuple(str(m) for m in ms)) for p, s, t, ms in data["terms"]]
+            predicates = {
+                str(k): tuple((str(a), str(b)) for a, b in v) for k, v in dict(data["predicates"]).items()
+            }
+            return cls(
+                terms,
+                {str(k): (str(v) if v is not None else None) for k, v in dict(data["types"]).items()},
+                {str(k): str(v) for k, v in dict(data["instances"]).items()},
+                predicates,
+                {str(k): tuple(str(x) for x in v) for k, v in dict(data["locations"]).items()},
+            )
+        except (KeyError, TypeError, ValueError) as exc:
+            raise LanguageError(f"not a vocabulary's data: {exc}") from None
+
     @property
     def instances(self) -> dict[str, str]:
         """Every instance and constant of the world: {symbol: type}."""

@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import tempfile
 from pathlib import Path
 
 import pytest
@@ -47,6 +48,27 @@ def test_say_json(capsys: pytest.CaptureFixture[str]) -> None:
     assert data["transcript"] == "bring me my glasses"
     assert data["goals"] == ["(has annie glasses)"] and data["accepted"] is True
     assert data["audio"]["duration_s"] > 0.5
+
+
+def test_say_remembers_the_model_and_hears_the_same_the_next_time(
+    capsys: pytest.CaptureFixture[str], tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+) -> None:
+    """The first start builds and keeps the world's command model and vocabulary; the next decodes in child
+    processes with them (knic.language.oneshot) and reads the same; a damaged copy is ignored."""
+    monkeypatch.setattr(tempfile, "tempdir", str(tmp_path))
+    wav = str(SPEECH_FIXTURES / "cmd_011.wav")
+    assert main(["say", wav, "--json"]) == 0
+    first = json.loads(capsys.readouterr().out)
+    kept = sorted(p.name for p in tmp_path.glob("knic-oneshot-*"))
+    assert len(kept) == 3 and any(n.endswith("-vocabulary.json") for n in kept)
+    assert main(["say", wav, "--json"]) == 0
+    second = json.loads(capsys.readouterr().out)
+    assert second["transcript"] == first["transcript"] == "bring me my glasses"
+    assert second["goals"] == first["goals"] == ["(has annie glasses)"]
+    for path in tmp_path.glob("knic-oneshot-*.json"):
+        path.write_text("{not json")
+    assert main(["say", wav, "--json"]) == 0
+    assert json.loads(capsys.readouterr().out)["goals"] == ["(has annie glasses)"]
 
 
 FLAT = Path(__file__).resolve().parents[2] / "worlds" / "test_flat" / "test_flat.yaml"
