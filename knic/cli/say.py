@@ -12,6 +12,7 @@ uses the template grammar (:class:`knic.language.speech.Recognizer`).
 from __future__ import annotations
 
 import argparse
+from collections.abc import Callable
 from pathlib import Path
 
 from knic.cli.goal import add_world_arguments, load_vocabulary, print_understanding
@@ -60,26 +61,25 @@ def _world_files(args: argparse.Namespace) -> list[str]:
 
 
 def run(args: argparse.Namespace) -> int:
+    decoder = getattr(args, "decoder", "ngram")
+    if decoder == "ngram":
+        from knic.language import oneshot
+
+        # both passes start in children at once, each reading the file itself, while this process checks
+        # the file and loads the world (the n-gram pass when this world's model is remembered)
+        decoded, phone_score = oneshot.start_passes(args.wav, _world_files(args), args.acoustic_model)
     from core.errors import AudioError
     from core.inputs import check_input_file
     from knic.language.audio import load_pcm
 
     check_input_file(args.wav, MAX_AUDIO_BYTES, "audio file", AudioError)  # never read /dev/zero
     audio = load_pcm(args.wav)  # refuse a bad file before loading the world
-    decoder = getattr(args, "decoder", "ngram")
     kept = None
     if decoder == "ngram":
-        from knic.language import oneshot
         from knic.language.acoustic import acoustic_model_options
-        from knic.language.phoneloop import phone_score_in_background
 
-        acoustic_model_options(args.acoustic_model, decoder="ngram")  # a bad model is refused before the fork
-        # both passes run in children while this process loads the world (the n-gram pass when this world's
-        # model is remembered from an earlier start)
+        acoustic_model_options(args.acoustic_model, decoder="ngram")  # a bad model: one line
         key = oneshot.world_key(_world_files(args), args.acoustic_model)
-        model = oneshot.remembered_model(key)
-        decoded = oneshot.decoded_in_background(audio, model, args.acoustic_model) if model else None
-        phone_score = phone_score_in_background(audio, args.acoustic_model)
         kept = oneshot.remembered_vocabulary(key)
     if kept is not None:
         vocabulary, args.speaker = kept[0], args.speaker or kept[1]
@@ -93,8 +93,13 @@ def run(args: argparse.Namespace) -> int:
 
     if decoder == "ngram":
         ngram = NgramRecognizer(vocabulary, acoustic_model=args.acoustic_model, lazy=True)
-        transcript = ngram.recognize(audio, phone_score=phone_score, decoded=decoded)
-        if decoded is None and ngram.model_files is not None:
+        passed = decoded()
+        transcript = ngram.recognize(
+            audio,
+            phone_score=lambda: _or(phone_score(), lambda: ngram.phone_loop.score_of(audio)),
+            decoded=(lambda: passed) if passed is not None else None,
+        )
+        if passed is None and ngram.model_files is not None:
             oneshot.remember_model(key, *ngram.model_files)
     else:
         recognizer = command_recognizer(vocabulary, decoder=decoder, acoustic_model=args.acoustic_model)
@@ -102,3 +107,7 @@ def run(args: argparse.Namespace) -> int:
     result = understand_transcript(transcript, vocabulary, speaker=args.speaker)
     print_understanding(result.to_dict(), args.json)
     return 0
+
+
+def _or(value: float | None, otherwise: Callable[[], float]) -> float:
+    return value if value is not None else otherwise()

@@ -24,11 +24,10 @@ import os
 import tempfile
 from collections.abc import Callable, Iterable
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import TYPE_CHECKING, Any
 
 from core.errors import LanguageError
-from knic.language.acoustic import DEFAULT_ACOUSTIC_MODEL, acoustic_model_options
-from knic.language.audio import pad_pcm
+from knic.language.acoustic import DEFAULT_ACOUSTIC_MODEL
 from knic.language.phoneloop import NGRAM_DECODER_OPTIONS, NGRAM_TRAIL_SILENCE
 
 if TYPE_CHECKING:
@@ -39,6 +38,8 @@ _LANGUAGE = Path(__file__).resolve().parent
 _CODE = [_LANGUAGE, _LANGUAGE.parents[1] / "knowledge_base", _LANGUAGE.parents[1] / "worlds"]
 #: N-best hypotheses sent back by the child (the recogniser tries at most this many)
 NBEST = 10
+#: largest WAV file a child reads (as ``knic say``)
+MAX_AUDIO_BYTES = 32 * 1024 * 1024
 
 Decoded = tuple[str, float, int, tuple[str, ...]]
 
@@ -114,6 +115,9 @@ def decode_here(samples: bytes, model: tuple[Path, Path], acoustic_model: str | 
     """
     from pocketsphinx import Decoder, set_loglevel
 
+    from knic.language.acoustic import acoustic_model_options
+    from knic.language.audio import pad_pcm
+
     set_loglevel("FATAL")
     options = {**NGRAM_DECODER_OPTIONS, **acoustic_model_options(acoustic_model, decoder="ngram")}
     decoder = Decoder(lm=None, loglevel="FATAL", **{**options, "dict": str(model[0])})
@@ -135,34 +139,30 @@ def decode_here(samples: bytes, model: tuple[Path, Path], acoustic_model: str | 
     return " ".join(hyp.hypstr.split()), float(hyp.best_score), frames, tuple(nbest)
 
 
-def decoded_in_background(
-    samples: bytes, model: tuple[Path, Path], acoustic_model: str | Path = DEFAULT_ACOUSTIC_MODEL
-) -> Callable[[], Decoded]:
-    """Start the n-gram pass of one utterance in a child process; the returned call waits for its result.
+def in_child(job: Callable[[], Any]) -> Callable[[], Any]:
+    """Run ``job`` in a forked child; the returned call waits for its result (JSON-able), or None when the
+    child failed or ``os.fork`` is missing (the caller then does the work itself).
 
-    Forked, so call it before the process starts threads; where ``os.fork`` is missing, or the child
-    fails, the pass runs here when asked for.
+    Call it before the process starts threads. A result never asked for leaves the child to finish alone.
     """
-
-    def here() -> Decoded:
-        return decode_here(samples, model, acoustic_model)
-
     if not hasattr(os, "fork"):
-        return here
+        return lambda: None
     read_end, write_end = os.pipe()
     pid = os.fork()
-    if pid == 0:  # the child: decode, write the result as JSON, leave without the parent's exit handlers
+    if pid == 0:  # the child: work, write the result as JSON, leave without the parent's exit handlers
         status = 1
         try:
             os.close(read_end)
             with os.fdopen(write_end, "w", encoding="utf-8") as pipe:
-                pipe.write(json.dumps(here()))
+                pipe.write(json.dumps(job()))
             status = 0
+        except BaseException:  # any failure: the parent does the work itself
+            status = 1
         finally:
             os._exit(status)
     os.close(write_end)
 
-    def wait() -> Decoded:
+    def wait() -> Any:
         try:
             with os.fdopen(read_end, "r", encoding="utf-8") as pipe:
                 data = pipe.read()
@@ -170,9 +170,50 @@ def decoded_in_background(
             with contextlib.suppress(ChildProcessError):
                 os.waitpid(pid, 0)
         try:
-            text, score, frames, nbest = json.loads(data)
-            return str(text), float(score), int(frames), tuple(str(h) for h in nbest)
-        except (ValueError, TypeError):
-            return here()
+            return json.loads(data)
+        except ValueError:
+            return None
 
     return wait
+
+
+def start_passes(
+    wav: str, files: Iterable[str | Path | None], acoustic_model: str | Path = DEFAULT_ACOUSTIC_MODEL
+) -> tuple[Callable[[], Decoded | None], Callable[[], float | None]]:
+    """Fork the n-gram pass (with the model remembered for the world's ``files``) and the phone loop of the
+    WAV file ``wav``, each in a child that reads the file itself; the calls return their results, or None
+    (no model remembered, an unusable file: the caller decodes itself and reports the file's fault)."""
+    files = list(files)
+
+    def samples() -> bytes:
+        from core.errors import AudioError
+        from core.inputs import check_input_file
+        from knic.language.audio import load_pcm
+
+        check_input_file(wav, MAX_AUDIO_BYTES, "audio file", AudioError)  # never read /dev/zero
+        return load_pcm(wav)
+
+    def ngram() -> Decoded | None:
+        model = remembered_model(world_key(files, acoustic_model))
+        return decode_here(samples(), model, acoustic_model) if model else None
+
+    def phones() -> float:
+        from knic.language.audio import pad_pcm
+        from knic.language.phoneloop import PhoneLoop
+
+        return PhoneLoop(acoustic_model).score(pad_pcm(samples(), NGRAM_TRAIL_SILENCE))
+
+    decoded, score = in_child(ngram), in_child(phones)
+
+    def got_decoded() -> Decoded | None:
+        result = decoded()
+        if not isinstance(result, list) or len(result) != 4:
+            return None
+        text, path_score, frames, nbest = result
+        return str(text), float(path_score), int(frames), tuple(str(h) for h in nbest)
+
+    def got_score() -> float | None:
+        result = score()
+        return float(result) if isinstance(result, (int, float)) else None
+
+    return got_decoded, got_score

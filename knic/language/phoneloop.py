@@ -18,7 +18,6 @@ from pathlib import Path
 
 from core.errors import LanguageError
 from knic.language.acoustic import DEFAULT_ACOUSTIC_MODEL, acoustic_model_options, wheel_model_dir
-from knic.language.audio import pad_pcm
 
 #: Silence after the speech for the n-gram pass and its phone loop (s): the grammar decoder needs 0.5 s to
 #: finish its last word; the n-gram search does not, and in 0.5 s it more often heard a word that was not
@@ -92,6 +91,12 @@ class PhoneLoop:
                 raise LanguageError(f"pocketsphinx refused the phone-loop options {settings}: {exc}") from exc
         self._initial_cmn = self._decoder.get_cmn()
 
+    def score_of(self, samples: bytes) -> float:
+        """:meth:`score` of unpadded 16 kHz mono 16-bit PCM, padded as the n-gram pass pads it."""
+        from knic.language.audio import pad_pcm
+
+        return self.score(pad_pcm(samples, NGRAM_TRAIL_SILENCE))
+
     def score(self, raw: bytes) -> float:
         """The best phone path's score (a probability, as pocketsphinx hands it over; 0.0: no path) of padded
         raw audio."""
@@ -119,6 +124,8 @@ def phone_score_in_background(
         samples: the utterance as raw 16 kHz mono 16-bit PCM, unpadded
             (:func:`~knic.language.audio.load_pcm`).
     """
+    from knic.language.audio import pad_pcm
+
     raw = pad_pcm(samples, NGRAM_TRAIL_SILENCE)
 
     def here() -> float:
