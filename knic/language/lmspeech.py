@@ -265,9 +265,9 @@ class NgramRecognizer:
         Args:
             audio: a WAV path, raw 16 kHz mono 16-bit PCM bytes, or samples.
             phone_score: the phone loop's best path score of this utterance when it is computed elsewhere
-                (:func:`phone_score_in_background`); default: this recogniser's :attr:`phone_loop`.
+                (:func:`knic.language.oneshot.start_passes`); default: this recogniser's :attr:`phone_loop`.
             decoded: the n-gram pass of this utterance done elsewhere, with this recogniser's model
-                (:func:`knic.language.oneshot.decoded_in_background`); default: done here.
+                (:func:`knic.language.oneshot.start_passes`); default: done here.
 
         Raises:
             AudioError: the file is not usable audio.

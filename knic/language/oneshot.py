@@ -6,8 +6,8 @@ loading the world. The model is built once (:class:`~knic.language.lmspeech.Ngra
 the temporary folder; :func:`remember_model` writes down which dictionary and binary model belong to a
 world's files (:func:`world_key`: their content, the command language's data and code, the acoustic model
 and the decoder settings), so that the next start finds them (:func:`remembered_model`) before loading the
-world and forks the n-gram pass at once (:func:`decoded_in_background`), beside the phone loop
-(:func:`knic.language.phoneloop.phone_score_in_background`); the vocabulary is kept too, as JSON data
+world and forks the n-gram pass at once, beside the phone loop (:func:`start_passes`, each in a child
+process: :func:`in_child`); the vocabulary is kept too, as JSON data
 (:func:`remember_vocabulary`), so the parent need not parse the world's PDDL again. A world whose files
 changed has another key: its first start loads and decodes in the parent, as without this module, and
 remembers both for the next.

@@ -2,18 +2,14 @@
 
 The confidence of :class:`knic.language.lmspeech.NgramRecognizer` sets the command model's best path against
 pocketsphinx's unconstrained phone loop (:class:`PhoneLoop`). ``knic say`` runs this pass in a child process
-(:func:`phone_score_in_background`) from its first milliseconds, while the parent imports the reader, loads
-the world and decodes with the command model; this module therefore imports only pocketsphinx, the acoustic
-model's options and the audio helpers.
+from its first milliseconds (:func:`knic.language.oneshot.start_passes`), while the parent imports the
+reader and loads the world; this module therefore imports little besides the acoustic model's options.
 """
 
 from __future__ import annotations
 
-import contextlib
-import os
-import struct
 import tempfile
-from collections.abc import Callable, Mapping
+from collections.abc import Mapping
 from pathlib import Path
 
 from core.errors import LanguageError
@@ -108,50 +104,3 @@ class PhoneLoop:
         decoder.end_utt()
         hyp = decoder.hyp()
         return float(hyp.best_score) if hyp is not None else 0.0
-
-
-def phone_score_in_background(
-    samples: bytes, acoustic_model: str | Path = DEFAULT_ACOUSTIC_MODEL
-) -> Callable[[], float]:
-    """Start the phone-loop pass of one utterance in a child process; the returned call waits for its score.
-
-    For one-shot listening (``knic say``): the child loads its decoder and decodes while this process loads
-    the world and the command model and decodes, so on two cores the two passes overlap. The child is forked,
-    so call this before the process starts threads. Where ``os.fork`` is missing, or the child fails, the
-    score is computed here when asked for. A score never asked for leaves the child to finish on its own.
-
-    Args:
-        samples: the utterance as raw 16 kHz mono 16-bit PCM, unpadded
-            (:func:`~knic.language.audio.load_pcm`).
-    """
-    from knic.language.audio import pad_pcm
-
-    raw = pad_pcm(samples, NGRAM_TRAIL_SILENCE)
-
-    def here() -> float:
-        return PhoneLoop(acoustic_model).score(raw)
-
-    if not hasattr(os, "fork"):
-        return here
-    read_end, write_end = os.pipe()
-    pid = os.fork()
-    if pid == 0:  # the child: score, write 8 bytes, leave without running the parent's exit handlers
-        status = 1
-        try:
-            os.close(read_end)
-            os.write(write_end, struct.pack("<d", PhoneLoop(acoustic_model).score(raw)))
-            status = 0
-        finally:
-            os._exit(status)
-    os.close(write_end)
-
-    def wait() -> float:
-        try:
-            with os.fdopen(read_end, "rb") as pipe:
-                data = pipe.read(8)
-        finally:
-            with contextlib.suppress(ChildProcessError):
-                os.waitpid(pid, 0)
-        return struct.unpack("<d", data)[0] if len(data) == 8 else here()
-
-    return wait
