@@ -14,9 +14,15 @@ What it does:
    sets and of the text sets (:data:`HELD_OUT_SETS`, :data:`TEXT_SETS`) and of any ``--exclude`` gold file,
    and speaks each in a voice drawn from :data:`VOICES` -- every espeak-ng English accent with every variant
    of :data:`VARIANTS`, less the voices of the test and development sets (:data:`HELD_OUT_VOICES`) -- at a
-   speed and pitch drawn from :data:`SPEEDS` and :data:`PITCHES` (``--jobs`` at a time). With ``--corpus
-   DIR`` it uses recordings instead (a ``gold.json`` in the test set's layout: ``file`` and ``text`` of each
-   utterance), e.g. of the people a robot serves.
+   speed and pitch drawn from :data:`SPEEDS` and :data:`PITCHES` (``--jobs`` at a time). With ``--engines
+   espeak,flite,festival`` (``flite`` and ``festival`` need Debian's ``flite``, ``festival``,
+   ``festvox-kallpc16k`` and ``festvox-us-slt-hts``) ``--other-sentences`` more sentences, sampled after
+   those (so the espeak-ng part is that of an espeak-ng build), are spoken in the other engines' development
+   voices (:data:`OTHER_VOICES`; an item ``engine:voice`` names one voice) at a duration stretch drawn from
+   :data:`OTHER_STRETCH`; their reserved voices (:data:`RESERVED_OTHER_VOICES`) are never used (this helps
+   the voices heard, not other engines' voices: see ``tests/fixtures/speech_engines_dev/generate.py``). With
+   ``--corpus DIR`` it uses recordings instead (a ``gold.json`` in the test set's layout: ``file`` and
+   ``text`` of each utterance), e.g. of the people a robot serves.
 2. Extracts features with the model's own ``feat.params`` (``sphinx_fe``), counts state occupancies with
    Baum-Welch (``bw``, ``--jobs`` processes on shares of the corpus) against the wheel's US English model,
    and estimates a MAP update of the Gaussian means, variances and mixture weights (``map_adapt``; the wheel
@@ -56,6 +62,7 @@ HELD_OUT_SETS = [
         "speech_people/dev",
         "speech_voices_dev",
         "speech_ood_dev",
+        "speech_engines_dev",
     )
 ]
 #: The text test and development sets (people's phrasings), kept out likewise.
@@ -85,6 +92,13 @@ HELD_OUT_VOICES = frozenset(
         "en-us-nyc+f2",
     }
 )
+#: Voices of other engines than espeak-ng that adaptation may use: the development voices of
+#: ``tests/fixtures/speech_engines_dev`` (the kal and slt speakers), as ``engine:voice``.
+OTHER_VOICES = ("flite:kal16", "festival:kal_diphone", "flite:slt", "festival:cmu_us_slt_arctic_hts")
+#: Other engines' voices reserved for a later test set (other speakers, and kal at 8 kHz): never used here.
+RESERVED_OTHER_VOICES = frozenset({"flite:awb", "flite:rms", "festival:ked_diphone", "flite:kal"})
+#: Duration stretch (1.0: the voice's own rate) of the other engines' voices, drawn for each sentence.
+OTHER_STRETCH = (0.85, 1.25)
 #: espeak-ng's English accents.
 BASES = [
     "en-us",
@@ -186,16 +200,64 @@ def held_out_sentences() -> set[str]:
     return {normalize(t) for t in texts}
 
 
-def synthesize(text: str, voice: str, speed: int, target: Path, pitch: int = 50) -> None:
-    """espeak-ng to a temporary WAV, then sox to 16 kHz mono 16-bit with silence trimmed at both ends (no
-    random dither, so the same espeak-ng version gives the same file). ``pitch``: espeak-ng's ``-p`` (50: the
-    voice's own)."""
+def other_engine_wav(text: str, voice: str, stretch: float, raw: Path) -> None:
+    """``text`` in another engine's ``voice`` (``flite:NAME`` or ``festival:NAME``) into the WAV ``raw``, in
+    the engine's own sample rate. ``stretch``: duration factor (1.0: the voice's own rate; larger is slower).
+
+    Raises:
+        ValueError: the engine is neither flite nor festival.
+    """
+    engine, _, name = voice.partition(":")
+    if engine == "flite":
+        flags = ["--setf", f"duration_stretch={stretch:.3f}"]
+        subprocess.run(["flite", "-voice", name, *flags, "-t", text, "-o", str(raw)], check=True)
+    elif engine == "festival":
+        if name.endswith("_hts"):  # the HTS engine ignores Duration_Stretch: its own speech rate instead
+            rate = f'(set! hts_engine_params (append hts_engine_params (list (list "-r" {1 / stretch:.3f}))))'
+        else:
+            rate = f"(Parameter.set 'Duration_Stretch {stretch:.3f})"
+        with tempfile.NamedTemporaryFile("w", suffix=".txt") as source:
+            source.write(text + "\n")
+            source.flush()
+            text2wave = ["text2wave", "-eval", f"(voice_{name})", "-eval", rate, source.name, "-o", str(raw)]
+            subprocess.run(text2wave, check=True, stdout=subprocess.DEVNULL)
+    else:
+        raise ValueError(f"unknown engine in voice {voice!r}: expected flite:NAME or festival:NAME")
+
+
+def synthesize(text: str, voice: str, speed: float, target: Path, pitch: int = 50) -> None:
+    """espeak-ng (or, for a voice ``engine:NAME``, :func:`other_engine_wav`) to a temporary WAV, then sox to
+    16 kHz mono 16-bit with silence trimmed at both ends (no random dither, so the same engine version gives
+    the same file). ``speed``: espeak-ng's words per minute, or the other engine's duration stretch.
+    ``pitch``: espeak-ng's ``-p`` (50: the voice's own; other engines keep their own)."""
     with tempfile.TemporaryDirectory() as tmp:
         raw = Path(tmp) / "raw.wav"
-        espeak = ["espeak-ng", "-v", voice, "-s", str(speed), "-p", str(pitch), "-w", str(raw), text]
-        subprocess.run(espeak, check=True)
+        if ":" in voice:
+            other_engine_wav(text, voice, speed, raw)
+        else:
+            espeak = ["espeak-ng", "-v", voice, "-s", str(speed), "-p", str(pitch), "-w", str(raw), text]
+            subprocess.run(espeak, check=True)
         output = ["-r", "16000", "-c", "1", "-b", "16", str(target)]
         subprocess.run(["sox", "-R", str(raw), *output, *TRIM_BOTH_ENDS], check=True)
+
+
+def other_voices(engines: list[str]) -> list[str]:
+    """The other engines' voices that ``engines`` (``espeak``, ``flite``, ``festival`` or ``engine:NAME``)
+    name, from :data:`OTHER_VOICES`.
+
+    Raises:
+        ValueError: an item names no development voice (a reserved voice, or an unknown engine or voice).
+    """
+    chosen: list[str] = []
+    for item in engines:
+        if item == "espeak":
+            continue
+        found = [v for v in OTHER_VOICES if v == item or v.partition(":")[0] == item]
+        if not found:
+            why = "reserved for a test set" if item in RESERVED_OTHER_VOICES else "not a development voice"
+            raise ValueError(f"--engines {item!r}: {why} (choose from espeak, {', '.join(OTHER_VOICES)})")
+        chosen += [v for v in found if v not in chosen]
+    return chosen
 
 
 def _read_string(data: bytes, offset: int) -> tuple[str | None, int]:
@@ -352,12 +414,25 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument("--iterations", type=int, default=2, help="Baum-Welch + MAP rounds (3 overfits)")
     parser.add_argument("--out", default=str(MODEL_DIR / NGRAM_SUBFOLDER))
     parser.add_argument("--jobs", type=int, default=2, help="parallel synthesis and Baum-Welch processes")
+    parser.add_argument(
+        "--engines",
+        default="espeak",
+        help="comma-separated engines to speak in: espeak, flite, festival, or one voice engine:NAME",
+    )
+    parser.add_argument(
+        "--other-sentences", type=int, default=1000, help="sentences in other engines' voices (see --engines)"
+    )
     args = parser.parse_args(argv)
+    engines = [item.strip() for item in args.engines.split(",") if item.strip()]
+    others = other_voices(engines)
+    espeak_count = args.sentences if "espeak" in engines else 0
+    other_count = args.other_sentences if others else 0
     work = Path(args.workdir or tempfile.mkdtemp(prefix="knic-adapt-"))
     (work / "wav").mkdir(parents=True, exist_ok=True)
     log = work / "build.log"
     log.unlink(missing_ok=True)
     ids: list[str] = []
+    spoken: dict[str, int] = {}  # utterances per voice
     if args.corpus:
         corpus = Path(args.corpus)
         entries = json.loads((corpus / "gold.json").read_text(encoding="utf-8"))["utterances"]
@@ -374,19 +449,28 @@ def main(argv: list[str] | None = None) -> int:
         exclude = held_out_sentences()
         for gold in map(Path, args.exclude):
             exclude |= {u["text"] for u in json.loads(gold.read_text(encoding="utf-8"))["utterances"]}
-        sentences = sample_sentences(args.sentences, exclude)
+        sentences = sample_sentences(espeak_count + other_count, exclude)  # the same first ones for any count
         rng = random.Random(11)
-        jobs: list[tuple[str, str, int, Path, int]] = []
+        other_rng = random.Random(12)  # a stream of its own: espeak-ng's draws stay those of an espeak build
+        jobs: list[tuple[str, str, float, Path, int]] = []
         for index, text in enumerate(sentences):
             name = f"adapt_{index:04d}"
             target = work / "wav" / f"{name}.wav"
-            voice, speed, pitch = rng.choice(VOICES), rng.randint(*SPEEDS), rng.randint(*PITCHES)
+            if index < espeak_count:
+                voice = rng.choice(VOICES)
+                speed: float = rng.randint(*SPEEDS)
+                pitch = rng.randint(*PITCHES)
+            else:
+                voice = other_rng.choice(others)
+                speed = round(other_rng.uniform(*OTHER_STRETCH), 2)
+                pitch = 50  # unused: the other engines keep their voices' pitch
+            spoken[voice] = spoken.get(voice, 0) + 1
             if not target.exists():
                 jobs.append((text, voice, speed, target, pitch))
             ids.append(name)
         with ThreadPoolExecutor(max_workers=args.jobs) as pool:
             list(pool.map(lambda job: synthesize(*job), jobs))
-        voices = VOICES
+        voices = sorted(spoken) if others else VOICES
     (work / "fileids").write_text("".join(f"{i}\n" for i in ids))
     (work / "transcription").write_text(
         "".join(f"<s> {t} </s> ({i})\n" for i, t in zip(ids, sentences, strict=True))
@@ -459,6 +543,13 @@ def main(argv: list[str] | None = None) -> int:
         "iterations": args.iterations,
         "aligned_utterances_per_iteration": aligned,
     }
+    if others:
+        manifest["engines"] = engines
+        manifest["espeak_sentences"] = espeak_count
+        manifest["other_sentences"] = other_count
+        manifest["other_stretch"] = list(OTHER_STRETCH)
+        manifest["utterances_per_other_voice"] = {v: n for v, n in sorted(spoken.items()) if ":" in v}
+        manifest["reserved_voices"] = sorted(RESERVED_OTHER_VOICES)
     (out / "manifest.json").write_text(json.dumps(manifest, indent=1) + "\n")
     print(f"adapted model written to {out} (work files in {work})")
     return 0
