@@ -221,8 +221,9 @@ class NgramRecognizer:
     def _nbest(self) -> list[str]:
         """The N-best hypotheses of the utterance just decoded (none without a lattice)."""
         try:
-            return [" ".join(h.hypstr.split()) for h in itertools.islice(self._build().nbest(), self.nbest)]
-        except (RuntimeError, ValueError):  # no lattice for this utterance
+            found = itertools.islice(self._build().nbest(), self.nbest)
+            return [" ".join(h.hypstr.split()) for h in found if h is not None and h.hypstr]
+        except (RuntimeError, ValueError, AttributeError):  # no lattice for this utterance
             return []
 
     def _snap(self, text: str, nbest: Callable[[], list[str]] | None = None) -> tuple[str, bool]:

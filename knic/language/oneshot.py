@@ -133,6 +133,8 @@ def decode_here(samples: bytes, model: tuple[Path, Path], acoustic_model: str | 
     nbest: list[str] = []
     with contextlib.suppress(RuntimeError, ValueError):  # no lattice
         for entry in decoder.nbest():
+            if entry is None or not entry.hypstr:  # pocketsphinx can yield an empty entry
+                continue
             nbest.append(" ".join(entry.hypstr.split()))
             if len(nbest) == NBEST:
                 break
