@@ -12,6 +12,10 @@ from knic.language.chunks import Chunk
 COPULAS = frozenset({"is", "are", "was", "were"})
 #: what a correction may say again in place of what was said before
 CORRECTED = frozenset({"entity", "me", "number", "level", "state"})
+#: what comes right before a thing's name said in a command (besides a determiner)
+NAMING = frozenset({"verb", "prep", "me", "owner", "entity", "pronoun", "join"})
+#: words the world has no name for that name no thing either
+NOT_NAMES = COPULAS | {"not"}
 #: where a stretch of a typed command ends (sentences and commas); recognised speech has none
 SEGMENT_END = re.compile(r"[.?!;,]+|\s-\s")
 
@@ -68,8 +72,9 @@ def repaired(chunks: list[Chunk], kind_of: Callable[[Chunk], str]) -> list[Chunk
     sorry, I meant the mug"; "switch on the light, no, scratch that, open the blinds").
 
     What follows a repair phrase up to the next verb or joiner replaces the last thing of the same kind
-    said before it (an object, a person, a place, a device, a level or a state); when it starts with a
-    verb, it replaces the last action. A repair with nothing before or after it is dropped.
+    said before it (an object, a person, a place, a device, a level or a state), else the last words the
+    world has no name for (:func:`unnamed`: "bring me the banana, sorry, I meant the apple"); when it
+    starts with a verb, it replaces the last action. A repair with nothing before or after it is dropped.
     """
     while any(c.kind == "repair" for c in chunks):
         at = max(i for i, c in enumerate(chunks) if c.kind == "repair")
@@ -98,16 +103,49 @@ def repaired(chunks: list[Chunk], kind_of: Callable[[Chunk], str]) -> list[Chunk
             replacement = replacement[first : named[0] + 1] + replacement[named[0] + 1 :]
         kind = kind_of(next((c for c in replacement if c.kind not in ("det", "prep")), words[0]))
         target = next((i for i in range(len(before) - 1, -1, -1) if kind_of(before[i]) == kind), None)
-        if target is None:
+        span = (target, target) if target is not None else None
+        if target is None or kind == "unknown":
+            # what the world lacks, corrected to what it has (or lacks as well): the run in the position
+            # the replacement takes ("to the garage, no wait, the kitchen": governed; "the mug": not)
+            governed = kind == "place" or bool(replacement and replacement[0].kind == "prep")
+            span = unnamed(before, governed) or span
+        if span is None:
             chunks = before + after
             continue
-        start = target
+        start, target = span
         while start > 0 and before[start - 1].kind == "det":
             start -= 1
         if replacement and replacement[0].kind == "prep" and start > 0 and before[start - 1].kind == "prep":
             start -= 1  # "to the kitchen ... no, to the dining room"
         chunks = before[:start] + replacement + before[target + 1 :] + rest
     return chunks
+
+
+def unnamed(chunks: list[Chunk], governed: bool) -> tuple[int, int] | None:
+    """The first and last index of the last run of words the world has no name for that stands where a
+    thing is named (after a determiner, a verb, a preposition, "me" or another name), preferring a run a
+    preposition governs (``governed``) or one none does; None when there is no such run."""
+    runs: list[tuple[int, int, bool]] = []
+    i = 0
+    while i < len(chunks):
+        if chunks[i].kind != "unknown" or chunks[i].text in NOT_NAMES:
+            i += 1
+            continue
+        end = i
+        while end + 1 < len(chunks) and chunks[end + 1].kind == "unknown":
+            end += 1
+        before = i
+        while before > 0 and chunks[before - 1].kind == "det":
+            before -= 1
+        previous = chunks[before - 1].kind if before > 0 else None
+        if before < i or previous in NAMING:
+            runs.append((i, end, previous == "prep"))
+        i = end + 1
+    preferred = [run for run in runs if run[2] == governed]
+    if not (preferred or runs):
+        return None
+    first, last, _ = (preferred or runs)[-1]
+    return first, last
 
 
 def talk_dropped(chunks: list[Chunk]) -> list[Chunk]:

@@ -91,6 +91,8 @@ NOT_READ = [
     ("bring me the banana. I'm hungry.", "there is no 'banana' here"),  # the request itself lacks it
     ("bring me the banana, sorry, I meant the cherry", "there is no 'cherry' here"),
     ("go to the garage, no wait, the kitchen", None),  # corrected away: read
+    ("take me to the garage, no wait, the cellar", "there is no 'cellar' here"),  # corrected to no place
+    ("bring me the big red kettle, sorry, I meant the cherry", "there is no 'cherry' here"),
 ]
 
 
@@ -101,6 +103,77 @@ def test_what_the_world_lacks_is_still_named(vocabulary: Vocabulary, text: str, 
         assert result.accepted and [str(g) for g in result.goals] == ["(robot_at r2d2 kitchen)"]
     else:
         assert not result.accepted and reason in result.reason
+
+
+CORRECTED_AWAY = [
+    # what the world lacks, corrected to what it has: read as if the correction had been said at once
+    ("bring me the banana, sorry, I meant the apple", "bring me the apple", ["(has annie apple)"]),
+    ("bring me the big red kettle please, no wait, the lemon", "bring me the lemon", ["(has annie lemon)"]),
+    (
+        "take the banana to the kitchen, sorry, I meant the apple",
+        "take the apple to the kitchen",
+        ["(object_at apple kitchen)"],
+    ),
+    ("take me to the garage, no wait, the kitchen", "take me to the kitchen", ["(person_at annie kitchen)"]),
+    (
+        "take the apple to the garage, no, to the bedroom",
+        "take the apple to the bedroom",
+        ["(object_at apple bedroom)"],
+    ),
+]
+
+
+@pytest.mark.parametrize(("text", "meant", "goals"), CORRECTED_AWAY)
+def test_what_the_world_lacks_is_corrected_to_what_it_has(
+    vocabulary: Vocabulary, text: str, meant: str, goals: list[str]
+) -> None:
+    result, said = understand(text, vocabulary), understand(meant, vocabulary)
+    assert result.accepted, result.reason
+    assert [f.to_dict() for f in result.frames] == [f.to_dict() for f in said.frames]
+    assert [str(g) for g in result.goals] == goals
+
+
+@pytest.fixture(scope="module")
+def bungalow() -> Vocabulary:
+    """The test bungalow's names: no mug, worktop, kettle or garage; a kitchen island, a pepper mill."""
+    from knic.cli.goal import world_vocabulary
+    from knic.language.world import DEFAULT_DOMAIN
+
+    vocabulary, _ = world_vocabulary("worlds/test_bungalow/test_bungalow.yaml", DEFAULT_DOMAIN, None)
+    return vocabulary
+
+
+def test_what_another_world_lacks_is_corrected_to_what_it_has(bungalow: Vocabulary) -> None:
+    result = understand(
+        "could you grab the kettle off the kitchen island, sorry, I meant the pepper mill",
+        bungalow,
+        speaker="walter",
+    )
+    said = understand("could you grab the pepper mill off the kitchen island", bungalow, speaker="walter")
+    assert result.accepted, result.reason
+    assert [f.to_dict() for f in result.frames] == [f.to_dict() for f in said.frames]
+    assert [f.to_dict() for f in result.frames] == [
+        {"frame": "TAKING", "theme": "pepper_mill", "source": "kitchen_island"}
+    ]
+    assert [str(g) for g in result.goals] == [
+        "(taken_from pepper_mill kitchen_island)",
+        "(holding r2d2 pepper_mill)",
+    ]
+    place = understand(
+        "take the newspaper to the garage, no wait, the sitting room", bungalow, speaker="walter"
+    )
+    assert [f.to_dict() for f in place.frames] == [
+        {"frame": "BRINGING", "theme": "newspaper", "goal": "sitting_room"}
+    ]
+    assert [str(g) for g in place.goals] == ["(object_at newspaper sitting_room)"]
+
+
+def test_a_correction_to_what_the_world_also_lacks_names_the_correction(bungalow: Vocabulary) -> None:
+    result = understand(
+        "could you grab the kettle off the worktop, sorry, I meant the mug", bungalow, speaker="walter"
+    )
+    assert not result.accepted and not result.frames and not result.goals
+    assert result.reason == "there is no 'mug' here: this world has nothing called that"
 
 
 def test_common_synonyms_name_the_things_of_a_world_without_a_lexicon() -> None:
