@@ -31,7 +31,8 @@ Figures (wall-clock time; the decoder is built once before timing):
 (other sentences and voices, to tune on without touching the test set), ``speech_voices_dev`` (the
 development commands and other speech in four more voices, for measures that must carry across voices) or
 ``speech_ood_dev``; ``--option KEY=VALUE`` (repeatable),
-``--no-branch-penalty`` and ``--acoustic-model NAME|DIR`` (``espeak``, the default, or ``base``, the
+``--no-branch-penalty`` and ``--acoustic-model NAME|DIR`` (``auto``, the n-gram decoder's default: both
+models below, the better fitting kept per utterance; ``espeak``, the grammar decoder's default; ``base``, the
 unadapted model: see :mod:`knic.language.acoustic`) change the recogniser for that run only.
 """
 
@@ -119,7 +120,7 @@ def evaluate(
     *,
     decoder_options: dict[str, object] | None = None,
     branch_penalty: bool = True,
-    acoustic_model: str = "espeak",
+    acoustic_model: str | None = None,
     decoder: str = "grammar",
 ) -> dict[str, Any]:
     """Run the test set and return the figures plus the per-utterance mistakes under ``"errors"``.
@@ -151,6 +152,10 @@ def evaluate(
         raise KnicError(f"{fixtures / 'gold.json'}: cannot read the speech test set: {exc}") from exc
     vocabulary = read_vocabulary()
     speaker = gold.get("speaker", "annie")
+    if acoustic_model is None:
+        from knic.language.acoustic import DEFAULT_ACOUSTIC_MODEL, DEFAULT_NGRAM_ACOUSTIC_MODEL
+
+        acoustic_model = DEFAULT_NGRAM_ACOUSTIC_MODEL if decoder == "ngram" else DEFAULT_ACOUSTIC_MODEL
     started = time.perf_counter()
     extra: dict[str, Any] = {
         "decoder_options": decoder_options,
@@ -273,11 +278,12 @@ def run(args: argparse.Namespace) -> int:
             result["dev"] = {key: dev[key] for key in DEV_FIGURES}
         figures[decoder] = result
     if args.answers:
-        figures["answer_accuracy"], wrong = evaluate_answers(Path(args.answers), args.acoustic_model)
+        answers_model = args.acoustic_model or "espeak"  # the answer recogniser's own default
+        figures["answer_accuracy"], wrong = evaluate_answers(Path(args.answers), answers_model)
         mistakes += wrong
         phrases = Path(args.answers).parent / "speech_answers_dev"
         if (phrases / "gold.json").is_file():
-            figures["answer_phrase_accuracy"], wrong = evaluate_answers(phrases, args.acoustic_model)
+            figures["answer_phrase_accuracy"], wrong = evaluate_answers(phrases, answers_model)
             mistakes += wrong
     if args.verbose:
         figures["errors"] = mistakes

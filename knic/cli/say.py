@@ -42,10 +42,11 @@ def add_acoustic_argument(parser: argparse.ArgumentParser) -> None:
     """``--acoustic-model NAME|DIR`` (shared by the commands that listen)."""
     parser.add_argument(
         "--acoustic-model",
-        default="espeak",
+        default=None,
         metavar="NAME|DIR",
-        help="espeak (adapted to synthetic voices, default), base (the unadapted US English model), or a "
-        "folder built by python -m knic.language.acoustic.build",
+        help="auto (the n-gram decoder's default: both models below, the better fitting kept for each "
+        "utterance), espeak (adapted to synthetic voices; the grammar decoder's default), base (the "
+        "unadapted US English model), or a folder built by python -m knic.language.acoustic.build",
     )
 
 
@@ -62,6 +63,10 @@ def _world_files(args: argparse.Namespace) -> list[str]:
 
 def run(args: argparse.Namespace) -> int:
     decoder = getattr(args, "decoder", "ngram")
+    if args.acoustic_model is None:
+        from knic.language.acoustic import DEFAULT_ACOUSTIC_MODEL, DEFAULT_NGRAM_ACOUSTIC_MODEL
+
+        args.acoustic_model = DEFAULT_NGRAM_ACOUSTIC_MODEL if decoder == "ngram" else DEFAULT_ACOUSTIC_MODEL
     if decoder == "ngram":
         from knic.language import oneshot
 
@@ -76,9 +81,10 @@ def run(args: argparse.Namespace) -> int:
     audio = load_pcm(args.wav)  # refuse a bad file before loading the world
     kept = None
     if decoder == "ngram":
-        from knic.language.acoustic import acoustic_model_options
+        from knic.language.acoustic import acoustic_model_options, ensemble_members
 
-        acoustic_model_options(args.acoustic_model, decoder="ngram")  # a bad model: one line
+        for member in ensemble_members(args.acoustic_model):
+            acoustic_model_options(member, decoder="ngram")  # a bad model: one line
         key = oneshot.world_key(_world_files(args), args.acoustic_model)
         kept = oneshot.remembered_vocabulary(key)
     if kept is not None:
@@ -96,7 +102,9 @@ def run(args: argparse.Namespace) -> int:
         passed = decoded()
         transcript = ngram.recognize(
             audio,
-            phone_score=lambda: _or(phone_score(), lambda: ngram.phone_loop.score_of(audio)),
+            phone_score=lambda index: _or(
+                phone_score(index), lambda: ngram.phone_loop_of(index).score_of(audio)
+            ),
             decoded=(lambda: passed) if passed is not None else None,
         )
         if passed is None and ngram.model_files is not None:

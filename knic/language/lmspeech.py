@@ -23,11 +23,8 @@ cached on disk by content), then :meth:`NgramRecognizer.recognize` per utterance
 
 from __future__ import annotations
 
-import contextlib
-import hashlib
 import itertools
 import math
-import shutil
 import tempfile
 import time
 from collections.abc import Callable, Mapping
@@ -35,9 +32,16 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any, Protocol
 
 from core.errors import LanguageError
-from knic.language.acoustic import DEFAULT_ACOUSTIC_MODEL, acoustic_model_options, wheel_model_dir
+from knic.language.acoustic import (
+    DEFAULT_ACOUSTIC_MODEL,
+    DEFAULT_NGRAM_ACOUSTIC_MODEL,
+    acoustic_model_options,
+    ensemble_members,
+    wheel_model_dir,
+)
 from knic.language.audio import Transcript, duration_of, pad_pcm, pcm_bytes
 from knic.language.commands import command_language
+from knic.language.lmfiles import binary_model, build_model, dictionary_lines, model_words
 from knic.language.phoneloop import (
     NGRAM_DECODER_OPTIONS,
     NGRAM_TRAIL_SILENCE,
@@ -51,10 +55,6 @@ if TYPE_CHECKING:
     import numpy as np
     import numpy.typing as npt
 
-#: Sentences sampled for the model. Measured on the development sets with the templates of 28 Nov 2026 (263
-#: commands in 10 voices, 134 other utterances; see :data:`CONFIDENCE_THRESHOLD`): frame+args 0.817 with 4000,
-#: 0.852 with 12000, 0.829 with 30000 (more templates need more samples; past that, no gain).
-SENTENCES = 12000
 #: Confidence (:func:`confidence`: log-likelihood ratio of the n-gram and phone-loop best paths, per frame)
 #: below which speech is taken as out of domain. Set on the development sets only, in 13 voices:
 #: ``tests/fixtures/speech_people/dev`` (115 commands, 6 other), ``speech_ood_dev`` (24 other),
@@ -83,33 +83,35 @@ NBEST = 10
 TRIMMED = 3
 
 
-def build_model(
-    vocabulary: Vocabulary,
-    sentences: int = SENTENCES,
-    *,
-    seed: int = 0,
-    exclude: frozenset[str] = frozenset(),
-) -> str:
-    """The ARPA text of the command model for a vocabulary (cached in the temporary folder by content)."""
-    language = command_language()
-    key = hashlib.sha256()
-    key.update(Path(language.source).read_bytes() if language.source else b"")
-    for term in vocabulary.terms:
-        key.update(f"{term.phrase}|{term.type}|{term.is_group};".encode())
-    from knic.language.sampling import FIRST_PHRASE_SHARE, sample_sentences  # only to build a model
+#: Confidence threshold of the wheel's unadapted model (``base``) when it is a member of an ensemble (its
+#: confidences of commands sit higher than the adaptation's). Set on the development sets with the ``auto``
+#: ensemble (speech_people/dev, speech_voices_dev, speech_ood_dev and speech_engines_dev: 320 commands, 128
+#: other utterances), frame+args / other speech rejected: -0.0003: 0.845 / 0.914; -0.0004: 0.845 / 0.914;
+#: -0.0005: 0.849 / 0.898; -0.0006: 0.852 / 0.875.
+BASE_CONFIDENCE_THRESHOLD = -0.0004
+#: Each acoustic model's own threshold (a folder or other name: :data:`CONFIDENCE_THRESHOLD`).
+MODEL_THRESHOLDS: dict[str, float] = {"espeak": CONFIDENCE_THRESHOLD, "base": BASE_CONFIDENCE_THRESHOLD}
+#: Log-likelihood ratio per frame by which a later member of an ensemble must fit the audio better than the
+#: first to be chosen (:func:`choose_member`). The same dev sets, frame+args / other speech rejected with the
+#: ``auto`` ensemble: 0: 0.826 / 0.930; 0.0002: 0.842 / 0.914; 0.0006-0.001: 0.845 / 0.906-0.914 (espeak-ng
+#: voices as with the adaptation alone: speech_people/dev 0.861, speech_voices_dev 0.845; other engines'
+#: voices 0.831, against 0.068 with the adaptation alone and 0.856 with the wheel's model alone); 0.0015:
+#: 0.792. The adaptation alone: 0.623 / 0.938.
+FIRST_MEMBER_PREFERENCE = 0.0008
 
-    key.update(f"{sentences}|{seed}|{sorted(exclude)}|{FIRST_PHRASE_SHARE}".encode())
-    cache = Path(tempfile.gettempdir()) / f"knic-ngram-{key.hexdigest()[:20]}.arpa"
-    if cache.is_file():
-        return cache.read_text(encoding="utf-8")
-    samples = sample_sentences(vocabulary, sentences, seed=seed, exclude_words=exclude, frames=False)
-    texts = [s.text for s in samples]
-    from knic.language.ngram import arpa_from_sentences
 
-    arpa = arpa_from_sentences(texts)
-    with contextlib.suppress(OSError):  # no cache: built again next time
-        cache.write_text(arpa, encoding="utf-8")
-    return arpa
+class _Member:
+    """One acoustic model of a recogniser: its n-gram decoder, phone loop and threshold."""
+
+    def __init__(self, model: str | Path, options: dict[str, object], threshold: float | None):
+        self.model = model
+        self.options = options
+        self.threshold = (
+            threshold if threshold is not None else MODEL_THRESHOLDS.get(str(model), CONFIDENCE_THRESHOLD)
+        )
+        self.decoder: Any = None
+        self.initial_cmn: Any = None
+        self.phone_loop: PhoneLoop | None = None
 
 
 class NgramRecognizer:
@@ -117,8 +119,11 @@ class NgramRecognizer:
 
     Args:
         vocabulary: the world's spoken names.
-        acoustic_model: as for :class:`~knic.language.speech.Recognizer`.
-        threshold: confidence below which a transcript is out of domain.
+        acoustic_model: as for :class:`~knic.language.speech.Recognizer`, or a name of
+            :data:`~knic.language.acoustic.ENSEMBLES`: each utterance is then decoded with every member model
+            and the transcript of the one that fits it best is kept (:func:`choose_member`).
+        threshold: confidence below which a transcript is out of domain (default: each model's own,
+            :data:`MODEL_THRESHOLDS`).
         decoder_options: pocketsphinx options over :data:`NGRAM_DECODER_OPTIONS`.
         nbest: when the best hypothesis is no command the reader reads, the first of this many N-best
             hypotheses it reads becomes the transcript (0: the best hypothesis, always).
@@ -126,7 +131,7 @@ class NgramRecognizer:
             :class:`~knic.language.reader.Reader` reads it, or finds it ambiguous).
         phone_options: pocketsphinx options of the phone-loop pass (:class:`PhoneLoop`) over
             ``decoder_options`` and :data:`PHONE_DECODER_OPTIONS`.
-        lazy: build the decoder when it is first needed (not when the decoding is done elsewhere:
+        lazy: build the decoders when they are first needed (not when the decoding is done elsewhere:
             :meth:`recognize` ``decoded``).
 
     Raises:
@@ -137,96 +142,108 @@ class NgramRecognizer:
         self,
         vocabulary: Vocabulary,
         *,
-        acoustic_model: str | Path = DEFAULT_ACOUSTIC_MODEL,
-        threshold: float = CONFIDENCE_THRESHOLD,
+        acoustic_model: str | Path = DEFAULT_NGRAM_ACOUSTIC_MODEL,
+        threshold: float | None = None,
         decoder_options: Mapping[str, object] | None = None,
         nbest: int = NBEST,
         reads: Callable[[str], bool] | None = None,
         phone_options: Mapping[str, object] | None = None,
         lazy: bool = False,
     ):
-        self.threshold = threshold
         self.nbest = nbest
         self.reads = reads or _reader_check(vocabulary)
         self._vocabulary = vocabulary
-        self._options = {
-            **NGRAM_DECODER_OPTIONS,
-            **acoustic_model_options(acoustic_model, decoder="ngram"),
-            **(decoder_options or {}),
-        }
-        self._acoustic_model = acoustic_model
-        self._phone_options = {**(decoder_options or {}), **PHONE_DECODER_OPTIONS, **(phone_options or {})}
-        self._phone_loop: PhoneLoop | None = None
-        self._decoder: Any = None
+        self._decoder_options = dict(decoder_options or {})
+        self._members = [
+            _Member(
+                model,
+                {
+                    **NGRAM_DECODER_OPTIONS,
+                    **acoustic_model_options(model, decoder="ngram"),
+                    **self._decoder_options,
+                },
+                threshold,
+            )
+            for model in ensemble_members(acoustic_model)
+        ]
+        self._phone_options = {**self._decoder_options, **PHONE_DECODER_OPTIONS, **(phone_options or {})}
+        self._built = False
         #: the model's dictionary and binary language model, once built (what :mod:`knic.language.oneshot`
         #: remembers for the next one-shot start)
         self.model_files: tuple[str, Path | None] | None = None
         if not lazy:
             self._build()
 
-    def _build(self) -> Any:
-        """The n-gram decoder (built on first use when the recogniser was made ``lazy``)."""
-        if self._decoder is not None:
-            return self._decoder
+    @property
+    def members(self) -> tuple[str | Path, ...]:
+        """The acoustic models each utterance is decoded with, the preferred first."""
+        return tuple(member.model for member in self._members)
+
+    def _build(self) -> None:
+        """The n-gram decoders (built on first use when the recogniser was made ``lazy``)."""
+        if self._built:
+            return
         from pocketsphinx import Decoder, set_loglevel
 
         set_loglevel("FATAL")
-        options, vocabulary = self._options, self._vocabulary
+        vocabulary = self._vocabulary
         words = vocabulary.words() | command_language().words()
-        source = Path(str(options.get("dict") or wheel_model_dir() / "cmudict-en-us.dict"))
-        lines = _dictionary_lines(source, words)
+        first = self._members[0].options
+        source = Path(str(first.get("dict") or wheel_model_dir() / "cmudict-en-us.dict"))
+        lines = dictionary_lines(source, words)
         known = {line.split(maxsplit=1)[0].split("(")[0] for line in lines}
         self.unknown_words = sorted(w for w in words if w not in known)
         arpa = build_model(vocabulary, exclude=frozenset(self.unknown_words))
-        lines = _dictionary_lines(source, words | _model_words(arpa))  # the templates' own words too
+        lines = dictionary_lines(source, words | model_words(arpa))  # the templates' own words too
+        binary: Path | None = None
         with tempfile.TemporaryDirectory(prefix="knic-lm-") as tmp:
             # only the model's words in the dictionary: with the wheel's whole dictionary (134k words)
             # pocketsphinx took about 30 s to add the model, with these well under one
             dictionary = Path(tmp) / "commands.dict"
             dictionary.write_text("".join(lines), encoding="utf-8")
-            try:
-                decoder = Decoder(lm=None, loglevel="FATAL", **{**options, "dict": str(dictionary)})
-            except (KeyError, ValueError, TypeError, RuntimeError) as exc:
-                raise LanguageError(f"pocketsphinx refused the decoder options {options}: {exc}") from exc
-            try:
-                model, binary = _binary_model(decoder, arpa)
-                decoder.add_lm("ngram", model)
-                decoder.activate_search("ngram")
-            except (RuntimeError, ValueError) as exc:
-                raise LanguageError(f"pocketsphinx refused the command language model: {exc}") from exc
-        self._decoder = decoder
-        self._initial_cmn = decoder.get_cmn()
+            for member in self._members:
+                options = member.options
+                try:
+                    decoder = Decoder(lm=None, loglevel="FATAL", **{**options, "dict": str(dictionary)})
+                except (KeyError, ValueError, TypeError, RuntimeError) as exc:
+                    raise LanguageError(f"pocketsphinx refused the decoder options {options}: {exc}") from exc
+                try:
+                    model, binary = binary_model(decoder, arpa)
+                    decoder.add_lm("ngram", model)
+                    decoder.activate_search("ngram")
+                except (RuntimeError, ValueError) as exc:
+                    raise LanguageError(f"pocketsphinx refused the command language model: {exc}") from exc
+                member.decoder, member.initial_cmn = decoder, decoder.get_cmn()
+        self._built = True
         self.model_files = ("".join(lines), binary)
-        return decoder
+
+    def phone_loop_of(self, index: int = 0) -> PhoneLoop:
+        """The phone-loop pass of a member model, built on first use (it is not needed for speech the reader
+        refuses)."""
+        member = self._members[index]
+        if member.phone_loop is None:
+            member.phone_loop = PhoneLoop(member.model, self._phone_options)
+        return member.phone_loop
 
     @property
     def phone_loop(self) -> PhoneLoop:
-        """The phone-loop pass, built on first use (it is not needed for speech the reader refuses)."""
-        if self._phone_loop is None:
-            self._phone_loop = PhoneLoop(self._acoustic_model, self._phone_options)
-        return self._phone_loop
+        """The first member's phone-loop pass."""
+        return self.phone_loop_of(0)
 
-    def _decode(self, raw: bytes) -> tuple[str, float, int]:
-        decoder = self._build()
-        decoder.reinit_feat()  # the dither's noise starts afresh: the same audio decodes the same way
-        decoder.set_cmn(self._initial_cmn)
-        decoder.start_utt()
-        decoder.process_raw(raw, full_utt=True)
-        decoder.end_utt()
-        hyp = decoder.hyp()
-        if hyp is None:
-            return "", float("-inf"), max(1, decoder.n_frames())
-        return " ".join(hyp.hypstr.split()), float(hyp.best_score), max(1, decoder.n_frames())
+    def threshold_of(self, index: int = 0) -> float:
+        """The confidence threshold of a member model."""
+        return self._members[index].threshold
 
-    def _nbest(self) -> list[str]:
-        """The N-best hypotheses of the utterance just decoded (none without a lattice)."""
-        try:
-            found = itertools.islice(self._build().nbest(), self.nbest)
-            return [" ".join(h.hypstr.split()) for h in found if h is not None and h.hypstr]
-        except (RuntimeError, ValueError, AttributeError):  # no lattice for this utterance
-            return []
+    def _decode(self, raw: bytes) -> tuple[int, Decoded]:
+        """Every member's n-gram pass; the chosen member's index and result."""
+        self._build()
+        results = [
+            _decode_with(member.decoder, member.initial_cmn, raw, self.nbest) for member in self._members
+        ]
+        index = choose_member(results)
+        return index, results[index]
 
-    def _snap(self, text: str, nbest: Callable[[], list[str]] | None = None) -> tuple[str, bool]:
+    def _snap(self, text: str, hypotheses: list[str]) -> tuple[str, bool]:
         """The best hypothesis if the reader reads it, else the first N-best one it reads, else the first of
         the :data:`TRIMMED` best that it reads without its last word or two (a word heard in the silence
         after the command: "... from the kitchen cabinet take"), else the best; and whether the reader reads
@@ -237,7 +254,7 @@ class NgramRecognizer:
             return text, True
         if self.nbest <= 0:
             return text, False
-        hypotheses = (nbest or self._nbest)()[: self.nbest]
+        hypotheses = hypotheses[: self.nbest]
         snapped = next((h for h in hypotheses if h and h != text and self.reads(h)), None)
         if snapped:
             return snapped, True
@@ -253,10 +270,11 @@ class NgramRecognizer:
         self,
         audio: str | Path | bytes | npt.NDArray[np.int16],
         *,
-        phone_score: Callable[[], float] | None = None,
-        decoded: Callable[[], Decoded] | None = None,
+        phone_score: Callable[[int], float] | None = None,
+        decoded: Callable[[], list[Decoded]] | None = None,
     ) -> Transcript:
-        """Decode one utterance; ``in_grammar`` is False when the confidence is below the threshold.
+        """Decode one utterance; ``in_grammar`` is False when the confidence is below the chosen model's
+        threshold.
 
         When the reader reads none of the hypotheses the command is refused whatever the confidence, so the
         phone-loop pass is skipped: ``in_grammar`` is then False and the confidence (``score``) NaN. This
@@ -265,10 +283,11 @@ class NgramRecognizer:
 
         Args:
             audio: a WAV path, raw 16 kHz mono 16-bit PCM bytes, or samples.
-            phone_score: the phone loop's best path score of this utterance when it is computed elsewhere
-                (:func:`knic.language.oneshot.start_passes`); default: this recogniser's :attr:`phone_loop`.
-            decoded: the n-gram pass of this utterance done elsewhere, with this recogniser's model
-                (:func:`knic.language.oneshot.start_passes`); default: done here.
+            phone_score: the phone loop's best path score of this utterance with the member model of that
+                index, when it is computed elsewhere (:func:`knic.language.oneshot.start_passes`); default:
+                this recogniser's :meth:`phone_loop_of`.
+            decoded: every member's n-gram pass of this utterance done elsewhere, with this recogniser's
+                model (:func:`knic.language.oneshot.start_passes`); default: done here.
 
         Raises:
             AudioError: the file is not usable audio.
@@ -277,22 +296,64 @@ class NgramRecognizer:
         raw = pad_pcm(samples, NGRAM_TRAIL_SILENCE)
         started = time.perf_counter()
         if decoded is not None:
-            text, score, frames, hypotheses = decoded()
-            text, read = self._snap(text, lambda: list(hypotheses))
+            results = decoded()
+            index = choose_member(results)
+            chosen = results[index]
         else:
-            text, score, frames = self._decode(raw)
-            text, read = self._snap(text)
+            index, chosen = self._decode(raw)
+        text, score, frames, hypotheses = chosen
+        text, read = self._snap(text, list(hypotheses))
         if not read:
             elapsed = (time.perf_counter() - started) * 1000.0
             return Transcript(text, False, math.nan if text else float("-inf"), duration_of(samples), elapsed)
-        reference = phone_score() if phone_score is not None else self.phone_loop.score(raw)
+        reference = phone_score(index) if phone_score is not None else self.phone_loop_of(index).score(raw)
         elapsed = (time.perf_counter() - started) * 1000.0
         level = confidence(score, reference, frames)
-        return Transcript(text, level >= self.threshold, level, duration_of(samples), elapsed)
+        return Transcript(text, level >= self.threshold_of(index), level, duration_of(samples), elapsed)
 
 
 #: an n-gram pass's result: best hypothesis, its path score, frames decoded, the N-best hypotheses
 Decoded = tuple[str, float, int, tuple[str, ...]]
+
+
+def _decode_with(decoder: Any, initial_cmn: Any, raw: bytes, nbest: int) -> Decoded:
+    """One n-gram pass of padded raw audio: best hypothesis, path score, frames, N-best hypotheses."""
+    decoder.reinit_feat()  # the dither's noise starts afresh: the same audio decodes the same way
+    decoder.set_cmn(initial_cmn)
+    decoder.start_utt()
+    decoder.process_raw(raw, full_utt=True)
+    decoder.end_utt()
+    hyp = decoder.hyp()
+    frames = max(1, decoder.n_frames())
+    if hyp is None:
+        return "", 0.0, frames, ()
+    found: list[str] = []
+    if nbest > 0:
+        try:
+            for entry in itertools.islice(decoder.nbest(), nbest):
+                if entry is not None and entry.hypstr:  # pocketsphinx can yield an empty entry
+                    found.append(" ".join(entry.hypstr.split()))
+        except (RuntimeError, ValueError, AttributeError):  # no lattice for this utterance
+            found = []
+    return " ".join(hyp.hypstr.split()), float(hyp.best_score), frames, tuple(found)
+
+
+def choose_member(results: list[Decoded]) -> int:
+    """The index of the member model whose n-gram pass fits the audio best: the first, unless another's best
+    path beats it by more than :data:`FIRST_MEMBER_PREFERENCE` in log-likelihood per frame (a pass without a
+    path never wins)."""
+    best, best_log = 0, _log_score(results[0])
+    for index, result in enumerate(results[1:], start=1):
+        log = _log_score(result)
+        if log > best_log + (FIRST_MEMBER_PREFERENCE if best == 0 else 0.0):
+            best, best_log = index, log
+    return best
+
+
+def _log_score(result: Decoded) -> float:
+    """A pass's best path log score per frame (``-inf``: no path)."""
+    _, score, frames, _ = result
+    return math.log(score) / max(1, frames) if score > 0.0 else float("-inf")
 
 
 def confidence(score: float, phone_score: float, frames: int) -> float:
@@ -323,78 +384,6 @@ def _reader_check(vocabulary: Vocabulary) -> Callable[[str], bool]:
     return reads
 
 
-def _dictionary_lines(source: Path, words: set[str]) -> list[str]:
-    """The lines of a pronunciation dictionary for ``words`` (every pronunciation of each); kept in the
-    temporary folder, keyed by the dictionary file and the words (reading the 134k-word dictionary took a
-    third of the recogniser's start-up).
-
-    Raises:
-        LanguageError: the dictionary cannot be read.
-    """
-    try:
-        stat = source.stat()
-    except OSError as exc:
-        raise LanguageError(f"{source}: cannot read the pronunciation dictionary: {exc}") from exc
-    key = hashlib.sha256(f"{source.resolve()}|{stat.st_size}|{stat.st_mtime_ns}|".encode())
-    key.update(" ".join(sorted(words)).encode())
-    cache = Path(tempfile.gettempdir()) / f"knic-dict-{key.hexdigest()[:20]}.dict"
-    with contextlib.suppress(OSError, UnicodeDecodeError):
-        return cache.read_text(encoding="utf-8").splitlines(keepends=True)
-    try:
-        text = source.read_text(encoding="utf-8", errors="replace")
-    except OSError as exc:
-        raise LanguageError(f"{source}: cannot read the pronunciation dictionary: {exc}") from exc
-    lines = [
-        line + "\n"
-        for line in text.splitlines()
-        if line.strip() and line.split(maxsplit=1)[0].split("(")[0] in words
-    ]
-    with contextlib.suppress(OSError):  # no cache: read again next time
-        cache.write_text("".join(lines), encoding="utf-8")
-    return lines
-
-
-def _binary_model(decoder: Any, arpa: str) -> tuple[Any, Path | None]:
-    """The ARPA model as pocketsphinx's ``NGramModel``, read from a binary copy kept in the temporary folder
-    by content (reading the binary form takes about 1 ms, parsing the ARPA text about 60), and that copy's
-    path (None when it could not be kept).
-
-    Raises:
-        RuntimeError, ValueError: pocketsphinx cannot read the model.
-    """
-    from pocketsphinx import NGramModel
-
-    key = hashlib.sha256(arpa.encode()).hexdigest()[:20]
-    cache = Path(tempfile.gettempdir()) / f"knic-ngram-{key}.lm.bin"
-    if cache.is_file():
-        with contextlib.suppress(RuntimeError, ValueError, OSError):  # unreadable: made again below
-            return NGramModel(decoder.config, decoder.logmath, str(cache)), cache
-    with tempfile.TemporaryDirectory(prefix="knic-lm-") as tmp:
-        path = Path(tmp) / "commands.arpa"
-        path.write_text(arpa, encoding="utf-8")
-        model = NGramModel(decoder.config, decoder.logmath, str(path))
-        with contextlib.suppress(OSError, RuntimeError, ValueError):  # no cache: parsed again next time
-            partial = Path(tmp) / "commands.lm.bin"
-            model.write(str(partial), NGramModel.str_to_type("bin"))
-            shutil.move(str(partial), cache)
-    return model, (cache if cache.is_file() else None)
-
-
-def _model_words(arpa: str) -> set[str]:
-    """The words of an ARPA model's 1-grams."""
-    found: set[str] = set()
-    inside = False
-    for line in arpa.split("\\2-grams:", 1)[0].splitlines():
-        if line.startswith("\\1-grams:"):
-            inside = True
-        elif line.startswith("\\"):
-            if inside:
-                break
-        elif inside and line.strip():
-            found.add(line.split()[1])
-    return found
-
-
 #: the command decoders a listening command can use: ``ngram`` (:class:`NgramRecognizer`, the default: it
 #: hears people's phrasings better and starts faster, see ``knic bench speech``) and ``grammar`` (the
 #: template grammar, :class:`knic.language.speech.Recognizer`)
@@ -410,18 +399,22 @@ class CommandRecognizer(Protocol):
 
 
 def command_recognizer(
-    vocabulary: Vocabulary, *, decoder: str = "ngram", acoustic_model: str | Path = DEFAULT_ACOUSTIC_MODEL
+    vocabulary: Vocabulary, *, decoder: str = "ngram", acoustic_model: str | Path | None = None
 ) -> CommandRecognizer:
-    """The command recogniser of ``decoder`` (one of :data:`DECODERS`) for a world's vocabulary.
+    """The command recogniser of ``decoder`` (one of :data:`DECODERS`) for a world's vocabulary, with
+    ``acoustic_model`` (default: the decoder's own,
+    :data:`~knic.language.acoustic.DEFAULT_NGRAM_ACOUSTIC_MODEL` or
+    :data:`~knic.language.acoustic.DEFAULT_ACOUSTIC_MODEL`).
 
     Raises:
         LanguageError: an unknown decoder.
     """
     if decoder == "ngram":
-        return NgramRecognizer(vocabulary, acoustic_model=acoustic_model)
+        return NgramRecognizer(vocabulary, acoustic_model=acoustic_model or DEFAULT_NGRAM_ACOUSTIC_MODEL)
     if decoder == "grammar":
         from knic.language.speech import Recognizer
         from knic.language.understanding import default_grammar
 
-        return Recognizer(default_grammar(), vocabulary, acoustic_model=acoustic_model)
+        model = acoustic_model or DEFAULT_ACOUSTIC_MODEL
+        return Recognizer(default_grammar(), vocabulary, acoustic_model=model)
     raise LanguageError(f"unknown decoder {decoder!r} ({', '.join(DECODERS)})")

@@ -27,7 +27,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from core.errors import LanguageError
-from knic.language.acoustic import DEFAULT_ACOUSTIC_MODEL
+from knic.language.acoustic import DEFAULT_NGRAM_ACOUSTIC_MODEL
 from knic.language.phoneloop import NGRAM_DECODER_OPTIONS, NGRAM_TRAIL_SILENCE
 
 if TYPE_CHECKING:
@@ -44,7 +44,9 @@ MAX_AUDIO_BYTES = 32 * 1024 * 1024
 Decoded = tuple[str, float, int, tuple[str, ...]]
 
 
-def world_key(files: Iterable[str | Path | None], acoustic_model: str | Path = DEFAULT_ACOUSTIC_MODEL) -> str:
+def world_key(
+    files: Iterable[str | Path | None], acoustic_model: str | Path = DEFAULT_NGRAM_ACOUSTIC_MODEL
+) -> str:
     """A key for the command model of a world: the content of its files (domain, problem or world file,
     lexicon), of the command language's code and data, the acoustic model and the decoder settings."""
     digest = hashlib.sha256()
@@ -129,7 +131,7 @@ def decode_here(samples: bytes, model: tuple[Path, Path], acoustic_model: str | 
     hyp = decoder.hyp()
     frames = max(1, decoder.n_frames())
     if hyp is None:
-        return "", float("-inf"), frames, ()
+        return "", 0.0, frames, ()
     nbest: list[str] = []
     with contextlib.suppress(RuntimeError, ValueError):  # no lattice
         for entry in decoder.nbest():
@@ -180,12 +182,18 @@ def in_child(job: Callable[[], Any]) -> Callable[[], Any]:
 
 
 def start_passes(
-    wav: str, files: Iterable[str | Path | None], acoustic_model: str | Path = DEFAULT_ACOUSTIC_MODEL
-) -> tuple[Callable[[], Decoded | None], Callable[[], float | None]]:
+    wav: str, files: Iterable[str | Path | None], acoustic_model: str | Path = DEFAULT_NGRAM_ACOUSTIC_MODEL
+) -> tuple[Callable[[], list[Decoded] | None], Callable[[int], float | None]]:
     """Fork the n-gram pass (with the model remembered for the world's ``files``) and the phone loop of the
-    WAV file ``wav``, each in a child that reads the file itself; the calls return their results, or None
-    (no model remembered, an unusable file: the caller decodes itself and reports the file's fault)."""
+    WAV file ``wav`` for each member model of ``acoustic_model``
+    (:func:`~knic.language.acoustic.ensemble_members`), each in a child that reads the file itself. The
+    first call returns every member's n-gram result, the second a member's phone-loop score (by index);
+    either gives None (no model remembered, an unusable file: the caller decodes itself and reports the
+    file's fault)."""
+    from knic.language.acoustic import ensemble_members
+
     files = list(files)
+    members = ensemble_members(acoustic_model)
 
     def samples() -> bytes:
         from core.errors import AudioError
@@ -195,27 +203,37 @@ def start_passes(
         check_input_file(wav, MAX_AUDIO_BYTES, "audio file", AudioError)  # never read /dev/zero
         return load_pcm(wav)
 
-    def ngram() -> Decoded | None:
-        model = remembered_model(world_key(files, acoustic_model))
-        return decode_here(samples(), model, acoustic_model) if model else None
+    def ngram(member: str | Path) -> Callable[[], Decoded | None]:
+        def job() -> Decoded | None:
+            model = remembered_model(world_key(files, acoustic_model))
+            return decode_here(samples(), model, member) if model else None
 
-    def phones() -> float:
-        from knic.language.audio import pad_pcm
-        from knic.language.phoneloop import PhoneLoop
+        return job
 
-        return PhoneLoop(acoustic_model).score(pad_pcm(samples(), NGRAM_TRAIL_SILENCE))
+    def phones(member: str | Path) -> Callable[[], float]:
+        def job() -> float:
+            from knic.language.audio import pad_pcm
+            from knic.language.phoneloop import PhoneLoop
 
-    decoded, score = in_child(ngram), in_child(phones)
+            return PhoneLoop(member).score(pad_pcm(samples(), NGRAM_TRAIL_SILENCE))
 
-    def got_decoded() -> Decoded | None:
-        result = decoded()
-        if not isinstance(result, list) or len(result) != 4:
-            return None
-        text, path_score, frames, nbest = result
-        return str(text), float(path_score), int(frames), tuple(str(h) for h in nbest)
+        return job
 
-    def got_score() -> float | None:
-        result = score()
+    decoded = [in_child(ngram(member)) for member in members]
+    scores = [in_child(phones(member)) for member in members]
+
+    def got_decoded() -> list[Decoded] | None:
+        found: list[Decoded] = []
+        for wait in decoded:
+            result = wait()
+            if not isinstance(result, list) or len(result) != 4:
+                return None
+            text, path_score, frames, nbest = result
+            found.append((str(text), float(path_score), int(frames), tuple(str(h) for h in nbest)))
+        return found
+
+    def got_score(index: int) -> float | None:
+        result = scores[index]()
         return float(result) if isinstance(result, (int, float)) else None
 
     return got_decoded, got_score

@@ -45,7 +45,7 @@ def test_named_models_resolve_to_files_or_to_the_wheel_model() -> None:
 
 def test_an_unknown_model_or_an_incomplete_folder_is_refused(tmp_path: Path) -> None:
     with pytest.raises(
-        LanguageError, match=r"unknown acoustic model 'klingon': expected one of base, espeak"
+        LanguageError, match=r"unknown acoustic model 'klingon': expected one of auto, base, espeak"
     ):
         acoustic_model_options("klingon")
     (tmp_path / "means").write_bytes(b"x")

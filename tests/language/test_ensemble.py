@@ -1,0 +1,88 @@
+"""The n-gram decoder's ``auto`` acoustic models: each utterance is decoded with the espeak-ng adaptation and
+with the wheel's model trained on human speech, and the better fitting one is kept."""
+
+from __future__ import annotations
+
+import json
+import math
+from pathlib import Path
+
+import pytest
+
+from core.errors import LanguageError
+from knic.cli import main
+from knic.language.acoustic import acoustic_model_options, ensemble_members
+from knic.language.lmspeech import (
+    FIRST_MEMBER_PREFERENCE,
+    MODEL_THRESHOLDS,
+    NgramRecognizer,
+    choose_member,
+)
+from knic.language.understanding import understand_transcript
+from knic.language.vocabulary import Vocabulary
+
+FIXTURES = Path(__file__).resolve().parents[1] / "fixtures"
+ENGINES = FIXTURES / "speech_engines_dev"  # flite and festival voices (development set)
+PEOPLE = FIXTURES / "speech_people" / "dev"  # espeak-ng voices (development set)
+
+
+def _entry(folder: Path, file: str) -> dict[str, object]:
+    entries = json.loads((folder / "gold.json").read_text(encoding="utf-8"))["utterances"]
+    return next(e for e in entries if e["file"] == file)
+
+
+def _frames_heard(
+    recognizer: NgramRecognizer, vocabulary: Vocabulary, folder: Path, file: str
+) -> list[object]:
+    result = understand_transcript(recognizer.recognize(folder / file), vocabulary)
+    return [f.to_dict() for f in result.frames] if result.accepted else []
+
+
+@pytest.fixture(scope="module")
+def auto(vocabulary: Vocabulary) -> NgramRecognizer:
+    return NgramRecognizer(vocabulary)  # the default: auto
+
+
+def test_auto_is_the_adaptation_first_then_the_wheel_model(auto: NgramRecognizer) -> None:
+    assert ensemble_members("auto") == ("espeak", "base") == auto.members
+    assert ensemble_members("base") == ("base",)
+    assert (
+        auto.threshold_of(0) == MODEL_THRESHOLDS["espeak"]
+        and auto.threshold_of(1) == MODEL_THRESHOLDS["base"]
+    )
+
+
+def test_the_first_model_is_kept_unless_another_fits_clearly_better() -> None:
+    frames = 100
+    first = ("bring me the cup", 0.5, frames, ())
+    slightly = ("bring me a cup", 0.5 * math.exp(frames * FIRST_MEMBER_PREFERENCE / 2), frames, ())
+    clearly = ("bring me the cup", 0.5 * math.exp(frames * FIRST_MEMBER_PREFERENCE * 2), frames, ())
+    assert choose_member([first, slightly]) == 0
+    assert choose_member([first, clearly]) == 1
+    assert choose_member([("", 0.0, frames, ()), first]) == 1  # the first found no path at all
+    assert choose_member([first, ("", 0.0, frames, ())]) == 0
+
+
+def test_another_engine_s_voice_is_heard_where_the_adaptation_alone_fails(
+    auto: NgramRecognizer, vocabulary: Vocabulary
+) -> None:
+    """festival's kal diphones: the adaptation alone heard "bring me a glass of apple is"."""
+    entry = _entry(ENGINES, "engines_dev_001.wav")
+    assert _frames_heard(auto, vocabulary, ENGINES, "engines_dev_001.wav") == entry["frames"]
+    adapted = NgramRecognizer(vocabulary, acoustic_model="espeak")
+    assert _frames_heard(adapted, vocabulary, ENGINES, "engines_dev_001.wav") != entry["frames"]
+
+
+def test_espeak_voices_are_still_heard(auto: NgramRecognizer, vocabulary: Vocabulary) -> None:
+    entries = json.loads((PEOPLE / "gold.json").read_text(encoding="utf-8"))["utterances"]
+    entry = next(e for e in entries if e["text"] == "go near the sofa")
+    assert _frames_heard(auto, vocabulary, PEOPLE, entry["file"]) == entry["frames"]
+
+
+def test_only_the_n_gram_decoder_takes_a_set_of_models(capsys: pytest.CaptureFixture[str]) -> None:
+    with pytest.raises(LanguageError, match="'auto' is espeak and base: only the n-gram decoder takes it"):
+        acoustic_model_options("auto")
+    wav = str(ENGINES / "engines_dev_001.wav")
+    assert main(["say", wav, "--decoder", "grammar", "--acoustic-model", "auto"]) == 4
+    err = capsys.readouterr().err
+    assert "only the n-gram decoder takes it" in err and err.count("\n") == 1
