@@ -39,6 +39,7 @@ from knic.language.clauses import Arg, Clause, split_clauses
 from knic.language.commands import CommandLanguage, command_language
 from knic.language.frames import SPEAKER, CommandFrame
 from knic.language.roles import INTERPRETERS
+from knic.language.segments import cut, pointed
 from knic.language.tidy import SEGMENT_END, fluent, repaired, spelled, talk_dropped
 from knic.language.vocabulary import Term, Vocabulary, level_percent, normalize
 
@@ -83,6 +84,29 @@ class Reader:
         segments = [segment for segment in segments if segment]
         if not segments:
             raise LanguageError("nothing to understand: the command is empty")
+        try:
+            return self._read_segments(segments)
+        except LanguageError as exc:
+            first = exc
+        # unpunctuated ("close the blinds it's too bright in here"), or pointing first ("see that candle? put
+        # it on the nightstand"): read again with the sentences the words start (knic.language.segments)
+        pointing = pointed(segments)
+        tries = [pointing] if pointing is not None else []
+        tries += [cut(s, self.chunks) for s in (segments, *tries)]
+        last: LanguageError | None = None
+        for segmented in tries:
+            if segmented == segments:
+                continue
+            try:
+                return self._read_segments(segmented)
+            except LanguageError as exc:
+                last = last or exc
+        # a command said without punctuation is refused as its sentences would be
+        raise last if last is not None and len(segments) == 1 else first
+
+    def _read_segments(self, segments: list[list[str]]) -> Reading:
+        """:meth:`read` of the command's stretches (sentences and what commas set apart): the whole, else
+        without the stretches that name nothing of the world (talk around the request)."""
         try:
             return self._read_tokens(self._fluent([t for segment in segments for t in segment]))
         except LanguageError as exc:

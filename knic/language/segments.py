@@ -1,0 +1,113 @@
+"""Where sentences start in a command said without punctuation (speech transcripts), found from its words.
+
+Typed commands separate the request from the talk around it with commas and full stops ("bring me the
+sponge, love, I want to wipe up a spill"); a recogniser gives lowercase words only. When a stretch of words
+cannot be read as one command, :class:`knic.language.reader.Reader` reads it again cut where a sentence
+starts (:func:`sentence_starts`), and a command that points at a thing first ("see that candle put it on
+the nightstand") with the pointing taken as the thing said (:func:`pointed`).
+
+A cut never splits a phrase the chunker reads as one ("where did i leave" stays whole) and is made only:
+
+* after an address word ("dear", "love": a speaker addresses the robot at the end or the start of a
+  sentence);
+* before a contraction that opens a statement ("i'm", "it's", "i've", "they're");
+* before a bare subject pronoun ("i", "it", "they", ...) or "let" that no verb, preposition or determiner
+  governs ("bring me the remote i want to watch the news": after a noun phrase);
+* before "not" after a noun phrase, a level or a state ("a quarter of the way not too much").
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+from itertools import pairwise
+
+from knic.language.chunks import Chunk
+
+#: words a speaker addresses the robot with; a sentence ends or starts next to them
+ADDRESS = frozenset(
+    {"dear", "love", "darling", "sweetie", "honey", "sweetheart", "robot", "buddy", "mate", "pal"}
+)
+#: contractions that open a statement ("i'm off to bed", "it's too bright")
+OPENING_CONTRACTIONS = frozenset(
+    {
+        "i'm",
+        "i've",
+        "i'd",
+        "i'll",
+        "it's",
+        "it'll",
+        "that's",
+        "they're",
+        "they've",
+        "we're",
+        "we've",
+        "you're",
+        "he's",
+        "she's",
+        "there's",
+        "let's",
+    }
+)
+#: subject pronouns and "let": a sentence starts at them unless a verb, preposition or determiner governs them
+SUBJECTS = frozenset({"i", "it", "they", "we", "he", "she", "let", "not"})
+#: what, said last before a subject pronoun, makes the pronoun its object ("put it", "for her")
+_GOVERNING = frozenset({"verb", "prep", "det", "join", "partitive", "quant", "percent", "repair", "owner"})
+#: what "see" points with ("see that candle?"): a determiner right after it
+_POINTING = frozenset({"that", "this", "those", "these", "the"})
+
+
+def sentence_starts(tokens: Sequence[str], chunks: Callable[[Sequence[str]], list[Chunk]]) -> list[int]:
+    """The indices (> 0) of ``tokens`` where a new sentence starts, by the rules of the module docstring;
+    ``chunks`` cuts tokens into chunks (:meth:`knic.language.reader.Reader.chunks`)."""
+    starts: list[int] = []
+    whole = _kinds(chunks(tokens))
+    for i in range(1, len(tokens)):
+        word, before = tokens[i], tokens[i - 1]
+        if not (before in ADDRESS or word in OPENING_CONTRACTIONS or word in SUBJECTS):
+            continue
+        left, right = chunks(tokens[:i]), chunks(tokens[i:])
+        if _kinds(left) + _kinds(right) != whole:
+            continue  # the cut splits a phrase ("where did i leave", "i think")
+        if before in ADDRESS or word in OPENING_CONTRACTIONS:
+            starts.append(i)
+            continue
+        last = _last_said(tokens[:i], left, chunks)
+        if word == "not":
+            if last in ("entity", "level", "number", "percent", "state", "me", "pronoun"):
+                starts.append(i)
+        elif last not in _GOVERNING:
+            starts.append(i)
+    return starts
+
+
+def _kinds(chunks: list[Chunk]) -> list[tuple[str, str]]:
+    return [(c.kind, c.text) for c in chunks]
+
+
+def _last_said(
+    tokens: Sequence[str], left: list[Chunk], chunks: Callable[[Sequence[str]], list[Chunk]]
+) -> str:
+    """The kind of the last chunk before a cut; "filler" when the last word is dropped as politeness or
+    nothing is said before."""
+    if not left or not chunks(tokens[-1:]):
+        return "filler"
+    return left[-1].kind
+
+
+def cut(segments: list[list[str]], chunks: Callable[[Sequence[str]], list[Chunk]]) -> list[list[str]]:
+    """Each segment cut where a sentence starts in it (:func:`sentence_starts`)."""
+    out: list[list[str]] = []
+    for segment in segments:
+        at = [0, *sentence_starts(segment, chunks), len(segment)]
+        out += [segment[a:b] for a, b in pairwise(at) if b > a]
+    return out
+
+
+def pointed(segments: list[list[str]]) -> list[list[str]] | None:
+    """The segments with a leading "see" that points at a thing dropped ("see that candle put it on the
+    nightstand": that candle, then the action on it); None when the command starts otherwise."""
+    first = segments[0]
+    at = 1 if first[:1] == ["see"] else 2 if first[:2] == ["you", "see"] else 0
+    if not at or len(first) <= at + 1 or first[at] not in _POINTING:
+        return None
+    return [first[at:], *segments[1:]]
