@@ -39,7 +39,13 @@ from knic.language.clauses import Arg, Clause, split_clauses
 from knic.language.commands import CommandLanguage, command_language
 from knic.language.frames import SPEAKER, CommandFrame
 from knic.language.roles import INTERPRETERS
-from knic.language.segments import cut, pointed
+from knic.language.segments import (
+    cut,
+    doings_dropped,
+    pointed,
+    sorry_repairs,
+    statements_dropped,
+)
 from knic.language.tidy import SEGMENT_END, fluent, repaired, spelled, talk_dropped
 from knic.language.vocabulary import Term, Vocabulary, level_percent, normalize
 
@@ -84,18 +90,23 @@ class Reader:
         segments = [segment for segment in segments if segment]
         if not segments:
             raise LanguageError("nothing to understand: the command is empty")
+        segments = sorry_repairs(segments, self.chunks)
+        # pointing first ("see that candle? put it on the nightstand"), else as said; unpunctuated ("close the
+        # blinds it's too bright in here"): read again with the sentences the words start, then without those
+        # that only state something (knic.language.segments)
+        pointing = pointed(segments, self.chunks)
+        if pointing is not None:
+            with contextlib.suppress(LanguageError):
+                return self._read_segments(pointing)
         try:
             return self._read_segments(segments)
         except LanguageError as exc:
             first = exc
-        # unpunctuated ("close the blinds it's too bright in here"), or pointing first ("see that candle? put
-        # it on the nightstand"): read again with the sentences the words start (knic.language.segments)
-        pointing = pointed(segments)
-        tries = [pointing] if pointing is not None else []
-        tries += [cut(s, self.chunks) for s in (segments, *tries)]
+        tries = [cut(s, self.chunks) for s in (segments, *([pointing] if pointing else []))]
+        tries += [said for s in tries if (said := statements_dropped(s, self.chunks)) is not None]
         last: LanguageError | None = None
         for segmented in tries:
-            if segmented == segments:
+            if segmented in (segments, pointing):
                 continue
             try:
                 return self._read_segments(segmented)
@@ -141,7 +152,7 @@ class Reader:
 
     def _read_tokens(self, tokens: list[str]) -> Reading:
         """:meth:`read` of normalised tokens."""
-        chunks = talk_dropped(repaired(self.chunks(tokens), self._kind_of))
+        chunks = doings_dropped(talk_dropped(repaired(self.chunks(tokens), self._kind_of)))
         if not chunks:
             raise LanguageError(f"no action in '{' '.join(tokens)}': say what to do, e.g. 'bring me ...'")
         context: list[Arg] = []

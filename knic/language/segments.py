@@ -103,11 +103,102 @@ def cut(segments: list[list[str]], chunks: Callable[[Sequence[str]], list[Chunk]
     return out
 
 
-def pointed(segments: list[list[str]]) -> list[list[str]] | None:
+def statements_dropped(
+    segments: list[list[str]], chunks: Callable[[Sequence[str]], list[Chunk]]
+) -> list[list[str]] | None:
+    """The segments without those that state something rather than ask ("turn the lights off i'm going to
+    bed": a segment opened by a subject and no verb of the command language); None when none is dropped or
+    nothing would be left."""
+    kept = [
+        segment
+        for segment in segments
+        if not (
+            (segment[0] in OPENING_CONTRACTIONS or segment[0] in SUBJECTS)
+            and (said := chunks(segment))
+            and said[0].kind != "verb"
+        )
+    ]
+    return kept if kept and len(kept) < len(segments) else None
+
+
+def pointed(
+    segments: list[list[str]], chunks: Callable[[Sequence[str]], list[Chunk]]
+) -> list[list[str]] | None:
     """The segments with a leading "see" that points at a thing dropped ("see that candle put it on the
-    nightstand": that candle, then the action on it); None when the command starts otherwise."""
+    nightstand": that candle, then the action on it); None when the command starts otherwise, or when what
+    is seen has a state or a copula ("see that the lights are off": make sure they are) or no action
+    follows it."""
     first = segments[0]
     at = 1 if first[:1] == ["see"] else 2 if first[:2] == ["you", "see"] else 0
     if not at or len(first) <= at + 1 or first[at] not in _POINTING:
         return None
-    return [first[at:], *segments[1:]]
+    rest = [first[at:], *segments[1:]]
+    said = chunks([t for segment in rest for t in segment])
+    verb = next((i for i, c in enumerate(said) if c.kind == "verb"), None)
+    if verb is None or any(c.kind in _SAID_OF or c.text in _COPULAS for c in said[:verb]):
+        return None
+    return rest
+
+
+#: what makes "see that ..." a wish for a state rather than pointing
+_SAID_OF = frozenset({"state", "level", "number"})
+_COPULAS = frozenset({"is", "are", "be", "gets", "stays", "isn't", "aren't"})
+
+
+def sorry_repairs(
+    segments: list[list[str]], chunks: Callable[[Sequence[str]], list[Chunk]]
+) -> list[list[str]]:
+    """The segments with a bare "sorry" read as the repair "sorry i meant" when it stands between an
+    action and what corrects it ("bring me the cup sorry the mug"): after a verb, and followed by a name, a
+    level or a state before any word the tables do not know. "sorry, can you ..." and "sorry to bother you"
+    stay politeness."""
+    words = [t for segment in segments for t in segment]
+    out: list[list[str]] = []
+    at = 0
+    for segment in segments:
+        kept: list[str] = []
+        for token in segment:
+            if token == "sorry" and _corrects(words[:at], words[at + 1 :], chunks):
+                kept += [token, "i", "meant"]
+            else:
+                kept.append(token)
+            at += 1
+        out.append(kept)
+    return out
+
+
+def _corrects(before: list[str], after: list[str], chunks: Callable[[Sequence[str]], list[Chunk]]) -> bool:
+    if not any(c.kind == "verb" for c in chunks(before)):
+        return False
+    for chunk in chunks(after):
+        if chunk.kind in ("entity", "me", "number", "level", "state"):
+            return True
+        if chunk.kind not in ("det", "prep"):
+            return False
+    return False
+
+
+#: a subject with "be" before an "-ing" verb: what someone is doing, not what the robot is asked to do
+_DOING = frozenset({"i'm", "we're", "they're", "he's", "she's", "it's", "am"})
+
+
+def doings_dropped(chunks: list[Chunk]) -> list[Chunk]:
+    """Drop what the speaker says someone is doing ("switch off the lights i'm going to bed"): a subject
+    with "be" right before an "-ing" verb, up to the next verb said as a command or a joiner."""
+    out: list[Chunk] = []
+    skipping = False
+    for i, chunk in enumerate(chunks):
+        nxt = chunks[i + 1] if i + 1 < len(chunks) else None
+        if (
+            chunk.kind == "unknown"
+            and chunk.text in _DOING
+            and nxt is not None
+            and nxt.kind == "verb"
+            and nxt.soft
+        ):
+            skipping = bool(out)  # said first, the clause is talk the reader already skips
+        elif skipping and (chunk.kind == "join" or (chunk.kind == "verb" and not chunk.soft)):
+            skipping = False
+        if not skipping:
+            out.append(chunk)
+    return out
