@@ -20,6 +20,9 @@ from knic.language.vocabulary import Vocabulary
 #: frame+args 0.817 with 4000, 0.852 with 12000, 0.829 with 30000 (more templates need more samples; past
 #: that, no gain).
 SENTENCES = 12000
+#: Sentences made from each of people's phrasing patterns (:mod:`knic.language.phrasings`) besides the
+#: template samples (0: none).
+PHRASING_REPEATS = 8
 
 
 def build_model(
@@ -28,8 +31,19 @@ def build_model(
     *,
     seed: int = 0,
     exclude: frozenset[str] = frozenset(),
+    phrasings: int | None = None,
 ) -> str:
-    """The ARPA text of the command model for a vocabulary (cached in the temporary folder by content)."""
+    """The ARPA text of the command model for a vocabulary (cached in the temporary folder by content):
+    ``sentences`` template samples and ``phrasings`` (default :data:`PHRASING_REPEATS`) sentences of each
+    of people's phrasing patterns.
+
+    Raises:
+        LanguageError: the phrasings file is unreadable.
+    """
+    from knic.language.phrasings import PHRASINGS, load_patterns, sample_phrasings
+
+    phrasings = PHRASING_REPEATS if phrasings is None else phrasings
+    patterns = load_patterns() if phrasings > 0 else []
     language = command_language()
     key = hashlib.sha256()
     key.update(Path(language.source).read_bytes() if language.source else b"")
@@ -37,12 +51,14 @@ def build_model(
         key.update(f"{term.phrase}|{term.type}|{term.is_group};".encode())
     from knic.language.sampling import FIRST_PHRASE_SHARE, sample_sentences  # only to build a model
 
-    key.update(f"{sentences}|{seed}|{sorted(exclude)}|{FIRST_PHRASE_SHARE}".encode())
+    key.update(f"{sentences}|{seed}|{sorted(exclude)}|{FIRST_PHRASE_SHARE}|{phrasings}|{PHRASINGS}".encode())
+    key.update("\n".join(patterns).encode())
     cache = Path(tempfile.gettempdir()) / f"knic-ngram-{key.hexdigest()[:20]}.arpa"
     if cache.is_file():
         return cache.read_text(encoding="utf-8")
     samples = sample_sentences(vocabulary, sentences, seed=seed, exclude_words=exclude, frames=False)
     texts = [s.text for s in samples]
+    texts += sample_phrasings(vocabulary, phrasings, seed=seed, patterns=patterns, exclude_words=exclude)
     from knic.language.ngram import arpa_from_sentences
 
     arpa = arpa_from_sentences(texts)
