@@ -53,13 +53,14 @@ def delexicalize(text: str, vocabulary: Vocabulary) -> str:
     return " ".join(out)
 
 
-def load_patterns(path: Path = PHRASINGS) -> list[str]:
-    """The patterns of a phrasings file (one per line; ``#`` starts a comment).
+def load_patterns(path: Path | None = None) -> list[str]:
+    """The patterns of a phrasings file (default :data:`PHRASINGS`; one per line, ``#`` starts a comment).
 
     Raises:
         LanguageError: the file cannot be read, or a line has a character other than lowercase words,
             apostrophes and ``{type}`` slots.
     """
+    path = path or PHRASINGS
     try:
         lines = path.read_text(encoding="utf-8").splitlines()
     except (OSError, UnicodeDecodeError) as exc:
