@@ -8,7 +8,7 @@ from pathlib import Path
 
 import pytest
 
-from knic.language.lmspeech import CONFIDENCE_THRESHOLD, NgramRecognizer, confidence
+from knic.language.lmspeech import NgramRecognizer, confidence
 from knic.language.ngram import arpa_from_sentences
 from knic.language.understanding import understand, understand_transcript
 from knic.language.vocabulary import Vocabulary
@@ -135,9 +135,8 @@ def test_the_confidence_carries_to_voices_it_was_not_tuned_on(
     assert {e["voice"] for e in commands} == {e["voice"] for e in others} and len(
         {e["voice"] for e in commands}
     ) == 4
-    scores = [recognizer.recognize(folder / e["file"]).score for e in commands]
-    read = [s for s in scores if not math.isnan(s)]  # NaN: the reader read no hypothesis
-    assert len(read) >= 6 and min(read) >= CONFIDENCE_THRESHOLD, scores
+    heard = [recognizer.recognize(folder / e["file"]) for e in commands]
+    assert sum(h.in_grammar for h in heard) >= 7, heard  # above the chosen model's own threshold
     accepted = [
         e["text"]
         for e in others
