@@ -14,11 +14,15 @@ from __future__ import annotations
 import argparse
 from collections.abc import Callable
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from knic.cli.goal import add_world_arguments, load_vocabulary, print_understanding
 
 #: largest WAV file read: 32 MB, over three minutes of 48 kHz stereo 16-bit audio
 MAX_AUDIO_BYTES = 32 * 1024 * 1024
+
+if TYPE_CHECKING:
+    from knic.language.oneshot import Passes
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -70,9 +74,17 @@ def run(args: argparse.Namespace) -> int:
     if decoder == "ngram":
         from knic.language import oneshot
 
-        # both passes start in children at once, each reading the file itself, while this process checks
-        # the file and loads the world (the n-gram pass when this world's model is remembered)
-        decoded, phone_score = oneshot.start_passes(args.wav, _world_files(args), args.acoustic_model)
+        # the passes start in children at once, each reading the file itself, while this process checks
+        # the file and loads the world (the n-gram passes when this world's model is remembered)
+        passes = oneshot.start_passes(args.wav, _world_files(args), args.acoustic_model)
+        try:
+            return _run(args, decoder, passes)
+        finally:
+            passes.close()
+    return _run(args, decoder, None)
+
+
+def _run(args: argparse.Namespace, decoder: str, passes: Passes | None) -> int:
     from core.errors import AudioError
     from core.inputs import check_input_file
     from knic.language.audio import load_pcm
@@ -81,6 +93,7 @@ def run(args: argparse.Namespace) -> int:
     audio = load_pcm(args.wav)  # refuse a bad file before loading the world
     kept = None
     if decoder == "ngram":
+        from knic.language import oneshot
         from knic.language.acoustic import acoustic_model_options, ensemble_members
 
         for member in ensemble_members(args.acoustic_model):
@@ -97,13 +110,13 @@ def run(args: argparse.Namespace) -> int:
     from knic.language.lmspeech import NgramRecognizer, command_recognizer
     from knic.language.understanding import understand_transcript
 
-    if decoder == "ngram":
+    if passes is not None:
         ngram = NgramRecognizer(vocabulary, acoustic_model=args.acoustic_model, lazy=True)
-        passed = decoded()
+        passed = passes.decoded()
         transcript = ngram.recognize(
             audio,
             phone_score=lambda index: _or(
-                phone_score(index), lambda: ngram.phone_loop_of(index).score_of(audio)
+                passes.phone_score(index), lambda: ngram.phone_loop_of(index).score_of(audio)
             ),
             decoded=(lambda: passed) if passed is not None else None,
         )

@@ -18,13 +18,17 @@ confidence, which already turns away most other speech. The threshold was set on
 (``knic bench speech --decoder ngram``).
 
 Lifecycle: build once per vocabulary (sampling and estimating the model take a few seconds; the model is
-cached on disk by content), then :meth:`NgramRecognizer.recognize` per utterance; not thread-safe.
+cached on disk by content), then :meth:`NgramRecognizer.recognize` per utterance; not thread-safe. With
+several acoustic models the n-gram passes of the later ones run in forked worker processes
+(:mod:`knic.language.passworker`), beside the first one's in this process: :meth:`NgramRecognizer.close`
+stops them (so does the recogniser's garbage collection or the process's exit).
 """
 
 from __future__ import annotations
 
 import itertools
 import math
+import struct
 import tempfile
 import time
 from collections.abc import Callable, Mapping
@@ -42,6 +46,7 @@ from knic.language.acoustic import (
 from knic.language.audio import Transcript, duration_of, pad_pcm, pcm_bytes
 from knic.language.commands import command_language
 from knic.language.lmfiles import binary_model, build_model, dictionary_lines, model_words
+from knic.language.passworker import PassWorker, start_worker
 from knic.language.phoneloop import (
     NGRAM_DECODER_OPTIONS,
     NGRAM_TRAIL_SILENCE,
@@ -133,6 +138,9 @@ class NgramRecognizer:
             ``decoder_options`` and :data:`PHONE_DECODER_OPTIONS`.
         lazy: build the decoders when they are first needed (not when the decoding is done elsewhere:
             :meth:`recognize` ``decoded``).
+        parallel: run the n-gram passes of the members after the first in forked worker processes, forked
+            after the first decoding (the same results as in this process, which decodes them itself where
+            ``os.fork`` is missing or a worker failed).
 
     Raises:
         LanguageError: pocketsphinx refuses the options, the model or the phone loop.
@@ -149,6 +157,7 @@ class NgramRecognizer:
         reads: Callable[[str], bool] | None = None,
         phone_options: Mapping[str, object] | None = None,
         lazy: bool = False,
+        parallel: bool = True,
     ):
         self.nbest = nbest
         self.reads = reads or _reader_check(vocabulary)
@@ -168,6 +177,8 @@ class NgramRecognizer:
         ]
         self._phone_options = {**self._decoder_options, **PHONE_DECODER_OPTIONS, **(phone_options or {})}
         self._built = False
+        self._parallel = parallel
+        self._workers: list[PassWorker | None] | None = None
         #: the model's dictionary and binary language model, once built (what :mod:`knic.language.oneshot`
         #: remembers for the next one-shot start)
         self.model_files: tuple[str, Path | None] | None = None
@@ -235,13 +246,43 @@ class NgramRecognizer:
         return self._members[index].threshold
 
     def _decode(self, raw: bytes) -> tuple[int, Decoded]:
-        """Every member's n-gram pass; the chosen member's index and result."""
+        """Every member's n-gram pass (the later members' in their workers meanwhile); the chosen member's
+        index and result."""
         self._build()
-        results = [
-            _decode_with(member.decoder, member.initial_cmn, raw, self.nbest) for member in self._members
-        ]
+        workers = self._workers or [None] * (len(self._members) - 1)
+        request = struct.pack("!I", max(0, self.nbest)) + raw
+        sent = [worker is not None and worker.submit(request) for worker in workers]
+        first = self._members[0]
+        results = [_decode_with(first.decoder, first.initial_cmn, raw, self.nbest)]
+        for member, worker, asked in zip(self._members[1:], workers, sent, strict=True):
+            got = _as_decoded(worker.result()) if worker is not None and asked else None
+            results.append(got or _decode_with(member.decoder, member.initial_cmn, raw, self.nbest))
+        if self._workers is None and self._parallel and len(self._members) > 1:
+            # forked after the first utterance, not before: a new pocketsphinx decoder scores its first
+            # utterance slightly differently from the later ones, so this process's copies of the decoders
+            # must have decoded too, to give the same results as the workers should one of them fail
+            self._workers = [start_worker(_ngram_job(member)) for member in self._members[1:]]
         index = choose_member(results)
         return index, results[index]
+
+    @property
+    def worker_pids(self) -> tuple[int, ...]:
+        """The process ids of the live worker processes (none before the end of the first decoding)."""
+        return tuple(w.pid for w in self._workers or [] if w is not None and w.alive)
+
+    def close(self) -> None:
+        """Stop the worker processes; the recogniser still decodes, every pass in this process."""
+        self._parallel = False
+        for worker in self._workers or []:
+            if worker is not None:
+                worker.close()
+        self._workers = None
+
+    def __enter__(self) -> NgramRecognizer:
+        return self
+
+    def __exit__(self, *exc: object) -> None:
+        self.close()
 
     def _snap(self, text: str, hypotheses: list[str]) -> tuple[str, bool]:
         """The best hypothesis if the reader reads it, else the first N-best one it reads, else the first of
@@ -336,6 +377,25 @@ def _decode_with(decoder: Any, initial_cmn: Any, raw: bytes, nbest: int) -> Deco
         except (RuntimeError, ValueError, AttributeError):  # no lattice for this utterance
             found = []
     return " ".join(hyp.hypstr.split()), float(hyp.best_score), frames, tuple(found)
+
+
+def _ngram_job(member: _Member) -> Callable[[bytes], Decoded]:
+    """A worker's job: the n-gram pass of a member (request: the N-best size, then padded raw audio)."""
+
+    def job(request: bytes) -> Decoded:
+        (nbest,) = struct.unpack_from("!I", request)
+        return _decode_with(member.decoder, member.initial_cmn, request[4:], nbest)
+
+    return job
+
+
+def _as_decoded(reply: Any) -> Decoded | None:
+    """A worker's reply (JSON data) as a pass's result, or None when it is not one."""
+    try:
+        text, score, frames, nbest = reply
+        return str(text), float(score), int(frames), tuple(str(h) for h in nbest)
+    except (TypeError, ValueError):
+        return None
 
 
 def choose_member(results: list[Decoded]) -> int:

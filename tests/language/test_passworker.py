@@ -1,0 +1,131 @@
+"""The n-gram recogniser's later member models decoded in forked worker processes
+(:mod:`knic.language.passworker`): the same transcripts as in one process, a dead worker replaced by decoding
+here, and no process left after ``close()`` or garbage collection; ``knic say`` runs only the first member's
+phone loop in a child."""
+
+from __future__ import annotations
+
+import gc
+import os
+import signal
+import time
+from pathlib import Path
+
+import pytest
+
+from knic.language import oneshot
+from knic.language.lmspeech import NgramRecognizer
+from knic.language.passworker import PassWorker, start_worker
+from knic.language.vocabulary import Vocabulary
+
+FIXTURES = Path(__file__).resolve().parents[1] / "fixtures"
+#: two espeak-ng commands, a flite voice (the wheel's model chosen) and another engine's other speech
+UTTERANCES = [
+    FIXTURES / "speech_people" / "dev" / "dev_001.wav",
+    FIXTURES / "speech_people" / "dev" / "dev_006.wav",
+    FIXTURES / "speech_engines_dev" / "engines_dev_001.wav",
+]
+
+pytestmark = pytest.mark.skipif(not hasattr(os, "fork"), reason="workers need os.fork")
+
+
+def _gone(pid: int) -> bool:
+    """Whether the process no longer exists (reaped: not even a zombie child of this process)."""
+    deadline = time.monotonic() + 5.0
+    while time.monotonic() < deadline:
+        try:
+            os.kill(pid, 0)
+        except ProcessLookupError:
+            return True
+        time.sleep(0.01)
+    return False
+
+
+def _heard(recognizer: NgramRecognizer) -> list[tuple[str, str, bool]]:
+    """Transcripts of the utterances, twice (a pocketsphinx decoder scores its first utterance slightly
+    differently from later ones, and the phone loop's scores depend on the utterances before)."""
+    found = []
+    for wav in UTTERANCES * 2:
+        transcript = recognizer.recognize(wav)
+        found.append((transcript.text, repr(transcript.score), transcript.in_grammar))
+    return found
+
+
+@pytest.fixture(scope="module")
+def sequential(vocabulary: Vocabulary) -> list[tuple[str, str, bool]]:
+    with NgramRecognizer(vocabulary, parallel=False) as recognizer:
+        heard = _heard(recognizer)
+        assert recognizer.worker_pids == ()
+    return heard
+
+
+def test_workers_hear_what_one_process_hears_and_leave_on_close(
+    vocabulary: Vocabulary, sequential: list[tuple[str, str, bool]]
+) -> None:
+    recognizer = NgramRecognizer(vocabulary)
+    assert recognizer.worker_pids == ()
+    recognizer.recognize(UTTERANCES[0])
+    (pid,) = recognizer.worker_pids  # forked after the first utterance, decoded here
+    recognizer.close()
+    assert recognizer.worker_pids == () and _gone(pid)
+    recognizer.recognize(UTTERANCES[0])  # still usable, in this process alone
+    assert recognizer.worker_pids == ()
+    with NgramRecognizer(vocabulary) as parallel:
+        assert _heard(parallel) == sequential
+        (pid,) = parallel.worker_pids
+    assert _gone(pid)
+
+
+def test_a_dead_worker_is_replaced_by_decoding_here(
+    vocabulary: Vocabulary, sequential: list[tuple[str, str, bool]]
+) -> None:
+    recognizer = NgramRecognizer(vocabulary)
+    heard = [recognizer.recognize(wav) for wav in UTTERANCES[:2]]
+    (pid,) = recognizer.worker_pids
+    os.kill(pid, signal.SIGKILL)
+    heard += [recognizer.recognize(wav) for wav in [*UTTERANCES[2:], *UTTERANCES]]
+    assert [(t.text, repr(t.score), t.in_grammar) for t in heard] == sequential
+    assert recognizer.worker_pids == () and _gone(pid)
+
+
+def test_garbage_collection_stops_the_workers(vocabulary: Vocabulary) -> None:
+    recognizer = NgramRecognizer(vocabulary)
+    recognizer.recognize(UTTERANCES[0])
+    (pid,) = recognizer.worker_pids
+    del recognizer
+    gc.collect()
+    assert _gone(pid)
+
+
+def test_a_worker_answers_each_request_and_none_when_its_job_fails() -> None:
+    def job(data: bytes) -> object:
+        if data == b"fail":
+            raise ValueError(data)
+        return [data.decode(), len(data)]
+
+    worker = start_worker(job)
+    assert isinstance(worker, PassWorker) and worker.alive
+    big = "x" * 300_000  # larger than a pipe's buffer
+    assert worker.submit(big.encode()) and worker.result() == [big, len(big)]
+    assert worker.submit(b"fail") and worker.result() is None and worker.alive
+    assert worker.submit(b"old") and worker.submit(b"new") and worker.result() == ["new", 3]
+    assert worker.result() is None  # nothing pending
+    worker.close()
+    assert not worker.alive and not worker.submit(b"late") and _gone(worker.pid)
+    worker.close()  # again: nothing happens
+
+
+def test_say_runs_only_the_first_members_phone_loop_in_a_child() -> None:
+    wav = str(UTTERANCES[0])
+    passes = oneshot.start_passes(wav, [], "auto")
+    try:
+        score = passes.phone_score(0)
+        assert isinstance(score, float) and score > 0.0
+        assert passes.phone_score(1) is None  # the caller computes it when that member is chosen
+    finally:
+        passes.close()
+    cancelled = oneshot.start_passes(wav, [], "auto")
+    pids = cancelled.pids
+    assert len(pids) == 3
+    cancelled.close()  # never asked: stopped
+    assert all(_gone(pid) for pid in pids)
