@@ -26,7 +26,6 @@ stops them (so does the recogniser's garbage collection or the process's exit).
 
 from __future__ import annotations
 
-import itertools
 import math
 import struct
 import tempfile
@@ -52,6 +51,7 @@ from knic.language.phoneloop import (
     NGRAM_TRAIL_SILENCE,
     PHONE_DECODER_OPTIONS,
     PhoneLoop,
+    ngram_pass,
 )
 from knic.language.reader import AmbiguityError, Reader
 from knic.language.vocabulary import Vocabulary
@@ -358,25 +358,8 @@ Decoded = tuple[str, float, int, tuple[str, ...]]
 
 
 def _decode_with(decoder: Any, initial_cmn: Any, raw: bytes, nbest: int) -> Decoded:
-    """One n-gram pass of padded raw audio: best hypothesis, path score, frames, N-best hypotheses."""
-    decoder.reinit_feat()  # the dither's noise starts afresh: the same audio decodes the same way
-    decoder.set_cmn(initial_cmn)
-    decoder.start_utt()
-    decoder.process_raw(raw, full_utt=True)
-    decoder.end_utt()
-    hyp = decoder.hyp()
-    frames = max(1, decoder.n_frames())
-    if hyp is None:
-        return "", 0.0, frames, ()
-    found: list[str] = []
-    if nbest > 0:
-        try:
-            for entry in itertools.islice(decoder.nbest(), nbest):
-                if entry is not None and entry.hypstr:  # pocketsphinx can yield an empty entry
-                    found.append(" ".join(entry.hypstr.split()))
-        except (RuntimeError, ValueError, AttributeError):  # no lattice for this utterance
-            found = []
-    return " ".join(hyp.hypstr.split()), float(hyp.best_score), frames, tuple(found)
+    """One n-gram pass of padded raw audio (:func:`~knic.language.phoneloop.ngram_pass`)."""
+    return ngram_pass(decoder, raw, nbest, initial_cmn)
 
 
 def _ngram_job(member: _Member) -> Callable[[bytes], Decoded]:

@@ -30,7 +30,7 @@ from typing import TYPE_CHECKING, Any
 
 from core.errors import LanguageError
 from knic.language.acoustic import DEFAULT_NGRAM_ACOUSTIC_MODEL
-from knic.language.phoneloop import NGRAM_DECODER_OPTIONS, NGRAM_TRAIL_SILENCE
+from knic.language.phoneloop import NGRAM_DECODER_OPTIONS, NGRAM_TRAIL_SILENCE, ngram_pass
 
 if TYPE_CHECKING:
     from knic.language.vocabulary import Vocabulary
@@ -130,22 +130,7 @@ def decode_here(samples: bytes, model: tuple[Path, Path], acoustic_model: str | 
     decoder = Decoder(lm=None, loglevel="FATAL", **{**options, "dict": str(model[0])})
     decoder.add_lm_file("ngram", str(model[1]))
     decoder.activate_search("ngram")
-    decoder.start_utt()
-    decoder.process_raw(pad_pcm(samples, NGRAM_TRAIL_SILENCE), full_utt=True)
-    decoder.end_utt()
-    hyp = decoder.hyp()
-    frames = max(1, decoder.n_frames())
-    if hyp is None:
-        return "", 0.0, frames, ()
-    nbest: list[str] = []
-    with contextlib.suppress(RuntimeError, ValueError):  # no lattice
-        for entry in decoder.nbest():
-            if entry is None or not entry.hypstr:  # pocketsphinx can yield an empty entry
-                continue
-            nbest.append(" ".join(entry.hypstr.split()))
-            if len(nbest) == NBEST:
-                break
-    return " ".join(hyp.hypstr.split()), float(hyp.best_score), frames, tuple(nbest)
+    return ngram_pass(decoder, pad_pcm(samples, NGRAM_TRAIL_SILENCE), NBEST)
 
 
 class Child:

@@ -7,8 +7,9 @@ Requests and replies go through two pipes, each message length-prefixed. A worke
 failed, answers None and the caller does the work itself. The child leaves when its request pipe closes:
 :meth:`PassWorker.close`, the worker's garbage collection, the parent's exit or the parent's death.
 
-Unix only (``os.fork``): elsewhere :func:`start_worker` gives None. Start workers before the process starts
-threads (as :mod:`knic.language.oneshot` forks its children).
+Unix only (``os.fork``): elsewhere :func:`start_worker` gives None, and so it does in a process that already
+runs other threads (a ROS executor, a web server): a fork there could copy a lock another thread holds, so
+such a process decodes in itself.
 """
 
 from __future__ import annotations
@@ -18,6 +19,7 @@ import json
 import os
 import signal
 import struct
+import threading
 import time
 import weakref
 from collections.abc import Callable
@@ -27,6 +29,8 @@ _HEADER = struct.Struct("!Q")
 #: the parent's ends of every open worker's pipes: a child forked later closes them, so that a worker still
 #: sees its request pipe close when its parent closes it
 _PARENT_ENDS: set[int] = set()
+#: fork workers even when this process runs other threads (off: see the module docstring)
+FORK_WITH_THREADS = False
 #: how long :meth:`PassWorker.close` waits for the child to finish its job and leave before killing it (s)
 CLOSE_WAIT = 5.0
 
@@ -107,8 +111,9 @@ class PassWorker:
 
 
 def start_worker(job: Callable[[bytes], Any]) -> PassWorker | None:
-    """A :class:`PassWorker` for ``job``, or None where ``os.fork`` is missing or fails."""
-    if not hasattr(os, "fork"):
+    """A :class:`PassWorker` for ``job``, or None where ``os.fork`` is missing or fails, or when this process
+    runs other threads."""
+    if not hasattr(os, "fork") or (threading.active_count() > 1 and not FORK_WITH_THREADS):
         return None
     try:
         return PassWorker(job)

@@ -8,9 +8,11 @@ reader and loads the world; this module therefore imports little besides the aco
 
 from __future__ import annotations
 
+import itertools
 import tempfile
 from collections.abc import Mapping
 from pathlib import Path
+from typing import Any
 
 from core.errors import LanguageError
 from knic.language.acoustic import DEFAULT_ACOUSTIC_MODEL, acoustic_model_options, wheel_model_dir
@@ -104,3 +106,31 @@ class PhoneLoop:
         decoder.end_utt()
         hyp = decoder.hyp()
         return float(hyp.best_score) if hyp is not None else 0.0
+
+
+def ngram_pass(
+    decoder: Any, raw: bytes, nbest: int, initial_cmn: Any = None
+) -> tuple[str, float, int, tuple[str, ...]]:
+    """One n-gram pass of padded raw audio with a decoder whose search is set: the best hypothesis, its path
+    score (0.0: no path), the frames decoded and the first ``nbest`` N-best hypotheses (none without a
+    lattice). The dither's noise starts afresh, and the cepstral mean from ``initial_cmn`` when given, so
+    that the same audio decodes the same way whatever was decoded before."""
+    decoder.reinit_feat()
+    if initial_cmn is not None:
+        decoder.set_cmn(initial_cmn)
+    decoder.start_utt()
+    decoder.process_raw(raw, full_utt=True)
+    decoder.end_utt()
+    hyp = decoder.hyp()
+    frames = max(1, decoder.n_frames())
+    if hyp is None:
+        return "", 0.0, frames, ()
+    found: list[str] = []
+    if nbest > 0:
+        try:
+            for entry in itertools.islice(decoder.nbest(), nbest):
+                if entry is not None and entry.hypstr:  # pocketsphinx can yield an empty entry
+                    found.append(" ".join(entry.hypstr.split()))
+        except (RuntimeError, ValueError, AttributeError):  # no lattice for this utterance
+            found = []
+    return " ".join(hyp.hypstr.split()), float(hyp.best_score), frames, tuple(found)

@@ -8,12 +8,13 @@ from __future__ import annotations
 import gc
 import os
 import signal
+import threading
 import time
 from pathlib import Path
 
 import pytest
 
-from knic.language import oneshot
+from knic.language import oneshot, passworker
 from knic.language.lmspeech import NgramRecognizer
 from knic.language.passworker import PassWorker, start_worker
 from knic.language.vocabulary import Vocabulary
@@ -49,6 +50,12 @@ def _heard(recognizer: NgramRecognizer) -> list[tuple[str, str, bool]]:
         transcript = recognizer.recognize(wav)
         found.append((transcript.text, repr(transcript.score), transcript.in_grammar))
     return found
+
+
+@pytest.fixture(autouse=True)
+def _fork_even_beside_other_tests_threads(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Threads other tests left running must not turn the workers off here (that guard has its own test)."""
+    monkeypatch.setattr(passworker, "FORK_WITH_THREADS", True)
 
 
 @pytest.fixture(scope="module")
@@ -129,3 +136,16 @@ def test_say_runs_only_the_first_members_phone_loop_in_a_child() -> None:
     assert len(pids) == 3
     cancelled.close()  # never asked: stopped
     assert all(_gone(pid) for pid in pids)
+
+
+def test_a_process_with_other_threads_decodes_in_itself(monkeypatch: pytest.MonkeyPatch) -> None:
+    """A fork could copy a lock another thread holds: no worker then, the caller decodes itself."""
+    monkeypatch.setattr(passworker, "FORK_WITH_THREADS", False)
+    stop = threading.Event()
+    other = threading.Thread(target=stop.wait, daemon=True)
+    other.start()
+    try:
+        assert start_worker(lambda data: len(data)) is None
+    finally:
+        stop.set()
+        other.join()
