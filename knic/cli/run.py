@@ -299,7 +299,7 @@ def add_goals(
     quiet: bool = False,
     dialogue: Dialogue | None = None,
     source: str = "user",
-    acoustic_model: str = "espeak",
+    acoustic_model: str | None = None,
 ) -> list[dict[str, Any]]:
     """Add every ``--goal`` and ``--speech`` goal to the system's knowledge base; all or nothing.
 
@@ -399,7 +399,7 @@ def answer_source(args: argparse.Namespace, role: Role) -> Callable[[], str | No
         answer: str = args.confirm
         return lambda: answer
     if args.confirm_speech:
-        return SpokenAnswers(args.confirm_speech, acoustic_model=args.acoustic_model)
+        return SpokenAnswers(args.confirm_speech, acoustic_model=args.acoustic_model or "espeak")
     if sys.stdin is not None and sys.stdin.isatty():
         return typed_answer
     raise KnicError(
@@ -514,7 +514,7 @@ def understand_text(vocabulary: Any, text: str, speaker: str) -> Any:
     return result
 
 
-def recognise(vocabulary: Any, wav: str, acoustic_model: str = "espeak") -> str:
+def recognise(vocabulary: Any, wav: str, acoustic_model: str | None = None) -> str:
     """The words of a spoken command (pocketsphinx with the grammar of the run's vocabulary).
 
     Raises:

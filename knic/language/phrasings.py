@@ -4,9 +4,9 @@ The n-gram model (:mod:`knic.language.lmfiles`) is estimated from sentences samp
 templates. People say the same requests more freely ("would you be a dear and fetch me my spectacles", "if
 it's not too much trouble ..."), and a model that never saw such word sequences hears them badly even where
 the reader understands them typed. :data:`PHRASINGS` holds patterns made from development sets of people's
-commands: each sentence normalised, every name of its world replaced by a slot of the name's type
-(``{item}``, ``{room}``, ``{furniture}``, ``{person}``, ...). :func:`sample_phrasings` fills the slots with
-another world's names, so the patterns carry to any house.
+commands: each sentence normalised, every name of its world replaced by a slot of the name's type with the
+name said (``{item=spectacles}``, ``{room=kitchen}``, ...). :func:`sample_phrasings` fills the slots with the
+world's names, so the patterns carry to any house.
 
 The patterns are data, made offline by ``python -m knic.language.phrasings SET.yaml ... --out FILE`` from
 development sets only (their ``world: other`` cases with ``--other-world``); never from a test set.
@@ -27,11 +27,14 @@ from knic.language.vocabulary import Term, Vocabulary, normalize
 PHRASINGS = Path(__file__).resolve().with_name("phrasings.txt")
 #: Types whose names stay as said: levels are numbers people say freely, the robot's name is fixed.
 KEPT_TYPES = frozenset({"level", "robot"})
-_SLOT = re.compile(r"\{([a-z_]+)\}")
+#: Share of a slot's fillings that keep the name said in the development set, where the world has it (people
+#: say "my glasses", seldom "my apple": the rest spread the phrasing over the world's names).
+KEEP_SAID = 0.5
+_SLOT = re.compile(r"\{([a-z_]+)(?:=([a-z0-9' ]+))?\}")
 
 
 def delexicalize(text: str, vocabulary: Vocabulary) -> str:
-    """``text`` normalised, each world name (longest first, left to right) replaced by ``{type}``."""
+    """``text`` normalised, each world name (longest first, left to right) replaced by ``{type=name}``."""
     words = normalize(text).split()
     names: dict[tuple[str, ...], str] = {}
     for term in vocabulary.terms:
@@ -44,7 +47,7 @@ def delexicalize(text: str, vocabulary: Vocabulary) -> str:
         for size in range(min(longest, len(words) - index), 0, -1):
             kind = names.get(tuple(words[index : index + size]))
             if kind is not None:
-                out.append("{" + kind + "}")
+                out.append("{" + kind + "=" + " ".join(words[index : index + size]) + "}")
                 index += size
                 break
         else:
@@ -71,7 +74,7 @@ def load_patterns(path: Path | None = None) -> list[str]:
         if not line:
             continue
         bare = _SLOT.sub("", line)
-        if not re.fullmatch(r"[a-z0-9' {}_]+", line) or "{" in bare or "}" in bare:
+        if not re.fullmatch(r"[a-z0-9' {}_=]+", line) or "{" in bare or "}" in bare:
             raise LanguageError(f"{path}:{number}: not a phrasing pattern: {line!r}")
         patterns.append(line)
     return patterns
@@ -85,19 +88,29 @@ def sample_phrasings(
     patterns: Iterable[str] | None = None,
     exclude_words: frozenset[str] = frozenset(),
 ) -> list[str]:
-    """Each pattern ``per_pattern`` times with its slots filled by names of the world drawn at random; a
-    pattern with a slot type the world lacks, or a sentence with an excluded word, is left out."""
+    """Each pattern ``per_pattern`` times with its slots filled by names of the world: the name said in the
+    development set (``{type=name}``) in :data:`KEEP_SAID` of the fillings where the world has it, else one
+    drawn at random; a pattern with a slot type the world lacks, or a sentence with an excluded word, is
+    left out."""
     rng = random.Random(seed)
     by_type: dict[str, list[Term]] = {}
     for term in vocabulary.terms:
         by_type.setdefault(term.type, []).append(term)
     sentences: list[str] = []
+
+    def fill(slot: re.Match[str]) -> str:
+        kind, said = slot.group(1), slot.group(2)
+        if said and said in names[kind] and rng.random() < KEEP_SAID:
+            return said
+        return rng.choice(by_type[kind]).phrase
+
+    names = {kind: {term.phrase for term in terms} for kind, terms in by_type.items()}
     for pattern in load_patterns() if patterns is None else patterns:
-        kinds = _SLOT.findall(pattern)
+        kinds = [kind for kind, _ in _SLOT.findall(pattern)]
         if any(kind not in by_type for kind in kinds):
             continue
         for _ in range(per_pattern):
-            text = _SLOT.sub(lambda m: rng.choice(by_type[m.group(1)]).phrase, pattern)
+            text = _SLOT.sub(fill, pattern)
             if not exclude_words.intersection(text.split()):
                 sentences.append(text)
     return sentences

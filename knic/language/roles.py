@@ -265,14 +265,15 @@ def _implicit(
 ) -> list[str]:
     """What an action said without its object is about: the thing of ``category`` said last before it
     ("the cup on the dining table, bring to me"; "mug is on the counter, take it and give to tracy"), as
-    if "it" were said.
+    if "it" were said. A verb said alone takes nothing: in speech it is mostly a word heard in the silence
+    after the command ("fetch me the mug pick").
 
     Raises:
         LanguageError: nothing of that kind was said before; a word the world does not know stood where the
             object goes ("bring me banana from kitchen") is named.
     """
     with contextlib.suppress(LanguageError):
-        if clause.implicit and not clause.unknown:
+        if clause.implicit and not clause.unknown and not clause.empty():  # a verb alone takes nothing
             return referent(Chunk("pronoun", "it", role=category), (category,), groups, vocabulary)
     if clause.unknown:
         raise LanguageError(f"there is no '{clause.unknown[0]}' here: this world has nothing called that")

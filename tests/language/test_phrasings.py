@@ -19,14 +19,16 @@ OTHER_WORLD = Path(__file__).resolve().parents[1] / "fixtures" / "language" / "o
 def test_names_become_slots_of_their_type_and_levels_stay(vocabulary: Vocabulary) -> None:
     said = "Would you be a dear and put the reading glasses on the kitchen table, then dim it to 40%?"
     assert delexicalize(said, vocabulary) == (
-        "would you be a dear and put the {item} on the {furniture} then dim it to forty percent"
+        "would you be a dear and put the {item=reading glasses} on the {furniture=kitchen table} then dim it"
+        " to forty percent"
     )
-    assert delexicalize("take Tracy to the bedroom", vocabulary) == "take {person} to the {room}"
+    said = "take Tracy to the bedroom"
+    assert delexicalize(said, vocabulary) == "take {person=tracy} to the {room=bedroom}"
 
 
 def test_slots_are_filled_with_the_world_s_own_names(vocabulary: Vocabulary) -> None:
     other = read_vocabulary(problem=OTHER_WORLD)
-    patterns = ["could you bring me the {item} from the {room} love", "ring the {no_such_type}"]
+    patterns = ["could you bring me the {item=apple} from the {room} love", "ring the {no_such_type}"]
     sentences = sample_phrasings(other, 20, patterns=patterns)
     assert len(sentences) == 20  # the pattern with a type the world lacks is left out
     items = {t.phrase for t in other.terms if t.type == "item"}
@@ -37,6 +39,9 @@ def test_slots_are_filled_with_the_world_s_own_names(vocabulary: Vocabulary) -> 
         item, room = middle.split(" from the ")
         assert item in items and room in rooms
     assert sample_phrasings(other, 3, patterns=patterns, exclude_words=frozenset({"love"})) == []
+    kept = sample_phrasings(vocabulary, 200, patterns=["bring me my {item=glasses}"])
+    said = kept.count("bring me my glasses")  # the name said, about half the time, where the world has it
+    assert 60 <= said <= 140 and len(set(kept)) > 10
 
 
 def test_the_shipped_patterns_load_and_reach_the_speech_model(vocabulary: Vocabulary) -> None:
@@ -69,5 +74,5 @@ def test_patterns_are_made_from_a_set_of_commands(tmp_path: Path) -> None:
         main([str(cases), "--out", str(out)])
     assert main([str(cases), "--other-world", str(OTHER_WORLD), "--out", str(out)]) == 0
     patterns = load_patterns(out)
-    assert patterns[0] == "pop into the {room} and fetch me an {item} love"
+    assert patterns[0] == "pop into the {room=kitchen} and fetch me an {item=apple} love"
     assert len(patterns) == 2
