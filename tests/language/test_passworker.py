@@ -72,7 +72,9 @@ def test_workers_hear_what_one_process_hears_and_leave_on_close(
     recognizer = NgramRecognizer(vocabulary)
     assert recognizer.worker_pids == ()
     recognizer.recognize(UTTERANCES[0])
-    (pid,) = recognizer.worker_pids  # forked after the first utterance, decoded here
+    pids: list[int] = list(recognizer.worker_pids)  # forked after the first utterance, decoded here
+    assert len(pids) == 1
+    pid = pids[0]
     recognizer.close()
     assert recognizer.worker_pids == () and _gone(pid)
     recognizer.recognize(UTTERANCES[0])  # still usable, in this process alone
