@@ -56,7 +56,8 @@ def world_key(
     lexicon), of the command language's code and data, the acoustic model and the decoder settings."""
     digest = hashlib.sha256()
     sources = sorted({str(Path(f).resolve()) for f in files if f})
-    language = sorted(p for folder in _CODE for pattern in ("*.py", "*.yaml") for p in folder.glob(pattern))
+    patterns = ("*.py", "*.yaml", "*.txt")  # code, command language, people's phrasings
+    language = sorted(p for folder in _CODE for pattern in patterns for p in folder.glob(pattern))
     for path in [*sources, *map(str, language)]:
         digest.update(path.encode())
         with contextlib.suppress(OSError):

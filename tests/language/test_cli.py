@@ -104,3 +104,18 @@ def test_goal_bad_world_is_one_line(
     assert main(["goal", *argv, "go to the lounge"]) == 2
     captured = capsys.readouterr()
     assert captured.out == "" and message in captured.err and captured.err.count("\n") == 1
+
+
+def test_the_remembered_model_follows_the_phrasings(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """People's phrasings are part of the command model: a changed phrasings file is another world key, so
+    ``knic say`` builds the model again instead of reusing the one remembered."""
+    from knic.language import oneshot
+
+    code = tmp_path / "language"
+    code.mkdir()
+    phrasings = code / "phrasings.txt"
+    phrasings.write_text("bring me the {item=apple}\n", encoding="utf-8")
+    monkeypatch.setattr(oneshot, "_CODE", [code])
+    before = oneshot.world_key(["worlds/erl_home/erl_home_domain.pddl"], "auto")
+    phrasings.write_text("bring me the {item=apple} love\n", encoding="utf-8")
+    assert oneshot.world_key(["worlds/erl_home/erl_home_domain.pddl"], "auto") != before
