@@ -152,10 +152,9 @@ def evaluate(
         raise KnicError(f"{fixtures / 'gold.json'}: cannot read the speech test set: {exc}") from exc
     vocabulary = read_vocabulary()
     speaker = gold.get("speaker", "annie")
-    if acoustic_model is None:
-        from knic.language.acoustic import DEFAULT_ACOUSTIC_MODEL, DEFAULT_NGRAM_ACOUSTIC_MODEL
+    from knic.language.acoustic import acoustic_model_for
 
-        acoustic_model = DEFAULT_NGRAM_ACOUSTIC_MODEL if decoder == "ngram" else DEFAULT_ACOUSTIC_MODEL
+    acoustic_model = str(acoustic_model_for(decoder, acoustic_model))
     started = time.perf_counter()
     extra: dict[str, Any] = {
         "decoder_options": decoder_options,
@@ -278,7 +277,9 @@ def run(args: argparse.Namespace) -> int:
             result["dev"] = {key: dev[key] for key in DEV_FIGURES}
         figures[decoder] = result
     if args.answers:
-        answers_model = args.acoustic_model or "espeak"  # the answer recogniser's own default
+        from knic.language.acoustic import acoustic_model_for
+
+        answers_model = str(acoustic_model_for("answers", args.acoustic_model))
         figures["answer_accuracy"], wrong = evaluate_answers(Path(args.answers), answers_model)
         mistakes += wrong
         phrases = Path(args.answers).parent / "speech_answers_dev"

@@ -399,7 +399,10 @@ def answer_source(args: argparse.Namespace, role: Role) -> Callable[[], str | No
         answer: str = args.confirm
         return lambda: answer
     if args.confirm_speech:
-        return SpokenAnswers(args.confirm_speech, acoustic_model=args.acoustic_model or "espeak")
+        from knic.language.acoustic import acoustic_model_for
+
+        model = acoustic_model_for("answers", args.acoustic_model)
+        return SpokenAnswers(args.confirm_speech, acoustic_model=str(model))
     if sys.stdin is not None and sys.stdin.isatty():
         return typed_answer
     raise KnicError(

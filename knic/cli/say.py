@@ -67,10 +67,9 @@ def _world_files(args: argparse.Namespace) -> list[str]:
 
 def run(args: argparse.Namespace) -> int:
     decoder = getattr(args, "decoder", "ngram")
-    if args.acoustic_model is None:
-        from knic.language.acoustic import DEFAULT_ACOUSTIC_MODEL, DEFAULT_NGRAM_ACOUSTIC_MODEL
+    from knic.language.acoustic import acoustic_model_for
 
-        args.acoustic_model = DEFAULT_NGRAM_ACOUSTIC_MODEL if decoder == "ngram" else DEFAULT_ACOUSTIC_MODEL
+    args.acoustic_model = acoustic_model_for(decoder, args.acoustic_model)
     if decoder == "ngram":
         from knic.language import oneshot
 

@@ -36,8 +36,8 @@ from typing import TYPE_CHECKING, Any, Protocol
 
 from core.errors import LanguageError
 from knic.language.acoustic import (
-    DEFAULT_ACOUSTIC_MODEL,
     DEFAULT_NGRAM_ACOUSTIC_MODEL,
+    acoustic_model_for,
     acoustic_model_options,
     ensemble_members,
     wheel_model_dir,
@@ -50,7 +50,9 @@ from knic.language.phoneloop import (
     NGRAM_DECODER_OPTIONS,
     NGRAM_TRAIL_SILENCE,
     PHONE_DECODER_OPTIONS,
+    Decoded,
     PhoneLoop,
+    as_decoded,
     ngram_pass,
 )
 from knic.language.reader import AmbiguityError, Reader
@@ -253,10 +255,10 @@ class NgramRecognizer:
         request = struct.pack("!I", max(0, self.nbest)) + raw
         sent = [worker is not None and worker.submit(request) for worker in workers]
         first = self._members[0]
-        results = [_decode_with(first.decoder, first.initial_cmn, raw, self.nbest)]
+        results = [ngram_pass(first.decoder, raw, self.nbest, first.initial_cmn)]
         for member, worker, asked in zip(self._members[1:], workers, sent, strict=True):
-            got = _as_decoded(worker.result()) if worker is not None and asked else None
-            results.append(got or _decode_with(member.decoder, member.initial_cmn, raw, self.nbest))
+            got = as_decoded(worker.result()) if worker is not None and asked else None
+            results.append(got or ngram_pass(member.decoder, raw, self.nbest, member.initial_cmn))
         if self._workers is None and self._parallel and len(self._members) > 1:
             # forked after the first utterance, not before: a new pocketsphinx decoder scores its first
             # utterance slightly differently from the later ones, so this process's copies of the decoders
@@ -353,32 +355,14 @@ class NgramRecognizer:
         return Transcript(text, level >= self.threshold_of(index), level, duration_of(samples), elapsed)
 
 
-#: an n-gram pass's result: best hypothesis, its path score, frames decoded, the N-best hypotheses
-Decoded = tuple[str, float, int, tuple[str, ...]]
-
-
-def _decode_with(decoder: Any, initial_cmn: Any, raw: bytes, nbest: int) -> Decoded:
-    """One n-gram pass of padded raw audio (:func:`~knic.language.phoneloop.ngram_pass`)."""
-    return ngram_pass(decoder, raw, nbest, initial_cmn)
-
-
 def _ngram_job(member: _Member) -> Callable[[bytes], Decoded]:
     """A worker's job: the n-gram pass of a member (request: the N-best size, then padded raw audio)."""
 
     def job(request: bytes) -> Decoded:
         (nbest,) = struct.unpack_from("!I", request)
-        return _decode_with(member.decoder, member.initial_cmn, request[4:], nbest)
+        return ngram_pass(member.decoder, request[4:], nbest, member.initial_cmn)
 
     return job
-
-
-def _as_decoded(reply: Any) -> Decoded | None:
-    """A worker's reply (JSON data) as a pass's result, or None when it is not one."""
-    try:
-        text, score, frames, nbest = reply
-        return str(text), float(score), int(frames), tuple(str(h) for h in nbest)
-    except (TypeError, ValueError):
-        return None
 
 
 def choose_member(results: list[Decoded]) -> int:
@@ -453,11 +437,12 @@ def command_recognizer(
         LanguageError: an unknown decoder.
     """
     if decoder == "ngram":
-        return NgramRecognizer(vocabulary, acoustic_model=acoustic_model or DEFAULT_NGRAM_ACOUSTIC_MODEL)
+        return NgramRecognizer(vocabulary, acoustic_model=acoustic_model_for(decoder, acoustic_model))
     if decoder == "grammar":
         from knic.language.speech import Recognizer
         from knic.language.understanding import default_grammar
 
-        model = acoustic_model or DEFAULT_ACOUSTIC_MODEL
-        return Recognizer(default_grammar(), vocabulary, acoustic_model=model)
+        return Recognizer(
+            default_grammar(), vocabulary, acoustic_model=acoustic_model_for(decoder, acoustic_model)
+        )
     raise LanguageError(f"unknown decoder {decoder!r} ({', '.join(DECODERS)})")

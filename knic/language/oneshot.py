@@ -30,7 +30,13 @@ from typing import TYPE_CHECKING, Any
 
 from core.errors import LanguageError
 from knic.language.acoustic import DEFAULT_NGRAM_ACOUSTIC_MODEL
-from knic.language.phoneloop import NGRAM_DECODER_OPTIONS, NGRAM_TRAIL_SILENCE, ngram_pass
+from knic.language.phoneloop import (
+    NGRAM_DECODER_OPTIONS,
+    NGRAM_TRAIL_SILENCE,
+    Decoded,
+    as_decoded,
+    ngram_pass,
+)
 
 if TYPE_CHECKING:
     from knic.language.vocabulary import Vocabulary
@@ -45,8 +51,6 @@ MAX_AUDIO_BYTES = 32 * 1024 * 1024
 #: niceness added to the phone-loop child: its score is needed last (after the n-gram passes and the
 #: reader), so the n-gram children and the parent go first on a busy machine
 PHONE_LOOP_NICENESS = 5
-
-Decoded = tuple[str, float, int, tuple[str, ...]]
 
 
 def world_key(
@@ -206,11 +210,10 @@ class Passes:
         itself and reports the file's fault)."""
         found: list[Decoded] = []
         for wait in self._decoded:
-            result = wait()
-            if not isinstance(result, list) or len(result) != 4:
+            result = as_decoded(wait())
+            if result is None:
                 return None
-            text, path_score, frames, nbest = result
-            found.append((str(text), float(path_score), int(frames), tuple(str(h) for h in nbest)))
+            found.append(result)
         return found
 
     def phone_score(self, index: int) -> float | None:

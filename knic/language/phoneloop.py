@@ -108,9 +108,21 @@ class PhoneLoop:
         return float(hyp.best_score) if hyp is not None else 0.0
 
 
-def ngram_pass(
-    decoder: Any, raw: bytes, nbest: int, initial_cmn: Any = None
-) -> tuple[str, float, int, tuple[str, ...]]:
+#: an n-gram pass's result: best hypothesis, its path score, frames decoded, the N-best hypotheses
+Decoded = tuple[str, float, int, tuple[str, ...]]
+
+
+def as_decoded(data: Any) -> Decoded | None:
+    """An n-gram pass's result sent as JSON data (by a worker or a child process), or None when it is not
+    one."""
+    try:
+        text, score, frames, nbest = data
+        return str(text), float(score), int(frames), tuple(str(h) for h in nbest)
+    except (TypeError, ValueError):
+        return None
+
+
+def ngram_pass(decoder: Any, raw: bytes, nbest: int, initial_cmn: Any = None) -> Decoded:
     """One n-gram pass of padded raw audio with a decoder whose search is set: the best hypothesis, its path
     score (0.0: no path), the frames decoded and the first ``nbest`` N-best hypotheses (none without a
     lattice). The dither's noise starts afresh, and the cepstral mean from ``initial_cmn`` when given, so

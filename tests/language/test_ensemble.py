@@ -11,7 +11,7 @@ import pytest
 
 from core.errors import LanguageError
 from knic.cli import main
-from knic.language.acoustic import acoustic_model_options, ensemble_members
+from knic.language.acoustic import acoustic_model_for, acoustic_model_options, ensemble_members
 from knic.language.lmspeech import (
     FIRST_MEMBER_PREFERENCE,
     MODEL_THRESHOLDS,
@@ -46,6 +46,8 @@ def auto(vocabulary: Vocabulary) -> NgramRecognizer:
 def test_auto_is_the_adaptation_first_then_the_wheel_model(auto: NgramRecognizer) -> None:
     assert ensemble_members("auto") == ("espeak", "base") == auto.members
     assert ensemble_members("base") == ("base",)
+    assert acoustic_model_for("ngram") == "auto" and acoustic_model_for("grammar") == "espeak"
+    assert acoustic_model_for("answers") == "espeak" and acoustic_model_for("ngram", "base") == "base"
     assert (
         auto.threshold_of(0) == MODEL_THRESHOLDS["espeak"]
         and auto.threshold_of(1) == MODEL_THRESHOLDS["base"]

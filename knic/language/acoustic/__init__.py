@@ -49,6 +49,14 @@ def wheel_model_dir() -> Path:
     return Path(pocketsphinx.__file__).resolve().parent / "model" / "en-us"
 
 
+def acoustic_model_for(decoder: str, model: str | Path | None = None) -> str | Path:
+    """``model``, or when None the default of ``decoder``: :data:`DEFAULT_NGRAM_ACOUSTIC_MODEL` for
+    ``"ngram"``, :data:`DEFAULT_ACOUSTIC_MODEL` for the grammar decoder and the answer recogniser."""
+    if model is not None:
+        return model
+    return DEFAULT_NGRAM_ACOUSTIC_MODEL if decoder == "ngram" else DEFAULT_ACOUSTIC_MODEL
+
+
 def ensemble_members(model: str | Path) -> tuple[str | Path, ...]:
     """The acoustic models a name of :data:`ENSEMBLES` stands for, or the model itself alone."""
     if isinstance(model, str) and model in ENSEMBLES:
