@@ -41,6 +41,7 @@ from knic.cli.ros import add_run_ros_argument, ros_attached
 from knic.cli.runtask import judge_task, start_timed_goals, task_episode, task_summary, timed_goals
 from knic.cli.say import add_acoustic_argument
 from knic.cli.serve import add_run_serve_arguments, run_journal, serving
+from knic.language.acoustic import acoustic_model_for
 
 if TYPE_CHECKING:
     from knic.kgm2.roles import Role
@@ -399,10 +400,7 @@ def answer_source(args: argparse.Namespace, role: Role) -> Callable[[], str | No
         answer: str = args.confirm
         return lambda: answer
     if args.confirm_speech:
-        from knic.language.acoustic import acoustic_model_for
-
-        model = acoustic_model_for("answers", args.acoustic_model)
-        return SpokenAnswers(args.confirm_speech, acoustic_model=str(model))
+        return SpokenAnswers(args.confirm_speech, acoustic_model=args.acoustic_model)
     if sys.stdin is not None and sys.stdin.isatty():
         return typed_answer
     raise KnicError(
@@ -429,16 +427,16 @@ class SpokenAnswers:
 
     Args:
         wavs: WAV files, in the order of the questions.
-        acoustic_model: the acoustic model (see :mod:`knic.language.acoustic`).
+        acoustic_model: the acoustic model (see :mod:`knic.language.acoustic`; None: the answers' default).
 
     Raises:
         LanguageError: pocketsphinx refused the grammar (on the first question).
         AudioError: a file is not usable audio (on its question).
     """
 
-    def __init__(self, wavs: list[str], *, acoustic_model: str = "espeak") -> None:
+    def __init__(self, wavs: list[str], *, acoustic_model: str | None = None) -> None:
         self.wavs = list(wavs)
-        self.acoustic_model = acoustic_model
+        self.acoustic_model = acoustic_model_for("answers", acoustic_model)
         self._recognizer: Any = None
 
     def __call__(self) -> str | None:
