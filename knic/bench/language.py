@@ -4,7 +4,8 @@ The sets are ``tests/fixtures/language/dev.yaml`` (tuned on) and ``tests/fixture
 (written afterwards in other words), and ``people2/dev.yaml`` and ``people2/test.yaml`` (100 commands each,
 written blind: the writer saw the apartment's description and the gold format only, not the grammar, the
 reader, the lexicon or the earlier sets; ``people2-test`` is never tuned on). ``--file`` runs a set of one's
-own. Each case is a command with its gold frames and goals,
+own. ``people3``, ``people4`` and ``people5`` are further blind development sets (``people5`` spans both
+houses). Each case is a command with its gold frames and goals,
 or with a word the refusal (``reject``) or the question back (``question``) must contain. Cases run against
 the ERL apartment or, with ``world: other``, against a different house
 (``tests/fixtures/language/other_world``), to show that the language code knows no world's names. Figures:
@@ -40,6 +41,7 @@ SETS = {
     "people2-test": FIXTURES / "people2" / "test.yaml",
     "people3-dev": FIXTURES / "people3" / "dev.yaml",
     "people4-dev": FIXTURES / "people4" / "dev.yaml",
+    "people5-dev": FIXTURES / "people5" / "dev.yaml",
 }
 OTHER_WORLD = FIXTURES / "other_world" / "problem.pddl"
 _MAIN = {"MOTION": ("goal",), "OPERATING": ("device", "state")}

@@ -26,7 +26,15 @@ def test_the_held_out_set_stays_above_the_floor() -> None:
 def test_bench_language_prints_dev_and_test(capsys: pytest.CaptureFixture[str]) -> None:
     assert main(["bench", "language", "--json"]) == 0
     data = json.loads(capsys.readouterr().out)
-    assert set(data) == {"dev", "test", "people2-dev", "people2-test", "people3-dev", "people4-dev"}
+    assert set(data) == {
+        "dev",
+        "test",
+        "people2-dev",
+        "people2-test",
+        "people3-dev",
+        "people4-dev",
+        "people5-dev",
+    }
     for figures in data.values():
         assert 0.0 <= figures["accuracy"] <= 1.0 and figures["cases"] >= 40
         assert {"fillers", "relative", "chains", "levels", "several"} <= set(figures["by_class"])
