@@ -30,6 +30,7 @@ class Arg:
     joined: bool = False  # "and" before it: the same role as the previous argument
     consumed: bool = False  # used to narrow down the previous argument
     quantity: str | None = None  # "all" or "both" said before it
+    modifiers: tuple[str, ...] = ()  # unknown words before it ("the bedroom light" where there is none)
 
 
 @dataclass
@@ -259,7 +260,9 @@ def add_to_clause(
     if chunk.kind == "there":  # a place: where an earlier action was (the reader resolves it)
         clause.args.append(Arg(chunk, prep.role if prep else "place", prep.text if prep else "in", joined))
     elif chunk.kind in _NOUNS:
-        clause.args.append(Arg(chunk, prep.role if prep else None, prep.text if prep else "", joined))
+        arg = Arg(chunk, prep.role if prep else None, prep.text if prep else "", joined)
+        arg.modifiers = tuple(clause.pending)
+        clause.args.append(arg)
     elif chunk.kind == "state" or (chunk.kind == "prep" and chunk.state):
         clause.states.append(chunk.state or "")
     elif chunk.kind in ("level", "number"):

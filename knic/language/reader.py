@@ -356,7 +356,11 @@ class Reader:
         if arg.quantity == "both":
             return self._both(chunk, symbols)
         if len(symbols) > 1:
-            raise AmbiguityError(f"which {chunk.text} do you mean: {self._listed(symbols)}?")
+            question = f"which {chunk.text} do you mean: {self._listed(symbols)}?"
+            if arg.modifiers:  # words the world does not know before the name are said back ("kitchen light")
+                said = " ".join((*arg.modifiers, chunk.text))
+                question = f"I know no '{said}' here. {question[:1].upper()}{question[1:]}"
+            raise AmbiguityError(question)
         return symbols
 
     def _both(self, chunk: Chunk, symbols: list[str]) -> list[str]:

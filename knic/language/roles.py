@@ -239,7 +239,8 @@ def _operating(reader: Resolver, clause: Clause, previous: Frames, groups: list[
     state = clause.verb.state if clause.verb is not None else None
     if clause.levels:
         level = clause.levels[-1]
-        if state == "closed" and clause.level_in_words:  # "close the blinds fully": closed all the way
+        downward = state == "closed" or clause.states[-1:] == ["closed"]
+        if downward and clause.level_in_words:  # "close the blinds fully", "the dimmer all the way down"
             level = 100 - level
         state = str(level)
     elif clause.states:

@@ -1,0 +1,81 @@
+"""Phrasings found with the fifth blind set (people5): terse and blunt verbs ("goto", "snatch", "hunt down",
+"kill the lights"), a level said in words counted down from full ("all the way down"), and words the world
+does not know said before an ambiguous name, which the question back names ("the kitchen light" in a house
+without a kitchen)."""
+
+from __future__ import annotations
+
+import pytest
+
+from knic.bench.language import OTHER_WORLD
+from knic.language import understand
+from knic.language.vocabulary import Vocabulary
+from knic.language.world import read_vocabulary
+
+
+@pytest.fixture(scope="module")
+def other_house() -> Vocabulary:
+    return read_vocabulary(problem=OTHER_WORLD)
+
+
+READ = [
+    ("goto bathroom", [{"frame": "MOTION", "goal": "bathroom"}]),
+    (
+        "goto the kitchen and grab the mug",
+        [
+            {"frame": "MOTION", "goal": "kitchen"},
+            {"frame": "TAKING", "theme": "mug", "source": "kitchen"},
+        ],
+    ),
+    ("hunt down the remote control", [{"frame": "SEARCHING", "theme": "remote"}]),
+    ("snatch the apple", [{"frame": "TAKING", "theme": "apple"}]),
+    ("nab the tablet", [{"frame": "TAKING", "theme": "tablet"}]),
+    ("kill all the lights", [{"frame": "OPERATING", "device": "all_lights", "state": "off"}]),
+    ("cut the hall light", [{"frame": "OPERATING", "device": "hallway_light", "state": "off"}]),
+    ("power down the left lamp", [{"frame": "OPERATING", "device": "bedroom_left_light", "state": "off"}]),
+    (
+        "turn the dimmer all the way down",
+        [{"frame": "OPERATING", "device": "living_room_dimmer", "state": "0"}],
+    ),
+    (
+        "turn the dimmer down all the way",
+        [{"frame": "OPERATING", "device": "living_room_dimmer", "state": "0"}],
+    ),
+    (
+        "turn the dimmer all the way up",
+        [{"frame": "OPERATING", "device": "living_room_dimmer", "state": "100"}],
+    ),
+    (
+        "turn the dimmer down to 30 percent",
+        [{"frame": "OPERATING", "device": "living_room_dimmer", "state": "30"}],
+    ),
+]
+
+
+@pytest.mark.parametrize(("text", "frames"), READ)
+def test_read_as_meant(vocabulary: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
+    result = understand(text, vocabulary)
+    assert result.accepted, result.reason
+    assert [f.to_dict() for f in result.frames] == frames
+
+
+def test_a_blunt_verb_of_a_thing_the_world_lacks_names_it(vocabulary: Vocabulary) -> None:
+    result = understand("kill the spider", vocabulary)
+    assert not result.accepted and "spider" in result.reason
+
+
+@pytest.mark.parametrize("text", ["turn on the kitchen light", "switch the bedroom light on"])
+def test_an_unknown_word_before_an_ambiguous_name_is_said_back(other_house: Vocabulary, text: str) -> None:
+    result = understand(text, other_house, speaker="maria")
+    assert not result.accepted
+    said = text.split(" the ")[1].split(" on")[0]
+    assert result.question.startswith(f"I know no '{said}' here. Which light do you mean:")
+
+
+def test_a_known_name_with_an_unknown_word_before_it_is_still_read(vocabulary: Vocabulary) -> None:
+    result = understand("bring me the red mug", vocabulary)
+    assert [f.to_dict() for f in result.frames] == [
+        {"frame": "BRINGING", "theme": "mug", "beneficiary": "me"}
+    ]
+    result = understand("turn on the light", vocabulary)
+    assert result.question.startswith("Which light do you mean:")
