@@ -94,3 +94,27 @@ def test_sendump_expands_to_normalised_mixture_weights(tmp_path: Path) -> None:
     )
     weights = np.frombuffer(data, dtype="<f4", offset=start + 20).reshape(d1, d2, d3)
     assert np.allclose(weights.sum(axis=2), 1.0, atol=1e-4) and weights.min() >= 0.0
+
+
+def test_made_up_speakers_are_drawn_within_their_ranges_and_repeat_with_the_seed(tmp_path: Path) -> None:
+    import random
+
+    from knic.language.acoustic import voices
+
+    first = voices.random_speaker(random.Random(3), "knic_speaker_007")
+    assert first == voices.random_speaker(random.Random(3), "knic_speaker_007")
+    lines = first.splitlines()
+    assert lines[:2] == ["language variant", "name knic_speaker_007"]
+    gender = lines[2].split()[1]
+    low, high = voices.SPEAKER_TRACT[gender]
+    formants = [list(map(int, line.split()[1:])) for line in lines if line.startswith("formant ")]
+    assert [f[0] for f in formants] == list(range(9))
+    spread = voices.SPEAKER_FORMANT_SPREAD
+    assert all(low - spread <= f[1] <= high + spread for f in formants)
+    assert all(voices.SPEAKER_HEIGHT[0] <= f[2] <= voices.SPEAKER_HEIGHT[1] for f in formants)
+    base, top = map(int, lines[3].split()[1:])
+    assert voices.SPEAKER_PITCH[gender][0] <= base < top
+    # many draws give both genders and other vocal tracts
+    drawn = [voices.random_speaker(random.Random(seed), "x") for seed in range(40)]
+    assert {d.splitlines()[2] for d in drawn} == {"gender male", "gender female"}
+    assert len(set(drawn)) == 40

@@ -51,6 +51,7 @@ import numpy as np
 
 from knic.language.acoustic import MODEL_DIR, NGRAM_SUBFOLDER, wheel_model_dir
 from knic.language.acoustic.voices import (
+    BASES,
     HELD_OUT_VOICES,
     OTHER_STRETCH,
     PITCHES,
@@ -58,6 +59,7 @@ from knic.language.acoustic.voices import (
     SPEEDS,
     VOICES,
     other_voices,
+    random_speakers,
     synthesize,
 )
 
@@ -290,6 +292,13 @@ def main(argv: list[str] | None = None) -> int:
     parser.add_argument(
         "--other-sentences", type=int, default=1000, help="sentences in other engines' voices (see --engines)"
     )
+    parser.add_argument(
+        "--random-speakers",
+        type=float,
+        default=0.0,
+        help="share of the espeak-ng sentences spoken by made-up speakers (voices.random_speaker)",
+    )
+    parser.add_argument("--speakers", type=int, default=200, help="made-up speakers to draw from")
     args = parser.parse_args(argv)
     engines = [item.strip() for item in args.engines.split(",") if item.strip()]
     others = other_voices(engines)
@@ -320,7 +329,10 @@ def main(argv: list[str] | None = None) -> int:
         sentences = sample_sentences(espeak_count + other_count, exclude)  # the same first ones for any count
         rng = random.Random(11)
         other_rng = random.Random(12)  # a stream of its own: espeak-ng's draws stay those of an espeak build
-        jobs: list[tuple[str, str, float, Path, int]] = []
+        speaker_rng = random.Random(14)  # likewise: the stock voices drawn stay those of a build without
+        made_up = random_speakers(args.speakers, work / "espeak") if args.random_speakers > 0 else []
+        espeak_path = work / "espeak" if made_up else None
+        jobs: list[tuple[str, str, float, Path, int, Path | None]] = []
         for index, text in enumerate(sentences):
             name = f"adapt_{index:04d}"
             target = work / "wav" / f"{name}.wav"
@@ -328,17 +340,22 @@ def main(argv: list[str] | None = None) -> int:
                 voice = rng.choice(VOICES)
                 speed: float = rng.randint(*SPEEDS)
                 pitch = rng.randint(*PITCHES)
+                where: Path | None = None
+                if made_up and speaker_rng.random() < args.random_speakers:
+                    voice = f"{speaker_rng.choice(BASES)}+{speaker_rng.choice(made_up)}"
+                    where = espeak_path
             else:
                 voice = other_rng.choice(others)
                 speed = round(other_rng.uniform(*OTHER_STRETCH), 2)
                 pitch = 50  # unused: the other engines keep their voices' pitch
+                where = None
             spoken[voice] = spoken.get(voice, 0) + 1
             if not target.exists():
-                jobs.append((text, voice, speed, target, pitch))
+                jobs.append((text, voice, speed, target, pitch, where))
             ids.append(name)
         with ThreadPoolExecutor(max_workers=args.jobs) as pool:
             list(pool.map(lambda job: synthesize(*job), jobs))
-        voices = sorted(spoken) if others else VOICES
+        voices = sorted(spoken) if others or made_up else VOICES
     (work / "fileids").write_text("".join(f"{i}\n" for i in ids))
     (work / "transcription").write_text(
         "".join(f"<s> {t} </s> ({i})\n" for i, t in zip(ids, sentences, strict=True))
@@ -411,6 +428,8 @@ def main(argv: list[str] | None = None) -> int:
         "iterations": args.iterations,
         "aligned_utterances_per_iteration": aligned,
     }
+    if made_up:
+        manifest["random_speakers"] = {"share": args.random_speakers, "speakers": len(made_up), "seed": 13}
     if others:
         manifest["engines"] = engines
         manifest["espeak_sentences"] = espeak_count

@@ -7,6 +7,8 @@ The voices of the spoken test and development sets are never used here (:data:`H
 
 from __future__ import annotations
 
+import random
+import shutil
 import subprocess
 import tempfile
 from pathlib import Path
@@ -125,17 +127,112 @@ def other_engine_wav(text: str, voice: str, stretch: float, raw: Path) -> None:
         raise ValueError(f"unknown engine in voice {voice!r}: expected flite:NAME or festival:NAME")
 
 
-def synthesize(text: str, voice: str, speed: float, target: Path, pitch: int = 50) -> None:
+#: Name prefix of the random speakers' espeak-ng variants (:func:`random_speakers`).
+RANDOM_SPEAKER_PREFIX = "knic_speaker_"
+#: Ranges of the random speakers' parameters, about those the adaptation's own variants (:data:`VARIANTS`)
+#: span: voice pitch base and range (Hz-like espeak-ng units) by gender, a vocal-tract scale of every formant
+#: frequency (percent) with a small spread per formant, formant heights and widths (percent).
+SPEAKER_PITCH = {"male": (70, 125), "female": (125, 200)}
+SPEAKER_PITCH_RANGE = (30, 120)
+SPEAKER_TRACT = {"male": (86, 104), "female": (100, 118)}
+SPEAKER_FORMANT_SPREAD = 5
+SPEAKER_HEIGHT = (65, 135)
+SPEAKER_WIDTH = (70, 150)
+#: Made-up speakers one espeak-ng data folder holds (espeak-ng lists 349 voices, the English accents among
+#: them).
+MAX_SPEAKERS = 300
+
+
+def random_speaker(rng: random.Random, name: str) -> str:
+    """An espeak-ng voice variant file of a made-up speaker: gender, pitch, a vocal-tract length (all formant
+    frequencies scaled together, each by a little more or less), formant heights and widths, and now and then
+    roughness, flutter, breath or echo."""
+    gender = rng.choice(("male", "female"))
+    base = rng.randint(*SPEAKER_PITCH[gender])
+    tract = rng.randint(*SPEAKER_TRACT[gender])
+    lines = [
+        "language variant",
+        f"name {name}",
+        f"gender {gender}",
+        f"pitch {base} {base + rng.randint(*SPEAKER_PITCH_RANGE)}",
+    ]
+    for formant in range(9):
+        frequency = tract + rng.randint(-SPEAKER_FORMANT_SPREAD, SPEAKER_FORMANT_SPREAD)
+        lines.append(
+            f"formant {formant} {frequency} {rng.randint(*SPEAKER_HEIGHT)} {rng.randint(*SPEAKER_WIDTH)}"
+        )
+    if rng.random() < 0.3:
+        lines.append(f"roughness {rng.randint(1, 4)}")
+    if rng.random() < 0.3:
+        lines.append(f"flutter {rng.randint(2, 25)}")
+    if rng.random() < 0.2:
+        lines.append("breath " + " ".join(str(rng.randint(0, 4)) for _ in range(8)))
+    if rng.random() < 0.3:
+        lines.append(f"echo {rng.randint(100, 150)} {rng.randint(5, 15)}")
+    return "\n".join(lines) + "\n"
+
+
+def espeak_data_dir() -> Path:
+    """The installed espeak-ng's data folder (``espeak-ng-data``).
+
+    Raises:
+        FileNotFoundError: espeak-ng's data folder is not where Debian installs it.
+    """
+    for parent in (Path("/usr/lib/x86_64-linux-gnu"), Path("/usr/lib/aarch64-linux-gnu"), Path("/usr/share")):
+        if (parent / "espeak-ng-data" / "voices").is_dir():
+            return parent / "espeak-ng-data"
+    raise FileNotFoundError("espeak-ng-data not found: apt-get install espeak-ng")
+
+
+def random_speakers(count: int, folder: Path, seed: int = 13) -> list[str]:
+    """A copy of espeak-ng's data under ``folder`` (for ``espeak-ng --path``) with ``count`` made-up
+    speakers (:func:`random_speaker`) among its variants; their variant names."""
+    data = folder / "espeak-ng-data"
+    if not data.is_dir():
+        shutil.copytree(espeak_data_dir(), data)
+        # espeak-ng lists at most 349 voices (languages and variants) and silently ignores the rest, the
+        # made-up ones among them: keep only its English accents and the made-up variants
+        for language in (data / "lang").rglob("*"):
+            if language.is_file() and not language.name.lower().startswith("en"):
+                language.unlink()
+        for variant in (data / "voices" / "!v").iterdir():
+            variant.unlink()
+    if count > MAX_SPEAKERS:
+        raise ValueError(f"{count} made-up speakers: espeak-ng lists at most {MAX_SPEAKERS}")
+    rng = random.Random(seed)
+    names = [f"{RANDOM_SPEAKER_PREFIX}{index:03d}" for index in range(count)]
+    for name in names:
+        (data / "voices" / "!v" / name).write_text(random_speaker(rng, name), encoding="utf-8")
+    return names
+
+
+def synthesize(
+    text: str, voice: str, speed: float, target: Path, pitch: int = 50, espeak_path: Path | None = None
+) -> None:
     """espeak-ng (or, for a voice ``engine:NAME``, :func:`other_engine_wav`) to a temporary WAV, then sox to
     16 kHz mono 16-bit with silence trimmed at both ends (no random dither, so the same engine version gives
     the same file). ``speed``: espeak-ng's words per minute, or the other engine's duration stretch.
-    ``pitch``: espeak-ng's ``-p`` (50: the voice's own; other engines keep their own)."""
+    ``pitch``: espeak-ng's ``-p`` (50: the voice's own; other engines keep their own). ``espeak_path``: the
+    folder holding the ``espeak-ng-data`` to use (:func:`random_speakers`; default: the installed one)."""
     with tempfile.TemporaryDirectory() as tmp:
         raw = Path(tmp) / "raw.wav"
         if ":" in voice:
             other_engine_wav(text, voice, speed, raw)
         else:
-            espeak = ["espeak-ng", "-v", voice, "-s", str(speed), "-p", str(pitch), "-w", str(raw), text]
+            where = [f"--path={espeak_path}"] if espeak_path else []
+            espeak = [
+                "espeak-ng",
+                *where,
+                "-v",
+                voice,
+                "-s",
+                str(speed),
+                "-p",
+                str(pitch),
+                "-w",
+                str(raw),
+                text,
+            ]
             subprocess.run(espeak, check=True)
         output = ["-r", "16000", "-c", "1", "-b", "16", str(target)]
         subprocess.run(["sox", "-R", str(raw), *output, *TRIM_BOTH_ENDS], check=True)
