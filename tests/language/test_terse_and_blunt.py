@@ -1,7 +1,7 @@
-"""Phrasings found with the fifth blind set (people5): terse and blunt verbs ("goto", "snatch", "hunt down",
-"kill the lights"), a level said in words counted down from full ("all the way down"), and words the world
-does not know said before an ambiguous name, which the question back names ("the kitchen light" in a house
-without a kitchen)."""
+"""Phrasings found with the fifth blind set (people5) and sentences tried on the spot: terse and blunt verbs
+("goto", "snatch", "hunt down", "kill the lights", "pop", "drop off"; "the shelf" for a shelf unit), a level
+said in words counted down from full ("all the way down"), and words the world does not know said before an
+ambiguous name, which the question back names ("the kitchen light" in a house without a kitchen)."""
 
 from __future__ import annotations
 
@@ -50,6 +50,23 @@ READ = [
         [{"frame": "OPERATING", "device": "living_room_dimmer", "state": "30"}],
     ),
 ]
+
+
+READ_IN_THE_OTHER_HOUSE = [
+    ("grab the hammer off the shelf", [{"frame": "TAKING", "theme": "hammer", "source": "shelf_unit"}]),
+    ("drop off the keys at the shelf unit", [{"frame": "PLACING", "theme": "keys", "goal": "shelf_unit"}]),
+    ("pop the bottle on the desk", [{"frame": "PLACING", "theme": "bottle", "goal": "desk"}]),
+    ("pop to the garage", [{"frame": "MOTION", "goal": "garage"}]),
+]
+
+
+@pytest.mark.parametrize(("text", "frames"), READ_IN_THE_OTHER_HOUSE)
+def test_read_as_meant_in_the_other_house(
+    other_house: Vocabulary, text: str, frames: list[dict[str, str]]
+) -> None:
+    result = understand(text, other_house, speaker="maria")
+    assert result.accepted, result.reason
+    assert [f.to_dict() for f in result.frames] == frames
 
 
 @pytest.mark.parametrize(("text", "frames"), READ)
