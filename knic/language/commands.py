@@ -92,6 +92,7 @@ class CommandLanguage:
     bare_request: str | None = None
     type_nouns: dict[str, tuple[str, ...]] = field(default_factory=dict)
     repairs: tuple[str, ...] = ()
+    negations: tuple[str, ...] = ()
     spellings: dict[str, str] = field(default_factory=dict)
 
     def verb_frames(self) -> dict[str, tuple[tuple[str, ...], str | None]]:
@@ -231,6 +232,7 @@ def load_language(path: str | Path = DEFAULT_PATH) -> CommandLanguage:
         bare_request=bare,
         type_nouns=tables["type_nouns"],
         repairs=_phrases(data, "repairs", source),
+        negations=_phrases(data, "negations", source),
         spellings=_spellings(data, source),
     )
     lists: dict[str, tuple[str, ...]] = {v.name: v.phrases for v in verbs}

@@ -46,7 +46,7 @@ from knic.language.segments import (
     sorry_repairs,
     statements_dropped,
 )
-from knic.language.tidy import SEGMENT_END, fluent, repaired, spelled, talk_dropped
+from knic.language.tidy import SEGMENT_END, fluent, negated_dropped, repaired, spelled, talk_dropped
 from knic.language.vocabulary import Term, Vocabulary, level_percent, normalize
 
 MAX_ACTIONS = 3
@@ -152,7 +152,8 @@ class Reader:
 
     def _read_tokens(self, tokens: list[str]) -> Reading:
         """:meth:`read` of normalised tokens."""
-        chunks = doings_dropped(talk_dropped(repaired(self.chunks(tokens), self._kind_of)))
+        chunks = negated_dropped(self.chunks(tokens), self.language.negations)
+        chunks = doings_dropped(talk_dropped(repaired(chunks, self._kind_of)))
         if not chunks:
             raise LanguageError(f"no action in '{' '.join(tokens)}': say what to do, e.g. 'bring me ...'")
         context: list[Arg] = []

@@ -66,6 +66,7 @@ def _carry(
     # where each object is taken from: "the remote from the living room and the glasses from the bedroom"
     sources: dict[str, str] = {}
     said_from: set[str] = set()  # objects whose source a "from" said (a bare "in"/"on" yields to it)
+    goals: dict[str, str] = {}  # "the mug to the kitchen and the glass to the dining room"
     bare = [a for a in args if a.prep is None and not a.consumed]
     first_is_person = bare and (
         bare[0].chunk.kind == "me"
@@ -105,6 +106,8 @@ def _carry(
                 roles["beneficiary"] = reader.resolve(arg, ("person",), previous, groups)[0]
             else:
                 roles["goal"] = reader.resolve(arg, ("room", "furniture"), previous, groups)[0]
+                for theme in themes:
+                    goals.setdefault(theme, roles["goal"])
         elif arg.prep == "place":
             if not themes:
                 raise LanguageError(f"'{arg.prep_text} {arg.chunk.text}' but no object to {kind.lower()}")
@@ -130,7 +133,9 @@ def _carry(
     frames = []
     for theme in dict.fromkeys(themes):
         source = sources.get(theme, before)
-        frames.append(CommandFrame(kind, {"theme": theme, **roles, **({"source": source} if source else {})}))
+        own = {"goal": goals[theme]} if theme in goals else {}
+        own.update({"source": source} if source else {})
+        frames.append(CommandFrame(kind, {"theme": theme, **roles, **own}))
     return frames
 
 

@@ -43,6 +43,37 @@ def unsaid_negated(chunks: list[Chunk]) -> list[Chunk]:
     return chunks
 
 
+def negated_dropped(chunks: list[Chunk], negations: Collection[str]) -> list[Chunk]:
+    """Drop the things taken back once something was named ("bring me the glasses, not the mug"; "the water
+    instead of the juice"): a negation phrase (:attr:`CommandLanguage.negations`) with the determiners and the
+    name after it. A negation before anything is named, or before no name, stays."""
+    phrases = sorted((n.split() for n in negations), key=len, reverse=True)
+    out: list[Chunk] = []
+    i = 0
+    while i < len(chunks):
+        said = [w for c in chunks[i : i + 3] for w in c.text.split()]
+        size = next((len(p) for p in phrases if said[: len(p)] == p), 0)
+        end = i + _chunks_over(chunks[i:], size)
+        while size and end < len(chunks) and chunks[end].kind == "det":
+            end += 1
+        named = any(c.kind in ("entity", "me", "pronoun") for c in out)
+        if size and named and end < len(chunks) and chunks[end].kind in ("entity", "me", "pronoun"):
+            i = end + 1
+            continue
+        out.append(chunks[i])
+        i += 1
+    return out
+
+
+def _chunks_over(chunks: list[Chunk], words: int) -> int:
+    """How many chunks from the first hold the first ``words`` words."""
+    count = 0
+    while words > 0 and count < len(chunks):
+        words -= len(chunks[count].text.split())
+        count += 1
+    return count
+
+
 def fluent(tokens: list[str], determiners: Collection[str]) -> list[str]:
     """Drop a false start said again right after ("take me to the take me to the kitchen", "the the"):
     a repeated stretch of two or more words, or a repeated determiner ("to half half open" stays)."""

@@ -1,7 +1,8 @@
 """Phrasings found with the fifth blind set (people5) and sentences tried on the spot: terse and blunt verbs
-("goto", "snatch", "hunt down", "kill the lights", "pop", "drop off"; "the shelf" for a shelf unit), a level
-said in words counted down from full ("all the way down"), and words the world does not know said before an
-ambiguous name, which the question back names ("the kitchen light" in a house without a kitchen)."""
+("goto", "snatch", "hunt down", "kill the lights", "pop", "drop off"; "the shelf" for a shelf unit), each
+object to its own place, things taken back ("not the mug", "instead of the juice"), a level said in words
+counted down from full ("all the way down"), and words the world does not know said before an ambiguous
+name, which the question back names ("the kitchen light" in a house without a kitchen)."""
 
 from __future__ import annotations
 
@@ -45,6 +46,36 @@ READ = [
         "turn the dimmer all the way up",
         [{"frame": "OPERATING", "device": "living_room_dimmer", "state": "100"}],
     ),
+    # each object to its own place
+    (
+        "take the mug to the kitchen and the glass to the dining room",
+        [
+            {"frame": "BRINGING", "theme": "mug", "goal": "kitchen"},
+            {"frame": "BRINGING", "theme": "glass", "goal": "dining_room"},
+        ],
+    ),
+    (
+        "bring the mug to the kitchen and the cup",
+        [
+            {"frame": "BRINGING", "theme": "mug", "goal": "kitchen"},
+            {"frame": "BRINGING", "theme": "cup", "goal": "kitchen"},
+        ],
+    ),
+    # what is taken back is not meant
+    ("get me the glasses, not the mug", [{"frame": "BRINGING", "theme": "glasses", "beneficiary": "me"}]),
+    (
+        "bring me the water instead of the juice",
+        [{"frame": "BRINGING", "theme": "water", "beneficiary": "me"}],
+    ),
+    (
+        "bring me the water rather than the juice",
+        [{"frame": "BRINGING", "theme": "water", "beneficiary": "me"}],
+    ),
+    (
+        "take the apple but not the lemon to tracy",
+        [{"frame": "BRINGING", "theme": "apple", "beneficiary": "tracy"}],
+    ),
+    ("go to the kitchen not the bathroom", [{"frame": "MOTION", "goal": "kitchen"}]),
     (
         "turn the dimmer down to 30 percent",
         [{"frame": "OPERATING", "device": "living_room_dimmer", "state": "30"}],
