@@ -277,14 +277,11 @@ class Reader:
             if arg.consumed or arg.chunk.kind != "entity" or len(symbols) != 1:
                 continue
             symbol = symbols.pop()
-            if arg.prep is None:
+            place = any(self.is_a(t, "room") or self.is_a(t, "furniture") for t in arg.chunk.terms)
+            if arg.prep is None or not place:  # "i seem to have misplaced my glasses": said, whatever before
                 mentioned.append(CommandFrame("SEARCHING", {"theme": symbol}))
                 last = symbol
-            elif (
-                arg.prep == "place"
-                and last is not None
-                and any(self.is_a(t, "room") or self.is_a(t, "furniture") for t in arg.chunk.terms)
-            ):
+            elif arg.prep == "place" and last is not None:
                 located.setdefault(last, symbol)
         return mentioned, located
 

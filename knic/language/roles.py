@@ -83,7 +83,12 @@ def _carry(
     for arg in args:
         if arg.consumed:
             continue
-        if arg.prep is None:
+        if arg.prep is None and themes and kind != "TAKING" and _names_only_places(reader, arg):
+            # said without "to" ("put mug kitchen table"): where the objects go
+            roles["goal"] = reader.resolve(arg, ("room", "furniture"), previous, groups)[0]
+            for theme in themes:
+                goals.setdefault(theme, roles["goal"])
+        elif arg.prep is None:
             themes += reader.resolve(arg, ("item",), previous, groups)
         elif arg.prep == "beneficiary":
             roles["beneficiary"] = reader.resolve(arg, ("person",), previous, groups)[0]

@@ -61,6 +61,13 @@ READ = [
             {"frame": "BRINGING", "theme": "cup", "goal": "kitchen"},
         ],
     ),
+    # terse: where a thing goes said without "to"; something named in talk before the request
+    ("put mug kitchen table", [{"frame": "PLACING", "theme": "mug", "goal": "kitchen_table"}]),
+    ("bring tablet living room", [{"frame": "BRINGING", "theme": "tablet", "goal": "living_room"}]),
+    (
+        "I seem to have misplaced my spectacles, could you have a look for them",
+        [{"frame": "SEARCHING", "theme": "glasses"}],
+    ),
     # what is taken back is not meant
     ("get me the glasses, not the mug", [{"frame": "BRINGING", "theme": "glasses", "beneficiary": "me"}]),
     (
@@ -88,6 +95,7 @@ READ_IN_THE_OTHER_HOUSE = [
     ("drop off the keys at the shelf unit", [{"frame": "PLACING", "theme": "keys", "goal": "shelf_unit"}]),
     ("pop the bottle on the desk", [{"frame": "PLACING", "theme": "bottle", "goal": "desk"}]),
     ("pop to the garage", [{"frame": "MOTION", "goal": "garage"}]),
+    ("put laptop desk", [{"frame": "PLACING", "theme": "laptop", "goal": "desk"}]),
 ]
 
 
