@@ -46,7 +46,11 @@ def referent(
     for group in reversed(groups):
         found: list[str] = []
         for frame in group:
-            for role in ("theme", "beneficiary"):
+            for role in (
+                "theme",
+                "beneficiary",
+                "goal",
+            ):  # "go to tracy and give her the mug": a person gone to
                 value = frame.get(role)
                 if value is None or value == SPEAKER:
                     continue
@@ -100,7 +104,8 @@ def chain(
             role = "ground" if nxt.kind == "SEARCHING" else "source"
             theme = nxt.get("theme")
             said = nxt.get(role) in (None, frame["goal"])  # "go to the kitchen and find the cup (there)"
-            if nxt.kind in ("SEARCHING", "TAKING", "BRINGING") and said and theme:
+            place = not vocabulary.is_subtype(vocabulary.type_of(frame["goal"]) or "", "person")
+            if nxt.kind in ("SEARCHING", "TAKING", "BRINGING") and said and theme and place:
                 out[index + 1] = CommandFrame(nxt.kind, {**nxt.args, role: frame["goal"]})
                 waypoints.add(index)
             elif nxt.kind == "MOTION":  # "go to the garage, then come back": only the last place can be kept

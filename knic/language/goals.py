@@ -14,6 +14,7 @@ TAKING theme X (nothing carries on)    ``(holding R X)`` (R the robot: "pick up 
 SEARCHING theme X                      ``(reported X)``
 MOTION goal room                       ``(robot_at R room)`` (R the world's robot)
 MOTION goal f (furniture)              ``(robot_at R room)``, the room f is in (``furniture_in``)
+MOTION goal P (person)                 ``(found P)``: the robot searches P out and is then where P is
 MOTION whose place a later action uses none: it only says where that action happens
 ACCOMPANYING theme P, goal room or f   ``(person_at P room)``
 OPERATING light(s), on / off           ``(light_on d)`` / ``(light_off d)`` for each light
@@ -167,6 +168,10 @@ def _frame_goals(frame: CommandFrame, vocabulary: Vocabulary, speaker: str, note
     if kind == "MOTION":
         if vocabulary.robot is None:
             raise LanguageError("the world has no robot to move")
+        if _is(
+            vocabulary, need("goal"), "person"
+        ):  # "go to tracy": find where she is (the robot is then there)
+            return [Fact("found", (need("goal"),))]
         return [Fact("robot_at", (vocabulary.robot, room_of(need("goal"), vocabulary)))]
     if kind == "ACCOMPANYING":
         return [Fact("person_at", (need("theme"), room_of(need("goal"), vocabulary)))]

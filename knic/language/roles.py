@@ -214,7 +214,15 @@ def _motion(reader: Resolver, clause: Clause, previous: Frames, groups: list[Fra
     places = [a for a in args if not a.consumed and a.prep in ("goal", "place", "level", None)]
     if not places:
         raise LanguageError(f"{_verb(clause)} where? I heard no room or furniture of this world")
-    goal = reader.resolve(places[-1], ("room", "furniture"), previous, groups)[0]
+    target = places[-1]
+    # "go to tracy": to where a person is (said with a preposition; "come to me" asks which room)
+    person = (
+        target.prep is not None
+        and target.chunk.kind == "entity"
+        and bool(target.chunk.terms)
+        and all(reader.is_a(t, "person") for t in target.chunk.terms)
+    )
+    goal = reader.resolve(target, ("person",) if person else ("room", "furniture"), previous, groups)[0]
     # "go with tracy to the kitchen": she goes too; "come with me to the kitchen": the robot goes
     others = [
         p

@@ -1,0 +1,58 @@
+"""Phrasings found with the sixth blind set (people6): going to a person ("go to tracy": the robot seeks her
+out, and "her" then names her), and further general gaps the set showed."""
+
+from __future__ import annotations
+
+import pytest
+
+from knic.bench.language import OTHER_WORLD
+from knic.language import understand
+from knic.language.vocabulary import Vocabulary
+from knic.language.world import read_vocabulary
+
+
+@pytest.fixture(scope="module")
+def other_house() -> Vocabulary:
+    return read_vocabulary(problem=OTHER_WORLD)
+
+
+READ = [
+    ("go to tracy", [{"frame": "MOTION", "goal": "tracy"}]),
+    (
+        "go to tracy and give her the mug",
+        [
+            {"frame": "MOTION", "goal": "tracy"},
+            {"frame": "BRINGING", "theme": "mug", "beneficiary": "tracy"},
+        ],
+    ),
+]
+
+READ_IN_THE_OTHER_HOUSE = [
+    ("go to oscar", [{"frame": "MOTION", "goal": "oscar"}]),
+]
+
+
+@pytest.mark.parametrize(("text", "frames"), READ)
+def test_read_as_meant(vocabulary: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
+    result = understand(text, vocabulary)
+    assert result.accepted, result.reason
+    assert [f.to_dict() for f in result.frames] == frames
+
+
+@pytest.mark.parametrize(("text", "frames"), READ_IN_THE_OTHER_HOUSE)
+def test_read_as_meant_in_the_other_house(
+    other_house: Vocabulary, text: str, frames: list[dict[str, str]]
+) -> None:
+    result = understand(text, other_house, speaker="maria")
+    assert result.accepted, result.reason
+    assert [f.to_dict() for f in result.frames] == frames
+
+
+def test_going_to_a_person_seeks_them_out(vocabulary: Vocabulary) -> None:
+    result = understand("go to tracy", vocabulary)
+    assert [str(g) for g in result.goals] == ["(found tracy)"]
+
+
+def test_coming_to_the_speaker_still_asks_where(vocabulary: Vocabulary) -> None:
+    result = understand("come to me", vocabulary)
+    assert not result.accepted and "which room" in result.question
