@@ -60,6 +60,14 @@ class VerbClass:
     state: str | None = None
     beneficiary: str | None = None
     opening: bool = False
+    #: the phrases read in text and in what the recogniser heard but left out of the templates, so of what
+    #: the speech model hears (rare words that would only add confusions there: "snatch", "scout for")
+    text_only: tuple[str, ...] = ()
+
+    @property
+    def spoken(self) -> tuple[str, ...]:
+        """The phrases the templates, and so the speech model, use."""
+        return tuple(p for p in self.phrases if p not in self.text_only)
 
 
 @dataclass(frozen=True)
@@ -169,14 +177,16 @@ def load_language(path: str | Path = DEFAULT_PATH) -> CommandLanguage:
             raise LanguageError(
                 f"{source}: verbs.{name}: beneficiary may only be 'me' or 'subject', not {beneficiary!r}"
             )
+        text_only = _phrases(spec, "text_phrases", source)
         verbs.append(
             VerbClass(
                 str(name),
-                _phrases(spec, "phrases", source),
+                _phrases(spec, "phrases", source) + text_only,
                 tuple(spec["frames"]),
                 spec.get("state"),
                 beneficiary,
                 bool(spec.get("opening", False)),
+                text_only,
             )
         )
     tables: dict[str, dict[str, tuple[str, ...]]] = {}
@@ -235,7 +245,7 @@ def load_language(path: str | Path = DEFAULT_PATH) -> CommandLanguage:
         negations=_phrases(data, "negations", source),
         spellings=_spellings(data, source),
     )
-    lists: dict[str, tuple[str, ...]] = {v.name: v.phrases for v in verbs}
+    lists: dict[str, tuple[str, ...]] = {v.name: v.spoken for v in verbs}
     spoken = _phrases(data, "spoken_determiners", source) or language.determiners
     lists.update(det=spoken, fillers=language.fillers, joiners=language.joiners)
     lists.update(percent=language.percent, openers=language.openers, closers=language.closers)

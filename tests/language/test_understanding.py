@@ -393,3 +393,15 @@ def test_the_command_language_reads_the_same_from_its_parsed_copy(tmp_path: Any,
     assert load_language(DEFAULT_PATH) == first  # read from the copy
     next(tmp_path.glob("knic-commands-*.json")).write_text("{not json", encoding="utf-8")
     assert load_language(DEFAULT_PATH) == first  # a broken copy: the YAML again
+
+
+def test_text_only_verb_phrases_are_read_but_left_out_of_the_speech_model(vocabulary: Vocabulary) -> None:
+    from knic.language.commands import command_language
+
+    language = command_language()
+    take = next(v for v in language.verbs if v.name == "pick")
+    assert "snatch" in take.text_only and "snatch" in take.phrases
+    assert "snatch" not in language.lists["pick"] and "grab" in language.lists["pick"]
+    assert "snatch" not in language.words() and "nab" not in language.words()
+    result = understand("snatch the remote", vocabulary)
+    assert [(f.kind, dict(f.args)) for f in result.frames] == [("TAKING", {"theme": "remote"})]
