@@ -1,5 +1,6 @@
 """Phrasings found with the sixth blind set (people6): going to a person ("go to tracy": the robot seeks her
-out, and "her" then names her), and further general gaps the set showed."""
+out, and "her" then names her); questions and wishes that are requests ("is there any way you could ...",
+"I could really do with ..."); short trips ("nip to the kitchen", "swing by the nursery"); "go on and ..."."""
 
 from __future__ import annotations
 
@@ -25,9 +26,34 @@ READ = [
             {"frame": "BRINGING", "theme": "mug", "beneficiary": "tracy"},
         ],
     ),
+    (
+        "is there any way you could bring me the tablet",
+        [{"frame": "BRINGING", "theme": "tablet", "beneficiary": "me"}],
+    ),
+    ("I could really do with the tissues", [{"frame": "BRINGING", "theme": "tissues", "beneficiary": "me"}]),
+    ("I could do with my glasses", [{"frame": "BRINGING", "theme": "glasses", "beneficiary": "me"}]),
+    ("I really need the remote", [{"frame": "BRINGING", "theme": "remote", "beneficiary": "me"}]),
+    ("could you nip to the kitchen", [{"frame": "MOTION", "goal": "kitchen"}]),
+    (
+        "nip to the kitchen and fetch me the juice",
+        [
+            {"frame": "MOTION", "goal": "kitchen"},
+            {"frame": "BRINGING", "theme": "juice", "source": "kitchen", "beneficiary": "me"},
+        ],
+    ),
 ]
 
 READ_IN_THE_OTHER_HOUSE = [
+    ("swing by the nursery", [{"frame": "MOTION", "goal": "nursery"}]),
+    ("stop by the garage", [{"frame": "MOTION", "goal": "garage"}]),
+    (
+        "go on and leave the hammer on the workbench",
+        [{"frame": "PLACING", "theme": "hammer", "goal": "workbench"}],
+    ),
+    (
+        "any chance you could put the stapler on the desk",
+        [{"frame": "PLACING", "theme": "stapler", "goal": "desk"}],
+    ),
     ("go to oscar", [{"frame": "MOTION", "goal": "oscar"}]),
 ]
 
