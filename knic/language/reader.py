@@ -137,7 +137,9 @@ class Reader:
             return self._read_tokens(self._fluent([t for segment in kept for t in segment]))
         except LanguageError as exc:
             acts = any(chunk.kind == "verb" for segment in kept for chunk in self.chunks(segment))
-            raise (exc if acts else whole) from None
+            # a question about what the request names beats a complaint about the talk ("light on please,
+            # I can't see": which light?)
+            raise (exc if acts or isinstance(exc, AmbiguityError) else whole) from None
 
     def _fluent(self, tokens: list[str]) -> list[str]:
         return fluent(tokens, self.language.determiners)
@@ -441,6 +443,15 @@ class Reader:
             break
         if len({t.symbol for t in terms}) < len({t.symbol for t in chunk.terms}):
             arg.chunk = Chunk("entity", chunk.text, terms, role=chunk.role)
+
+    def levelled_in(self, rooms: Sequence[Term]) -> list[str]:
+        """The dimmers and blinds in the rooms ("dim the lounge to 40": the lounge's dimmer)."""
+        levelled = (t for t in self.vocabulary.terms if self.is_a(t, "dimmer") or self.is_a(t, "blinds"))
+        return list(
+            dict.fromkeys(
+                t.symbol for t in levelled if not t.is_group and any(self._within(t, r) for r in rooms)
+            )
+        )
 
     def _dimmers_in(self, rooms: Sequence[Term]) -> tuple[Term, ...]:
         """The dimmers (dimmable lights) in the rooms, one term each."""

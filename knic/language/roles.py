@@ -43,6 +43,9 @@ class Resolver(Protocol):
     def prefer_devices(self, arg: Arg, wants_level: bool, places: Sequence[str]) -> None:
         """Of the devices a name fits, keep those that can take a level and are where the command went."""
 
+    def levelled_in(self, rooms: Sequence[Term]) -> list[str]:
+        """The dimmers and blinds in the rooms."""
+
 
 def _bringing(reader: Resolver, clause: Clause, previous: Frames, groups: list[Frames]) -> Frames:
     return _carry(reader, clause, previous, groups, "BRINGING")
@@ -244,7 +247,11 @@ def _operating(reader: Resolver, clause: Clause, previous: Frames, groups: list[
         if arg.consumed or arg.prep == "beneficiary":  # "close the blinds for me"
             continue
         if arg.chunk.kind == "entity" and not any(reader.is_a(t, "device") for t in arg.chunk.terms):
-            if arg.prep is None:
+            rooms = [t for t in arg.chunk.terms if reader.is_a(t, "room")]
+            own = reader.levelled_in(rooms) if clause.levels or clause.vague else []
+            if arg.prep is None and len(own) == 1:  # "dim the lounge to 40": the room's only dimmer
+                devices += own
+            elif arg.prep is None:
                 raise LanguageError(f"'{arg.chunk.text}' is not a device I can operate")
             continue
         places = [f.get(r) or "" for f in reversed(previous) for r in ("goal", "ground") if f.get(r)]

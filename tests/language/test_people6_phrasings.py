@@ -1,6 +1,8 @@
 """Phrasings found with the sixth blind set (people6): going to a person ("go to tracy": the robot seeks her
 out, and "her" then names her); questions and wishes that are requests ("is there any way you could ...",
-"I could really do with ..."); short trips ("nip to the kitchen", "swing by the nursery"); "go on and ..."."""
+"I could really do with ..."); short trips ("nip to the kitchen", "swing by the nursery"); "go on and ...";
+a room said for its only dimmer or blinds when a level is asked ("dim the lounge to 40"); a question about the
+request said before talk that names nothing ("light on please, I can't see": which light?)."""
 
 from __future__ import annotations
 
@@ -41,9 +43,12 @@ READ = [
             {"frame": "BRINGING", "theme": "juice", "source": "kitchen", "beneficiary": "me"},
         ],
     ),
+    ("dim the lounge to 40", [{"frame": "OPERATING", "device": "living_room_dimmer", "state": "40"}]),
+    ("set the bedroom to half", [{"frame": "OPERATING", "device": "bedroom_blinds", "state": "50"}]),
 ]
 
 READ_IN_THE_OTHER_HOUSE = [
+    ("dim the lounge to 40", [{"frame": "OPERATING", "device": "lounge_dimmer", "state": "40"}]),
     ("swing by the nursery", [{"frame": "MOTION", "goal": "nursery"}]),
     ("stop by the garage", [{"frame": "MOTION", "goal": "garage"}]),
     (
@@ -82,3 +87,17 @@ def test_going_to_a_person_seeks_them_out(vocabulary: Vocabulary) -> None:
 def test_coming_to_the_speaker_still_asks_where(vocabulary: Vocabulary) -> None:
     result = understand("come to me", vocabulary)
     assert not result.accepted and "which room" in result.question
+
+
+def test_a_room_without_a_dimmer_is_no_device(vocabulary: Vocabulary) -> None:
+    result = understand("dim the kitchen to 40", vocabulary)
+    assert not result.accepted and "kitchen" in result.reason
+
+
+def test_a_room_said_without_a_level_is_no_device(vocabulary: Vocabulary) -> None:
+    assert not understand("turn on the lounge", vocabulary).accepted
+
+
+def test_the_question_about_the_request_beats_the_talk_after_it(other_house: Vocabulary) -> None:
+    result = understand("light on please, I can't see", other_house, speaker="maria")
+    assert not result.accepted and result.question.startswith("Which light do you mean")
