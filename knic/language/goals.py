@@ -5,7 +5,8 @@ Goals by request kind (the team's mapping for the ERL domain):
 =====================================  =====================================================
 frame                                  goal
 =====================================  =====================================================
-BRINGING theme X, beneficiary P        ``(has P X)`` ("me" is the speaker)
+BRINGING theme X, beneficiary P        ``(has P X)`` ("me" is the speaker), also with a goal room said for
+                                       P ("to granny in the living room": a hint that P is there)
 BRINGING / PLACING theme X, goal room  ``(object_at X room)``
 BRINGING / PLACING theme X, goal f     ``(object_on X f)`` (f a piece of furniture)
 ... with source f (furniture)          also ``(taken_from X f)`` when the domain has that predicate
@@ -150,7 +151,10 @@ def _frame_goals(frame: CommandFrame, vocabulary: Vocabulary, speaker: str, note
     if kind in ("BRINGING", "PLACING"):
         theme = need("theme")
         sourced = _sourced(frame, vocabulary, theme)
-        if frame.get("goal") is not None:
+        handed = frame.get("beneficiary") not in (None, SPEAKER) and _is(
+            vocabulary, frame.get("goal") or "", "room"
+        )
+        if frame.get("goal") is not None and not handed:  # "to granny in the living room": handed to her
             place = need("goal")
             if _is(vocabulary, place, "furniture"):
                 return [*sourced, Fact("object_on", (theme, place))]
@@ -262,6 +266,8 @@ def hints(frames: Sequence[CommandFrame], vocabulary: Vocabulary) -> list[Fact]:
     found: list[Fact] = []
     for frame in frames:
         theme, where = frame.get("theme"), frame.get("source") or frame.get("ground")
+        if frame.kind == "BRINGING" and frame.get("beneficiary") not in (None, SPEAKER):
+            theme, where = frame.get("beneficiary"), frame.get("goal")  # where the one it is for is
         if not theme or not where or theme == SPEAKER or vocabulary.locations.get(theme):
             continue
         candidates = [Fact("possibly_on", (theme, where))] if _is(vocabulary, where, "furniture") else []

@@ -83,10 +83,15 @@ def _carry(
             bare[0].consumed = True
         except LanguageError:
             pass
+    to_person = False  # the latest argument said whom the thing goes to ("to granny in the living room")
     for arg in args:
         if arg.consumed:
             continue
-        if arg.prep is None and themes and kind != "TAKING" and _names_only_places(reader, arg):
+        after_person, to_person = to_person, False
+        if arg.prep == "place" and after_person and themes and _names_only_places(reader, arg):
+            # "bring the juice to granny in the living room": where she is, so where the juice goes
+            roles["goal"] = reader.resolve(arg, ("room", "furniture"), previous, groups)[0]
+        elif arg.prep is None and themes and kind != "TAKING" and _names_only_places(reader, arg):
             # said without "to" ("put mug kitchen table"): where the objects go
             roles["goal"] = reader.resolve(arg, ("room", "furniture"), previous, groups)[0]
             for theme in themes:
@@ -112,6 +117,7 @@ def _carry(
                 or (arg.chunk.kind == "pronoun" and arg.chunk.role == "person")
             ):
                 roles["beneficiary"] = reader.resolve(arg, ("person",), previous, groups)[0]
+                to_person = roles["beneficiary"] != SPEAKER
             else:
                 roles["goal"] = reader.resolve(arg, ("room", "furniture"), previous, groups)[0]
                 for theme in themes:

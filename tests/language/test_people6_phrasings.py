@@ -2,7 +2,8 @@
 out, and "her" then names her); questions and wishes that are requests ("is there any way you could ...",
 "I could really do with ..."); short trips ("nip to the kitchen", "swing by the nursery"); "go on and ...";
 a room said for its only dimmer or blinds when a level is asked ("dim the lounge to 40"); a question about the
-request said before talk that names nothing ("light on please, I can't see": which light?)."""
+request said before talk that names nothing ("light on please, I can't see": which light?); a room said right
+after whom a thing goes to is where they are ("the juice to granny in the living room": handed to her)."""
 
 from __future__ import annotations
 
@@ -101,3 +102,21 @@ def test_a_room_said_without_a_level_is_no_device(vocabulary: Vocabulary) -> Non
 def test_the_question_about_the_request_beats_the_talk_after_it(other_house: Vocabulary) -> None:
     result = understand("light on please, I can't see", other_house, speaker="maria")
     assert not result.accepted and result.question.startswith("Which light do you mean")
+
+
+def test_a_room_after_the_person_a_thing_goes_to_is_where_they_are(vocabulary: Vocabulary) -> None:
+    from knic.language.goals import hints
+
+    result = understand("bring the juice to granny in the living room", vocabulary, speaker="tracy")
+    assert [f.to_dict() for f in result.frames] == [
+        {"frame": "BRINGING", "theme": "juice", "goal": "living_room", "beneficiary": "annie"}
+    ]
+    assert [str(g) for g in result.goals] == ["(has annie juice)"]
+    assert "(possibly_at annie living_room)" in [str(h) for h in hints(result.frames, vocabulary)]
+
+
+def test_a_room_after_the_thing_is_still_where_it_is(vocabulary: Vocabulary) -> None:
+    result = understand("bring me the mug in the kitchen", vocabulary)
+    assert [f.to_dict() for f in result.frames] == [
+        {"frame": "BRINGING", "theme": "mug", "source": "kitchen", "beneficiary": "me"}
+    ]
