@@ -43,6 +43,8 @@ def referent(
         LanguageError: nothing said earlier in the command fits.
     """
     wanted = chunk.role
+    if wanted == "item" and "item" not in categories:  # "the hall light, switch it off": "it" is a device
+        wanted = "any"
     for group in reversed(groups):
         found: list[str] = []
         for frame in group:

@@ -306,7 +306,8 @@ def _implicit(
     """
     with contextlib.suppress(LanguageError):
         if clause.implicit and not clause.unknown and not clause.empty():  # a verb alone takes nothing
-            return referent(Chunk("pronoun", "it", role=category), (category,), groups, vocabulary)
+            # all the things said last ("apple and lemon, bring to me"), as if "them" were said
+            return referent(Chunk("pronoun", "them", role=category), (category,), groups, vocabulary)
     if clause.unknown:
         raise LanguageError(f"there is no '{clause.unknown[0]}' here: this world has nothing called that")
     raise LanguageError(f"{_verb(clause)} what? I heard no {what} of this world")

@@ -3,7 +3,9 @@ out, and "her" then names her); questions and wishes that are requests ("is ther
 "I could really do with ..."); short trips ("nip to the kitchen", "swing by the nursery"); "go on and ...";
 a room said for its only dimmer or blinds when a level is asked ("dim the lounge to 40"); a question about the
 request said before talk that names nothing ("light on please, I can't see": which light?); a room said right
-after whom a thing goes to is where they are ("the juice to granny in the living room": handed to her)."""
+after whom a thing goes to is where they are ("the juice to granny in the living room": handed to her); "it"
+for a device named before ("the hall light, switch it off"); an action said without its objects after several
+were named takes them all ("apple and lemon, bring to me")."""
 
 from __future__ import annotations
 
@@ -46,6 +48,22 @@ READ = [
     ),
     ("dim the lounge to 40", [{"frame": "OPERATING", "device": "living_room_dimmer", "state": "40"}]),
     ("set the bedroom to half", [{"frame": "OPERATING", "device": "bedroom_blinds", "state": "50"}]),
+    ("the hall light, switch it off", [{"frame": "OPERATING", "device": "hallway_light", "state": "off"}]),
+    ("the dimmer, set it to half", [{"frame": "OPERATING", "device": "living_room_dimmer", "state": "50"}]),
+    (
+        "apple and lemon bring to me please",
+        [
+            {"frame": "BRINGING", "theme": "apple", "beneficiary": "me"},
+            {"frame": "BRINGING", "theme": "lemon", "beneficiary": "me"},
+        ],
+    ),
+    (
+        "the cup and the mug, put in the bin",
+        [
+            {"frame": "PLACING", "theme": "cup", "goal": "bin"},
+            {"frame": "PLACING", "theme": "mug", "goal": "bin"},
+        ],
+    ),
 ]
 
 READ_IN_THE_OTHER_HOUSE = [
@@ -120,3 +138,7 @@ def test_a_room_after_the_thing_is_still_where_it_is(vocabulary: Vocabulary) -> 
     assert [f.to_dict() for f in result.frames] == [
         {"frame": "BRINGING", "theme": "mug", "source": "kitchen", "beneficiary": "me"}
     ]
+
+
+def test_it_after_an_object_is_no_device(vocabulary: Vocabulary) -> None:
+    assert not understand("bring me the mug and switch it off", vocabulary).accepted
