@@ -5,7 +5,11 @@ recogniser searches a back-off trigram model (:mod:`knic.language.ngram`) of sen
 templates with the world's names (:mod:`knic.language.sampling`), so word orders and combinations the
 templates never produced stay reachable; the reader (:mod:`knic.language.reader`) then understands the words.
 When the best hypothesis is no command the reader reads, the first of the :data:`NBEST` best hypotheses that
-it reads is taken instead (the recogniser snaps to what the text side understands).
+it reads is taken instead (the recogniser snaps to what the text side understands). A last word or two that
+the best path had not finished when the audio ended (often a word heard in the silence after the command:
+"bring me my glasses please but") is dropped when the reader reads the rest the same way; on the spoken dev
+sets this took the word error rate from 0.125 to 0.065 (speech_people/dev), 0.134 to 0.087
+(speech_voices_dev) and 0.153 to 0.125 (speech_people2/dev), every reading unchanged.
 
 Out-of-domain speech: an n-gram search also forces any audio onto some word sequence of the model. Each
 utterance is therefore decoded a second time with pocketsphinx's unconstrained phone loop (the wheel's
@@ -162,7 +166,11 @@ class NgramRecognizer:
         parallel: bool = True,
     ):
         self.nbest = nbest
-        self.reads = reads or _reader_check(vocabulary)
+        reader = None if reads else Reader(vocabulary)
+        self.reads = reads or _reader_check(reader or Reader(vocabulary))
+        #: what the reader reads a text as (None: unread), to drop unfinished last words that change nothing
+        #: (not with a ``reads`` of one's own)
+        self._reading = _reading_of(reader) if reader else None
         self._vocabulary = vocabulary
         self._decoder_options = dict(decoder_options or {})
         self._members = [
@@ -309,6 +317,19 @@ class NgramRecognizer:
                     return shorter, True
         return text, False
 
+    def _unheard_tail(self, text: str) -> str:
+        """``text`` without its last word or two when the best path had not finished them as the audio ended
+        and the reader reads the rest the same way (a word heard in the silence after the command: "bring me
+        my glasses please but"); else ``text``."""
+        if self._reading is None:
+            return text
+        whole = self._reading(text)
+        words = text.split()
+        for cut in (1, 2):
+            if len(words) > cut + 1 and whole is not None and self._reading(" ".join(words[:-cut])) == whole:
+                return " ".join(words[:-cut])
+        return text
+
     def recognize(
         self,
         audio: str | Path | bytes | npt.NDArray[np.int16],
@@ -344,8 +365,10 @@ class NgramRecognizer:
             chosen = results[index]
         else:
             index, chosen = self._decode(raw)
-        text, score, frames, hypotheses = chosen
-        text, read = self._snap(text, list(hypotheses))
+        best, score, frames, hypotheses, finished = chosen
+        text, read = self._snap(best, list(hypotheses))
+        if read and text == best and not finished:
+            text = self._unheard_tail(text)
         if not read:
             elapsed = (time.perf_counter() - started) * 1000.0
             return Transcript(text, False, math.nan if text else float("-inf"), duration_of(samples), elapsed)
@@ -379,7 +402,7 @@ def choose_member(results: list[Decoded]) -> int:
 
 def _log_score(result: Decoded) -> float:
     """A pass's best path log score per frame (``-inf``: no path)."""
-    _, score, frames, _ = result
+    score, frames = result[1], result[2]
     return math.log(score) / max(1, frames) if score > 0.0 else float("-inf")
 
 
@@ -396,9 +419,20 @@ def confidence(score: float, phone_score: float, frames: int) -> float:
     return math.log(score / phone_score) / max(1, frames)
 
 
-def _reader_check(vocabulary: Vocabulary) -> Callable[[str], bool]:
-    reader = Reader(vocabulary)
+def _reading_of(reader: Reader) -> Callable[[str], object]:
+    """What a reader reads a text as (its frames as data; None when it does not read it, or finds it
+    ambiguous)."""
 
+    def reading(text: str) -> object:
+        try:
+            return [frame.to_dict() for frame in reader.read(text).frames]
+        except LanguageError:
+            return None
+
+    return reading
+
+
+def _reader_check(reader: Reader) -> Callable[[str], bool]:
     def reads(text: str) -> bool:
         try:
             reader.read(text)

@@ -108,25 +108,28 @@ class PhoneLoop:
         return float(hyp.best_score) if hyp is not None else 0.0
 
 
-#: an n-gram pass's result: best hypothesis, its path score, frames decoded, the N-best hypotheses
-Decoded = tuple[str, float, int, tuple[str, ...]]
+#: an n-gram pass's result: best hypothesis, its path score, frames decoded, the N-best hypotheses, and
+#: whether the best path reached the sentence end (False: the audio ended inside its last word, often a word
+#: heard in the silence after the command: "bring me my glasses please but")
+Decoded = tuple[str, float, int, tuple[str, ...], bool]
 
 
 def as_decoded(data: Any) -> Decoded | None:
     """An n-gram pass's result sent as JSON data (by a worker or a child process), or None when it is not
     one."""
     try:
-        text, score, frames, nbest = data
-        return str(text), float(score), int(frames), tuple(str(h) for h in nbest)
+        text, score, frames, nbest, finished = data
+        return str(text), float(score), int(frames), tuple(str(h) for h in nbest), bool(finished)
     except (TypeError, ValueError):
         return None
 
 
 def ngram_pass(decoder: Any, raw: bytes, nbest: int, initial_cmn: Any = None) -> Decoded:
     """One n-gram pass of padded raw audio with a decoder whose search is set: the best hypothesis, its path
-    score (0.0: no path), the frames decoded and the first ``nbest`` N-best hypotheses (none without a
-    lattice). The dither's noise starts afresh, and the cepstral mean from ``initial_cmn`` when given, so
-    that the same audio decodes the same way whatever was decoded before."""
+    score (0.0: no path), the frames decoded, the first ``nbest`` N-best hypotheses (none without a
+    lattice) and whether the best path ended with the sentence end. The dither's noise starts afresh, and
+    the cepstral mean from ``initial_cmn`` when given, so that the same audio decodes the same way whatever
+    was decoded before."""
     decoder.reinit_feat()
     if initial_cmn is not None:
         decoder.set_cmn(initial_cmn)
@@ -136,7 +139,7 @@ def ngram_pass(decoder: Any, raw: bytes, nbest: int, initial_cmn: Any = None) ->
     hyp = decoder.hyp()
     frames = max(1, decoder.n_frames())
     if hyp is None:
-        return "", 0.0, frames, ()
+        return "", 0.0, frames, (), False
     found: list[str] = []
     if nbest > 0:
         try:
@@ -145,4 +148,6 @@ def ngram_pass(decoder: Any, raw: bytes, nbest: int, initial_cmn: Any = None) ->
                     found.append(" ".join(entry.hypstr.split()))
         except (RuntimeError, ValueError, AttributeError):  # no lattice for this utterance
             found = []
-    return " ".join(hyp.hypstr.split()), float(hyp.best_score), frames, tuple(found)
+    words = [segment.word for segment in decoder.seg()]
+    finished = bool(words) and words[-1] == "</s>"
+    return " ".join(hyp.hypstr.split()), float(hyp.best_score), frames, tuple(found), finished
