@@ -102,6 +102,7 @@ class CommandLanguage:
     repairs: tuple[str, ...] = ()
     negations: tuple[str, ...] = ()
     spellings: dict[str, str] = field(default_factory=dict)
+    digit_words: dict[str, str] = field(default_factory=dict)
 
     def verb_frames(self) -> dict[str, tuple[tuple[str, ...], str | None]]:
         """Verb phrase -> (frame kinds in order, implied state); a phrase in several classes gets all."""
@@ -244,6 +245,7 @@ def load_language(path: str | Path = DEFAULT_PATH) -> CommandLanguage:
         repairs=_phrases(data, "repairs", source),
         negations=_phrases(data, "negations", source),
         spellings=_spellings(data, source),
+        digit_words=_spellings(data, source, "digit_words"),
     )
     lists: dict[str, tuple[str, ...]] = {v.name: v.spoken for v in verbs}
     spoken = _phrases(data, "spoken_determiners", source) or language.determiners
@@ -258,18 +260,18 @@ def load_language(path: str | Path = DEFAULT_PATH) -> CommandLanguage:
     return language
 
 
-def _spellings(data: dict[str, Any], source: str) -> dict[str, str]:
-    """The ``spellings`` table: one word -> the words it stands for.
+def _spellings(data: dict[str, Any], source: str, key: str = "spellings") -> dict[str, str]:
+    """The ``spellings`` (or ``digit_words``) table: one word -> the words it stands for.
 
     Raises:
         LanguageError: not a mapping of single words to phrases.
     """
-    raw = data.get("spellings") or {}
+    raw = data.get(key) or {}
     if not isinstance(raw, dict) or not all(
         isinstance(k, str) and isinstance(v, str) and len(k.split()) == 1 and v.split()
         for k, v in raw.items()
     ):
-        raise LanguageError(f"{source}: 'spellings' maps single words to the words they stand for")
+        raise LanguageError(f"{source}: '{key}' maps single words to the words they stand for")
     return {k: " ".join(v.split()) for k, v in raw.items()}
 
 

@@ -43,10 +43,19 @@ from knic.language.segments import (
     cut,
     doings_dropped,
     pointed,
+    sayings_dropped,
     sorry_repairs,
     statements_dropped,
 )
-from knic.language.tidy import SEGMENT_END, fluent, negated_dropped, repaired, spelled, talk_dropped
+from knic.language.tidy import (
+    SEGMENT_END,
+    digits_read,
+    fluent,
+    negated_dropped,
+    repaired,
+    spelled,
+    talk_dropped,
+)
 from knic.language.vocabulary import Term, Vocabulary, level_percent, normalize
 
 MAX_ACTIONS = 3
@@ -84,6 +93,7 @@ class Reader:
             AmbiguityError: a name fits several things (the message asks which).
             LanguageError: the command is not understood (the message says what is missing or unknown).
         """
+        text = digits_read(text, self.language.digit_words)
         segments = [
             spelled(normalize(part).split(), self.language.spellings) for part in SEGMENT_END.split(text)
         ]
@@ -155,7 +165,7 @@ class Reader:
     def _read_tokens(self, tokens: list[str]) -> Reading:
         """:meth:`read` of normalised tokens."""
         chunks = negated_dropped(self.chunks(tokens), self.language.negations)
-        chunks = doings_dropped(talk_dropped(repaired(chunks, self._kind_of)))
+        chunks = sayings_dropped(doings_dropped(talk_dropped(repaired(chunks, self._kind_of))))
         if not chunks:
             raise LanguageError(f"no action in '{' '.join(tokens)}': say what to do, e.g. 'bring me ...'")
         context: list[Arg] = []

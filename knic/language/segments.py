@@ -202,3 +202,56 @@ def doings_dropped(chunks: list[Chunk]) -> list[Chunk]:
         if not skipping:
             out.append(chunk)
     return out
+
+
+#: what a name said as a subject is followed by when the speaker says something about it, not to the robot
+#: ("find the teddy bear, oscar can't sleep without it")
+_SAYS = frozenset(
+    {
+        "can't",
+        "cannot",
+        "won't",
+        "wouldn't",
+        "couldn't",
+        "doesn't",
+        "didn't",
+        "isn't",
+        "hasn't",
+        "needs",
+        "wants",
+        "likes",
+        "loves",
+        "hates",
+        "misses",
+        "has",
+        "will",
+        "must",
+        "should",
+        "always",
+        "never",
+    }
+)
+
+
+def sayings_dropped(chunks: list[Chunk]) -> list[Chunk]:
+    """Drop what the speaker says about someone or something after an action ("find the teddy bear, oscar
+    can't sleep without it"): a name no verb, preposition or determiner governs, right before one of
+    :data:`_SAYS`, up to the next verb said as a command or a joiner."""
+    out: list[Chunk] = []
+    skipping = False
+    for i, chunk in enumerate(chunks):
+        nxt = chunks[i + 1] if i + 1 < len(chunks) else None
+        if (
+            chunk.kind == "entity"
+            and nxt is not None
+            and nxt.kind == "unknown"
+            and nxt.text in _SAYS
+            and any(c.kind == "verb" for c in out)
+            and out[-1].kind not in _GOVERNING
+        ):
+            skipping = True
+        elif skipping and (chunk.kind == "join" or (chunk.kind == "verb" and not chunk.soft)):
+            skipping = False
+        if not skipping:
+            out.append(chunk)
+    return out

@@ -98,6 +98,23 @@ def spelled(tokens: list[str], spellings: Mapping[str, str]) -> list[str]:
     return [word for token in tokens for word in spellings.get(token, token).split()]
 
 
+def digits_read(text: str, digit_words: Mapping[str, str]) -> str:
+    """Digits typed for the word they sound like as that word ("bring it 2 tracy": to;
+    :attr:`CommandLanguage.digit_words`), before numbers are spelled out, unless what follows is counted
+    ("2 apples", "2 of them") or nothing follows."""
+    tokens = text.split()
+    for i, token in enumerate(tokens[:-1]):
+        if token in digit_words and not _counted(tokens[i + 1].lower().strip(".,;:!?")):
+            tokens[i] = digit_words[token]
+    return " ".join(tokens)
+
+
+def _counted(word: str) -> bool:
+    """Whether a word after a number is what is counted: a plural ("apples", "glasses"; not "us", "his",
+    "this") or "of" ("2 of the mugs")."""
+    return word == "of" or (word.endswith("s") and not word.endswith(("us", "is", "ss")))
+
+
 def repaired(chunks: list[Chunk], kind_of: Callable[[Chunk], str]) -> list[Chunk]:
     """Apply the speaker's corrections ("go to the kitchen, no wait, the dining room"; "bring me the cup,
     sorry, I meant the mug"; "switch on the light, no, scratch that, open the blinds").

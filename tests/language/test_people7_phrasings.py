@@ -1,0 +1,75 @@
+"""Phrasings found with the seventh blind set (people7): digits typed for the word they sound like ("bring the
+tablet 2 tracy": to; "4 me": for) unless a count follows ("2 apples"); "is it possible for you to ..." as a
+polite request; "make the living room a bit brighter" (how far is asked); what the speaker says about someone
+after the request ("find the teddy bear, oscar can't sleep without it") is talk, not a second action."""
+
+from __future__ import annotations
+
+import pytest
+
+from knic.bench.language import OTHER_WORLD
+from knic.language import understand
+from knic.language.vocabulary import Vocabulary
+from knic.language.world import read_vocabulary
+
+
+@pytest.fixture(scope="module")
+def other_house() -> Vocabulary:
+    return read_vocabulary(problem=OTHER_WORLD)
+
+
+READ = [
+    ("bring the tablet 2 tracy pls", [{"frame": "BRINGING", "theme": "tablet", "beneficiary": "tracy"}]),
+    ("take the cup 2 the kitchen", [{"frame": "BRINGING", "theme": "cup", "goal": "kitchen"}]),
+    ("set the dimmer 2 50", [{"frame": "OPERATING", "device": "living_room_dimmer", "state": "50"}]),
+    ("set the dimmer to 2", [{"frame": "OPERATING", "device": "living_room_dimmer", "state": "2"}]),
+    ("bring me 2 apples", [{"frame": "BRINGING", "theme": "apple", "beneficiary": "me"}]),
+    ("find tracy 4 me", [{"frame": "SEARCHING", "theme": "tracy"}]),
+    (
+        "bring the juice to tracy, tracy needs it",
+        [{"frame": "BRINGING", "theme": "juice", "beneficiary": "tracy"}],
+    ),
+]
+
+READ_IN_THE_OTHER_HOUSE = [
+    ("is it possible for you to look for my keys", [{"frame": "SEARCHING", "theme": "keys"}]),
+    ("would it be possible for you to go 2 the study", [{"frame": "MOTION", "goal": "study"}]),
+    (
+        "could you go to the nursery and find the teddy bear, oscar can't sleep without it",
+        [
+            {"frame": "MOTION", "goal": "nursery"},
+            {"frame": "SEARCHING", "theme": "teddy_bear", "ground": "nursery"},
+        ],
+    ),
+    (
+        "find the keys oscar won't stop asking for them and then go 2 the garage",
+        [{"frame": "SEARCHING", "theme": "keys"}, {"frame": "MOTION", "goal": "garage"}],
+    ),
+]
+
+
+@pytest.mark.parametrize(("text", "frames"), READ)
+def test_read_as_meant(vocabulary: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
+    result = understand(text, vocabulary)
+    assert result.accepted, result.reason
+    assert [f.to_dict() for f in result.frames] == frames
+
+
+@pytest.mark.parametrize(("text", "frames"), READ_IN_THE_OTHER_HOUSE)
+def test_read_as_meant_in_the_other_house(
+    other_house: Vocabulary, text: str, frames: list[dict[str, str]]
+) -> None:
+    result = understand(text, other_house, speaker="maria")
+    assert result.accepted, result.reason
+    assert [f.to_dict() for f in result.frames] == frames
+
+
+@pytest.mark.parametrize("text", ["make the living room a bit brighter", "make the dimmer darker"])
+def test_making_a_room_brighter_asks_how_far(vocabulary: Vocabulary, text: str) -> None:
+    result = understand(text, vocabulary)
+    assert not result.accepted and "dimmer" in result.question
+
+
+def test_making_something_else_is_still_refused(vocabulary: Vocabulary) -> None:
+    result = understand("make me a sandwich", vocabulary)
+    assert not result.accepted and "sandwich" in result.reason
