@@ -13,9 +13,28 @@ Architecture (one module per concern):
 * :mod:`knowledge_base.export` -- to and from unified-planning problems and PDDL text.
 """
 
-from knowledge_base.domain import DomainModel
-from knowledge_base.kb import KnowledgeBase
+from typing import TYPE_CHECKING, Any
+
 from knowledge_base.model import BeliefStatus, Change, ChangeKind, Fact, Provenance, State
+
+if TYPE_CHECKING:
+    from knowledge_base.domain import DomainModel
+    from knowledge_base.kb import KnowledgeBase
+
+
+def __getattr__(name: str) -> Any:
+    """The heavy parts on first use: code that only needs the value types (``knic goal``, ``knic say``)
+    does not import the SQLite journal or the PDDL domain through unified-planning."""
+    if name == "DomainModel":
+        from knowledge_base.domain import DomainModel
+
+        return DomainModel
+    if name == "KnowledgeBase":
+        from knowledge_base.kb import KnowledgeBase
+
+        return KnowledgeBase
+    raise AttributeError(f"module 'knowledge_base' has no attribute {name!r}")
+
 
 __all__ = [
     "BeliefStatus",
