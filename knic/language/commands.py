@@ -103,6 +103,7 @@ class CommandLanguage:
     negations: tuple[str, ...] = ()
     spellings: dict[str, str] = field(default_factory=dict)
     digit_words: dict[str, str] = field(default_factory=dict)
+    typed_words: dict[str, str] = field(default_factory=dict)
 
     def verb_frames(self) -> dict[str, tuple[tuple[str, ...], str | None]]:
         """Verb phrase -> (frame kinds in order, implied state); a phrase in several classes gets all."""
@@ -246,6 +247,7 @@ def load_language(path: str | Path = DEFAULT_PATH) -> CommandLanguage:
         negations=_phrases(data, "negations", source),
         spellings=_spellings(data, source),
         digit_words=_spellings(data, source, "digit_words"),
+        typed_words=_spellings(data, source, "typed_words"),
     )
     lists: dict[str, tuple[str, ...]] = {v.name: v.spoken for v in verbs}
     spoken = _phrases(data, "spoken_determiners", source) or language.determiners
@@ -261,7 +263,7 @@ def load_language(path: str | Path = DEFAULT_PATH) -> CommandLanguage:
 
 
 def _spellings(data: dict[str, Any], source: str, key: str = "spellings") -> dict[str, str]:
-    """The ``spellings`` (or ``digit_words``) table: one word -> the words it stands for.
+    """The ``spellings`` (or ``digit_words``, ``typed_words``) table: one word -> the words it stands for.
 
     Raises:
         LanguageError: not a mapping of single words to phrases.

@@ -93,7 +93,7 @@ class Reader:
             AmbiguityError: a name fits several things (the message asks which).
             LanguageError: the command is not understood (the message says what is missing or unknown).
         """
-        text = digits_read(text, self.language.digit_words)
+        text = digits_read(text, self.language.digit_words, self.language.typed_words)
         segments = [
             spelled(normalize(part).split(), self.language.spellings) for part in SEGMENT_END.split(text)
         ]

@@ -98,13 +98,21 @@ def spelled(tokens: list[str], spellings: Mapping[str, str]) -> list[str]:
     return [word for token in tokens for word in spellings.get(token, token).split()]
 
 
-def digits_read(text: str, digit_words: Mapping[str, str]) -> str:
+def digits_read(text: str, digit_words: Mapping[str, str], typed: Mapping[str, str]) -> str:
     """Digits typed for the word they sound like as that word ("bring it 2 tracy": to;
     :attr:`CommandLanguage.digit_words`), before numbers are spelled out, unless what follows is counted
-    ("2 apples", "2 of them") or nothing follows."""
+    ("2 apples", "2 of them") or nothing follows; typed signs as their words ("3/4": three quarters;
+    :attr:`CommandLanguage.typed_words`)."""
     tokens = text.split()
-    for i, token in enumerate(tokens[:-1]):
-        if token in digit_words and not _counted(tokens[i + 1].lower().strip(".,;:!?")):
+    for i, token in enumerate(tokens):
+        bare = token.strip(".,;:!?")
+        if bare in typed:
+            tokens[i] = token.replace(bare, typed[bare])
+        elif (
+            i + 1 < len(tokens)
+            and token in digit_words
+            and not _counted(tokens[i + 1].lower().strip(".,;:!?"))
+        ):
             tokens[i] = digit_words[token]
     return " ".join(tokens)
 

@@ -1,5 +1,6 @@
 """Phrasings found with the seventh blind set (people7): digits typed for the word they sound like ("bring the
-tablet 2 tracy": to; "4 me": for) unless a count follows ("2 apples"); "is it possible for you to ..." as a
+tablet 2 tracy": to; "4 me": for) unless a count follows ("2 apples"), and fractions ("3/4 of the way");
+"when u get a sec"; "is it possible for you to ..." as a
 polite request; "make the living room a bit brighter" (how far is asked); what the speaker says about someone
 after the request ("find the teddy bear, oscar can't sleep without it") is talk, not a second action."""
 
@@ -25,6 +26,9 @@ READ = [
     ("set the dimmer to 2", [{"frame": "OPERATING", "device": "living_room_dimmer", "state": "2"}]),
     ("bring me 2 apples", [{"frame": "BRINGING", "theme": "apple", "beneficiary": "me"}]),
     ("find tracy 4 me", [{"frame": "SEARCHING", "theme": "tracy"}]),
+    ("dimmer at 3/4 pls", [{"frame": "OPERATING", "device": "living_room_dimmer", "state": "75"}]),
+    ("dimmer 2 1/2.", [{"frame": "OPERATING", "device": "living_room_dimmer", "state": "50"}]),
+    ("when u get a sec bring me the mug", [{"frame": "BRINGING", "theme": "mug", "beneficiary": "me"}]),
     (
         "bring the juice to tracy, tracy needs it",
         [{"frame": "BRINGING", "theme": "juice", "beneficiary": "tracy"}],
@@ -32,6 +36,10 @@ READ = [
 ]
 
 READ_IN_THE_OTHER_HOUSE = [
+    (
+        "open the study blinds 3/4 of the way",
+        [{"frame": "OPERATING", "device": "study_blinds", "state": "75"}],
+    ),
     ("is it possible for you to look for my keys", [{"frame": "SEARCHING", "theme": "keys"}]),
     ("would it be possible for you to go 2 the study", [{"frame": "MOTION", "goal": "study"}]),
     (
