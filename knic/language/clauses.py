@@ -269,7 +269,14 @@ def add_to_clause(
         clause.levels.append(chunk.value or 0)
         clause.level_in_words = chunk.kind == "level" and prep is None  # "to a quarter": where
     elif chunk.kind == "unknown":
-        if expecting and (nxt is None or nxt.kind in ("join", "prep", "verb")):
+        # a determiner after it starts the next noun phrase once an action is said ("bring my husband his
+        # glasses": 'husband' is no one the world knows)
+        ended = (
+            nxt is None
+            or nxt.kind in ("join", "prep", "verb")
+            or (nxt.kind == "det" and clause.verb is not None)
+        )
+        if expecting and ended:
             # the whole name not known ("the front door is open": 'front door'), not its last word
             phrase = [*clause.pending, chunk.text]
             while len(phrase) > 1 and phrase[-1] in _LINKING:

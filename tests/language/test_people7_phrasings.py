@@ -2,7 +2,8 @@
 tablet 2 tracy": to; "4 me": for) unless a count follows ("2 apples"), and fractions ("3/4 of the way");
 "when u get a sec"; "is it possible for you to ..." as a
 polite request; "make the living room a bit brighter" (how far is asked); what the speaker says about someone
-after the request ("find the teddy bear, oscar can't sleep without it") is talk, not a second action."""
+after the request ("find the teddy bear, oscar can't sleep without it") is talk, not a second action; someone
+the world has no name for said before the thing ("bring my husband his glasses") is refused, not dropped."""
 
 from __future__ import annotations
 
@@ -81,3 +82,16 @@ def test_making_a_room_brighter_asks_how_far(vocabulary: Vocabulary, text: str) 
 def test_making_something_else_is_still_refused(vocabulary: Vocabulary) -> None:
     result = understand("make me a sandwich", vocabulary)
     assert not result.accepted and "sandwich" in result.reason
+
+
+@pytest.mark.parametrize(
+    ("text", "word"), [("bring my husband his glasses", "husband"), ("give my son the remote", "son")]
+)
+def test_someone_the_world_has_no_name_for_is_refused(vocabulary: Vocabulary, text: str, word: str) -> None:
+    result = understand(text, vocabulary)
+    assert not result.accepted and word in result.reason
+
+
+def test_talk_without_an_action_is_still_no_action(vocabulary: Vocabulary) -> None:
+    result = understand("this concludes the test", vocabulary)
+    assert not result.accepted and "no action" in result.reason
