@@ -153,9 +153,14 @@ def split_clauses(
                 and current.args
                 and not current.states
                 and not current.levels
-                and (nxt is None or nxt.kind in ("join", "verb"))
+                and (
+                    nxt is None
+                    or nxt.kind in ("join", "verb")
+                    or (nxt.kind in ("level", "number", "vague") and "OPERATING" in _frames(current))
+                )
             ):
-                current.states.append(chunk.state)  # "i want the blinds open", "leave the lights on"
+                # "i want the blinds open", "leave the lights on", "i'd like the blinds open halfway"
+                current.states.append(chunk.state)
                 continue
             subject = _subject(current) if chunk.beneficiary == "subject" else None
             current = Clause(chunk)
@@ -289,3 +294,8 @@ def add_to_clause(
                 clause.pending.append(chunk.text)
     if chunk.kind != "unknown":
         clause.pending.clear()
+
+
+def _frames(clause: Clause) -> tuple[str, ...]:
+    """The frame kinds the clause's verb may start (none without a verb)."""
+    return clause.verb.frames if clause.verb is not None else ()

@@ -3,7 +3,8 @@ tablet 2 tracy": to; "4 me": for) unless a count follows ("2 apples"), and fract
 "when u get a sec"; "is it possible for you to ..." as a
 polite request; "make the living room a bit brighter" (how far is asked); what the speaker says about someone
 after the request ("find the teddy bear, oscar can't sleep without it") is talk, not a second action; someone
-the world has no name for said before the thing ("bring my husband his glasses") is refused, not dropped."""
+the world has no name for said before the thing ("bring my husband his glasses") is refused, not dropped;
+a wished state with a level ("i'd like the blinds open halfway")."""
 
 from __future__ import annotations
 
@@ -29,6 +30,14 @@ READ = [
     ("find tracy 4 me", [{"frame": "SEARCHING", "theme": "tracy"}]),
     ("dimmer at 3/4 pls", [{"frame": "OPERATING", "device": "living_room_dimmer", "state": "75"}]),
     ("dimmer 2 1/2.", [{"frame": "OPERATING", "device": "living_room_dimmer", "state": "50"}]),
+    ("i'd like the blinds open halfway", [{"frame": "OPERATING", "device": "bedroom_blinds", "state": "50"}]),
+    (
+        "bring me the mug open the blinds halfway",
+        [
+            {"frame": "BRINGING", "theme": "mug", "beneficiary": "me"},
+            {"frame": "OPERATING", "device": "bedroom_blinds", "state": "50"},
+        ],
+    ),
     ("when u get a sec bring me the mug", [{"frame": "BRINGING", "theme": "mug", "beneficiary": "me"}]),
     (
         "bring the juice to tracy, tracy needs it",
