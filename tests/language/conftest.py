@@ -8,7 +8,7 @@ from typing import Any
 import pytest
 
 from knic.language.vocabulary import Vocabulary
-from knic.language.world import load_world
+from knic.language.world import load_world, read_vocabulary
 
 SPEECH_FIXTURES = Path(__file__).resolve().parents[1] / "fixtures" / "speech"
 
@@ -28,3 +28,11 @@ def vocabulary(erl_world: tuple[Any, Vocabulary]) -> Vocabulary:
 def fresh_kb() -> Any:
     """A new knowledge base of the ERL apartment, for tests that add goals."""
     return load_world()[0]
+
+
+@pytest.fixture(scope="session")
+def other_house() -> Vocabulary:
+    """The vocabulary of the language bench's other house (tests/fixtures/language/other_world)."""
+    from knic.bench.language import OTHER_WORLD
+
+    return read_vocabulary(problem=OTHER_WORLD)

@@ -8,16 +8,8 @@ from __future__ import annotations
 
 import pytest
 
-from knic.bench.language import OTHER_WORLD
 from knic.language import understand
 from knic.language.vocabulary import Vocabulary
-from knic.language.world import read_vocabulary
-
-
-@pytest.fixture(scope="module")
-def other_house() -> Vocabulary:
-    return read_vocabulary(problem=OTHER_WORLD)
-
 
 READ = [
     ("goto bathroom", [{"frame": "MOTION", "goal": "bathroom"}]),
