@@ -185,18 +185,26 @@ _DOING = frozenset({"i'm", "we're", "they're", "he's", "she's", "it's", "am"})
 def doings_dropped(chunks: list[Chunk]) -> list[Chunk]:
     """Drop what the speaker says someone is doing ("switch off the lights i'm going to bed"): a subject
     with "be" right before an "-ing" verb, up to the next verb said as a command or a joiner."""
+
+    def starts(out: list[Chunk], chunk: Chunk, nxt: Chunk | None) -> bool:
+        # said first, the clause is talk the reader already skips
+        doing = chunk.kind == "unknown" and chunk.text in _DOING
+        return doing and nxt is not None and nxt.kind == "verb" and nxt.soft and bool(out)
+
+    return _talk_dropped(chunks, starts)
+
+
+def _talk_dropped(
+    chunks: list[Chunk], starts: Callable[[list[Chunk], Chunk, Chunk | None], bool]
+) -> list[Chunk]:
+    """``chunks`` without each stretch from a chunk where ``starts(kept so far, chunk, next chunk)`` up to
+    the next verb said as a command or a joiner."""
     out: list[Chunk] = []
     skipping = False
     for i, chunk in enumerate(chunks):
         nxt = chunks[i + 1] if i + 1 < len(chunks) else None
-        if (
-            chunk.kind == "unknown"
-            and chunk.text in _DOING
-            and nxt is not None
-            and nxt.kind == "verb"
-            and nxt.soft
-        ):
-            skipping = bool(out)  # said first, the clause is talk the reader already skips
+        if starts(out, chunk, nxt):
+            skipping = True
         elif skipping and (chunk.kind == "join" or (chunk.kind == "verb" and not chunk.soft)):
             skipping = False
         if not skipping:
@@ -237,21 +245,9 @@ def sayings_dropped(chunks: list[Chunk]) -> list[Chunk]:
     """Drop what the speaker says about someone or something after an action ("find the teddy bear, oscar
     can't sleep without it"): a name no verb, preposition or determiner governs, right before one of
     :data:`_SAYS`, up to the next verb said as a command or a joiner."""
-    out: list[Chunk] = []
-    skipping = False
-    for i, chunk in enumerate(chunks):
-        nxt = chunks[i + 1] if i + 1 < len(chunks) else None
-        if (
-            chunk.kind == "entity"
-            and nxt is not None
-            and nxt.kind == "unknown"
-            and nxt.text in _SAYS
-            and any(c.kind == "verb" for c in out)
-            and out[-1].kind not in _GOVERNING
-        ):
-            skipping = True
-        elif skipping and (chunk.kind == "join" or (chunk.kind == "verb" and not chunk.soft)):
-            skipping = False
-        if not skipping:
-            out.append(chunk)
-    return out
+
+    def starts(out: list[Chunk], chunk: Chunk, nxt: Chunk | None) -> bool:
+        saying = chunk.kind == "entity" and nxt is not None and nxt.kind == "unknown" and nxt.text in _SAYS
+        return saying and any(c.kind == "verb" for c in out) and out[-1].kind not in _GOVERNING
+
+    return _talk_dropped(chunks, starts)
