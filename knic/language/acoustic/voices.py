@@ -127,7 +127,12 @@ def other_engine_wav(text: str, voice: str, stretch: float, raw: Path) -> None:
         raise ValueError(f"unknown engine in voice {voice!r}: expected flite:NAME or festival:NAME")
 
 
-#: Name prefix of the random speakers' espeak-ng variants (:func:`random_speakers`).
+#: Name prefix of the random speakers' espeak-ng variants (:func:`random_speakers`). Made-up speakers were
+#: meant to make the adaptation hear unheard espeak-ng variants better. Tried on 28 Nov 2026 (``build
+#: --random-speakers 0.5``, 200 speakers, otherwise the shipped build), as the ``auto`` ensemble's first
+#: member, frame+args on the spoken dev sets: speech_people/dev 0.922 -> 0.887, speech_voices_dev 0.869 ->
+#: 0.857, speech_people2/dev 0.800 -> 0.756, other engines' voices unchanged; as a third member 0.875 ->
+#: 0.877 overall at a third more CPU. The shipped adaptation does not use them.
 RANDOM_SPEAKER_PREFIX = "knic_speaker_"
 #: Ranges of the random speakers' parameters, about those the adaptation's own variants (:data:`VARIANTS`)
 #: span: voice pitch base and range (Hz-like espeak-ng units) by gender, a vocal-tract scale of every formant
