@@ -36,6 +36,7 @@ def test_bench_language_prints_dev_and_test(capsys: pytest.CaptureFixture[str]) 
         "people5-dev",
         "people6-dev",
         "people7-dev",
+        "people8-dev",
     }
     for figures in data.values():
         assert 0.0 <= figures["accuracy"] <= 1.0 and figures["cases"] >= 40
