@@ -163,9 +163,12 @@ def split_clauses(
                 current.states.append(chunk.state)
                 continue
             subject = _subject(current) if chunk.beneficiary == "subject" else None
+            unnamed = chunk.beneficiary == "subject" and index > 0 and chunks[index - 1].kind == "unknown"
+            said = current.missing[-1:] if unnamed and subject is None else []
             current = Clause(chunk)
             if subject is not None:  # "tracy needs the remote": the remote is for tracy
                 current.args.append(Arg(subject.chunk, "beneficiary", "for", False))
+            current.missing.extend(said)  # "the kid wants the remote": no one the world knows
             clauses.append(current)
             filling = _Filling()
             continue

@@ -1,0 +1,45 @@
+"""Phrasings found with the eighth blind set (people8): someone the world has no name for said before "wants"
+or "needs" ("the kid wants the remote") is refused naming them, not served to the speaker."""
+
+from __future__ import annotations
+
+import pytest
+
+from knic.language import understand
+from knic.language.vocabulary import Vocabulary
+
+
+@pytest.mark.parametrize(
+    ("text", "word"),
+    [
+        ("the kid wants the remote", "kid"),
+        ("my husband would like the remote", "husband"),
+        ("my neighbour needs a glass of water", "neighbour"),
+    ],
+)
+def test_someone_unknown_who_wants_something_is_refused(vocabulary: Vocabulary, text: str, word: str) -> None:
+    result = understand(text, vocabulary)
+    assert not result.accepted and word in result.reason
+
+
+def test_someone_unknown_who_wants_something_is_refused_in_the_other_house(other_house: Vocabulary) -> None:
+    result = understand("my son needs his blanket", other_house, speaker="maria")
+    assert not result.accepted and "son" in result.reason
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        ("tracy wants the remote", [{"frame": "BRINGING", "theme": "remote", "beneficiary": "tracy"}]),
+        (
+            "bring me the remote, the kid wants it",
+            [{"frame": "BRINGING", "theme": "remote", "beneficiary": "me"}],
+        ),
+    ],
+)
+def test_someone_known_who_wants_something_is_served(
+    vocabulary: Vocabulary, text: str, frames: list[dict[str, str]]
+) -> None:
+    result = understand(text, vocabulary)
+    assert result.accepted, result.reason
+    assert [f.to_dict() for f in result.frames] == frames
