@@ -183,12 +183,15 @@ def split_clauses(
         and bare_verb is not None
         and not preamble.unknown
         and not preamble.states
+        and not (len(chunks) > 1 and chunks[0].kind == "entity" and chunks[1].kind == "det")
         and (
             preamble.missing
             or any(a.chunk.kind == "everything" or names_item(a.chunk) for a in preamble.args)
         )
     ):
-        preamble.verb = bare_verb  # "the remote please": a request for it
+        # "the remote please": a request for it; a name said right before a determiner is a verb the robot
+        # does not know ("water the plant")
+        preamble.verb = bare_verb
         clauses.append(preamble)
     elif context is not None:
         context.extend(preamble.args)

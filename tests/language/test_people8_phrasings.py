@@ -1,5 +1,7 @@
 """Phrasings found with the eighth blind set (people8): someone the world has no name for said before "wants"
-or "needs" ("the kid wants the remote") is refused naming them, not served to the speaker."""
+or "needs" ("the kid wants the remote") is refused naming them, not served to the speaker; a thing's name
+opening a command right before a determiner is a verb the robot does not know ("water the plant"), not a
+request for the thing."""
 
 from __future__ import annotations
 
@@ -38,6 +40,28 @@ def test_someone_unknown_who_wants_something_is_refused_in_the_other_house(other
     ],
 )
 def test_someone_known_who_wants_something_is_served(
+    vocabulary: Vocabulary, text: str, frames: list[dict[str, str]]
+) -> None:
+    result = understand(text, vocabulary)
+    assert result.accepted, result.reason
+    assert [f.to_dict() for f in result.frames] == frames
+
+
+@pytest.mark.parametrize("text", ["water the plant", "please water my plant", "juice the lemon"])
+def test_a_name_used_as_a_verb_is_no_request_for_it(vocabulary: Vocabulary, text: str) -> None:
+    result = understand(text, vocabulary)
+    assert not result.accepted and not result.frames
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        ("water please", [{"frame": "BRINGING", "theme": "water", "beneficiary": "me"}]),
+        ("water for tracy", [{"frame": "BRINGING", "theme": "water", "beneficiary": "tracy"}]),
+        ("the remote please", [{"frame": "BRINGING", "theme": "remote", "beneficiary": "me"}]),
+    ],
+)
+def test_a_name_alone_is_still_a_request_for_it(
     vocabulary: Vocabulary, text: str, frames: list[dict[str, str]]
 ) -> None:
     result = understand(text, vocabulary)
