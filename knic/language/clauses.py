@@ -67,6 +67,21 @@ class _Filling:
     joined: bool = False
     expecting: bool = False  # a noun phrase is expected (after a determiner or a preposition)
     quantity: Chunk | None = None
+    after_prep: bool = False  # the chunk just before was a preposition
+
+
+def _purpose(clause: Clause, chunk: Chunk, nxt: Chunk | None, filling: _Filling) -> bool:
+    """Whether ``chunk`` is a word the world lacks said right after "for" at the end of an action whose
+    person is already said ("bring me the remote for once", "get me an apple for breakfast"): what for, not
+    for whom."""
+    return (
+        chunk.kind == "unknown"
+        and filling.after_prep
+        and filling.prep is not None
+        and filling.prep.role == "beneficiary"
+        and (nxt is None or nxt.kind in ("join", "verb"))
+        and any(a.chunk.kind == "me" or a.prep == "beneficiary" for a in clause.args)
+    )
 
 
 #: determiners that make a thing the speaker's own
@@ -245,6 +260,11 @@ def _fill(
         return  # "find the cup, it should be in the kitchen": the pronoun is the object just named
     if chunk.kind == "me" and chunk.role == "here" and filling.prep is None:
         filling.prep = Chunk("prep", "to", role="goal")  # "bring it here": to me
+    if _purpose(clause, chunk, nxt, filling):
+        clause.unknown.append(chunk.text)  # talk: refused only if the action names nothing else
+        filling.prep, filling.expecting, filling.after_prep = None, False, False
+        return
+    filling.after_prep = chunk.kind == "prep"
     quantity = filling.quantity.role if filling.quantity is not None and chunk.kind == "entity" else None
     if quantity is None and chunk.kind == "entity" and chunk.role == "plural":
         quantity = "all"  # "turn on the lamps": every lamp

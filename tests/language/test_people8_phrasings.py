@@ -1,7 +1,8 @@
 """Phrasings found with the eighth blind set (people8): someone the world has no name for said before "wants"
 or "needs" ("the kid wants the remote") is refused naming them, not served to the speaker; a thing's name
 opening a command right before a determiner is a verb the robot does not know ("water the plant"), not a
-request for the thing."""
+request for the thing; a word the world lacks said right after "for" at the end of an action whose person is
+already said is what for, not for whom ("bring me the remote for once", "get me an apple for breakfast")."""
 
 from __future__ import annotations
 
@@ -67,3 +68,38 @@ def test_a_name_alone_is_still_a_request_for_it(
     result = understand(text, vocabulary)
     assert result.accepted, result.reason
     assert [f.to_dict() for f in result.frames] == frames
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        ("bring me the remote for once", [{"frame": "BRINGING", "theme": "remote", "beneficiary": "me"}]),
+        ("get me an apple for breakfast", [{"frame": "BRINGING", "theme": "apple", "beneficiary": "me"}]),
+        (
+            "bring me water for later and then go to the kitchen",
+            [
+                {"frame": "BRINGING", "theme": "water", "beneficiary": "me"},
+                {"frame": "MOTION", "goal": "kitchen"},
+            ],
+        ),
+    ],
+)
+def test_what_for_after_the_person_is_talk(
+    vocabulary: Vocabulary, text: str, frames: list[dict[str, str]]
+) -> None:
+    result = understand(text, vocabulary)
+    assert result.accepted, result.reason
+    assert [f.to_dict() for f in result.frames] == frames
+
+
+@pytest.mark.parametrize(
+    ("text", "word"),
+    [
+        ("bring the mug for grandpa", "grandpa"),
+        ("bring me the mug for my husband", "husband"),
+        ("bring me for once", "once"),
+    ],
+)
+def test_for_someone_unknown_is_still_refused(vocabulary: Vocabulary, text: str, word: str) -> None:
+    result = understand(text, vocabulary)
+    assert not result.accepted and word in result.reason
