@@ -2,7 +2,8 @@
 or "needs" ("the kid wants the remote") is refused naming them, not served to the speaker; a thing's name
 opening a command right before a determiner is a verb the robot does not know ("water the plant"), not a
 request for the thing; a word the world lacks said right after "for" at the end of an action whose person is
-already said is what for, not for whom ("bring me the remote for once", "get me an apple for breakfast")."""
+already said is what for, not for whom ("bring me the remote for once", "get me an apple for breakfast");
+"brighten the living room" asks how far, as "make the living room brighter" does."""
 
 from __future__ import annotations
 
@@ -103,3 +104,21 @@ def test_what_for_after_the_person_is_talk(
 def test_for_someone_unknown_is_still_refused(vocabulary: Vocabulary, text: str, word: str) -> None:
     result = understand(text, vocabulary)
     assert not result.accepted and word in result.reason
+
+
+@pytest.mark.parametrize(
+    "text",
+    ["brighten the living room", "could you brighten up the living room", "darken the living room a bit"],
+)
+def test_brightening_a_room_asks_how_far(vocabulary: Vocabulary, text: str) -> None:
+    result = understand(text, vocabulary)
+    assert not result.accepted and "dimmer" in result.question
+
+
+def test_brightening_to_a_level_sets_it(vocabulary: Vocabulary, other_house: Vocabulary) -> None:
+    result = understand("brighten the living room to 80", vocabulary)
+    assert [f.to_dict() for f in result.frames] == [
+        {"frame": "OPERATING", "device": "living_room_dimmer", "state": "80"}
+    ]
+    result = understand("brighten the lounge please", other_house, speaker="maria")
+    assert not result.accepted and "lounge dimmer" in result.question
