@@ -254,8 +254,10 @@ def _operating(reader: Resolver, clause: Clause, previous: Frames, groups: list[
             continue
         if arg.chunk.kind == "entity" and not any(reader.is_a(t, "device") for t in arg.chunk.terms):
             rooms = [t for t in arg.chunk.terms if reader.is_a(t, "room")]
-            own = reader.levelled_in(rooms) if clause.levels or clause.vague else []
-            if arg.prep is None and len(own) == 1:  # "dim the lounge to 40": the room's only dimmer
+            # "dim the lounge to 40": the room's only dimmer; "dim the lounge": how far is then asked
+            stateless = not clause.states and (clause.verb is None or clause.verb.state is None)
+            own = reader.levelled_in(rooms) if clause.levels or clause.vague or stateless else []
+            if arg.prep is None and len(own) == 1:
                 devices += own
             elif arg.prep is None:
                 raise LanguageError(f"'{arg.chunk.text}' is not a device I can operate")
@@ -281,6 +283,8 @@ def _operating(reader: Resolver, clause: Clause, previous: Frames, groups: list[
     if state in _LIGHT_STATES and lights:
         state = _LIGHT_STATES[state]  # "open the left light": switch it on
     if state is None and clause.verb is None:  # "the lights please"
+        _ask_level(reader.vocabulary, list(dict.fromkeys(devices)))
+    if state is None and not lights:  # "dim the lounge", "set the dimmer": how far
         _ask_level(reader.vocabulary, list(dict.fromkeys(devices)))
     if state is None:
         named = " and the ".join(reader.vocabulary.phrase_of(d) for d in devices)

@@ -3,7 +3,9 @@ or "needs" ("the kid wants the remote") is refused naming them, not served to th
 opening a command right before a determiner is a verb the robot does not know ("water the plant"), not a
 request for the thing; a word the world lacks said right after "for" at the end of an action whose person is
 already said is what for, not for whom ("bring me the remote for once", "get me an apple for breakfast");
-"brighten the living room" asks how far, as "make the living room brighter" does."""
+"brighten the living room" asks how far, as "make the living room brighter" does, and so does a dimmer or
+blinds, or a room with one of them, operated without a state or level ("dim the living room", "set the
+blinds")."""
 
 from __future__ import annotations
 
@@ -122,3 +124,28 @@ def test_brightening_to_a_level_sets_it(vocabulary: Vocabulary, other_house: Voc
     ]
     result = understand("brighten the lounge please", other_house, speaker="maria")
     assert not result.accepted and "lounge dimmer" in result.question
+
+
+@pytest.mark.parametrize(
+    ("text", "device"),
+    [("dim the living room", "dimmer"), ("dim the dimmer", "dimmer"), ("set the blinds", "blinds")],
+)
+def test_a_dimmer_or_blinds_without_a_level_asks_how_far(
+    vocabulary: Vocabulary, text: str, device: str
+) -> None:
+    result = understand(text, vocabulary)
+    assert not result.accepted and device in result.question and "how far" in result.question.lower()
+
+
+def test_a_room_dimmed_to_a_level_is_its_dimmer(other_house: Vocabulary) -> None:
+    result = understand("dim the lounge to 30", other_house, speaker="maria")
+    assert [f.to_dict() for f in result.frames] == [
+        {"frame": "OPERATING", "device": "lounge_dimmer", "state": "30"}
+    ]
+    result = understand("dim the lounge", other_house, speaker="maria")
+    assert not result.accepted and "lounge dimmer" in result.question
+
+
+def test_lights_without_a_state_are_still_refused(vocabulary: Vocabulary) -> None:
+    result = understand("dim the lights", vocabulary)
+    assert not result.accepted and not result.question
