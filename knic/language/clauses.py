@@ -96,6 +96,14 @@ def _subject(clause: Clause) -> Arg | None:
     return None
 
 
+def _before_verb(chunks: list[Chunk], index: int) -> list[Chunk]:
+    """The chunk said right before the verb at ``index``, past a bare "to" ("help me to find it")."""
+    before = chunks[max(index - 2, 0) : index]
+    if len(before) == 2 and before[1].kind == "prep" and before[1].text == "to":
+        return before[:1]
+    return before[-1:]
+
+
 def split_clauses(
     chunks: list[Chunk],
     names_device: Callable[[Chunk], bool],
@@ -158,10 +166,14 @@ def split_clauses(
             if (
                 current.verb is not None
                 and current.verb.frames == ("ACCOMPANYING",)
-                and [a.chunk.kind for a in current.args] == ["me"]
+                and len(current.args) == 1
+                and current.args[0].prep is None
+                and current.args[0].chunk in _before_verb(chunks, index)
+                and current.args[0].chunk.kind in ("me", "entity")
                 and not current.states
             ):
-                current.verb, current.args = chunk, []  # "help me find my glasses": the second verb
+                # "help me find my glasses", "help oscar find his teddy bear": the second verb
+                current.verb, current.args, filling = chunk, [], _Filling()
                 continue
             if (
                 chunk.state

@@ -164,9 +164,11 @@ def _searching(reader: Resolver, clause: Clause, previous: Frames, groups: list[
     ground: str | None = None
     # "check the kitchen for the lemon": the thing looked for after "for", the place said bare
     sought = any(a.prep == "beneficiary" and a.chunk.kind != "me" for a in args)
-    for arg in args:
+    for index, arg in enumerate(args):
         if arg.consumed:
             continue
+        if arg.chunk.kind == "me" and arg.prep is None and any(a.prep is None for a in args[index + 1 :]):
+            continue  # "find me the stapler": for the speaker, not the speaker sought
         if arg.prep is None and sought and _names_only_places(reader, arg):
             ground = reader.resolve(arg, ("room", "furniture"), previous, groups)[0]
         elif arg.prep is None or (arg.prep == "beneficiary" and arg.chunk.kind != "me"):

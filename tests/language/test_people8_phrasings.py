@@ -5,7 +5,8 @@ request for the thing; a word the world lacks said right after "for" at the end 
 already said is what for, not for whom ("bring me the remote for once", "get me an apple for breakfast");
 "brighten the living room" asks how far, as "make the living room brighter" does, and so does a dimmer or
 blinds, or a room with one of them, operated without a state or level ("dim the living room", "set the
-blinds")."""
+blinds"); "find me the stapler" looks for the stapler, not the speaker; "follow me to the study" goes there;
+"help oscar find his teddy bear" (or "help me to find ...") is the search."""
 
 from __future__ import annotations
 
@@ -149,3 +150,38 @@ def test_a_room_dimmed_to_a_level_is_its_dimmer(other_house: Vocabulary) -> None
 def test_lights_without_a_state_are_still_refused(vocabulary: Vocabulary) -> None:
     result = understand("dim the lights", vocabulary)
     assert not result.accepted and not result.question
+
+
+READ_IN_THE_OTHER_HOUSE = [
+    ("find me the stapler", [{"frame": "SEARCHING", "theme": "stapler"}]),
+    ("follow me to the study", [{"frame": "MOTION", "goal": "study"}]),
+    ("help oscar find his teddy bear", [{"frame": "SEARCHING", "theme": "teddy_bear"}]),
+    ("please help oscar look for his keys", [{"frame": "SEARCHING", "theme": "keys"}]),
+]
+
+READ = [
+    ("come find me", [{"frame": "SEARCHING", "theme": "me"}]),
+    (
+        "can you find me the tissues in the bathroom",
+        [{"frame": "SEARCHING", "theme": "tissues", "ground": "bathroom"}],
+    ),
+    ("help me to find my glasses", [{"frame": "SEARCHING", "theme": "glasses"}]),
+    ("help tracy to the kitchen", [{"frame": "ACCOMPANYING", "theme": "tracy", "goal": "kitchen"}]),
+    ("follow me into the kitchen please", [{"frame": "MOTION", "goal": "kitchen"}]),
+]
+
+
+@pytest.mark.parametrize(("text", "frames"), READ_IN_THE_OTHER_HOUSE)
+def test_read_as_meant_in_the_other_house(
+    other_house: Vocabulary, text: str, frames: list[dict[str, str]]
+) -> None:
+    result = understand(text, other_house, speaker="maria")
+    assert result.accepted, result.reason
+    assert [f.to_dict() for f in result.frames] == frames
+
+
+@pytest.mark.parametrize(("text", "frames"), READ)
+def test_read_as_meant(vocabulary: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
+    result = understand(text, vocabulary)
+    assert result.accepted, result.reason
+    assert [f.to_dict() for f in result.frames] == frames
