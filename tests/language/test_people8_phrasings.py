@@ -6,7 +6,8 @@ already said is what for, not for whom ("bring me the remote for once", "get me 
 "brighten the living room" asks how far, as "make the living room brighter" does, and so does a dimmer or
 blinds, or a room with one of them, operated without a state or level ("dim the living room", "set the
 blinds"); "find me the stapler" looks for the stapler, not the speaker; "follow me to the study" goes there;
-"help oscar find his teddy bear" (or "help me to find ...") is the search."""
+"help oscar find his teddy bear" (or "help me to find ...") is the search; "never mind", "on second thought",
+"forget that" correct what was said before."""
 
 from __future__ import annotations
 
@@ -168,6 +169,15 @@ READ = [
     ("help me to find my glasses", [{"frame": "SEARCHING", "theme": "glasses"}]),
     ("help tracy to the kitchen", [{"frame": "ACCOMPANYING", "theme": "tracy", "goal": "kitchen"}]),
     ("follow me into the kitchen please", [{"frame": "MOTION", "goal": "kitchen"}]),
+    ("go to the bathroom. never mind, go to the kitchen", [{"frame": "MOTION", "goal": "kitchen"}]),
+    (
+        "bring me the mug. on second thought, the glass",
+        [{"frame": "BRINGING", "theme": "glass", "beneficiary": "me"}],
+    ),
+    (
+        "bring me the juice, forget that, bring me the water",
+        [{"frame": "BRINGING", "theme": "water", "beneficiary": "me"}],
+    ),
 ]
 
 
