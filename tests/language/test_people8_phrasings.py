@@ -7,7 +7,8 @@ already said is what for, not for whom ("bring me the remote for once", "get me 
 blinds, or a room with one of them, operated without a state or level ("dim the living room", "set the
 blinds"); "find me the stapler" looks for the stapler, not the speaker; "follow me to the study" goes there;
 "help oscar find his teddy bear" (or "help me to find ...") is the search; "never mind", "on second thought",
-"forget that" correct what was said before."""
+"forget that" correct what was said before; "need water", "want juice" opening a command are the speaker's
+"i need", "i want"."""
 
 from __future__ import annotations
 
@@ -178,6 +179,10 @@ READ = [
         "bring me the juice, forget that, bring me the water",
         [{"frame": "BRINGING", "theme": "water", "beneficiary": "me"}],
     ),
+    ("need water", [{"frame": "BRINGING", "theme": "water", "beneficiary": "me"}]),
+    ("want juice", [{"frame": "BRINGING", "theme": "juice", "beneficiary": "me"}]),
+    ("need the tissues, quick", [{"frame": "BRINGING", "theme": "tissues", "beneficiary": "me"}]),
+    ("need the blinds closed", [{"frame": "OPERATING", "device": "bedroom_blinds", "state": "closed"}]),
 ]
 
 
@@ -195,3 +200,8 @@ def test_read_as_meant(vocabulary: Vocabulary, text: str, frames: list[dict[str,
     result = understand(text, vocabulary)
     assert result.accepted, result.reason
     assert [f.to_dict() for f in result.frames] == frames
+
+
+@pytest.mark.parametrize("text", ["i don't need the remote anymore", "do you need anything"])
+def test_need_inside_a_sentence_is_no_request(vocabulary: Vocabulary, text: str) -> None:
+    assert not understand(text, vocabulary).accepted
