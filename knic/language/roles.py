@@ -175,6 +175,8 @@ def _searching(reader: Resolver, clause: Clause, previous: Frames, groups: list[
             themes += reader.resolve(arg, ("item", "person"), previous, groups)
         elif arg.prep in ("place", "source"):
             ground = reader.resolve(arg, ("room", "furniture"), previous, groups)[0]
+    if not themes and clause.unknown:  # "go find mommy": someone the world has no name for
+        raise LanguageError(f"there is no '{clause.unknown[0]}' here: this world has nothing called that")
     if not themes:
         raise LanguageError(f"{_verb(clause)} what? I heard no object or person of this world")
     extra = {"ground": ground} if ground else {}

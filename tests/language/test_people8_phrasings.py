@@ -8,7 +8,7 @@ blinds, or a room with one of them, operated without a state or level ("dim the 
 blinds"); "find me the stapler" looks for the stapler, not the speaker; "follow me to the study" goes there;
 "help oscar find his teddy bear" (or "help me to find ...") is the search; "never mind", "on second thought",
 "forget that" correct what was said before; "need water", "want juice" opening a command are the speaker's
-"i need", "i want"."""
+"i need", "i want"; a search for someone the world has no name for ("go find mommy") names them."""
 
 from __future__ import annotations
 
@@ -205,3 +205,8 @@ def test_read_as_meant(vocabulary: Vocabulary, text: str, frames: list[dict[str,
 @pytest.mark.parametrize("text", ["i don't need the remote anymore", "do you need anything"])
 def test_need_inside_a_sentence_is_no_request(vocabulary: Vocabulary, text: str) -> None:
     assert not understand(text, vocabulary).accepted
+
+
+def test_a_search_for_someone_unknown_names_them(vocabulary: Vocabulary) -> None:
+    result = understand("robot go find mommy", vocabulary)
+    assert not result.accepted and "mommy" in result.reason
