@@ -36,3 +36,12 @@ def other_house() -> Vocabulary:
     from knic.bench.language import OTHER_WORLD
 
     return read_vocabulary(problem=OTHER_WORLD)
+
+
+def frames_read(vocabulary: Vocabulary, text: str, speaker: str = "annie") -> list[dict[str, str]]:
+    """The frames ``text`` is read as (as data), asserting that it is accepted."""
+    from knic.language import understand
+
+    result = understand(text, vocabulary, speaker=speaker)
+    assert result.accepted, result.reason
+    return [frame.to_dict() for frame in result.frames]

@@ -14,6 +14,8 @@ import pytest
 from knic.language import understand
 from knic.language.vocabulary import Vocabulary
 
+from .conftest import frames_read
+
 READ = [
     ("go to tracy", [{"frame": "MOTION", "goal": "tracy"}]),
     (
@@ -76,18 +78,14 @@ READ_IN_THE_OTHER_HOUSE = [
 
 @pytest.mark.parametrize(("text", "frames"), READ)
 def test_read_as_meant(vocabulary: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
-    result = understand(text, vocabulary)
-    assert result.accepted, result.reason
-    assert [f.to_dict() for f in result.frames] == frames
+    assert frames_read(vocabulary, text) == frames
 
 
 @pytest.mark.parametrize(("text", "frames"), READ_IN_THE_OTHER_HOUSE)
 def test_read_as_meant_in_the_other_house(
     other_house: Vocabulary, text: str, frames: list[dict[str, str]]
 ) -> None:
-    result = understand(text, other_house, speaker="maria")
-    assert result.accepted, result.reason
-    assert [f.to_dict() for f in result.frames] == frames
+    assert frames_read(other_house, text, "maria") == frames
 
 
 def test_going_to_a_person_seeks_them_out(vocabulary: Vocabulary) -> None:

@@ -13,6 +13,8 @@ import pytest
 from knic.language import understand
 from knic.language.vocabulary import Vocabulary
 
+from .conftest import frames_read
+
 READ = [
     ("bring the tablet 2 tracy pls", [{"frame": "BRINGING", "theme": "tablet", "beneficiary": "tracy"}]),
     ("take the cup 2 the kitchen", [{"frame": "BRINGING", "theme": "cup", "goal": "kitchen"}]),
@@ -60,18 +62,14 @@ READ_IN_THE_OTHER_HOUSE = [
 
 @pytest.mark.parametrize(("text", "frames"), READ)
 def test_read_as_meant(vocabulary: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
-    result = understand(text, vocabulary)
-    assert result.accepted, result.reason
-    assert [f.to_dict() for f in result.frames] == frames
+    assert frames_read(vocabulary, text) == frames
 
 
 @pytest.mark.parametrize(("text", "frames"), READ_IN_THE_OTHER_HOUSE)
 def test_read_as_meant_in_the_other_house(
     other_house: Vocabulary, text: str, frames: list[dict[str, str]]
 ) -> None:
-    result = understand(text, other_house, speaker="maria")
-    assert result.accepted, result.reason
-    assert [f.to_dict() for f in result.frames] == frames
+    assert frames_read(other_house, text, "maria") == frames
 
 
 @pytest.mark.parametrize("text", ["make the living room a bit brighter", "make the dimmer darker"])

@@ -17,6 +17,8 @@ import pytest
 from knic.language import understand
 from knic.language.vocabulary import Vocabulary
 
+from .conftest import frames_read
+
 
 @pytest.mark.parametrize(
     ("text", "word"),
@@ -49,9 +51,7 @@ def test_someone_unknown_who_wants_something_is_refused_in_the_other_house(other
 def test_someone_known_who_wants_something_is_served(
     vocabulary: Vocabulary, text: str, frames: list[dict[str, str]]
 ) -> None:
-    result = understand(text, vocabulary)
-    assert result.accepted, result.reason
-    assert [f.to_dict() for f in result.frames] == frames
+    assert frames_read(vocabulary, text) == frames
 
 
 @pytest.mark.parametrize("text", ["water the plant", "please water my plant", "juice the lemon"])
@@ -71,9 +71,7 @@ def test_a_name_used_as_a_verb_is_no_request_for_it(vocabulary: Vocabulary, text
 def test_a_name_alone_is_still_a_request_for_it(
     vocabulary: Vocabulary, text: str, frames: list[dict[str, str]]
 ) -> None:
-    result = understand(text, vocabulary)
-    assert result.accepted, result.reason
-    assert [f.to_dict() for f in result.frames] == frames
+    assert frames_read(vocabulary, text) == frames
 
 
 @pytest.mark.parametrize(
@@ -93,9 +91,7 @@ def test_a_name_alone_is_still_a_request_for_it(
 def test_what_for_after_the_person_is_talk(
     vocabulary: Vocabulary, text: str, frames: list[dict[str, str]]
 ) -> None:
-    result = understand(text, vocabulary)
-    assert result.accepted, result.reason
-    assert [f.to_dict() for f in result.frames] == frames
+    assert frames_read(vocabulary, text) == frames
 
 
 @pytest.mark.parametrize(
@@ -190,16 +186,12 @@ READ = [
 def test_read_as_meant_in_the_other_house(
     other_house: Vocabulary, text: str, frames: list[dict[str, str]]
 ) -> None:
-    result = understand(text, other_house, speaker="maria")
-    assert result.accepted, result.reason
-    assert [f.to_dict() for f in result.frames] == frames
+    assert frames_read(other_house, text, "maria") == frames
 
 
 @pytest.mark.parametrize(("text", "frames"), READ)
 def test_read_as_meant(vocabulary: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
-    result = understand(text, vocabulary)
-    assert result.accepted, result.reason
-    assert [f.to_dict() for f in result.frames] == frames
+    assert frames_read(vocabulary, text) == frames
 
 
 @pytest.mark.parametrize("text", ["i don't need the remote anymore", "do you need anything"])

@@ -11,6 +11,8 @@ import pytest
 from knic.language import understand
 from knic.language.vocabulary import Vocabulary
 
+from .conftest import frames_read
+
 READ = [
     ("goto bathroom", [{"frame": "MOTION", "goal": "bathroom"}]),
     (
@@ -95,16 +97,12 @@ READ_IN_THE_OTHER_HOUSE = [
 def test_read_as_meant_in_the_other_house(
     other_house: Vocabulary, text: str, frames: list[dict[str, str]]
 ) -> None:
-    result = understand(text, other_house, speaker="maria")
-    assert result.accepted, result.reason
-    assert [f.to_dict() for f in result.frames] == frames
+    assert frames_read(other_house, text, "maria") == frames
 
 
 @pytest.mark.parametrize(("text", "frames"), READ)
 def test_read_as_meant(vocabulary: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
-    result = understand(text, vocabulary)
-    assert result.accepted, result.reason
-    assert [f.to_dict() for f in result.frames] == frames
+    assert frames_read(vocabulary, text) == frames
 
 
 def test_a_blunt_verb_of_a_thing_the_world_lacks_names_it(vocabulary: Vocabulary) -> None:
