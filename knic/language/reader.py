@@ -68,6 +68,10 @@ class Reader:
         self.vocabulary = vocabulary
         self.language = language or command_language()
         self.chunker = Chunker(vocabulary, self.language)
+        # what makes a typed digit a number, not a word it sounds like ("to 2 percent", not "to to percent")
+        self._units = frozenset(p.split()[0] for p in self.language.percent)
+        level_words = self.language.prepositions.get("level", ())
+        self._before_numbers = frozenset(p.split()[-1] for p in level_words) | {"to", "at"}
 
     def chunks(self, tokens: Sequence[str]) -> list[Chunk]:
         """The chunks of a normalised token list (see :class:`~knic.language.chunks.Chunker`)."""
@@ -93,7 +97,10 @@ class Reader:
             AmbiguityError: a name fits several things (the message asks which).
             LanguageError: the command is not understood (the message says what is missing or unknown).
         """
-        text = digits_read(text, self.language.digit_words, self.language.typed_words)
+        language = self.language
+        text = digits_read(
+            text, language.digit_words, language.typed_words, self._units, self._before_numbers
+        )
         segments = [
             spelled(normalize(part).split(), self.language.spellings) for part in SEGMENT_END.split(text)
         ]

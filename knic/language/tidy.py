@@ -98,21 +98,29 @@ def spelled(tokens: list[str], spellings: Mapping[str, str]) -> list[str]:
     return [word for token in tokens for word in spellings.get(token, token).split()]
 
 
-def digits_read(text: str, digit_words: Mapping[str, str], typed: Mapping[str, str]) -> str:
+def digits_read(
+    text: str,
+    digit_words: Mapping[str, str],
+    typed: Mapping[str, str],
+    units: Collection[str] = (),
+    before_numbers: Collection[str] = (),
+) -> str:
     """Digits typed for the word they sound like as that word ("bring it 2 tracy": to;
-    :attr:`CommandLanguage.digit_words`), before numbers are spelled out, unless what follows is counted
-    ("2 apples", "2 of them") or nothing follows; typed signs as their words ("3/4": three quarters;
-    :attr:`CommandLanguage.typed_words`)."""
+    :attr:`CommandLanguage.digit_words`), before numbers are spelled out, unless they are a number: what
+    follows is counted ("2 apples", "2 of them") or one of ``units`` ("2 percent", "4 %"), the word before is
+    one of ``before_numbers`` ("to 2", "at 4"), or nothing follows; typed signs as their words ("3/4": three
+    quarters; :attr:`CommandLanguage.typed_words`)."""
     tokens = text.split()
     for i, token in enumerate(tokens):
         bare = token.strip(".,;:!?")
         if bare in typed:
             tokens[i] = token.replace(bare, typed[bare])
-        elif (
-            i + 1 < len(tokens)
-            and token in digit_words
-            and not _counted(tokens[i + 1].lower().strip(".,;:!?"))
-        ):
+            continue
+        if token not in digit_words or i + 1 == len(tokens):
+            continue
+        after = tokens[i + 1].lower().strip(".,;:!?")
+        before = tokens[i - 1].lower().strip(".,;:!?") if i else ""
+        if not (_counted(after) or after in units or before in before_numbers):
             tokens[i] = digit_words[token]
     return " ".join(tokens)
 

@@ -94,3 +94,13 @@ def test_someone_the_world_has_no_name_for_is_refused(vocabulary: Vocabulary, te
 def test_talk_without_an_action_is_still_no_action(vocabulary: Vocabulary) -> None:
     result = understand("this concludes the test", vocabulary)
     assert not result.accepted and "no action" in result.reason
+
+
+@pytest.mark.parametrize(
+    ("text", "level"),
+    [("set the living room dimmer to 2 percent", "2"), ("put the blinds at 2 please", "2")],
+)
+def test_a_typed_digit_after_a_level_word_or_before_percent_is_a_number(
+    vocabulary: Vocabulary, text: str, level: str
+) -> None:
+    assert [f.get("state") for f in understand(text, vocabulary).frames] == [level]
