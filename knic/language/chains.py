@@ -30,6 +30,11 @@ class Reading:
     waypoints: set[int] = field(default_factory=set)  # indices of MOTION frames whose place went on
 
 
+#: the roles a pronoun can refer back to: a thing, whom it was for, or a person gone to ("go to tracy and give
+#: her the mug")
+_REFERRED_ROLES = ("theme", "beneficiary", "goal")
+
+
 def referent(
     chunk: Chunk,
     categories: Sequence[str],
@@ -48,11 +53,7 @@ def referent(
     for group in reversed(groups):
         found: list[str] = []
         for frame in group:
-            for role in (
-                "theme",
-                "beneficiary",
-                "goal",
-            ):  # "go to tracy and give her the mug": a person gone to
+            for role in _REFERRED_ROLES:
                 value = frame.get(role)
                 if value is None or value == SPEAKER:
                     continue

@@ -151,10 +151,10 @@ def _frame_goals(frame: CommandFrame, vocabulary: Vocabulary, speaker: str, note
     if kind in ("BRINGING", "PLACING"):
         theme = need("theme")
         sourced = _sourced(frame, vocabulary, theme)
-        handed = frame.get("beneficiary") not in (None, SPEAKER) and _is(
-            vocabulary, frame.get("goal") or "", "room"
-        )
-        if frame.get("goal") is not None and not handed:  # "to granny in the living room": handed to her
+        # "to granny in the living room": handed to her where she is, not left in the room
+        person, room = frame.get("beneficiary"), frame.get("goal") or ""
+        handed = person not in (None, SPEAKER) and _is(vocabulary, room, "room")
+        if frame.get("goal") is not None and not handed:
             place = need("goal")
             if _is(vocabulary, place, "furniture"):
                 return [*sourced, Fact("object_on", (theme, place))]
@@ -172,9 +172,8 @@ def _frame_goals(frame: CommandFrame, vocabulary: Vocabulary, speaker: str, note
     if kind == "MOTION":
         if vocabulary.robot is None:
             raise LanguageError("the world has no robot to move")
-        if _is(
-            vocabulary, need("goal"), "person"
-        ):  # "go to tracy": find where she is (the robot is then there)
+        # "go to tracy": find where she is (the robot is then there)
+        if _is(vocabulary, need("goal"), "person"):
             return [Fact("found", (need("goal"),))]
         return [Fact("robot_at", (vocabulary.robot, room_of(need("goal"), vocabulary)))]
     if kind == "ACCOMPANYING":

@@ -286,9 +286,8 @@ def _operating(reader: Resolver, clause: Clause, previous: Frames, groups: list[
     lights = all(reader.vocabulary.is_subtype(reader.vocabulary.type_of(m) or "", "light") for m in members)
     if state in _LIGHT_STATES and lights:
         state = _LIGHT_STATES[state]  # "open the left light": switch it on
-    if state is None and clause.verb is None:  # "the lights please"
-        _ask_level(reader.vocabulary, list(dict.fromkeys(devices)))
-    if state is None and not lights:  # "dim the lounge", "set the dimmer": how far
+    # "the lights please"; "dim the lounge", "set the dimmer": how far
+    if state is None and (clause.verb is None or not lights):
         _ask_level(reader.vocabulary, list(dict.fromkeys(devices)))
     if state is None:
         named = " and the ".join(reader.vocabulary.phrase_of(d) for d in devices)
