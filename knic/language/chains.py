@@ -140,6 +140,10 @@ def chain(
                 name = "you" if who == SPEAKER else vocabulary.phrase_of(who or "")
                 raise AmbiguityError(f"where should I take {name}: to which room?")
             dropped.add(index)  # "fetch tracy and bring her to the bedroom": the later action says where
+        # "where are my glasses? look in the kitchen": one search, where it is said
+        sought_again = any(f.kind == "SEARCHING" and f.get("theme") == frame.get("theme") for f in later)
+        if frame.kind == "SEARCHING" and frame.get("ground") is None and sought_again:
+            dropped.add(index)
     kept_frames: list[CommandFrame] = []
     for index, frame in enumerate(out):  # "tracy wants her mug, take it to her": said twice, done once
         if index in dropped:

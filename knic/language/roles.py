@@ -177,10 +177,21 @@ def _searching(reader: Resolver, clause: Clause, previous: Frames, groups: list[
             ground = reader.resolve(arg, ("room", "furniture"), previous, groups)[0]
     if not themes and clause.unknown:  # "go find mommy": someone the world has no name for
         raise LanguageError(f"there is no '{clause.unknown[0]}' here: this world has nothing called that")
+    if not themes:  # "where are my glasses? have a look by the sofa": what was just asked about
+        themes = _sought_just_before(groups)
     if not themes:
         raise LanguageError(f"{_verb(clause)} what? I heard no object or person of this world")
     extra = {"ground": ground} if ground else {}
     return [CommandFrame("SEARCHING", {"theme": t, **extra}) for t in dict.fromkeys(themes)]
+
+
+def _sought_just_before(groups: list[Frames]) -> list[str]:
+    """The things the latest group of frames looks for, when it only looks for things (a question such as
+    "where are my glasses", or things only mentioned: "the keys are in the garage, can you look")."""
+    latest = next((group for group in reversed(groups) if group), [])
+    if not latest or any(frame.kind != "SEARCHING" for frame in latest):
+        return []
+    return [str(frame.get("theme")) for frame in latest if frame.get("theme")]
 
 
 def _names_only_places(reader: Resolver, arg: Arg) -> bool:
