@@ -161,12 +161,14 @@ class Chunker:
             p for p, ts in self._full.items() if all(vocabulary.is_subtype(t.type, "person") for t in ts)
         }
         self._pronoun_words = {w for p in lang.pronouns for w in p.split()}
+        #: names, and last words of names, on their own ("kitchen", "tv stand", "table")
+        self._known_names = set(self._full) | set(self._partial)
 
     # ------------------------------------------------------------------ chunks
 
     def chunks(self, tokens: Sequence[str]) -> list[Chunk]:
         """The chunks of a normalised token list (fillers dropped)."""
-        tokens = self._apostrophes(tokens)
+        tokens = self._sides(self._apostrophes(tokens))
         lemmas = [self._lemma(t) for t in tokens]
         inflected = {i for i, (word, lemma) in enumerate(zip(tokens, lemmas, strict=True)) if word != lemma}
         tokens = lemmas
@@ -251,6 +253,25 @@ class Chunker:
                 out += [base, "is"]
         return out
 
+    def _sides(self, tokens: list[str]) -> list[str]:
+        """A thing told from the others by where it is, said after it ("the light on the right", "the table
+        on the side") where the world names it with that word first ("right light", "side table"): read as
+        that name. A place ("the mug on the left of the sofa") or a word that is itself a name stays."""
+        for i in range(1, len(tokens) - 2):
+            side = tokens[i + 2]
+            if tokens[i : i + 2] != ["on", "the"] or any(
+                " ".join(tokens[i + 2 : i + 2 + n]) in self._known_names for n in range(1, 4)
+            ):
+                continue
+            end = i + 3  # past "on the right", and "hand side" or "side" after it
+            end += next((len(w) for w in _SIDE_WORDS if tokens[end : end + len(w)] == w), 0)
+            if end < len(tokens) and tokens[end] == "of":
+                continue
+            for length in range(min(3, i), 0, -1):
+                if " ".join([side, *tokens[i - length : i]]) in self._full:
+                    return [*tokens[: i - length], side, *tokens[i - length : i], *tokens[end:]]
+        return tokens
+
     def _longest_verb_at(self, tokens: Sequence[str], i: int) -> int:
         """The length of the longest verb phrase at ``tokens[i:]`` (0: none)."""
         for length in range(min(self._longest, len(tokens) - i), 0, -1):
@@ -279,6 +300,8 @@ class Chunker:
         return word
 
 
+#: what may follow "on the left" before "of" makes it a place beside another ("on the left hand side of")
+_SIDE_WORDS = (["hand", "side"], ["side"])
 #: the token after a person's name said as an owner ("tracy's mug"): the name becomes an ``owner`` chunk
 _OWNER = "'s"
 #: words whose "'s" is read as the tables and the reader already read it ("there's a mug on the table")

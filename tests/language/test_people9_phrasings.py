@@ -1,11 +1,15 @@
 """Phrasings found with the ninth blind set (people9): "transport" and "convey" carry a thing as "bring" does;
 older and regional names of places and things: "curtains" for blinds, "bedside cabinet" (or cupboard) for a
-bedside table, "scullery" for a kitchen, "passage" (or "passageway") for a hallway."""
+bedside table, "scullery" for a kitchen, "passage" (or "passageway") for a hallway; "on the left of", "to the
+right of", "on the left (hand) side of" place a thing beside another as "next to" does; a thing told from
+others by its side said after it ("the light on the right", "the lamp on the left hand side") is the one the
+world names with that side first, while "on the tv stand" stays a place."""
 
 from __future__ import annotations
 
 import pytest
 
+from knic.language import understand
 from knic.language.vocabulary import Vocabulary
 
 from .conftest import frames_read
@@ -54,3 +58,42 @@ def test_the_passage_is_the_hallway(vocabulary: Vocabulary, name: str) -> None:
     assert frames_read(vocabulary, f"put the light off in the {name}") == [
         {"frame": "OPERATING", "device": "hallway_light", "state": "off"}
     ]
+
+
+@pytest.mark.parametrize(
+    "relation",
+    ["on the left of", "to the right of", "on the left side of", "on the right hand side of", "left of"],
+)
+def test_a_side_of_a_place_is_beside_it(
+    vocabulary: Vocabulary, other_house: Vocabulary, relation: str
+) -> None:
+    assert frames_read(vocabulary, f"put the mug {relation} the sofa") == [
+        {"frame": "PLACING", "theme": "mug", "goal": "sofa"}
+    ]
+    assert frames_read(other_house, f"look for the keys {relation} the couch", "maria") == [
+        {"frame": "SEARCHING", "theme": "keys", "ground": "couch"}
+    ]
+
+
+@pytest.mark.parametrize(
+    ("text", "device"),
+    [
+        ("switch on the light on the right in the bedroom", "bedroom_right_light"),
+        ("switch on the lamp on the left", "bedroom_left_light"),
+        ("switch on the light on the left hand side", "bedroom_left_light"),
+    ],
+)
+def test_a_thing_told_by_its_side_said_after_it(vocabulary: Vocabulary, text: str, device: str) -> None:
+    assert frames_read(vocabulary, text) == [{"frame": "OPERATING", "device": device, "state": "on"}]
+
+
+def test_a_name_after_on_the_stays_a_place(vocabulary: Vocabulary) -> None:
+    # "tv remote" is a name too: "the remote on the tv stand" is no "tv remote"
+    assert frames_read(vocabulary, "put the remote on the tv stand") == [
+        {"frame": "PLACING", "theme": "remote", "goal": "tv_table"}
+    ]
+
+
+def test_a_side_the_world_names_nothing_with_is_refused(other_house: Vocabulary) -> None:
+    result = understand("switch on the light on the left", other_house, speaker="maria")
+    assert not result.accepted and "left" in result.reason
