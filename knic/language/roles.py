@@ -64,6 +64,7 @@ def _carry(
 ) -> list[CommandFrame]:
     args = list(clause.args)
     reader.narrow(args)
+    _landmarks_passed(reader, args)
     themes: list[str] = []
     roles: dict[str, str] = {}
     # where each object is taken from: "the remote from the living room and the glasses from the bedroom"
@@ -160,6 +161,7 @@ def _verb(clause: Clause) -> str:
 def _searching(reader: Resolver, clause: Clause, previous: Frames, groups: list[Frames]) -> Frames:
     args = list(clause.args)
     reader.narrow(args)
+    _landmarks_passed(reader, args)
     themes: list[str] = []
     ground: str | None = None
     # "check the kitchen for the lemon": the thing looked for after "for", the place said bare
@@ -192,6 +194,24 @@ def _sought_just_before(groups: list[Frames]) -> list[str]:
     if not latest or any(frame.kind != "SEARCHING" for frame in latest):
         return []
     return [str(frame.get("theme")) for frame in latest if frame.get("theme")]
+
+
+def _landmarks_passed(reader: Resolver, args: list[Arg]) -> None:
+    """Objects said only to show where, before the place they stand on ("put the stapler beside the laptop on
+    the desk", "the keys behind the laptop on the desk"): the place said after them is meant."""
+    for index, arg in enumerate(args):
+        terms = arg.chunk.terms
+        if (
+            arg.prep == "place"
+            and not arg.consumed
+            and terms
+            and all(reader.is_a(t, "item") for t in terms)
+            and any(
+                a.prep in ("place", "goal", "source") and _names_only_places(reader, a)
+                for a in args[index + 1 :]
+            )
+        ):
+            arg.consumed = True
 
 
 def _names_only_places(reader: Resolver, arg: Arg) -> bool:

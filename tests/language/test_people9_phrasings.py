@@ -3,7 +3,8 @@ older and regional names of places and things: "curtains" for blinds, "bedside c
 bedside table, "scullery" for a kitchen, "passage" (or "passageway") for a hallway; "on the left of", "to the
 right of", "on the left (hand) side of" place a thing beside another as "next to" does; a thing told from
 others by its side said after it ("the light on the right", "the lamp on the left hand side") is the one the
-world names with that side first, while "on the tv stand" stays a place."""
+world names with that side first, while "on the tv stand" stays a place; an object said only to show where
+("put the stapler beside the laptop on the desk") gives way to the place said after it."""
 
 from __future__ import annotations
 
@@ -97,3 +98,31 @@ def test_a_name_after_on_the_stays_a_place(vocabulary: Vocabulary) -> None:
 def test_a_side_the_world_names_nothing_with_is_refused(other_house: Vocabulary) -> None:
     result = understand("switch on the light on the left", other_house, speaker="maria")
     assert not result.accepted and "left" in result.reason
+
+
+@pytest.mark.parametrize(
+    ("text", "frame"),
+    [
+        (
+            "put the stapler beside the laptop on the desk",
+            {"frame": "PLACING", "theme": "stapler", "goal": "desk"},
+        ),
+        (
+            "look for the keys behind the laptop on the desk",
+            {"frame": "SEARCHING", "theme": "keys", "ground": "desk"},
+        ),
+        (
+            "bring me the keys next to the laptop on the desk",
+            {"frame": "BRINGING", "theme": "keys", "source": "desk", "beneficiary": "me"},
+        ),
+    ],
+)
+def test_an_object_said_to_show_where_gives_way_to_the_place_after_it(
+    other_house: Vocabulary, text: str, frame: dict[str, str]
+) -> None:
+    assert frames_read(other_house, text, "maria") == [frame]
+
+
+def test_an_object_as_the_only_place_is_still_refused(other_house: Vocabulary) -> None:
+    result = understand("put the stapler beside the laptop", other_house, speaker="maria")
+    assert not result.accepted and "laptop" in result.reason
