@@ -5,7 +5,8 @@ several objects in one action. A verb right after a bare motion verb says what t
 verb that implies a state, said after the thing it is about, is that state ("i want the blinds open"). Words
 before the first verb are a clause of their own when they make a device command ("lights off") or, when the
 command has no verb at all, a request for the things they name ("the remote please"); otherwise they are
-taken as address. See :mod:`knic.language.reader` for the whole reading.
+taken as address. A device named right after another device's state or level starts a new device action
+("lights off, blinds down"). See :mod:`knic.language.reader` for the whole reading.
 """
 
 from __future__ import annotations
@@ -154,6 +155,26 @@ def split_clauses(
             clauses.append(current)
             filling, after_state = _Filling(), False
             continue
+        ahead = next((c for c in chunks[index:] if c.kind not in ("det", "join")), None)
+        if (
+            (current.verb is None or current.verb.frames[0] == "OPERATING")
+            and current.args
+            and index > 0
+            and (chunks[index - 1].kind in ("state", "level", "number", "percent") or after_state)
+            and chunk.kind in ("entity", "det", "join")
+            and ahead is not None
+            and ahead.kind == "entity"
+            and names_device(ahead)
+        ):
+            # "lights off, blinds down", "turn the lamp on, the blinds up": each device with its own state
+            if current is preamble:
+                clauses.append(preamble)
+                preamble = Clause(None)
+            current = Clause(current.verb)
+            clauses.append(current)
+            filling, after_state = _Filling(), False
+            if chunk.kind == "join":
+                continue
         after_state = chunk.kind == "state" or (chunk.kind == "prep" and chunk.state is not None)
         if chunk.kind == "verb":
             if current.verb is not None and not current.args and not current.states:

@@ -4,7 +4,9 @@ bedside table, "scullery" for a kitchen, "passage" (or "passageway") for a hallw
 right of", "on the left (hand) side of" place a thing beside another as "next to" does; a thing told from
 others by its side said after it ("the light on the right", "the lamp on the left hand side") is the one the
 world names with that side first, while "on the tv stand" stays a place; an object said only to show where
-("put the stapler beside the laptop on the desk") gives way to the place said after it."""
+("put the stapler beside the laptop on the desk") gives way to the place said after it; devices each said
+with their own state, with or without a verb ("lights off, blinds down", "desk lamp on and study blinds up",
+"switch the lights off the blinds down"), are one action each."""
 
 from __future__ import annotations
 
@@ -126,3 +128,34 @@ def test_an_object_said_to_show_where_gives_way_to_the_place_after_it(
 def test_an_object_as_the_only_place_is_still_refused(other_house: Vocabulary) -> None:
     result = understand("put the stapler beside the laptop", other_house, speaker="maria")
     assert not result.accepted and "laptop" in result.reason
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "lights off, blinds down, now",
+        "lights off and the blinds down",
+        "switch the lights off the blinds down",
+    ],
+)
+def test_devices_each_with_their_state_are_one_action_each(vocabulary: Vocabulary, text: str) -> None:
+    assert frames_read(vocabulary, text) == [
+        {"frame": "OPERATING", "device": "all_lights", "state": "off"},
+        {"frame": "OPERATING", "device": "bedroom_blinds", "state": "closed"},
+    ]
+
+
+def test_devices_each_with_their_state_or_level_in_the_other_house(other_house: Vocabulary) -> None:
+    assert frames_read(other_house, "desk lamp on and study blinds up please", "maria") == [
+        {"frame": "OPERATING", "device": "desk_lamp", "state": "on"},
+        {"frame": "OPERATING", "device": "study_blinds", "state": "open"},
+    ]
+    assert frames_read(other_house, "lounge dimmer to 30, study blinds down", "maria") == [
+        {"frame": "OPERATING", "device": "lounge_dimmer", "state": "30"},
+        {"frame": "OPERATING", "device": "study_blinds", "state": "closed"},
+    ]
+
+
+def test_a_state_said_twice_for_two_devices_still_asks_about_an_ambiguous_one(vocabulary: Vocabulary) -> None:
+    result = understand("turn the lamp on the blinds up", vocabulary)
+    assert not result.accepted and "which lamp" in result.reason
