@@ -111,7 +111,9 @@ def chain(
             if nxt.kind in ("SEARCHING", "TAKING", "BRINGING") and said and theme and place:
                 out[index + 1] = CommandFrame(nxt.kind, {**nxt.args, role: frame["goal"]})
                 waypoints.add(index)
-            elif nxt.kind == "MOTION":  # "go to the garage, then come back": only the last place can be kept
+            elif any(f.kind == "MOTION" for f in later):
+                # "go to the garage, then come back", "go to the lounge, switch the dimmer off, then come to
+                # the study": only the last place can be kept
                 waypoints.add(index)
         if frame.kind == "TAKING":
             carried = [  # a later carry of the same object, not one fetched again from elsewhere

@@ -6,7 +6,9 @@ others by its side said after it ("the light on the right", "the lamp on the lef
 world names with that side first, while "on the tv stand" stays a place; an object said only to show where
 ("put the stapler beside the laptop on the desk") gives way to the place said after it; devices each said
 with their own state, with or without a verb ("lights off, blinds down", "desk lamp on and study blinds up",
-"switch the lights off the blinds down"), are one action each."""
+"switch the lights off the blinds down"), are one action each; a place gone to before another action and
+then a later place ("go to the lounge, switch the dimmer off, then come to the study") is only a waypoint,
+as right before a second trip."""
 
 from __future__ import annotations
 
@@ -159,3 +161,16 @@ def test_devices_each_with_their_state_or_level_in_the_other_house(other_house: 
 def test_a_state_said_twice_for_two_devices_still_asks_about_an_ambiguous_one(vocabulary: Vocabulary) -> None:
     result = understand("turn the lamp on the blinds up", vocabulary)
     assert not result.accepted and "which lamp" in result.reason
+
+
+def test_a_place_before_a_later_trip_is_a_waypoint(other_house: Vocabulary) -> None:
+    result = understand(
+        "go to the lounge, switch the dimmer off, then come to the study", other_house, speaker="maria"
+    )
+    assert result.accepted, result.reason
+    assert [f.to_dict() for f in result.frames] == [
+        {"frame": "MOTION", "goal": "lounge"},
+        {"frame": "OPERATING", "device": "lounge_dimmer", "state": "off"},
+        {"frame": "MOTION", "goal": "study"},
+    ]
+    assert {str(g) for g in result.goals if g.predicate == "robot_at"} == {"(robot_at tiago study)"}
