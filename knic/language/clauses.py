@@ -69,6 +69,8 @@ class _Filling:
     expecting: bool = False  # a noun phrase is expected (after a determiner or a preposition)
     quantity: Chunk | None = None
     after_prep: bool = False  # the chunk just before was a preposition
+    article: str = ""  # the determiner just said, before a noun phrase
+    indefinite: bool = False  # the latest noun phrase was said with "a" or "an" ("a cup")
 
 
 def _purpose(clause: Clause, chunk: Chunk, nxt: Chunk | None, filling: _Filling) -> bool:
@@ -259,12 +261,18 @@ def _fill(
         and clause.args
         and clause.args[-1].chunk.kind == "entity"
         and nxt is not None
-        and nxt.kind in ("entity", "det")
+        and (nxt.kind in ("entity", "det") or (nxt.kind == "unknown" and filling.indefinite))
     ):
         container = clause.args.pop()  # "a glass of water": the water is meant (not "me" in "hand me a ...")
         filling.prep = Chunk("prep", container.prep_text, role=container.prep) if container.prep else None
         filling.joined = container.joined
+        # "a cup of tea": the tea, which the world may lack ("the remote of tv" stays the remote)
+        filling.expecting = True
         return
+    if chunk.kind == "det":
+        filling.article = chunk.text
+    elif chunk.kind in _NOUNS:
+        filling.indefinite, filling.article = filling.article in ("a", "an"), ""
     if chunk.kind == "join":
         filling.joined = nxt is not None and nxt.kind in (*_NOUNS, "det", "unknown", "quant")
         last = clause.args[-1] if clause.args else None

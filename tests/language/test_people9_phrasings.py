@@ -8,7 +8,8 @@ world names with that side first, while "on the tv stand" stays a place; an obje
 with their own state, with or without a verb ("lights off, blinds down", "desk lamp on and study blinds up",
 "switch the lights off the blinds down"), are one action each; a place gone to before another action and
 then a later place ("go to the lounge, switch the dimmer off, then come to the study") is only a waypoint,
-as right before a second trip."""
+as right before a second trip; "a cup of tea", "a bottle of milk": the drink is meant, so a drink the
+world lacks is refused, not the cup brought (while "the remote of tv" stays the remote)."""
 
 from __future__ import annotations
 
@@ -174,3 +175,30 @@ def test_a_place_before_a_later_trip_is_a_waypoint(other_house: Vocabulary) -> N
         {"frame": "MOTION", "goal": "study"},
     ]
     assert {str(g) for g in result.goals if g.predicate == "robot_at"} == {"(robot_at tiago study)"}
+
+
+@pytest.mark.parametrize(
+    ("text", "word"), [("I'd love a cup of tea", "tea"), ("bring me a cup of hot tea please", "hot tea")]
+)
+def test_a_container_of_a_drink_the_world_lacks_is_refused(
+    vocabulary: Vocabulary, text: str, word: str
+) -> None:
+    result = understand(text, vocabulary)
+    assert not result.accepted and f"'{word}'" in result.reason
+
+
+def test_a_container_of_a_drink_the_world_lacks_in_the_other_house(other_house: Vocabulary) -> None:
+    result = understand("bring me a bottle of milk", other_house, speaker="maria")
+    assert not result.accepted and "milk" in result.reason
+
+
+def test_a_container_of_a_known_drink_is_the_drink(vocabulary: Vocabulary) -> None:
+    assert frames_read(vocabulary, "bring me a cup of water") == [
+        {"frame": "BRINGING", "theme": "water", "beneficiary": "me"}
+    ]
+
+
+def test_a_thing_of_a_word_the_world_lacks_said_with_the_stays_the_thing(vocabulary: Vocabulary) -> None:
+    assert frames_read(vocabulary, "the remote of tv, bring it to me") == [
+        {"frame": "BRINGING", "theme": "remote", "beneficiary": "me"}
+    ]
