@@ -51,6 +51,7 @@ from knic.language.tidy import (
     SEGMENT_END,
     digits_read,
     fluent,
+    left_undone,
     negated_dropped,
     repaired,
     spelled,
@@ -172,7 +173,7 @@ class Reader:
     def _read_tokens(self, tokens: list[str]) -> Reading:
         """:meth:`read` of normalised tokens."""
         chunks = negated_dropped(self.chunks(tokens), self.language.negations)
-        chunks = sayings_dropped(doings_dropped(talk_dropped(repaired(chunks, self._kind_of))))
+        chunks = sayings_dropped(doings_dropped(talk_dropped(repaired(left_undone(chunks), self._kind_of))))
         if not chunks:
             raise LanguageError(f"no action in '{' '.join(tokens)}': say what to do, e.g. 'bring me ...'")
         context: list[Arg] = []

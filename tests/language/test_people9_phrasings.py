@@ -9,7 +9,10 @@ with their own state, with or without a verb ("lights off, blinds down", "desk l
 "switch the lights off the blinds down"), are one action each; a place gone to before another action and
 then a later place ("go to the lounge, switch the dimmer off, then come to the study") is only a waypoint,
 as right before a second trip; "a cup of tea", "a bottle of milk": the drink is meant, so a drink the
-world lacks is refused, not the cup brought (while "the remote of tv" stays the remote)."""
+world lacks is refused, not the cup brought (while "the remote of tv" stays the remote); a device said, with
+no verb, to be still or again in a state ("the hallway light is still on", "the garage light has been left on
+again", "the blinds are still open") is a complaint: the other state is meant, while "still on the table"
+stays where a thing is."""
 
 from __future__ import annotations
 
@@ -201,4 +204,44 @@ def test_a_container_of_a_known_drink_is_the_drink(vocabulary: Vocabulary) -> No
 def test_a_thing_of_a_word_the_world_lacks_said_with_the_stays_the_thing(vocabulary: Vocabulary) -> None:
     assert frames_read(vocabulary, "the remote of tv, bring it to me") == [
         {"frame": "BRINGING", "theme": "remote", "beneficiary": "me"}
+    ]
+
+
+@pytest.mark.parametrize(
+    ("text", "device", "state"),
+    [
+        ("the hallway light is still on", "hallway_light", "off"),
+        ("the lights are still on", "all_lights", "off"),
+        ("the blinds are still open", "bedroom_blinds", "closed"),
+        ("the blinds are still down", "bedroom_blinds", "open"),
+        ("the left light was left on", "bedroom_left_light", "off"),
+    ],
+)
+def test_a_device_left_in_a_state_is_put_in_the_other(
+    vocabulary: Vocabulary, text: str, device: str, state: str
+) -> None:
+    assert frames_read(vocabulary, text) == [{"frame": "OPERATING", "device": device, "state": state}]
+
+
+def test_a_device_left_in_a_state_in_the_other_house(other_house: Vocabulary) -> None:
+    assert frames_read(other_house, "the garage light has been left on again", "maria") == [
+        {"frame": "OPERATING", "device": "garage_light", "state": "off"}
+    ]
+    assert frames_read(other_house, "the study blinds have been left open", "maria") == [
+        {"frame": "OPERATING", "device": "study_blinds", "state": "closed"}
+    ]
+
+
+def test_said_with_a_verb_the_state_is_as_said(vocabulary: Vocabulary) -> None:
+    assert frames_read(vocabulary, "leave the hallway light on") == [
+        {"frame": "OPERATING", "device": "hallway_light", "state": "on"}
+    ]
+    assert frames_read(vocabulary, "the hallway light is on") == [
+        {"frame": "OPERATING", "device": "hallway_light", "state": "on"}
+    ]
+
+
+def test_a_thing_still_on_a_place_is_where_it_is(vocabulary: Vocabulary) -> None:
+    assert frames_read(vocabulary, "the mug is still on the kitchen table, put it in the cabinet") == [
+        {"frame": "PLACING", "theme": "mug", "goal": "kitchen_cabinet"}
     ]
