@@ -12,7 +12,7 @@ as right before a second trip; "a cup of tea", "a bottle of milk": the drink is 
 world lacks is refused, not the cup brought (while "the remote of tv" stays the remote); a device said, with
 no verb, to be still or again in a state ("the hallway light is still on", "the garage light has been left on
 again", "the blinds are still open") is a complaint: the other state is meant, while "still on the table"
-stays where a thing is."""
+stays where a thing is; "pop", "stick", "chuck" a device on or off (British) switch it."""
 
 from __future__ import annotations
 
@@ -244,4 +244,28 @@ def test_said_with_a_verb_the_state_is_as_said(vocabulary: Vocabulary) -> None:
 def test_a_thing_still_on_a_place_is_where_it_is(vocabulary: Vocabulary) -> None:
     assert frames_read(vocabulary, "the mug is still on the kitchen table, put it in the cabinet") == [
         {"frame": "PLACING", "theme": "mug", "goal": "kitchen_cabinet"}
+    ]
+
+
+@pytest.mark.parametrize(
+    ("text", "device", "state"),
+    [
+        ("pop the big light on in the passage, duck", "hallway_light", "on"),
+        ("stick the lights on", "all_lights", "on"),
+        ("chuck the hallway light off", "hallway_light", "off"),
+        ("pop the blinds down", "bedroom_blinds", "closed"),
+    ],
+)
+def test_pop_or_stick_a_device_on_switches_it(
+    vocabulary: Vocabulary, text: str, device: str, state: str
+) -> None:
+    assert frames_read(vocabulary, text) == [{"frame": "OPERATING", "device": device, "state": state}]
+
+
+def test_pop_or_stick_a_thing_somewhere_still_puts_it_there(other_house: Vocabulary) -> None:
+    assert frames_read(other_house, "pop the teddy bear in the crib", "maria") == [
+        {"frame": "PLACING", "theme": "teddy_bear", "goal": "crib"}
+    ]
+    assert frames_read(other_house, "stick the garage light on", "maria") == [
+        {"frame": "OPERATING", "device": "garage_light", "state": "on"}
     ]
