@@ -32,9 +32,9 @@ from core.errors import LanguageError
 from knic.language.acoustic import DEFAULT_NGRAM_ACOUSTIC_MODEL
 from knic.language.phoneloop import (
     NGRAM_DECODER_OPTIONS,
-    NGRAM_TRAIL_SILENCE,
     Decoded,
     as_decoded,
+    ngram_padded,
     ngram_pass,
 )
 
@@ -128,14 +128,13 @@ def decode_here(samples: bytes, model: tuple[Path, Path], acoustic_model: str | 
     from pocketsphinx import Decoder, set_loglevel
 
     from knic.language.acoustic import acoustic_model_options
-    from knic.language.audio import pad_pcm
 
     set_loglevel("FATAL")
     options = {**NGRAM_DECODER_OPTIONS, **acoustic_model_options(acoustic_model, decoder="ngram")}
     decoder = Decoder(lm=None, loglevel="FATAL", **{**options, "dict": str(model[0])})
     decoder.add_lm_file("ngram", str(model[1]))
     decoder.activate_search("ngram")
-    return ngram_pass(decoder, pad_pcm(samples, NGRAM_TRAIL_SILENCE), NBEST)
+    return ngram_pass(decoder, ngram_padded(samples), NBEST)
 
 
 class Child:
@@ -274,12 +273,11 @@ def start_passes(
 
     def phones(member: str | Path) -> Callable[[], float]:
         def job() -> float:
-            from knic.language.audio import pad_pcm
             from knic.language.phoneloop import PhoneLoop
 
             with contextlib.suppress(OSError):
                 os.nice(PHONE_LOOP_NICENESS)
-            return PhoneLoop(member).score(pad_pcm(samples(), NGRAM_TRAIL_SILENCE))
+            return PhoneLoop(member).score_of(samples())
 
         return job
 

@@ -45,13 +45,18 @@ NGRAM_DECODER_OPTIONS: dict[str, object] = {
     "topn": 2,
     "dither": True,
 }
-#: The phone-loop pass runs in a decoder of its own over every second frame (ds 2, topn 2): it was the
-#: larger part of the CPU (~250 of ~410 ms per utterance), now ~150. It only needs the best path's score; on
-#: the dev sets it separates commands from other speech as well as the full-rate pass at its own threshold
-#: (frame+args / other speech rejected at the best thresholds, with the 3000-sentence adaptation: full rate
-#: 0.875 / 0.955, ds 2 0.875 / 0.955, ds 2 topn 2 0.871 / 0.955, ds 3 topn 2 0.875 / 0.955 but steeper; ds 2
-#: topn 1 0.878 / 0.933; narrower beams (1e-20) lost 0.05-0.1 of frame+args at the same rejection).
-PHONE_DECODER_OPTIONS: dict[str, object] = {"ds": 2, "topn": 2}
+#: The phone-loop pass runs in a decoder of its own over every third frame with the best Gaussian of each
+#: mixture (ds 3, topn 1): it was the larger part of the CPU (~250 of ~410 ms per utterance at full rate).
+#: It only needs the best path's score; on the dev sets it separates commands from other speech as well as
+#: the full-rate pass at its own threshold (frame+args / other speech rejected at the best thresholds, with
+#: the 3000-sentence adaptation: full rate 0.875 / 0.955, ds 2 0.875 / 0.955, ds 2 topn 2 0.871 / 0.955, ds 3
+#: topn 2 0.875 / 0.955 but steeper; ds 2 topn 1 0.878 / 0.933; narrower beams (1e-20) lost 0.05-0.1 of
+#: frame+args at the same rejection). With the ``auto`` ensemble and the matched padding
+#: (:func:`ngram_padded`), over all five spoken dev sets (407 commands, 134 other utterances), the frontier
+#: of the two members' thresholds, frame+args at other speech rejected 0.948 / 0.955 / 0.970: ds 2 topn 2
+#: 0.865 / 0.862 / 0.848, ds 3 topn 1 0.870 / 0.865 / 0.845. ms per utterance, one bench alone, before (the
+#: fixed padding, ds 2 topn 2) and now: speech_people/dev 276 and 265, speech_people2/dev 288 and 261.
+PHONE_DECODER_OPTIONS: dict[str, object] = {"ds": 3, "topn": 1}
 
 
 class PhoneLoop:
@@ -91,9 +96,7 @@ class PhoneLoop:
 
     def score_of(self, samples: bytes) -> float:
         """:meth:`score` of unpadded 16 kHz mono 16-bit PCM, padded as the n-gram pass pads it."""
-        from knic.language.audio import pad_pcm
-
-        return self.score(pad_pcm(samples, NGRAM_TRAIL_SILENCE))
+        return self.score(ngram_padded(samples))
 
     def score(self, raw: bytes) -> float:
         """The best phone path's score (a probability, as pocketsphinx hands it over; 0.0: no path) of padded
@@ -112,6 +115,15 @@ class PhoneLoop:
 #: whether the best path reached the sentence end (False: the audio ended inside its last word, often a word
 #: heard in the silence after the command: "bring me my glasses please but")
 Decoded = tuple[str, float, int, tuple[str, ...], bool]
+
+
+def ngram_padded(samples: bytes) -> bytes:
+    """Unpadded 16 kHz mono 16-bit PCM padded for an n-gram pass and its phone loop: with
+    :data:`NGRAM_TRAIL_SILENCE` after it, at the recording's own background level
+    (:func:`knic.language.audio.pad_pcm`)."""
+    from knic.language.audio import pad_pcm
+
+    return pad_pcm(samples, NGRAM_TRAIL_SILENCE, matched=True)
 
 
 def as_decoded(data: Any) -> Decoded | None:
