@@ -49,10 +49,14 @@ from knic.language.segments import (
 )
 from knic.language.tidy import (
     SEGMENT_END,
+    before_moved,
+    cut_off_dropped,
     digits_read,
     fluent,
+    forbidden_dropped,
     left_undone,
     negated_dropped,
+    relative_dropped,
     repaired,
     spelled,
     talk_dropped,
@@ -100,7 +104,11 @@ class Reader:
         """
         language = self.language
         text = digits_read(
-            text, language.digit_words, language.typed_words, self._units, self._before_numbers
+            cut_off_dropped(text),
+            language.digit_words,
+            language.typed_words,
+            self._units,
+            self._before_numbers,
         )
         segments = [
             spelled(normalize(part).split(), self.language.spellings) for part in SEGMENT_END.split(text)
@@ -172,7 +180,8 @@ class Reader:
 
     def _read_tokens(self, tokens: list[str]) -> Reading:
         """:meth:`read` of normalised tokens."""
-        chunks = negated_dropped(self.chunks(tokens), self.language.negations)
+        chunks = before_moved(relative_dropped(forbidden_dropped(self.chunks(tokens))))
+        chunks = negated_dropped(chunks, self.language.negations)
         chunks = sayings_dropped(doings_dropped(talk_dropped(repaired(left_undone(chunks), self._kind_of))))
         if not chunks:
             raise LanguageError(f"no action in '{' '.join(tokens)}': say what to do, e.g. 'bring me ...'")

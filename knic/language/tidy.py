@@ -259,3 +259,85 @@ def left_undone(chunks: list[Chunk]) -> list[Chunk]:
             end += 1
         return [*chunks[:i], Chunk("state", state.text, state=undone), *chunks[end:]]
     return chunks
+
+
+#: a word broken off as the speaker starts again ("go to the kit- the kitchen"): a word, a hyphen, a space
+_CUT_OFF = re.compile(r"(?<![\w'-])[\w']+-(?=\s+\S)")
+
+
+def cut_off_dropped(text: str) -> str:
+    """Drop words the speaker broke off to say again ("go to the kit- the kitchen", "bring me the m- the
+    mug"): the determiner said twice is then one (:func:`fluent`)."""
+    return _CUT_OFF.sub("", text)
+
+
+#: words that forbid the action right after them ("don't go to the kitchen")
+_FORBIDDING = (("don't",), ("dont",), ("do", "not"), ("never",))
+
+
+def forbidden_dropped(chunks: list[Chunk]) -> list[Chunk]:
+    """Drop an action the speaker forbids before saying what to do instead ("don't go to the kitchen, go to
+    the bedroom", "do not bring me the juice, bring me the water"): from the forbidding words to the next
+    verb. The things it named stay said, for an "it" later. A forbidden action with none after it is only
+    dropped ("don't switch the light off" asks for nothing)."""
+    out = list(chunks)
+    i = 0
+    while i < len(out):
+        size = next(
+            (
+                len(words)
+                for words in _FORBIDDING
+                if all(
+                    i + k < len(out) and out[i + k].kind == "unknown" and out[i + k].text == word
+                    for k, word in enumerate(words)
+                )
+            ),
+            0,
+        )
+        verb = i + size
+        if not size or verb >= len(out) or out[verb].kind != "verb":
+            i += 1
+            continue
+        after = next((j for j in range(verb + 1, len(out)) if out[j].kind == "verb"), None)
+        if after is None:  # "bring me the mug and don't drop it": nothing is done for it
+            return out[:i]
+        out = out[:i] + unplaced(out[verb + 1 : after]) + out[after:]
+    return out
+
+
+#: who does what a relative clause says ("the glasses that i left in the living room")
+_DOERS = frozenset({"i", "you", "we", "they", "he", "she"})
+
+
+def relative_dropped(chunks: list[Chunk]) -> list[Chunk]:
+    """Drop "that i left", "which you put" between a thing and where it is ("find the glasses that i left in
+    the living room", "bring me the mug that you put on the table"): the place says where the thing is."""
+    out = list(chunks)
+    for i in range(1, len(out) - 3):
+        that, doer, doing, where = out[i : i + 4]
+        if (
+            out[i - 1].kind == "entity"
+            and that.text in ("that", "which")
+            and doer.text in _DOERS
+            and doer.kind in ("unknown", "pronoun")
+            and doing.kind in ("unknown", "verb")
+            and where.kind == "prep"
+        ):
+            return out[:i] + out[i + 3 :]
+    return out
+
+
+def before_moved(chunks: list[Chunk]) -> list[Chunk]:
+    """An action said to come after the next one ("before you go to the bedroom, turn off the hallway
+    light"): it is put after that one."""
+    if len(chunks) < 3 or chunks[0].kind != "unknown" or chunks[0].text != "before":
+        return chunks
+    start = 2 if chunks[1].kind in ("unknown", "pronoun") and chunks[1].text in _DOERS else 1
+    if chunks[start].kind != "verb":
+        return chunks
+    nxt = next((j for j in range(start + 1, len(chunks)) if chunks[j].kind == "verb"), None)
+    if nxt is None:
+        return chunks
+    following = next((j for j in range(nxt + 1, len(chunks)) if chunks[j].kind in ("verb", "join")), None)
+    end = len(chunks) if following is None else following
+    return chunks[nxt:end] + chunks[start:nxt] + chunks[end:]

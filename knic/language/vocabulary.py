@@ -187,11 +187,24 @@ def english_synonyms() -> tuple[tuple[str, ...], ...]:
     return tuple(tuple(" ".join(p.lower().split()) for p in group) for group in raw)
 
 
+@lru_cache(maxsize=1)
+def english_broader() -> frozenset[str]:
+    """The broader words of :data:`SYNONYMS_FILE` (``broader``: "computer"), read once."""
+    data = read_yaml(SYNONYMS_FILE, "synonyms", LanguageError) or {}
+    raw = data.get("broader", []) if isinstance(data, dict) else []
+    if not isinstance(raw, list) or not all(isinstance(p, str) and p.split() for p in raw):
+        raise LanguageError(f"{SYNONYMS_FILE}: 'broader' is a list of phrases")
+    return frozenset(" ".join(p.lower().split()) for p in raw)
+
+
 def _synonym_variants(terms: Sequence[Term], synonyms: Sequence[Sequence[str]]) -> list[Term]:
     """The names synonyms give: each whole-word synonym in a name (the longest at each place) replaced by the
-    others of its set, where that makes no name the world already has."""
+    others of its set, where that makes no name the world already has. A broader word
+    (:func:`english_broader`) ending a longer name is left: "tablet computer" gives no "tablet laptop", which
+    would make "the laptop" name the tablet."""
     taken = {t.phrase for t in terms}
     sets = [[s.split() for s in sorted(group, key=lambda p: -len(p.split()))] for group in synonyms]
+    broader = english_broader()
     out: list[Term] = []
     for term in terms:
         if term.type == "level":
@@ -200,7 +213,7 @@ def _synonym_variants(terms: Sequence[Term], synonyms: Sequence[Sequence[str]]) 
         for i in range(len(words)):
             for members in sets:
                 said = next((m for m in members if words[i : i + len(m)] == m), None)
-                if said is None:
+                if said is None or (i > 0 and i + len(said) == len(words) and " ".join(said) in broader):
                     continue
                 for other in members:
                     phrase = " ".join([*words[:i], *other, *words[i + len(said) :]])
