@@ -14,7 +14,6 @@ fifth of a one-shot ``knic say``'s budget. Everything else goes through numpy (:
 
 from __future__ import annotations
 
-import operator
 import random
 import struct
 import sys
@@ -222,55 +221,15 @@ def _padding() -> tuple[bytes, bytes]:
     return noise(LEAD_SILENCE), noise(TRAIL_SILENCE)
 
 
-def pad_pcm(pcm: bytes, trail: float = TRAIL_SILENCE, *, matched: bool = False) -> bytes:
+def pad_pcm(pcm: bytes, trail: float = TRAIL_SILENCE) -> bytes:
     """Add :data:`LEAD_SILENCE` and ``trail`` seconds (at most :data:`TRAIL_SILENCE`) of near-silence to raw
     audio.
 
     The padding is faint deterministic noise (:data:`PAD_NOISE`), not digital zeros: all-zero frames have no
-    defined log energy and upset the decoder's cepstral normalisation. ``matched``: the noise is scaled to
-    the recording's own background (:func:`background_level`), so that the padding goes on as the recording
-    was, neither louder (a synthesised recording's digital silence, where the step up at the padding was
-    heard as a word: "bring me my glasses please but") nor quieter (a room's hum); only for decoders that
-    dither, which a recording's digital silence then reaches unchanged.
+    defined log energy and upset the decoder's cepstral normalisation.
     """
     lead, after = _padding()
-    after = after[: 2 * int(min(trail, TRAIL_SILENCE) * MODEL_RATE)]
-    if matched:
-        scale = background_level(pcm) / _PAD_RMS
-        lead, after = _scaled(lead, scale), _scaled(after, scale)
-    return lead + pcm + after
-
-
-#: the RMS of the padding's noise (uniform integers from -PAD_NOISE to PAD_NOISE)
-_PAD_RMS = (PAD_NOISE * (PAD_NOISE + 1) / 3) ** 0.5
-
-
-def background_level(pcm: bytes) -> float:
-    """The RMS of a recording's quiet background: of its 10 ms frames, the one quieter than all but a
-    twentieth (:data:`_PAD_RMS` when the recording is shorter than a frame)."""
-    values = _samples(pcm)
-    size = MODEL_RATE // 100
-    levels = sorted(
-        sum(map(operator.mul, frame, frame))
-        for frame in (values[at : at + size] for at in range(0, len(values) - size + 1, size))
-    )
-    return (levels[len(levels) // 20] / size) ** 0.5 if levels else _PAD_RMS
-
-
-def _samples(pcm: bytes) -> array[int]:
-    values = array("h", pcm[: len(pcm) // 2 * 2])
-    if sys.byteorder == "big":
-        values.byteswap()
-    return values
-
-
-def _scaled(padding: bytes, scale: float) -> bytes:
-    """The padding's noise times ``scale``."""
-    table = {v: max(-32768, min(32767, round(v * scale))) for v in range(-PAD_NOISE, PAD_NOISE + 1)}
-    values = array("h", map(table.__getitem__, _samples(padding)))
-    if sys.byteorder == "big":
-        values.byteswap()
-    return values.tobytes()
+    return lead + pcm + after[: 2 * int(min(trail, TRAIL_SILENCE) * MODEL_RATE)]
 
 
 def pad(audio: npt.NDArray[np.int16]) -> npt.NDArray[np.int16]:

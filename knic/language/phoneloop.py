@@ -51,11 +51,10 @@ NGRAM_DECODER_OPTIONS: dict[str, object] = {
 #: the full-rate pass at its own threshold (frame+args / other speech rejected at the best thresholds, with
 #: the 3000-sentence adaptation: full rate 0.875 / 0.955, ds 2 0.875 / 0.955, ds 2 topn 2 0.871 / 0.955, ds 3
 #: topn 2 0.875 / 0.955 but steeper; ds 2 topn 1 0.878 / 0.933; narrower beams (1e-20) lost 0.05-0.1 of
-#: frame+args at the same rejection). With the ``auto`` ensemble and the matched padding
-#: (:func:`ngram_padded`), over all five spoken dev sets (407 commands, 134 other utterances), the frontier
-#: of the two members' thresholds, frame+args at other speech rejected 0.948 / 0.955 / 0.970: ds 2 topn 2
-#: 0.865 / 0.862 / 0.848, ds 3 topn 1 0.870 / 0.865 / 0.845. ms per utterance, one bench alone, before (the
-#: fixed padding, ds 2 topn 2) and now: speech_people/dev 276 and 265, speech_people2/dev 288 and 261.
+#: frame+args at the same rejection). With the ``auto`` ensemble over all five spoken dev sets (407 commands,
+#: 134 other utterances), each at its best two thresholds: ds 2 topn 2 0.865 / 0.955, ds 3 topn 1 0.865 /
+#: 0.963; the Granny Annie voice bank 20 of 24 both. ms per utterance, one bench alone, before and now:
+#: speech_people/dev 276 and 265, speech_people2/dev 288 and 261.
 PHONE_DECODER_OPTIONS: dict[str, object] = {"ds": 3, "topn": 1}
 
 
@@ -118,12 +117,11 @@ Decoded = tuple[str, float, int, tuple[str, ...], bool]
 
 
 def ngram_padded(samples: bytes) -> bytes:
-    """Unpadded 16 kHz mono 16-bit PCM padded for an n-gram pass and its phone loop: with
-    :data:`NGRAM_TRAIL_SILENCE` after it, at the recording's own background level
-    (:func:`knic.language.audio.pad_pcm`)."""
+    """Unpadded 16 kHz mono 16-bit PCM padded for an n-gram pass and its phone loop (with
+    :data:`NGRAM_TRAIL_SILENCE` after it)."""
     from knic.language.audio import pad_pcm
 
-    return pad_pcm(samples, NGRAM_TRAIL_SILENCE, matched=True)
+    return pad_pcm(samples, NGRAM_TRAIL_SILENCE)
 
 
 def as_decoded(data: Any) -> Decoded | None:

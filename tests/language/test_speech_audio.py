@@ -10,16 +10,7 @@ import numpy as np
 import pytest
 
 from core.errors import AudioError
-from knic.language.audio import (
-    LEAD_SILENCE,
-    MODEL_RATE,
-    background_level,
-    load_audio,
-    pad,
-    pad_pcm,
-    read_wav,
-    resample,
-)
+from knic.language.audio import MODEL_RATE, load_audio, pad, read_wav, resample
 
 from .conftest import SPEECH_FIXTURES
 
@@ -104,25 +95,3 @@ def test_missing_empty_and_unsupported_wavs_are_refused(tmp_path: Path) -> None:
     truncated.write_bytes(b"RIFF\x10\x00\x00\x00WAVEfmt ")
     with pytest.raises(AudioError, match="without a 'fmt ' or 'data' chunk"):
         load_audio(truncated)
-
-
-def _rms(samples: np.ndarray) -> float:
-    return float(np.sqrt(np.mean(samples.astype(np.float64) ** 2)))
-
-
-@pytest.mark.parametrize("floor", [0.0, 40.0, 400.0])
-def test_matched_padding_goes_on_at_the_recordings_own_background(floor: float) -> None:
-    rng = np.random.default_rng(1)
-    speech = np.round(8000 * tone(MODEL_RATE, 1.0)[:, 0]).astype(np.int16)
-    background = np.round(rng.normal(0.0, floor, MODEL_RATE // 2)).astype(np.int16)
-    pcm = np.concatenate([background, speech, background]).astype("<i2").tobytes()
-    padded = np.frombuffer(pad_pcm(pcm, 0.3, matched=True), dtype="<i2")
-    lead = padded[: int(LEAD_SILENCE * MODEL_RATE)]
-    trail = padded[-int(0.3 * MODEL_RATE) :]
-    assert len(padded) == len(pcm) // 2 + len(lead) + len(trail)
-    assert background_level(pcm) == pytest.approx(floor, rel=0.25, abs=0.5)
-    for padding in (lead, trail):
-        assert _rms(padding) == pytest.approx(floor, rel=0.25, abs=0.5)  # digital silence: silent padding
-    # the fixed padding stays the faint noise the grammar decoder needs, whatever the recording
-    fixed = np.frombuffer(pad_pcm(pcm, 0.3), dtype="<i2")[: len(lead)]
-    assert 2.0 < _rms(fixed) < 4.5
