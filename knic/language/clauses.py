@@ -48,6 +48,7 @@ class Clause:
     pending: list[str] = field(default_factory=list)  # unknown words since a noun phrase was expected
     vague: bool = False  # "a bit", "a little": a level meant but not said
     unsaid_goal: bool = False  # "away", "back": a destination meant but not said
+    unsaid_text: str = ""  # the words that said so ("away")
     mine: bool = False  # "my" said: the speaker's own thing ("grab my glasses": for me)
     implicit: bool = False  # read with an unsaid object taken from before (the reader's second try)
 
@@ -291,6 +292,7 @@ def _fill(
         clause.mine = True
     if chunk.kind == "unsaid":
         clause.unsaid_goal = True
+        clause.unsaid_text = chunk.text
         return
     if (
         chunk.kind == "pronoun"

@@ -97,6 +97,8 @@ class CommandLanguage:
     here: tuple[str, ...] = ()
     containment: tuple[str, ...] = ()
     anywhere: tuple[str, ...] = ()
+    discard_verbs: tuple[str, ...] = ()
+    discard_places: tuple[str, ...] = ()
     bare_request: str | None = None
     type_nouns: dict[str, tuple[str, ...]] = field(default_factory=dict)
     repairs: tuple[str, ...] = ()
@@ -241,6 +243,8 @@ def load_language(path: str | Path = DEFAULT_PATH) -> CommandLanguage:
         here=_phrases(data, "here", source),
         containment=_phrases(data, "containment", source),
         anywhere=_phrases(data, "anywhere", source),
+        discard_verbs=_phrases(data, "discard_verbs", source),
+        discard_places=_phrases(data, "discard_places", source),
         bare_request=bare,
         type_nouns=tables["type_nouns"],
         repairs=_phrases(data, "repairs", source),

@@ -18,6 +18,7 @@ from core.errors import LanguageError
 from knic.language.chains import AmbiguityError, referent
 from knic.language.chunks import Chunk
 from knic.language.clauses import Arg, Clause
+from knic.language.commands import CommandLanguage
 from knic.language.frames import SPEAKER, CommandFrame
 from knic.language.vocabulary import Term, Vocabulary, level_percent
 
@@ -28,6 +29,7 @@ class Resolver(Protocol):
     """What the interpreters ask of the reader (:class:`knic.language.reader.Reader`)."""
 
     vocabulary: Vocabulary
+    language: CommandLanguage
 
     def is_a(self, term: Term, category: str) -> bool:
         """Whether a name's type is ``category`` or a subtype of it."""
@@ -131,6 +133,9 @@ def _carry(
                 sources.setdefault(theme, where)
     if not themes:
         themes = _implicit(clause, groups, reader.vocabulary, "item", "object")
+    discarded = _discarded_into(reader, clause) if kind == "PLACING" and "goal" not in roles else None
+    if discarded is not None:  # "throw the tissues away": into the bin
+        roles["goal"] = discarded
     if kind == "PLACING" and "goal" not in roles and clause.unsaid_goal:  # "put the mug back"
         thing = reader.vocabulary.phrase_of(themes[0])
         raise AmbiguityError(f"where should I put the {thing}: on which piece of furniture or in which room?")
@@ -152,6 +157,18 @@ def _carry(
         own.update({"source": source} if source else {})
         frames.append(CommandFrame(kind, {"theme": theme, **roles, **own}))
     return frames
+
+
+def _discarded_into(reader: Resolver, clause: Clause) -> str | None:
+    """The world's one bin when a thing is thrown away ("throw the tissues away"; commands.yaml's
+    ``discard_verbs`` and ``discard_places``), else None."""
+    language = reader.language
+    if clause.verb is None or clause.verb.text not in language.discard_verbs or clause.unsaid_text != "away":
+        return None
+    bins = {
+        t.symbol for t in reader.vocabulary.terms_of(("furniture",)) if t.phrase in language.discard_places
+    }
+    return bins.pop() if len(bins) == 1 else None
 
 
 def _verb(clause: Clause) -> str:

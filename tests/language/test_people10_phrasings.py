@@ -7,7 +7,9 @@
 * a relative clause saying who left a thing where: "find the glasses that i left in the living room";
 * "before you X, Y": Y is done first;
 * a broader word ending a longer name ("computer" in "tablet computer") no longer makes a synonym's word
-  ("laptop") name that thing.
+  ("laptop") name that thing;
+* a thing thrown away goes in the world's one bin: "throw the tissues away" (where there is none, or for
+  "put the tissues away", where to is asked).
 """
 
 from __future__ import annotations
@@ -108,3 +110,17 @@ def test_a_broader_word_ending_a_name_makes_no_synonym(vocabulary: Any, other_ho
     assert frames_read(other_house, "put the computer on the desk", speaker="maria") == [
         {"frame": "PLACING", "theme": "laptop", "goal": "desk"}
     ]
+
+
+def test_a_thing_thrown_away_goes_in_the_bin(vocabulary: Any, other_house: Any) -> None:
+    assert frames_read(vocabulary, "throw the tissues away") == [
+        {"frame": "PLACING", "theme": "tissues", "goal": "bin"}
+    ]
+    assert frames_read(vocabulary, "uh toss the coke can away and then go to the kitchen") == [
+        {"frame": "PLACING", "theme": "coke_can", "goal": "bin"},
+        {"frame": "MOTION", "goal": "kitchen"},
+    ]
+    put_away = understand("put the tissues away", vocabulary, speaker="annie")
+    assert not put_away.accepted and "where should i put the tissues" in (put_away.question or "").lower()
+    no_bin = understand("throw the stapler away", other_house, speaker="maria")
+    assert not no_bin.accepted and "where should i put the stapler" in (no_bin.question or "").lower()
