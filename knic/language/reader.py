@@ -58,6 +58,7 @@ from knic.language.tidy import (
     negated_dropped,
     relative_dropped,
     repaired,
+    restated,
     spelled,
     talk_dropped,
 )
@@ -181,7 +182,7 @@ class Reader:
     def _read_tokens(self, tokens: list[str]) -> Reading:
         """:meth:`read` of normalised tokens."""
         chunks = before_moved(relative_dropped(forbidden_dropped(self.chunks(tokens))))
-        chunks = negated_dropped(chunks, self.language.negations)
+        chunks = restated(negated_dropped(chunks, self.language.negations), self._kind_of)
         chunks = sayings_dropped(doings_dropped(talk_dropped(repaired(left_undone(chunks), self._kind_of))))
         if not chunks:
             raise LanguageError(f"no action in '{' '.join(tokens)}': say what to do, e.g. 'bring me ...'")

@@ -341,3 +341,25 @@ def before_moved(chunks: list[Chunk]) -> list[Chunk]:
     following = next((j for j in range(nxt + 1, len(chunks)) if chunks[j].kind in ("verb", "join")), None)
     end = len(chunks) if following is None else following
     return chunks[nxt:end] + chunks[start:nxt] + chunks[end:]
+
+
+def restated(chunks: list[Chunk], kind_of: Callable[[Chunk], str]) -> list[Chunk]:
+    """A place said again at once as another, the hesitation between dropped ("bring the mug to the kitchen
+    uh the dining room"): the speaker corrected the first, so the second is meant. Only for a place a
+    preposition governs, the second after a determiner and ending the action (not "the living room sofa")."""
+    out = list(chunks)
+    for i in range(len(out) - 1, 0, -1):
+        if out[i].kind != "entity" or kind_of(out[i]) != "place":
+            continue
+        after = out[i + 1].kind if i + 1 < len(out) else "join"
+        first = i - 1
+        while first >= 0 and out[first].kind == "det":
+            first -= 1
+        if after not in ("verb", "join") or first == i - 1 or first < 0 or kind_of(out[first]) != "place":
+            continue
+        start = first
+        while start > 0 and out[start - 1].kind == "det":
+            start -= 1
+        if start > 0 and out[start - 1].kind == "prep":
+            return out[:start] + out[first + 1 :]
+    return out

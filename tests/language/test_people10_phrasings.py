@@ -9,7 +9,9 @@
 * a broader word ending a longer name ("computer" in "tablet computer") no longer makes a synonym's word
   ("laptop") name that thing;
 * a thing thrown away goes in the world's one bin: "throw the tissues away" (where there is none, or for
-  "put the tissues away", where to is asked).
+  "put the tissues away", where to is asked);
+* a place said again at once as another, after a hesitation: "bring the mug to the kitchen uh the dining
+  room" (the second is meant; "the living room sofa" stays the sofa).
 """
 
 from __future__ import annotations
@@ -124,3 +126,21 @@ def test_a_thing_thrown_away_goes_in_the_bin(vocabulary: Any, other_house: Any) 
     assert not put_away.accepted and "where should i put the tissues" in (put_away.question or "").lower()
     no_bin = understand("throw the stapler away", other_house, speaker="maria")
     assert not no_bin.accepted and "where should i put the stapler" in (no_bin.question or "").lower()
+
+
+def test_a_place_said_again_as_another(vocabulary: Any, other_house: Any) -> None:
+    assert frames_read(vocabulary, "bring the mug to the kitchen uh the dining room") == [
+        {"frame": "BRINGING", "theme": "mug", "goal": "dining_room"}
+    ]
+    assert frames_read(vocabulary, "go to the kitchen um the bedroom and open the blinds") == [
+        {"frame": "MOTION", "goal": "bedroom"},
+        {"frame": "OPERATING", "device": "bedroom_blinds", "state": "open"},
+    ]
+    assert frames_read(other_house, "take oscar to the garage er the study", speaker="maria") == [
+        {"frame": "ACCOMPANYING", "theme": "oscar", "goal": "study"}
+    ]
+    # one place named by two words, and a place that narrows a piece of furniture, are not corrections
+    assert frames_read(vocabulary, "go to the living room sofa") == [{"frame": "MOTION", "goal": "sofa"}]
+    assert frames_read(vocabulary, "put the mug on the table in the kitchen") == [
+        {"frame": "PLACING", "theme": "mug", "goal": "kitchen_table"}
+    ]
