@@ -142,6 +142,8 @@ class Chunker:
         }
         #: first words of verb phrases, for "-ing" forms ("would you mind getting me ...": get)
         self._verb_heads = {p.split()[0] for v in lang.verbs for p in v.phrases}
+        #: verb phrases ending with "if" ("check if"): what follows "if you" there is asked about, not wished
+        self._asking_if = [p.split() for v in lang.verbs for p in v.phrases if p.split()[-1] == "if"]
         self._known_words = {
             w for p in list(table) + list(self._full) + list(self._partial) for w in p.split()
         }
@@ -171,7 +173,7 @@ class Chunker:
         tokens = self._sides(self._apostrophes(tokens))
         lemmas = [self._lemma(t) for t in tokens]
         inflected = {i for i, (word, lemma) in enumerate(zip(tokens, lemmas, strict=True)) if word != lemma}
-        tokens = lemmas
+        tokens = [self._present(lemmas, i) for i in range(len(lemmas))]
         out: list[Chunk] = []
         i = 0
         while i < len(tokens):
@@ -287,6 +289,23 @@ class Chunker:
             if chunk is not None:
                 return chunk
         return None
+
+    def _present(self, words: Sequence[str], i: int) -> str:
+        """A verb said in the past in a polite wish as the verb ("i'd be grateful if you brought me ...":
+        bring; :attr:`CommandLanguage.past_forms`, or a regular "-ed" form), after "if you" but not after a
+        verb that asks ("check if you left the light on" stays); any other word as it is."""
+        word = words[i]
+        if i < 2 or list(words[i - 2 : i]) != ["if", "you"]:
+            return word
+        if any(list(words[max(0, i - 1 - len(p)) : i - 1]) == p for p in self._asking_if):
+            return word
+        if word in self.language.past_forms:
+            return self.language.past_forms[word]
+        doubled = word[:-3] if len(word) > 4 and word[-3] == word[-4] else ""  # "dropped": drop
+        for candidate in (word[:-2], word[:-1], doubled) if word.endswith("ed") else ():
+            if candidate in self._verb_heads:
+                return candidate
+        return word
 
     def _lemma(self, word: str) -> str:
         """A verb's "-ing" form as the verb ("switching": switch, "getting": get, "closing": close), when the

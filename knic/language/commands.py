@@ -99,6 +99,7 @@ class CommandLanguage:
     anywhere: tuple[str, ...] = ()
     discard_verbs: tuple[str, ...] = ()
     discard_places: tuple[str, ...] = ()
+    past_forms: dict[str, str] = field(default_factory=dict)
     bare_request: str | None = None
     type_nouns: dict[str, tuple[str, ...]] = field(default_factory=dict)
     repairs: tuple[str, ...] = ()
@@ -252,6 +253,7 @@ def load_language(path: str | Path = DEFAULT_PATH) -> CommandLanguage:
         spellings=_spellings(data, source),
         digit_words=_spellings(data, source, "digit_words"),
         typed_words=_spellings(data, source, "typed_words"),
+        past_forms=_spellings(data, source, "past_forms"),
     )
     lists: dict[str, tuple[str, ...]] = {v.name: v.spoken for v in verbs}
     spoken = _phrases(data, "spoken_determiners", source) or language.determiners

@@ -11,7 +11,9 @@
 * a thing thrown away goes in the world's one bin: "throw the tissues away" (where there is none, or for
   "put the tissues away", where to is asked);
 * a place said again at once as another, after a hesitation: "bring the mug to the kitchen uh the dining
-  room" (the second is meant; "the living room sofa" stays the sofa).
+  room" (the second is meant; "the living room sofa" stays the sofa);
+* a verb in the past in a polite wish: "i would be very grateful if you brought me the blanket", "it would be
+  nice if you went to the garage" ("see if you left the keys in the study" still asks where they are).
 """
 
 from __future__ import annotations
@@ -144,3 +146,30 @@ def test_a_place_said_again_as_another(vocabulary: Any, other_house: Any) -> Non
     assert frames_read(vocabulary, "put the mug on the table in the kitchen") == [
         {"frame": "PLACING", "theme": "mug", "goal": "kitchen_table"}
     ]
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        (
+            "i would be very grateful if you brought me the blanket",
+            [{"frame": "BRINGING", "theme": "blanket", "beneficiary": "me"}],
+        ),
+        ("it would be nice if you went to the garage", [{"frame": "MOTION", "goal": "garage"}]),
+        (
+            "i'd be grateful if you dropped the keys on the desk",
+            [{"frame": "PLACING", "theme": "keys", "goal": "desk"}],
+        ),
+        (
+            "i'd be grateful if you closed the study blinds",
+            [{"frame": "OPERATING", "device": "study_blinds", "state": "closed"}],
+        ),
+        # "if you" after a verb that asks: what follows is asked about
+        (
+            "see if you left the keys in the study",
+            [{"frame": "SEARCHING", "theme": "keys", "ground": "study"}],
+        ),
+    ],
+)
+def test_a_verb_in_the_past_in_a_polite_wish(other_house: Any, text: str, frames: list[Any]) -> None:
+    assert frames_read(other_house, text, speaker="maria") == frames
