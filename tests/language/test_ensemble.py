@@ -56,13 +56,13 @@ def test_auto_is_the_adaptation_first_then_the_wheel_model(auto: NgramRecognizer
 
 def test_the_first_model_is_kept_unless_another_fits_clearly_better() -> None:
     frames = 100
-    first = ("bring me the cup", 0.5, frames, (), True)
-    slightly = ("bring me a cup", 0.5 * math.exp(frames * FIRST_MEMBER_PREFERENCE / 2), frames, (), True)
-    clearly = ("bring me the cup", 0.5 * math.exp(frames * FIRST_MEMBER_PREFERENCE * 2), frames, (), True)
+    first = ("bring me the cup", 0.5, frames, (), True, 0)
+    slightly = ("bring me a cup", 0.5 * math.exp(frames * FIRST_MEMBER_PREFERENCE / 2), frames, (), True, 0)
+    clearly = ("bring me the cup", 0.5 * math.exp(frames * FIRST_MEMBER_PREFERENCE * 2), frames, (), True, 0)
     assert choose_member([first, slightly]) == 0
     assert choose_member([first, clearly]) == 1
-    assert choose_member([("", 0.0, frames, (), True), first]) == 1  # the first found no path at all
-    assert choose_member([first, ("", 0.0, frames, (), True)]) == 0
+    assert choose_member([("", 0.0, frames, (), True, 0), first]) == 1  # the first found no path at all
+    assert choose_member([first, ("", 0.0, frames, (), True, 0)]) == 0
 
 
 def test_another_engine_s_voice_is_heard_where_the_adaptation_alone_fails(

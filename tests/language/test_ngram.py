@@ -4,12 +4,15 @@ from __future__ import annotations
 
 import json
 import math
+import sys
+from array import array
 from pathlib import Path
 
 import pytest
 
 from knic.language.lmspeech import NgramRecognizer, confidence
 from knic.language.ngram import arpa_from_sentences
+from knic.language.phoneloop import SPEECH_END_MARGIN, speech_end, words_after_speech
 from knic.language.understanding import understand, understand_transcript
 from knic.language.vocabulary import Vocabulary
 
@@ -131,6 +134,33 @@ def test_a_word_heard_in_the_silence_after_the_command_is_dropped_when_it_change
     # a recogniser with a reader of one's own keeps what it heard
     own = NgramRecognizer(vocabulary, reads=lambda text: True, lazy=True)
     assert own._unheard_tail("bring me the remote but") == "bring me the remote but"
+
+
+def test_a_word_heard_after_the_speech_ended_goes_even_when_it_changes_the_reading(
+    recognizer: NgramRecognizer, vocabulary: Vocabulary
+) -> None:
+    gold = {e["text"]: e for e in json.loads((DEV / "gold.json").read_text())["utterances"]}
+    said = "can you see if tracy is in the kitchen"
+    heard = recognizer.recognize(DEV / gold[said]["file"])
+    assert heard.text == said  # the search had added "cupboard" in the silence: the kitchen cupboard
+    assert [f.to_dict() for f in understand(heard.text, vocabulary).frames] == gold[said]["frames"]
+
+
+def test_the_end_of_speech_is_where_the_energy_falls_far_below_the_loudest() -> None:
+    rate = 16000
+    loud = [int(8000 * math.sin(2 * math.pi * 440 * i / rate)) for i in range(rate)]  # 1 s of tone
+    quiet = [int(2 * math.sin(2 * math.pi * 440 * i / rate)) for i in range(rate // 2)]  # 0.5 s, -72 dB
+    samples = array("h", loud + quiet)
+    if sys.byteorder == "big":
+        samples.byteswap()  # the decoders' audio is little-endian
+    raw = samples.tobytes()
+    assert speech_end(raw) == 99  # the tone's last whole 10 ms frame
+    assert speech_end(array("h", [0] * 1600).tobytes()) == 0  # silence: nowhere
+    # words starting within SPEECH_END_MARGIN frames of the end, or after it, are after the speech
+    segments = [("<s>", 0), ("bring", 5), ("me", 40), ("the", 60), ("mug", 70), ("but", 95), ("</s>", 120)]
+    assert words_after_speech(segments, 99) == 1
+    assert words_after_speech(segments, 99 + SPEECH_END_MARGIN + 40) == 0
+    assert words_after_speech([("<s>", 0), ("mug", 120), ("[NOISE]", 130)], 99) == 0  # never every word
 
 
 def test_confidence_is_a_log_likelihood_ratio_per_frame() -> None:
