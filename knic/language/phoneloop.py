@@ -132,8 +132,6 @@ Decoded = tuple[str, float, int, tuple[str, ...], bool, int]
 SPEECH_END_DROP_DB = 30.0
 #: frames (10 ms) before the end of speech after which a word's start counts as after the speech
 SPEECH_END_MARGIN = 10
-#: what pocketsphinx's segmentation has besides words (and its other fillers, in brackets)
-_NOT_WORDS = ("<s>", "</s>", "<sil>")
 
 
 def ngram_padded(samples: bytes) -> bytes:
@@ -204,7 +202,8 @@ def speech_end(raw: bytes) -> int:
 def words_after_speech(segments: list[tuple[str, int]], end: int) -> int:
     """How many of the last words of a best path's segmentation (word, start frame) start after frame
     ``end`` less :data:`SPEECH_END_MARGIN` (never all of them)."""
-    words = [start for word, start in segments if word not in _NOT_WORDS and not word.startswith(("[", "<"))]
+    # pocketsphinx's segmentation has besides words <s>, </s>, <sil> and fillers in brackets ([NOISE])
+    words = [start for word, start in segments if not word.startswith(("<", "["))]
     count = 0
     while count < len(words) - 1 and words[-1 - count] >= end - SPEECH_END_MARGIN:
         count += 1

@@ -171,14 +171,20 @@ SYNONYMS_FILE = Path(__file__).with_name("synonyms.yaml")
 
 
 @lru_cache(maxsize=1)
+def _synonyms_file() -> dict[str, object]:
+    """:data:`SYNONYMS_FILE` as data (read once)."""
+    data = read_yaml(SYNONYMS_FILE, "synonyms", LanguageError) or {}
+    return data if isinstance(data, dict) else {}
+
+
+@lru_cache(maxsize=1)
 def english_synonyms() -> tuple[tuple[str, ...], ...]:
     """The sets of :data:`SYNONYMS_FILE` (read once).
 
     Raises:
         LanguageError: the file is unreadable or not a list of sets of two or more phrases.
     """
-    data = read_yaml(SYNONYMS_FILE, "synonyms", LanguageError) or {}
-    raw = data.get("synonyms") if isinstance(data, dict) else None
+    raw = _synonyms_file().get("synonyms")
     if not isinstance(raw, list) or not all(
         isinstance(group, list) and len(group) >= 2 and all(isinstance(p, str) and p.split() for p in group)
         for group in raw
@@ -190,8 +196,7 @@ def english_synonyms() -> tuple[tuple[str, ...], ...]:
 @lru_cache(maxsize=1)
 def english_broader() -> frozenset[str]:
     """The broader words of :data:`SYNONYMS_FILE` (``broader``: "computer"), read once."""
-    data = read_yaml(SYNONYMS_FILE, "synonyms", LanguageError) or {}
-    raw = data.get("broader", []) if isinstance(data, dict) else []
+    raw = _synonyms_file().get("broader", [])
     if not isinstance(raw, list) or not all(isinstance(p, str) and p.split() for p in raw):
         raise LanguageError(f"{SYNONYMS_FILE}: 'broader' is a list of phrases")
     return frozenset(" ".join(p.lower().split()) for p in raw)
