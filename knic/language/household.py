@@ -1,0 +1,220 @@
+"""What family members and carers say around a request in a busy household, tidied before it is read (used
+by :class:`knic.language.reader.Reader`, after its own tidying in :mod:`knic.language.tidy`).
+
+* hesitations inside a phrase ("when you um get a minute"), and "you're" after "when" or "once" ("when
+  you're done": when you are done), in the words (:func:`words_tidied`);
+* what a device is said or asked to be before the request about it ("is the hallway light on? turn it
+  off", "the blinds are stuck halfway, open them all the way"): the device is said, its state is not asked;
+* what someone is doing, said before or after the request ("jack's waiting in the hall, bring him the
+  water", "bring maria her laptop, she's working in the study"): talk; the person stays said for "him";
+* who left a thing where ("the tissues that grandma left on the sofa"): the place says where it is;
+* "on" before a place after a device's state was said ("turn off the lamp on the desk"): where, not on;
+* where a thing should go ("grandma's glasses need to go on her bedside table"): put it there;
+* "the other one" in a correction ("switch on the left lamp, no wait, the other one"): the other of a pair.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+
+from knic.language.chunks import Chunk
+from knic.language.vocabulary import Vocabulary
+
+#: hesitations, dropped even inside a phrase (they are fillers wherever they stand)
+HESITATIONS = frozenset({"um", "umm", "uh", "uhh", "uhm", "er", "erm", "hmm"})
+#: words after which "you're" opens a clause of time ("when you're done", "once you're finished")
+_TIME_WORDS = frozenset({"when", "once", "after", "until", "till"})
+_CONTRACTED = {"you're": ["you", "are"]}
+#: what a device is said to be before its state ("the blinds are still shut", "are stuck halfway")
+_STATE_WORDS = frozenset({"is", "are", "still", "already", "stuck", "left", "now", "all", "fully"})
+#: subjects said with "be" contracted ("she's working in the study")
+_DOERS = frozenset({"i'm", "we're", "they're", "he's", "she's", "you're"})
+#: what may stand between a thing and "go" when the speaker says where it should go
+_SHOULD = frozenset({"need", "needs", "to", "should", "must", "has", "have", "can", "could", "ought", "is"})
+
+
+def words_tidied(tokens: list[str]) -> list[str]:
+    """The words without hesitations, with "you're" spelled out after a word of time."""
+    out: list[str] = []
+    for token in tokens:
+        if token in HESITATIONS:
+            continue
+        if token in _CONTRACTED and out and out[-1] in _TIME_WORDS:
+            out += _CONTRACTED[token]
+            continue
+        out.append(token)
+    return out
+
+
+def said_around(chunks: list[Chunk], vocabulary: Vocabulary, put: Chunk | None = None) -> list[Chunk]:
+    """``chunks`` with what is said around the request tidied (see the module docstring); ``put`` is the verb
+    a thing's destination is read with."""
+
+    def is_a(chunk: Chunk, category: str) -> bool:
+        return any(vocabulary.is_subtype(t.type, category) for t in chunk.terms)
+
+    chunks = _state_said(chunks, is_a)
+    chunks = _doings(chunks, is_a)
+    chunks = _left_by(chunks, is_a)
+    chunks = _placed_on(chunks, is_a)
+    return _should_go(chunks, is_a, put) if put is not None else chunks
+
+
+def _next_verb(chunks: Sequence[Chunk], start: int) -> int | None:
+    """The index of the first verb said as a command from ``start`` (past joiners only), else None."""
+    at = start
+    while at < len(chunks) and chunks[at].kind == "join":
+        at += 1
+    return at if at < len(chunks) and chunks[at].kind == "verb" and not chunks[at].soft else None
+
+
+def _state_said(chunks: list[Chunk], is_a: Callable[[Chunk, str], bool]) -> list[Chunk]:
+    """A device's state said or asked before the first action ("is the hallway light on?", "the study blinds
+    are open", "the blinds are stuck halfway") with an action after it: the state is dropped, the device
+    stays said (for "it" or "them")."""
+    start = 1 if chunks and chunks[0].kind == "verb" and chunks[0].text in ("is", "are") else 0
+    at = start
+    while at < len(chunks) and chunks[at].kind == "det":
+        at += 1
+    if at >= len(chunks) or chunks[at].kind != "entity" or not is_a(chunks[at], "device"):
+        return chunks
+    device = at
+    at += 1
+    while at < len(chunks) and chunks[at].kind == "unknown" and chunks[at].text in _STATE_WORDS:
+        at += 1
+    if not start and at == device + 1:
+        return chunks  # "the lights off": a command
+    stated = at < len(chunks) and (
+        chunks[at].kind in ("state", "level", "number") or chunks[at].state is not None
+    )
+    if not stated or _next_verb(chunks, at + 1) is None:
+        return chunks
+    return chunks[start : device + 1] + chunks[at + 1 :]
+
+
+def _doings(chunks: list[Chunk], is_a: Callable[[Chunk, str], bool]) -> list[Chunk]:
+    """What someone is doing ("jack is waiting in the hall", "she's working in the study"): from "is" (or
+    the contracted subject) up to the next action or joiner; a person said as the subject stays said."""
+    out: list[Chunk] = []
+    i = 0
+    while i < len(chunks):
+        chunk = chunks[i]
+        subject = chunk.kind == "unknown" and chunk.text in _DOERS
+        be = (
+            chunk.kind == "unknown"
+            and chunk.text in ("is", "are")
+            and bool(out)
+            and out[-1].kind == "entity"
+            and is_a(out[-1], "person")
+        )
+        nxt = chunks[i + 1] if i + 1 < len(chunks) else None
+        doing = nxt is not None and (
+            (nxt.kind == "verb" and nxt.soft) or (nxt.kind == "unknown" and nxt.text.endswith("ing"))
+        )
+        if not ((subject or be) and doing):
+            out.append(chunk)
+            i += 1
+            continue
+        end = i + 2
+        while (
+            end < len(chunks)
+            and chunks[end].kind != "join"
+            and (chunks[end].kind != "verb" or chunks[end].soft)
+        ):
+            end += 1
+        if end == len(chunks) and not any(c.kind == "verb" and not c.soft for c in out):
+            out.append(chunk)  # nothing asked besides: left as said
+            i += 1
+            continue
+        i = end
+    return out
+
+
+def _left_by(chunks: list[Chunk], is_a: Callable[[Chunk, str], bool]) -> list[Chunk]:
+    """Drop "that grandma left" between a thing and where it is ("the tissues that grandma left on the
+    sofa", "the stapler that oscar put on the desk"): the place says where the thing is."""
+    for i in range(1, len(chunks) - 3):
+        that, doer, doing, where = chunks[i : i + 4]
+        if (
+            chunks[i - 1].kind == "entity"
+            and that.text in ("that", "which")
+            and doer.kind == "entity"
+            and is_a(doer, "person")
+            and doing.kind in ("unknown", "verb")
+            and where.kind == "prep"
+        ):
+            return chunks[:i] + chunks[i + 3 :]
+    return chunks
+
+
+def _placed_on(chunks: list[Chunk], is_a: Callable[[Chunk, str], bool]) -> list[Chunk]:
+    """A state word said as a preposition before a place, once the action's state is said, after a name
+    ("turn off the lamp on the desk"): where the device is, not a second state."""
+    out = list(chunks)
+    stated = False
+    for i, chunk in enumerate(out):
+        if chunk.kind == "verb":
+            stated = chunk.state is not None
+            continue
+        place = next((c for c in out[i + 1 :] if c.kind != "det"), Chunk("unknown", ""))
+        placed = place.kind == "entity" and (is_a(place, "furniture") or is_a(place, "room"))
+        named = i > 0 and out[i - 1].kind == "entity"
+        if chunk.kind == "prep" and chunk.state is not None and stated and placed and named:
+            out[i] = Chunk("prep", chunk.text, role="place")
+        elif chunk.kind == "state" or (chunk.kind == "prep" and chunk.state is not None):
+            stated = True
+    return out
+
+
+def _should_go(chunks: list[Chunk], is_a: Callable[[Chunk, str], bool], put: Chunk) -> list[Chunk]:
+    """Where a thing should go, said before any action ("grandma's glasses need to go on her bedside table",
+    "the laptop should go on the desk"): put the thing there."""
+    thing = next((i for i, c in enumerate(chunks) if c.kind in ("entity", "verb")), None)
+    if not thing or chunks[thing].kind != "entity" or not is_a(chunks[thing], "item"):
+        return chunks
+    if chunks[thing - 1].kind not in ("det", "owner"):
+        return chunks  # "you can go in the dining room": no thing said ("can": the coke can)
+    go = thing + 1
+    while go < len(chunks) and chunks[go].text in _SHOULD:
+        go += 1
+    if go + 1 >= len(chunks) or chunks[go].frames != ("MOTION",) or chunks[go + 1].kind != "prep":
+        return chunks
+    start = thing
+    while start > 0 and chunks[start - 1].kind in ("det", "owner"):
+        start -= 1
+    return [*chunks[:start], put, *chunks[start : thing + 1], *chunks[go + 1 :]]
+
+
+def other_one(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
+    """ "The other one" (or "the other light") in a correction: the other of the pair the thing said before
+    belongs to ("switch on the left lamp, no wait, the other one": the right lamp), or the one other thing
+    of its type; left as said when there is no such one."""
+    for i, chunk in enumerate(chunks[:-2]):
+        if chunk.kind != "repair":
+            continue
+        at = i + 1
+        while at < len(chunks) and chunks[at].kind == "det":
+            at += 1
+        if at >= len(chunks) or chunks[at].text != "other":
+            continue
+        end = at + 1
+        if end < len(chunks) and (chunks[end].text == "one" or chunks[end].kind == "entity"):
+            end += 1
+        said = next((c for c in reversed(chunks[:i]) if c.kind == "entity" and len(c.terms) == 1), None)
+        if said is None:
+            continue
+        symbol = said.terms[0].symbol
+        pairs = [
+            t.members for t in vocabulary.terms if t.is_group and len(t.members) == 2 and symbol in t.members
+        ]
+        others = [m for m in pairs[0] if m != symbol] if pairs else []
+        if not others:
+            kind = vocabulary.type_of(symbol)
+            others = list(
+                {t.symbol for t in vocabulary.terms if not t.is_group and t.type == kind} - {symbol}
+            )
+        terms = tuple(t for t in vocabulary.terms if others and t.symbol == others[0])[:1]
+        if len(others) != 1 or not terms:
+            continue
+        return [*chunks[: i + 1], Chunk("entity", terms[0].phrase, terms), *chunks[end:]]
+    return chunks
