@@ -190,7 +190,8 @@ class Recognizer:
         raw = pcm_bytes(audio)
         started = time.perf_counter()
         decoder = self._decoder
-        decoder.set_cmn(self._initial_cmn)  # every utterance starts from the same cepstral mean: order-free
+        decoder.reinit_feat()  # the front end's state starts afresh: order-free, as a new recogniser decodes
+        decoder.set_cmn(self._initial_cmn)
         decoder.start_utt()
         decoder.process_raw(pad_pcm(raw), full_utt=True)
         decoder.end_utt()
@@ -297,6 +298,7 @@ class AnswerRecognizer:
         raw = pcm_bytes(audio)
         decoder = self._decoder
         decoder.activate_search("closed" if closed else "answer")
+        decoder.reinit_feat()
         decoder.set_cmn(self._initial_cmn)
         decoder.start_utt()
         decoder.process_raw(pad_pcm(raw), full_utt=True)
