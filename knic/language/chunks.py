@@ -142,6 +142,15 @@ class Chunker:
         }
         #: first words of verb phrases, for "-ing" forms ("would you mind getting me ...": get)
         self._verb_heads = {p.split()[0] for v in lang.verbs for p in v.phrases}
+        #: "-ed" forms of the verbs whose past is not so ("bringed", "taked", "putted"): no English word, so
+        #: the verb wherever said (a learner's past, read as the command)
+        irregular = {v for v in lang.past_forms.values() if v in self._verb_heads}
+        self._overregular = {
+            form: verb
+            for verb in irregular
+            for form in ((verb + "d",) if verb.endswith("e") else (verb + "ed", verb + verb[-1] + "ed"))
+            if form not in lang.past_forms
+        }
         #: verb phrases ending with "if" ("check if"): what follows "if you" there is asked about, not wished
         self._asking_if = [p.split() for v in lang.verbs for p in v.phrases if p.split()[-1] == "if"]
         self._known_words = {
@@ -239,7 +248,7 @@ class Chunker:
                 or base in _KEPT_CONTRACTIONS
             ):
                 out.append(token)
-            elif i + 1 < len(tokens) and (tokens[i + 1] in self._noun_heads or self._whose(out, base)):
+            elif i + 1 < len(tokens) and tokens[i + 1] in self._noun_heads:
                 owner = next(  # the words of a person's name ending here ("granny annie's")
                     (
                         n
@@ -254,16 +263,6 @@ class Chunker:
             else:
                 out += [base, "is"]
         return out
-
-    def _whose(self, before: list[str], name: str) -> bool:
-        """Whether a person's name with "'s", said right after a verb, a preposition or "me", owns what
-        follows ("fetch grandma's medicine": the medicine, which the world may lack) rather than being said
-        to be something ("jack's hungry")."""
-        if name not in self._people or not before:
-            return False
-        entry = self._table.get(before[-1])
-        said = entry[1] if entry is not None else None
-        return before[-1] == "me" or (said is not None and said.kind in ("verb", "prep"))
 
     def _sides(self, tokens: list[str]) -> list[str]:
         """A thing told from the others by where it is, said after it ("the light on the right", "the table
@@ -305,6 +304,8 @@ class Chunker:
         bring; :attr:`CommandLanguage.past_forms`, or a regular "-ed" form), after "if you" but not after a
         verb that asks ("check if you left the light on" stays); any other word as it is."""
         word = words[i]
+        if word in self._overregular:  # "robot, bringed me the apple": a learner's past of bring, anywhere
+            return self._overregular[word]
         if i < 2 or list(words[i - 2 : i]) != ["if", "you"]:
             return word
         if any(list(words[max(0, i - 1 - len(p)) : i - 1]) == p for p in self._asking_if):

@@ -10,7 +10,11 @@ by :class:`knic.language.reader.Reader`, after its own tidying in :mod:`knic.lan
 * who left a thing where ("the tissues that grandma left on the sofa"): the place says where it is;
 * "on" before a place after a device's state was said ("turn off the lamp on the desk"): where, not on;
 * where a thing should go ("grandma's glasses need to go on her bedside table"): put it there;
-* "the other one" in a correction ("switch on the left lamp, no wait, the other one"): the other of a pair.
+* "the other one" in a correction ("switch on the left lamp, no wait, the other one"): the other of a pair;
+  "the right one" after "the left lamp": the right lamp (:func:`ones_named`);
+* "my room", "her room": the bedroom, where the world has one;
+* a place said again at once as another before the action goes on ("bring the cup from the kitchen table um
+  the counter to tracy"): the second is meant.
 """
 
 from __future__ import annotations
@@ -53,7 +57,7 @@ def said_around(chunks: list[Chunk], vocabulary: Vocabulary, put: Chunk | None =
     def is_a(chunk: Chunk, category: str) -> bool:
         return any(vocabulary.is_subtype(t.type, category) for t in chunk.terms)
 
-    chunks = _state_said(chunks, is_a)
+    chunks = _state_said(_own_room(_restated_before(chunks, is_a), vocabulary), is_a)
     chunks = _doings(chunks, is_a)
     chunks = _left_by(chunks, is_a)
     chunks = _placed_on(chunks, is_a)
@@ -218,3 +222,68 @@ def other_one(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
             continue
         return [*chunks[: i + 1], Chunk("entity", terms[0].phrase, terms), *chunks[end:]]
     return chunks
+
+
+#: words before "room" that make it someone's own room ("my room", "her room")
+_OWNERS = frozenset({"my", "your", "his", "her", "our", "their"})
+
+
+def _own_room(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
+    """ "my room", "her room": the bedroom, where the world has exactly one room called so."""
+    bedrooms = [
+        t for t in vocabulary.terms if t.phrase.endswith("bedroom") and vocabulary.is_subtype(t.type, "room")
+    ]
+    if len({t.symbol for t in bedrooms}) != 1:
+        return chunks
+    return [
+        Chunk("entity", bedrooms[0].phrase, (bedrooms[0],), role=c.role)
+        if c.kind == "entity" and c.text == "room" and i and chunks[i - 1].text in _OWNERS
+        else c
+        for i, c in enumerate(chunks)
+    ]
+
+
+def _restated_before(chunks: list[Chunk], is_a: Callable[[Chunk, str], bool]) -> list[Chunk]:
+    """A place a preposition governs, said again at once as another with its determiner and followed by
+    another preposition ("from the kitchen table um the counter to tracy"): the first is dropped."""
+
+    def place(at: int) -> bool:
+        return (
+            at < len(chunks)
+            and chunks[at].kind == "entity"
+            and (is_a(chunks[at], "furniture") or is_a(chunks[at], "room"))
+        )
+
+    for i, chunk in enumerate(chunks[:-4]):
+        first = i + 1
+        while first < len(chunks) and chunks[first].kind == "det":
+            first += 1
+        again = first + 1
+        while again < len(chunks) and chunks[again].kind == "det":
+            again += 1
+        said_again = again > first + 1 and place(first) and place(again)
+        if (
+            chunk.kind == "prep"
+            and said_again
+            and again + 1 < len(chunks)
+            and chunks[again + 1].kind == "prep"
+        ):
+            return [*chunks[: i + 1], *chunks[first + 1 :]]
+    return chunks
+
+
+def ones_named(segments: list[list[str]], vocabulary: Vocabulary) -> list[list[str]]:
+    """ "the right one" said after "the left lamp": "the right lamp", where the world has a thing called so
+    (the last word of a name said before, with the word said before "one")."""
+    names = {t.phrase for t in vocabulary.terms if len(t.phrase.split()) == 2}
+    said: list[str] = []
+    out: list[list[str]] = []
+    for segment in segments:
+        kept = list(segment)
+        for i in range(1, len(kept)):
+            heads = [w for w in said + kept[:i] if f"{kept[i - 1]} {w}" in names]
+            if kept[i] == "one" and heads:
+                kept[i] = heads[-1]
+        said += kept
+        out.append(kept)
+    return out

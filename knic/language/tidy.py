@@ -305,19 +305,32 @@ def forbidden_dropped(chunks: list[Chunk]) -> list[Chunk]:
     return out
 
 
+#: "what" said for "that" after a thing ("the cup what is on the counter"), as many speakers do
+_RELATIVE_WHAT = ("what",)
 #: who does what a relative clause says ("the glasses that i left in the living room")
 _DOERS = frozenset({"i", "you", "we", "they", "he", "she"})
 
 
 def relative_dropped(chunks: list[Chunk]) -> list[Chunk]:
     """Drop "that i left", "which you put" between a thing and where it is ("find the glasses that i left in
-    the living room", "bring me the mug that you put on the table"): the place says where the thing is."""
+    the living room", "bring me the mug that you put on the table"): the place says where the thing is. "what"
+    said for "that" is the same ("the mug what i left on the table", "the cup what is on the counter")."""
     out = list(chunks)
+    for i in range(1, len(out) - 2):
+        what, copula, where = out[i : i + 3]
+        if (
+            out[i - 1].kind == "entity"
+            and what.kind == copula.kind == "unknown"
+            and what.text in _RELATIVE_WHAT
+            and copula.text in COPULAS
+            and where.kind == "prep"
+        ):
+            return out[:i] + out[i + 2 :]
     for i in range(1, len(out) - 3):
         that, doer, doing, where = out[i : i + 4]
         if (
             out[i - 1].kind == "entity"
-            and that.text in ("that", "which")
+            and that.text in ("that", "which", *_RELATIVE_WHAT)
             and doer.text in _DOERS
             and doer.kind in ("unknown", "pronoun")
             and doing.kind in ("unknown", "verb")

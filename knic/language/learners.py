@@ -1,0 +1,121 @@
+"""Orders and shortcuts of speakers of English as a second language, and of elderly speakers, read as the
+command they mean (used by :class:`knic.language.reader.Reader`): the verb said last ("to the bathroom go"),
+where the speaker themself goes said before the request ("i go to bed now, switch off the lamp"), a room told
+by what is in it ("go to the room where is the bed")."""
+
+from __future__ import annotations
+
+from knic.language.chunks import Chunk
+from knic.language.tidy import unplaced
+from knic.language.vocabulary import Vocabulary
+
+
+def learners_read(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
+    """The chunks with the orders of this module put as a command says them."""
+    return verb_last_moved(own_going_dropped(room_told(chunks, vocabulary)))
+
+
+#: words that say what a room holds after "room": "where" (and the search verb "where is" a learner's order
+#: makes of "where is the bed"), "with", "that has"
+_HOLDING = frozenset({"where", "where is", "where are", "with", "that has", "which has"})
+#: what may close the thing's name ("where the bed is")
+_COPULAS = frozenset({"is", "are", "stands"})
+
+
+def room_told(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
+    """ "room", a word saying what it holds, and a thing the world places in exactly one room: that room
+    ("go to the room where is the crib": the nursery). A thing in no room or in several leaves the words as
+    said."""
+    for i in range(len(chunks) - 2):
+        if chunks[i].text not in ("room", "rooms") or chunks[i + 1].text not in _HOLDING:
+            continue
+        at = i + 2
+        while at < len(chunks) and chunks[at].kind == "det":
+            at += 1
+        if at >= len(chunks) or chunks[at].kind != "entity":
+            continue
+        rooms = {
+            place
+            for term in chunks[at].terms
+            for place in vocabulary.locations.get(term.symbol, ())
+            if _is_room(vocabulary, place)
+        }
+        if len(rooms) != 1:
+            continue
+        room = rooms.pop()
+        terms = tuple(t for t in vocabulary.terms if t.symbol == room)[:1]
+        end = at + 1
+        if end < len(chunks) and chunks[end].kind == "unknown" and chunks[end].text in _COPULAS:
+            end += 1
+        return [*chunks[:i], Chunk("entity", terms[0].phrase, terms), *chunks[end:]]
+    return chunks
+
+
+def _is_room(vocabulary: Vocabulary, symbol: str) -> bool:
+    return any(t.symbol == symbol and vocabulary.is_subtype(t.type, "room") for t in vocabulary.terms)
+
+
+#: what may stand before a verb said last ("to the bathroom go", "the candle on the dining table put it")
+_BEFORE_LAST_VERB = frozenset({"det", "entity", "prep", "me", "quant"})
+
+
+#: what may follow a verb said last, with it: how a device is set ("the blinds open halfway")
+_SETTINGS = frozenset({"state", "level", "number", "percent", "vague"})
+
+
+def verb_last_moved(chunks: list[Chunk]) -> list[Chunk]:
+    """An action said with its verb last, as in the speaker's first language ("to the bathroom go please",
+    "the candle on the dining table put it", "close the blinds and the desk lamp switch on"): the verb, with
+    how a device is set said right after it, is put first, and an "it" or "them" right after it, for the
+    thing said before, is dropped. Only where the action starts the command or follows a joiner, when names,
+    determiners and prepositions alone come before the verb and nothing but a joiner or another action after
+    it; a verb that takes its subject before it ("tracy needs") stays."""
+    out = list(chunks)
+    for start in range(len(out)):
+        if start and out[start - 1].kind != "join":
+            continue
+        verb = next((i for i in range(start, len(out)) if out[i].kind == "verb"), None)
+        if verb is None or verb == start or out[verb].beneficiary == "subject":
+            continue
+        before = out[start:verb]
+        if any(c.kind not in _BEFORE_LAST_VERB for c in before) or not any(
+            c.kind == "entity" for c in before
+        ):
+            continue
+        after = verb + 1
+        while after < len(out) and (out[after].kind in _SETTINGS or out[after].state is not None):
+            after += 1  # "switch on", "turn off", "open a little, 10 percent"
+        said = out[verb:after]
+        if unplaced(before) and after < len(out) and out[after].kind == "pronoun":
+            after += 1
+        if after < len(out) and out[after].kind not in ("join", "verb"):
+            continue
+        out = [*out[:start], *said, *before, *out[after:]]
+    return out
+
+
+#: the speaker said as who does something ("i go to bed now", "i'm going out")
+_SPEAKER_SUBJECTS = (("i",), ("we",), ("i'm",), ("im",), ("we're",), ("i", "am"), ("we", "are"))
+
+
+def own_going_dropped(chunks: list[Chunk]) -> list[Chunk]:
+    """Drop where the speaker says they are going before asking something ("i go to bed now, switch off the
+    lamp", "i'm going to the garden, close the blinds"): "i" or "we" and a verb of going only, up to the next
+    action; said alone ("i go kitchen") it stays, as the request it may be."""
+    said = [c.text if c.kind == "unknown" else "" for c in chunks[:2]]
+    size = next(
+        (len(s) for s in sorted(_SPEAKER_SUBJECTS, key=len, reverse=True) if said[: len(s)] == list(s)), 0
+    )
+    if (
+        not size
+        or len(chunks) < size + 2
+        or chunks[size].kind != "verb"
+        or chunks[size].frames != ("MOTION",)
+    ):
+        return chunks
+    nxt = next((i for i in range(size + 1, len(chunks)) if chunks[i].kind in ("verb", "join")), None)
+    if nxt is None:
+        return chunks
+    while nxt < len(chunks) and (chunks[nxt].kind == "join" or chunks[nxt].text == "you"):
+        nxt += 1
+    return chunks[nxt:] if nxt < len(chunks) and chunks[nxt].kind == "verb" else chunks
