@@ -248,7 +248,7 @@ class Chunker:
                 or base in _KEPT_CONTRACTIONS
             ):
                 out.append(token)
-            elif i + 1 < len(tokens) and tokens[i + 1] in self._noun_heads:
+            elif i + 1 < len(tokens) and (tokens[i + 1] in self._noun_heads or self._whose(out, base)):
                 owner = next(  # the words of a person's name ending here ("granny annie's")
                     (
                         n
@@ -263,6 +263,16 @@ class Chunker:
             else:
                 out += [base, "is"]
         return out
+
+    def _whose(self, before: list[str], name: str) -> bool:
+        """Whether a person's name with "'s", said right after a verb, a preposition or "me", owns what
+        follows ("fetch grandma's medicine": the medicine, which the world may lack) rather than being said
+        to be something ("jack's hungry")."""
+        if name not in self._people or not before:
+            return False
+        entry = self._table.get(before[-1])
+        said = entry[1] if entry is not None else None
+        return before[-1] == "me" or (said is not None and said.kind in ("verb", "prep"))
 
     def _sides(self, tokens: list[str]) -> list[str]:
         """A thing told from the others by where it is, said after it ("the light on the right", "the table

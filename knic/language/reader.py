@@ -38,6 +38,7 @@ from knic.language.chunks import Chunk, Chunker
 from knic.language.clauses import Arg, Clause, split_clauses
 from knic.language.commands import CommandLanguage, command_language
 from knic.language.frames import SPEAKER, CommandFrame
+from knic.language.household import ones_named, other_one, said_around, words_tidied
 from knic.language.learners import learners_read
 from knic.language.roles import INTERPRETERS
 from knic.language.segments import (
@@ -75,6 +76,7 @@ class Reader:
         self.vocabulary = vocabulary
         self.language = language or command_language()
         self.chunker = Chunker(vocabulary, self.language)
+        self._put = self.chunker.chunks(["put"])[0]  # where a thing should go (knic.language.household)
         # what makes a typed digit a number, not a word it sounds like ("to 2 percent", not "to to percent")
         self._units = frozenset(p.split()[0] for p in self.language.percent)
         level_words = self.language.prepositions.get("level", ())
@@ -113,12 +115,13 @@ class Reader:
             self._before_numbers,
         )
         segments = [
-            spelled(normalize(part).split(), self.language.spellings) for part in SEGMENT_END.split(text)
+            words_tidied(spelled(normalize(part).split(), self.language.spellings))
+            for part in SEGMENT_END.split(text)
         ]
         segments = [segment for segment in segments if segment]
         if not segments:
             raise LanguageError("nothing to understand: the command is empty")
-        segments = sorry_repairs(segments, self.chunks)
+        segments = sorry_repairs(ones_named(segments, self.vocabulary), self.chunks)
         # pointing first ("see that candle? put it on the nightstand"), else as said; unpunctuated ("close the
         # blinds it's too bright in here"): read again with the sentences the words start, then without those
         # that only state something (knic.language.segments)
@@ -173,17 +176,20 @@ class Reader:
         return fluent(tokens, self.language.determiners)
 
     def _names_things(self, tokens: list[str]) -> bool:
-        """Whether a stretch of a command names an object, a place or a device of the world."""
-        return any(
-            chunk.kind == "entity"
-            and any(self.is_a(t, c) for t in chunk.terms for c in ("item", "room", "furniture", "device"))
-            for chunk in self.chunks(tokens)
-        )
+        """Whether a stretch of a command names an object, a place, a device or a person of the world."""
+        kinds = ("item", "room", "furniture", "device", "person")
+        said = self.chunks(tokens)
+        # or asks for an action on "it" or "them" ("open them please"; not "i need it")
+        acts = said[:1] and said[0].kind == "verb" and said[0].beneficiary is None
+        if acts and any(c.kind == "pronoun" and c.role != "person" for c in said):
+            return True
+        return any(self.is_a(t, k) for c in said for t in c.terms for k in kinds)
 
     def _read_tokens(self, tokens: list[str]) -> Reading:
         """:meth:`read` of normalised tokens."""
         chunks = learners_read(self.chunks(tokens), self.vocabulary)
         chunks = before_moved(relative_dropped(forbidden_dropped(chunks)))
+        chunks = said_around(other_one(chunks, self.vocabulary), self.vocabulary, self._put)
         chunks = restated(negated_dropped(chunks, self.language.negations), self._kind_of)
         chunks = sayings_dropped(doings_dropped(talk_dropped(repaired(left_undone(chunks), self._kind_of))))
         if not chunks:
