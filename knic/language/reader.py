@@ -167,6 +167,10 @@ class Reader:
         try:
             return self._read_tokens(self._fluent([t for segment in kept for t in segment]))
         except LanguageError as exc:
+            wider = [segment for segment in segments if self._names_things(segment, it=True)]
+            if len(kept) < len(wider) < len(segments):  # "are the blinds shut? open them, i want some light"
+                with contextlib.suppress(LanguageError):
+                    return self._read_tokens(self._fluent([t for segment in wider for t in segment]))
             acts = any(chunk.kind == "verb" for segment in kept for chunk in self.chunks(segment))
             # a question about what the request names beats a complaint about the talk ("light on please,
             # I can't see": which light?)
@@ -175,12 +179,12 @@ class Reader:
     def _fluent(self, tokens: list[str]) -> list[str]:
         return fluent(tokens, self.language.determiners)
 
-    def _names_things(self, tokens: list[str]) -> bool:
-        """Whether a stretch of a command names an object, a place, a device or a person of the world."""
+    def _names_things(self, tokens: list[str], it: bool = False) -> bool:
+        """Whether a stretch of a command names an object, a place, a device or a person of the world; with
+        ``it``, also whether it asks for an action on "it" or "them" ("open them please"; not "i need it")."""
         kinds = ("item", "room", "furniture", "device", "person")
         said = self.chunks(tokens)
-        # or asks for an action on "it" or "them" ("open them please"; not "i need it")
-        acts = said[:1] and said[0].kind == "verb" and said[0].beneficiary is None
+        acts = it and said[:1] and said[0].kind == "verb" and said[0].beneficiary is None
         if acts and any(c.kind == "pronoun" and c.role != "person" for c in said):
             return True
         return any(self.is_a(t, k) for c in said for t in c.terms for k in kinds)
