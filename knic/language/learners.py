@@ -1,7 +1,7 @@
 """Orders and shortcuts of speakers of English as a second language, and of elderly speakers, read as the
 command they mean (used by :class:`knic.language.reader.Reader`): the verb said last ("to the bathroom go"),
 where the speaker themself goes said before the request ("i go to bed now, switch off the lamp"), a room told
-by what is in it ("go to the room where is the bed")."""
+by what is in it ("go to the room where is the bed"), "give it me"."""
 
 from __future__ import annotations
 
@@ -12,7 +12,16 @@ from knic.language.vocabulary import Vocabulary
 
 def learners_read(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
     """The chunks with the orders of this module put as a command says them."""
-    return verb_last_moved(own_going_dropped(room_told(chunks, vocabulary)))
+    return verb_last_moved(own_going_dropped(room_told(it_me(chunks), vocabulary)))
+
+
+def it_me(chunks: list[Chunk]) -> list[Chunk]:
+    """ "give it me", "bring them me" (British): "it" or "them" right after a verb, then "me", is to me."""
+    out = list(chunks)
+    for i in range(len(out) - 2, 0, -1):
+        if out[i - 1].kind == "verb" and out[i].kind == "pronoun" and out[i + 1].kind == "me":
+            out.insert(i + 1, Chunk("prep", "to", role="goal"))
+    return out
 
 
 #: words that say what a room holds after "room": "where" (and the search verb "where is" a learner's order
@@ -88,6 +97,9 @@ def verb_last_moved(chunks: list[Chunk]) -> list[Chunk]:
         said = out[verb:after]
         if unplaced(before) and after < len(out) and out[after].kind == "pronoun":
             after += 1
+            while after < len(out) and (out[after].kind in _SETTINGS or out[after].state is not None):
+                said.append(out[after])  # "the hall light, turn it off"
+                after += 1
         if after < len(out) and out[after].kind not in ("join", "verb"):
             continue
         out = [*out[:start], *said, *before, *out[after:]]

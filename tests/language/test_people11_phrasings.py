@@ -10,7 +10,8 @@ the reader first got wrong.
 * a room told by what is in it: "go to the room where is the sofa", "the room with the workbench";
 * "what" for "that" after a thing: "take the cup what is on the dining table";
 * a speaker searching for a word: "switch on, how do you say, the hall light";
-* "only" as "just", "little bit" without its article; "telly" refused as said where there is none.
+* "only" as "just", "little bit" without its article; "telly" refused as said where there is none;
+* "give it me" (to me); a device said before its verb and "it" after ("the lamp, switch it on": which?).
 """
 
 from __future__ import annotations
@@ -103,3 +104,19 @@ def test_only_little_bit_and_telly(vocabulary: Any) -> None:
     assert frames_read(vocabulary, "give me the telly remote") == [
         {"frame": "BRINGING", "theme": "remote", "beneficiary": "me"}
     ]
+
+
+def test_give_it_me_and_a_device_said_before_its_verb(vocabulary: Any, other_house: Any) -> None:
+    assert frames_read(other_house, "the laptop, give it me", speaker="oscar") == [
+        {"frame": "BRINGING", "theme": "laptop", "beneficiary": "me"}
+    ]
+    assert frames_read(vocabulary, "take the lemon and bring it me") == [
+        {"frame": "TAKING", "theme": "lemon"},
+        {"frame": "BRINGING", "theme": "lemon", "beneficiary": "me"},
+    ]
+    # a device said before the verb and "it" after it: the device, asked about when several fit
+    assert frames_read(other_house, "the garage light, switch it off", speaker="oscar") == [
+        {"frame": "OPERATING", "device": "garage_light", "state": "off"}
+    ]
+    result = understand("the lamp, switch it on", vocabulary, speaker="annie")
+    assert not result.accepted and result.question and "lamp" in result.question
