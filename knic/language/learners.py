@@ -92,12 +92,12 @@ def verb_last_moved(chunks: list[Chunk]) -> list[Chunk]:
         ):
             continue
         after = verb + 1
-        while after < len(out) and (out[after].kind in _SETTINGS or out[after].state is not None):
-            after += 1  # "switch on", "turn off", "open a little, 10 percent"
+        while after < len(out) and _setting(out, after):
+            after += 1  # "switch on", "turn off", "open a little, like 10 percent"
         said = out[verb:after]
         if unplaced(before) and after < len(out) and out[after].kind == "pronoun":
             after += 1
-            while after < len(out) and (out[after].kind in _SETTINGS or out[after].state is not None):
+            while after < len(out) and _setting(out, after):
                 said.append(out[after])  # "the hall light, turn it off"
                 after += 1
         if after < len(out) and out[after].kind not in ("join", "verb"):
@@ -131,3 +131,14 @@ def own_going_dropped(chunks: list[Chunk]) -> list[Chunk]:
     while nxt < len(chunks) and (chunks[nxt].kind == "join" or chunks[nxt].text == "you"):
         nxt += 1
     return chunks[nxt:] if nxt < len(chunks) and chunks[nxt].kind == "verb" else chunks
+
+
+def _setting(chunks: list[Chunk], at: int) -> bool:
+    """Whether the chunk at ``at`` says how a device is set: a state, a level, a number, "percent", a vague
+    amount, or a word the tables lack or a preposition right before a level ("like 10 percent", "around
+    half")."""
+    chunk = chunks[at]
+    if chunk.kind in _SETTINGS or chunk.state is not None:
+        return True
+    hedged = at + 1 < len(chunks) and chunks[at + 1].kind in ("number", "level")
+    return hedged and chunk.kind in ("unknown", "prep")

@@ -120,3 +120,12 @@ def test_give_it_me_and_a_device_said_before_its_verb(vocabulary: Any, other_hou
     ]
     result = understand("the lamp, switch it on", vocabulary, speaker="annie")
     assert not result.accepted and result.question and "lamp" in result.question
+
+
+def test_a_device_set_with_its_verb_last(vocabulary: Any, other_house: Any) -> None:
+    assert frames_read(other_house, "study blinds close a little, like 20 percent", speaker="oscar") == [
+        {"frame": "OPERATING", "device": "study_blinds", "state": "20"}
+    ]
+    assert frames_read(vocabulary, "the dimmer, put it around seventy") == [
+        {"frame": "OPERATING", "device": "living_room_dimmer", "state": "70"}
+    ]
