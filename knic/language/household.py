@@ -10,6 +10,8 @@ by :class:`knic.language.reader.Reader`, after its own tidying in :mod:`knic.lan
 * who left a thing where ("the tissues that grandma left on the sofa"): the place says where it is;
 * "on" before a place after a device's state was said ("turn off the lamp on the desk"): where, not on;
 * where a thing should go ("grandma's glasses need to go on her bedside table"): put it there;
+* a thing to take along where the robot goes ("go to the bedroom and don't forget the glasses", "... and
+  take the glasses with you"): the thing is taken there first;
 * "the other one" in a correction ("switch on the left lamp, no wait, the other one"): the other of a pair;
   "the right one" after "the left lamp": the right lamp (:func:`ones_named`);
 * "my room", "her room": the bedroom, where the world has one;
@@ -21,7 +23,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Sequence
 
-from knic.language.chunks import Chunk
+from knic.language.chunks import Chunk, Chunker
 from knic.language.vocabulary import Vocabulary
 
 #: hesitations, dropped even inside a phrase (they are fillers wherever they stand)
@@ -50,9 +52,9 @@ def words_tidied(tokens: list[str]) -> list[str]:
     return out
 
 
-def said_around(chunks: list[Chunk], vocabulary: Vocabulary, put: Chunk | None = None) -> list[Chunk]:
-    """``chunks`` with what is said around the request tidied (see the module docstring); ``put`` is the verb
-    a thing's destination is read with."""
+def said_around(chunks: list[Chunk], vocabulary: Vocabulary, chunker: Chunker | None = None) -> list[Chunk]:
+    """``chunks`` with what is said around the request tidied (see the module docstring); ``chunker`` gives
+    the verbs a thing's destination is read with ("put", "take")."""
 
     def is_a(chunk: Chunk, category: str) -> bool:
         return any(vocabulary.is_subtype(t.type, category) for t in chunk.terms)
@@ -61,7 +63,10 @@ def said_around(chunks: list[Chunk], vocabulary: Vocabulary, put: Chunk | None =
     chunks = _doings(chunks, is_a)
     chunks = _left_by(chunks, is_a)
     chunks = _placed_on(chunks, is_a)
-    return _should_go(chunks, is_a, put) if put is not None else chunks
+    if chunker is None:
+        return chunks
+    put, take = (chunker.chunks([verb])[0] for verb in ("put", "take"))
+    return _taken_along(_should_go(chunks, is_a, put), is_a, take)
 
 
 def _next_verb(chunks: Sequence[Chunk], start: int) -> int | None:
@@ -287,3 +292,35 @@ def ones_named(segments: list[list[str]], vocabulary: Vocabulary) -> list[list[s
         said += kept
         out.append(kept)
     return out
+
+
+#: what says a thing is to be taken along ("don't forget the glasses", "do not forget", "remember the keys")
+_NOT_FORGOTTEN = (("don't", "forget"), ("dont", "forget"), ("do", "not", "forget"), ("remember",))
+
+
+def _taken_along(chunks: list[Chunk], is_a: Callable[[Chunk, str], bool], take: Chunk) -> list[Chunk]:
+    """A thing to take along where a motion goes, said after it ("go to the bedroom and don't forget the
+    glasses", "go to the study and take the laptop with you"): the thing is taken there, then the robot
+    goes there (it ends where it was sent, with the thing)."""
+    if not chunks or chunks[0].kind != "verb" or chunks[0].frames != ("MOTION",):
+        return chunks
+    end = next((i for i, c in enumerate(chunks) if i and c.kind in ("join", "verb", "unknown")), len(chunks))
+    motion = chunks[:end]
+    if not any(c.kind == "entity" and (is_a(c, "room") or is_a(c, "furniture")) for c in motion):
+        return chunks
+    at = end + (end < len(chunks) and chunks[end].kind == "join")
+    words = [c.text for c in chunks[at : at + 3]]
+    said = next((n for n in map(len, _NOT_FORGOTTEN) if tuple(words[:n]) in _NOT_FORGOTTEN), 0)
+    along = not said and at < len(chunks) and chunks[at].kind == "verb" and chunks[at].text == take.text
+    start = at + (said or along)
+    thing = start
+    while thing < len(chunks) and chunks[thing].kind == "det":
+        thing += 1
+    if not (said or along) or thing >= len(chunks) or not is_a(chunks[thing], "item"):
+        return chunks
+    rest = chunks[thing + 1 :]
+    if along and [c.text for c in rest[:2]] == ["with", "you"]:
+        rest = rest[2:]
+    elif along or (rest and rest[0].kind != "join"):
+        return chunks
+    return [take, *chunks[start : thing + 1], *motion[1:], Chunk("join", "and"), *motion, *rest]

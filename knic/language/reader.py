@@ -76,7 +76,6 @@ class Reader:
         self.vocabulary = vocabulary
         self.language = language or command_language()
         self.chunker = Chunker(vocabulary, self.language)
-        self._put = self.chunker.chunks(["put"])[0]  # where a thing should go (knic.language.household)
         # what makes a typed digit a number, not a word it sounds like ("to 2 percent", not "to to percent")
         self._units = frozenset(p.split()[0] for p in self.language.percent)
         level_words = self.language.prepositions.get("level", ())
@@ -193,7 +192,7 @@ class Reader:
         """:meth:`read` of normalised tokens."""
         chunks = learners_read(self.chunks(tokens), self.vocabulary)
         chunks = before_moved(relative_dropped(forbidden_dropped(chunks)))
-        chunks = said_around(other_one(chunks, self.vocabulary), self.vocabulary, self._put)
+        chunks = said_around(other_one(chunks, self.vocabulary), self.vocabulary, self.chunker)
         chunks = restated(negated_dropped(chunks, self.language.negations), self._kind_of)
         chunks = sayings_dropped(doings_dropped(talk_dropped(repaired(left_undone(chunks), self._kind_of))))
         if not chunks:

@@ -21,7 +21,9 @@ Gaps of earlier rounds:
 * "the right one" after "the left lamp" in a correction: the right lamp;
 * "my room", "her room": the one bedroom (a house without one still asks which room);
 * a place corrected in the middle of an action: "take the glass from the dining table uh the kitchen table to
-  annie".
+  annie";
+* a thing to take along where the robot goes: "go to the garage and don't forget the hammer", "head to the
+  bathroom and take the soap with you" (taken there, then the robot goes there).
 """
 
 from __future__ import annotations
@@ -174,4 +176,20 @@ def test_my_room_is_the_bedroom(vocabulary: Any, other_house: Any) -> None:
 def test_a_place_corrected_in_the_middle_of_an_action(vocabulary: Any) -> None:
     assert frames_read(vocabulary, "take the glass from the dining table uh the kitchen table to annie") == [
         {"frame": "BRINGING", "theme": "glass", "source": "kitchen_table", "beneficiary": "annie"}
+    ]
+
+
+def test_a_thing_to_take_along_is_taken_there(vocabulary: Any, other_house: Any) -> None:
+    assert frames_read(other_house, "go to the garage and don't forget the hammer", "oscar") == [
+        {"frame": "BRINGING", "theme": "hammer", "goal": "garage"},
+        {"frame": "MOTION", "goal": "garage"},
+    ]
+    assert frames_read(vocabulary, "head to the bathroom and take the soap with you") == [
+        {"frame": "BRINGING", "theme": "soap", "goal": "bathroom"},
+        {"frame": "MOTION", "goal": "bathroom"},
+    ]
+    # taken where the robot went: a taking there, as before
+    assert frames_read(vocabulary, "go to the bathroom and take the soap") == [
+        {"frame": "MOTION", "goal": "bathroom"},
+        {"frame": "TAKING", "theme": "soap", "source": "bathroom"},
     ]
