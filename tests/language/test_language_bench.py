@@ -39,6 +39,8 @@ def test_bench_language_prints_dev_and_test(capsys: pytest.CaptureFixture[str]) 
         "people8-dev",
         "people9-dev",
         "people10-dev",
+        "people11-dev",
+        "people12-dev",
     }
     for figures in data.values():
         assert 0.0 <= figures["accuracy"] <= 1.0 and figures["cases"] >= 40
