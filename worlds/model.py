@@ -250,6 +250,10 @@ class RobotSpec:
     grasp_tolerance: float = 0.12
 
 
+#: Points whose room :meth:`World.room_of` remembers before it starts afresh.
+ROOM_OF_MEMORY = 4096
+
+
 @dataclass(frozen=True)
 class World:
     """A validated world.
@@ -288,12 +292,18 @@ class World:
     def room_of(self, x: float, y: float) -> str | None:
         """The room whose floor contains ``(x, y)``, or ``None`` outside every room.
 
-        On a shared wall the first room in file order wins.
+        On a shared wall the first room in file order wins. Answers are remembered per point (what stands
+        still is asked about at every step), at most :data:`ROOM_OF_MEMORY` points at a time.
         """
-        for room in self.rooms.values():
-            if room.contains(x, y):
-                return room.name
-        return None
+        known = self._cache.setdefault("room_of", {})
+        assert isinstance(known, dict)
+        if (x, y) in known:
+            return known[(x, y)]
+        if len(known) >= ROOM_OF_MEMORY:
+            known.clear()
+        found = next((room.name for room in self.rooms.values() if room.contains(x, y)), None)
+        known[(x, y)] = found
+        return found
 
     def connected(self) -> list[tuple[str, str]]:
         """Room pairs joined by a door, each once, in file order."""
