@@ -49,6 +49,7 @@ from knic.language.segments import (
     sorry_repairs,
     statements_dropped,
 )
+from knic.language.terse import room_alone
 from knic.language.tidy import (
     SEGMENT_END,
     before_moved,
@@ -195,6 +196,7 @@ class Reader:
         chunks = said_around(other_one(chunks, self.vocabulary), self.vocabulary, self.chunker)
         chunks = restated(negated_dropped(chunks, self.language.negations), self._kind_of)
         chunks = sayings_dropped(doings_dropped(talk_dropped(repaired(left_undone(chunks), self._kind_of))))
+        chunks = room_alone(chunks, self.vocabulary, self.chunker)  # "ok robot, dining room"
         if not chunks:
             raise LanguageError(f"no action in '{' '.join(tokens)}': say what to do, e.g. 'bring me ...'")
         context: list[Arg] = []

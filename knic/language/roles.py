@@ -20,6 +20,7 @@ from knic.language.chunks import Chunk
 from knic.language.clauses import Arg, Clause
 from knic.language.commands import CommandLanguage
 from knic.language.frames import SPEAKER, CommandFrame
+from knic.language.terse import placed_from, room_lights, taken_from_first
 from knic.language.vocabulary import Term, Vocabulary, level_percent
 
 Frames = list[CommandFrame]
@@ -65,7 +66,15 @@ def _carry(
     reader: Resolver, clause: Clause, previous: Frames, groups: list[Frames], kind: str
 ) -> list[CommandFrame]:
     args = list(clause.args)
-    reader.narrow(args)
+    try:
+        reader.narrow(args)
+    except AmbiguityError:
+        raise
+    except LanguageError:  # "put the cup that's on the tv table in the cabinet": from the one to the other
+        taken_from_first(reader.vocabulary, args)
+        reader.narrow(args)
+    if kind == "PLACING":  # "move the stapler on the desk to the workbench": from the desk
+        placed_from(reader.vocabulary, args)
     _landmarks_passed(reader, args)
     themes: list[str] = []
     roles: dict[str, str] = {}
@@ -309,6 +318,8 @@ def _operating(reader: Resolver, clause: Clause, previous: Frames, groups: list[
             # "dim the lounge to 40": the room's only dimmer; "dim the lounge": how far is then asked
             stateless = not clause.states and (clause.verb is None or clause.verb.state is None)
             own = reader.levelled_in(rooms) if clause.levels or clause.vague or stateless else []
+            said = clause.states[-1] if clause.states else clause.verb.state if clause.verb else None
+            own = own or room_lights(reader.vocabulary, rooms, said)  # "turn the hallway off"
             if arg.prep is None and len(own) == 1:
                 devices += own
             elif arg.prep is None:

@@ -1,0 +1,88 @@
+"""Phrasings from the people13 development set (voice-assistant users, children and teenagers, competition
+task descriptions in the third person) the reader first got wrong (:mod:`knic.language.terse`):
+
+* a room said alone, as to a smart speaker: "hey robot, bathroom", "to the study please" (go there);
+* a room switched on or off: "switch the hallway on", "turn the lounge off" (the room's light or dimmer,
+  or the group of its lights; a room without lights stays refused);
+* a thing put from one piece of furniture onto another: "put the soap that's on the sofa in the bathroom
+  drawer" (from the sofa into the drawer), and a place said before a destination after "to": "move the
+  hammer on the workbench to the desk" (from the workbench).
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import pytest
+
+from knic.language import understand
+
+from .conftest import frames_read
+
+
+@pytest.mark.parametrize(
+    ("text", "goal"),
+    [
+        ("hey robot, bathroom", "bathroom"),
+        ("the living room please", "living_room"),
+        ("robot to the hallway thanks", "hallway"),
+    ],
+)
+def test_a_room_said_alone_is_where_to_go(vocabulary: Any, text: str, goal: str) -> None:
+    assert frames_read(vocabulary, text) == [{"frame": "MOTION", "goal": goal}]
+
+
+def test_a_room_alone_in_the_other_house(other_house: Any) -> None:
+    assert frames_read(other_house, "ok robot, nursery", "maria") == [{"frame": "MOTION", "goal": "nursery"}]
+
+
+def test_a_room_with_something_said_of_it_is_no_command(vocabulary: Any) -> None:
+    assert "no action" in understand("the remote is in the bedroom", vocabulary).reason
+    result = understand("do not go to the bedroom", vocabulary)
+    assert not result.accepted
+
+
+@pytest.mark.parametrize(
+    ("text", "device", "state"),
+    [
+        ("switch the hallway on", "hallway_light", "on"),
+        ("could you turn the bedroom off", "bedroom_lights", "off"),
+        ("turn the living room off", "living_room_dimmer", "off"),
+    ],
+)
+def test_a_room_switched_on_or_off_is_its_lights(vocabulary: Any, text: str, device: str, state: str) -> None:
+    assert frames_read(vocabulary, text) == [{"frame": "OPERATING", "device": device, "state": state}]
+
+
+def test_a_room_switched_in_the_other_house(other_house: Any) -> None:
+    assert frames_read(other_house, "please switch the garage off", "oscar") == [
+        {"frame": "OPERATING", "device": "garage_light", "state": "off"}
+    ]
+
+
+def test_a_room_without_lights_is_still_no_device(vocabulary: Any) -> None:
+    result = understand("switch the bathroom on", vocabulary)
+    assert not result.accepted and "bathroom" in result.reason
+
+
+def test_a_thing_put_from_one_piece_of_furniture_onto_another(vocabulary: Any) -> None:
+    assert frames_read(vocabulary, "put the soap that's on the sofa in the bathroom drawer") == [
+        {"frame": "PLACING", "theme": "soap", "source": "sofa", "goal": "bathroom_drawer"}
+    ]
+    assert frames_read(vocabulary, "put the lemon which is on the dining table on the kitchen counter") == [
+        {"frame": "PLACING", "theme": "lemon", "source": "dining_table", "goal": "kitchen_counter"}
+    ]
+
+
+def test_a_piece_of_furniture_in_a_room_still_narrows_or_is_refused(vocabulary: Any) -> None:
+    assert frames_read(vocabulary, "put the apple on the table that is in the kitchen") == [
+        {"frame": "PLACING", "theme": "apple", "goal": "kitchen_table"}
+    ]
+    result = understand("put the apple on the bed in the kitchen", vocabulary)
+    assert not result.accepted and "no bed in the kitchen" in result.reason
+
+
+def test_a_place_before_a_destination_is_where_the_thing_is(other_house: Any) -> None:
+    assert frames_read(other_house, "move the hammer on the workbench to the desk", "oscar") == [
+        {"frame": "PLACING", "theme": "hammer", "source": "workbench", "goal": "desk"}
+    ]
