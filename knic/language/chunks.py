@@ -13,6 +13,7 @@ from collections.abc import Sequence
 from dataclasses import dataclass, replace
 
 from knic.language.commands import CommandLanguage
+from knic.language.typos import Speller
 from knic.language.vocabulary import TENS_WORDS, UNIT_WORDS, Term, Vocabulary, normalize
 
 #: number words to their values (0..19 and the tens), from the vocabulary's one list of number words
@@ -174,12 +175,21 @@ class Chunker:
         self._pronoun_words = {w for p in lang.pronouns for w in p.split()}
         #: names, and last words of names, on their own ("kitchen", "tv stand", "table")
         self._known_names = set(self._full) | set(self._partial)
+        #: typed and mis-heard words mended before chunking (knic.language.typos)
+        self._speller = Speller(
+            self._known_words,
+            {w for p in self._known_names for w in p.split()},
+            set(self._full),
+            self._kind_of,
+            {p.split()[0] for p in self._people},
+            lang.homophones,
+        )
 
     # ------------------------------------------------------------------ chunks
 
     def chunks(self, tokens: Sequence[str]) -> list[Chunk]:
         """The chunks of a normalised token list (fillers dropped)."""
-        tokens = self._sides(self._apostrophes(tokens))
+        tokens = self._sides(self._apostrophes(self._speller.mended(tokens)))
         lemmas = [self._lemma(t) for t in tokens]
         inflected = {i for i, (word, lemma) in enumerate(zip(tokens, lemmas, strict=True)) if word != lemma}
         tokens = [self._present(lemmas, i) for i in range(len(lemmas))]
@@ -223,7 +233,8 @@ class Chunker:
                 i = number[0]
                 continue
             if best is None:
-                out.append(Chunk("unknown", tokens[i]))
+                guessed = self._guessed(tokens[i]) if out and out[-1].kind == "det" else ()
+                out.append(Chunk("entity", tokens[i], guessed) if guessed else Chunk("unknown", tokens[i]))
                 i += 1
                 continue
             if best[2] is not None:
@@ -231,6 +242,21 @@ class Chunker:
                 out.append(replace(best[2], soft=True) if soft else best[2])
             i += best[0]
         return _owned(out) if _OWNER in tokens else out
+
+    def _kind_of(self, phrase: str) -> str | None:
+        """A phrase's kind in the language tables ("state" for a word that also says a state), else None."""
+        entry = self._table.get(phrase)
+        if entry is None or entry[1] is None:
+            return None
+        return "state" if entry[1].state and entry[1].kind in ("state", "prep") else entry[1].kind
+
+    def _guessed(self, word: str) -> tuple[Term, ...]:
+        """Every thing a mistyped word after a determiner may name, when it is near several names ("the
+        cug": the cup or the mug), else nothing."""
+        found = [
+            t for w in self._speller.names_for(word) for t in self._full.get(w, self._partial.get(w, []))
+        ]
+        return tuple(dict.fromkeys(found))  # one thing said two ways ("mugg": mug or mugs) is that thing
 
     def _apostrophes(self, tokens: Sequence[str]) -> list[str]:
         """Read "'s" after a word the tables do not know as it is: "is" ("the tablet's on the bed", "jack's

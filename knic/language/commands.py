@@ -107,6 +107,7 @@ class CommandLanguage:
     spellings: dict[str, str] = field(default_factory=dict)
     digit_words: dict[str, str] = field(default_factory=dict)
     typed_words: dict[str, str] = field(default_factory=dict)
+    homophones: dict[str, str] = field(default_factory=dict)
 
     def verb_frames(self) -> dict[str, tuple[tuple[str, ...], str | None]]:
         """Verb phrase -> (frame kinds in order, implied state); a phrase in several classes gets all."""
@@ -253,6 +254,7 @@ def load_language(path: str | Path = DEFAULT_PATH) -> CommandLanguage:
         spellings=_spellings(data, source),
         digit_words=_spellings(data, source, "digit_words"),
         typed_words=_spellings(data, source, "typed_words"),
+        homophones=_spellings(data, source, "homophones"),
         past_forms=_spellings(data, source, "past_forms"),
     )
     lists: dict[str, tuple[str, ...]] = {v.name: v.spoken for v in verbs}

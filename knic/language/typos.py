@@ -1,0 +1,232 @@
+"""Words typed in a hurry or mis-heard by a recogniser, read as the word of the command language or the world
+they stand for (text only; the speech model never sees these forms).
+
+A :class:`Speller` is built from the known words (the command language's phrases and the world's names) and
+mends the tokens of one command, before they are cut into chunks:
+
+* **Joined names.** A word that is a name of the world written without its spaces ("livingroom",
+  "kitchencounter", "teddybear") is that name; two words that make one word of a name ("bath room",
+  "bed room") are that word, unless the two are a phrase of their own.
+* **Homophones.** A word the recogniser heard for another of the same sound (``homophones`` in
+  commands.yaml: "too", "four", "of", "write") is that other word only where that one fits: a state after a
+  verb of switching ("switch of the light") or last ("turn the light of"); a preposition before a
+  determiner, "me" or a person ("too the kitchen", "the glasses four tracy"; never before a count: "four
+  apples"); a determiner before a name ("sum water"); a word that with the next makes a name ("write
+  light").
+* **Apostrophes left out.** A word nobody knows that is a known word with "s" ("shes", "tracys") is that
+  word with "'s".
+* **Typos.** A word nobody knows (no known word and no English word) one edit from exactly one known word
+  (a letter missing, added, changed or two letters swapped; two edits for words of eight letters or more
+  when none is one edit away) is that word: "kitchn", "teh", "brign", "remtoe". A doubled or undoubled
+  letter is a slip even where it makes an English word ("dinning", "hamer", "lemmon"). Words of three
+  letters never shrink ("dsk", "opn", "teh"; "soa" is no "so"). Of several such words, a lone swap of two
+  letters wins outside a noun phrase ("teh": the, not ten); after a determiner or a word of a name
+  ("bathroom drawr") only names count, and several names make the word stand for all of them
+  (:meth:`Speller.names_for`), so that it is asked about ("the cug": the cup or the mug?). A real English
+  word is never guessed at ("the cake" is no coke, "the basket" no blanket): it is refused naming it.
+
+English words are those of the pronouncing dictionary the speech side ships (pocketsphinx's cmudict),
+read once when a word no table knows is first met; without it no typo is guessed.
+"""
+
+from __future__ import annotations
+
+import importlib.util
+from collections.abc import Callable, Collection, Mapping, Sequence
+from functools import lru_cache
+from pathlib import Path
+
+_LETTERS = "abcdefghijklmnopqrstuvwxyz'"
+#: shortest word that is mended by edits; shorter words only by growing or a swap of two letters
+_SHORT = 3
+#: words of this length or more may be two edits from the word meant
+_LONG = 8
+
+
+@lru_cache(maxsize=1)
+def _dictionary() -> str:
+    """The speech side's pronouncing dictionary, one word and its sounds a line ("" when not installed)."""
+    spec = importlib.util.find_spec("pocketsphinx")
+    for folder in list(spec.submodule_search_locations or ()) if spec is not None else []:
+        path = Path(folder) / "model" / "en-us" / "cmudict-en-us.dict"
+        if path.is_file():
+            return "\n" + path.read_text(errors="replace")
+    return ""
+
+
+def is_english(word: str) -> bool | None:
+    """Whether ``word`` is in the pronouncing dictionary; None when there is no dictionary (read once, and
+    searched rather than indexed: a set of its words would cost ``knic goal`` a quarter of a second)."""
+    text = _dictionary()
+    return f"\n{word} " in text if text else None
+
+
+def edits(word: str) -> set[str]:
+    """The strings one edit from ``word``: a letter deleted, two neighbours swapped, one changed or added."""
+    splits = [(word[:i], word[i:]) for i in range(len(word) + 1)]
+    out = {a + b[1:] for a, b in splits if b}
+    out |= {a + b[1] + b[0] + b[2:] for a, b in splits if len(b) > 1}
+    out |= {a + c + b[1:] for a, b in splits if b for c in _LETTERS}
+    out |= {a + c + b for a, b in splits for c in _LETTERS}
+    out.discard(word)
+    return out
+
+
+def distance(a: str, b: str) -> int:
+    """Edit distance with swaps of neighbours (optimal string alignment)."""
+    rows = [list(range(len(b) + 1))]
+    for i in range(1, len(a) + 1):
+        row = [i] + [0] * len(b)
+        for j in range(1, len(b) + 1):
+            row[j] = min(rows[-1][j] + 1, row[j - 1] + 1, rows[-1][j - 1] + (a[i - 1] != b[j - 1]))
+            if i > 1 and j > 1 and a[i - 1] == b[j - 2] and a[i - 2] == b[j - 1]:
+                row[j] = min(row[j], rows[-2][j - 2] + 1)
+        rows = [rows[-1], row]
+    return rows[-1][-1]
+
+
+def swapped(a: str, b: str) -> bool:
+    """Whether ``b`` is ``a`` with two neighbouring letters swapped."""
+    diff = [i for i in range(len(a)) if len(a) == len(b) and a[i] != b[i]]
+    return len(diff) == 2 and diff[1] == diff[0] + 1 and a[diff[0]] == b[diff[1]] and a[diff[1]] == b[diff[0]]
+
+
+def doubled(a: str, b: str) -> bool:
+    """Whether one of the words is the other with one letter doubled ("dinning", "hamer")."""
+    short, long_ = sorted((a, b), key=len)
+    if len(long_) != len(short) + 1:
+        return False
+    return any(
+        long_[i] == long_[i + 1] and long_[:i] + long_[i + 1 :] == short for i in range(len(long_) - 1)
+    )
+
+
+class Speller:
+    """Mends one command's tokens (see the module docstring); build once per chunker.
+
+    Args:
+        known: every word of the command language's phrases and of the world's names.
+        name_words: the words of the world's names (and their plurals).
+        names: the world's names, whole, as said (for joined words).
+        kind_of: a phrase's kind in the language tables ("det", "prep", "state", "verb", ...), else None.
+        people: the names of people.
+        homophones: word heard -> the word meant where it fits.
+        english: whether a word is English (None: unknown, no dictionary); read only when needed.
+    """
+
+    def __init__(
+        self,
+        known: Collection[str],
+        name_words: Collection[str],
+        names: Collection[str],
+        kind_of: Callable[[str], str | None],
+        people: Collection[str],
+        homophones: Mapping[str, str],
+        english: Callable[[str], bool | None] = is_english,
+    ):
+        self._known = frozenset(known)
+        self._name_words = frozenset(name_words)
+        self._kind_of = kind_of
+        self._people = frozenset(people)
+        self._homophones = dict(homophones)
+        self._english = english
+        self._names = frozenset(names)
+        self._joined = {n.replace(" ", ""): n for n in self._names if " " in n}
+        self._by_length: dict[int, list[str]] = {}
+        for word in self._known:
+            self._by_length.setdefault(len(word), []).append(word)
+        self._cache: dict[tuple[str, bool], tuple[str, ...]] = {}
+
+    def mended(self, tokens: Sequence[str]) -> list[str]:
+        """The tokens with joined names split, split words joined, homophones and typos mended."""
+        out: list[str] = []
+        i = 0
+        while i < len(tokens):
+            token = tokens[i]
+            if i + 1 < len(tokens) and self._joins(token, tokens[i + 1]):
+                out.append(token + tokens[i + 1])
+                i += 2
+                continue
+            if token in self._joined and token not in self._known:
+                out += self._joined[token].split()
+                i += 1
+                continue
+            heard = self._homophone(out, token, tokens[i + 1 :])
+            if heard is not None:
+                out.append(heard)
+            else:
+                noun = bool(out) and (self._kind_of(out[-1]) == "det" or out[-1] in self._name_words)
+                meant = self.candidates(token, noun)
+                out.append(meant[0] if len(meant) == 1 else token)
+            i += 1
+        return out
+
+    def names_for(self, word: str) -> tuple[str, ...]:
+        """The names a word after a determiner may be a typo of, when it is one of several ("cug")."""
+        meant = self.candidates(word, True)
+        return meant if len(meant) > 1 else ()
+
+    def candidates(self, word: str, in_noun: bool) -> tuple[str, ...]:
+        """The known words ``word`` may be a typo of (none when it is known, English or no near word)."""
+        key = (word, in_noun)
+        if key not in self._cache:
+            self._cache[key] = self._candidates(word, in_noun)
+        return self._cache[key]
+
+    def _candidates(self, word: str, in_noun: bool) -> tuple[str, ...]:
+        if word in self._known or not word.isalpha() or len(word) < _SHORT:
+            return ()
+        if word.endswith("s") and word[:-1] in self._known and self._english(word) is False:
+            return (word[:-1] + "'s",)  # "shes", "tracys": the apostrophe left out
+        near = sorted(w for w in edits(word) if w in self._known)
+        if len(word) == _SHORT:  # "dsk", "opn", "teh": grown or swapped, never shrunk
+            near = [w for w in near if len(w) >= len(word)]
+        if not near and len(word) >= _LONG:
+            near = sorted(
+                w
+                for n in range(len(word) - 2, len(word) + 3)
+                for w in self._by_length.get(n, ())
+                if distance(word, w) == 2
+            )
+        if in_noun:
+            near = [w for w in near if w in self._name_words]
+        elif len(near) > 1:
+            swaps = [w for w in near if swapped(word, w)]
+            near = swaps if len(swaps) == 1 else near
+        if not near:
+            return ()
+        english = self._english(word)
+        if english is None:
+            return ()  # no dictionary: nothing is guessed
+        if english and not (len(near) == 1 and doubled(word, near[0])):
+            return ()  # "cake", "basket": a real word, refused as said
+        return tuple(near)
+
+    def _joins(self, first: str, second: str) -> bool:
+        """Whether two words are one word of a name said apart ("bath room", "bed room")."""
+        pair = f"{first} {second}"
+        return (
+            first + second in self._name_words
+            and pair not in self._names
+            and self._kind_of(pair) is None
+            and first.isalpha()
+            and second.isalpha()
+        )
+
+    def _homophone(self, before: Sequence[str], word: str, after: Sequence[str]) -> str | None:
+        """The word meant for a homophone, where it fits (see the module docstring), else None."""
+        meant = self._homophones.get(word)
+        if meant is None:
+            return None
+        kind = self._kind_of(meant)
+        nxt = after[0] if after else ""
+        if kind == "state":  # "switch of the light", "turn the light of"
+            return meant if (before and self._kind_of(before[-1]) == "verb") or not after else None
+        if kind == "prep":  # "too the kitchen", "four tracy", not "four apples"
+            fits = self._kind_of(nxt) == "det" or nxt == "me" or nxt in self._people
+            return meant if fits and not nxt.isdigit() else None
+        if kind == "det":  # "sum water"
+            return meant if nxt in self._name_words else None
+        if nxt and meant in self._name_words and f"{meant} {nxt}" in self._names:
+            return meant  # "write light": the right light
+        return None
