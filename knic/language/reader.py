@@ -49,7 +49,7 @@ from knic.language.segments import (
     sorry_repairs,
     statements_dropped,
 )
-from knic.language.terse import room_alone
+from knic.language.terse import for_asker, reported, room_alone, third_person_read
 from knic.language.tidy import (
     SEGMENT_END,
     before_moved,
@@ -191,7 +191,10 @@ class Reader:
 
     def _read_tokens(self, tokens: list[str]) -> Reading:
         """:meth:`read` of normalised tokens."""
-        chunks = learners_read(self.chunks(tokens), self.vocabulary)
+        said, asker = reported(
+            self.chunks(third_person_read(tokens, self.chunker)), self.vocabulary, self.chunker.bare_verb
+        )
+        chunks = learners_read(said, self.vocabulary)
         chunks = before_moved(relative_dropped(forbidden_dropped(chunks)))
         chunks = said_around(other_one(chunks, self.vocabulary), self.vocabulary, self.chunker)
         chunks = restated(negated_dropped(chunks, self.language.negations), self._kind_of)
@@ -251,7 +254,8 @@ class Reader:
             frames.extend(group)
         if not frames:  # every clause was talk
             raise skipped or LanguageError(f"no action in '{' '.join(tokens)}'")
-        return chain(self._placed(frames, located), self.vocabulary, ask_where=ask_where, held=held)
+        reading = chain(self._placed(frames, located), self.vocabulary, ask_where=ask_where, held=held)
+        return for_asker(reading, asker)  # "tracy asks the robot to fetch her glasses": for tracy
 
     def _kind_of(self, chunk: Chunk) -> str:
         """What a chunk names, for corrections: object, person, place, device, level, state or its kind."""

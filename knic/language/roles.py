@@ -20,7 +20,7 @@ from knic.language.chunks import Chunk
 from knic.language.clauses import Arg, Clause
 from knic.language.commands import CommandLanguage
 from knic.language.frames import SPEAKER, CommandFrame
-from knic.language.terse import placed_from, room_lights, taken_from_first
+from knic.language.terse import placed_from, room_lights, switched_only, taken_from_first
 from knic.language.vocabulary import Term, Vocabulary, level_percent
 
 Frames = list[CommandFrame]
@@ -326,6 +326,9 @@ def _operating(reader: Resolver, clause: Clause, previous: Frames, groups: list[
                 raise LanguageError(f"'{arg.chunk.text}' is not a device I can operate")
             continue
         places = [f.get(r) or "" for f in reversed(previous) for r in ("goal", "ground") if f.get(r)]
+        switched_only(
+            reader.vocabulary, arg, args, bool(clause.levels or clause.vague)
+        )  # "bedroom light to 40"
         reader.prefer_devices(arg, bool(clause.levels or clause.vague), places)
         devices += reader.resolve(arg, ("device",), previous, groups)
     if not devices:

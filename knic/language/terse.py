@@ -14,8 +14,11 @@ from __future__ import annotations
 from collections.abc import Sequence
 from itertools import pairwise
 
+from core.errors import LanguageError
+from knic.language.chains import Reading
 from knic.language.chunks import Chunk, Chunker
 from knic.language.clauses import Arg
+from knic.language.frames import SPEAKER, CommandFrame
 from knic.language.vocabulary import Term, Vocabulary
 
 #: states a room's lights are switched to
@@ -23,17 +26,27 @@ _SWITCHED = ("on", "off")
 
 
 def room_alone(chunks: list[Chunk], vocabulary: Vocabulary, chunker: Chunker) -> list[Chunk]:
-    """A command that only names one room (with "to" and determiners at most) is a going there."""
+    """A command that only names one room (with "to" and determiners at most) is a going there; with a level
+    ("living room to 30 percent", "lounge at half") it is a setting of the room's dimmer or blinds."""
     names = [c for c in chunks if c.kind == "entity"]
     rest = [c for c in chunks if c.kind != "entity"]
     if len(names) != 1 or not names[0].terms:
         return chunks
     if not all(vocabulary.is_subtype(t.type, "room") for t in names[0].terms):
         return chunks
-    if any(c.kind not in ("det", "prep") or (c.kind == "prep" and c.role != "goal") for c in rest):
+    levelled = any(c.kind in ("level", "number") for c in rest)
+    roles = ("goal", "place", "level") if levelled else ("goal",)
+    if any(c.kind not in (*_LEVELLED, "prep") or (c.kind == "prep" and c.role not in roles) for c in rest):
         return chunks
-    go = [c for c in chunker.chunks(["go"]) if c.kind == "verb" and "MOTION" in c.frames]
-    return [*go[:1], *chunks] if go else chunks
+    if not levelled and any(c.kind in _LEVELLED[1:] for c in rest):
+        return chunks
+    verb, frame = ("set", "OPERATING") if levelled else ("go", "MOTION")
+    said = [c for c in chunker.chunks([verb]) if c.kind == "verb" and frame in c.frames]
+    return [*said[:1], *chunks] if said else chunks
+
+
+#: what a room said alone may come with: determiners, and a level
+_LEVELLED = ("det", "level", "number", "percent")
 
 
 def room_lights(vocabulary: Vocabulary, rooms: Sequence[Term], state: str | None) -> list[str]:
@@ -103,3 +116,110 @@ def placed_from(vocabulary: Vocabulary, args: list[Arg]) -> None:
     for arg in args[:last]:
         if arg.prep == "place" and not arg.consumed and place(arg):
             arg.prep = "source"
+
+
+#: words that tell who asked for the action, between the person and "to" ("tracy asks the robot to ...",
+#: "annie has told you to ...", "tracy would like the robot to ...")
+_REPORTING = frozenset(
+    {"asks", "asked", "has", "have", "had", "tells", "told", "orders", "ordered", "instructs", "instructed"}
+    | {"requests", "requested", "commands", "commanded", "expects", "wishes", "wants", "needs", "would like"}
+    | {"would", "like", "you"}
+)
+#: what asks for a thing ("annie asks for the tablet")
+_ASKING_FOR = frozenset({"asks", "asked"})
+
+
+def reported(
+    chunks: list[Chunk], vocabulary: Vocabulary, bare_verb: Chunk | None
+) -> tuple[list[Chunk], str | None]:
+    """A request told of someone, as a task description says it ("tracy asks the robot to fetch her glasses",
+    "annie wants the robot to close the blinds", "annie asks for the tablet"): the action as if she said it,
+    and who asked (the one it is for where the speaker would be), else the chunks as they are and None."""
+    if len(chunks) < 3 or chunks[0].kind != "entity" or not chunks[0].terms:
+        return chunks, None
+    if not all(vocabulary.is_subtype(t.type, "person") for t in chunks[0].terms):
+        return chunks, None
+    people = {t.symbol for t in chunks[0].terms}
+    i = 1
+    while (
+        i < len(chunks) and chunks[i].kind in ("unknown", "verb", "pronoun") and chunks[i].text in _REPORTING
+    ):
+        i += 1
+    if i == 1 or i >= len(chunks) or len(people) != 1:
+        return chunks, None
+    asker = people.pop()
+    if chunks[i].kind == "prep" and chunks[i].text == "for" and chunks[i - 1].text in _ASKING_FOR:
+        return ([chunks[0], bare_verb, *chunks[i + 1 :]], asker) if bare_verb is not None else (chunks, None)
+    while i < len(chunks) and chunks[i].kind == "det":
+        i += 1
+    if (
+        i + 1 < len(chunks)
+        and chunks[i].kind == "prep"
+        and chunks[i].text == "to"
+        and chunks[i + 1].kind == "verb"
+    ):
+        return [chunks[0], *chunks[i + 1 :]], asker
+    return chunks, None
+
+
+def for_asker(reading: Reading, asker: str | None) -> Reading:
+    """The frames of a request told of someone, with what was for the speaker for the one who asked."""
+    if asker is None:
+        return reading
+    frames = [
+        CommandFrame(f.kind, {**f.args, "beneficiary": asker}) if f.get("beneficiary") == SPEAKER else f
+        for f in reading.frames
+    ]
+    return Reading(frames, reading.waypoints)
+
+
+#: subjects said before a verb in a task description ("then it finds the glasses")
+_SUBJECTS = frozenset({"it", "he", "she"})
+
+
+def third_person_read(tokens: list[str], chunker: Chunker) -> list[str]:
+    """Verbs said of the robot in the third person, as task descriptions say them ("the robot goes to the
+    bedroom, then it finds the glasses", "picks up the apple and carries it to tracy"): read as the verb;
+    "it", "he" or "she" right before such a verb is its subject and dropped. Words the reader knows stay."""
+    out: list[str] = []
+    for token in tokens:
+        base = _verb_of(token, chunker) if len(token) > 3 and token.endswith("s") else None
+        if base is None:
+            out.append(token)
+            continue
+        if out and out[-1] in _SUBJECTS:
+            out.pop()
+        out.append(base)
+    return out
+
+
+def _verb_of(word: str, chunker: Chunker) -> str | None:
+    said = chunker.chunks([word])
+    if not said or said[0].kind != "unknown":
+        return None
+    for base in (word[:-3] + "y" if word.endswith("ies") else "", word[:-2], word[:-1]):
+        read = chunker.chunks([base]) if base else []
+        if len(read) == 1 and read[0].kind == "verb":
+            return base
+    return None
+
+
+def switched_only(vocabulary: Vocabulary, arg: Arg, args: list[Arg], levelled: bool) -> None:
+    """A level asked of lights said with their room ("set the bedroom light to 40", "turn the light in the
+    bedroom up a bit") where only a dimmer elsewhere could take one: refused, not another room's dimmer.
+
+    Raises:
+        LanguageError: the room's lights named can only be switched on or off.
+    """
+    terms = arg.chunk.terms
+    if not levelled or not terms or not all(vocabulary.is_subtype(t.type, "light") for t in terms):
+        return
+    rooms = [
+        a
+        for a in args
+        if a.consumed and a.chunk.terms and all(vocabulary.is_subtype(t.type, "room") for t in a.chunk.terms)
+    ]
+    if rooms:
+        raise LanguageError(
+            f"the {rooms[0].chunk.text} {arg.chunk.text} can only be switched on or off: say on or off"
+        )

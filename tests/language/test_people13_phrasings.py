@@ -6,7 +6,13 @@ task descriptions in the third person) the reader first got wrong (:mod:`knic.la
   or the group of its lights; a room without lights stays refused);
 * a thing put from one piece of furniture onto another: "put the soap that's on the sofa in the bathroom
   drawer" (from the sofa into the drawer), and a place said before a destination after "to": "move the
-  hammer on the workbench to the desk" (from the workbench).
+  hammer on the workbench to the desk" (from the workbench);
+* a room said alone with a level: "lounge to 30 percent" (the room's dimmer or blinds);
+* a level asked of a room's on/off lights: "set the bedroom light to 40" is refused, not the living room's
+  dimmer;
+* a request told of someone, as task descriptions say it: "oscar has asked the robot to fetch his keys",
+  "maria would like the robot to close the blinds", "tracy asks for the candle" (for her, not the speaker);
+* verbs said of the robot in the third person: "the robot heads to the hallway, then it looks for the mug".
 """
 
 from __future__ import annotations
@@ -85,4 +91,77 @@ def test_a_piece_of_furniture_in_a_room_still_narrows_or_is_refused(vocabulary: 
 def test_a_place_before_a_destination_is_where_the_thing_is(other_house: Any) -> None:
     assert frames_read(other_house, "move the hammer on the workbench to the desk", "oscar") == [
         {"frame": "PLACING", "theme": "hammer", "source": "workbench", "goal": "desk"}
+    ]
+
+
+@pytest.mark.parametrize(
+    ("text", "device", "state"),
+    [
+        ("the living room at 60 percent", "living_room_dimmer", "60"),
+        ("bedroom to half", "bedroom_blinds", "50"),
+    ],
+)
+def test_a_room_with_a_level_is_its_dimmer_or_blinds(
+    vocabulary: Any, text: str, device: str, state: str
+) -> None:
+    assert frames_read(vocabulary, text) == [{"frame": "OPERATING", "device": device, "state": state}]
+
+
+def test_a_level_for_a_room_s_on_off_lights_is_refused(vocabulary: Any) -> None:
+    result = understand("please set the bedroom light to 70", vocabulary)
+    assert not result.accepted and "on or off" in result.reason
+    # the one dimmable light, when no room is said, stays the dimmer
+    assert frames_read(vocabulary, "set the lamp to 70") == [
+        {"frame": "OPERATING", "device": "living_room_dimmer", "state": "70"}
+    ]
+
+
+@pytest.mark.parametrize(
+    ("text", "speaker", "frames"),
+    [
+        (
+            "Oscar has asked the robot to fetch his keys.",
+            "maria",
+            [{"frame": "BRINGING", "theme": "keys", "beneficiary": "oscar"}],
+        ),
+        (
+            "Maria would like the robot to close the blinds.",
+            "oscar",
+            [{"frame": "OPERATING", "device": "study_blinds", "state": "closed"}],
+        ),
+        (
+            "Oscar wants the robot to go to the garage and get the hammer.",
+            "maria",
+            [
+                {"frame": "MOTION", "goal": "garage"},
+                {"frame": "BRINGING", "theme": "hammer", "source": "garage", "beneficiary": "oscar"},
+            ],
+        ),
+        (
+            "Maria asks for the stapler.",
+            "oscar",
+            [{"frame": "BRINGING", "theme": "stapler", "beneficiary": "maria"}],
+        ),
+    ],
+)
+def test_a_request_told_of_someone_is_for_them(
+    other_house: Any, text: str, speaker: str, frames: list[dict[str, str]]
+) -> None:
+    assert frames_read(other_house, text, speaker) == frames
+
+
+def test_a_request_told_of_someone_to_someone_else(vocabulary: Any) -> None:
+    assert frames_read(vocabulary, "Annie told the robot to take the candle to Tracy.", "tracy") == [
+        {"frame": "BRINGING", "theme": "candle", "beneficiary": "tracy"}
+    ]
+
+
+def test_verbs_said_of_the_robot_in_the_third_person(vocabulary: Any) -> None:
+    assert frames_read(vocabulary, "The robot heads to the hallway, then it looks for the mug.") == [
+        {"frame": "MOTION", "goal": "hallway"},
+        {"frame": "SEARCHING", "theme": "mug", "ground": "hallway"},
+    ]
+    assert frames_read(vocabulary, "the robot grabs the sponge and carries it to the bathroom") == [
+        {"frame": "TAKING", "theme": "sponge"},
+        {"frame": "BRINGING", "theme": "sponge", "goal": "bathroom"},
     ]
