@@ -44,21 +44,21 @@ _LONG = 8
 
 
 @lru_cache(maxsize=1)
-def _dictionary() -> str:
+def _dictionary() -> bytes:
     """The speech side's pronouncing dictionary, one word and its sounds a line ("" when not installed)."""
     spec = importlib.util.find_spec("pocketsphinx")
     for folder in list(spec.submodule_search_locations or ()) if spec is not None else []:
         path = Path(folder) / "model" / "en-us" / "cmudict-en-us.dict"
         if path.is_file():
-            return "\n" + path.read_text(errors="replace")
-    return ""
+            return b"\n" + path.read_bytes()
+    return b""
 
 
 def is_english(word: str) -> bool | None:
     """Whether ``word`` is in the pronouncing dictionary; None when there is no dictionary (read once, and
     searched rather than indexed: a set of its words would cost ``knic goal`` a quarter of a second)."""
     text = _dictionary()
-    return f"\n{word} " in text if text else None
+    return f"\n{word} ".encode() in text if text else None
 
 
 def edits(word: str) -> set[str]:
