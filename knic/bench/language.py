@@ -4,7 +4,7 @@ The sets are ``tests/fixtures/language/dev.yaml`` (tuned on) and ``tests/fixture
 (written afterwards in other words), and ``people2/dev.yaml`` and ``people2/test.yaml`` (100 commands each,
 written blind: the writer saw the apartment's description and the gold format only, not the grammar, the
 reader, the lexicon or the earlier sets; ``people2-test`` is never tuned on). ``--file`` runs a set of one's
-own. ``people3`` to ``people12`` are further blind development sets (``people5`` to ``people12`` span both
+own. ``people3`` to ``people14`` are further blind development sets (``people5`` to ``people14`` span both
 houses). Each case is a command with its gold frames and goals,
 or with a word the refusal (``reject``) or the question back (``question``) must contain. Cases run against
 the ERL apartment or, with ``world: other``, against a different house
@@ -49,6 +49,7 @@ SETS = {
     "people10-dev": FIXTURES / "people10" / "dev.yaml",
     "people11-dev": FIXTURES / "people11" / "dev.yaml",
     "people12-dev": FIXTURES / "people12" / "dev.yaml",
+    "people14-dev": FIXTURES / "people14" / "dev.yaml",
 }
 OTHER_WORLD = FIXTURES / "other_world" / "problem.pddl"
 _MAIN = {"MOTION": ("goal",), "OPERATING": ("device", "state")}
