@@ -279,6 +279,12 @@ def _fill(
         last = clause.args[-1] if clause.args else None
         if filling.joined and last is not None and last.quantity == "both" and last.chunk.role != "plural":
             last.quantity = None  # "both the juice and the water": the two named, not two juices
+        # "bring me juice and cookies": a plural after "and" joining things is one more thing, maybe missing
+        thing = (
+            last is not None and last.prep is None and last.chunk.kind == "entity" and names_item(last.chunk)
+        )
+        plural = nxt is not None and nxt.kind == "unknown" and nxt.text[-1:] == "s" and nxt.text[-2:] != "ss"
+        filling.expecting = filling.expecting or (thing and plural)
         return
     if chunk.kind == "quant":
         if nxt is not None and nxt.kind in ("entity", "det"):

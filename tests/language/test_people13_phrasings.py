@@ -12,7 +12,8 @@ task descriptions in the third person) the reader first got wrong (:mod:`knic.la
   dimmer;
 * a request told of someone, as task descriptions say it: "oscar has asked the robot to fetch his keys",
   "maria would like the robot to close the blinds", "tracy asks for the candle" (for her, not the speaker);
-* verbs said of the robot in the third person: "the robot heads to the hallway, then it looks for the mug".
+* verbs said of the robot in the third person: "the robot heads to the hallway, then it looks for the mug";
+* a plural the world lacks joined to a thing: "gimme the apple and crisps" names 'crisps' (not dropped).
 """
 
 from __future__ import annotations
@@ -164,4 +165,15 @@ def test_verbs_said_of_the_robot_in_the_third_person(vocabulary: Any) -> None:
     assert frames_read(vocabulary, "the robot grabs the sponge and carries it to the bathroom") == [
         {"frame": "TAKING", "theme": "sponge"},
         {"frame": "BRINGING", "theme": "sponge", "goal": "bathroom"},
+    ]
+
+
+def test_a_missing_plural_joined_to_a_thing_is_named(vocabulary: Any, other_house: Any) -> None:
+    result = understand("gimme the apple and crisps", vocabulary)
+    assert not result.accepted and "'crisps'" in result.reason
+    result = understand("bring me keys and sweets pls", other_house, speaker="oscar")
+    assert not result.accepted and "'sweets'" in result.reason
+    # words after "and" that name no thing stay talk
+    assert frames_read(vocabulary, "bring me the lemon and hurry up") == [
+        {"frame": "BRINGING", "theme": "lemon", "beneficiary": "me"}
     ]
