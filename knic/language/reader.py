@@ -49,7 +49,7 @@ from knic.language.segments import (
     sorry_repairs,
     statements_dropped,
 )
-from knic.language.terse import for_asker, reported, room_alone, third_person_read
+from knic.language.terse import for_asker, room_alone, told_read
 from knic.language.tidy import (
     SEGMENT_END,
     before_moved,
@@ -191,9 +191,7 @@ class Reader:
 
     def _read_tokens(self, tokens: list[str]) -> Reading:
         """:meth:`read` of normalised tokens."""
-        said, asker = reported(
-            self.chunks(third_person_read(tokens, self.chunker)), self.vocabulary, self.chunker.bare_verb
-        )
+        said, asker = told_read(tokens, self.chunker, self.vocabulary)  # knic.language.terse
         chunks = learners_read(said, self.vocabulary)
         chunks = before_moved(relative_dropped(forbidden_dropped(chunks)))
         chunks = said_around(other_one(chunks, self.vocabulary), self.vocabulary, self.chunker)

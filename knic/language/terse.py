@@ -1,12 +1,16 @@
-"""Terse commands as people say them to smart speakers and voice assistants, and task descriptions that
-say where a thing is and where it goes in one breath:
+"""Terse commands as people say them to smart speakers and voice assistants, and task descriptions read in
+the third person (used by :class:`knic.language.reader.Reader` and :mod:`knic.language.roles`):
 
-* a room said alone, with nothing else asked ("ok robot, dining room", "to the kitchen please"): go there;
+* a room said alone ("ok robot, dining room", "to the kitchen please"): go there; with a level ("living room
+  to 30 percent"): its dimmer or blinds;
 * a room switched on or off ("turn the hallway off", "switch the garage on"): the room's lights (its one
-  light or dimmer, else the group of them);
+  light or dimmer, else the group of them); a level asked of a room's on/off lights is refused;
 * a thing put from one piece of furniture onto another ("put the mug that's on the counter on the dining
-  table"): the first is where it is taken from, the second where it goes, when the first is not in the
-  second.
+  table"), or from a place to a "to" destination: the first is where it is taken from;
+* a request told of someone ("tracy asks the robot to fetch her glasses", "annie asks for the tablet"): that
+  action, for her where it would be for the speaker;
+* verbs said of the robot in the third person ("the robot goes to the bedroom, then it finds the glasses");
+* things left out of a group ("all the lights except the hallway light"): the others.
 """
 
 from __future__ import annotations
@@ -223,3 +227,57 @@ def switched_only(vocabulary: Vocabulary, arg: Arg, args: list[Arg], levelled: b
         raise LanguageError(
             f"the {rooms[0].chunk.text} {arg.chunk.text} can only be switched on or off: say on or off"
         )
+
+
+#: words that leave things out of a group said before them ("all the lights except the hallway light")
+_EXCEPT = (
+    ("except", "for"),
+    ("except",),
+    ("apart", "from"),
+    ("but", "not"),
+    ("other", "than"),
+    ("excluding",),
+)
+
+
+def all_but(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
+    """A group, or every thing a name fits, said with some left out ("turn off all the lights except the
+    hallway light", "lights off apart from the right lamp", "switch on every light but not the left lamp"):
+    the others (their group when the world has one). Anything else stays as said."""
+    for i, chunk in enumerate(chunks):
+        every = i > 0 and chunks[i - 1].kind == "quant" and chunks[i - 1].role == "all"
+        if chunk.kind != "entity" or not (every or any(t.is_group for t in chunk.terms)):
+            continue
+        j = i + 1
+        while j < len(chunks) and (
+            chunks[j].kind == "state" or (chunks[j].kind == "prep" and chunks[j].state)
+        ):
+            j += 1
+        said = [c.text for c in chunks[j : j + 2]]
+        size = next((len(p) for p in _EXCEPT if said[: len(p)] == list(p)), 0)
+        k = j + size
+        while size and k < len(chunks) and chunks[k].kind == "det":
+            k += 1
+        if not size or k >= len(chunks) or chunks[k].kind != "entity":
+            continue
+        members = list(dict.fromkeys(m for t in chunk.terms for m in t.members))
+        left_out = {m for t in chunks[k].terms for m in t.members}
+        kept = [m for m in members if m not in left_out]
+        if not kept:
+            continue
+        if len(kept) == len(members):  # "the lights except the dimmer": the dimmer is none of them anyway
+            return [*chunks[:j], *chunks[k + 1 :]]
+        group = vocabulary.group_of(kept) if len(kept) > 1 else None
+        wanted = [group] if group is not None else kept
+        firsts = {t.symbol: t for t in reversed(vocabulary.terms) if t.symbol in wanted}
+        others = Chunk("entity", chunk.text, tuple(firsts[s] for s in wanted if s in firsts), role=chunk.role)
+        every_one = [] if every or len(wanted) == 1 else [Chunk("quant", "all", role="all")]
+        return [*chunks[:i], *every_one, others, *chunks[i + 1 : j], *chunks[k + 1 :]]
+    return chunks
+
+
+def told_read(tokens: list[str], chunker: Chunker, vocabulary: Vocabulary) -> tuple[list[Chunk], str | None]:
+    """The chunks of a command with the readings of this module that come before all others (verbs in the
+    third person, things left out of a group, a request told of someone), and who asked (else None)."""
+    chunks = all_but(chunker.chunks(third_person_read(tokens, chunker)), vocabulary)
+    return reported(chunks, vocabulary, chunker.bare_verb)

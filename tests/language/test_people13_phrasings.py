@@ -13,7 +13,8 @@ task descriptions in the third person) the reader first got wrong (:mod:`knic.la
 * a request told of someone, as task descriptions say it: "oscar has asked the robot to fetch his keys",
   "maria would like the robot to close the blinds", "tracy asks for the candle" (for her, not the speaker);
 * verbs said of the robot in the third person: "the robot heads to the hallway, then it looks for the mug";
-* a plural the world lacks joined to a thing: "gimme the apple and crisps" names 'crisps' (not dropped).
+* a plural the world lacks joined to a thing: "gimme the apple and crisps" names 'crisps' (not dropped);
+* things left out of a group: "all the lights apart from the hallway light" (the others, as their group).
 """
 
 from __future__ import annotations
@@ -176,4 +177,35 @@ def test_a_missing_plural_joined_to_a_thing_is_named(vocabulary: Any, other_hous
     # words after "and" that name no thing stay talk
     assert frames_read(vocabulary, "bring me the lemon and hurry up") == [
         {"frame": "BRINGING", "theme": "lemon", "beneficiary": "me"}
+    ]
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        (
+            "switch on all the lights apart from the hallway light",
+            [{"frame": "OPERATING", "device": "bedroom_lights", "state": "on"}],
+        ),
+        (
+            "lights off except for the left lamp",
+            [
+                {"frame": "OPERATING", "device": "bedroom_right_light", "state": "off"},
+                {"frame": "OPERATING", "device": "hallway_light", "state": "off"},
+            ],
+        ),
+        # a thing that is none of the group leaves it whole
+        (
+            "turn on the lights except the blinds",
+            [{"frame": "OPERATING", "device": "all_lights", "state": "on"}],
+        ),
+    ],
+)
+def test_things_left_out_of_a_group(vocabulary: Any, text: str, frames: list[dict[str, str]]) -> None:
+    assert frames_read(vocabulary, text) == frames
+
+
+def test_things_left_out_in_the_other_house(other_house: Any) -> None:
+    assert frames_read(other_house, "turn off every light but not the desk lamp", "maria") == [
+        {"frame": "OPERATING", "device": "garage_light", "state": "off"}
     ]
