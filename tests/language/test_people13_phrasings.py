@@ -14,7 +14,8 @@ task descriptions in the third person) the reader first got wrong (:mod:`knic.la
   "maria would like the robot to close the blinds", "tracy asks for the candle" (for her, not the speaker);
 * verbs said of the robot in the third person: "the robot heads to the hallway, then it looks for the mug";
 * a plural the world lacks joined to a thing: "gimme the apple and crisps" names 'crisps' (not dropped);
-* things left out of a group: "all the lights apart from the hallway light" (the others, as their group).
+* things left out of a group: "all the lights apart from the hallway light" (the others, as their group);
+* "grasp", "grip" as competition tasks say "take" (commands.yaml text_phrases).
 """
 
 from __future__ import annotations
@@ -209,3 +210,12 @@ def test_things_left_out_in_the_other_house(other_house: Any) -> None:
     assert frames_read(other_house, "turn off every light but not the desk lamp", "maria") == [
         {"frame": "OPERATING", "device": "garage_light", "state": "off"}
     ]
+
+
+def test_grasp_as_competition_tasks_say_it(vocabulary: Any) -> None:
+    assert frames_read(vocabulary, "navigate to the bathroom, grasp the soap and deliver it to tracy") == [
+        {"frame": "MOTION", "goal": "bathroom"},
+        {"frame": "TAKING", "theme": "soap", "source": "bathroom"},
+        {"frame": "BRINGING", "theme": "soap", "source": "bathroom", "beneficiary": "tracy"},
+    ]
+    assert frames_read(vocabulary, "The robot grasps the candle.") == [{"frame": "TAKING", "theme": "candle"}]
