@@ -63,6 +63,7 @@ from knic.language.phoneloop import (
     ngram_pass,
 )
 from knic.language.reader import AmbiguityError, Reader
+from knic.language.understanding import reader_for
 from knic.language.vocabulary import Vocabulary
 
 if TYPE_CHECKING:
@@ -181,7 +182,7 @@ class NgramRecognizer:
         parallel: bool = True,
     ):
         self.nbest = nbest
-        reader = None if reads else Reader(vocabulary)
+        reader = None if reads else reader_for(vocabulary)  # the one understanding reads with
         self.reads = reads or _reader_check(reader or Reader(vocabulary))
         #: what the reader reads a text as (None: unread), to drop unfinished last words that change nothing
         #: (not with a ``reads`` of one's own)
