@@ -10,7 +10,8 @@ the third person (used by :class:`knic.language.reader.Reader` and :mod:`knic.la
 * a request told of someone ("tracy asks the robot to fetch her glasses", "annie asks for the tablet"): that
   action, for her where it would be for the speaker;
 * verbs said of the robot in the third person ("the robot goes to the bedroom, then it finds the glasses");
-* things left out of a group ("all the lights except the hallway light"): the others.
+* things left out of a group ("all the lights except the hallway light"): the others;
+* a person described before what they want ("annie, who is sitting on the sofa, wants the remote"): for her.
 """
 
 from __future__ import annotations
@@ -280,4 +281,39 @@ def told_read(tokens: list[str], chunker: Chunker, vocabulary: Vocabulary) -> tu
     """The chunks of a command with the readings of this module that come before all others (verbs in the
     third person, things left out of a group, a request told of someone), and who asked (else None)."""
     chunks = all_but(chunker.chunks(third_person_read(tokens, chunker)), vocabulary)
-    return reported(chunks, vocabulary, chunker.bare_verb)
+    return reported(described_subject(chunks, vocabulary), vocabulary, chunker.bare_verb)
+
+
+#: what may stand between a person and what they want, describing where they are ("annie, who is sitting
+#: on the sofa, wants the remote", "tracy is in the kitchen and needs a glass")
+_DESCRIBING = ("unknown", "prep", "det", "join", "entity", "state")
+
+
+def described_subject(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
+    """A person said first, then where they are or what they do, then a verb whose subject is who it is for
+    ("needs", "wants"): the person is that subject; the words between are dropped. Anything else stays."""
+    verb = next((i for i, c in enumerate(chunks) if c.kind == "verb"), None)
+    if verb is None or verb < 2 or chunks[verb].beneficiary != "subject":
+        return chunks
+    first, between = chunks[0], chunks[1:verb]
+    if (
+        first.kind != "entity"
+        or not first.terms
+        or not all(_is(vocabulary, t, ("person",)) for t in first.terms)
+    ):
+        return chunks
+    if any(c.kind not in _DESCRIBING for c in between):
+        return chunks
+    before = [c for c in between if c.kind != "det"]
+    if before[-1:] and before[-1].kind == "entity" and (len(before) < 2 or before[-2].kind != "prep"):
+        return chunks  # "annie said the kitchen needs the sponge": the kitchen is the subject
+    if any(
+        c.kind == "entity" and not all(_is(vocabulary, t, ("room", "furniture")) for t in c.terms)
+        for c in between
+    ):
+        return chunks
+    return [first, *chunks[verb:]]
+
+
+def _is(vocabulary: Vocabulary, term: Term, kinds: Sequence[str]) -> bool:
+    return any(vocabulary.is_subtype(term.type, k) for k in kinds)

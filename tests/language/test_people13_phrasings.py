@@ -15,7 +15,9 @@ task descriptions in the third person) the reader first got wrong (:mod:`knic.la
 * verbs said of the robot in the third person: "the robot heads to the hallway, then it looks for the mug";
 * a plural the world lacks joined to a thing: "gimme the apple and crisps" names 'crisps' (not dropped);
 * things left out of a group: "all the lights apart from the hallway light" (the others, as their group);
-* "grasp", "grip" as competition tasks say "take" (commands.yaml text_phrases).
+* "grasp", "grip" as competition tasks say "take" (commands.yaml text_phrases);
+* "nah", "nope" as a correction: "bring me the apple, nah, the lemon" (commands.yaml spellings);
+* a person described before what they want: "annie, who is sitting on the sofa, wants the remote".
 """
 
 from __future__ import annotations
@@ -219,3 +221,25 @@ def test_grasp_as_competition_tasks_say_it(vocabulary: Any) -> None:
         {"frame": "BRINGING", "theme": "soap", "source": "bathroom", "beneficiary": "tracy"},
     ]
     assert frames_read(vocabulary, "The robot grasps the candle.") == [{"frame": "TAKING", "theme": "candle"}]
+
+
+def test_nah_and_nope_correct_what_was_said(vocabulary: Any, other_house: Any) -> None:
+    assert frames_read(vocabulary, "gimme the cup, nah, the glass") == [
+        {"frame": "BRINGING", "theme": "glass", "beneficiary": "me"}
+    ]
+    assert frames_read(other_house, "go to the garage nope the study", "oscar") == [
+        {"frame": "MOTION", "goal": "study"}
+    ]
+
+
+@pytest.mark.parametrize(
+    ("text", "theme", "who"),
+    [
+        ("Tracy, who is lying on the bed, needs the tissues.", "tissues", "tracy"),
+        ("Annie is in the dining room and wants a cup.", "cup", "annie"),
+    ],
+)
+def test_a_person_described_before_what_they_want(vocabulary: Any, text: str, theme: str, who: str) -> None:
+    assert frames_read(vocabulary, text, "tracy" if who == "annie" else "annie") == [
+        {"frame": "BRINGING", "theme": theme, "beneficiary": who}
+    ]
