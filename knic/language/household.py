@@ -24,6 +24,7 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 
 from knic.language.chunks import Chunk, Chunker
+from knic.language.selecting import described
 from knic.language.vocabulary import Vocabulary
 
 #: hesitations, dropped even inside a phrase (they are fillers wherever they stand)
@@ -291,7 +292,7 @@ def ones_named(segments: list[list[str]], vocabulary: Vocabulary) -> list[list[s
                 kept[i] = heads[-1]
         said += kept
         out.append(kept)
-    return out
+    return described(out, vocabulary)  # knic.language.selecting
 
 
 #: what says a thing is to be taken along ("don't forget the glasses", "do not forget", "remember the keys")

@@ -20,6 +20,7 @@ from knic.language.chunks import Chunk
 from knic.language.clauses import Arg, Clause
 from knic.language.commands import CommandLanguage
 from knic.language.frames import SPEAKER, CommandFrame
+from knic.language.selecting import came_from
 from knic.language.terse import placed_from, room_lights, switched_only, taken_from_first
 from knic.language.vocabulary import Term, Vocabulary, level_percent
 
@@ -145,6 +146,9 @@ def _carry(
     discarded = _discarded_into(reader, clause) if kind == "PLACING" and "goal" not in roles else None
     if discarded is not None:  # "throw the tissues away": into the bin
         roles["goal"] = discarded
+    back = came_from(previous, themes[0]) if kind == "PLACING" and clause.unsaid_goal else None
+    if back is not None and "goal" not in roles:  # "take the cup from the table, then put it back"
+        roles["goal"] = back
     if kind == "PLACING" and "goal" not in roles and clause.unsaid_goal:  # "put the mug back"
         thing = reader.vocabulary.phrase_of(themes[0])
         raise AmbiguityError(f"where should I put the {thing}: on which piece of furniture or in which room?")

@@ -1,0 +1,350 @@
+"""Things picked out by what is said of them rather than by their names, read in the words of each sentence
+before they are cut into chunks (called from :func:`knic.language.household.ones_named`):
+
+* a request said again with "i said", "like i said", "i told you": the request ("i said the bedroom");
+* "the ones" set apart after a thing, as "the one" ("my glasses, the ones on the nightstand");
+* a side said of a thing ("the lamp on the left side of the bed", "the light to the right"): the thing of
+  that side, where the world has one called so ("left lamp");
+* two sides said of one noun ("the left and the right lamp"): both names said whole;
+* all of a kind but "the ... one(s)" ("all the lights except the hallway one", "every lamp but the one in
+  the study"): the ones left out by their names (knic.language.terse then reads the others);
+* a kind of thing said for its use ("something to drink", "a cold drink", "a piece of fruit"): the one
+  thing of the world of that kind, or a question which of them (none: the word is refused as unknown);
+* "all of them", "both of them" after the things ("the lights, all of them, off"): said already;
+* a room said before the name of a device or piece of furniture after "and" ("the hallway light and the
+  bedroom lamps"): where that one is, not where the first one is;
+* a thing said by a landmark the world does not know ("the light by the door") where the thing's name fits
+  several: the landmark cannot tell them apart, so the reader asks which;
+* one of two things "whichever" ("the mug or the cup, whichever is closer") or "either ... or": the robot
+  cannot tell which; it asks.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Sequence
+
+from knic.language.chains import AmbiguityError
+from knic.language.frames import CommandFrame
+from knic.language.vocabulary import Term, Vocabulary
+
+#: what says a request is said again ("i said the bedroom", "like i said, the hallway light")
+_SAID_AGAIN = (
+    ("like", "i", "said"),
+    ("as", "i", "said"),
+    ("i", "already", "said"),
+    ("i", "already", "told", "you"),
+    ("i", "told", "you", "to"),
+    ("i", "told", "you"),
+    ("i", "said"),
+)
+_SIDES = frozenset({"left", "right"})
+_SIDE_PREPS = frozenset({"on", "to", "at"})
+_DETERMINERS = frozenset({"the", "a", "an", "my", "your", "his", "her", "our", "their", "this", "that"})
+#: words that leave some out of all of a kind ("all the lights except the hallway one")
+_EXCEPT = (("except", "for"), ("apart", "from"), ("other", "than"), ("but", "not"), ("except",), ("but",))
+_ALL = frozenset({"all", "every", "each"})
+#: what things of a kind are called, for a kind said by its use ("something to drink")
+_KINDS = {
+    "drink": frozenset(
+        {"coke", "cola", "soda", "water", "juice", "milk", "tea", "coffee", "beer", "wine", "lemonade"}
+    ),
+    "fruit": frozenset({"apple", "lemon", "banana", "orange", "pear", "peach", "plum", "grapes", "lime"}),
+}
+_KIND_WORDS = {"drink": "drink", "drinks": "drink", "beverage": "drink", "fruit": "fruit", "fruits": "fruit"}
+_SAID_OF_KIND = frozenset(
+    {"cold", "hot", "cool", "warm", "fresh", "nice", "little", "piece", "of", "another"}
+)
+
+
+def described(segments: list[list[str]], vocabulary: Vocabulary) -> list[list[str]]:
+    """The sentences with things said by description put as their names (see the module docstring).
+
+    Raises:
+        AmbiguityError: a kind of thing fits several things, or "whichever" of two is asked for.
+    """
+    phrases = {t.phrase: t for t in vocabulary.terms if t.type != "level"}
+    out: list[list[str]] = []
+    for segment in segments:
+        before = out[-1][-1] if out and out[-1] else ""
+        words = _all_of_them(_said_again(segment, len(segments) > 1), before, phrases)
+        words = [
+            "one" if w == "ones" and i and words[i - 1] in _DETERMINERS | {"these", "those"} else w
+            for i, w in enumerate(words)
+        ]
+        words = _sides(_two_sides(words, phrases), phrases)
+        words = _all_but(words, vocabulary, phrases)
+        words = _kind(words, vocabulary)
+        words = _room_first(_landmark_unknown(words, phrases), vocabulary, phrases)
+        if words:
+            out.append(words)
+    _whichever([w for words in out for w in words], phrases)  # "the mug or the cup, whichever is closer"
+    return out
+
+
+def _said_again(words: list[str], others: bool) -> list[str]:
+    """Without "i said" and the like opening the sentence (alone, only when other sentences are said)."""
+    for said in _SAID_AGAIN:
+        if tuple(words[: len(said)]) == said and (len(words) > len(said) or others):
+            return words[len(said) :]
+    return words
+
+
+def _two_sides(words: list[str], phrases: dict[str, Term]) -> list[str]:
+    """ "the left and the right lamp": "the left lamp and the right lamp", both names of the world."""
+    for i, word in enumerate(words):
+        if word != "and" or i < 1 or i + 2 >= len(words):
+            continue
+        first = words[i - 1]
+        at = i + 1 + (words[i + 1] in _DETERMINERS)
+        if at + 1 >= len(words):
+            continue
+        second, noun = words[at], _singular(words[at + 1], phrases, words[at])
+        if first in phrases or f"{second} {noun}" not in phrases or f"{first} {noun}" not in phrases:
+            continue
+        return [*words[:i], noun, "and", *words[i + 1 : at], second, noun, *words[at + 2 :]]
+    return words
+
+
+def _singular(noun: str, phrases: dict[str, Term], before: str) -> str:
+    if f"{before} {noun}" in phrases or not noun.endswith("s"):
+        return noun
+    return noun[:-1]
+
+
+def _sides(words: list[str], phrases: dict[str, Term]) -> list[str]:
+    """ "the lamp on the left side of the bed": "the left lamp", where the world has one called so."""
+    for i in range(3, len(words)):
+        side, noun = words[i], words[i - 3]
+        if side not in _SIDES or words[i - 1] != "the" or words[i - 2] not in _SIDE_PREPS:
+            continue
+        if f"{side} {noun}" not in phrases:
+            continue
+        end = i + 1
+        for extra in ("hand", "side"):
+            if end < len(words) and words[end] == extra:
+                end += 1
+        if end < len(words) and words[end] == "of":  # the landmark: "of the bed", "of the kitchen table"
+            at = end + 1 + (end + 1 < len(words) and words[end + 1] in _DETERMINERS)
+            size = next((n for n in (3, 2, 1) if " ".join(words[at : at + n]) in phrases), 0)
+            if size:
+                end = at + size
+        return [*words[: i - 3], side, noun, *words[end:]]
+    return words
+
+
+def _all_but(words: list[str], vocabulary: Vocabulary, phrases: dict[str, Term]) -> list[str]:
+    """ "all the lights except the hallway one", "... but the ones in the bedroom": the ones left out said
+    by their names, which :func:`knic.language.terse.told_read` then leaves out of the group."""
+    for k in range(len(words)):
+        said = next((e for e in _EXCEPT if tuple(words[k : k + len(e)]) == e), None)
+        if said is None:
+            continue
+        start = next((j for j in range(k - 1, -1, -1) if words[j] in _ALL), None)
+        if start is None:
+            continue
+        head = [w for w in words[start + 1 : k] if w not in ("the", "of")]
+        kind = _all_of(head, vocabulary, phrases)
+        if not kind:
+            continue
+        end = k + len(said)
+        while end < len(words) and words[end] not in ("and", "then"):
+            end += 1
+        described = words[k + len(said) : end]
+        left_out = sorted(_left_out(described, kind, head, vocabulary, phrases))
+        if not left_out or len(left_out) == len(kind):
+            continue
+        except_ = ["except"] if said == ("but",) else list(said)  # "but" may also start a correction
+        if not {"one", "ones"} & set(described):  # named: knic.language.terse leaves them out
+            if said != ("but",):
+                continue
+            return [*words[:k], *except_, *words[k + 1 :]]
+        group = vocabulary.group_of(left_out) if len(left_out) > 1 else None
+        said_as: list[str] = []
+        for symbol in [group] if group is not None else left_out:
+            said_as += [*(["and"] if said_as else []), "the", *vocabulary.phrase_of(symbol).split()]
+        return [*words[:k], *except_, *said_as, *words[end:]]
+    return words
+
+
+def _all_of(head: list[str], vocabulary: Vocabulary, phrases: dict[str, Term]) -> list[str]:
+    """The things "all the <head>" names: a group's members, or every thing whose name or type ends so."""
+    if not head:
+        return []
+    said = " ".join(head)
+    noun = head[-1][:-1] if head[-1].endswith("s") else head[-1]
+    for name in (said, " ".join([*head[:-1], noun])):
+        term = phrases.get(name)
+        if term is not None:
+            return sorted(set(term.members)) if term.is_group else []
+    if len(head) > 1:
+        return []
+    found = {
+        t.symbol
+        for t in vocabulary.terms
+        if not t.is_group and t.type != "level" and (t.phrase.split()[-1] == noun or t.type == noun)
+    }
+    return sorted(found) if len(found) > 1 else []
+
+
+def _left_out(
+    words: Sequence[str], kind: list[str], head: list[str], vocabulary: Vocabulary, phrases: dict[str, Term]
+) -> set[str]:
+    """Which of ``kind`` the words after "except" name: a name ("the desk lamp", "the hallway one"), or
+    the ones in a place ("the one in the hallway", "the bedroom ones")."""
+    noun = head[-1][:-1] if head[-1].endswith("s") else head[-1]
+    said = [w for w in words if w not in _DETERMINERS and w not in ("not", "for")]
+    said = [noun if w in ("one", "ones") else w for w in said]
+    if said and said[0] == noun and len(said) > 2 and said[1] in ("in", "on", "at"):
+        said = said[2:]  # "the one in the hallway": the place
+    name = " ".join(said)
+    term = phrases.get(name) or phrases.get(f"{name} {noun}") or phrases.get(" ".join(said[:-1]))
+    if term is None:
+        return set()
+    if vocabulary.is_subtype(term.type, "room"):
+        return {s for s in kind if term.symbol in s or term.symbol in vocabulary.locations.get(s, ())}
+    return set(term.members) & set(kind)
+
+
+def _kind(words: list[str], vocabulary: Vocabulary) -> list[str]:
+    """ "something to drink", "a cold drink": the one thing of the world of that kind."""
+    for i, word in enumerate(words):
+        kind = _KIND_WORDS.get(word)
+        if kind is None or not i:
+            continue
+        start = i
+        if words[i - 1] == "to":  # "something (cold) to drink"; "i want to drink": a verb
+            start = i - 2
+            while start >= 0 and words[start] in _SAID_OF_KIND:
+                start -= 1
+            if start < 0 or words[start] not in ("something", "anything"):
+                continue
+        else:
+            while start and (
+                words[start - 1] in _SAID_OF_KIND or words[start - 1] in _DETERMINERS | {"some"}
+            ):
+                start -= 1
+            if start == i:
+                continue  # "drink" said as a verb
+        things = {
+            t.symbol: t
+            for t in vocabulary.terms
+            if not t.is_group
+            and vocabulary.is_subtype(t.type, "item")
+            and set(t.phrase.split()) & _KINDS[kind]
+        }
+        if not things:
+            return words
+        if len(things) > 1:
+            names = [vocabulary.phrase_of(s) for s in sorted(things)]
+            listed = ", ".join(f"the {n}" for n in names[:-1]) + f" or the {names[-1]}"
+            raise AmbiguityError(f"which {kind} do you mean: {listed}?")
+        symbol = next(iter(things))
+        return [*words[:start], "the", *vocabulary.phrase_of(symbol).split(), *words[i + 1 :]]
+    return words
+
+
+def _whichever(words: list[str], phrases: dict[str, Term]) -> None:
+    """ "the mug or the cup, whichever is closer", "either the mug or the cup": ask which."""
+    if "or" not in words or not ({"whichever", "either"} & set(words)):
+        return
+    at = words.index("or")
+    before = [w for w in words[:at] if w not in _DETERMINERS]
+    after = [w for w in words[at + 1 :] if w not in _DETERMINERS]
+    first = next((" ".join(before[-n:]) for n in (3, 2, 1) if " ".join(before[-n:]) in phrases), None)
+    second = next((" ".join(after[:n]) for n in (3, 2, 1) if " ".join(after[:n]) in phrases), None)
+    if first is None or second is None or phrases[first].symbol == phrases[second].symbol:
+        return
+    tail = " ".join(words[words.index("whichever") :]) if "whichever" in words else ""
+    judged = f" I cannot judge '{tail}' myself." if tail else ""
+    raise AmbiguityError(f"which one, the {first} or the {second}?{judged}")
+
+
+def came_from(previous: Sequence[CommandFrame], theme: str) -> str | None:
+    """Where a thing put "back" came from: the source of the latest earlier action on it ("take the cup
+    from the table and then put it back": the table), else None."""
+    for frame in reversed(previous):
+        if frame.get("theme") == theme and frame.get("source"):
+            return frame.get("source")
+    return None
+
+
+#: a quantifier said after the things it counts ("the lights, all of them"; "the lamps both off")
+_AFTER_THINGS = (
+    ("all", "of", "them"),
+    ("both", "of", "them"),
+    ("each", "of", "them"),
+    ("every", "one", "of", "them"),
+)
+_LANDMARKS = (("next", "to"), ("close", "to"), ("by",), ("near",), ("beside",))
+
+
+def _plural_name(word: str, phrases: dict[str, Term]) -> bool:
+    """Whether a word is a plural of the world's names ("lights", "lamps", "blinds")."""
+    if not word.endswith("s"):
+        return False
+    lasts = {p.split()[-1] for p in phrases}
+    return word in lasts or word[:-1] in lasts
+
+
+def _all_of_them(words: list[str], before: str, phrases: dict[str, Term]) -> list[str]:
+    """Without "all of them" (or "both", "all" alone before a state) said right after plural names."""
+    for i in range(len(words)):
+        last = words[i - 1] if i else before
+        if not _plural_name(last, phrases):
+            continue
+        said = next((len(q) for q in _AFTER_THINGS if tuple(words[i : i + len(q)]) == q), 0)
+        floating = words[i] in ("all", "both") and (i + 1 == len(words) or words[i + 1] in ("on", "off"))
+        if said or floating:
+            return [*words[:i], *words[i + (said or 1) :]]
+    return words
+
+
+def _landmark_unknown(words: list[str], phrases: dict[str, Term]) -> list[str]:
+    """ "the light by the door" where no door is known and several lights: the landmark left out, so that
+    the reader asks which light."""
+    heads = {p.split()[-1] for p in phrases}
+    for i in range(1, len(words)):
+        landmark = next((m for m in _LANDMARKS if tuple(words[i : i + len(m)]) == m), None)
+        if landmark is None:
+            continue
+        noun = words[i - 1][:-1] if words[i - 1].endswith("s") else words[i - 1]
+        fitting = {t.symbol for p, t in phrases.items() if noun in (p.split()[-1], t.type) and not t.is_group}
+        at = i + len(landmark)
+        while at < len(words) and words[at] in _DETERMINERS:
+            at += 1
+        said = words[at:]
+        if len(fitting) < 2 or not said or len(said) > 2 or " ".join(said) in phrases:
+            continue
+        if said[-1] in heads or said[-1][:-1] in heads:
+            continue
+        return words[:i]
+    return words
+
+
+def _room_first(words: list[str], vocabulary: Vocabulary, phrases: dict[str, Term]) -> list[str]:
+    """After "and", "the bedroom lamps": "the lamps in the bedroom" (a room said before the name of a device
+    or piece of furniture, which the reader narrows down by the place said right after it)."""
+    for i, word in enumerate(words):
+        if word != "and":
+            continue
+        at = i + 1
+        while at < len(words) and words[at] in _DETERMINERS | {"both", "all"}:
+            at += 1
+        size = next((n for n in (2, 1) if " ".join(words[at : at + n]) in phrases), 0)
+        room = phrases.get(" ".join(words[at : at + size]))
+        if not size or room is None or not vocabulary.is_subtype(room.type, "room"):
+            continue
+        noun = words[at + size : at + size + 1]
+        if not noun or " ".join(words[at : at + size + 1]) in phrases:
+            continue
+        single = noun[0][:-1] if noun[0].endswith("s") else noun[0]
+        narrowed = ("device", "furniture")  # what a place narrows down; things said with it share it
+        lasts = {
+            p.split()[-1]
+            for p, t in phrases.items()
+            if any(vocabulary.is_subtype(t.type, k) for k in narrowed)
+        }
+        if noun[0] not in lasts and single not in lasts:
+            continue
+        return [*words[:at], noun[0], "in", "the", *words[at : at + size], *words[at + size + 1 :]]
+    return words
