@@ -11,7 +11,9 @@ the third person (used by :class:`knic.language.reader.Reader` and :mod:`knic.la
   action, for her where it would be for the speaker;
 * verbs said of the robot in the third person ("the robot goes to the bedroom, then it finds the glasses");
 * things left out of a group ("all the lights except the hallway light"): the others;
-* a person described before what they want ("annie, who is sitting on the sofa, wants the remote"): for her.
+* a person described before what they want ("annie, who is sitting on the sofa, wants the remote"): for her;
+* a request quoted ("oscar says bring me the bottle"): "me" is the one quoted;
+* the robot called by its name ("tiago, lounge dimmer to 30"): address.
 """
 
 from __future__ import annotations
@@ -128,8 +130,10 @@ def placed_from(vocabulary: Vocabulary, args: list[Arg]) -> None:
 _REPORTING = frozenset(
     {"asks", "asked", "has", "have", "had", "tells", "told", "orders", "ordered", "instructs", "instructed"}
     | {"requests", "requested", "commands", "commanded", "expects", "wishes", "wants", "needs", "would like"}
-    | {"would", "like", "you"}
+    | {"would", "like", "you", "says", "said"}
 )
+#: what quotes the request itself ("oscar says bring me the bottle", "maria tells the robot: go to the study")
+_QUOTING = frozenset({"says", "said", "tells", "told"})
 #: what asks for a thing ("annie asks for the tablet")
 _ASKING_FOR = frozenset({"asks", "asked"})
 
@@ -155,8 +159,11 @@ def reported(
     asker = people.pop()
     if chunks[i].kind == "prep" and chunks[i].text == "for" and chunks[i - 1].text in _ASKING_FOR:
         return ([chunks[0], bare_verb, *chunks[i + 1 :]], asker) if bare_verb is not None else (chunks, None)
+    quoted = chunks[i - 1].text in _QUOTING
     while i < len(chunks) and chunks[i].kind == "det":
         i += 1
+    if quoted and i < len(chunks) and chunks[i].kind == "verb":  # "oscar says bring me the bottle": oscar
+        return [chunks[0], *chunks[i:]], asker
     if (
         i + 1 < len(chunks)
         and chunks[i].kind == "prep"
@@ -280,7 +287,8 @@ def all_but(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
 def told_read(tokens: list[str], chunker: Chunker, vocabulary: Vocabulary) -> tuple[list[Chunk], str | None]:
     """The chunks of a command with the readings of this module that come before all others (verbs in the
     third person, things left out of a group, a request told of someone), and who asked (else None)."""
-    chunks = all_but(chunker.chunks(third_person_read(tokens, chunker)), vocabulary)
+    chunks = chunker.chunks(third_person_read(tokens, chunker))
+    chunks = all_but(robot_unnamed(chunks, vocabulary), vocabulary)
     return reported(described_subject(chunks, vocabulary), vocabulary, chunker.bare_verb)
 
 
@@ -317,3 +325,19 @@ def described_subject(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk
 
 def _is(vocabulary: Vocabulary, term: Term, kinds: Sequence[str]) -> bool:
     return any(vocabulary.is_subtype(term.type, k) for k in kinds)
+
+
+def robot_unnamed(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
+    """The robot called by its name at the start or the end of a command ("tiago, lounge dimmer to 30",
+    "bring me the keys r2d2"): address, dropped."""
+
+    def robot(chunk: Chunk) -> bool:
+        terms = chunk.terms
+        return chunk.kind == "entity" and bool(terms) and all(_is(vocabulary, t, ("robot",)) for t in terms)
+
+    start, end = 0, len(chunks)
+    while start < end and robot(chunks[start]):
+        start += 1
+    while end > start and robot(chunks[end - 1]):
+        end -= 1
+    return chunks[start:end] if (start, end) != (0, len(chunks)) else chunks

@@ -17,7 +17,10 @@ task descriptions in the third person) the reader first got wrong (:mod:`knic.la
 * things left out of a group: "all the lights apart from the hallway light" (the others, as their group);
 * "grasp", "grip" as competition tasks say "take" (commands.yaml text_phrases);
 * "nah", "nope" as a correction: "bring me the apple, nah, the lemon" (commands.yaml spellings);
-* a person described before what they want: "annie, who is sitting on the sofa, wants the remote".
+* a person described before what they want: "annie, who is sitting on the sofa, wants the remote";
+* a request quoted: "oscar says bring me the bottle" (for oscar);
+* the robot called by its name: "tiago, lounge dimmer to 30", "r2d2 blinds down";
+* interjections typed by teenagers ("omg", "lol", "bruh", "ugh") and "rn" (commands.yaml spellings).
 """
 
 from __future__ import annotations
@@ -242,4 +245,28 @@ def test_nah_and_nope_correct_what_was_said(vocabulary: Any, other_house: Any) -
 def test_a_person_described_before_what_they_want(vocabulary: Any, text: str, theme: str, who: str) -> None:
     assert frames_read(vocabulary, text, "tracy" if who == "annie" else "annie") == [
         {"frame": "BRINGING", "theme": theme, "beneficiary": who}
+    ]
+
+
+def test_a_quoted_request_is_for_the_one_quoted(other_house: Any) -> None:
+    assert frames_read(other_house, 'Maria says "fetch me the blanket".', "oscar") == [
+        {"frame": "BRINGING", "theme": "blanket", "beneficiary": "maria"}
+    ]
+
+
+def test_the_robot_called_by_its_name_is_address(vocabulary: Any, other_house: Any) -> None:
+    assert frames_read(other_house, "tiago study blinds to 20", "maria") == [
+        {"frame": "OPERATING", "device": "study_blinds", "state": "20"}
+    ]
+    assert frames_read(vocabulary, "bring me the sponge r2d2") == [
+        {"frame": "BRINGING", "theme": "sponge", "beneficiary": "me"}
+    ]
+
+
+def test_interjections_typed_by_teenagers(vocabulary: Any) -> None:
+    assert frames_read(vocabulary, "ugh the left lamp is on switch it off rn") == [
+        {"frame": "OPERATING", "device": "bedroom_left_light", "state": "off"}
+    ]
+    assert frames_read(vocabulary, "lol gimme the soap bruh") == [
+        {"frame": "BRINGING", "theme": "soap", "beneficiary": "me"}
     ]
