@@ -15,6 +15,8 @@ before they are cut into chunks (called from :func:`knic.language.household.ones
   bedroom lamps"): where that one is, not where the first one is;
 * a thing said by a landmark the world does not know ("the light by the door") where the thing's name fits
   several: the landmark cannot tell them apart, so the reader asks which;
+* "put it back" after a thing is said to have fallen or been knocked from a place ("the candle fell off the
+  shelf, put it back"): back on that place;
 * one of two things "whichever" ("the mug or the cup, whichever is closer") or "either ... or": the robot
   cannot tell which; it asks.
 """
@@ -78,7 +80,7 @@ def described(segments: list[list[str]], vocabulary: Vocabulary) -> list[list[st
         if words:
             out.append(words)
     _whichever([w for words in out for w in words], phrases)  # "the mug or the cup, whichever is closer"
-    return out
+    return _fell_from(out, vocabulary, phrases)
 
 
 def _said_again(words: list[str], others: bool) -> list[str]:
@@ -348,3 +350,41 @@ def _room_first(words: list[str], vocabulary: Vocabulary, phrases: dict[str, Ter
             continue
         return [*words[:at], noun[0], "in", "the", *words[at : at + size], *words[at + size + 1 :]]
     return words
+
+
+#: what says a thing left a place by accident ("fell off the shelf", "got knocked out of the crib")
+_FELL = frozenset({"fell", "dropped", "slipped", "rolled", "tumbled", "knocked", "blown", "blew"})
+_FROM = (("out", "of"), ("off", "of"), ("off",), ("from",))
+
+
+def _fell_from(
+    segments: list[list[str]], vocabulary: Vocabulary, phrases: dict[str, Term]
+) -> list[list[str]]:
+    """ "the teddy fell out of the crib, put it back": "put it back in the crib" (a later "back" with no
+    place said after it is where the thing fell from)."""
+    place: list[str] = []
+    out = []
+    for words in segments:
+        kept = list(words)
+        for i, word in enumerate(kept):
+            if (
+                word == "back"
+                and place
+                and (i + 1 == len(kept) or kept[i + 1] not in ("in", "on", "to", "into"))
+            ):
+                kept[i + 1 : i + 1] = ["in", "the", *place]
+                place = []
+                break
+            if word not in _FELL:
+                continue
+            rest = kept[i + 1 :]
+            skip = next((j for j in range(5) if any(tuple(rest[j : j + len(f)]) == f for f in _FROM)), 0)
+            rest = rest[skip:]  # "i dropped the sponge off the counter"
+            said = next((len(f) for f in _FROM if tuple(rest[: len(f)]) == f), 0)
+            at = said + (said < len(rest) and rest[said] in _DETERMINERS)
+            size = next((n for n in (3, 2, 1) if " ".join(rest[at : at + n]) in phrases), 0)
+            term = phrases.get(" ".join(rest[at : at + size])) if said and size else None
+            if term is not None and any(vocabulary.is_subtype(term.type, k) for k in ("furniture", "room")):
+                place = rest[at : at + size]
+        out.append(kept)
+    return out

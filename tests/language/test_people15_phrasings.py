@@ -9,7 +9,7 @@ describe rather than name) the reader first got wrong, read by :mod:`knic.langua
 * a kind said for its use ("something to drink", "a piece of fruit"): the one such thing, else a question;
 * "whichever" or "either ... or" of two things: a question; a landmark nobody knows beside a name that fits
   several things: a question which;
-* "put it back" after the thing was taken from somewhere: back there.
+* "put it back" after the thing was taken from somewhere, or fell from somewhere: back there.
 """
 
 from __future__ import annotations
@@ -127,3 +127,15 @@ def test_put_back_after_taking_is_back_where_it_was_taken_from(vocabulary: Any) 
         {"frame": "PLACING", "theme": "candle", "goal": "side_table"},
     ]
     _asked(vocabulary, "put the candle back", "where")
+
+
+def test_put_back_after_a_fall_is_back_where_it_fell_from(vocabulary: Any, other_house: Any) -> None:
+    assert frames_read(vocabulary, "the candle fell off the side table, can you put it back") == [
+        {"frame": "PLACING", "theme": "candle", "goal": "side_table"}
+    ]
+    assert frames_read(other_house, "oscar knocked the blanket off the couch, put it back", "maria") == [
+        {"frame": "PLACING", "theme": "blanket", "goal": "couch"}
+    ]
+    assert frames_read(vocabulary, "the remote slipped off the sofa, put it back on the tv table") == [
+        {"frame": "PLACING", "theme": "remote", "goal": "tv_table"}
+    ]
