@@ -42,12 +42,17 @@ def room_alone(chunks: list[Chunk], vocabulary: Vocabulary, chunker: Chunker) ->
     if not all(vocabulary.is_subtype(t.type, "room") for t in names[0].terms):
         return chunks
     levelled = any(c.kind in ("level", "number") for c in rest)
+    switched = [c for c in rest if c.state in _SWITCHED and c.kind in ("state", "prep")]
     roles = ("goal", "place", "level") if levelled else ("goal",)
+    rest = [c for c in rest if c not in switched]
     if any(c.kind not in (*_LEVELLED, "prep") or (c.kind == "prep" and c.role not in roles) for c in rest):
         return chunks
-    if not levelled and any(c.kind in _LEVELLED[1:] for c in rest):
+    said = [c for c in rest if c.kind != "det"]
+    if (not levelled and any(c.kind in _LEVELLED[1:] for c in rest)) or (switched and (levelled or said)):
         return chunks
-    verb, frame = ("set", "OPERATING") if levelled else ("go", "MOTION")
+    verb, frame = (
+        ("set", "OPERATING") if levelled else ("turn", "OPERATING") if switched else ("go", "MOTION")
+    )
     said = [c for c in chunker.chunks([verb]) if c.kind == "verb" and frame in c.frames]
     return [*said[:1], *chunks] if said else chunks
 

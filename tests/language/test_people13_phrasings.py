@@ -20,7 +20,8 @@ task descriptions in the third person) the reader first got wrong (:mod:`knic.la
 * a person described before what they want: "annie, who is sitting on the sofa, wants the remote";
 * a request quoted: "oscar says bring me the bottle" (for oscar);
 * the robot called by its name: "tiago, lounge dimmer to 30", "r2d2 blinds down";
-* interjections typed by teenagers ("omg", "lol", "bruh", "ugh") and "rn" (commands.yaml spellings).
+* interjections typed by teenagers ("omg", "lol", "bruh", "ugh") and "rn" (commands.yaml spellings);
+* a room and a state alone: "hallway on", "garage off" (the room's lights).
 """
 
 from __future__ import annotations
@@ -269,4 +270,13 @@ def test_interjections_typed_by_teenagers(vocabulary: Any) -> None:
     ]
     assert frames_read(vocabulary, "lol gimme the soap bruh") == [
         {"frame": "BRINGING", "theme": "soap", "beneficiary": "me"}
+    ]
+
+
+def test_a_room_and_a_state_alone(vocabulary: Any, other_house: Any) -> None:
+    assert frames_read(vocabulary, "ok robot bedroom on") == [
+        {"frame": "OPERATING", "device": "bedroom_lights", "state": "on"}
+    ]
+    assert frames_read(other_house, "the lounge off please", "oscar") == [
+        {"frame": "OPERATING", "device": "lounge_dimmer", "state": "off"}
     ]
