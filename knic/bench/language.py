@@ -49,6 +49,7 @@ SETS = {
     "people10-dev": FIXTURES / "people10" / "dev.yaml",
     "people11-dev": FIXTURES / "people11" / "dev.yaml",
     "people12-dev": FIXTURES / "people12" / "dev.yaml",
+    "people13-dev": FIXTURES / "people13" / "dev.yaml",
     "people14-dev": FIXTURES / "people14" / "dev.yaml",
 }
 OTHER_WORLD = FIXTURES / "other_world" / "problem.pddl"

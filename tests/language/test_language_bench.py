@@ -41,6 +41,7 @@ def test_bench_language_prints_dev_and_test(capsys: pytest.CaptureFixture[str]) 
         "people10-dev",
         "people11-dev",
         "people12-dev",
+        "people13-dev",
         "people14-dev",
     }
     for figures in data.values():
