@@ -17,6 +17,8 @@ before they are cut into chunks (called from :func:`knic.language.household.ones
   several: the landmark cannot tell them apart, so the reader asks which;
 * "put it back" after a thing is said to have fallen or been knocked from a place ("the candle fell off the
   shelf, put it back"): back on that place;
+* "from the coffee table on the tv table": from the one onto the other, not the coffee table that is on the
+  tv table (nor the one in a room it is not in);
 * one of two things "whichever" ("the mug or the cup, whichever is closer") or "either ... or": the robot
   cannot tell which; it asks.
 """
@@ -77,6 +79,7 @@ def described(segments: list[list[str]], vocabulary: Vocabulary) -> list[list[st
         words = _all_but(words, vocabulary, phrases)
         words = _kind(words, vocabulary)
         words = _room_first(_landmark_unknown(words, phrases), vocabulary, phrases)
+        words = _from_onto(words, vocabulary, phrases)
         if words:
             out.append(words)
     _whichever([w for words in out for w in words], phrases)  # "the mug or the cup, whichever is closer"
@@ -388,3 +391,35 @@ def _fell_from(
                 place = rest[at : at + size]
         out.append(kept)
     return out
+
+
+_ONTO = frozenset({"on", "onto", "in", "into", "inside"})
+
+
+def _place_at(words: list[str], at: int, phrases: dict[str, Term]) -> tuple[Term | None, int]:
+    """The place named from ``at`` (past one determiner) and where its name ends."""
+    at += at < len(words) and words[at] in _DETERMINERS
+    size = next((n for n in (3, 2, 1) if " ".join(words[at : at + n]) in phrases), 0)
+    return (phrases[" ".join(words[at : at + size])], at + size) if size else (None, at)
+
+
+def _from_onto(words: list[str], vocabulary: Vocabulary, phrases: dict[str, Term]) -> list[str]:
+    """ "put the mug from the coffee table on the tv table": "put the mug on the tv table from the coffee
+    table" (the second place is where the thing goes: a piece of furniture, or a room the first is not in)."""
+    for i, word in enumerate(words):
+        if word != "from":
+            continue
+        source, end = _place_at(words, i + 1, phrases)
+        if source is None or not vocabulary.is_subtype(source.type, "furniture") or end >= len(words):
+            continue
+        if words[end] not in _ONTO:
+            continue
+        goal, stop = _place_at(words, end + 1, phrases)
+        if goal is None or goal.symbol == source.symbol:
+            continue
+        room = vocabulary.is_subtype(goal.type, "room")
+        inside = goal.symbol in vocabulary.locations.get(source.symbol, ())
+        if not (vocabulary.is_subtype(goal.type, "furniture") or (room and not inside)):
+            continue
+        return [*words[:i], *words[end:stop], *words[i:end], *words[stop:]]
+    return words

@@ -139,3 +139,16 @@ def test_put_back_after_a_fall_is_back_where_it_fell_from(vocabulary: Any, other
     assert frames_read(vocabulary, "the remote slipped off the sofa, put it back on the tv table") == [
         {"frame": "PLACING", "theme": "remote", "goal": "tv_table"}
     ]
+
+
+def test_from_one_place_onto_another_is_a_source_then_a_goal(vocabulary: Any, other_house: Any) -> None:
+    assert frames_read(vocabulary, "put the candle from the side table on the bookshelf") == [
+        {"frame": "PLACING", "theme": "candle", "source": "side_table", "goal": "bookshelf"}
+    ]
+    assert frames_read(other_house, "put the hammer from the workbench on the desk", "oscar") == [
+        {"frame": "PLACING", "theme": "hammer", "source": "workbench", "goal": "desk"}
+    ]
+    _asked(vocabulary, "put everything from the dining table in the kitchen", "everything")
+    assert frames_read(vocabulary, "bring me the remote from the sofa in the living room") == [
+        {"frame": "BRINGING", "theme": "remote", "source": "sofa", "beneficiary": "me"}
+    ]
