@@ -4,11 +4,13 @@ The sets are ``tests/fixtures/language/dev.yaml`` (tuned on) and ``tests/fixture
 (written afterwards in other words), and ``people2/dev.yaml`` and ``people2/test.yaml`` (100 commands each,
 written blind: the writer saw the apartment's description and the gold format only, not the grammar, the
 reader, the lexicon or the earlier sets; ``people2-test`` is never tuned on). ``--file`` runs a set of one's
-own. ``people3`` to ``people14`` are further blind development sets (``people5`` to ``people14`` span both
+own. ``people3`` to ``people15`` are further blind development sets (``people5`` to ``people15`` span both
 houses). Each case is a command with its gold frames and goals,
 or with a word the refusal (``reject``) or the question back (``question``) must contain. Cases run against
 the ERL apartment or, with ``world: other``, against a different house
-(``tests/fixtures/language/other_world``), to show that the language code knows no world's names. Figures:
+(``tests/fixtures/language/other_world``), to show that the language code knows no world's names; ``world:``
+a simulator world's name or file (``test_flat``, ``test_bungalow``) reads it as ``knic goal --world`` does.
+Figures:
 
 * ``accuracy`` -- share of cases handled exactly right (frames and goals, or the right refusal or question);
 * ``frame_accuracy`` -- of the cases with gold frames, share whose frame kinds are right, in order;
@@ -51,6 +53,7 @@ SETS = {
     "people12-dev": FIXTURES / "people12" / "dev.yaml",
     "people13-dev": FIXTURES / "people13" / "dev.yaml",
     "people14-dev": FIXTURES / "people14" / "dev.yaml",
+    "people15-dev": FIXTURES / "people15" / "dev.yaml",
 }
 OTHER_WORLD = FIXTURES / "other_world" / "problem.pddl"
 _MAIN = {"MOTION": ("goal",), "OPERATING": ("device", "state")}
@@ -63,6 +66,23 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument(
         "--file", action="append", default=[], metavar="YAML", help="a set of one's own, in the same layout"
     )
+
+
+def _world_file_vocabulary(name: str, path: Path) -> Any:
+    """The vocabulary of a simulator world named in a case (``world: test_flat``: ``worlds/test_flat``), as
+    ``knic goal --world`` reads it.
+
+    Raises:
+        KnicError: no such world.
+    """
+    from knic.cli.goal import world_vocabulary
+    from knic.language.world import DEFAULT_DOMAIN
+
+    try:
+        folder = DEFAULT_DOMAIN.parents[1] / name / f"{name}.yaml"  # worlds/<name>/<name>.yaml
+        return world_vocabulary(str(folder) if folder.is_file() else name, DEFAULT_DOMAIN, None)[0]
+    except KnicError as exc:
+        raise KnicError(f"{path}: world {name!r}: {exc}") from None
 
 
 def frame_spec(spec: str) -> dict[str, str]:
@@ -122,8 +142,11 @@ def evaluate(path: Path) -> dict[str, Any]:
     if not isinstance(data, dict) or not isinstance(data.get("cases"), list):
         raise KnicError(f"{path}: a language set is a mapping with a list 'cases'")
     cases = data["cases"]
-    worlds = {"erl": read_vocabulary()}
-    worlds["other"] = read_vocabulary(problem=OTHER_WORLD)
+    worlds = {"erl": read_vocabulary(), "other": read_vocabulary(problem=OTHER_WORLD)}
+    for case in cases:
+        name = case.get("world", "erl") if isinstance(case, dict) else "erl"
+        if name not in worlds:
+            worlds[name] = _world_file_vocabulary(str(name), path)
     tally = {
         "right": 0,
         "kinds": 0,

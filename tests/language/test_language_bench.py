@@ -43,6 +43,7 @@ def test_bench_language_prints_dev_and_test(capsys: pytest.CaptureFixture[str]) 
         "people12-dev",
         "people13-dev",
         "people14-dev",
+        "people15-dev",
     }
     for figures in data.values():
         assert 0.0 <= figures["accuracy"] <= 1.0 and figures["cases"] >= 40
@@ -64,3 +65,19 @@ def test_bench_language_runs_a_set_of_ones_own(tmp_path: Path, capsys: pytest.Ca
     own.write_text("cases: [{text: 1}\n")
     assert main(["bench", "language", "--file", str(own)]) == 2
     assert "mine.yaml:2: not valid YAML" in capsys.readouterr().err
+
+
+def test_a_case_can_name_a_simulator_world(tmp_path: Path, capsys: pytest.CaptureFixture[str]) -> None:
+    own = tmp_path / "worlds.yaml"
+    own.write_text(
+        "cases:\n"
+        '  - {text: "bring me the book", frames: ["BRINGING theme=book beneficiary=me"], world: test_flat,'
+        " speaker: olga}\n"
+        '  - {text: "bring me the book", reject: "book", world: erl}\n'
+    )
+    assert main(["bench", "language", "--file", str(own), "--json"]) == 0
+    figures = json.loads(capsys.readouterr().out)[str(own)]
+    assert figures["accuracy"] == 1.0 and figures["cases"] == 2  # the flat has a book, the apartment none
+    own.write_text('cases:\n  - {text: "bring me the book", reject: "book", world: atlantis}\n')
+    assert main(["bench", "language", "--file", str(own)]) == 2
+    assert "world 'atlantis'" in capsys.readouterr().err
