@@ -39,6 +39,13 @@ class Chunk:
     soft: bool = False  # verb said as "-ing" ("getting"): its clause may be talk ("it's getting late")
 
 
+def past_determiners(chunks: Sequence[Chunk], at: int) -> int:
+    """The index of the first chunk from ``at`` that is no determiner (``len(chunks)`` when none is)."""
+    while at < len(chunks) and chunks[at].kind == "det":
+        at += 1
+    return at
+
+
 class Chunker:
     """Cuts normalised token lists into chunks (build once per vocabulary; :meth:`chunks` is pure)."""
 

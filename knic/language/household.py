@@ -23,7 +23,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Sequence
 
-from knic.language.chunks import Chunk, Chunker
+from knic.language.chunks import Chunk, Chunker, past_determiners
 from knic.language.selecting import described
 from knic.language.vocabulary import Vocabulary
 
@@ -83,9 +83,7 @@ def _state_said(chunks: list[Chunk], is_a: Callable[[Chunk, str], bool]) -> list
     are open", "the blinds are stuck halfway") with an action after it: the state is dropped, the device
     stays said (for "it" or "them")."""
     start = 1 if chunks and chunks[0].kind == "verb" and chunks[0].text in ("is", "are") else 0
-    at = start
-    while at < len(chunks) and chunks[at].kind == "det":
-        at += 1
+    at = past_determiners(chunks, start)
     if at >= len(chunks) or chunks[at].kind != "entity" or not is_a(chunks[at], "device"):
         return chunks
     device = at
@@ -202,9 +200,7 @@ def other_one(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
     for i, chunk in enumerate(chunks[:-2]):
         if chunk.kind != "repair":
             continue
-        at = i + 1
-        while at < len(chunks) and chunks[at].kind == "det":
-            at += 1
+        at = past_determiners(chunks, i + 1)
         if at >= len(chunks) or chunks[at].text != "other":
             continue
         end = at + 1
@@ -261,12 +257,8 @@ def _restated_before(chunks: list[Chunk], is_a: Callable[[Chunk, str], bool]) ->
         )
 
     for i, chunk in enumerate(chunks[:-4]):
-        first = i + 1
-        while first < len(chunks) and chunks[first].kind == "det":
-            first += 1
-        again = first + 1
-        while again < len(chunks) and chunks[again].kind == "det":
-            again += 1
+        first = past_determiners(chunks, i + 1)
+        again = past_determiners(chunks, first + 1)
         said_again = again > first + 1 and place(first) and place(again)
         if (
             chunk.kind == "prep"
@@ -314,9 +306,7 @@ def _taken_along(chunks: list[Chunk], is_a: Callable[[Chunk, str], bool], take: 
     said = next((n for n in map(len, _NOT_FORGOTTEN) if tuple(words[:n]) in _NOT_FORGOTTEN), 0)
     along = not said and at < len(chunks) and chunks[at].kind == "verb" and chunks[at].text == take.text
     start = at + (said or along)
-    thing = start
-    while thing < len(chunks) and chunks[thing].kind == "det":
-        thing += 1
+    thing = past_determiners(chunks, start)
     if not (said or along) or thing >= len(chunks) or not is_a(chunks[thing], "item"):
         return chunks
     rest = chunks[thing + 1 :]

@@ -5,7 +5,7 @@ by what is in it ("go to the room where is the bed"), "give it me"."""
 
 from __future__ import annotations
 
-from knic.language.chunks import Chunk
+from knic.language.chunks import Chunk, past_determiners
 from knic.language.tidy import unplaced
 from knic.language.vocabulary import Vocabulary
 
@@ -38,9 +38,7 @@ def room_told(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
     for i in range(len(chunks) - 2):
         if chunks[i].text not in ("room", "rooms") or chunks[i + 1].text not in _HOLDING:
             continue
-        at = i + 2
-        while at < len(chunks) and chunks[at].kind == "det":
-            at += 1
+        at = past_determiners(chunks, i + 2)
         if at >= len(chunks) or chunks[at].kind != "entity":
             continue
         rooms = {

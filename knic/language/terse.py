@@ -23,7 +23,7 @@ from itertools import pairwise
 
 from core.errors import LanguageError
 from knic.language.chains import Reading
-from knic.language.chunks import Chunk, Chunker
+from knic.language.chunks import Chunk, Chunker, past_determiners
 from knic.language.clauses import Arg
 from knic.language.frames import SPEAKER, CommandFrame
 from knic.language.vocabulary import Term, Vocabulary
@@ -165,8 +165,7 @@ def reported(
     if chunks[i].kind == "prep" and chunks[i].text == "for" and chunks[i - 1].text in _ASKING_FOR:
         return ([chunks[0], bare_verb, *chunks[i + 1 :]], asker) if bare_verb is not None else (chunks, None)
     quoted = chunks[i - 1].text in _QUOTING
-    while i < len(chunks) and chunks[i].kind == "det":
-        i += 1
+    i = past_determiners(chunks, i)
     if quoted and i < len(chunks) and chunks[i].kind == "verb":  # "oscar says bring me the bottle": oscar
         return [chunks[0], *chunks[i:]], asker
     if (
@@ -268,9 +267,7 @@ def all_but(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
             j += 1
         said = [c.text for c in chunks[j : j + 2]]
         size = next((len(p) for p in _EXCEPT if said[: len(p)] == list(p)), 0)
-        k = j + size
-        while size and k < len(chunks) and chunks[k].kind == "det":
-            k += 1
+        k = past_determiners(chunks, j + size)
         if not size or k >= len(chunks) or chunks[k].kind != "entity":
             continue
         members = list(dict.fromkeys(m for t in chunk.terms for m in t.members))
