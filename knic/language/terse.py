@@ -41,6 +41,8 @@ def room_alone(chunks: list[Chunk], vocabulary: Vocabulary, chunker: Chunker) ->
         return chunks
     if not all(vocabulary.is_subtype(t.type, "room") for t in names[0].terms):
         return chunks
+    if any(c.kind == "det" and c.text in ("a", "an") for c in rest):  # "a hall": no room of the house
+        return chunks
     levelled = any(c.kind in ("level", "number") for c in rest)
     switched = [c for c in rest if c.state in _SWITCHED and c.kind in ("state", "prep")]
     roles = ("goal", "place", "level") if levelled else ("goal",)
