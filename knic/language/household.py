@@ -24,7 +24,6 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 
 from knic.language.chunks import Chunk, Chunker, past_determiners
-from knic.language.selecting import described
 from knic.language.vocabulary import Vocabulary
 
 #: hesitations, dropped even inside a phrase (they are fillers wherever they stand)
@@ -53,7 +52,7 @@ def words_tidied(tokens: list[str]) -> list[str]:
     return out
 
 
-def said_around(chunks: list[Chunk], vocabulary: Vocabulary, chunker: Chunker | None = None) -> list[Chunk]:
+def said_around(chunks: list[Chunk], vocabulary: Vocabulary, chunker: Chunker) -> list[Chunk]:
     """``chunks`` with what is said around the request tidied (see the module docstring); ``chunker`` gives
     the verbs a thing's destination is read with ("put", "take")."""
 
@@ -64,8 +63,6 @@ def said_around(chunks: list[Chunk], vocabulary: Vocabulary, chunker: Chunker | 
     chunks = _doings(chunks, is_a)
     chunks = _left_by(chunks, is_a)
     chunks = _placed_on(chunks, is_a)
-    if chunker is None:
-        return chunks
     put, take = (chunker.chunks([verb])[0] for verb in ("put", "take"))
     return _taken_along(_should_go(chunks, is_a, put), is_a, take)
 
@@ -284,7 +281,7 @@ def ones_named(segments: list[list[str]], vocabulary: Vocabulary) -> list[list[s
                 kept[i] = heads[-1]
         said += kept
         out.append(kept)
-    return described(out, vocabulary)  # knic.language.selecting
+    return out
 
 
 #: what says a thing is to be taken along ("don't forget the glasses", "do not forget", "remember the keys")

@@ -49,6 +49,7 @@ from knic.language.segments import (
     sorry_repairs,
     statements_dropped,
 )
+from knic.language.selecting import described
 from knic.language.terse import for_asker, room_alone, told_read
 from knic.language.tidy import (
     SEGMENT_END,
@@ -121,7 +122,8 @@ class Reader:
         segments = [segment for segment in segments if segment]
         if not segments:
             raise LanguageError("nothing to understand: the command is empty")
-        segments = sorry_repairs(ones_named(segments, self.vocabulary), self.chunks)
+        segments = described(ones_named(segments, self.vocabulary), self.vocabulary)  # selecting.py
+        segments = sorry_repairs(segments, self.chunks)
         # pointing first ("see that candle? put it on the nightstand"), else as said; unpunctuated ("close the
         # blinds it's too bright in here"): read again with the sentences the words start, then without those
         # that only state something (knic.language.segments)

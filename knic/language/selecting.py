@@ -1,5 +1,6 @@
 """Things picked out by what is said of them rather than by their names, read in the words of each sentence
-before they are cut into chunks (called from :func:`knic.language.household.ones_named`):
+before they are cut into chunks (by :class:`knic.language.reader.Reader`, after
+:func:`knic.language.household.ones_named`):
 
 * a request said again with "i said", "like i said", "i told you": the request ("i said the bedroom");
 * "the ones" set apart after a thing, as "the one" ("my glasses, the ones on the nightstand");
