@@ -20,6 +20,7 @@ from typing import Any, Protocol
 
 from core.errors import LanguageError
 from core.inputs import read_yaml
+from knic.language.shortnames import short_names
 
 #: Number words for 0..100, enough for percent levels.
 UNIT_WORDS = [
@@ -282,7 +283,8 @@ class Vocabulary:
         out; members that are missing are dropped from the group. Each name also gets the variants that
         common English synonyms give (``synonyms``, default :func:`english_synonyms`: "the couch" for a
         world's ``sofa``, "the kitchen cupboard" for its ``kitchen_cabinet``), unless a variant is already a
-        name of the world.
+        name of the world, and the shorter names of :func:`knic.language.shortnames.short_names` ("the second
+        bedroom", "the kitchen" for a ``kitchen_diner``, "the paper" for a ``newspaper``).
         """
         lexicon = lexicon or Lexicon()
         terms: list[Term] = []
@@ -294,6 +296,14 @@ class Vocabulary:
                 phrases = lexicon.names.get(symbol) or (normalize(symbol),)
             terms.extend(Term(p, symbol, type_name, (symbol,)) for p in phrases)
         terms += _synonym_variants(terms, english_synonyms() if synonyms is None else synonyms)
+        terms += [
+            Term(phrase, t.symbol, t.type, t.members)
+            for phrase, t in short_names(
+                terms,
+                lambda k: _is_subtype(types, k, "room"),
+                exclude=lambda k: k == "level" or _is_subtype(types, k, "person"),
+            )
+        ]
         for group in lexicon.groups:
             if group.type is not None:
                 members = tuple(s for s, t in sorted(instances.items()) if _is_subtype(types, t, group.type))

@@ -1,0 +1,127 @@
+"""Shorter names people give a world's longer names (used by :mod:`knic.language.vocabulary`).
+
+A world's symbol is spoken as its name ("kitchen_diner": "kitchen diner"), its lexicon phrases and their
+common English synonyms. People in the house also say less:
+
+* a numbered name by its ordinal: "bedroom_two" is "the second bedroom" or "bedroom number two" ("shelf_3":
+  "the third shelf");
+* a room by the kind of room one of its words names: "kitchen_diner" is "the kitchen", "bedroom_two" and
+  "master_bedroom" are each "the bedroom" (two such rooms: the reader asks which);
+* a thing whose one-word name ends in a common noun by that noun: "newspaper" is "the paper", "armchair" "the
+  chair", "hairbrush" "the brush".
+
+The kinds of room and the nouns are general English, kept in ``synonyms.yaml`` (``room_words``, ``heads``). A
+short name that is already a name of the world is not given (the world's own names win: where "hall" names
+the hallway, an "entrance_hall" is not also "the hall"); one short name of several things names them all.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterable, Sequence
+from functools import lru_cache
+from pathlib import Path
+from typing import Protocol, TypeVar
+
+from core.errors import LanguageError
+from core.inputs import read_yaml
+
+_FILE = Path(__file__).with_name("synonyms.yaml")
+#: number words said last in a name, and the ordinal said before it instead
+ORDINALS = {
+    "one": "first",
+    "two": "second",
+    "three": "third",
+    "four": "fourth",
+    "five": "fifth",
+    "six": "sixth",
+    "seven": "seventh",
+    "eight": "eighth",
+    "nine": "ninth",
+    "ten": "tenth",
+}
+#: the shortest a compound's first part may be ("teacup": "tea" + "cup"), so that "scup" gives no "cup"
+_MIN_FIRST_PART = 3
+
+
+class Named(Protocol):
+    """What is read of a vocabulary term: its phrase and its type."""
+
+    @property
+    def phrase(self) -> str:
+        """The spoken words."""
+
+    @property
+    def type(self) -> str:
+        """The named symbol's type."""
+
+
+N = TypeVar("N", bound=Named)
+
+
+@lru_cache(maxsize=1)
+def _word_lists() -> tuple[frozenset[str], tuple[str, ...]]:
+    """``room_words`` and ``heads`` of ``synonyms.yaml`` (read once).
+
+    Raises:
+        LanguageError: either is not a list of single words.
+    """
+    data = read_yaml(_FILE, "synonyms", LanguageError) or {}
+    lists = []
+    for key in ("room_words", "heads"):
+        raw = data.get(key, []) if isinstance(data, dict) else []
+        if not isinstance(raw, list) or not all(isinstance(w, str) and len(w.split()) == 1 for w in raw):
+            raise LanguageError(f"{_FILE}: '{key}' is a list of single words")
+        lists.append([w.lower() for w in raw])
+    return frozenset(lists[0]), tuple(sorted(lists[1], key=len, reverse=True))
+
+
+def _ordinal(words: list[str]) -> list[str]:
+    """ "bedroom two" -> ["second bedroom", "bedroom number two"]."""
+    if len(words) >= 2 and words[-1] in ORDINALS:
+        return [" ".join([ORDINALS[words[-1]], *words[:-1]]), " ".join([*words[:-1], "number", words[-1]])]
+    return []
+
+
+def _room_kinds(words: list[str], room_words: frozenset[str]) -> list[str]:
+    """The words of a longer room name that alone name a kind of room ("kitchen diner" -> kitchen, diner)."""
+    if len(words) < 2:
+        return []
+    return [w for w in words if w in room_words]
+
+
+def _head(words: list[str], heads: Sequence[str]) -> list[str]:
+    """The common noun a one-word compound name ends in ("newspaper" -> "paper")."""
+    if len(words) != 1:
+        return []
+    word = words[0]
+    return [h for h in heads if word.endswith(h) and len(word) - len(h) >= _MIN_FIRST_PART][:1]
+
+
+def short_names(
+    terms: Iterable[N], is_room: Callable[[str], bool], *, exclude: Callable[[str], bool]
+) -> list[tuple[str, N]]:
+    """The short names of ``terms`` as (phrase, term said so), none of them a phrase of ``terms`` already.
+
+    Args:
+        terms: the world's names so far (symbols' names, lexicon phrases and synonyms).
+        is_room: whether a type is a room.
+        exclude: types that get no short names (people, levels).
+    """
+    terms = list(terms)
+    room_words, heads = _word_lists()
+    taken = {t.phrase for t in terms}
+    out: list[tuple[str, N]] = []
+    seen: set[tuple[str, str]] = set()
+    for term in terms:
+        if exclude(term.type):
+            continue
+        words = term.phrase.split()
+        phrases = _ordinal(words) + _head(words, heads)
+        if is_room(term.type):
+            phrases += _room_kinds(words, room_words)
+        for phrase in phrases:
+            key = (phrase, term.phrase)
+            if phrase not in taken and key not in seen:
+                seen.add(key)
+                out.append((phrase, term))
+    return out
