@@ -30,11 +30,14 @@ from knic.language.vocabulary import Term, Vocabulary
 
 #: states a room's lights are switched to
 _SWITCHED = ("on", "off")
+#: what a room said alone may come with: determiners, and a level
+_LEVELLED = ("det", "level", "number", "percent")
 
 
 def room_alone(chunks: list[Chunk], vocabulary: Vocabulary, chunker: Chunker) -> list[Chunk]:
     """A command that only names one room (with "to" and determiners at most) is a going there; with a level
-    ("living room to 30 percent", "lounge at half") it is a setting of the room's dimmer or blinds."""
+    ("living room to 30 percent", "lounge at half") it is a setting of the room's dimmer or blinds; with "on"
+    or "off" alone ("hallway on") a switching of its lights."""
     names = [c for c in chunks if c.kind == "entity"]
     rest = [c for c in chunks if c.kind != "entity"]
     if len(names) != 1 or not names[0].terms:
@@ -55,12 +58,8 @@ def room_alone(chunks: list[Chunk], vocabulary: Vocabulary, chunker: Chunker) ->
     verb, frame = (
         ("set", "OPERATING") if levelled else ("turn", "OPERATING") if switched else ("go", "MOTION")
     )
-    said = [c for c in chunker.chunks([verb]) if c.kind == "verb" and frame in c.frames]
-    return [*said[:1], *chunks] if said else chunks
-
-
-#: what a room said alone may come with: determiners, and a level
-_LEVELLED = ("det", "level", "number", "percent")
+    verbs = [c for c in chunker.chunks([verb]) if c.kind == "verb" and frame in c.frames]
+    return [*verbs[:1], *chunks] if verbs else chunks
 
 
 def room_lights(vocabulary: Vocabulary, rooms: Sequence[Term], state: str | None) -> list[str]:
@@ -290,7 +289,8 @@ def all_but(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
 
 def told_read(tokens: list[str], chunker: Chunker, vocabulary: Vocabulary) -> tuple[list[Chunk], str | None]:
     """The chunks of a command with the readings of this module that come before all others (verbs in the
-    third person, things left out of a group, a request told of someone), and who asked (else None)."""
+    third person, the robot's name as address, things left out of a group, a person described before what
+    they want, a request told of someone), and who asked (else None)."""
     chunks = chunker.chunks(third_person_read(tokens, chunker))
     chunks = all_but(robot_unnamed(chunks, vocabulary), vocabulary)
     return reported(described_subject(chunks, vocabulary), vocabulary, chunker.bare_verb)

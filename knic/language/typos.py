@@ -26,7 +26,8 @@ mends the tokens of one command, before they are cut into chunks:
   word is never guessed at ("the cake" is no coke, "the basket" no blanket): it is refused naming it.
 
 English words are those of the pronouncing dictionary the speech side ships (pocketsphinx's cmudict),
-read once when a word no table knows is first met; without it no typo is guessed.
+read once, the first time a word no table knows is near a known word (a command of known words never reads
+it); without it no typo is guessed.
 """
 
 from __future__ import annotations
