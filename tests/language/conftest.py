@@ -45,3 +45,13 @@ def frames_read(vocabulary: Vocabulary, text: str, speaker: str = "annie") -> li
     result = understand(text, vocabulary, speaker=speaker)
     assert result.accepted, result.reason
     return [frame.to_dict() for frame in result.frames]
+
+
+@pytest.fixture(scope="session")
+def grammar_recognizer(vocabulary: Vocabulary) -> Any:
+    """The grammar decoder's recogniser of the ERL apartment with its default (adapted) acoustic model,
+    built once (about five seconds); decoding with it does not depend on what it decoded before."""
+    from knic.language.speech import Recognizer
+    from knic.language.understanding import default_grammar
+
+    return Recognizer(default_grammar(), vocabulary)

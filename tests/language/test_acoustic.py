@@ -53,8 +53,10 @@ def test_an_unknown_model_or_an_incomplete_folder_is_refused(tmp_path: Path) -> 
         acoustic_model_options(tmp_path)
 
 
-def test_the_adapted_model_recognises_what_the_wheel_model_does_not(vocabulary: Vocabulary) -> None:
-    adapted = Recognizer(default_grammar(), vocabulary)
+def test_the_adapted_model_recognises_what_the_wheel_model_does_not(
+    vocabulary: Vocabulary, grammar_recognizer: Recognizer
+) -> None:
+    adapted = grammar_recognizer
     base = Recognizer(default_grammar(), vocabulary, acoustic_model="base")
     assert base.acoustic_model == {} and adapted.acoustic_model == acoustic_model_options("espeak")
     for name, words in HARD:

@@ -12,8 +12,8 @@ from .conftest import SPEECH_FIXTURES
 
 
 @pytest.fixture(scope="module")
-def recognizer(vocabulary: Vocabulary) -> Recognizer:
-    return Recognizer(default_grammar(), vocabulary)
+def recognizer(grammar_recognizer: Recognizer) -> Recognizer:
+    return grammar_recognizer
 
 
 @pytest.mark.parametrize(
