@@ -124,6 +124,8 @@ def _carry(
         elif arg.prep == "goal" or (arg.prep in ("place", "level") and kind == "PLACING"):
             if arg.prep == "level" and arg.prep_text not in ("to",):
                 continue
+            if arg.prep == "place" and arg.chunk.kind == "me":
+                continue  # "put it next to me on the couch": where it goes, by the speaker, not given them
             if (
                 arg.chunk.kind == "me"
                 or any(reader.is_a(t, "person") for t in arg.chunk.terms)

@@ -14,6 +14,7 @@ from typing import TYPE_CHECKING, Any
 
 from core.errors import LanguageError
 from knic.language.commands import command_grammar
+from knic.language.complaints import dark_read
 from knic.language.frames import CommandFrame
 from knic.language.goals import frames_to_goals, hints
 from knic.language.grammar import Grammar
@@ -108,7 +109,7 @@ def understand(
     """
     del grammar
     try:
-        reading = reader_for(vocabulary).read(text)
+        reading = reader_for(vocabulary).read(dark_read(text))  # "it's dark in the study": its lights
     except AmbiguityError as exc:
         question = str(exc)[:1].upper() + str(exc)[1:]
         return Understanding(text, reason=f"ambiguous: {exc}", speaker=speaker, question=question)

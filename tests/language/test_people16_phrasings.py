@@ -191,3 +191,43 @@ def test_hang_on_is_still_a_filler(bungalow: Vocabulary) -> None:
     assert frames_read(bungalow, "hang on, go to the kitchen", "walter") == [
         {"frame": "MOTION", "goal": "kitchen_diner"}
     ]
+
+
+@pytest.mark.parametrize(
+    ("world", "text", "frames"),
+    [
+        ("f", "it's dark in the study", [{"frame": "OPERATING", "device": "study_lamp", "state": "on"}]),
+        (
+            "b",
+            "oh it is getting so dark in the sitting room",
+            [{"frame": "OPERATING", "device": "reading_lamp", "state": "on"}],
+        ),
+        (
+            "e",
+            "it's really dark in the bedroom",
+            [{"frame": "OPERATING", "device": "bedroom_lights", "state": "on"}],
+        ),
+        # said beside a request, the complaint is talk: the request says what to do
+        (
+            "e",
+            "it's dark in the bedroom, turn on the left lamp",
+            [{"frame": "OPERATING", "device": "bedroom_left_light", "state": "on"}],
+        ),
+    ],
+)
+def test_a_room_said_to_be_dark_asks_for_its_lights(
+    bungalow: Vocabulary, flat: Vocabulary, vocabulary: Vocabulary, world: str, text: str, frames: Any
+) -> None:
+    said = {"b": (bungalow, "walter"), "f": (flat, "olga"), "e": (vocabulary, "annie")}
+    assert frames_read(said[world][0], text, said[world][1]) == frames
+
+
+def test_darkness_where_it_is_not_known_is_not_a_request(vocabulary: Vocabulary) -> None:
+    assert not understand("it's dark in here", vocabulary, speaker="annie").accepted
+
+
+@pytest.mark.parametrize(
+    "text", ["put the book on the couch beside me", "could you put my book next to me on the sofa"]
+)
+def test_a_thing_put_by_the_speaker_goes_on_the_furniture_said(flat: Vocabulary, text: str) -> None:
+    assert frames_read(flat, text, "olga") == [{"frame": "PLACING", "theme": "book", "goal": "couch"}]
