@@ -40,9 +40,7 @@ def room_alone(chunks: list[Chunk], vocabulary: Vocabulary, chunker: Chunker) ->
     or "off" alone ("hallway on") a switching of its lights."""
     names = [c for c in chunks if c.kind == "entity"]
     rest = [c for c in chunks if c.kind != "entity"]
-    if len(names) != 1 or not names[0].terms:
-        return chunks
-    if not all(vocabulary.is_subtype(t.type, "room") for t in names[0].terms):
+    if len(names) != 1 or not _names_only(vocabulary, names[0], ("room",)):
         return chunks
     if any(c.kind == "det" and c.text in ("a", "an") for c in rest):  # "a hall": no room of the house
         return chunks
@@ -88,19 +86,11 @@ def taken_from_first(vocabulary: Vocabulary, args: list[Arg]) -> None:
     """Of two pieces of furniture said one after the other, each with its own preposition, where the first
     is not in the second ("the cup on the tv table in the cabinet"): the first is where the thing is taken
     from. Changes ``args`` in place."""
-
-    def furniture(arg: Arg) -> bool:
-        terms = arg.chunk.terms
-        return (
-            arg.chunk.kind == "entity"
-            and bool(terms)
-            and all(vocabulary.is_subtype(t.type, "furniture") for t in terms)
-        )
-
     for first, second in pairwise(args):
         if first.prep != "place" or second.prep not in ("place", "goal") or second.joined:
             continue
-        if not (furniture(first) and furniture(second)) or first.consumed or second.consumed:
+        furniture = all(_names_only(vocabulary, a.chunk, ("furniture",)) for a in (first, second))
+        if not furniture or first.consumed or second.consumed:
             continue
         inside = any(
             s.symbol in vocabulary.locations.get(f.symbol, ())
@@ -117,13 +107,7 @@ def placed_from(vocabulary: Vocabulary, args: list[Arg]) -> None:
     the places said before it with "on" or "in" are where the thing is taken from. Changes ``args``."""
 
     def place(arg: Arg) -> bool:
-        terms = arg.chunk.terms
-        kinds = ("room", "furniture")
-        return (
-            arg.chunk.kind == "entity"
-            and bool(terms)
-            and all(any(vocabulary.is_subtype(t.type, k) for k in kinds) for t in terms)
-        )
+        return _names_only(vocabulary, arg.chunk, ("room", "furniture"))
 
     last = max((i for i, a in enumerate(args) if a.prep == "goal" and place(a)), default=0)
     for arg in args[:last]:
@@ -150,9 +134,7 @@ def reported(
     """A request told of someone, as a task description says it ("tracy asks the robot to fetch her glasses",
     "annie wants the robot to close the blinds", "annie asks for the tablet"): the action as if she said it,
     and who asked (the one it is for where the speaker would be), else the chunks as they are and None."""
-    if len(chunks) < 3 or chunks[0].kind != "entity" or not chunks[0].terms:
-        return chunks, None
-    if not all(vocabulary.is_subtype(t.type, "person") for t in chunks[0].terms):
+    if len(chunks) < 3 or not _names_only(vocabulary, chunks[0], ("person",)):
         return chunks, None
     people = {t.symbol for t in chunks[0].terms}
     i = 1
@@ -308,11 +290,7 @@ def described_subject(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk
     if verb is None or verb < 2 or chunks[verb].beneficiary != "subject":
         return chunks
     first, between = chunks[0], chunks[1:verb]
-    if (
-        first.kind != "entity"
-        or not first.terms
-        or not all(_is(vocabulary, t, ("person",)) for t in first.terms)
-    ):
+    if not _names_only(vocabulary, first, ("person",)):
         return chunks
     if any(c.kind not in _DESCRIBING for c in between):
         return chunks
@@ -331,13 +309,19 @@ def _is(vocabulary: Vocabulary, term: Term, kinds: Sequence[str]) -> bool:
     return any(vocabulary.is_subtype(term.type, k) for k in kinds)
 
 
+def _names_only(vocabulary: Vocabulary, chunk: Chunk, kinds: Sequence[str]) -> bool:
+    """Whether ``chunk`` names things of the world, every one of one of ``kinds`` ("room", "person")."""
+    return (
+        chunk.kind == "entity" and bool(chunk.terms) and all(_is(vocabulary, t, kinds) for t in chunk.terms)
+    )
+
+
 def robot_unnamed(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
     """The robot called by its name at the start or the end of a command ("tiago, lounge dimmer to 30",
     "bring me the keys r2d2"): address, dropped."""
 
     def robot(chunk: Chunk) -> bool:
-        terms = chunk.terms
-        return chunk.kind == "entity" and bool(terms) and all(_is(vocabulary, t, ("robot",)) for t in terms)
+        return _names_only(vocabulary, chunk, ("robot",))
 
     start, end = 0, len(chunks)
     while start < end and robot(chunks[start]):
