@@ -44,6 +44,7 @@ def test_bench_language_prints_dev_and_test(capsys: pytest.CaptureFixture[str]) 
         "people13-dev",
         "people14-dev",
         "people15-dev",
+        "people16-dev",
     }
     for figures in data.values():
         assert 0.0 <= figures["accuracy"] <= 1.0 and figures["cases"] >= 40
