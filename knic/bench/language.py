@@ -6,8 +6,8 @@ written blind: the writer saw the apartment's description and the gold format on
 reader, the lexicon or the earlier sets; ``people2-test`` is never tuned on). ``--file`` runs a set of one's
 own. ``people3`` to ``people16`` are further blind development sets (``people5`` to ``people15`` span both
 houses; ``people16`` the simulator's test flat and bungalow). Each case is a command with its gold frames
-and goals, or with a word the refusal (``reject``) or the question back (``question``) must contain. Cases run against
-the ERL apartment or, with ``world: other``, against a different house
+and goals, or with a word the refusal (``reject``) or the question back (``question``) must contain. Cases
+run against the ERL apartment or, with ``world: other``, against a different house
 (``tests/fixtures/language/other_world``), to show that the language code knows no world's names; ``world:``
 a simulator world's name or file (``test_flat``, ``test_bungalow``) reads it as ``knic goal --world`` does.
 Figures:
