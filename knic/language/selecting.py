@@ -130,10 +130,9 @@ def _sides(words: list[str], phrases: dict[str, Term]) -> list[str]:
             if end < len(words) and words[end] == extra:
                 end += 1
         if end < len(words) and words[end] == "of":  # the landmark: "of the bed", "of the kitchen table"
-            at = end + 1 + (end + 1 < len(words) and words[end + 1] in _DETERMINERS)
-            size = next((n for n in (3, 2, 1) if " ".join(words[at : at + n]) in phrases), 0)
-            if size:
-                end = at + size
+            landmark, stop = _name_at(words, end + 1, phrases)
+            if landmark is not None:
+                end = stop
         return [*words[: i - 3], side, noun, *words[end:]]
     return words
 
@@ -385,11 +384,9 @@ def _fell_from(
             skip = next((j for j in range(5) if any(tuple(rest[j : j + len(f)]) == f for f in _FROM)), 0)
             rest = rest[skip:]  # "i dropped the sponge off the counter"
             said = next((len(f) for f in _FROM if tuple(rest[: len(f)]) == f), 0)
-            at = said + (said < len(rest) and rest[said] in _DETERMINERS)
-            size = next((n for n in (3, 2, 1) if " ".join(rest[at : at + n]) in phrases), 0)
-            term = phrases.get(" ".join(rest[at : at + size])) if said and size else None
+            term = _name_at(rest, said, phrases)[0] if said else None
             if term is not None and any(vocabulary.is_subtype(term.type, k) for k in ("furniture", "room")):
-                place = rest[at : at + size]
+                place = term.phrase.split()
         out.append(kept)
     return out
 
@@ -397,8 +394,9 @@ def _fell_from(
 _ONTO = frozenset({"on", "onto", "in", "into", "inside"})
 
 
-def _place_at(words: list[str], at: int, phrases: dict[str, Term]) -> tuple[Term | None, int]:
-    """The place named from ``at`` (past one determiner) and where its name ends."""
+def _name_at(words: list[str], at: int, phrases: dict[str, Term]) -> tuple[Term | None, int]:
+    """The thing named from ``at`` (past one determiner; the longest name of up to three words) and where its
+    name ends, else None and where it would start."""
     at += at < len(words) and words[at] in _DETERMINERS
     size = next((n for n in (3, 2, 1) if " ".join(words[at : at + n]) in phrases), 0)
     return (phrases[" ".join(words[at : at + size])], at + size) if size else (None, at)
@@ -410,12 +408,12 @@ def _from_onto(words: list[str], vocabulary: Vocabulary, phrases: dict[str, Term
     for i, word in enumerate(words):
         if word != "from":
             continue
-        source, end = _place_at(words, i + 1, phrases)
+        source, end = _name_at(words, i + 1, phrases)
         if source is None or not vocabulary.is_subtype(source.type, "furniture") or end >= len(words):
             continue
         if words[end] not in _ONTO:
             continue
-        goal, stop = _place_at(words, end + 1, phrases)
+        goal, stop = _name_at(words, end + 1, phrases)
         if goal is None or goal.symbol == source.symbol:
             continue
         room = vocabulary.is_subtype(goal.type, "room")
