@@ -1,5 +1,7 @@
 """What family members and carers say around a request in a busy household, tidied before it is read (used
-by :class:`knic.language.reader.Reader`, after its own tidying in :mod:`knic.language.tidy`).
+by :class:`knic.language.reader.Reader`: :func:`words_tidied` and :func:`ones_named` on the words of each
+sentence, :func:`other_one` and :func:`said_around` on the chunks, between the passes of
+:mod:`knic.language.tidy`).
 
 * hesitations inside a phrase ("when you um get a minute"), and "you're" after "when" or "once" ("when
   you're done": when you are done), in the words (:func:`words_tidied`);

@@ -64,8 +64,6 @@ def _is_room(vocabulary: Vocabulary, symbol: str) -> bool:
 
 #: what may stand before a verb said last ("to the bathroom go", "the candle on the dining table put it")
 _BEFORE_LAST_VERB = frozenset({"det", "entity", "prep", "me", "quant"})
-
-
 #: what may follow a verb said last, with it: how a device is set ("the blinds open halfway")
 _SETTINGS = frozenset({"state", "level", "number", "percent", "vague"})
 
@@ -104,6 +102,17 @@ def verb_last_moved(chunks: list[Chunk]) -> list[Chunk]:
     return out
 
 
+def _setting(chunks: list[Chunk], at: int) -> bool:
+    """Whether the chunk at ``at`` says how a device is set: a state, a level, a number, "percent", a vague
+    amount, or a word the tables lack or a preposition right before a level ("like 10 percent", "around
+    half")."""
+    chunk = chunks[at]
+    if chunk.kind in _SETTINGS or chunk.state is not None:
+        return True
+    hedged = at + 1 < len(chunks) and chunks[at + 1].kind in ("number", "level")
+    return hedged and chunk.kind in ("unknown", "prep")
+
+
 #: the speaker said as who does something ("i go to bed now", "i'm going out")
 _SPEAKER_SUBJECTS = (("i",), ("we",), ("i'm",), ("im",), ("we're",), ("i", "am"), ("we", "are"))
 
@@ -129,14 +138,3 @@ def own_going_dropped(chunks: list[Chunk]) -> list[Chunk]:
     while nxt < len(chunks) and (chunks[nxt].kind == "join" or chunks[nxt].text == "you"):
         nxt += 1
     return chunks[nxt:] if nxt < len(chunks) and chunks[nxt].kind == "verb" else chunks
-
-
-def _setting(chunks: list[Chunk], at: int) -> bool:
-    """Whether the chunk at ``at`` says how a device is set: a state, a level, a number, "percent", a vague
-    amount, or a word the tables lack or a preposition right before a level ("like 10 percent", "around
-    half")."""
-    chunk = chunks[at]
-    if chunk.kind in _SETTINGS or chunk.state is not None:
-        return True
-    hedged = at + 1 < len(chunks) and chunks[at + 1].kind in ("number", "level")
-    return hedged and chunk.kind in ("unknown", "prep")
