@@ -36,7 +36,7 @@ _CONTRACTED = {"you're": ["you", "are"]}
 #: what a device is said to be before its state ("the blinds are still shut", "are stuck halfway")
 _STATE_WORDS = frozenset({"is", "are", "still", "already", "stuck", "left", "now", "all", "fully"})
 #: subjects said with "be" contracted ("she's working in the study")
-_DOERS = frozenset({"i'm", "we're", "they're", "he's", "she's", "you're"})
+_CONTRACTED_DOERS = frozenset({"i'm", "we're", "they're", "he's", "she's", "you're"})
 #: what may stand between a thing and "go" when the speaker says where it should go
 _SHOULD = frozenset({"need", "needs", "to", "should", "must", "has", "have", "can", "could", "ought", "is"})
 
@@ -106,7 +106,7 @@ def _doings(chunks: list[Chunk], is_a: Callable[[Chunk, str], bool]) -> list[Chu
     i = 0
     while i < len(chunks):
         chunk = chunks[i]
-        subject = chunk.kind == "unknown" and chunk.text in _DOERS
+        subject = chunk.kind == "unknown" and chunk.text in _CONTRACTED_DOERS
         be = (
             chunk.kind == "unknown"
             and chunk.text in ("is", "are")

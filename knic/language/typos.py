@@ -38,7 +38,8 @@ from functools import lru_cache
 from pathlib import Path
 
 _LETTERS = "abcdefghijklmnopqrstuvwxyz'"
-#: shortest word that is mended by edits; shorter words only by growing or a swap of two letters
+#: shortest word that is mended at all; words of this length only by a letter changed or added or a swap,
+#: never by a letter dropped ("teh", "dsk"; "soa" is no "so")
 _SHORT = 3
 #: words of this length or more may be two edits from the word meant
 _LONG = 8
