@@ -68,10 +68,11 @@ def described(segments: list[list[str]], vocabulary: Vocabulary) -> list[list[st
         AmbiguityError: a kind of thing fits several things, or "whichever" of two is asked for.
     """
     phrases = {t.phrase: t for t in vocabulary.terms if t.type != "level"}
+    heads = {p.split()[-1] for p in phrases}  # the last words of the names ("lamp", "table")
     out: list[list[str]] = []
     for segment in segments:
         before = out[-1][-1] if out and out[-1] else ""
-        words = _all_of_them(_said_again(segment, len(segments) > 1), before, phrases)
+        words = _all_of_them(_said_again(segment, len(segments) > 1), before, heads)
         words = [
             "one" if w == "ones" and i and words[i - 1] in _DETERMINERS | {"these", "those"} else w
             for i, w in enumerate(words)
@@ -79,7 +80,7 @@ def described(segments: list[list[str]], vocabulary: Vocabulary) -> list[list[st
         words = _sides(_two_sides(words, phrases), phrases)
         words = _all_but(words, vocabulary, phrases)
         words = _kind(words, vocabulary)
-        words = _room_first(_landmark_unknown(words, phrases), vocabulary, phrases)
+        words = _room_first(_landmark_unknown(words, phrases, heads), vocabulary, phrases)
         words = _from_onto(words, vocabulary, phrases)
         if words:
             out.append(words)
@@ -283,19 +284,18 @@ _AFTER_THINGS = (
 _LANDMARKS = (("next", "to"), ("close", "to"), ("by",), ("near",), ("beside",))
 
 
-def _plural_name(word: str, phrases: dict[str, Term]) -> bool:
-    """Whether a word is a plural of the world's names ("lights", "lamps", "blinds")."""
+def _plural_name(word: str, heads: set[str]) -> bool:
+    """Whether a word is a plural of the names whose last words are ``heads`` ("lights", "lamps")."""
     if not word.endswith("s"):
         return False
-    lasts = {p.split()[-1] for p in phrases}
-    return word in lasts or word[:-1] in lasts
+    return word in heads or word[:-1] in heads
 
 
-def _all_of_them(words: list[str], before: str, phrases: dict[str, Term]) -> list[str]:
+def _all_of_them(words: list[str], before: str, heads: set[str]) -> list[str]:
     """Without "all of them" (or "both", "all" alone before a state) said right after plural names."""
     for i in range(len(words)):
         last = words[i - 1] if i else before
-        if not _plural_name(last, phrases):
+        if not _plural_name(last, heads):
             continue
         said = next((len(q) for q in _AFTER_THINGS if tuple(words[i : i + len(q)]) == q), 0)
         floating = words[i] in ("all", "both") and (i + 1 == len(words) or words[i + 1] in ("on", "off"))
@@ -304,10 +304,9 @@ def _all_of_them(words: list[str], before: str, phrases: dict[str, Term]) -> lis
     return words
 
 
-def _landmark_unknown(words: list[str], phrases: dict[str, Term]) -> list[str]:
+def _landmark_unknown(words: list[str], phrases: dict[str, Term], heads: set[str]) -> list[str]:
     """ "the light by the door" where no door is known and several lights: the landmark left out, so that
-    the reader asks which light."""
-    heads = {p.split()[-1] for p in phrases}
+    the reader asks which light (``heads``: the last words of the names)."""
     for i in range(1, len(words)):
         landmark = next((m for m in _LANDMARKS if tuple(words[i : i + len(m)]) == m), None)
         if landmark is None:
