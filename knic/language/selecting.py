@@ -46,7 +46,15 @@ _SIDES = frozenset({"left", "right"})
 _SIDE_PREPS = frozenset({"on", "to", "at"})
 _DETERMINERS = frozenset({"the", "a", "an", "my", "your", "his", "her", "our", "their", "this", "that"})
 #: words that leave some out of all of a kind ("all the lights except the hallway one")
-_EXCEPT = (("except", "for"), ("apart", "from"), ("other", "than"), ("but", "not"), ("except",), ("but",))
+_EXCEPT = (
+    ("except", "for"),
+    ("apart", "from"),
+    ("other", "than"),
+    ("but", "not"),
+    ("except",),
+    ("excluding",),
+    ("but",),
+)
 _ALL = frozenset({"all", "every", "each"})
 #: what things of a kind are called, for a kind said by its use ("something to drink")
 _KINDS = {
