@@ -55,3 +55,13 @@ def grammar_recognizer(vocabulary: Vocabulary) -> Any:
     from knic.language.understanding import default_grammar
 
     return Recognizer(default_grammar(), vocabulary)
+
+
+def assert_asked(vocabulary: Vocabulary, text: str, word: str, speaker: str = "annie") -> None:
+    """``text`` is not done but asked about, with ``word`` in the question."""
+    from knic.language.understanding import understand
+
+    result = understand(text, vocabulary, speaker=speaker)
+    assert not result.accepted
+    assert result.reason.startswith("ambiguous"), result.reason
+    assert word in result.reason

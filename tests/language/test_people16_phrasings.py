@@ -20,7 +20,7 @@ import pytest
 from knic.language import understand
 from knic.language.vocabulary import Vocabulary
 
-from .conftest import frames_read
+from .conftest import assert_asked, frames_read
 
 
 def _world(name: str) -> Vocabulary:
@@ -62,13 +62,6 @@ def numbered_house() -> Vocabulary:
     return Vocabulary.from_instances(instances, base.types, None, base.predicates, locations)
 
 
-def _asked(vocabulary: Any, text: str, word: str, speaker: str) -> None:
-    result = understand(text, vocabulary, speaker=speaker)
-    assert not result.accepted
-    assert result.reason.startswith("ambiguous"), result.reason
-    assert word in result.reason
-
-
 @pytest.mark.parametrize(
     ("text", "frames"),
     [
@@ -97,7 +90,7 @@ def test_short_names_hold_in_any_house(numbered_house: Vocabulary, text: str, fr
 
 
 def test_two_numbered_rooms_of_one_kind_are_asked_about(numbered_house: Vocabulary) -> None:
-    _asked(numbered_house, "go to the bedroom", "bedroom", "ada")
+    assert_asked(numbered_house, "go to the bedroom", "bedroom", "ada")
 
 
 @pytest.mark.parametrize(
@@ -117,7 +110,7 @@ def test_a_room_is_said_by_its_kind(bungalow: Vocabulary, text: str, frames: Any
 
 
 def test_two_rooms_of_the_kind_said_are_asked_about(bungalow: Vocabulary) -> None:
-    _asked(bungalow, "take the teddy to the bedroom", "bedroom", "walter")
+    assert_asked(bungalow, "take the teddy to the bedroom", "bedroom", "walter")
 
 
 def test_a_name_the_world_gives_a_word_wins_over_a_short_name(vocabulary: Vocabulary) -> None:
