@@ -197,6 +197,7 @@ class Chunker:
     def chunks(self, tokens: Sequence[str]) -> list[Chunk]:
         """The chunks of a normalised token list (fillers dropped)."""
         tokens = self._sides(self._apostrophes(self._speller.mended(tokens)))
+        said = tokens
         lemmas = [self._lemma(t) for t in tokens]
         inflected = {i for i, (word, lemma) in enumerate(zip(tokens, lemmas, strict=True)) if word != lemma}
         tokens = [self._present(lemmas, i) for i in range(len(lemmas))]
@@ -244,7 +245,10 @@ class Chunker:
                 out.append(Chunk("entity", tokens[i], guessed) if guessed else Chunk("unknown", tokens[i]))
                 i += 1
                 continue
-            if best[2] is not None:
+            if best[2] is not None and best[2].kind == "verb" and _owned_noun(out, said[i - 1] if i else ""):
+                # "my walking stick", "the walking frame": a verb's word after "my"/"the" names a thing
+                out.append(Chunk("unknown", " ".join(said[i : i + best[0]]), role=_NOUN))
+            elif best[2] is not None:
                 soft = best[2].kind == "verb" and i in inflected
                 out.append(replace(best[2], soft=True) if soft else best[2])
             i += best[0]
@@ -379,6 +383,24 @@ _SIDE_WORDS = (["hand", "side"], ["side"])
 _OWNER = "'s"
 #: words whose "'s" is read as the tables and the reader already read it ("there's a mug on the table")
 _KEPT_CONTRACTIONS = frozenset({"there", "here", "what", "who", "where", "that", "let", "how"})
+
+
+#: the determiners after which a verb's word is a noun ("my walking stick"; not "a": "have a look")
+_NOUN_DETERMINERS = frozenset({"my", "your", "our", "their", "the"})
+#: the role of an unknown chunk that was a verb's word read as a noun
+_NOUN = "noun"
+
+
+def _owned_noun(out: list[Chunk], before: str) -> bool:
+    """Whether a verb's word said next is a noun: it follows "my", "your", "our", "their" or "the" said just
+    before it (``before``, the word said before; "the robot heads to" has a dropped word between), or such a
+    word read as a noun ("my walking stick")."""
+    last = out[-1] if out else None
+    if last is None or before != last.text.split()[-1]:
+        return False
+    return (last.kind == "det" and last.text in _NOUN_DETERMINERS) or (
+        last.kind == "unknown" and last.role == _NOUN
+    )
 
 
 def _owned(chunks: list[Chunk]) -> list[Chunk]:

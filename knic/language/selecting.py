@@ -9,8 +9,9 @@ before they are cut into chunks (by :class:`knic.language.reader.Reader`, after
 * two sides said of one noun ("the left and the right lamp"): both names said whole;
 * all of a kind but "the ... one(s)" ("all the lights except the hallway one", "every lamp but the one in
   the study"): the ones left out by their names (knic.language.terse then reads the others);
-* a kind of thing said for its use ("something to drink", "a cold drink", "a piece of fruit"): the one
-  thing of the world of that kind, or a question which of them (none: the word is refused as unknown);
+* a kind of thing said for its use ("something to drink", "something to eat", "a cold drink", "a piece of
+  fruit", "a snack"): the one thing of the world of that kind, or a question which of them (none: the word
+  is refused as unknown);
 * "all of them", "both of them" after the things ("the lights, all of them, off"): said already;
 * a room said before the name of a device or piece of furniture after "and" ("the hallway light and the
   bedroom lamps"): where that one is, not where the first one is;
@@ -62,10 +63,38 @@ _KINDS = {
         {"coke", "cola", "soda", "water", "juice", "milk", "tea", "coffee", "beer", "wine", "lemonade"}
     ),
     "fruit": frozenset({"apple", "lemon", "banana", "orange", "pear", "peach", "plum", "grapes", "lime"}),
+    "food": frozenset(
+        {"apple", "lemon", "banana", "orange", "pear", "peach", "plum", "grapes", "lime", "bread", "biscuit"}
+        | {"biscuits", "cake", "sandwich", "cookie", "cookies", "crackers", "cheese", "chocolate", "yogurt"}
+    ),
 }
-_KIND_WORDS = {"drink": "drink", "drinks": "drink", "beverage": "drink", "fruit": "fruit", "fruits": "fruit"}
+_KIND_WORDS = {
+    "drink": "drink",
+    "drinks": "drink",
+    "beverage": "drink",
+    "fruit": "fruit",
+    "fruits": "fruit",
+    "eat": "food",  # only "something to eat" (a verb otherwise)
+    "snack": "food",
+}
+#: how the robot asks which thing of a kind, where "which <kind> do you mean" would not do
+_ASK = {"food": "what would you like to eat"}
 _SAID_OF_KIND = frozenset(
-    {"cold", "hot", "cool", "warm", "fresh", "nice", "little", "piece", "of", "another"}
+    {
+        "cold",
+        "hot",
+        "cool",
+        "warm",
+        "fresh",
+        "nice",
+        "little",
+        "piece",
+        "of",
+        "another",
+        "sweet",
+        "tasty",
+        "healthy",
+    }
 )
 
 
@@ -237,7 +266,7 @@ def _kind(words: list[str], vocabulary: Vocabulary) -> list[str]:
                 words[start - 1] in _SAID_OF_KIND or words[start - 1] in _DETERMINERS | {"some"}
             ):
                 start -= 1
-            if start == i:
+            if start == i or word == "eat":
                 continue  # "drink" said as a verb
         things = {
             t.symbol: t
@@ -251,7 +280,7 @@ def _kind(words: list[str], vocabulary: Vocabulary) -> list[str]:
         if len(things) > 1:
             names = [vocabulary.phrase_of(s) for s in sorted(things)]
             listed = ", ".join(f"the {n}" for n in names[:-1]) + f" or the {names[-1]}"
-            raise AmbiguityError(f"which {kind} do you mean: {listed}?")
+            raise AmbiguityError(f"{_ASK.get(kind, f'which {kind} do you mean')}: {listed}?")
         symbol = next(iter(things))
         return [*words[:start], "the", *vocabulary.phrase_of(symbol).split(), *words[i + 1 :]]
     return words
