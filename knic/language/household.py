@@ -41,11 +41,30 @@ _CONTRACTED_DOERS = frozenset({"i'm", "we're", "they're", "he's", "she's", "you'
 _SHOULD = frozenset({"need", "needs", "to", "should", "must", "has", "have", "can", "could", "ought", "is"})
 
 
+#: articles a thing said again after a hesitation starts with ("a cup of tea, er, a cup")
+_ARTICLES = frozenset({"a", "an", "the", "my", "some", "your"})
+#: words after which a hesitation before an article is no correction ("bring me uh the mug", "to uh the")
+_NOT_ENDING_A_THING = frozenset(
+    {"me", "him", "her", "us", "them", "it", "and", "or", "then", "to", "from", "of", "on", "in", "at", "for"}
+    | {"with", "into", "onto", "off", "is", "are", "please", "also", "too", "by", "near", "next", "under"}
+)
+
+
 def words_tidied(tokens: list[str]) -> list[str]:
-    """The words without hesitations, with "you're" spelled out after a word of time."""
+    """The words without hesitations, with "you're" spelled out after a word of time. A hesitation between a
+    thing said after an article and the same article said again ("get me a cup of tea er a cup") is the
+    speaker correcting the thing: it is read as "i mean"."""
     out: list[str] = []
-    for token in tokens:
+    for i, token in enumerate(tokens):
         if token in HESITATIONS:
+            nxt = tokens[i + 1] if i + 1 < len(tokens) else ""
+            if (
+                nxt in _ARTICLES
+                and out
+                and out[-1] not in _ARTICLES | _NOT_ENDING_A_THING | HESITATIONS
+                and nxt in out[:-1]
+            ):
+                out += ["i", "mean"]
             continue
         if token in _CONTRACTED and out and out[-1] in _TIME_WORDS:
             out += _CONTRACTED[token]

@@ -177,6 +177,14 @@ def repaired(chunks: list[Chunk], kind_of: Callable[[Chunk], str]) -> list[Chunk
             chunks = before + after
             continue
         start, target = span
+        while target + 2 < len(before) and before[target + 1].kind == "partitive":
+            # "a cup of tea, no, a cup": the thing said with what it holds is corrected whole
+            nxt = target + 2
+            while nxt < len(before) - 1 and before[nxt].kind == "det":
+                nxt += 1
+            if before[nxt].kind not in ("entity", "unknown"):
+                break
+            target = nxt
         while start > 0 and before[start - 1].kind == "det":
             start -= 1
         if replacement and replacement[0].kind == "prep" and start > 0 and before[start - 1].kind == "prep":
