@@ -4,7 +4,7 @@ The sets are ``tests/fixtures/language/dev.yaml`` (tuned on) and ``tests/fixture
 (written afterwards in other words), and ``people2/dev.yaml`` and ``people2/test.yaml`` (100 commands each,
 written blind: the writer saw the apartment's description and the gold format only, not the grammar, the
 reader, the lexicon or the earlier sets; ``people2-test`` is never tuned on). ``--file`` runs a set of one's
-own. ``people3`` to ``people16`` are further blind development sets (``people5`` to ``people15`` span both
+own. ``people3`` to ``people17`` are further blind development sets (``people5`` to ``people15`` span both
 houses; ``people16`` the simulator's test flat and bungalow). Each case is a command with its gold frames
 and goals, or with a word the refusal (``reject``) or the question back (``question``) must contain. Cases
 run against the ERL apartment or, with ``world: other``, against a different house
@@ -55,6 +55,7 @@ SETS = {
     "people14-dev": FIXTURES / "people14" / "dev.yaml",
     "people15-dev": FIXTURES / "people15" / "dev.yaml",
     "people16-dev": FIXTURES / "people16" / "dev.yaml",
+    "people17-dev": FIXTURES / "people17" / "dev.yaml",
 }
 OTHER_WORLD = FIXTURES / "other_world" / "problem.pddl"
 _MAIN = {"MOTION": ("goal",), "OPERATING": ("device", "state")}
