@@ -40,6 +40,8 @@ WORLDS_DIR = Path(__file__).resolve().parent
 WORLD_NAMES: dict[str, Path] = {
     "erl_home": WORLDS_DIR / "erl_home" / "erl_home.yaml",
     "erl_home_paper": WORLDS_DIR / "erl_home" / "erl_home_paper.yaml",
+    "test_flat": WORLDS_DIR / "test_flat" / "test_flat.yaml",
+    "test_bungalow": WORLDS_DIR / "test_bungalow" / "test_bungalow.yaml",
 }
 
 _TOP = {
@@ -85,7 +87,8 @@ class _Ctx:
 
 
 def resolve_world_path(name_or_path: str | Path) -> Path:
-    """The file of a world name (``erl_home``, ``erl_home_paper``) or an existing path.
+    """The file of a world name (``erl_home``, ``erl_home_paper``, ``test_flat``, ``test_bungalow``) or an
+    existing path.
 
     Raises:
         WorldError: neither a known name nor an existing file.

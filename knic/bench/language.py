@@ -71,7 +71,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
 
 
 def _world_file_vocabulary(name: str, path: Path) -> Any:
-    """The vocabulary of a simulator world named in a case (``world: test_flat``: ``worlds/test_flat``), as
+    """The vocabulary of a simulator world named in a case (``world: test_flat``, or a world file), as
     ``knic goal --world`` reads it.
 
     Raises:
@@ -81,8 +81,7 @@ def _world_file_vocabulary(name: str, path: Path) -> Any:
     from knic.language.world import DEFAULT_DOMAIN
 
     try:
-        folder = DEFAULT_DOMAIN.parents[1] / name / f"{name}.yaml"  # worlds/<name>/<name>.yaml
-        return world_vocabulary(str(folder) if folder.is_file() else name, DEFAULT_DOMAIN, None)[0]
+        return world_vocabulary(name, DEFAULT_DOMAIN, None)[0]
     except KnicError as exc:
         raise KnicError(f"{path}: world {name!r}: {exc}") from None
 

@@ -32,10 +32,8 @@ it); without it no typo is guessed.
 
 from __future__ import annotations
 
-import importlib.util
 from collections.abc import Callable, Collection, Mapping, Sequence
 from functools import lru_cache
-from pathlib import Path
 
 _LETTERS = "abcdefghijklmnopqrstuvwxyz'"
 #: shortest word that is mended at all; words of this length only by a letter changed or added or a swap,
@@ -48,12 +46,13 @@ _LONG = 8
 @lru_cache(maxsize=1)
 def _dictionary() -> bytes:
     """The speech side's pronouncing dictionary, one word and its sounds a line ("" when not installed)."""
-    spec = importlib.util.find_spec("pocketsphinx")
-    for folder in list(spec.submodule_search_locations or ()) if spec is not None else []:
-        path = Path(folder) / "model" / "en-us" / "cmudict-en-us.dict"
-        if path.is_file():
-            return b"\n" + path.read_bytes()
-    return b""
+    from knic.language.acoustic import wheel_model_dir
+
+    try:
+        path = wheel_model_dir() / "cmudict-en-us.dict"
+    except ImportError:
+        return b""
+    return b"\n" + path.read_bytes() if path.is_file() else b""
 
 
 def is_english(word: str) -> bool | None:
