@@ -45,7 +45,7 @@ from pathlib import Path
 from typing import Any
 
 from core.errors import KnicError
-from knic.cli.say import add_acoustic_argument
+from knic.cli.say import add_acoustic_argument, add_second_opinion_argument
 
 FIXTURES = Path(__file__).resolve().parents[2] / "tests" / "fixtures" / "speech_people" / "test"
 ANSWERS = FIXTURES.parents[1] / "speech_answers"
@@ -79,6 +79,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     )
     parser.add_argument("--dev", default=str(DEV), help="folder with the development set ('' skips)")
     parser.add_argument("--decoder", choices=DECODERS, help="only this decoder (default: both)")
+    add_second_opinion_argument(parser)
 
 
 def parse_options(pairs: list[str]) -> dict[str, object]:
@@ -126,6 +127,7 @@ def evaluate(
     branch_penalty: bool = True,
     acoustic_model: str | None = None,
     decoder: str = "grammar",
+    second_opinion: bool = True,
 ) -> dict[str, Any]:
     """Run the test set and return the figures plus the per-utterance mistakes under ``"errors"``.
 
@@ -137,6 +139,8 @@ def evaluate(
         branch_penalty: passed to :class:`~knic.language.speech.Recognizer`.
         acoustic_model: passed to :class:`~knic.language.speech.Recognizer`.
         decoder: ``grammar`` or ``ngram`` (see the module docstring).
+        second_opinion: the n-gram decoder also hears each utterance with Whisper
+            (:mod:`knic.language.whisperpass`).
 
     Raises:
         KnicError: the gold file is missing or malformed, or the decoder refuses an option.
@@ -167,12 +171,15 @@ def evaluate(
     }
     if filler_weight is not None:
         extra["filler_weight"] = filler_weight
-    key = json.dumps([decoder, extra, filler_weight], sort_keys=True, default=str)
+    key = json.dumps([decoder, extra, filler_weight, second_opinion], sort_keys=True, default=str)
     if key not in _BUILT:  # the sets of one run share the recogniser (they are read in the same world)
         recognizer: Any
         if decoder == "ngram":
             recognizer = NgramRecognizer(
-                vocabulary, acoustic_model=acoustic_model, decoder_options=decoder_options
+                vocabulary,
+                acoustic_model=acoustic_model,
+                decoder_options=decoder_options,
+                second_opinion=second_opinion,
             )
         else:
             recognizer = Recognizer(default_grammar(), vocabulary, **extra)
@@ -232,6 +239,7 @@ def evaluate(
         "decoder_setup_ms": round(setup_ms, 1),
         "decoder": decoder,
         "acoustic_model": acoustic_model,
+        "second_opinion": decoder == "ngram" and getattr(recognizer, "whisper", None) is not None,
         "by_voice": {voice: round(ok / n, 4) for voice, (ok, n) in sorted(voices.items())},
         "by_class": {name: round(ok / n, 4) for name, (ok, n) in sorted(classes.items())},
         "errors": mistakes,
@@ -272,6 +280,7 @@ def run(args: argparse.Namespace) -> int:
             branch_penalty=not args.no_branch_penalty,
             acoustic_model=args.acoustic_model,
             decoder=decoder,
+            second_opinion=args.second_opinion,
         )
 
     figures: dict[str, Any] = {}

