@@ -34,6 +34,7 @@ if TYPE_CHECKING:
     import numpy as np
     import numpy.typing as npt
 
+    from knic.language.passworker import PassWorker
     from knic.language.vocabulary import Vocabulary
 
 #: the Python package whose ``model`` folder holds the converted model
@@ -241,6 +242,53 @@ def second_opinion(
     if first_accepted and reading(own) == reading(first):
         return None
     return own
+
+
+def agrees(
+    heard: Heard | None, first: str, reads: Callable[[str], bool], reading: Callable[[str], object]
+) -> bool:
+    """Whether Whisper is sure it heard the command ``first`` reads as (the same words, or words the reader
+    reads the same way, with no question back)."""
+    from knic.language.vocabulary import normalize
+
+    if heard is None or heard.mean_log_prob <= SURE_LOG_PROB:
+        return False
+    own = normalize(heard.text)
+    if not own or not first:
+        return False
+    if own == first:
+        return True
+    mine = reading(own) if reads(own) else None
+    return mine is not None and mine is not True and mine == reading(first)
+
+
+class Opinion:
+    """Whisper's hearing of one utterance, asked of a worker at once and waited for on the first call: the
+    one given (``heard``, done elsewhere), else the worker's, else heard in this process (no worker, or it
+    failed)."""
+
+    def __init__(
+        self,
+        whisper: WhisperPass,
+        samples: bytes,
+        heard: Callable[[], Heard | None] | None = None,
+        worker: PassWorker | None = None,
+    ):
+        self._whisper, self._samples, self._heard = whisper, samples, heard
+        self._worker = worker if heard is None and worker is not None and worker.submit(samples) else None
+        self._got: Heard | None = None
+
+    def __call__(self) -> Heard:
+        if self._got is None:
+            found = self._heard() if self._heard is not None else None
+            if found is None and self._worker is not None:
+                found = heard_of(self._worker.result())
+            if found is None:
+                import numpy as np
+
+                found = self._whisper.hear(np.frombuffer(self._samples, dtype="<i2"))
+            self._got = found
+        return self._got
 
 
 def whisper_job(whisper: WhisperPass) -> Callable[[bytes], object]:

@@ -21,6 +21,7 @@ from knic.language.whisperpass import (
     SURE_LOG_PROB,
     Heard,
     WhisperPass,
+    agrees,
     log_mel,
     mel_filters,
     model_dir,
@@ -127,6 +128,21 @@ def _reading(text: str) -> object:
 )
 def test_when_whisper_replaces_the_first_transcript(heard, first, accepted, expected):
     assert second_opinion(heard, first, accepted, _reads, _reading) == expected
+
+
+@pytest.mark.parametrize(
+    ("heard", "first", "expected"),
+    [
+        (Heard("Bring me the cup, please.", -0.1), "bring me the cup please", True),  # the same words
+        (Heard("Bring the cup.", -0.1), "bring me the cup", True),  # read the same way
+        (Heard("Bring me the mug.", -0.1), "bring me the cup", False),
+        (Heard("Bring me the cup.", SURE_LOG_PROB - 0.1), "bring me the cup", False),  # not sure
+        (Heard("Sing me a song.", -0.1), "bring me the cup", False),
+        (None, "bring me the cup", False),
+    ],
+)
+def test_whisper_agrees_when_sure_of_the_same_command(heard, first, expected):
+    assert agrees(heard, first, _reads, _reading) == expected
 
 
 @pytest.fixture(scope="module")
