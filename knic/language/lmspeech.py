@@ -74,11 +74,10 @@ from knic.language.vocabulary import Vocabulary
 from knic.language.whisperpass import (
     Heard,
     Opinion,
-    WhisperPass,
+    WhisperServer,
     agrees,
     model_dir,
     second_opinion,
-    whisper_job,
     world_prompt,
 )
 
@@ -229,8 +228,9 @@ class NgramRecognizer:
         #: the model's dictionary and binary language model, once built (what :mod:`knic.language.oneshot`
         #: remembers for the next one-shot start)
         self.model_files: tuple[str, Path | None] | None = None
-        self.whisper = WhisperPass(world_prompt(vocabulary)) if second_opinion and model_dir() else None
-        self._whisper_worker: PassWorker | None = None
+        self._prompt = world_prompt(vocabulary) if second_opinion and model_dir() else None
+        #: Whisper's server (:class:`~knic.language.whisperpass.WhisperServer`), started with the decoders
+        self.whisper: WhisperServer | None = None
         if not lazy:
             self._build()
 
@@ -276,10 +276,8 @@ class NgramRecognizer:
                 member.decoder, member.initial_cmn = decoder, decoder.get_cmn()
         self._built = True
         self.model_files = ("".join(lines), binary)
-        if self.whisper is not None and self._parallel:  # forked before this process loads the model
-            self._whisper_worker = start_worker(whisper_job(self.whisper))
-            if self._whisper_worker is not None:
-                self._whisper_worker.submit(b"")  # it loads the model meanwhile
+        if self._prompt is not None:
+            self._server()  # it loads the model meanwhile
 
     def phone_loop_of(self, index: int = 0) -> PhoneLoop:
         """The phone-loop pass of a member model, built on first use (it is not needed for speech the reader
@@ -318,11 +316,16 @@ class NgramRecognizer:
         index = choose_member(results)
         return index, results[index]
 
+    def _server(self) -> WhisperServer:
+        """Whisper's server, started on first use."""
+        if self.whisper is None:
+            self.whisper = WhisperServer(self._prompt or "")
+        return self.whisper
+
     @property
     def whisper_pid(self) -> int | None:
-        """The process id of the live Whisper worker (None: none, or Whisper runs in this process)."""
-        worker = self._whisper_worker
-        return worker.pid if worker is not None and worker.alive else None
+        """The process id of the running Whisper server (None: none)."""
+        return self.whisper.pid if self.whisper is not None else None
 
     @property
     def worker_pids(self) -> tuple[int, ...]:
@@ -332,11 +335,12 @@ class NgramRecognizer:
     def close(self) -> None:
         """Stop the worker processes; the recogniser still decodes, every pass in this process."""
         self._parallel = False
-        for worker in [*(self._workers or []), self._whisper_worker]:
+        for worker in self._workers or []:
             if worker is not None:
                 worker.close()
         self._workers = None
-        self._whisper_worker = None
+        if self.whisper is not None:
+            self.whisper.close()
 
     def __enter__(self) -> NgramRecognizer:
         return self
@@ -410,10 +414,9 @@ class NgramRecognizer:
             AudioError: the file is not usable audio.
         """
         samples = pcm_bytes(audio)
-        whisper = self.whisper
-        if whisper is None:
+        if self._prompt is None:
             return self._first_opinion(samples, phone_score, decoded)
-        opinion = Opinion(whisper, samples, heard, self._whisper_worker)
+        opinion = Opinion(self._server, samples, heard)
         reading = self._reading or self.reads
         first = self._first_opinion(
             samples, phone_score, decoded, lambda text: agrees(opinion(), text, self.reads, reading)

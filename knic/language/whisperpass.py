@@ -20,8 +20,14 @@ Log-mel features are computed here with numpy, the way Whisper's front end compu
 
 from __future__ import annotations
 
+import contextlib
+import json
 import math
 import os
+import struct
+import subprocess
+import sys
+import weakref
 from collections.abc import Callable
 from dataclasses import dataclass
 from functools import lru_cache
@@ -34,7 +40,6 @@ if TYPE_CHECKING:
     import numpy as np
     import numpy.typing as npt
 
-    from knic.language.passworker import PassWorker
     from knic.language.vocabulary import Vocabulary
 
 #: the Python package whose ``model`` folder holds the converted model
@@ -262,49 +267,152 @@ def agrees(
     return mine is not None and mine is not True and mine == reading(first)
 
 
+class WhisperServer:
+    """Whisper in a process of its own (``python -m knic.language.whisperpass``), started as a new program,
+    not forked: CTranslate2's thread pools never live in a KnIC process, which may fork later (a planner child
+    forked after them died in the test suite), and processes that run threads (a ROS node, the web view) get
+    the second opinion as well. The server loads the model while the caller gets on; one request at a time.
+    A server that died is started again at the next request.
+
+    Args:
+        prompt: as for :class:`WhisperPass`.
+        folder: the model folder (default: :func:`model_dir`).
+    """
+
+    def __init__(self, prompt: str = "", folder: Path | None = None):
+        self.prompt, self.folder = prompt, folder or model_dir()
+        self._process: subprocess.Popen[bytes] | None = None
+        self._pending = 0
+        self._start()
+
+    def _start(self) -> None:
+        command = [sys.executable, "-m", "knic.language.whisperpass", self.prompt, str(self.folder or "")]
+        try:
+            process = subprocess.Popen(command, stdin=subprocess.PIPE, stdout=subprocess.PIPE)
+        except OSError:
+            self._process = None
+            return
+        self._process, self._pending = process, 0
+        self._finalizer = weakref.finalize(self, _stop_server, process)
+
+    @property
+    def pid(self) -> int | None:
+        """The server's process id while it runs."""
+        process = self._process
+        return process.pid if process is not None and process.poll() is None else None
+
+    def submit(self, samples: bytes) -> bool:
+        """Send one utterance (raw 16 kHz 16-bit PCM); False when no server could take it."""
+        if self.pid is None:
+            self._start()
+        process = self._process
+        if process is None or process.stdin is None:
+            return False
+        try:
+            process.stdin.write(_FRAME.pack(len(samples)) + samples)
+            process.stdin.flush()
+        except OSError:
+            return False
+        self._pending += 1
+        return True
+
+    def result(self) -> Heard | None:
+        """Whisper's hearing of the last utterance sent (replies to earlier ones skipped); None when the
+        server died or failed on it."""
+        process, found = self._process, None
+        while self._pending and process is not None and process.stdout is not None:
+            header = process.stdout.read(_FRAME.size)
+            body = process.stdout.read(_FRAME.unpack(header)[0]) if len(header) == _FRAME.size else b""
+            if len(header) < _FRAME.size:
+                self._pending = 0
+                return None
+            self._pending -= 1
+            try:
+                found = heard_of(json.loads(body))
+            except ValueError:
+                found = None
+        return found
+
+    def hear(self, samples: bytes) -> Heard | None:
+        """:meth:`submit` then :meth:`result`, trying a new server once when the running one died."""
+        for _ in range(2):
+            if self.submit(samples):
+                found = self.result()
+                if found is not None or self.pid is not None:
+                    return found
+        return None
+
+    def close(self) -> None:
+        """Stop the server; idempotent."""
+        if self._process is not None:
+            self._finalizer()
+            self._process = None
+
+
+#: a message between a client and the server: its length, then its bytes
+_FRAME = struct.Struct("!I")
+
+
+def _stop_server(process: subprocess.Popen[bytes]) -> None:
+    with contextlib.suppress(OSError):
+        if process.stdin is not None:
+            process.stdin.close()
+    try:
+        process.wait(timeout=5)
+    except subprocess.TimeoutExpired:
+        process.kill()
+        process.wait()
+
+
+def serve(prompt: str, folder: str) -> None:
+    """The server's loop: utterances in on stdin, ``[text, mean log-prob]`` (or null) out on stdout, framed
+    by :data:`_FRAME`, until stdin closes."""
+    import numpy as np
+
+    whisper = WhisperPass(prompt, folder=Path(folder) if folder else None)
+    requests, replies = sys.stdin.buffer, sys.stdout.buffer
+    try:
+        whisper._load()
+    except LanguageError as exc:
+        print(f"knic: warning: {exc}", file=sys.stderr)
+    while True:
+        header = requests.read(_FRAME.size)
+        if len(header) < _FRAME.size:
+            return
+        data = requests.read(_FRAME.unpack(header)[0])
+        try:
+            heard = whisper.hear(np.frombuffer(data, dtype="<i2"))
+            reply = json.dumps([heard.text, heard.mean_log_prob]).encode()
+        except (LanguageError, ValueError, RuntimeError):
+            reply = b"null"
+        replies.write(_FRAME.pack(len(reply)) + reply)
+        replies.flush()
+
+
 class Opinion:
-    """Whisper's hearing of one utterance, asked of a worker at once and waited for on the first call: the
-    one given (``heard``, done elsewhere), else the worker's, else heard in this process (no worker, or it
-    failed)."""
+    """Whisper's hearing of one utterance, waited for on the first call: the one given (``heard``, done
+    elsewhere), else the server's (``server()``: asked at once when nothing is given; None: no second
+    opinion)."""
 
     def __init__(
         self,
-        whisper: WhisperPass,
+        server: Callable[[], WhisperServer],
         samples: bytes,
         heard: Callable[[], Heard | None] | None = None,
-        worker: PassWorker | None = None,
     ):
-        self._whisper, self._samples, self._heard = whisper, samples, heard
-        self._worker = worker if heard is None and worker is not None and worker.submit(samples) else None
-        self._got: Heard | None = None
+        self._server, self._samples, self._heard = server, samples, heard
+        self._asked = heard is None and server().submit(samples)
+        self._got: list[Heard | None] = []
 
-    def __call__(self) -> Heard:
-        if self._got is None:
+    def __call__(self) -> Heard | None:
+        if not self._got:
             found = self._heard() if self._heard is not None else None
-            if found is None and self._worker is not None:
-                found = heard_of(self._worker.result())
+            if found is None and self._asked:
+                found = self._server().result()
             if found is None:
-                import numpy as np
-
-                found = self._whisper.hear(np.frombuffer(self._samples, dtype="<i2"))
-            self._got = found
-        return self._got
-
-
-def whisper_job(whisper: WhisperPass) -> Callable[[bytes], object]:
-    """A worker's job (:mod:`knic.language.passworker`): raw 16 kHz 16-bit PCM in, ``[text, mean log-prob]``
-    out; an empty request loads the model and answers None."""
-
-    def job(request: bytes) -> object:
-        import numpy as np
-
-        whisper._load()
-        if not request:
-            return None
-        heard = whisper.hear(np.frombuffer(request, dtype="<i2"))
-        return [heard.text, heard.mean_log_prob]
-
-    return job
+                found = self._server().hear(self._samples)
+            self._got.append(found)
+        return self._got[0]
 
 
 def heard_of(data: object) -> Heard | None:
@@ -315,3 +423,7 @@ def heard_of(data: object) -> Heard | None:
         except (TypeError, ValueError):
             return None
     return None
+
+
+if __name__ == "__main__":
+    serve(sys.argv[1] if len(sys.argv) > 1 else "", sys.argv[2] if len(sys.argv) > 2 else "")
