@@ -33,7 +33,9 @@ development commands and other speech in four more voices, for measures that mus
 ``speech_ood_dev``; ``--option KEY=VALUE`` (repeatable),
 ``--no-branch-penalty`` and ``--acoustic-model NAME|DIR`` (``auto``, the n-gram decoder's default: both
 models below, the better fitting kept per utterance; ``espeak``, the grammar decoder's default; ``base``, the
-unadapted model: see :mod:`knic.language.acoustic`) change the recogniser for that run only.
+unadapted model: see :mod:`knic.language.acoustic`) change the recogniser for that run only. The n-gram
+decoder hears with Whisper's second opinion (:mod:`knic.language.whisperpass`) unless
+``--no-second-opinion``; ``second_opinion`` in the figures says which.
 """
 
 from __future__ import annotations
