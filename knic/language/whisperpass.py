@@ -35,6 +35,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from core.errors import LanguageError
+from knic.language.vocabulary import normalize
 
 if TYPE_CHECKING:
     import numpy as np
@@ -227,6 +228,14 @@ def world_prompt(vocabulary: Vocabulary) -> str:
 SURE_LOG_PROB = -0.4
 
 
+def sure_words(heard: Heard | None) -> str | None:
+    """Whisper's transcript as the recogniser's lowercase words when Whisper is sure of it
+    (:data:`SURE_LOG_PROB`), else None."""
+    if heard is None or heard.mean_log_prob <= SURE_LOG_PROB:
+        return None
+    return normalize(heard.text) or None
+
+
 def second_opinion(
     heard: Heard | None,
     first: str,
@@ -237,11 +246,7 @@ def second_opinion(
     """Whisper's transcript (normalised to the recogniser's lowercase words) when it should replace the first
     recogniser's, else None: Whisper is sure of it (:data:`SURE_LOG_PROB`), the reader reads it (or asks
     about it), and the first recogniser refused the utterance or its transcript reads otherwise."""
-    from knic.language.vocabulary import normalize
-
-    if heard is None or heard.mean_log_prob <= SURE_LOG_PROB:
-        return None
-    own = normalize(heard.text)
+    own = sure_words(heard)
     if not own or own == first or not reads(own):
         return None
     if first_accepted and reading(own) == reading(first):
@@ -254,11 +259,7 @@ def agrees(
 ) -> bool:
     """Whether Whisper is sure it heard the command ``first`` reads as (the same words, or words the reader
     reads the same way, with no question back)."""
-    from knic.language.vocabulary import normalize
-
-    if heard is None or heard.mean_log_prob <= SURE_LOG_PROB:
-        return False
-    own = normalize(heard.text)
+    own = sure_words(heard)
     if not own or not first:
         return False
     if own == first:
