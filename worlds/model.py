@@ -309,6 +309,10 @@ class World:
         """Room pairs joined by a door, each once, in file order."""
         return [(d.rooms[0], d.rooms[1]) for d in self.doors if len(d.rooms) == 2]
 
+    def entrances(self) -> list[str]:
+        """The rooms a door to the outside (a front door) opens into, each once, in file order."""
+        return list(dict.fromkeys(d.rooms[0] for d in self.doors if len(d.rooms) == 1))
+
     def bounds(self) -> tuple[float, float, float, float]:
         """``(xmin, ymin, xmax, ymax)`` of all room polygons."""
         xs = [p[0] for r in self.rooms.values() for p in r.polygon]

@@ -32,7 +32,7 @@ class Reading:
 
 #: the roles a pronoun can refer back to: a thing, whom it was for, or a person gone to ("go to tracy and give
 #: her the mug")
-_REFERRED_ROLES = ("theme", "beneficiary", "goal")
+_REFERRED_ROLES = ("theme", "beneficiary", "goal", "device")
 
 
 def referent(
@@ -69,6 +69,42 @@ def referent(
             return found if chunk.text == "them" else found[-1:]
     thing = "an object" if wanted == "item" else "a person" if wanted == "person" else "anything"
     raise LanguageError(f"'{chunk.text}' does not refer to {thing} named earlier in the command")
+
+
+def settled(reading: Reading, vocabulary: Vocabulary) -> Reading:
+    """The reading with each device set once: a device set again later to a level ends at that level ("open
+    the blinds and set them to 40"), the first setting goes (see :func:`_set_again`).
+
+    Raises:
+        AmbiguityError: a device is put in opposite states ("switch on the light and switch it off").
+    """
+    frames = reading.frames
+    drop = {
+        i
+        for i, frame in enumerate(frames)
+        if frame.kind == "OPERATING" and _set_again(frame, frames[i + 1 :], vocabulary)
+    }
+    if not drop:
+        return reading
+    kept = [i for i in range(len(frames)) if i not in drop]
+    return Reading([frames[i] for i in kept], {kept.index(i) for i in reading.waypoints if i in kept})
+
+
+def _set_again(frame: CommandFrame, later: list[CommandFrame], vocabulary: Vocabulary) -> bool:
+    """Whether a device operated is set again later in the command to a level ("open the blinds and set them
+    to 40": the level is meant, the first setting goes).
+
+    Raises:
+        AmbiguityError: it is later put in the opposite state ("switch on the light and switch it off").
+    """
+    again = next((f for f in later if f.kind == "OPERATING" and f.get("device") == frame.get("device")), None)
+    state, then = frame.get("state") or "", (again.get("state") or "") if again else ""
+    if again is None or then == state:
+        return False
+    if then.isdigit():
+        return True
+    device = vocabulary.phrase_of(frame.get("device") or "")
+    raise AmbiguityError(f"the {device} cannot be {state} and {then} at once: which should it be?")
 
 
 def chain(

@@ -14,7 +14,7 @@ from dataclasses import dataclass, replace
 
 from knic.language.commands import CommandLanguage
 from knic.language.typos import Speller
-from knic.language.vocabulary import TENS_WORDS, UNIT_WORDS, Term, Vocabulary, normalize
+from knic.language.vocabulary import TENS_WORDS, UNIT_WORDS, Term, Vocabulary, english_synonyms, normalize
 
 #: number words to their values (0..19 and the tens), from the vocabulary's one list of number words
 _NUMBERS = {w: i for i, w in enumerate(UNIT_WORDS)}
@@ -77,6 +77,7 @@ class Chunker:
                 named.setdefault(term.symbol, term)
         for type_name, nouns in lang.type_nouns.items():
             things = [t for t in named.values() if vocabulary.is_subtype(t.type, type_name)]
+            things = _told_apart(nouns[0], things, vocabulary) if things else things
             for rank, noun in enumerate(nouns if things else ()):
                 for variant in (noun, noun if noun.endswith("s") else noun + "s"):
                     if variant in self._full or (rank and variant in self._partial):
@@ -389,6 +390,19 @@ _KEPT_CONTRACTIONS = frozenset({"there", "here", "what", "who", "where", "that",
 _NOUN_DETERMINERS = frozenset({"my", "your", "our", "their", "the"})
 #: the role of an unknown chunk that was a verb's word read as a noun
 _NOUN = "noun"
+
+
+def _told_apart(noun: str, things: list[Term], vocabulary: Vocabulary) -> list[Term]:
+    """The things a type's own word names: all of them, unless some are called by it and others only by a
+    synonym of it ("office blinds" and "bedroom curtains": the world tells them apart by that word, so "the
+    blinds" are the office's)."""
+    others = {w for group in english_synonyms() if noun in group for w in group if w != noun}
+    ends: dict[str, set[str]] = {}
+    for term in vocabulary.terms:
+        ends.setdefault(term.symbol, set()).add(term.phrase.split()[-1])
+    if not others or not any(noun in ends.get(t.symbol, ()) for t in things):
+        return things
+    return [t for t in things if not ends.get(t.symbol, set()) <= others]
 
 
 def _owned_noun(out: list[Chunk], before: str) -> bool:

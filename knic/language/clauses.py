@@ -108,12 +108,27 @@ def _before_verb(chunks: list[Chunk], index: int) -> list[Chunk]:
     return before[-1:]
 
 
+def _given_to(chunks: list[Chunk], at: int, names_person: Callable[[Chunk], bool]) -> bool:
+    """Whether "her" or "him" at ``at`` is whom a bringing verb right before it gives the thing after it to
+    ("look for maria and bring her blanket": to maria, hers): a person is named earlier in the command and
+    the action says no one else to give it to and nowhere to take it ("bring me her glasses", "bring her
+    glasses to the kitchen" are possessives)."""
+    verb = chunks[at - 1] if at else None
+    if verb is None or verb.kind != "verb" or "BRINGING" not in verb.frames or verb.beneficiary is not None:
+        return False
+    if not any(c.kind in ("entity", "owner") and names_person(c) for c in chunks[: at - 1]):
+        return False
+    end = next((i for i in range(at + 1, len(chunks)) if chunks[i].kind in ("verb", "join")), len(chunks))
+    return not any(c.kind == "me" or (c.kind == "prep" and c.role != "source") for c in chunks[at + 1 : end])
+
+
 def split_clauses(
     chunks: list[Chunk],
     names_device: Callable[[Chunk], bool],
     names_item: Callable[[Chunk], bool] = lambda chunk: False,
     bare_verb: Chunk | None = None,
     context: list[Arg] | None = None,
+    names_person: Callable[[Chunk], bool] = lambda chunk: False,
 ) -> list[Clause]:
     """Split chunks into clauses at verbs.
 
@@ -124,6 +139,7 @@ def split_clauses(
         bare_verb: the verb a command without any verb is read with when it names objects; None: refused.
         context: when given, receives the noun phrases said before the first verb that make no clause ("my
             glasses are in the bedroom, bring them to me": the glasses), for pronouns to refer to.
+        names_person: whether an entity chunk names a person (for "find maria and bring her blanket").
     """
     chunks = [  # "her glasses": a possessive, not the pronoun
         Chunk("det", c.text)
@@ -131,6 +147,7 @@ def split_clauses(
         and c.role == "person"
         and i + 1 < len(chunks)
         and chunks[i + 1].kind == "entity"
+        and not _given_to(chunks, i, names_person)
         else c
         for i, c in enumerate(chunks)
     ]

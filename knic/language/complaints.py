@@ -1,9 +1,13 @@
-"""A complaint that a room is dark, said as the whole command, read as the request it makes.
+"""A complaint about the light, read as the request it makes.
 
-"It's far too dark in the study" asks for the study's lights: the whole command is read as "turn on the
-lights in the study" (the room's light, its group of lights, or a question which). A complaint about "here" or
-"there" is left as said (where that is is not known), and so is one said beside a request ("it's dark in the
-bedroom, turn on the left lamp": the request says what to do, the complaint is talk).
+"It's far too dark in the study" (or "on the landing") asks for the study's lights: the whole command is read
+as "turn on the lights in the study" (the room's light, its group of lights, or a question which). A complaint
+about "here" or "there" is left as said (where that is is not known), and so is one said beside a request
+("it's dark in the bedroom, turn on the left lamp": the request says what to do, the complaint is talk).
+
+A complaint that one cannot see, said beside a device said to be off ("i can't see a thing in here, the
+reading lamp is off"), asks for that device on; one that it is too bright beside a device said to be on or
+open ("it's far too bright, the blinds are open") asks for it off or closed.
 """
 
 from __future__ import annotations
@@ -17,18 +21,44 @@ _DEGREE = (
     r"(?:(?:so|too|far|way|very|really|rather|quite|pretty|a bit|a little|awfully|terribly|getting)\s+)*"
 )
 _DARK = re.compile(
-    rf"^{_OPENING}(?:it's|its|it is)\s+{_DEGREE}dark\s+(?:in|inside)\s+"
+    rf"^{_OPENING}(?:it's|its|it is)\s+{_DEGREE}dark\s+(?:in|inside|on|out on|up on|down in)\s+"
     r"(?P<place>(?!(?:here|there)\b)(?:(?:the|my|our|your)\s+)?[a-z']+(?:\s+[a-z']+){0,2}?)"
     r"(?:\s+(?:please|now|tonight|today))?$"
 )
 #: a stop or comma inside the text: more was said than the complaint
 _INNER_BREAK = re.compile(r"[,;:.!?]\s*\S")
+#: the sentences of a command
+_SENTENCES = re.compile(r"[,;:.!?]+")
+#: complaints that one cannot see / that it is too bright, and what they ask of a device said so
+_CANNOT_SEE = re.compile(rf"^{_OPENING}(?:i can't see|i cannot see|i can not see|it's {_DEGREE}dark\b)")
+_TOO_BRIGHT = re.compile(rf"^{_OPENING}(?:it's|its|it is)\s+{_DEGREE}(?:bright|glary|sunny)\b")
+_SAID_TO_BE = re.compile(
+    r"^(?P<device>(?:the|my|our)\s+[a-z' ]+?)\s+(?:is|are|'s)\s+(?:still\s+)?"
+    r"(?P<state>off|on|open|closed|shut)$"
+)
+_ASKED = {
+    "dark": {"off": "turn on", "closed": "open", "shut": "open"},
+    "bright": {"on": "turn off", "open": "close"},
+}
 
 
 def dark_read(text: str) -> str:
     """``text`` read as the request a complaint of a dark room makes ("it's dark in the lounge": "turn on the
-    lights in the lounge"), else ``text`` unchanged."""
+    lights in the lounge"), or of darkness or glare beside a device said to be in a state, else ``text``
+    unchanged."""
     if _INNER_BREAK.search(text):
-        return text
+        return _said_beside(text)
     match = _DARK.match(normalize(text))
     return f"turn on the lights in {match.group('place')}" if match else text
+
+
+def _said_beside(text: str) -> str:
+    """A complaint and a device said to be off (or on): the device's other state asked for; else ``text``."""
+    sentences = [normalize(s) for s in _SENTENCES.split(text) if normalize(s)]
+    if len(sentences) != 2:
+        return text
+    complaint, said = sentences
+    kind = "dark" if _CANNOT_SEE.match(complaint) else "bright" if _TOO_BRIGHT.match(complaint) else None
+    match = _SAID_TO_BE.match(said) if kind else None
+    verb = _ASKED[kind].get(match.group("state")) if kind and match else None
+    return f"{verb} {match.group('device')}" if verb and match else text

@@ -33,7 +33,7 @@ import copy
 from collections.abc import Sequence
 
 from core.errors import LanguageError
-from knic.language.chains import AmbiguityError, Reading, chain, referent
+from knic.language.chains import AmbiguityError, Reading, chain, referent, settled
 from knic.language.chunks import Chunk, Chunker
 from knic.language.clauses import Arg, Clause, split_clauses
 from knic.language.commands import CommandLanguage, command_language
@@ -96,6 +96,7 @@ class Reader:
             lambda chunk: any(self.is_a(t, "item") for t in chunk.terms),
             self.chunker.bare_verb,
             context,
+            lambda chunk: any(self.is_a(t, "person") for t in chunk.terms),
         )
 
     # ------------------------------------------------------------------ reading
@@ -255,6 +256,7 @@ class Reader:
         if not frames:  # every clause was talk
             raise skipped or LanguageError(f"no action in '{' '.join(tokens)}'")
         reading = chain(self._placed(frames, located), self.vocabulary, ask_where=ask_where, held=held)
+        reading = settled(reading, self.vocabulary)  # "open the blinds and set them to 40": at 40
         return for_asker(reading, asker)  # "tracy asks the robot to fetch her glasses": for tracy
 
     def _kind_of(self, chunk: Chunk) -> str:

@@ -8,9 +8,11 @@ common English synonyms. People in the house also say less:
 * a room by the kind of room one of its words names: "kitchen_diner" is "the kitchen", "bedroom_two" and
   "master_bedroom" are each "the bedroom" (two such rooms: the reader asks which);
 * a thing whose one-word name ends in a common noun by that noun: "newspaper" is "the paper", "armchair" "the
-  chair", "hairbrush" "the brush".
+  chair", "hairbrush" "the brush";
+* a container of a drink or food by what it holds: "water_bottle" is "some water", "milk_carton" "the milk".
 
-The kinds of room and the nouns are general English, kept in ``synonyms.yaml`` (``room_words``, ``heads``). A
+The kinds of room, the nouns and the containers are general English, kept in ``synonyms.yaml``
+(``room_words``, ``heads``, ``containers``). A
 short name that is already a name of the world is not given (the world's own names win: where "hall" names
 the hallway, an "entrance_hall" is not also "the hall"); one short name of several things names them all.
 """
@@ -59,20 +61,25 @@ N = TypeVar("N", bound=Named)
 
 
 @lru_cache(maxsize=1)
-def _word_lists() -> tuple[frozenset[str], tuple[str, ...]]:
-    """``room_words`` and ``heads`` of ``synonyms.yaml`` (read once).
+def _word_lists() -> tuple[frozenset[str], tuple[str, ...], frozenset[str]]:
+    """``room_words``, ``heads`` and ``containers`` of ``synonyms.yaml`` (read once).
 
     Raises:
-        LanguageError: either is not a list of single words.
+        LanguageError: one is not a list of single words.
     """
     data = read_yaml(_FILE, "synonyms", LanguageError) or {}
     lists = []
-    for key in ("room_words", "heads"):
+    for key in ("room_words", "heads", "containers"):
         raw = data.get(key, []) if isinstance(data, dict) else []
         if not isinstance(raw, list) or not all(isinstance(w, str) and len(w.split()) == 1 for w in raw):
             raise LanguageError(f"{_FILE}: '{key}' is a list of single words")
         lists.append([w.lower() for w in raw])
-    return frozenset(lists[0]), tuple(sorted(lists[1], key=len, reverse=True))
+    return frozenset(lists[0]), tuple(sorted(lists[1], key=len, reverse=True)), frozenset(lists[2])
+
+
+def _content(words: list[str], containers: frozenset[str]) -> list[str]:
+    """What a container named by it holds ("water bottle" -> "water")."""
+    return [" ".join(words[:-1])] if len(words) >= 2 and words[-1] in containers else []
 
 
 def _ordinal(words: list[str]) -> list[str]:
@@ -108,7 +115,7 @@ def short_names(
         exclude: types that get no short names (people, levels).
     """
     terms = list(terms)
-    room_words, heads = _word_lists()
+    room_words, heads, containers = _word_lists()
     taken = {t.phrase for t in terms}
     out: list[tuple[str, N]] = []
     seen: set[tuple[str, str]] = set()
@@ -119,6 +126,8 @@ def short_names(
         phrases = _ordinal(words) + _head(words, heads)
         if is_room(term.type):
             phrases += _room_kinds(words, room_words)
+        else:
+            phrases += _content(words, containers)
         for phrase in phrases:
             key = (phrase, term.phrase)
             if phrase not in taken and key not in seen:

@@ -167,7 +167,18 @@ class Lexicon:
             )
         return cls(names=names, groups=tuple(groups))
 
+    def with_entrances(self, rooms: Iterable[str]) -> Lexicon:
+        """This lexicon with each of ``rooms`` also called "the front door" (the rooms a door to the outside
+        opens into, as a world file says: "go to the front door", "the table by the front door"); a room
+        keeps its own names, or its name spoken."""
+        names = dict(self.names)
+        for room in rooms:
+            names[room] = (*(names.get(room) or (normalize(room),)), FRONT_DOOR)
+        return Lexicon(names=names, groups=self.groups)
 
+
+#: what the room a door to the outside opens into is also called (:meth:`Lexicon.with_entrances`)
+FRONT_DOOR = "front door"
 SYNONYMS_FILE = Path(__file__).with_name("synonyms.yaml")
 
 
@@ -207,8 +218,15 @@ def _synonym_variants(terms: Sequence[Term], synonyms: Sequence[Sequence[str]]) 
     """The names synonyms give: each whole-word synonym in a name (the longest at each place) replaced by the
     others of its set, where that makes no name the world already has. A broader word
     (:func:`english_broader`) ending a longer name is left: "tablet computer" gives no "tablet laptop", which
-    would make "the laptop" name the tablet."""
+    would make "the laptop" name the tablet. A longer name's last word is not replaced by one that ends a name
+    of another thing of the world: where the office has "blinds" and the bedroom "curtains", the world tells
+    them apart by that word, so the office blinds are no "office curtains" and "the curtains" are the
+    bedroom's."""
     taken = {t.phrase for t in terms}
+    heads: dict[str, set[str]] = {}  # the last word of a longer name -> the things named so
+    for t in terms:
+        if len(t.phrase.split()) > 1:
+            heads.setdefault(t.phrase.split()[-1], set()).add(t.symbol)
     sets = [[s.split() for s in sorted(group, key=lambda p: -len(p.split()))] for group in synonyms]
     broader = english_broader()
     out: list[Term] = []
@@ -221,9 +239,11 @@ def _synonym_variants(terms: Sequence[Term], synonyms: Sequence[Sequence[str]]) 
                 said = next((m for m in members if words[i : i + len(m)] == m), None)
                 if said is None or (i > 0 and i + len(said) == len(words) and " ".join(said) in broader):
                     continue
+                last = i > 0 and i + len(said) == len(words)
                 for other in members:
                     phrase = " ".join([*words[:i], *other, *words[i + len(said) :]])
-                    if other != said and phrase not in taken:
+                    told_apart = last and bool(heads.get(other[-1], set()) - {term.symbol})
+                    if other != said and phrase not in taken and not told_apart:
                         taken.add(phrase)
                         out.append(Term(phrase, term.symbol, term.type, term.members))
     return out

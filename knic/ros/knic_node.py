@@ -418,10 +418,12 @@ def _parse_fact(text: Any) -> Fact:
 
 def _intake(kb: KnowledgeBase, robot: Robot, world: World, confirm: bool) -> GoalIntake:
     from knic.intake import GoalIntake
-    from knic.language.vocabulary import Vocabulary
+    from knic.language.vocabulary import Lexicon, Vocabulary
     from knic.system.names import world_lexicon
 
-    vocabulary = Vocabulary.from_knowledge_base(kb, world_lexicon(world.source), world.device_rooms())
+    chosen = world_lexicon(world.source)
+    names = (Lexicon.load(chosen) if chosen is not None else Lexicon()).with_entrances(world.entrances())
+    vocabulary = Vocabulary.from_knowledge_base(kb, names, world.device_rooms())
     return GoalIntake(kb, vocabulary, say=robot.say, confirm=confirm)
 
 

@@ -2,7 +2,8 @@
 
 A world's own ``lexicon.yaml`` sits beside its file; a world without one is read with the ERL apartment's
 (its names for symbols the world lacks are left out, and its groups by type, "the lights", fit any world).
-Devices are known to be in the room the world file puts them in (the domain has no fact for it).
+Devices are known to be in the room the world file puts them in (the domain has no fact for it), and the room
+a door to the outside opens into is also "the front door".
 """
 
 from __future__ import annotations
@@ -10,7 +11,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from knic.language.vocabulary import Vocabulary
+from knic.language.vocabulary import Lexicon, Vocabulary
 from knic.language.world import LEXICON_NAME, WORLDS
 
 if TYPE_CHECKING:
@@ -32,4 +33,7 @@ def world_lexicon(world_file: str | Path | None) -> Path | None:
 def run_vocabulary(system: KnicSystem, lexicon: str | Path | None = None) -> Vocabulary:
     """The vocabulary of a running system: ``lexicon``, else its world's (:func:`world_lexicon`)."""
     chosen = lexicon if lexicon is not None else world_lexicon(system.world.source)
-    return Vocabulary.from_knowledge_base(system.kb, chosen, system.world.device_rooms())
+    names = (Lexicon.load(chosen) if chosen is not None else Lexicon()).with_entrances(
+        system.world.entrances()
+    )
+    return Vocabulary.from_knowledge_base(system.kb, names, system.world.device_rooms())

@@ -244,14 +244,16 @@ def lexicon_of(world: World) -> Path | None:
 
 def world_vocabulary(world: World, lexicon: str | Path | None = None) -> Vocabulary:
     """The spoken vocabulary of ``world``: its symbols in the ERL domain plus its lexicon."""
-    from knic.language.vocabulary import Vocabulary
+    from knic.language.vocabulary import Lexicon, Vocabulary
     from knic.seed import seed_kb_from_world
     from knic.system.config import DOMAIN
     from knowledge_base import KnowledgeBase
 
     kb = KnowledgeBase.from_pddl(DOMAIN)
     seed_kb_from_world(kb, world)
-    return Vocabulary.from_knowledge_base(kb, lexicon or lexicon_of(world))
+    chosen = lexicon or lexicon_of(world)
+    names = (Lexicon.load(chosen) if chosen is not None else Lexicon()).with_entrances(world.entrances())
+    return Vocabulary.from_knowledge_base(kb, names)
 
 
 @lru_cache(maxsize=1)

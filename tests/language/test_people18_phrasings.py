@@ -1,0 +1,196 @@
+"""Phrasings from the people18 development set (a two-storey townhouse the reader was never tuned on,
+``tests/fixtures/language/people18/townhouse.yaml``) the reader first got wrong:
+
+* a world that calls one thing "blinds" and another "curtains" tells them apart by that word: neither gets the
+  other's word as a synonym, and the type's own word ("the blinds") names only the things called so;
+* "it" or "them" may be a device operated earlier in the command, and a device set again later ends as the
+  last setting says ("open the blinds and set them to 40");
+* general English names: "guest room" / "spare room" for a guest bedroom, "laundry room" for a utility room,
+  "book" for a novel;
+* a complaint of a dark place "on" it ("it's really dark on the landing"), and a complaint that one cannot see
+  (or of glare) beside a device said to be off (or on): that device's other state;
+* a container of a drink said by what it holds ("some water" for the water bottle);
+* "bring her blanket" after a person is named ("look for nadia and bring her blanket"): to her, hers;
+* the room a door to the outside opens into is "the front door" ("go to the front door", "the table by the
+  front door"), where the world file says so.
+"""
+
+from __future__ import annotations
+
+from typing import Any
+
+import pytest
+
+from knic.language import understand
+from knic.language.vocabulary import Vocabulary
+
+from .conftest import assert_asked, frames_read
+
+TOWNHOUSE = "tests/fixtures/language/people18/townhouse.yaml"
+
+
+@pytest.fixture(scope="module")
+def townhouse() -> Vocabulary:
+    """The townhouse's vocabulary, as the language bench and ``knic goal --world`` read it."""
+    from pathlib import Path
+
+    from knic.cli.goal import world_vocabulary
+    from knic.language.world import DEFAULT_DOMAIN
+
+    path = Path(__file__).resolve().parents[2] / TOWNHOUSE
+    vocabulary: Any = world_vocabulary(str(path), DEFAULT_DOMAIN, None)[0]
+    return vocabulary
+
+
+@pytest.mark.parametrize(
+    ("text", "device", "state"),
+    [
+        ("open the blinds", "office_blinds", "open"),
+        ("curtains open.", "bedroom_curtains", "open"),
+        ("close the curtains", "bedroom_curtains", "closed"),
+    ],
+)
+def test_blinds_and_curtains_told_apart(townhouse: Vocabulary, text: str, device: str, state: str) -> None:
+    assert frames_read(townhouse, text, "nadia") == [{"frame": "OPERATING", "device": device, "state": state}]
+
+
+def test_curtains_are_still_the_blinds_where_the_world_has_only_blinds(vocabulary: Vocabulary) -> None:
+    assert frames_read(vocabulary, "close the curtains") == [
+        {"frame": "OPERATING", "device": "bedroom_blinds", "state": "closed"}
+    ]
+
+
+@pytest.mark.parametrize(
+    ("text", "device", "state"),
+    [
+        ("open the blinds and set them to 40", "office_blinds", "40"),
+        ("turn on the floor lamp and dim it to 30 percent", "floor_lamp", "30"),
+    ],
+)
+def test_a_device_set_again_ends_as_last_said(
+    townhouse: Vocabulary, text: str, device: str, state: str
+) -> None:
+    assert frames_read(townhouse, text, "nadia") == [{"frame": "OPERATING", "device": device, "state": state}]
+
+
+def test_a_device_set_again_in_the_erl_apartment(vocabulary: Vocabulary) -> None:
+    result = understand("open the blinds and then set them to 75 percent", vocabulary)
+    assert [f.to_dict() for f in result.frames] == [
+        {"frame": "OPERATING", "device": "bedroom_blinds", "state": "75"}
+    ]
+    assert [str(g) for g in result.goals] == ["(device_level bedroom_blinds l75)"]
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        ("head to the spare room", [{"frame": "MOTION", "goal": "guest_bedroom"}]),
+        (
+            "take the laptop from the office to the guest room",
+            [{"frame": "BRINGING", "theme": "laptop", "source": "home_office", "goal": "guest_bedroom"}],
+        ),
+        ("go to the laundry room", [{"frame": "MOTION", "goal": "utility_room"}]),
+        ("bring me my book", [{"frame": "BRINGING", "theme": "novel", "beneficiary": "me"}]),
+    ],
+)
+def test_general_english_names(townhouse: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
+    assert frames_read(townhouse, text, "nadia") == frames
+
+
+def test_two_bedrooms_still_asked_about(townhouse: Vocabulary) -> None:
+    assert_asked(townhouse, "go to the bedroom", "bedroom", "nadia")
+
+
+@pytest.mark.parametrize(
+    ("text", "device", "state"),
+    [
+        ("it's really dark on the landing", "landing_light", "on"),
+        ("i can't see a thing in here, the desk lamp is off", "desk_lamp", "on"),
+        ("it's far too bright in here, the blinds are open", "office_blinds", "closed"),
+    ],
+)
+def test_complaints_ask_for_the_other_state(
+    townhouse: Vocabulary, text: str, device: str, state: str
+) -> None:
+    assert frames_read(townhouse, text, "nadia") == [{"frame": "OPERATING", "device": device, "state": state}]
+
+
+def test_a_device_said_off_alone_is_no_complaint(townhouse: Vocabulary) -> None:
+    assert frames_read(townhouse, "the desk lamp is off", "nadia") == [
+        {"frame": "OPERATING", "device": "desk_lamp", "state": "off"}
+    ]
+
+
+@pytest.mark.parametrize("text", ["bring me some water", "could i have a glass of water"])
+def test_a_drink_names_its_container(townhouse: Vocabulary, text: str) -> None:
+    assert frames_read(townhouse, text, "nadia") == [
+        {"frame": "BRINGING", "theme": "water_bottle", "beneficiary": "me"}
+    ]
+
+
+def test_a_device_put_in_opposite_states_is_asked_about(vocabulary: Vocabulary) -> None:
+    assert_asked(vocabulary, "switch on the left light and then switch it off", "which should it be")
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        (
+            "look for nadia and bring her blanket",
+            [
+                {"frame": "SEARCHING", "theme": "nadia"},
+                {"frame": "BRINGING", "theme": "spare_blanket", "beneficiary": "nadia"},
+            ],
+        ),
+        (
+            "find nadia and bring her slippers from the shoe rack",
+            [
+                {"frame": "SEARCHING", "theme": "nadia"},
+                {"frame": "BRINGING", "theme": "slippers", "source": "shoe_rack", "beneficiary": "nadia"},
+            ],
+        ),
+        ("bring her slippers", [{"frame": "BRINGING", "theme": "slippers", "beneficiary": "me"}]),
+        (
+            "find nadia and bring her slippers to the kitchen",
+            [
+                {"frame": "SEARCHING", "theme": "nadia"},
+                {"frame": "BRINGING", "theme": "slippers", "goal": "kitchen"},
+            ],
+        ),
+    ],
+)
+def test_bring_her_thing_after_she_is_named(
+    townhouse: Vocabulary, text: str, frames: list[dict[str, str]]
+) -> None:
+    assert frames_read(townhouse, text, "tom") == frames
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        ("go to the front door", [{"frame": "MOTION", "goal": "hallway"}]),
+        (
+            "grab the letters off the table by the front door",
+            [{"frame": "TAKING", "theme": "letters", "source": "console_table"}],
+        ),
+    ],
+)
+def test_the_front_door_is_the_room_it_opens_into(
+    townhouse: Vocabulary, text: str, frames: list[dict[str, str]]
+) -> None:
+    assert frames_read(townhouse, text, "nadia") == frames
+
+
+def test_the_front_door_in_the_simulators_test_flat() -> None:
+    from knic.cli.goal import world_vocabulary
+    from knic.language.world import DEFAULT_DOMAIN
+
+    flat: Any = world_vocabulary("test_flat", DEFAULT_DOMAIN, None)[0]
+    assert frames_read(flat, "go to the front door", "olga") == [{"frame": "MOTION", "goal": "foyer"}]
+
+
+def test_world_entrances() -> None:
+    from worlds.loader import load_world
+
+    assert load_world("erl_home").entrances() == ["entrance_hall"]
+    assert load_world("test_bungalow").entrances() == ["hall"]
