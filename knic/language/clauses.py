@@ -15,6 +15,7 @@ from collections.abc import Callable
 from dataclasses import dataclass, field
 
 from knic.language.chunks import Chunk
+from knic.language.shortnames import containers
 
 _NOUNS = ("entity", "me", "pronoun", "everything", "there")
 #: words that end a noun phrase the world has no name for ("the front door is open")
@@ -72,6 +73,51 @@ class _Filling:
     after_prep: bool = False  # the chunk just before was a preposition
     article: str = ""  # the determiner just said, before a noun phrase
     indefinite: bool = False  # the latest noun phrase was said with "a" or "an" ("a cup")
+    thing: bool = False  # the chunk just before named an object after a determiner ("the candle")
+
+
+#: words said right after a thing's name that are no noun of a longer name ("bring me the cup now")
+_AFTER_A_THING = frozenset(
+    {"now", "again", "too", "also", "first", "here", "there", "back", "soon", "instead", "already", "through"}
+    | {"somewhere", "anywhere", "everywhere", "away", "over", "then", "today", "tonight", "you", "please"}
+    | {"put", "left", "kept", "sent", "set", "done", "made", "got", "held", "laid", "sat", "stood", "found"}
+    | {"lost", "fell", "hung", "stuck"}
+)
+#: endings of words that are no noun (participles, adverbs: "the lemon located on", "lying by", "quickly",
+#: "the tablet brought to")
+_NOT_NOUN_ENDINGS = ("ed", "en", "ing", "ly", "ght")
+
+
+def _compound(clause: Clause, chunk: Chunk, nxt: Chunk | None, names_item: Callable[[Chunk], bool]) -> bool:
+    """Whether the chunk after a thing's name said with a determiner, in an action, is the head of a longer
+    name: an unknown word ending the noun phrase makes a name the world lacks ("bring me a candle holder"
+    where the world has a candle: 'candle holder' is missing); another thing's name is that thing, the first
+    only says which ("the apple juice" where the world has an apple and juice: the juice). Either way the
+    first thing is not an argument. A container said after what it holds is that ("the water bottle": the
+    water)."""
+    if clause.verb is None or not clause.args or clause.args[-1].chunk.kind != "entity":
+        return False  # "the teddy fell out of the crib": said of the thing, no name
+    word = chunk.text
+    if word in containers() or any(t.phrase.split()[-1] in containers() for t in chunk.terms):
+        return False
+    if chunk.kind == "entity" and names_item(chunk):
+        before = clause.args.pop()
+        add_to_clause(clause, chunk, nxt, None, before.joined)
+        clause.args[-1].prep, clause.args[-1].prep_text = before.prep, before.prep_text
+        return True
+    ended = nxt is None or nxt.kind in ("join", "prep", "verb")
+    drawn_out = any(a == b == c for a, b, c in zip(word, word[1:], word[2:], strict=False))  # "pleeease"
+    noun = (
+        word.isalpha()
+        and len(word) > 2
+        and not word.endswith(_NOT_NOUN_ENDINGS)
+        and word not in _AFTER_A_THING | set(_LINKING)
+        and not drawn_out
+    )
+    if chunk.kind != "unknown" or not ended or not noun:
+        return False
+    clause.missing.append(f"{clause.args.pop().chunk.text} {word}")
+    return True
 
 
 def _purpose(clause: Clause, chunk: Chunk, nxt: Chunk | None, filling: _Filling) -> bool:
@@ -274,6 +320,7 @@ def _fill(
     names_item: Callable[[Chunk], bool] = lambda chunk: False,
 ) -> None:
     """Add one chunk (not a verb) to a clause, updating what is pending for the next chunk."""
+    thing, filling.thing = filling.thing, False
     if (
         chunk.kind == "partitive"
         and clause.args
@@ -287,6 +334,7 @@ def _fill(
         # "a cup of tea": the tea, which the world may lack ("the remote of tv" stays the remote)
         filling.expecting = True
         return
+    said_with = filling.article
     if chunk.kind == "det":
         filling.article = chunk.text
     elif chunk.kind in _NOUNS:
@@ -330,6 +378,9 @@ def _fill(
         clause.unknown.append(chunk.text)  # talk: refused only if the action names nothing else
         filling.prep, filling.expecting, filling.after_prep = None, False, False
         return
+    if thing and _compound(clause, chunk, nxt, names_item):
+        return
+    filling.thing = chunk.kind == "entity" and said_with != "" and names_item(chunk)
     filling.after_prep = chunk.kind == "prep"
     quantity = filling.quantity.role if filling.quantity is not None and chunk.kind == "entity" else None
     if quantity is None and chunk.kind == "entity" and chunk.role == "plural":

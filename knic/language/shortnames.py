@@ -77,6 +77,12 @@ def _word_lists() -> tuple[frozenset[str], tuple[str, ...], frozenset[str]]:
     return frozenset(lists[0]), tuple(sorted(lists[1], key=len, reverse=True)), frozenset(lists[2])
 
 
+def containers() -> frozenset[str]:
+    """The container words of ``synonyms.yaml`` ("bottle", "carton"): a name ending in one is what it
+    holds."""
+    return _word_lists()[2]
+
+
 def _content(words: list[str], containers: frozenset[str]) -> list[str]:
     """What a container named by it holds ("water bottle" -> "water")."""
     return [" ".join(words[:-1])] if len(words) >= 2 and words[-1] in containers else []

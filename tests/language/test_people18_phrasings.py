@@ -12,7 +12,10 @@
 * a container of a drink said by what it holds ("some water" for the water bottle);
 * "bring her blanket" after a person is named ("look for nadia and bring her blanket"): to her, hers;
 * the room a door to the outside opens into is "the front door" ("go to the front door", "the table by the
-  front door"), where the world file says so.
+  front door"), where the world file says so;
+* a thing's name followed, in an action, by a noun the world lacks is a longer name it lacks ("bring me a
+  candle holder": 'candle holder', not the candle), and by another thing's name is that thing ("the apple
+  juice": the juice); a container after what it holds is still what it holds ("the water bottle": water).
 """
 
 from __future__ import annotations
@@ -194,3 +197,28 @@ def test_world_entrances() -> None:
 
     assert load_world("erl_home").entrances() == ["entrance_hall"]
     assert load_world("test_bungalow").entrances() == ["hall"]
+
+
+@pytest.mark.parametrize(
+    ("text", "word"),
+    [("bring me a candle holder", "candle holder"), ("put the candle holder on the table", "candle holder")],
+)
+def test_a_longer_name_the_world_lacks_is_refused(vocabulary: Vocabulary, text: str, word: str) -> None:
+    result = understand(text, vocabulary)
+    assert not result.accepted
+    assert f"'{word}'" in result.reason, result.reason
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        ("bring me some apple juice", [{"frame": "BRINGING", "theme": "juice", "beneficiary": "me"}]),
+        ("bring me the water bottle", [{"frame": "BRINGING", "theme": "water", "beneficiary": "me"}]),
+        ("bring me the candle now", [{"frame": "BRINGING", "theme": "candle", "beneficiary": "me"}]),
+        ("pick up the lemon lying on the sofa", [{"frame": "TAKING", "theme": "lemon", "source": "sofa"}]),
+    ],
+)
+def test_words_after_a_name_that_make_no_longer_name(
+    vocabulary: Vocabulary, text: str, frames: list[dict[str, str]]
+) -> None:
+    assert frames_read(vocabulary, text) == frames
