@@ -31,6 +31,7 @@ from collections.abc import Sequence
 
 from knic.language.chains import AmbiguityError
 from knic.language.frames import CommandFrame
+from knic.language.shortnames import containers
 from knic.language.vocabulary import Term, Vocabulary
 
 #: what says a request is said again ("i said the bedroom", "like i said, the hallway light")
@@ -248,6 +249,13 @@ def _left_out(
     return set(term.members) & set(kind)
 
 
+def _heads(phrase: str) -> set[str]:
+    """The words that say what kind of thing a name names: its last ("orange juice": juice; a "tea towel" is
+    no tea), and before a container what it holds ("water bottle": water)."""
+    words = phrase.split()
+    return {words[-1], *(words[-2:-1] if words[-1] in containers() else ())}
+
+
 def _kind(words: list[str], vocabulary: Vocabulary) -> list[str]:
     """ "something to drink", "a cold drink": the one thing of the world of that kind."""
     for i, word in enumerate(words):
@@ -273,7 +281,7 @@ def _kind(words: list[str], vocabulary: Vocabulary) -> list[str]:
             for t in vocabulary.terms
             if not t.is_group
             and vocabulary.is_subtype(t.type, "item")
-            and set(t.phrase.split()) & _KINDS[kind]
+            and _heads(t.phrase) & _KINDS[kind]
         }
         if not things:
             return words

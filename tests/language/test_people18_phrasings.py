@@ -15,7 +15,9 @@
   front door"), where the world file says so;
 * a thing's name followed, in an action, by a noun the world lacks is a longer name it lacks ("bring me a
   candle holder": 'candle holder', not the candle), and by another thing's name is that thing ("the apple
-  juice": the juice); a container after what it holds is still what it holds ("the water bottle": water).
+  juice": the juice); a container after what it holds is still what it holds ("the water bottle": water);
+* a kind said by its use ("a drink") is told by the last word of a name, or what its container holds: a "tea
+  towel" is no drink, a "water bottle" is.
 """
 
 from __future__ import annotations
@@ -222,3 +224,10 @@ def test_words_after_a_name_that_make_no_longer_name(
     vocabulary: Vocabulary, text: str, frames: list[dict[str, str]]
 ) -> None:
     assert frames_read(vocabulary, text) == frames
+
+
+def test_a_kind_is_told_by_the_head_of_a_name(townhouse: Vocabulary) -> None:
+    result = understand("fetch me a drink", townhouse, speaker="nadia")
+    assert not result.accepted
+    assert "the orange juice or the water bottle" in result.question
+    assert "towel" not in result.question
