@@ -279,9 +279,7 @@ def _kind(words: list[str], vocabulary: Vocabulary) -> list[str]:
         things = {
             t.symbol: t
             for t in vocabulary.terms
-            if not t.is_group
-            and vocabulary.is_subtype(t.type, "item")
-            and _heads(t.phrase) & _KINDS[kind]
+            if not t.is_group and vocabulary.is_subtype(t.type, "item") and _heads(t.phrase) & _KINDS[kind]
         }
         if not things:
             return words
