@@ -11,6 +11,7 @@ taken as address. A device named right after another device's state or level sta
 
 from __future__ import annotations
 
+import itertools
 from collections.abc import Callable
 from dataclasses import dataclass, field
 
@@ -52,6 +53,7 @@ class Clause:
     unsaid_text: str = ""  # the words that said so ("away")
     mine: bool = False  # "my" said: the speaker's own thing ("grab my glasses": for me)
     implicit: bool = False  # read with an unsaid object taken from before (the reader's second try)
+    again: bool = False  # the verb before said again for another device ("the lamp off and the light too")
 
     def names_nothing(self) -> bool:
         """No noun phrase, state, level or missing name: only the verb and words not understood."""
@@ -176,6 +178,23 @@ def split_clauses(
     context: list[Arg] | None = None,
     names_person: Callable[[Chunk], bool] = lambda chunk: False,
 ) -> list[Clause]:
+    """Split chunks into clauses at verbs (see :func:`_split`); a device said after another's state with the
+    same verb and no state of its own ("turn the lamp off and the landing light too") is put in that state."""
+    clauses = _split(chunks, names_device, names_item, bare_verb, context, names_person)
+    for before, clause in itertools.pairwise(clauses):
+        if clause.again and not (clause.states or clause.levels) and clause.args:
+            clause.states, clause.levels = list(before.states), list(before.levels)
+    return clauses
+
+
+def _split(
+    chunks: list[Chunk],
+    names_device: Callable[[Chunk], bool],
+    names_item: Callable[[Chunk], bool] = lambda chunk: False,
+    bare_verb: Chunk | None = None,
+    context: list[Arg] | None = None,
+    names_person: Callable[[Chunk], bool] = lambda chunk: False,
+) -> list[Clause]:
     """Split chunks into clauses at verbs.
 
     Args:
@@ -217,7 +236,7 @@ def split_clauses(
             and nxt.kind in ("det", "entity")
         ):
             # "switch the hallway light on and the bedroom lights off": the same verb again
-            current = Clause(current.verb)
+            current = Clause(current.verb, again=True)
             clauses.append(current)
             filling, after_state = _Filling(), False
             continue
@@ -236,7 +255,7 @@ def split_clauses(
             if current is preamble:
                 clauses.append(preamble)
                 preamble = Clause(None)
-            current = Clause(current.verb)
+            current = Clause(current.verb, again=True)
             clauses.append(current)
             filling, after_state = _Filling(), False
             if chunk.kind == "join":

@@ -336,8 +336,7 @@ class Reader:
 
     @staticmethod
     def _placed(frames: list[CommandFrame], located: dict[str, str]) -> list[CommandFrame]:
-        """Give each action on a thing the command said is somewhere that place as its source or ground,
-        where the action says none."""
+        """Give each action on a thing said to be somewhere that place as its source or ground, if none."""
         out = []
         for frame in frames:
             role = "ground" if frame.kind == "SEARCHING" else "source"
@@ -437,7 +436,8 @@ class Reader:
                 or head.chunk.kind != "entity"
             ):
                 continue
-            if place.prep is None and not place.joined:
+            swapped = place.prep is None and not place.joined
+            if swapped:
                 head, place = place, head  # "kitchen light": the room said first
                 if not any(self.is_a(t, "room") for t in place.chunk.terms):
                     continue
@@ -456,6 +456,8 @@ class Reader:
                 where = self.vocabulary.phrase_of(rooms[0].symbol)
                 raise LanguageError(f"there is no {head.chunk.text} in the {where} in this world")
             head.chunk = Chunk("entity", head.chunk.text, kept, role=head.chunk.role)
+            if swapped:  # "to the hallway table": the table, where the preposition before the room says
+                head.prep, head.prep_text = place.prep, place.prep_text
             if grouped:  # "the lights in the bedroom": those of the group that are there
                 head.quantity = head.quantity or "all"
             place.consumed = True

@@ -17,7 +17,11 @@
   candle holder": 'candle holder', not the candle), and by another thing's name is that thing ("the apple
   juice": the juice); a container after what it holds is still what it holds ("the water bottle": water);
 * a kind said by its use ("a drink") is told by the last word of a name, or what its container holds: a "tea
-  towel" is no drink, a "water bottle" is.
+  towel" is no drink, a "water bottle" is;
+* a room said before a piece of furniture after "to" ("take the letters to the hallway table"): the furniture
+  there is where the thing goes;
+* a device said after another's state with no state of its own ("turn the desk lamp off and the landing
+  light too"): the same state.
 """
 
 from __future__ import annotations
@@ -231,3 +235,39 @@ def test_a_kind_is_told_by_the_head_of_a_name(townhouse: Vocabulary) -> None:
     assert not result.accepted
     assert "the orange juice or the water bottle" in result.question
     assert "towel" not in result.question
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        (
+            "take the letters to the hallway table",
+            [{"frame": "BRINGING", "theme": "letters", "goal": "console_table"}],
+        ),
+        (
+            "turn the desk lamp off and the landing light too",
+            [
+                {"frame": "OPERATING", "device": "desk_lamp", "state": "off"},
+                {"frame": "OPERATING", "device": "landing_light", "state": "off"},
+            ],
+        ),
+        (
+            "desk lamp on please and the bedside lamp too",
+            [
+                {"frame": "OPERATING", "device": "desk_lamp", "state": "on"},
+                {"frame": "OPERATING", "device": "bedside_lamp", "state": "on"},
+            ],
+        ),
+        (
+            "switch the hallway light on and the landing light off",
+            [
+                {"frame": "OPERATING", "device": "hallway_light", "state": "on"},
+                {"frame": "OPERATING", "device": "landing_light", "state": "off"},
+            ],
+        ),
+    ],
+)
+def test_what_a_later_phrase_takes_from_before(
+    townhouse: Vocabulary, text: str, frames: list[dict[str, str]]
+) -> None:
+    assert frames_read(townhouse, text, "nadia") == frames
