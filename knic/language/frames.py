@@ -21,6 +21,22 @@ from core.errors import LanguageError
 FRAME_KINDS = ("BRINGING", "TAKING", "SEARCHING", "MOTION", "PLACING", "ACCOMPANYING", "OPERATING")
 ROLES = ("theme", "source", "goal", "ground", "beneficiary", "device", "state")
 SPEAKER = "me"
+#: what a thing of a type is called in a reply ("'bin' is not an object"), and several of them
+KIND_NAMES = {
+    "item": "an object",
+    "person": "a person",
+    "room": "a room",
+    "furniture": "a piece of furniture",
+    "device": "a device",
+    "light": "a light",
+}
+KIND_PLURALS = {
+    "item": "objects",
+    "person": "people",
+    "room": "rooms",
+    "furniture": "furniture",
+    "device": "devices",
+}
 
 
 @dataclass(frozen=True)

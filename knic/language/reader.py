@@ -37,7 +37,7 @@ from knic.language.chains import AmbiguityError, Reading, chain, referent, settl
 from knic.language.chunks import Chunk, Chunker
 from knic.language.clauses import Arg, Clause, split_clauses
 from knic.language.commands import CommandLanguage, command_language
-from knic.language.frames import SPEAKER, CommandFrame
+from knic.language.frames import KIND_NAMES, KIND_PLURALS, SPEAKER, CommandFrame
 from knic.language.household import ones_named, other_one, said_around, words_tidied
 from knic.language.learners import learners_read
 from knic.language.roles import INTERPRETERS
@@ -389,13 +389,17 @@ class Reader:
         if chunk.kind == "pronoun":
             return referent(chunk, categories, groups, self.vocabulary)
         if chunk.kind == "everything":  # "bring me everything": which things is not said
-            things = " or ".join(_PLURALS.get(c, c) for c in categories)
+            things = " or ".join(KIND_PLURALS.get(c, c) for c in categories)
             raise AmbiguityError(f"which {things} do you mean by '{chunk.text}'? Name them, please")
         terms = [t for t in chunk.terms if any(self.is_a(t, c) for c in categories)]
         if not terms:
-            kinds = " or ".join(_NAMES.get(c, c) for c in categories)
+            kinds = " or ".join(KIND_NAMES.get(c, c) for c in categories)
             raise LanguageError(f"'{chunk.text}' is not {kinds}")
         symbols = list(dict.fromkeys(t.symbol for t in terms))
+        if arg.modifiers and (arg.quantity == "all" or any(t.is_group for t in terms)):  # "the garden lights"
+            raise LanguageError(
+                f"there is no '{' '.join((*arg.modifiers, chunk.text))}' here: this world has none"
+            )
         if arg.quantity == "all" and not ({"room", "furniture"} & set(categories)):
             group = self.vocabulary.group_of(symbols) if len(symbols) > 1 else None
             return [group] if group is not None else symbols
@@ -422,8 +426,8 @@ class Reader:
         raise AmbiguityError(f"which two {chunk.text} do you mean: {self._listed(options, 'and')}?")
 
     def _listed(self, symbols: Sequence[str], last: str = "or") -> str:
-        options = [self.vocabulary.phrase_of(s) for s in symbols]
-        return ", ".join(f"the {o}" for o in options[:-1]) + f" {last} the {options[-1]}"
+        options = [f"the {self.vocabulary.phrase_of(s)}" for s in symbols]
+        return ", ".join(options[:-1]) + f" {last} {options[-1]}"
 
     def narrow(self, args: list[Arg]) -> None:
         """Narrow furniture and devices by the place said right after them ("the table in the kitchen",
@@ -528,23 +532,6 @@ class Reader:
         if self.is_a(term, "device"):
             return place.symbol in term.symbol or place.phrase in term.phrase
         return False
-
-
-_NAMES = {
-    "item": "an object",
-    "person": "a person",
-    "room": "a room",
-    "furniture": "a piece of furniture",
-    "device": "a device",
-    "light": "a light",
-}
-_PLURALS = {
-    "item": "objects",
-    "person": "people",
-    "room": "rooms",
-    "furniture": "furniture",
-    "device": "devices",
-}
 
 
 __all__ = ["AmbiguityError", "Reader", "Reading", "chain", "level_percent"]

@@ -8,15 +8,16 @@ the templates say (``tests/language/test_sampling.py``). Seeded: the same seed g
 
 from __future__ import annotations
 
+import contextlib
 import random
 from collections.abc import Iterator
 from dataclasses import dataclass
 
+from knic.language.chains import AmbiguityError, chain, settled
 from knic.language.clauses import SPEAKERS_OWN
 from knic.language.commands import command_grammar, command_language
 from knic.language.frames import CommandFrame
 from knic.language.grammar import Alt, Bind, Frame, Grammar, Node, Opt, Ref, Repeat, Seq, Slot, Words
-from knic.language.reader import chain
 from knic.language.vocabulary import Term, Vocabulary, level_percent
 
 #: Share of samples that take the first phrase of a phrase list ("the" of the determiners, "please" of the
@@ -71,8 +72,18 @@ def sample_sentences(
         if not said or walker.dropped or exclude_words.intersection(words):
             continue
         made += 1
-        resolved = chain(said, vocabulary, held=walker.held).frames if frames else said
+        resolved = _resolved(said, vocabulary, walker.held) if frames else said
         yield Sample(" ".join(words), tuple(resolved))
+
+
+def _resolved(said: list[CommandFrame], vocabulary: Vocabulary, held: set[int]) -> list[CommandFrame]:
+    """The frames of a walk as the reader resolves them (:func:`~knic.language.chains.chain`, then each
+    device set once: :func:`~knic.language.chains.settled`; a device put in opposite states, which the reader
+    asks about, keeps both)."""
+    reading = chain(said, vocabulary, held=held)
+    with contextlib.suppress(AmbiguityError):
+        reading = settled(reading, vocabulary)
+    return reading.frames
 
 
 class _Walker:

@@ -6,7 +6,8 @@ common English synonyms. People in the house also say less:
 * a numbered name by its ordinal: "bedroom_two" is "the second bedroom" or "bedroom number two" ("shelf_3":
   "the third shelf");
 * a room by the kind of room one of its words names: "kitchen_diner" is "the kitchen", "bedroom_two" and
-  "master_bedroom" are each "the bedroom" (two such rooms: the reader asks which);
+  "master_bedroom" are each "the bedroom" (two such rooms: the reader asks which), or its last two words
+  before "room": "open_plan_living_room" is "the living room";
 * a thing whose one-word name ends in a common noun by that noun: "newspaper" is "the paper", "armchair" "the
   chair", "hairbrush" "the brush";
 * a container of a drink or food by what it holds: "water_bottle" is "some water", "milk_carton" "the milk".
@@ -96,10 +97,12 @@ def _ordinal(words: list[str]) -> list[str]:
 
 
 def _room_kinds(words: list[str], room_words: frozenset[str]) -> list[str]:
-    """The words of a longer room name that alone name a kind of room ("kitchen diner" -> kitchen, diner)."""
+    """The words of a longer room name that alone name a kind of room ("kitchen diner" -> kitchen, diner), and
+    the kind of room it ends with ("open plan living room" -> living room)."""
     if len(words) < 2:
         return []
-    return [w for w in words if w in room_words]
+    ending = [" ".join(words[-2:])] if len(words) > 2 and words[-1] == "room" else []
+    return [w for w in words if w in room_words] + ending
 
 
 def _head(words: list[str], heads: Sequence[str]) -> list[str]:

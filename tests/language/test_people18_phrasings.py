@@ -21,7 +21,11 @@
 * a room said before a piece of furniture after "to" ("take the letters to the hallway table"): the furniture
   there is where the thing goes;
 * a device said after another's state with no state of its own ("turn the desk lamp off and the landing
-  light too"): the same state.
+  light too"): the same state;
+* an unknown word before a group of devices ("the garden lights") names lights the world lacks, not all;
+* more general English room names ("kitchenette", "en suite", "living area", "lobby"), a room by the kind of
+  room its name ends with ("open plan living room": the living room), and boxes and packets as containers
+  ("the cereal" for a cereal box).
 """
 
 from __future__ import annotations
@@ -271,3 +275,72 @@ def test_what_a_later_phrase_takes_from_before(
     townhouse: Vocabulary, text: str, frames: list[dict[str, str]]
 ) -> None:
     assert frames_read(townhouse, text, "nadia") == frames
+
+
+def test_an_unknown_word_before_a_group_is_no_group(vocabulary: Vocabulary, townhouse: Vocabulary) -> None:
+    for world in (vocabulary, townhouse):
+        result = understand("turn on the garden lights", world, speaker="nadia")
+        assert not result.accepted
+        assert "'garden lights'" in result.reason, result.reason
+    assert frames_read(vocabulary, "turn off all the lights") == [
+        {"frame": "OPERATING", "device": "all_lights", "state": "off"}
+    ]
+
+
+STUDIO = {
+    "rooms": [
+        {"name": "open_plan_living_room", "polygon": [[0, 0], [6, 0], [6, 5], [0, 5]]},
+        {"name": "kitchenette", "polygon": [[6, 0], [9, 0], [9, 3], [6, 3]]},
+        {"name": "en_suite", "polygon": [[6, 3], [9, 3], [9, 5], [6, 5]]},
+        {"name": "entrance_lobby", "polygon": [[0, -2], [3, -2], [3, 0], [0, 0]]},
+    ],
+    "doors": [
+        {"rooms": ["entrance_lobby"], "position": [1.5, -2.0]},
+        {"rooms": ["entrance_lobby", "open_plan_living_room"], "position": [1.5, 0.0]},
+        {"rooms": ["open_plan_living_room", "kitchenette"], "position": [6.0, 1.5]},
+        {"rooms": ["open_plan_living_room", "en_suite"], "position": [6.0, 4.0]},
+    ],
+    "furniture": [
+        {"name": "worktop", "room": "kitchenette", "position": [8.6, 1.5], "size": [0.6, 2.0, 0.9]},
+        {"name": "desk", "room": "open_plan_living_room", "position": [5.5, 0.5], "size": [0.8, 0.6, 0.75]},
+    ],
+    "items": [{"name": "cereal_box", "furniture": "worktop"}, {"name": "laptop", "furniture": "desk"}],
+    "people": [{"name": "ines", "position": [3.0, 2.0]}],
+    "devices": [
+        {"name": "strip_light", "type": "light", "room": "kitchenette", "position": [8.7, 1.5, 1.5]},
+        {"name": "mirror_light", "type": "light", "room": "en_suite", "position": [7.5, 4.0, 2.0]},
+    ],
+    "robot": {"name": "r2d2", "start": [3.0, 2.5, 0]},
+}
+
+
+@pytest.fixture(scope="module")
+def studio(tmp_path_factory: pytest.TempPathFactory) -> Vocabulary:
+    import yaml
+
+    from knic.cli.goal import world_vocabulary
+    from knic.language.world import DEFAULT_DOMAIN
+
+    path = tmp_path_factory.mktemp("studio") / "studio.yaml"
+    path.write_text(yaml.safe_dump({"name": "studio", **STUDIO}))
+    vocabulary: Any = world_vocabulary(str(path), DEFAULT_DOMAIN, None)[0]
+    return vocabulary
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        ("go to the kitchen", [{"frame": "MOTION", "goal": "kitchenette"}]),
+        ("go to the bathroom", [{"frame": "MOTION", "goal": "en_suite"}]),
+        ("go to the living room", [{"frame": "MOTION", "goal": "open_plan_living_room"}]),
+        ("go to the front door", [{"frame": "MOTION", "goal": "entrance_lobby"}]),
+        ("bring me the cereal", [{"frame": "BRINGING", "theme": "cereal_box", "beneficiary": "me"}]),
+        (
+            "turn on the light in the bathroom",
+            [{"frame": "OPERATING", "device": "mirror_light", "state": "on"}],
+        ),
+        ("kitchen light on", [{"frame": "OPERATING", "device": "strip_light", "state": "on"}]),
+    ],
+)
+def test_names_in_a_studio(studio: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
+    assert frames_read(studio, text, "ines") == frames
