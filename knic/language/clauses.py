@@ -75,7 +75,7 @@ class _Filling:
     after_prep: bool = False  # the chunk just before was a preposition
     article: str = ""  # the determiner just said, before a noun phrase
     indefinite: bool = False  # the latest noun phrase was said with "a" or "an" ("a cup")
-    thing: bool = False  # the chunk just before named an object after a determiner ("the candle")
+    thing: str = ""  # the determiner of an object named by the chunk just before ("the" in "the candle")
 
 
 #: words said right after a thing's name that are no noun of a longer name ("bring me the cup now")
@@ -85,12 +85,16 @@ _AFTER_A_THING = frozenset(
     | {"put", "left", "kept", "sent", "set", "done", "made", "got", "held", "laid", "sat", "stood", "found"}
     | {"lost", "fell", "hung", "stuck"}
 )
+#: what may follow a longer name in an action
+_GOES_ON = ("join", "prep", "verb")
 #: endings of words that are no noun (participles, adverbs: "the lemon located on", "lying by", "quickly",
 #: "the tablet brought to")
 _NOT_NOUN_ENDINGS = ("ed", "en", "ing", "ly", "ght")
 
 
-def _compound(clause: Clause, chunk: Chunk, nxt: Chunk | None, names_item: Callable[[Chunk], bool]) -> bool:
+def _compound(
+    clause: Clause, chunk: Chunk, nxt: Chunk | None, names_item: Callable[[Chunk], bool], article: str
+) -> bool:
     """Whether the chunk after a thing's name said with a determiner, in an action, is the head of a longer
     name: an unknown word ending the noun phrase makes a name the world lacks ("bring me a candle holder"
     where the world has a candle: 'candle holder' is missing); another thing's name is that thing, the first
@@ -107,7 +111,9 @@ def _compound(clause: Clause, chunk: Chunk, nxt: Chunk | None, names_item: Calla
         add_to_clause(clause, chunk, nxt, None, before.joined)
         clause.args[-1].prep, clause.args[-1].prep_text = before.prep, before.prep_text
         return True
-    ended = nxt is None or nxt.kind in ("join", "prep", "verb")
+    # the phrase goes on ("the candle holder from the kitchen"), or ends the command after "a" ("bring me a
+    # candle holder"; "fetch the mug quick", "the glasses mate": said to the robot)
+    ended = (nxt is None and article in ("a", "an", "some")) or (nxt is not None and nxt.kind in _GOES_ON)
     drawn_out = any(a == b == c for a, b, c in zip(word, word[1:], word[2:], strict=False))  # "pleeease"
     noun = (
         word.isalpha()
@@ -339,7 +345,7 @@ def _fill(
     names_item: Callable[[Chunk], bool] = lambda chunk: False,
 ) -> None:
     """Add one chunk (not a verb) to a clause, updating what is pending for the next chunk."""
-    thing, filling.thing = filling.thing, False
+    thing, filling.thing = filling.thing, ""
     if (
         chunk.kind == "partitive"
         and clause.args
@@ -397,9 +403,9 @@ def _fill(
         clause.unknown.append(chunk.text)  # talk: refused only if the action names nothing else
         filling.prep, filling.expecting, filling.after_prep = None, False, False
         return
-    if thing and _compound(clause, chunk, nxt, names_item):
+    if thing and _compound(clause, chunk, nxt, names_item, thing):
         return
-    filling.thing = chunk.kind == "entity" and said_with != "" and names_item(chunk)
+    filling.thing = said_with if chunk.kind == "entity" and names_item(chunk) else ""
     filling.after_prep = chunk.kind == "prep"
     quantity = filling.quantity.role if filling.quantity is not None and chunk.kind == "entity" else None
     if quantity is None and chunk.kind == "entity" and chunk.role == "plural":

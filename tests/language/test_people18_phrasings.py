@@ -226,6 +226,8 @@ def test_a_longer_name_the_world_lacks_is_refused(vocabulary: Vocabulary, text: 
         ("bring me the water bottle", [{"frame": "BRINGING", "theme": "water", "beneficiary": "me"}]),
         ("bring me the candle now", [{"frame": "BRINGING", "theme": "candle", "beneficiary": "me"}]),
         ("pick up the lemon lying on the sofa", [{"frame": "TAKING", "theme": "lemon", "source": "sofa"}]),
+        ("fetch the mug quick", [{"frame": "BRINGING", "theme": "mug", "beneficiary": "me"}]),
+        ("bring me the glasses mate", [{"frame": "BRINGING", "theme": "glasses", "beneficiary": "me"}]),
     ],
 )
 def test_words_after_a_name_that_make_no_longer_name(
