@@ -345,7 +345,7 @@ def _fill(
     names_item: Callable[[Chunk], bool] = lambda chunk: False,
 ) -> None:
     """Add one chunk (not a verb) to a clause, updating what is pending for the next chunk."""
-    thing, filling.thing = filling.thing, ""
+    after_thing, filling.thing = filling.thing, ""
     if (
         chunk.kind == "partitive"
         and clause.args
@@ -403,7 +403,7 @@ def _fill(
         clause.unknown.append(chunk.text)  # talk: refused only if the action names nothing else
         filling.prep, filling.expecting, filling.after_prep = None, False, False
         return
-    if thing and _compound(clause, chunk, nxt, names_item, thing):
+    if after_thing and _compound(clause, chunk, nxt, names_item, after_thing):
         return
     filling.thing = said_with if chunk.kind == "entity" and names_item(chunk) else ""
     filling.after_prep = chunk.kind == "prep"
