@@ -53,6 +53,7 @@ from knic.language.selecting import described
 from knic.language.terse import for_asker, room_alone, told_read
 from knic.language.tidy import (
     SEGMENT_END,
+    after_moved,
     before_moved,
     cut_off_dropped,
     digits_read,
@@ -196,7 +197,7 @@ class Reader:
         """:meth:`read` of normalised tokens."""
         said, asker = told_read(tokens, self.chunker, self.vocabulary)  # knic.language.terse
         chunks = learners_read(said, self.vocabulary)
-        chunks = before_moved(relative_dropped(forbidden_dropped(chunks)))
+        chunks = after_moved(before_moved(relative_dropped(forbidden_dropped(chunks))), self._verb_of)
         chunks = said_around(other_one(chunks, self.vocabulary), self.vocabulary, self.chunker)
         chunks = restated(negated_dropped(chunks, self.language.negations), self._kind_of)
         chunks = sayings_dropped(doings_dropped(talk_dropped(repaired(left_undone(chunks), self._kind_of))))
@@ -258,6 +259,10 @@ class Reader:
         reading = chain(self._placed(frames, located), self.vocabulary, ask_where=ask_where, held=held)
         reading = settled(reading, self.vocabulary)  # "open the blinds and set them to 40": at 40
         return for_asker(reading, asker)  # "tracy asks the robot to fetch her glasses": for tracy
+
+    def _verb_of(self, word: str) -> Chunk | None:
+        said = self.chunker.chunks([word])
+        return said[0] if len(said) == 1 and said[0].kind == "verb" else None
 
     def _kind_of(self, chunk: Chunk) -> str:
         """What a chunk names, for corrections: object, person, place, device, level, state or its kind."""

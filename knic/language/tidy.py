@@ -364,6 +364,45 @@ def before_moved(chunks: list[Chunk]) -> list[Chunk]:
     return chunks[nxt:end] + chunks[start:nxt] + chunks[end:]
 
 
+#: words that put the action after them first, said after another ("bring me the tea once you have switched
+#: on the light"), and what may stand between them and that action's verb
+_AFTER = frozenset({"after", "once", "when"})
+_HAVING = frozenset({"you", "you've", "have", "had", "finished", "done"})
+
+
+def after_moved(chunks: list[Chunk], verb_of: Callable[[str], Chunk | None]) -> list[Chunk]:
+    """An action said to come first after another ("bring me the orange after you switch on the light",
+    "... once you've switched on the light", "... when you have turned on the light"): it is put first. A
+    verb said in the past there is the verb (``verb_of`` gives the verb chunk of a word, else None)."""
+    said = next((i for i, c in enumerate(chunks) if c.kind == "verb"), None)
+    for i in range(1, len(chunks) - 2):
+        if said is None or i <= said or chunks[i].kind != "unknown" or chunks[i].text not in _AFTER:
+            continue
+        if not chunks[i + 1].text.startswith("you"):
+            continue  # "bring me the tea when it's ready": no action of the robot's
+        at = i + 1
+        while at < len(chunks) and chunks[at].kind == "unknown" and chunks[at].text in _HAVING:
+            at += 1
+        if at >= len(chunks):
+            continue
+        verb = chunks[at] if chunks[at].kind == "verb" else _past(chunks[at], verb_of)
+        if verb is None:
+            continue
+        end = next((j for j in range(at + 1, len(chunks)) if chunks[j].kind in ("verb", "join")), len(chunks))
+        return [verb, *chunks[at + 1 : end], Chunk("join", "and"), *chunks[:i], *chunks[end:]]
+    return chunks
+
+
+def _past(chunk: Chunk, verb_of: Callable[[str], Chunk | None]) -> Chunk | None:
+    """The verb a word said in the past is ("switched": switch, "closed": close, "dropped": drop), else
+    None."""
+    word = chunk.text
+    if chunk.kind not in ("unknown", "state") or not word.endswith("ed"):
+        return None
+    doubled = word[:-3] if len(word) > 4 and word[-3] == word[-4] else ""
+    return next((v for stem in (word[:-2], word[:-1], doubled) if stem and (v := verb_of(stem))), None)
+
+
 def restated(chunks: list[Chunk], kind_of: Callable[[Chunk], str]) -> list[Chunk]:
     """A place said again at once as another, the hesitation between dropped ("bring the mug to the kitchen
     uh the dining room"): the speaker corrected the first, so the second is meant. Only for a place a

@@ -25,7 +25,9 @@
 * an unknown word before a group of devices ("the garden lights") names lights the world lacks, not all;
 * more general English room names ("kitchenette", "en suite", "living area", "lobby"), a room by the kind of
   room its name ends with ("open plan living room": the living room), and boxes and packets as containers
-  ("the cereal" for a cereal box).
+  ("the cereal" for a cereal box);
+* an action said to come first after another ("bring me the orange once you've switched on the hallway
+  light", "... when you have turned on ...", "... after you switch on ..."): done first.
 """
 
 from __future__ import annotations
@@ -346,3 +348,24 @@ def studio(tmp_path_factory: pytest.TempPathFactory) -> Vocabulary:
 )
 def test_names_in_a_studio(studio: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
     assert frames_read(studio, text, "ines") == frames
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "bring me the orange after you switch on the hallway light",
+        "bring me the orange once you've switched on the hallway light",
+        "bring me the orange when you have turned on the hallway light",
+    ],
+)
+def test_an_action_said_to_come_first(townhouse: Vocabulary, text: str) -> None:
+    assert frames_read(townhouse, text, "nadia") == [
+        {"frame": "OPERATING", "device": "hallway_light", "state": "on"},
+        {"frame": "BRINGING", "theme": "orange", "beneficiary": "me"},
+    ]
+
+
+def test_when_said_of_something_else_moves_nothing(vocabulary: Vocabulary) -> None:
+    assert frames_read(vocabulary, "bring me the mug when you are done") == [
+        {"frame": "BRINGING", "theme": "mug", "beneficiary": "me"}
+    ]
