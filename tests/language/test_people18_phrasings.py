@@ -369,3 +369,15 @@ def test_when_said_of_something_else_moves_nothing(vocabulary: Vocabulary) -> No
     assert frames_read(vocabulary, "bring me the mug when you are done") == [
         {"frame": "BRINGING", "theme": "mug", "beneficiary": "me"}
     ]
+
+
+@pytest.mark.parametrize(
+    ("text", "device", "state"),
+    [
+        ("turn on the big light", "ceiling_light", "on"),
+        ("switch off the main light", "ceiling_light", "off"),
+        ("standard lamp to half", "floor_lamp", "50"),
+    ],
+)
+def test_everyday_names_of_lights(townhouse: Vocabulary, text: str, device: str, state: str) -> None:
+    assert frames_read(townhouse, text, "nadia") == [{"frame": "OPERATING", "device": device, "state": state}]
