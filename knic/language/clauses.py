@@ -84,6 +84,22 @@ _AFTER_A_THING = frozenset(
     | {"somewhere", "anywhere", "everywhere", "away", "over", "then", "today", "tonight", "you", "please"}
     | {"put", "left", "kept", "sent", "set", "done", "made", "got", "held", "laid", "sat", "stood", "found"}
     | {"lost", "fell", "hung", "stuck"}
+    # the way it goes ("bring the cup round to tracy", "take the mug upstairs to the bedroom")
+    | {
+        "round",
+        "around",
+        "across",
+        "along",
+        "upstairs",
+        "downstairs",
+        "outside",
+        "inside",
+        "indoors",
+        "outdoors",
+    }
+    | {"home", "together", "straight", "right", "quick", "fast", "asap", "later", "down", "up", "out", "in"}
+    # whom it is said to ("fetch the mug mate", "bring the cup love to the kitchen")
+    | {"mate", "buddy", "pal", "darling", "sweetie", "honey", "dear", "love", "sir", "madam", "robot"}
 )
 #: what may follow a longer name in an action
 _GOES_ON = ("join", "prep", "verb")

@@ -230,6 +230,9 @@ def test_a_longer_name_the_world_lacks_is_refused(vocabulary: Vocabulary, text: 
         ("pick up the lemon lying on the sofa", [{"frame": "TAKING", "theme": "lemon", "source": "sofa"}]),
         ("fetch the mug quick", [{"frame": "BRINGING", "theme": "mug", "beneficiary": "me"}]),
         ("bring me the glasses mate", [{"frame": "BRINGING", "theme": "glasses", "beneficiary": "me"}]),
+        ("bring the cup round to tracy", [{"frame": "BRINGING", "theme": "cup", "beneficiary": "tracy"}]),
+        ("take the mug upstairs to the bedroom", [{"frame": "BRINGING", "theme": "mug", "goal": "bedroom"}]),
+        ("bring the mug mate to the sofa", [{"frame": "BRINGING", "theme": "mug", "goal": "sofa"}]),
     ],
 )
 def test_words_after_a_name_that_make_no_longer_name(
