@@ -111,22 +111,16 @@ _NOT_NOUN_ENDINGS = ("ed", "en", "ing", "ly", "ght")
 def _compound(
     clause: Clause, chunk: Chunk, nxt: Chunk | None, names_item: Callable[[Chunk], bool], article: str
 ) -> bool:
-    """Whether the chunk after a thing's name said with a determiner, in an action, is the head of a longer
-    name: an unknown word ending the noun phrase makes a name the world lacks ("bring me a candle holder"
-    where the world has a candle: 'candle holder' is missing); another thing's name is that thing, the first
-    only says which ("the apple juice" where the world has an apple and juice: the juice). Either way the
-    first thing is not an argument. A container said after what it holds is that ("the water bottle": the
-    water)."""
+    """Whether an unknown word right after a thing's name said with a determiner, in an action, is the head of
+    a longer name the world lacks ("bring me a candle holder" where the world has a candle: 'candle holder'
+    is missing, the candle is not the argument). A container said after what it holds is that ("the water
+    bottle": the water); a plural is the next thing of a list said without commas ("the mug, biscuits and
+    the remote"); another thing's name too ("the mug, lemon and apple")."""
     if clause.verb is None or not clause.args or clause.args[-1].chunk.kind != "entity":
         return False  # "the teddy fell out of the crib": said of the thing, no name
     word = chunk.text
     if word in containers() or any(t.phrase.split()[-1] in containers() for t in chunk.terms):
         return False
-    if chunk.kind == "entity" and names_item(chunk):
-        before = clause.args.pop()
-        add_to_clause(clause, chunk, nxt, None, before.joined)
-        clause.args[-1].prep, clause.args[-1].prep_text = before.prep, before.prep_text
-        return True
     # the phrase goes on ("the candle holder from the kitchen"), or ends the command after "a" ("bring me a
     # candle holder"; "fetch the mug quick", "the glasses mate": said to the robot)
     ended = (nxt is None and article in ("a", "an", "some")) or (nxt is not None and nxt.kind in _GOES_ON)
@@ -134,6 +128,7 @@ def _compound(
     noun = (
         word.isalpha()
         and len(word) > 2
+        and not (word.endswith("s") and not word.endswith("ss"))
         and not word.endswith(_NOT_NOUN_ENDINGS)
         and word not in _AFTER_A_THING | set(_LINKING)
         and not drawn_out

@@ -14,8 +14,8 @@
 * the room a door to the outside opens into is "the front door" ("go to the front door", "the table by the
   front door"), where the world file says so;
 * a thing's name followed, in an action, by a noun the world lacks is a longer name it lacks ("bring me a
-  candle holder": 'candle holder', not the candle), and by another thing's name is that thing ("the apple
-  juice": the juice); a container after what it holds is still what it holds ("the water bottle": water);
+  candle holder": 'candle holder', not the candle); a container after what it holds is still what it holds
+  ("the water bottle": water), and a list said without commas stays a list ("the mug, lemon and apple");
 * a kind said by its use ("a drink") is told by the last word of a name, or what its container holds: a "tea
   towel" is no drink, a "water bottle" is;
 * a room said before a piece of furniture after "to" ("take the letters to the hallway table"): the furniture
@@ -224,7 +224,14 @@ def test_a_longer_name_the_world_lacks_is_refused(vocabulary: Vocabulary, text: 
 @pytest.mark.parametrize(
     ("text", "frames"),
     [
-        ("bring me some apple juice", [{"frame": "BRINGING", "theme": "juice", "beneficiary": "me"}]),
+        (
+            "bring me the mug, lemon and apple",
+            [
+                {"frame": "BRINGING", "theme": "mug", "beneficiary": "me"},
+                {"frame": "BRINGING", "theme": "lemon", "beneficiary": "me"},
+                {"frame": "BRINGING", "theme": "apple", "beneficiary": "me"},
+            ],
+        ),
         ("bring me the water bottle", [{"frame": "BRINGING", "theme": "water", "beneficiary": "me"}]),
         ("bring me the candle now", [{"frame": "BRINGING", "theme": "candle", "beneficiary": "me"}]),
         ("pick up the lemon lying on the sofa", [{"frame": "TAKING", "theme": "lemon", "source": "sofa"}]),
