@@ -54,6 +54,7 @@ from knic.language.terse import for_asker, room_alone, told_read
 from knic.language.tidy import (
     SEGMENT_END,
     after_moved,
+    asked_to_come,
     before_moved,
     cut_off_dropped,
     digits_read,
@@ -198,6 +199,7 @@ class Reader:
         said, asker = told_read(tokens, self.chunker, self.vocabulary)  # knic.language.terse
         chunks = learners_read(said, self.vocabulary)
         chunks = after_moved(before_moved(relative_dropped(forbidden_dropped(chunks))), self._verb_of)
+        chunks = asked_to_come(chunks, self.chunks(["lead"])[0], lambda c: self._kind_of(c) == "person")
         chunks = said_around(other_one(chunks, self.vocabulary), self.vocabulary, self.chunker)
         chunks = restated(negated_dropped(chunks, self.language.negations), self._kind_of)
         chunks = sayings_dropped(doings_dropped(talk_dropped(repaired(left_undone(chunks), self._kind_of))))

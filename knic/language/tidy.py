@@ -393,6 +393,29 @@ def after_moved(chunks: list[Chunk], verb_of: Callable[[str], Chunk | None]) -> 
     return chunks
 
 
+#: words that ask someone to go somewhere ("ask tracy to come to the kitchen", "tell jack to go to ...")
+_ASKING = frozenset({"ask", "tell", "get"})
+
+
+def asked_to_come(chunks: list[Chunk], lead: Chunk, is_person: Callable[[Chunk], bool]) -> list[Chunk]:
+    """Someone asked to come or go somewhere ("ask tracy to come to the kitchen", "tell jack to go to the
+    living room", "get tracy to come to the bedroom"): the robot takes them there (``lead``), it does not
+    only go there itself."""
+    for i in range(len(chunks) - 4):
+        asking, person, to, come = chunks[i : i + 4]
+        if (
+            asking.text in _ASKING
+            and person.kind == "entity"
+            and is_person(person)
+            and to.text == "to"
+            and come.kind == "verb"
+            and come.frames == ("MOTION",)
+            and chunks[i + 4].kind == "prep"
+        ):
+            return [*chunks[:i], lead, person, *chunks[i + 4 :]]
+    return chunks
+
+
 def _past(chunk: Chunk, verb_of: Callable[[str], Chunk | None]) -> Chunk | None:
     """The verb a word said in the past is ("switched": switch, "closed": close, "dropped": drop), else
     None."""

@@ -27,7 +27,8 @@
   room its name ends with ("open plan living room": the living room), and boxes and packets as containers
   ("the cereal" for a cereal box);
 * an action said to come first after another ("bring me the orange once you've switched on the hallway
-  light", "... when you have turned on ...", "... after you switch on ..."): done first.
+  light", "... when you have turned on ...", "... after you switch on ..."): done first;
+* someone asked to come or go somewhere ("ask tom to come to the kitchen"): taken there.
 """
 
 from __future__ import annotations
@@ -391,3 +392,15 @@ def test_when_said_of_something_else_moves_nothing(vocabulary: Vocabulary) -> No
 )
 def test_everyday_names_of_lights(townhouse: Vocabulary, text: str, device: str, state: str) -> None:
     assert frames_read(townhouse, text, "nadia") == [{"frame": "OPERATING", "device": device, "state": state}]
+
+
+@pytest.mark.parametrize(
+    ("text", "who", "goal"),
+    [
+        ("ask tom to come to the kitchen", "tom", "kitchen"),
+        ("could you tell nadia to go to the living room", "nadia", "living_room"),
+        ("get tom to come up to the office", "tom", "home_office"),
+    ],
+)
+def test_someone_asked_to_come_is_taken_there(townhouse: Vocabulary, text: str, who: str, goal: str) -> None:
+    assert frames_read(townhouse, text, "nadia") == [{"frame": "ACCOMPANYING", "theme": who, "goal": goal}]
