@@ -71,6 +71,10 @@ class Chunker:
             for variant in variants:
                 if variant not in self._full:
                     self._partial.setdefault(variant, []).append(term)
+        for variant, terms in self._partial.items():  # "the table": the dining table, not a "bedside table"
+            own = {t.symbol for t in terms if not t.given and t.phrase.split()[-1] == variant}
+            if own and any(t.symbol not in own for t in terms):
+                self._partial[variant] = [t for t in terms if t.symbol in own]
         named: dict[str, Term] = {}  # one term per single thing, for the nouns of its type
         for term in vocabulary.terms:
             if term.type != "level" and not term.is_group:

@@ -105,12 +105,16 @@ class Term:
         symbol: the knowledge-base symbol (``"glasses"``), or a group's name (``"all_lights"``).
         type: the symbol's PDDL type (for a group: its members' common type).
         members: the symbols a group stands for; ``(symbol,)`` for a plain term.
+        given: the phrase is given by a synonym or a shorter name, not the world's own name or its lexicon's
+            (a thing's own name beats it: "the table" is the dining table, not the nightstand that is also a
+            "bedside table").
     """
 
     phrase: str
     symbol: str
     type: str
     members: tuple[str, ...]
+    given: bool = False
 
     @property
     def is_group(self) -> bool:
@@ -245,7 +249,7 @@ def _synonym_variants(terms: Sequence[Term], synonyms: Sequence[Sequence[str]]) 
                     told_apart = last and bool(heads.get(other[-1], set()) - {term.symbol})
                     if other != said and phrase not in taken and not told_apart:
                         taken.add(phrase)
-                        out.append(Term(phrase, term.symbol, term.type, term.members))
+                        out.append(Term(phrase, term.symbol, term.type, term.members, given=True))
     return out
 
 
@@ -317,7 +321,7 @@ class Vocabulary:
             terms.extend(Term(p, symbol, type_name, (symbol,)) for p in phrases)
         terms += _synonym_variants(terms, english_synonyms() if synonyms is None else synonyms)
         terms += [
-            Term(phrase, t.symbol, t.type, t.members)
+            Term(phrase, t.symbol, t.type, t.members, given=True)
             for phrase, t in short_names(
                 terms,
                 lambda k: _is_subtype(types, k, "room"),
@@ -377,7 +381,10 @@ class Vocabulary:
     def to_data(self) -> dict[str, Any]:
         """The vocabulary as plain JSON data (:meth:`from_data` reads it back)."""
         return {
-            "terms": [[t.phrase, t.symbol, t.type, list(t.members)] for t in self._terms],
+            "terms": [
+                [t.phrase, t.symbol, t.type, list(t.members), *([True] if t.given else [])]
+                for t in self._terms
+            ],
             "types": self._types,
             "instances": self._instances,
             "predicates": {k: [list(p) for p in v] for k, v in self.predicates.items()},
@@ -392,7 +399,10 @@ class Vocabulary:
             LanguageError: the data is not in that form.
         """
         try:
-            terms = [Term(str(p), str(s), str(t), tuple(str(m) for m in ms)) for p, s, t, ms in data["terms"]]
+            terms = [
+                Term(str(p), str(s), str(t), tuple(str(m) for m in ms), given=bool(given and given[0]))
+                for p, s, t, ms, *given in data["terms"]
+            ]
             predicates = {
                 str(k): tuple((str(a), str(b)) for a, b in v) for k, v in dict(data["predicates"]).items()
             }

@@ -28,7 +28,9 @@
   ("the cereal" for a cereal box);
 * an action said to come first after another ("bring me the orange once you've switched on the hallway
   light", "... when you have turned on ...", "... after you switch on ..."): done first;
-* someone asked to come or go somewhere ("ask tom to come to the kitchen"): taken there.
+* someone asked to come or go somewhere ("ask tom to come to the kitchen"): taken there;
+* a word that ends the world's own name of some things beats a synonym that ends another's ("the table" in
+  the bungalow is the dining table, not the nightstand that is also a "bedside table").
 """
 
 from __future__ import annotations
@@ -404,3 +406,24 @@ def test_everyday_names_of_lights(townhouse: Vocabulary, text: str, device: str,
 )
 def test_someone_asked_to_come_is_taken_there(townhouse: Vocabulary, text: str, who: str, goal: str) -> None:
     assert frames_read(townhouse, text, "nadia") == [{"frame": "ACCOMPANYING", "theme": who, "goal": goal}]
+
+
+def test_an_own_name_beats_a_synonym() -> None:
+    from knic.cli.goal import world_vocabulary
+    from knic.language.world import DEFAULT_DOMAIN
+
+    bungalow: Any = world_vocabulary("test_bungalow", DEFAULT_DOMAIN, None)[0]
+    assert frames_read(bungalow, "put the newspaper on the table", "walter") == [
+        {"frame": "PLACING", "theme": "newspaper", "goal": "dining_table"}
+    ]
+    assert frames_read(bungalow, "put the newspaper on the bedside table", "walter") == [
+        {"frame": "PLACING", "theme": "newspaper", "goal": "nightstand"}
+    ]
+
+
+def test_a_vocabulary_keeps_which_names_are_given() -> None:
+    from knic.language.world import read_vocabulary
+
+    vocabulary = read_vocabulary()
+    assert Vocabulary.from_data(vocabulary.to_data()).terms == vocabulary.terms
+    assert any(t.given for t in vocabulary.terms)
