@@ -24,11 +24,11 @@ is marked out of domain; what the reader does not understand is rejected by the 
 confidence, which already turns away most other speech. The threshold was set on the development sets only
 (``knic bench speech --decoder ngram``).
 
-A second opinion: Whisper (:mod:`knic.language.whisperpass`) hears each utterance too, in a worker process
-of its own while pocketsphinx decodes, and its transcript replaces pocketsphinx's when Whisper is sure of it,
-the reader reads it, and pocketsphinx refused the utterance or heard a different command
-(:func:`~knic.language.whisperpass.second_opinion`). On the five spoken dev sets this took frame+args from
-0.880 to 0.926 at the same rejection of other speech (0.948); ``second_opinion=False`` turns it off.
+A second opinion: Whisper (:mod:`knic.language.whisperpass`) hears each utterance first, in a server process
+of its own. When Whisper is sure of its transcript and the reader reads it, that transcript is taken and
+pocketsphinx does not decode (:func:`~knic.language.whisperpass.settled`); otherwise pocketsphinx alone
+decides. On the five spoken dev sets this took frame+args from 0.880 to 0.926 at the same rejection of other
+speech (0.948); ``second_opinion=False`` turns it off.
 
 Lifecycle: build once per vocabulary (sampling and estimating the model take a few seconds; the model is
 cached on disk by content), then :meth:`NgramRecognizer.recognize` per utterance; not thread-safe. With
@@ -44,6 +44,7 @@ import struct
 import tempfile
 import time
 from collections.abc import Callable, Mapping
+from dataclasses import replace
 from pathlib import Path
 from typing import TYPE_CHECKING, Any, Protocol
 
@@ -75,9 +76,8 @@ from knic.language.whisperpass import (
     Heard,
     Opinion,
     WhisperServer,
-    agrees,
     model_dir,
-    second_opinion,
+    settled,
     world_prompt,
 )
 
@@ -178,9 +178,9 @@ class NgramRecognizer:
         parallel: run the n-gram passes of the members after the first in forked worker processes, forked
             after the first decoding (the same results as in this process, which decodes them itself where
             ``os.fork`` is missing or a worker failed).
-        second_opinion: hear each utterance with Whisper as well (:mod:`knic.language.whisperpass`, in a
-            worker process of its own when ``parallel``) and take its transcript where
-            :func:`~knic.language.whisperpass.second_opinion` says so; off, or without the model installed,
+        second_opinion: hear each utterance with Whisper first (:mod:`knic.language.whisperpass`, in a
+            server process of its own) and take its transcript where
+            :func:`~knic.language.whisperpass.settled` says so; off, or without the model installed,
             pocketsphinx alone.
 
     Raises:
@@ -393,8 +393,8 @@ class NgramRecognizer:
         heard: Callable[[], Heard | None] | None = None,
     ) -> Transcript:
         """Decode one utterance; ``in_grammar`` is False when the confidence is below the chosen model's
-        threshold. With a second opinion (:attr:`whisper`) Whisper hears it too, meanwhile, and its
-        transcript replaces pocketsphinx's where :func:`~knic.language.whisperpass.second_opinion` says so.
+        threshold. With a second opinion (:attr:`whisper`) Whisper hears it first, and its transcript is
+        taken where :func:`~knic.language.whisperpass.settled` says so, without pocketsphinx's passes.
 
         When the reader reads none of the hypotheses the command is refused whatever the confidence, so the
         phone-loop pass is skipped: ``in_grammar`` is then False and the confidence (``score``) NaN. This
@@ -416,28 +416,21 @@ class NgramRecognizer:
         samples = pcm_bytes(audio)
         if self._prompt is None:
             return self._first_opinion(samples, phone_score, decoded)
-        opinion = Opinion(self._server, samples, heard)
-        reading = self._reading or self.reads
-        first = self._first_opinion(
-            samples, phone_score, decoded, lambda text: agrees(opinion(), text, self.reads, reading)
-        )
         started = time.perf_counter()
-        text = second_opinion(opinion(), first.text, first.in_grammar, self.reads, reading)
-        if text is None:
-            return first
-        elapsed = first.decode_ms + (time.perf_counter() - started) * 1000.0
-        return Transcript(text, True, first.score, first.duration, elapsed)
+        own = settled(Opinion(self._server, samples, heard)(), self.reads)
+        if own:  # pocketsphinx could not change the reading
+            elapsed = (time.perf_counter() - started) * 1000.0
+            return Transcript(own, True, math.nan, duration_of(samples), elapsed)
+        first = self._first_opinion(samples, phone_score, decoded)
+        return replace(first, decode_ms=(time.perf_counter() - started) * 1000.0)  # Whisper's time too
 
     def _first_opinion(
         self,
         samples: bytes,
         phone_score: Callable[[int], float] | None,
         decoded: Callable[[], list[Decoded]] | None,
-        agreed: Callable[[str], bool] | None = None,
     ) -> Transcript:
-        """pocketsphinx's transcript of the utterance (see :meth:`recognize`); a command the reader reads is
-        in the domain without the phone loop's confidence when ``agreed`` says so of its text (Whisper heard
-        the same command and is sure of it: on the dev sets about half the commands, no other speech)."""
+        """pocketsphinx's transcript of the utterance (see :meth:`recognize`)."""
         raw = ngram_padded(samples)
         started = time.perf_counter()
         if decoded is not None:
@@ -453,7 +446,7 @@ class NgramRecognizer:
         text, read = self._snap(best, list(hypotheses))
         if read and text == best and not finished:
             text = self._unheard_tail(text)
-        if not read or (agreed is not None and agreed(text)):
+        if not read:
             elapsed = (time.perf_counter() - started) * 1000.0
             score = math.nan if text else float("-inf")
             return Transcript(text, read, score, duration_of(samples), elapsed)

@@ -1,5 +1,6 @@
 """Whisper's second opinion on spoken commands (knic.language.whisperpass): its front end, the rule that lets
-it replace pocketsphinx's transcript, and both together on development recordings pocketsphinx gets wrong."""
+it settle an utterance without pocketsphinx, and both together on development recordings pocketsphinx gets
+wrong."""
 
 from __future__ import annotations
 
@@ -21,11 +22,10 @@ from knic.language.whisperpass import (
     SURE_LOG_PROB,
     Heard,
     WhisperPass,
-    agrees,
     log_mel,
     mel_filters,
     model_dir,
-    second_opinion,
+    settled,
     unrepeated,
     world_prompt,
 )
@@ -110,39 +110,33 @@ def _reads(text: str) -> bool:
     return "mug" in text or "cup" in text
 
 
-def _reading(text: str) -> object:
-    return "mug" if "mug" in text else "cup" if "cup" in text else None
-
-
 @pytest.mark.parametrize(
-    ("heard", "first", "accepted", "expected"),
+    ("heard", "expected"),
     [
-        (Heard("Bring me the cup.", -0.1), "bring me the mug", True, "bring me the cup"),  # reads otherwise
-        (Heard("Bring me the cup.", -0.1), "", False, "bring me the cup"),  # pocketsphinx refused
-        (Heard("Bring the cup, please!", -0.1), "bring me the cup", True, None),  # the same reading
-        (Heard("Bring me the cup.", SURE_LOG_PROB - 0.1), "bring me the mug", True, None),  # not sure
-        (Heard("Sing me a song.", -0.1), "", False, None),  # the reader does not read it
-        (Heard("", -0.1), "bring me the mug", True, None),
-        (None, "bring me the mug", True, None),  # no second opinion
+        (Heard("Bring me the cup, please.", -0.1), "bring me the cup please"),  # sure, and read
+        (Heard("Bring me the cup.", SURE_LOG_PROB - 0.1), None),  # not sure
+        (Heard("Sing me a song.", -0.1), None),  # the reader does not read it
+        (Heard("", -0.1), None),
+        (None, None),  # no second opinion
     ],
 )
-def test_when_whisper_replaces_the_first_transcript(heard, first, accepted, expected):
-    assert second_opinion(heard, first, accepted, _reads, _reading) == expected
+def test_whisper_settles_what_it_is_sure_of_and_the_reader_reads(heard, expected):
+    assert settled(heard, _reads) == expected
 
 
-@pytest.mark.parametrize(
-    ("heard", "first", "expected"),
-    [
-        (Heard("Bring me the cup, please.", -0.1), "bring me the cup please", True),  # the same words
-        (Heard("Bring the cup.", -0.1), "bring me the cup", True),  # read the same way
-        (Heard("Bring me the mug.", -0.1), "bring me the cup", False),
-        (Heard("Bring me the cup.", SURE_LOG_PROB - 0.1), "bring me the cup", False),  # not sure
-        (Heard("Sing me a song.", -0.1), "bring me the cup", False),
-        (None, "bring me the cup", False),
-    ],
-)
-def test_whisper_agrees_when_sure_of_the_same_command(heard, first, expected):
-    assert agrees(heard, first, _reads, _reading) == expected
+def test_pocketsphinx_is_not_asked_when_whisper_settles_the_utterance(vocabulary):
+    asked: list[str] = []
+
+    def decoded():
+        asked.append("pocketsphinx")
+        raise AssertionError("pocketsphinx decoded")
+
+    with NgramRecognizer(vocabulary, lazy=True) as recognizer:
+        sure = recognizer.recognize(TISSUES, decoded=decoded, heard=lambda: Heard("Grab the tissues.", -0.1))
+        assert sure.in_grammar and sure.text == "grab the tissues" and not asked
+        with pytest.raises(AssertionError, match="pocketsphinx decoded"):
+            recognizer.recognize(TISSUES, decoded=decoded, heard=lambda: Heard("Grab the tissues.", -2.0))
+    assert asked == ["pocketsphinx"]  # not sure: pocketsphinx decides
 
 
 @pytest.fixture(scope="module")
