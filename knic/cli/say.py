@@ -128,16 +128,15 @@ def _run(args: argparse.Namespace, decoder: str, passes: Passes | None) -> int:
         ngram = NgramRecognizer(
             vocabulary, acoustic_model=args.acoustic_model, lazy=True, second_opinion=args.second_opinion
         )
-        passed = passes.decoded()
-        transcript = ngram.recognize(
+        transcript = ngram.recognize(  # Whisper's answer first: pocketsphinx's is waited for only if needed
             audio,
             phone_score=lambda index: _or(
                 passes.phone_score(index), lambda: ngram.phone_loop_of(index).score_of(audio)
             ),
-            decoded=(lambda: passed) if passed is not None else None,
+            decoded=passes.decoded,
             heard=passes.heard,
         )
-        if passed is None and ngram.model_files is not None:
+        if ngram.model_files is not None:  # decoded here: no model was remembered for this world
             oneshot.remember_model(key, *ngram.model_files)
     else:
         model, second = args.acoustic_model, args.second_opinion
@@ -147,6 +146,12 @@ def _run(args: argparse.Namespace, decoder: str, passes: Passes | None) -> int:
         transcript = recognizer.recognize(audio)
     result = understand_transcript(transcript, vocabulary, speaker=args.speaker)
     print_understanding(result.to_dict(), args.json)
+    if passes is not None and args.second_opinion:
+        from knic.language import whisperd
+        from knic.language.whisperpass import model_dir, world_prompt
+
+        # the next command of this world asks a daemon that keeps the model loaded
+        whisperd.ensure(world_prompt(vocabulary), model_dir(), key)
     return 0
 
 

@@ -389,7 +389,7 @@ class NgramRecognizer:
         audio: str | Path | bytes | npt.NDArray[np.int16],
         *,
         phone_score: Callable[[int], float] | None = None,
-        decoded: Callable[[], list[Decoded]] | None = None,
+        decoded: Callable[[], list[Decoded] | None] | None = None,
         heard: Callable[[], Heard | None] | None = None,
     ) -> Transcript:
         """Decode one utterance; ``in_grammar`` is False when the confidence is below the chosen model's
@@ -428,13 +428,13 @@ class NgramRecognizer:
         self,
         samples: bytes,
         phone_score: Callable[[int], float] | None,
-        decoded: Callable[[], list[Decoded]] | None,
+        decoded: Callable[[], list[Decoded] | None] | None,
     ) -> Transcript:
         """pocketsphinx's transcript of the utterance (see :meth:`recognize`)."""
         raw = ngram_padded(samples)
         started = time.perf_counter()
-        if decoded is not None:
-            results = decoded()
+        results = decoded() if decoded is not None else None
+        if results is not None:
             index = choose_member(results)
             chosen = results[index]
         else:

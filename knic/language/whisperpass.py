@@ -296,7 +296,7 @@ class WhisperServer:
             if process is None or process.stdin is None:
                 return False
             try:
-                process.stdin.write(_FRAME.pack(len(samples)) + samples)
+                process.stdin.write(FRAME.pack(len(samples)) + samples)
                 process.stdin.flush()
             except OSError:  # it died, perhaps not yet reaped (its pid still shows): wait for it, start anew
                 self.close()
@@ -310,9 +310,9 @@ class WhisperServer:
         server died or failed on it."""
         process, found = self._process, None
         while self._pending and process is not None and process.stdout is not None:
-            header = process.stdout.read(_FRAME.size)
-            body = process.stdout.read(_FRAME.unpack(header)[0]) if len(header) == _FRAME.size else b""
-            if len(header) < _FRAME.size:  # it died: reaped now, so that the next request starts another
+            header = process.stdout.read(FRAME.size)
+            body = process.stdout.read(FRAME.unpack(header)[0]) if len(header) == FRAME.size else b""
+            if len(header) < FRAME.size:  # it died: reaped now, so that the next request starts another
                 self.close()
                 return None
             self._pending -= 1
@@ -339,7 +339,7 @@ class WhisperServer:
 
 
 #: a message between a client and the server: its length, then its bytes
-_FRAME = struct.Struct("!I")
+FRAME = struct.Struct("!I")
 
 
 def _stop_server(process: subprocess.Popen[bytes]) -> None:
@@ -355,7 +355,7 @@ def _stop_server(process: subprocess.Popen[bytes]) -> None:
 
 def serve(prompt: str, folder: str) -> None:
     """The server's loop: utterances in on stdin, ``[text, mean log-prob]`` (or null) out on stdout, framed
-    by :data:`_FRAME`, until stdin closes."""
+    by :data:`FRAME`, until stdin closes."""
     import numpy as np
 
     whisper = WhisperPass(prompt, folder=Path(folder) if folder else None, threads=SERVER_THREADS)
@@ -365,16 +365,16 @@ def serve(prompt: str, folder: str) -> None:
     except LanguageError as exc:
         print(f"knic: warning: {exc}", file=sys.stderr)
     while True:
-        header = requests.read(_FRAME.size)
-        if len(header) < _FRAME.size:
+        header = requests.read(FRAME.size)
+        if len(header) < FRAME.size:
             return
-        data = requests.read(_FRAME.unpack(header)[0])
+        data = requests.read(FRAME.unpack(header)[0])
         try:
             heard = whisper.hear(np.frombuffer(data, dtype="<i2"))
             reply = json.dumps([heard.text, heard.mean_log_prob]).encode()
         except (LanguageError, ValueError, RuntimeError):
             reply = b"null"
-        replies.write(_FRAME.pack(len(reply)) + reply)
+        replies.write(FRAME.pack(len(reply)) + reply)
         replies.flush()
 
 

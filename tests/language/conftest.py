@@ -13,6 +13,15 @@ from knic.language.world import load_world, read_vocabulary
 SPEECH_FIXTURES = Path(__file__).resolve().parents[1] / "fixtures" / "speech"
 
 
+@pytest.fixture(autouse=True)
+def _short_lived_whisper_daemons(monkeypatch: pytest.MonkeyPatch) -> None:
+    """A Whisper daemon a test's ``knic say`` leaves (knic.language.whisperd) goes 20 s after its last use,
+    not 10 minutes: the suite leaves no process behind for long."""
+    from knic.language.whisperd import IDLE_ENV
+
+    monkeypatch.setenv(IDLE_ENV, "20")
+
+
 @pytest.fixture(scope="session")
 def erl_world() -> tuple[Any, Vocabulary]:
     """(knowledge base, vocabulary) of worlds/erl_home (read-only: tests that write build their own KB)."""

@@ -4,11 +4,13 @@ from __future__ import annotations
 
 import json
 import tempfile
+import time
 from pathlib import Path
 
 import pytest
 
 from knic.cli import main
+from knic.language import whisperd
 
 from .conftest import SPEECH_FIXTURES
 
@@ -61,6 +63,13 @@ def test_say_remembers_the_model_and_hears_the_same_the_next_time(
     first = json.loads(capsys.readouterr().out)
     kept = sorted(p.name for p in tmp_path.glob("knic-oneshot-*"))
     assert len(kept) == 3 and any(n.endswith("-vocabulary.json") for n in kept)
+    # a Whisper daemon keeps the model loaded for the next command (knic.language.whisperd)
+    (note,) = tmp_path.glob("knic-*/world-*.whisper")
+    daemon = whisperd.remembered_socket(note.stem.removeprefix("world-"))
+    deadline = time.monotonic() + 60.0
+    while not whisperd.running(daemon) and time.monotonic() < deadline:
+        time.sleep(0.05)
+    assert whisperd.running(daemon)
     assert main(["say", wav, "--json"]) == 0
     second = json.loads(capsys.readouterr().out)
     assert second["transcript"] == first["transcript"] == "bring me my glasses"
