@@ -78,6 +78,27 @@ def _word_lists() -> tuple[frozenset[str], tuple[str, ...], frozenset[str]]:
     return frozenset(lists[0]), tuple(sorted(lists[1], key=len, reverse=True)), frozenset(lists[2])
 
 
+@lru_cache(maxsize=1)
+def english_nearer() -> tuple[frozenset[str], ...]:
+    """The nearer subsets of ``synonyms.yaml`` (``nearer``: the bathroom's words, the toilet's), read once.
+
+    Raises:
+        LanguageError: not a list of sets of phrases.
+    """
+    data = read_yaml(_FILE, "synonyms", LanguageError) or {}
+    raw = data.get("nearer", []) if isinstance(data, dict) else []
+    if not isinstance(raw, list) or not all(
+        isinstance(group, list) and all(isinstance(p, str) and p.split() for p in group) for group in raw
+    ):
+        raise LanguageError(f"{_FILE}: 'nearer' is a list of sets of phrases")
+    return tuple(frozenset(" ".join(p.lower().split()) for p in group) for group in raw)
+
+
+def contains(words: Sequence[str], part: Sequence[str]) -> bool:
+    """Whether ``part`` is a run of whole words of ``words``."""
+    return any(list(words[i : i + len(part)]) == list(part) for i in range(len(words) - len(part) + 1))
+
+
 def containers() -> frozenset[str]:
     """The container words of ``synonyms.yaml`` ("bottle", "carton"): a name ending in one is what it
     holds."""

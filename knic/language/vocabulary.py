@@ -20,7 +20,7 @@ from typing import Any, Protocol
 
 from core.errors import LanguageError
 from core.inputs import read_yaml
-from knic.language.shortnames import short_names
+from knic.language.shortnames import contains, english_nearer, short_names
 
 #: Number words for 0..100, enough for percent levels.
 UNIT_WORDS = [
@@ -225,8 +225,14 @@ def _synonym_variants(terms: Sequence[Term], synonyms: Sequence[Sequence[str]]) 
     would make "the laptop" name the tablet. A longer name's last word is not replaced by one that ends a name
     of another thing of the world: where the office has "blinds" and the bedroom "curtains", the world tells
     them apart by that word, so the office blinds are no "office curtains" and "the curtains" are the
-    bedroom's."""
+    bedroom's. A word of a nearer subset (:func:`english_nearer`) is not given to a thing said with a word of
+    another where the world names something else with a word of its own subset: where a flat has a toilet
+    and a wet room, the toilet is no "bathroom"."""
     taken = {t.phrase for t in terms}
+    nearer = english_nearer()
+    owners = [
+        {t.symbol for t in terms if any(contains(t.phrase.split(), p.split()) for p in g)} for g in nearer
+    ]
     heads: dict[str, set[str]] = {}  # the last word of a longer name -> the things named so
     for t in terms:
         if len(t.phrase.split()) > 1:
@@ -247,6 +253,10 @@ def _synonym_variants(terms: Sequence[Term], synonyms: Sequence[Sequence[str]]) 
                 for other in members:
                     phrase = " ".join([*words[:i], *other, *words[i + len(said) :]])
                     told_apart = last and bool(heads.get(other[-1], set()) - {term.symbol})
+                    told_apart = told_apart or any(
+                        " ".join(other) in group and " ".join(said) not in group and owners[k] - {term.symbol}
+                        for k, group in enumerate(nearer)
+                    )
                     if other != said and phrase not in taken and not told_apart:
                         taken.add(phrase)
                         out.append(Term(phrase, term.symbol, term.type, term.members, given=True))
