@@ -50,6 +50,7 @@ from knic.language.segments import (
     statements_dropped,
 )
 from knic.language.selecting import described
+from knic.language.shortnames import contains
 from knic.language.terse import for_asker, room_alone, told_read
 from knic.language.tidy import (
     SEGMENT_END,
@@ -537,7 +538,10 @@ class Reader:
         if place.symbol in self.vocabulary.locations.get(term.symbol, ()):
             return True
         if self.is_a(term, "device"):
-            return place.symbol in term.symbol or place.phrase in term.phrase
+            # whole words: the den's lamp is no "garden room reading lamp"
+            return contains(term.symbol.split("_"), place.symbol.split("_")) or contains(
+                term.phrase.split(), place.phrase.split()
+            )
         return False
 
 

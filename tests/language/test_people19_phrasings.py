@@ -5,7 +5,9 @@
   room" for a conservatory, "wellies" for wellington boots, "the hall" for a passage or corridor;
 * the words of a nearer subset of synonyms (``nearer`` in ``synonyms.yaml``): where a flat has a toilet and a
   wet room, "the bathroom" is the wet room and "the loo" the toilet; where it has only a bathroom, "the loo"
-  is still the bathroom.
+  is still the bathroom;
+* a device is in a room its name says in whole words only: the den's lamp is the "den reading lamp", not the
+  conservatory's, though that one is also the "garden room reading lamp".
 """
 
 from __future__ import annotations
@@ -81,3 +83,13 @@ def test_no_light_in_the_toilet_is_refused(flat: Vocabulary) -> None:
     result = understand("turn on the light in the loo", flat, speaker="margaret")
     assert not result.accepted
     assert "light" in result.reason
+
+
+@pytest.mark.parametrize(
+    ("text", "state"),
+    [("lamp on in the den", "on"), ("lamp of den, switch off", "off"), ("turn on the lamp in the den", "on")],
+)
+def test_a_room_in_a_device_name_is_whole_words(flat: Vocabulary, text: str, state: str) -> None:
+    assert frames_read(flat, text, "josh") == [
+        {"frame": "OPERATING", "device": "den_reading_lamp", "state": state}
+    ]
