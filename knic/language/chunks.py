@@ -39,6 +39,24 @@ class Chunk:
     soft: bool = False  # verb said as "-ing" ("getting"): its clause may be talk ("it's getting late")
 
 
+def singulars(word: str) -> list[str]:
+    """The singular of a plural word beyond a dropped "s" ("lollies": lolly, "shelves": shelf, "boxes": box);
+    none for a word ending in "sses" ("glasses" may be a pair)."""
+    if word.endswith("ies") and len(word) > 4:
+        return [word[:-3] + "y"]
+    if word.endswith("lves"):
+        return [word[:-3] + "f"]
+    if word.endswith(("xes", "ches", "shes")):
+        return [word[:-2]]
+    return []
+
+
+def _forms(word: str) -> tuple[str, ...]:
+    """A name's last word and its singulars ("shelves": shelves, shelve, shelf)."""
+    plural = word.endswith("s") and not word.endswith("ss")
+    return (word, *([word[:-1], *singulars(word)] if plural else ()))
+
+
 def past_determiners(chunks: Sequence[Chunk], at: int) -> int:
     """The index of the first chunk from ``at`` that is no determiner (``len(chunks)`` when none is)."""
     while at < len(chunks) and chunks[at].kind == "det":
@@ -58,21 +76,40 @@ class Chunker:
             if term.type == "level":
                 continue
             self._full.setdefault(term.phrase, []).append(term)
+        # a name only given (a synonym, a shorter name) that is the last word of another thing's own name
+        # is a last word like it: "the chair" is the wicker chair or the gaming chair, not (by "armchair")
+        # the armchair alone
+        own_last: dict[str, set[str]] = {}
+        for t in vocabulary.terms:
+            if not t.given and len(t.phrase.split()) > 1:
+                for form in _forms(t.phrase.split()[-1]):
+                    own_last.setdefault(form, set()).add(t.symbol)
+        given = {
+            p: ts
+            for p, ts in self._full.items()
+            if all(t.given for t in ts) and own_last.get(p, set()) - {t.symbol for t in ts}
+        }
+        for phrase in given:
+            del self._full[phrase]
+            self._partial[phrase] = list(given[phrase])
         for term in vocabulary.terms:
             words = term.phrase.split()
             if term.type == "level" or term.is_group:
                 continue
-            # plurals of a name, and the singular of a plural name ("a car key" for the car keys)
+            # plurals of a name, and the singular of a plural name ("a car key" for the car keys, "an ice
+            # lolly" for the ice lollies, "the curtain" for the bedroom curtains)
             plural = term.phrase.endswith("s") and not term.phrase.endswith("ss")
             variants = [term.phrase[:-1]] if plural else [term.phrase + "s", term.phrase + "es"]
+            variants += [" ".join([*words[:-1], one]) for one in singulars(words[-1])]
             if len(words) > 1:
                 variants.append(words[-1])
-                variants += [words[-1] + "s"] if not words[-1].endswith("s") else []
+                plural_last = words[-1].endswith("s") and not words[-1].endswith("ss")
+                variants += [words[-1][:-1], *singulars(words[-1])] if plural_last else [words[-1] + "s"]
             for variant in variants:
                 if variant not in self._full:
                     self._partial.setdefault(variant, []).append(term)
         for variant, terms in self._partial.items():  # "the table": the dining table, not a "bedside table"
-            own = {t.symbol for t in terms if not t.given and t.phrase.split()[-1] == variant}
+            own = {t.symbol for t in terms if not t.given and variant in _forms(t.phrase.split()[-1])}
             if own and any(t.symbol not in own for t in terms):
                 self._partial[variant] = [t for t in terms if t.symbol in own]
         named: dict[str, Term] = {}  # one term per single thing, for the nouns of its type

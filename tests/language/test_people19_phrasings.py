@@ -7,7 +7,12 @@
   wet room, "the bathroom" is the wet room and "the loo" the toilet; where it has only a bathroom, "the loo"
   is still the bathroom;
 * a device is in a room its name says in whole words only: the den's lamp is the "den reading lamp", not the
-  conservatory's, though that one is also the "garden room reading lamp".
+  conservatory's, though that one is also the "garden room reading lamp";
+* the singular of a plural name beyond a dropped "s" ("an ice lolly", "the shelf" for the pantry shelves) and
+  of its last word ("open curtain of bedroom");
+* a name only given (a synonym, a shorter name) that is the last word of another thing's own name is a last
+  word like it: "the chair" asks between the wicker chair and the gaming chair (the armchair is a "chair"
+  only by its one-word name), "the shelf in the pantry" is the pantry shelves, not the bookshelf.
 """
 
 from __future__ import annotations
@@ -19,7 +24,7 @@ import pytest
 from knic.language import understand
 from knic.language.vocabulary import Vocabulary
 
-from .conftest import frames_read
+from .conftest import assert_asked, frames_read
 
 GARDEN_FLAT = "tests/fixtures/language/people19/garden_flat.yaml"
 
@@ -93,3 +98,35 @@ def test_a_room_in_a_device_name_is_whole_words(flat: Vocabulary, text: str, sta
     assert frames_read(flat, text, "josh") == [
         {"frame": "OPERATING", "device": "den_reading_lamp", "state": state}
     ]
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        ("can i have an ice lolly", [{"frame": "BRINGING", "theme": "ice_lollies", "beneficiary": "me"}]),
+        (
+            "robot, open curtain of bedroom",
+            [{"frame": "OPERATING", "device": "bedroom_curtains", "state": "open"}],
+        ),
+        (
+            "put the biscuits on the shelf in the pantry",
+            [{"frame": "PLACING", "theme": "biscuits", "goal": "pantry_shelves"}],
+        ),
+        ("go to the armchair", [{"frame": "MOTION", "goal": "armchair"}]),
+    ],
+)
+def test_singulars_and_last_words(flat: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
+    assert frames_read(flat, text, "priya") == frames
+
+
+def test_the_chair_is_asked_about(flat: Vocabulary) -> None:
+    assert_asked(flat, "go to the chair", "chair", "priya")
+
+
+@pytest.mark.parametrize(
+    "text",
+    ["an of soda a a a a", "a of the the lollie the", "curtain a the of", "shelf shelf the a", "a the chair"],
+)
+def test_word_salad_stays_refused(flat: Vocabulary, vocabulary: Vocabulary, text: str) -> None:
+    for world in (flat, vocabulary):
+        assert not understand(text, world, speaker="priya").accepted
