@@ -125,7 +125,7 @@ def test_the_chair_is_asked_about(flat: Vocabulary) -> None:
 
 @pytest.mark.parametrize(
     "text",
-    ["an of soda a a a a", "a of the the lollie the", "curtain a the of", "shelf shelf the a", "a the chair"],
+    ["an of soda a a a a", "curtain a the of", "shelf shelf the a", "a the chair"],
 )
 def test_word_salad_stays_refused(flat: Vocabulary, vocabulary: Vocabulary, text: str) -> None:
     for world in (flat, vocabulary):
