@@ -230,7 +230,8 @@ def _sought_just_before(groups: list[Frames]) -> list[str]:
 
 def _landmarks_passed(reader: Resolver, args: list[Arg]) -> None:
     """Objects said only to show where, before the place they stand on ("put the stapler beside the laptop on
-    the desk", "the keys behind the laptop on the desk"): the place said after them is meant."""
+    the desk", "the keys behind the laptop on the desk"): the place said after them is meant. An object said
+    only beside another with no place after ("the crossword next to the magnifying glass") says no place."""
     for index, arg in enumerate(args):
         terms = arg.chunk.terms
         if (
@@ -238,9 +239,15 @@ def _landmarks_passed(reader: Resolver, args: list[Arg]) -> None:
             and not arg.consumed
             and terms
             and all(reader.is_a(t, "item") for t in terms)
-            and any(
-                a.prep in ("place", "goal", "source") and _names_only_places(reader, a)
-                for a in args[index + 1 :]
+            and (
+                any(
+                    a.prep in ("place", "goal", "source") and _names_only_places(reader, a)
+                    for a in args[index + 1 :]
+                )
+                or (
+                    arg.prep_text not in reader.language.containment
+                    and any(a.prep is None and not a.consumed for a in args[:index])
+                )
             )
         ):
             arg.consumed = True

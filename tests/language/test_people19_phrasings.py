@@ -12,7 +12,9 @@
   of its last word ("open curtain of bedroom");
 * a name only given (a synonym, a shorter name) that is the last word of another thing's own name is a last
   word like it: "the chair" asks between the wicker chair and the gaming chair (the armchair is a "chair"
-  only by its one-word name), "the shelf in the pantry" is the pantry shelves, not the bookshelf.
+  only by its one-word name), "the shelf in the pantry" is the pantry shelves, not the bookshelf;
+* an object said only beside another, with no place after ("the crossword next to the magnifying glass"), says
+  no place: the thing is sought or fetched wherever it is.
 """
 
 from __future__ import annotations
@@ -130,3 +132,28 @@ def test_the_chair_is_asked_about(flat: Vocabulary) -> None:
 def test_word_salad_stays_refused(flat: Vocabulary, vocabulary: Vocabulary, text: str) -> None:
     for world in (flat, vocabulary):
         assert not understand(text, world, speaker="priya").accepted
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        (
+            "bring me the crossword next to the magnifying glass",
+            [{"frame": "BRINGING", "theme": "crossword", "beneficiary": "me"}],
+        ),
+        ("find the address book by the phone", [{"frame": "SEARCHING", "theme": "address_book"}]),
+        (
+            "bring me the remote next to the armchair",
+            [{"frame": "BRINGING", "theme": "tv_remote", "source": "armchair", "beneficiary": "me"}],
+        ),
+    ],
+)
+def test_an_object_as_a_landmark_says_no_place(
+    flat: Vocabulary, text: str, frames: list[dict[str, str]]
+) -> None:
+    assert frames_read(flat, text, "margaret") == frames
+
+
+def test_an_object_as_where_a_thing_goes_is_still_no_place(flat: Vocabulary) -> None:
+    result = understand("put the crossword next to the magnifying glass", flat, speaker="margaret")
+    assert not result.accepted
