@@ -76,7 +76,7 @@ def _carry(
         reader.narrow(args)
     if kind == "PLACING":  # "move the stapler on the desk to the workbench": from the desk
         placed_from(reader.vocabulary, args)
-    _landmarks_passed(reader, args)
+    _landmarks_passed(reader, args, beside=kind != "PLACING")
     themes: list[str] = []
     roles: dict[str, str] = {}
     # where each object is taken from: "the remote from the living room and the glasses from the bedroom"
@@ -193,7 +193,7 @@ def _verb(clause: Clause) -> str:
 def _searching(reader: Resolver, clause: Clause, previous: Frames, groups: list[Frames]) -> Frames:
     args = list(clause.args)
     reader.narrow(args)
-    _landmarks_passed(reader, args)
+    _landmarks_passed(reader, args, beside=True)
     themes: list[str] = []
     ground: str | None = None
     # "check the kitchen for the lemon": the thing looked for after "for", the place said bare
@@ -228,10 +228,11 @@ def _sought_just_before(groups: list[Frames]) -> list[str]:
     return [str(frame.get("theme")) for frame in latest if frame.get("theme")]
 
 
-def _landmarks_passed(reader: Resolver, args: list[Arg]) -> None:
+def _landmarks_passed(reader: Resolver, args: list[Arg], *, beside: bool) -> None:
     """Objects said only to show where, before the place they stand on ("put the stapler beside the laptop on
-    the desk", "the keys behind the laptop on the desk"): the place said after them is meant. An object said
-    only beside another with no place after ("the crossword next to the magnifying glass") says no place."""
+    the desk", "the keys behind the laptop on the desk"): the place said after them is meant. With ``beside``,
+    an object said only beside another with no place after ("the crossword next to the magnifying glass") says
+    no place (not where a thing is put: "put the stapler beside the laptop" is still refused)."""
     for index, arg in enumerate(args):
         terms = arg.chunk.terms
         if (
@@ -245,7 +246,8 @@ def _landmarks_passed(reader: Resolver, args: list[Arg]) -> None:
                     for a in args[index + 1 :]
                 )
                 or (
-                    arg.prep_text not in reader.language.containment
+                    beside
+                    and arg.prep_text not in reader.language.containment
                     and any(a.prep is None and not a.consumed for a in args[:index])
                 )
             )
