@@ -19,6 +19,7 @@ the third person (used by :class:`knic.language.reader.Reader` and :mod:`knic.la
 from __future__ import annotations
 
 from collections.abc import Sequence
+from dataclasses import replace
 from itertools import pairwise
 
 from core.errors import LanguageError
@@ -206,6 +207,8 @@ def _verb_of(word: str, chunker: Chunker) -> str | None:
 def switched_only(vocabulary: Vocabulary, arg: Arg, args: list[Arg], levelled: bool) -> None:
     """A level asked of lights said with their room ("set the bedroom light to 40", "turn the light in the
     bedroom up a bit") where only a dimmer elsewhere could take one: refused, not another room's dimmer.
+    The lights of a room said together where the room has a dimmer ("dim the lights in the lounge to 30"):
+    its dimmer.
 
     Raises:
         LanguageError: the room's lights named can only be switched on or off.
@@ -218,7 +221,18 @@ def switched_only(vocabulary: Vocabulary, arg: Arg, args: list[Arg], levelled: b
         for a in args
         if a.consumed and a.chunk.terms and all(vocabulary.is_subtype(t.type, "room") for t in a.chunk.terms)
     ]
-    if rooms:
+    said = {t.symbol for a in rooms for t in a.chunk.terms}
+    dimmers = {
+        t.symbol: t
+        for t in vocabulary.terms
+        if vocabulary.is_subtype(t.type, "dimmer")
+        and not t.is_group
+        and said & set(vocabulary.locations.get(t.symbol, ()))
+    }
+    if rooms and dimmers and arg.quantity == "all":  # the room's lights said together: its dimmers
+        arg.chunk = replace(arg.chunk, terms=tuple(dimmers.values()))
+        arg.quantity = None if len(dimmers) == 1 else arg.quantity
+    elif rooms:
         raise LanguageError(
             f"the {rooms[0].chunk.text} {arg.chunk.text} can only be switched on or off: say on or off"
         )

@@ -14,7 +14,9 @@
   word like it: "the chair" asks between the wicker chair and the gaming chair (the armchair is a "chair"
   only by its one-word name), "the shelf in the pantry" is the pantry shelves, not the bookshelf;
 * an object said only beside another, with no place after ("the crossword next to the magnifying glass"), says
-  no place: the thing is sought or fetched wherever it is.
+  no place: the thing is sought or fetched wherever it is;
+* a level asked of a room's lights said together where the room has a dimmer ("dim the lights in the lounge
+  to 30 percent"): the dimmer; a room without one still refuses.
 """
 
 from __future__ import annotations
@@ -29,19 +31,25 @@ from knic.language.vocabulary import Vocabulary
 from .conftest import assert_asked, frames_read
 
 GARDEN_FLAT = "tests/fixtures/language/people19/garden_flat.yaml"
+TOWNHOUSE = "tests/fixtures/language/people18/townhouse.yaml"
 
 
-@pytest.fixture(scope="module")
-def flat() -> Vocabulary:
-    """The garden flat's vocabulary, as the language bench and ``knic goal --world`` read it."""
+def _world(file: str) -> Vocabulary:
+    """A world file's vocabulary, as the language bench and ``knic goal --world`` read it."""
     from pathlib import Path
 
     from knic.cli.goal import world_vocabulary
     from knic.language.world import DEFAULT_DOMAIN
 
-    path = Path(__file__).resolve().parents[2] / GARDEN_FLAT
+    path = Path(__file__).resolve().parents[2] / file
     vocabulary: Any = world_vocabulary(str(path), DEFAULT_DOMAIN, None)[0]
     return vocabulary
+
+
+@pytest.fixture(scope="module")
+def flat() -> Vocabulary:
+    """The garden flat's vocabulary."""
+    return _world(GARDEN_FLAT)
 
 
 @pytest.mark.parametrize(
@@ -157,3 +165,27 @@ def test_an_object_as_a_landmark_says_no_place(
 def test_an_object_as_where_a_thing_goes_is_still_no_place(flat: Vocabulary) -> None:
     result = understand("put the crossword next to the magnifying glass", flat, speaker="margaret")
     assert not result.accepted
+
+
+@pytest.mark.parametrize(
+    ("world", "text", "device", "state"),
+    [
+        (GARDEN_FLAT, "dim the lights in the lounge to 30 percent", "standard_lamp", "30"),
+        (GARDEN_FLAT, "set the lights in the sitting room to half", "standard_lamp", "50"),
+        (TOWNHOUSE, "dim the lights in the living room to 40", "floor_lamp", "40"),
+    ],
+)
+def test_a_rooms_lights_at_a_level_are_its_dimmer(world: str, text: str, device: str, state: str) -> None:
+    speaker = "margaret" if world == GARDEN_FLAT else "nadia"
+    assert frames_read(_world(world), text, speaker) == [
+        {"frame": "OPERATING", "device": device, "state": state}
+    ]
+
+
+@pytest.mark.parametrize(
+    "text", ["dim the lights in the bedroom to 30 percent", "set the ceiling light in the lounge to 40"]
+)
+def test_lights_without_a_dimmer_at_a_level_still_refused(flat: Vocabulary, text: str) -> None:
+    result = understand(text, flat, speaker="margaret")
+    assert not result.accepted
+    assert "on or off" in result.reason
