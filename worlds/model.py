@@ -310,8 +310,11 @@ class World:
         return [(d.rooms[0], d.rooms[1]) for d in self.doors if len(d.rooms) == 2]
 
     def entrances(self) -> list[str]:
-        """The rooms a door to the outside (a front door) opens into, each once, in file order."""
-        return list(dict.fromkeys(d.rooms[0] for d in self.doors if len(d.rooms) == 1))
+        """The rooms a door to the outside (a front door) opens into, each once, in file order; where several
+        do, the one with the doorbell, if only one has a bell (a garden door is no front door)."""
+        rooms = list(dict.fromkeys(d.rooms[0] for d in self.doors if len(d.rooms) == 1))
+        rung = [r for r in rooms if any(d.kind == "bell" and d.room == r for d in self.devices.values())]
+        return rung if len(rooms) > 1 and len(rung) == 1 else rooms
 
     def bounds(self) -> tuple[float, float, float, float]:
         """``(xmin, ymin, xmax, ymax)`` of all room polygons."""

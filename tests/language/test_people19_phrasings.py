@@ -16,7 +16,9 @@
 * an object said only beside another, with no place after ("the crossword next to the magnifying glass"), says
   no place: the thing is sought or fetched wherever it is;
 * a level asked of a room's lights said together where the room has a dimmer ("dim the lights in the lounge
-  to 30 percent"): the dimmer; a room without one still refuses.
+  to 30 percent"): the dimmer; a room without one still refuses;
+* where doors to the outside open into several rooms, the front door is the one with the doorbell (the
+  conservatory's garden door is none).
 """
 
 from __future__ import annotations
@@ -189,3 +191,10 @@ def test_lights_without_a_dimmer_at_a_level_still_refused(flat: Vocabulary, text
     result = understand(text, flat, speaker="margaret")
     assert not result.accepted
     assert "on or off" in result.reason
+
+
+def test_the_front_door_is_where_the_doorbell_is(flat: Vocabulary) -> None:
+    from worlds.loader import load_world
+
+    assert load_world(GARDEN_FLAT).entrances() == ["porch"]
+    assert frames_read(flat, "go to the front door", "margaret") == [{"frame": "MOTION", "goal": "porch"}]
