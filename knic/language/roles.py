@@ -297,6 +297,9 @@ def _motion(reader: Resolver, clause: Clause, previous: Frames, groups: list[Fra
         ):
             raise LanguageError(f"{_verb(clause)} where? the {arg.chunk.text} is not a room or furniture")
     places = [a for a in args if not a.consumed and a.prep in ("goal", "place", "level", None)]
+    way = [w for w in (*clause.unknown, *clause.missing) if w in _FLOORS]
+    if not places and way:  # "go upstairs": a world file says no floors
+        raise LanguageError(f"{_verb(clause)} {way[0]} to which room? I do not know what is {way[0]} here")
     if not places:
         raise LanguageError(f"{_verb(clause)} where? I heard no room or furniture of this world")
     target = places[-1]
@@ -319,6 +322,10 @@ def _motion(reader: Resolver, clause: Clause, previous: Frames, groups: list[Fra
     if others:
         return [CommandFrame("ACCOMPANYING", {"theme": p, "goal": goal}) for p in dict.fromkeys(others)]
     return [CommandFrame("MOTION", {"goal": goal})]
+
+
+#: words of another floor, said where a room is meant
+_FLOORS = frozenset({"upstairs", "downstairs"})
 
 
 def _operating(reader: Resolver, clause: Clause, previous: Frames, groups: list[Frames]) -> Frames:

@@ -18,7 +18,8 @@
 * a level asked of a room's lights said together where the room has a dimmer ("dim the lights in the lounge
   to 30 percent"): the dimmer; a room without one still refuses;
 * where doors to the outside open into several rooms, the front door is the one with the doorbell (the
-  conservatory's garden door is none).
+  conservatory's garden door is none);
+* "go upstairs" where the world says no floors is refused naming the word.
 """
 
 from __future__ import annotations
@@ -198,3 +199,12 @@ def test_the_front_door_is_where_the_doorbell_is(flat: Vocabulary) -> None:
 
     assert load_world(GARDEN_FLAT).entrances() == ["porch"]
     assert frames_read(flat, "go to the front door", "margaret") == [{"frame": "MOTION", "goal": "porch"}]
+
+
+@pytest.mark.parametrize(
+    ("text", "word"), [("go upstairs", "upstairs"), ("go downstairs please", "downstairs")]
+)
+def test_another_floor_is_refused_naming_it(flat: Vocabulary, text: str, word: str) -> None:
+    result = understand(text, flat, speaker="margaret")
+    assert not result.accepted
+    assert word in result.reason
