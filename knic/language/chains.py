@@ -138,14 +138,17 @@ def chain(
     waypoints: set[int] = set()
     for index, frame in enumerate(out):
         later = out[index + 1 :]
-        if frame.kind == "MOTION" and later:
-            nxt = later[0]
+        # the next action on a thing, past devices operated there ("go to the den, switch on the lamp there
+        # and bring arthur his atlas": from the den)
+        at = next((index + 1 + k for k, f in enumerate(later) if f.kind != "OPERATING"), None)
+        if frame.kind == "MOTION" and at is not None:
+            nxt = out[at]
             role = "ground" if nxt.kind == "SEARCHING" else "source"
             theme = nxt.get("theme")
             said = nxt.get(role) in (None, frame["goal"])  # "go to the kitchen and find the cup (there)"
             place = not vocabulary.is_subtype(vocabulary.type_of(frame["goal"]) or "", "person")
             if nxt.kind in ("SEARCHING", "TAKING", "BRINGING") and said and theme and place:
-                out[index + 1] = CommandFrame(nxt.kind, {**nxt.args, role: frame["goal"]})
+                out[at] = CommandFrame(nxt.kind, {**nxt.args, role: frame["goal"]})
                 waypoints.add(index)
             elif any(f.kind == "MOTION" for f in later):
                 # "go to the garage, then come back", "go to the lounge, switch the dimmer off, then come to

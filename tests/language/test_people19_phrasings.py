@@ -19,7 +19,9 @@
   to 30 percent"): the dimmer; a room without one still refuses;
 * where doors to the outside open into several rooms, the front door is the one with the doorbell (the
   conservatory's garden door is none);
-* "go upstairs" where the world says no floors is refused naming the word.
+* "go upstairs" where the world says no floors is refused naming the word;
+* a place gone to is where the next action on a thing happens, past devices operated there ("go to the den,
+  switch on the reading lamp there, and bring arthur his atlas": from the den).
 """
 
 from __future__ import annotations
@@ -208,3 +210,13 @@ def test_another_floor_is_refused_naming_it(flat: Vocabulary, text: str, word: s
     result = understand(text, flat, speaker="margaret")
     assert not result.accepted
     assert word in result.reason
+
+
+def test_a_place_gone_to_passes_devices_operated_there(flat: Vocabulary) -> None:
+    assert frames_read(
+        flat, "go to the den, switch on the reading lamp there, and bring arthur his atlas", "priya"
+    ) == [
+        {"frame": "MOTION", "goal": "den"},
+        {"frame": "OPERATING", "device": "den_reading_lamp", "state": "on"},
+        {"frame": "BRINGING", "theme": "atlas", "source": "den", "beneficiary": "arthur"},
+    ]
