@@ -303,7 +303,7 @@ def start_passes(
         if folder is None:
             return None
         audio = samples()
-        heard = whisperd.ask(whisperd.remembered_socket(key), audio)  # the model kept loaded
+        heard = whisperd.ask(whisperd.remembered_socket(key, folder), audio)  # the model kept loaded
         if heard is None:
             import numpy as np
 

@@ -74,15 +74,19 @@ def socket_path(prompt: str, folder: Path | str | None) -> Path | None:
     return path if len(str(path)) <= _MAX_PATH else None
 
 
-def _socket_note(world: str) -> Path | None:
+def _socket_note(world: str, folder: Path | str | None) -> Path | None:
     own = _own_folder()
-    return own / f"world-{world}.whisper" if own is not None and world.isalnum() else None
+    if own is None or folder is None or not world.isalnum():
+        return None
+    model = hashlib.sha256(str(folder).encode()).hexdigest()[:12]
+    return own / f"world-{world}-{model}.whisper"
 
 
-def remembered_socket(world: str) -> Path | None:
-    """The daemon socket noted for a world key (:func:`knic.language.oneshot.world_key`) by :func:`ensure`:
-    a new ``knic say`` asks the daemon before it has read the world's vocabulary (None: none noted)."""
-    note = _socket_note(world)
+def remembered_socket(world: str, folder: Path | str | None) -> Path | None:
+    """The daemon socket noted by :func:`ensure` for a world key (:func:`knic.language.oneshot.world_key`)
+    and model folder: a new ``knic say`` asks the daemon before it has read the world's vocabulary (None:
+    none noted)."""
+    note = _socket_note(world, folder)
     try:
         path = Path(note.read_text(encoding="utf-8")) if note is not None else None
     except OSError:
@@ -147,8 +151,8 @@ def ensure(prompt: str, folder: Path | str | None, world: str = "") -> int | Non
     path = socket_path(prompt, folder)
     if path is None or idle_s() <= 0:
         return None
-    note = _socket_note(world) if world else None
-    if note is not None and remembered_socket(world) != path:
+    note = _socket_note(world, folder) if world else None
+    if note is not None and remembered_socket(world, folder) != path:
         with contextlib.suppress(OSError):
             note.write_text(str(path), encoding="utf-8")
     if running(path):

@@ -11,6 +11,7 @@ import pytest
 
 from knic.cli import main
 from knic.language import whisperd
+from knic.language.whisperpass import model_dir
 
 from .conftest import SPEECH_FIXTURES
 
@@ -65,7 +66,7 @@ def test_say_remembers_the_model_and_hears_the_same_the_next_time(
     assert len(kept) == 3 and any(n.endswith("-vocabulary.json") for n in kept)
     # a Whisper daemon keeps the model loaded for the next command (knic.language.whisperd)
     (note,) = tmp_path.glob("knic-*/world-*.whisper")
-    daemon = whisperd.remembered_socket(note.stem.removeprefix("world-"))
+    daemon = whisperd.remembered_socket(note.stem.split("-")[1], model_dir())
     deadline = time.monotonic() + 60.0
     while not whisperd.running(daemon) and time.monotonic() < deadline:
         time.sleep(0.05)

@@ -71,7 +71,7 @@ def test_the_daemon_hears_what_whisper_hears_here(daemon: tuple[str, Path, int])
     here = WhisperPass(prompt).hear(np.frombuffer(audio, dtype="<i2"))
     assert whisperd.ask(path, audio) == here
     assert "remote" in here.text.lower()
-    assert whisperd.remembered_socket(WORLD) == path  # a new knic say finds it by the world's key
+    assert whisperd.remembered_socket(WORLD, model_dir()) == path  # a new knic say finds it by its world
     assert whisperd.ensure(prompt, model_dir(), WORLD) is None  # one daemon per prompt
 
 
@@ -101,7 +101,8 @@ def test_the_socket_folder_is_the_users_alone(private_tmp: Path) -> None:
 
 def test_no_daemon_when_turned_off_or_missing(private_tmp: Path, monkeypatch: pytest.MonkeyPatch) -> None:
     assert whisperd.ask(private_tmp / "none.sock", b"\0\0" * 1600) is None
-    assert whisperd.remembered_socket(WORLD) is None
+    assert whisperd.remembered_socket(WORLD, model_dir()) is None
+    assert whisperd.remembered_socket(WORLD, None) is None
     monkeypatch.setenv(whisperd.IDLE_ENV, "0")
     assert whisperd.ensure("a prompt", model_dir(), WORLD) is None
     assert list((private_tmp / f"knic-{os.getuid()}").iterdir()) == []
