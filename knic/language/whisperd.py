@@ -26,7 +26,7 @@ import tempfile
 from pathlib import Path
 
 from core.errors import LanguageError
-from knic.language.whisperpass import FRAME, Heard, WhisperPass, heard_of
+from knic.language.whisperpass import FRAME, Heard, WhisperPass, framed_reply, heard_of
 
 #: seconds the daemon waits for a request before it leaves (``KNIC_WHISPER_IDLE_S`` overrides; 0: no daemon)
 IDLE_S = 600.0
@@ -209,19 +209,11 @@ def _still_mine(path: Path, inode: int) -> bool:
 
 def _answer(conn: socket.socket, whisper: WhisperPass) -> None:
     """Read one request from ``conn`` and write Whisper's answer (null when it cannot hear it)."""
-    import numpy as np
-
     conn.settimeout(ASK_TIMEOUT_S)
     try:
         data = _read_frame(conn, MAX_REQUEST_BYTES)
-        if data is None:
-            return
-        try:
-            heard = whisper.hear(np.frombuffer(data, dtype="<i2"))
-            reply = json.dumps([heard.text, heard.mean_log_prob]).encode()
-        except (LanguageError, ValueError, RuntimeError):
-            reply = b"null"
-        conn.sendall(FRAME.pack(len(reply)) + reply)
+        if data is not None:
+            conn.sendall(framed_reply(whisper, data))
     except OSError:
         return
 

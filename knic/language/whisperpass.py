@@ -356,7 +356,6 @@ def _stop_server(process: subprocess.Popen[bytes]) -> None:
 def serve(prompt: str, folder: str) -> None:
     """The server's loop: utterances in on stdin, ``[text, mean log-prob]`` (or null) out on stdout, framed
     by :data:`FRAME`, until stdin closes."""
-    import numpy as np
 
     whisper = WhisperPass(prompt, folder=Path(folder) if folder else None, threads=SERVER_THREADS)
     requests, replies = sys.stdin.buffer, sys.stdout.buffer
@@ -368,14 +367,21 @@ def serve(prompt: str, folder: str) -> None:
         header = requests.read(FRAME.size)
         if len(header) < FRAME.size:
             return
-        data = requests.read(FRAME.unpack(header)[0])
-        try:
-            heard = whisper.hear(np.frombuffer(data, dtype="<i2"))
-            reply = json.dumps([heard.text, heard.mean_log_prob]).encode()
-        except (LanguageError, ValueError, RuntimeError):
-            reply = b"null"
-        replies.write(FRAME.pack(len(reply)) + reply)
+        replies.write(framed_reply(whisper, requests.read(FRAME.unpack(header)[0])))
         replies.flush()
+
+
+def framed_reply(whisper: WhisperPass, data: bytes) -> bytes:
+    """The answer to one request (raw 16 kHz 16-bit PCM), framed: ``[text, mean log-prob]`` as JSON, or null
+    when Whisper cannot hear it."""
+    import numpy as np
+
+    try:
+        heard = whisper.hear(np.frombuffer(data, dtype="<i2"))
+        reply = json.dumps([heard.text, heard.mean_log_prob]).encode()
+    except (LanguageError, ValueError, RuntimeError):
+        reply = b"null"
+    return FRAME.pack(len(reply)) + reply
 
 
 class Opinion:
