@@ -18,7 +18,8 @@ from knic.language.vocabulary import normalize
 
 _OPENING = r"(?:(?:oh|well|gosh|hmm|ugh|robot)\s+)*"
 _DEGREE = (
-    r"(?:(?:so|too|far|way|very|really|rather|quite|pretty|a bit|a little|awfully|terribly|getting)\s+)*"
+    r"(?:(?:so|too|far|way|very|really|rather|quite|pretty|a bit|a little|awfully|terribly|getting|ever so"
+    r"|pitch|a tad|dreadfully|horribly)\s+)*"
 )
 _DARK = re.compile(
     rf"^{_OPENING}(?:it's|its|it is)\s+{_DEGREE}dark\s+(?:in|inside|on|out on|up on|down in)\s+"

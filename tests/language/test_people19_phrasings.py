@@ -21,7 +21,10 @@
   conservatory's garden door is none);
 * "go upstairs" where the world says no floors is refused naming the word;
 * a place gone to is where the next action on a thing happens, past devices operated there ("go to the den,
-  switch on the reading lamp there, and bring arthur his atlas": from the den).
+  switch on the reading lamp there, and bring arthur his atlas": from the den);
+* more of an older speaker's indirect English (``commands.yaml``, in text only): "it's ever so dark in the
+  pantry" (and "pitch dark"), "I don't suppose there's any chance of a biscuit", "I fancy a biscuit", "I've no
+  idea where the tv remote has got to".
 """
 
 from __future__ import annotations
@@ -220,3 +223,36 @@ def test_a_place_gone_to_passes_devices_operated_there(flat: Vocabulary) -> None
         {"frame": "OPERATING", "device": "den_reading_lamp", "state": "on"},
         {"frame": "BRINGING", "theme": "atlas", "source": "den", "beneficiary": "arthur"},
     ]
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        (
+            "it's ever so dark in the pantry",
+            [{"frame": "OPERATING", "device": "pantry_light", "state": "on"}],
+        ),
+        (
+            "it's pitch dark in the kitchen",
+            [{"frame": "OPERATING", "device": "kitchen_light", "state": "on"}],
+        ),
+        (
+            "I don't suppose there's any chance of a biscuit",
+            [{"frame": "BRINGING", "theme": "biscuits", "beneficiary": "me"}],
+        ),
+        ("i fancy a biscuit", [{"frame": "BRINGING", "theme": "biscuits", "beneficiary": "me"}]),
+        (
+            "I've been sat here all afternoon and I've no idea where the tv remote has got to",
+            [{"frame": "SEARCHING", "theme": "tv_remote"}],
+        ),
+    ],
+)
+def test_an_older_speakers_indirect_english(
+    flat: Vocabulary, text: str, frames: list[dict[str, str]]
+) -> None:
+    assert frames_read(flat, text, "margaret") == frames
+
+
+@pytest.mark.parametrize("text", ["any chance of of a a", "no idea where a the of", "i fancy the a of"])
+def test_indirect_openings_alone_stay_refused(flat: Vocabulary, text: str) -> None:
+    assert not understand(text, flat, speaker="margaret").accepted
