@@ -113,8 +113,10 @@ def _carry(
             themes += reader.resolve(arg, ("item",), previous, groups)
         elif arg.prep == "beneficiary":
             roles["beneficiary"] = reader.resolve(arg, ("person",), previous, groups)[0]
-            if kind == "TAKING" and roles["beneficiary"] == SPEAKER:
-                del roles["beneficiary"]  # "pick up the blanket for me": a favour, not where it goes
+            if kind == "TAKING" and roles["beneficiary"] == SPEAKER and themes:
+                # "pick up the blanket for me": a favour, not where it goes; "take for me the slippers",
+                # said before the thing as "get me the slippers" is, is whom it is for
+                del roles["beneficiary"]
         elif arg.prep == "source":
             where = reader.resolve(arg, ("room", "furniture"), previous, groups)[0]
             for theme in themes or [""]:

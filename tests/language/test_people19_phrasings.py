@@ -24,7 +24,10 @@
   switch on the reading lamp there, and bring arthur his atlas": from the den);
 * more of an older speaker's indirect English (``commands.yaml``, in text only): "it's ever so dark in the
   pantry" (and "pitch dark"), "I don't suppose there's any chance of a biscuit", "I fancy a biscuit", "I've no
-  idea where the tv remote has got to".
+  idea where the tv remote has got to";
+* "for me" said before the thing taken ("take for me the slippers", as "get me the slippers") is whom it is
+  for; said after it ("pick up the slippers for me") it stays a favour; "i need that you" opens a request as
+  "i want that you" does.
 """
 
 from __future__ import annotations
@@ -256,3 +259,15 @@ def test_an_older_speakers_indirect_english(
 @pytest.mark.parametrize("text", ["any chance of of a a", "no idea where a the of", "i fancy the a of"])
 def test_indirect_openings_alone_stay_refused(flat: Vocabulary, text: str) -> None:
     assert not understand(text, flat, speaker="margaret").accepted
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        ("take for me the slippers", [{"frame": "BRINGING", "theme": "slippers", "beneficiary": "me"}]),
+        ("pick up the slippers for me", [{"frame": "TAKING", "theme": "slippers"}]),
+        ("i need that you search the walking stick", [{"frame": "SEARCHING", "theme": "walking_stick"}]),
+    ],
+)
+def test_learners_word_order(flat: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
+    assert frames_read(flat, text, "priya") == frames
