@@ -288,8 +288,12 @@ class Chunker:
                 i += 1
                 continue
             if best[2] is not None and best[2].kind == "verb" and _owned_noun(out, said[i - 1] if i else ""):
-                # "my walking stick", "the walking frame": a verb's word after "my"/"the" names a thing
-                out.append(Chunk("unknown", " ".join(said[i : i + best[0]]), role=_NOUN))
+                # "my walking stick", "the walking frame": a verb's word after "my"/"the" names a thing, the
+                # one whose name ends in it, if any ("my stick": the walking stick)
+                phrase = " ".join(tokens[i : i + best[0]])
+                ends = self._partial.get(phrase)
+                noun = Chunk("unknown", " ".join(said[i : i + best[0]]), role=_NOUN)
+                out.append(Chunk("entity", phrase, tuple(ends)) if ends else noun)
             elif best[2] is not None:
                 soft = best[2].kind == "verb" and i in inflected
                 out.append(replace(best[2], soft=True) if soft else best[2])

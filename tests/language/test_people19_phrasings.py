@@ -27,7 +27,9 @@
   idea where the tv remote has got to";
 * "for me" said before the thing taken ("take for me the slippers", as "get me the slippers") is whom it is
   for; said after it ("pick up the slippers for me") it stays a favour; "i need that you" opens a request as
-  "i want that you" does.
+  "i want that you" does;
+* a verb's word after "my" or "the" that ends the name of a thing is that thing ("fetch me my stick": the
+  walking stick), while "stick the slippers on the shoe bench" still places.
 """
 
 from __future__ import annotations
@@ -271,3 +273,18 @@ def test_indirect_openings_alone_stay_refused(flat: Vocabulary, text: str) -> No
 )
 def test_learners_word_order(flat: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
     assert frames_read(flat, text, "priya") == frames
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        ("fetch me my stick", [{"frame": "BRINGING", "theme": "walking_stick", "beneficiary": "me"}]),
+        ("bring me the stick", [{"frame": "BRINGING", "theme": "walking_stick", "beneficiary": "me"}]),
+        (
+            "stick the slippers on the shoe bench",
+            [{"frame": "PLACING", "theme": "slippers", "goal": "shoe_bench"}],
+        ),
+    ],
+)
+def test_a_verbs_word_after_my_ends_a_name(flat: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
+    assert frames_read(flat, text, "margaret") == frames
