@@ -80,18 +80,14 @@ class Chunker:
         # is a last word like it: "the chair" is the wicker chair or the gaming chair, not (by "armchair")
         # the armchair alone
         own_last: dict[str, set[str]] = {}
-        any_last: dict[str, set[str]] = {}  # also the last words of given names ("entrance hall")
         for t in vocabulary.terms:
-            if len(t.phrase.split()) > 1 and not t.is_group:
+            if not t.given and len(t.phrase.split()) > 1:
                 for form in _forms(t.phrase.split()[-1]):
-                    any_last.setdefault(form, set()).add(t.symbol)
-                    if not t.given:
-                        own_last.setdefault(form, set()).add(t.symbol)
+                    own_last.setdefault(form, set()).add(t.symbol)
         given = {
             p: ts
             for p, ts in self._full.items()
-            if all(t.given for t in ts)
-            and (own_last.get(p, set()) or any_last.get(p, set())) - {t.symbol for t in ts}
+            if all(t.given for t in ts) and own_last.get(p, set()) - {t.symbol for t in ts}
         }
         for phrase in given:
             del self._full[phrase]
