@@ -14,6 +14,7 @@ BENCHES: dict[str, tuple[str, str]] = {
     "sim": ("knic.bench.sim", "simulator real-time factor and camera frame time"),
     "language": ("knic.bench.language", "text understanding on the development and held-out test sets"),
     "speech": ("knic.bench.speech", "speech recognition and command understanding on the shipped test set"),
+    "startup": ("knic.bench.startup", "knic goal and knic say from a fresh process: wall time to the answer"),
     "grounding": ("knic.bench.grounding", "knowledge-base truth against the simulator's ground truth"),
     "ros": ("knic.bench.ros", "ROS 2: fact-event latency and rate, split run against one process"),
     "granny-annie": (

@@ -24,7 +24,9 @@ from knic.cli.goal import add_world_arguments, load_vocabulary, print_understand
 MAX_AUDIO_BYTES = 32 * 1024 * 1024
 
 if TYPE_CHECKING:
+    from knic.language.lmspeech import NgramRecognizer
     from knic.language.oneshot import Passes
+    from knic.language.vocabulary import Vocabulary
 
 
 def add_arguments(parser: argparse.ArgumentParser) -> None:
@@ -136,8 +138,6 @@ def _run(args: argparse.Namespace, decoder: str, passes: Passes | None) -> int:
             decoded=passes.decoded,
             heard=passes.heard,
         )
-        if ngram.model_files is not None:  # decoded here: no model was remembered for this world
-            oneshot.remember_model(key, *ngram.model_files)
     else:
         model, second = args.acoustic_model, args.second_opinion
         recognizer = command_recognizer(
@@ -146,13 +146,24 @@ def _run(args: argparse.Namespace, decoder: str, passes: Passes | None) -> int:
         transcript = recognizer.recognize(audio)
     result = understand_transcript(transcript, vocabulary, speaker=args.speaker)
     print_understanding(result.to_dict(), args.json)
-    if passes is not None and args.second_opinion:
-        from knic.language import whisperd
-        from knic.language.whisperpass import model_dir, world_prompt
-
-        # the next command of this world asks a daemon that keeps the model loaded
-        whisperd.ensure(world_prompt(vocabulary), model_dir(), key)
+    if passes is not None:
+        _keep_for_the_next(args, ngram, vocabulary, key)
     return 0
+
+
+def _keep_for_the_next(
+    args: argparse.Namespace, ngram: NgramRecognizer, vocabulary: Vocabulary, key: str
+) -> None:
+    """After the answer: the first start in a world keeps its command model (built now if Whisper settled
+    the command without it), and a daemon keeps Whisper's model loaded for the next command."""
+    from knic.language import oneshot, whisperd
+    from knic.language.whisperpass import model_dir, world_prompt
+
+    if oneshot.remembered_model(key) is None:
+        ngram.build()
+        oneshot.remember_model(key, *(ngram.model_files or ("", None)))
+    if args.second_opinion:
+        whisperd.ensure(world_prompt(vocabulary), model_dir(), key)
 
 
 def _or(value: float | None, otherwise: Callable[[], float]) -> float:

@@ -232,15 +232,18 @@ class NgramRecognizer:
         #: Whisper's server (:class:`~knic.language.whisperpass.WhisperServer`), started with the decoders
         self.whisper: WhisperServer | None = None
         if not lazy:
-            self._build()
+            self.build()
+            if self._prompt is not None:
+                self._server()  # it loads the model meanwhile
 
     @property
     def members(self) -> tuple[str | Path, ...]:
         """The acoustic models each utterance is decoded with, the preferred first."""
         return tuple(member.model for member in self._members)
 
-    def _build(self) -> None:
-        """The n-gram decoders (built on first use when the recogniser was made ``lazy``)."""
+    def build(self) -> None:
+        """Build the n-gram decoders now (on first use when the recogniser was made ``lazy``); their files
+        are :attr:`model_files` then."""
         if self._built:
             return
         from pocketsphinx import Decoder, set_loglevel
@@ -276,8 +279,6 @@ class NgramRecognizer:
                 member.decoder, member.initial_cmn = decoder, decoder.get_cmn()
         self._built = True
         self.model_files = ("".join(lines), binary)
-        if self._prompt is not None:
-            self._server()  # it loads the model meanwhile
 
     def phone_loop_of(self, index: int = 0) -> PhoneLoop:
         """The phone-loop pass of a member model, built on first use (it is not needed for speech the reader
@@ -299,7 +300,7 @@ class NgramRecognizer:
     def _decode(self, raw: bytes) -> tuple[int, Decoded]:
         """Every member's n-gram pass (the later members' in their workers meanwhile); the chosen member's
         index and result."""
-        self._build()
+        self.build()
         workers = self._workers or [None] * (len(self._members) - 1)
         request = struct.pack("!I", max(0, self.nbest)) + raw
         sent = [worker is not None and worker.submit(request) for worker in workers]
