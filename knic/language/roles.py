@@ -84,16 +84,30 @@ def _carry(
     said_from: set[str] = set()  # objects whose source a "from" said (a bare "in"/"on" yields to it)
     goals: dict[str, str] = {}  # "the mug to the kitchen and the glass to the dining room"
     bare = [a for a in args if a.prep is None and not a.consumed]
-    first_is_person = bare and (
-        bare[0].chunk.kind == "me"
-        or (bare[0].chunk.kind == "pronoun" and bare[0].chunk.role == "person")
-        or (bare[0].chunk.terms and all(reader.is_a(t, "person") for t in bare[0].chunk.terms))
-    )
+
+    def person(arg: Arg) -> bool:
+        chunk = arg.chunk
+        return (
+            chunk.kind == "me"
+            or (chunk.kind == "pronoun" and chunk.role == "person")
+            or (bool(chunk.terms) and all(reader.is_a(t, "person") for t in chunk.terms))
+        )
+
+    first_is_person = bare and person(bare[0])
+    # "bring tom and nadia a water bottle": each of the people first said is given one
+    also: list[Arg] = []
+    while first_is_person and len(bare) > len(also) + 2 and bare[len(also) + 1].joined:
+        if not person(bare[len(also) + 1]):
+            break
+        also.append(bare[len(also) + 1])
+    for arg in also:
+        bare.remove(arg)
     if (len(bare) >= 2 and not bare[1].joined) or (len(bare) == 1 and first_is_person and kind != "TAKING"):
         # "bring me the glasses", "give Tracy the cup": a person first is who it is for
         try:
             roles["beneficiary"] = reader.resolve(bare[0], ("person",), previous, groups)[0]
-            bare[0].consumed = True
+            for arg in (bare[0], *also):
+                arg.consumed = True
         except LanguageError:
             pass
     to_person = False  # the latest argument said whom the thing goes to ("to granny in the living room")
@@ -173,6 +187,11 @@ def _carry(
         own = {"goal": goals[theme]} if theme in goals else {}
         own.update({"source": source} if source else {})
         frames.append(CommandFrame(kind, {"theme": theme, **roles, **own}))
+    for arg in also if "beneficiary" in roles else ():
+        who = reader.resolve(arg, ("person",), previous, groups)[0]
+        frames += [
+            CommandFrame(f.kind, {**f.args, "beneficiary": who}) for f in frames if f.kind == "BRINGING"
+        ]
     return frames
 
 

@@ -29,7 +29,9 @@
   for; said after it ("pick up the slippers for me") it stays a favour; "i need that you" opens a request as
   "i want that you" does;
 * a verb's word after "my" or "the" that ends the name of a thing is that thing ("fetch me my stick": the
-  walking stick), while "stick the slippers on the shoe bench" still places.
+  walking stick), while "stick the slippers on the shoe bench" still places;
+* people first said together ("bring tom and nadia a water bottle", "give tom and me the orange"): each is
+  brought the thing.
 """
 
 from __future__ import annotations
@@ -288,3 +290,23 @@ def test_learners_word_order(flat: Vocabulary, text: str, frames: list[dict[str,
 )
 def test_a_verbs_word_after_my_ends_a_name(flat: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
     assert frames_read(flat, text, "margaret") == frames
+
+
+@pytest.mark.parametrize(
+    ("text", "people"),
+    [
+        ("bring tom and nadia a water bottle", ["tom", "nadia"]),
+        ("give tom and me the water bottle", ["tom", "me"]),
+    ],
+)
+def test_people_said_together_are_each_brought_it(text: str, people: list[str]) -> None:
+    assert frames_read(_world(TOWNHOUSE), text, "nadia") == [
+        {"frame": "BRINGING", "theme": "water_bottle", "beneficiary": who} for who in people
+    ]
+
+
+def test_things_said_together_are_still_things(flat: Vocabulary) -> None:
+    assert frames_read(flat, "bring me the biscuits and the milk", "josh") == [
+        {"frame": "BRINGING", "theme": "biscuits", "beneficiary": "me"},
+        {"frame": "BRINGING", "theme": "milk", "beneficiary": "me"},
+    ]
