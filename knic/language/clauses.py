@@ -187,6 +187,15 @@ def _given_to(chunks: list[Chunk], at: int, names_person: Callable[[Chunk], bool
     return not any(c.kind == "me" or (c.kind == "prep" and c.role != "source") for c in chunks[at + 1 : end])
 
 
+def _carried(clauses: list[Clause]) -> list[Clause]:
+    """``clauses`` with a device said after another's state with the same verb and no state of its own ("turn
+    the lamp off and the landing light too") put in that state."""
+    for before, clause in itertools.pairwise(clauses):
+        if clause.again and not (clause.states or clause.levels) and clause.args:
+            clause.states, clause.levels = list(before.states), list(before.levels)
+    return clauses
+
+
 def split_clauses(
     chunks: list[Chunk],
     names_device: Callable[[Chunk], bool],
@@ -195,24 +204,8 @@ def split_clauses(
     context: list[Arg] | None = None,
     names_person: Callable[[Chunk], bool] = lambda chunk: False,
 ) -> list[Clause]:
-    """Split chunks into clauses at verbs (see :func:`_split`); a device said after another's state with the
-    same verb and no state of its own ("turn the lamp off and the landing light too") is put in that state."""
-    clauses = _split(chunks, names_device, names_item, bare_verb, context, names_person)
-    for before, clause in itertools.pairwise(clauses):
-        if clause.again and not (clause.states or clause.levels) and clause.args:
-            clause.states, clause.levels = list(before.states), list(before.levels)
-    return clauses
-
-
-def _split(
-    chunks: list[Chunk],
-    names_device: Callable[[Chunk], bool],
-    names_item: Callable[[Chunk], bool] = lambda chunk: False,
-    bare_verb: Chunk | None = None,
-    context: list[Arg] | None = None,
-    names_person: Callable[[Chunk], bool] = lambda chunk: False,
-) -> list[Clause]:
-    """Split chunks into clauses at verbs.
+    """Split chunks into clauses at verbs (a device said with the verb of the one before and no state of its
+    own takes that one's state: :func:`_carried`).
 
     Args:
         chunks: the command's chunks (:class:`~knic.language.chunks.Chunker`).
@@ -324,7 +317,7 @@ def _split(
             continue
         _fill(current, chunk, nxt, filling, names_item)
     if preamble.empty():
-        return clauses
+        return _carried(clauses)
     devices = [a for a in preamble.args if names_device(a.chunk)]
     if devices and (preamble.states or preamble.levels or not clauses):
         clauses.insert(0, preamble)  # "lights off"; "the lights please" (the reader asks on or off)
@@ -345,7 +338,7 @@ def _split(
         clauses.append(preamble)
     elif context is not None:
         context.extend(preamble.args)
-    return clauses
+    return _carried(clauses)
 
 
 def _fill(
