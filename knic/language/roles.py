@@ -228,8 +228,13 @@ def _searching(reader: Resolver, clause: Clause, previous: Frames, groups: list[
             ground = reader.resolve(arg, ("room", "furniture"), previous, groups)[0]
         elif arg.prep is None or (arg.prep == "beneficiary" and arg.chunk.kind != "me"):
             themes += reader.resolve(arg, ("item", "person"), previous, groups)
-        elif arg.prep in ("place", "source"):
-            ground = reader.resolve(arg, ("room", "furniture"), previous, groups)[0]
+        elif arg.prep in ("place", "source") or (arg.prep == "goal" and arg.prep_text not in DESTINATIONS):
+            ground = reader.resolve(arg, ("room", "furniture"), previous, groups)[0]  # "look into the den"
+        elif arg.prep == "goal":  # "find the mug and to the kitchen": no search takes anything anywhere
+            raise LanguageError(
+                f"'{arg.prep_text} the {arg.chunk.text}' after {_verb(clause).lower()}: should something go"
+                " there? Say what to do there"
+            )
     if not themes and clause.unknown:  # "go find mommy": someone the world has no name for
         raise LanguageError(f"there is no '{clause.unknown[0]}' here: this world has nothing called that")
     if not themes:  # "where are my glasses? have a look by the sofa": what was just asked about
@@ -238,6 +243,10 @@ def _searching(reader: Resolver, clause: Clause, previous: Frames, groups: list[
         raise LanguageError(f"{_verb(clause)} what? I heard no object or person of this world")
     extra = {"ground": ground} if ground else {}
     return [CommandFrame("SEARCHING", {"theme": t, **extra}) for t in dict.fromkeys(themes)]
+
+
+#: words that send something to a place (a search sends nothing anywhere: one said with them is asked about)
+DESTINATIONS = frozenset({"to", "towards", "toward"})
 
 
 def _sought_just_before(groups: list[Frames]) -> list[str]:

@@ -405,3 +405,26 @@ def test_text_only_verb_phrases_are_read_but_left_out_of_the_speech_model(vocabu
     assert "snatch" not in language.words() and "nab" not in language.words()
     result = understand("snatch the remote", vocabulary)
     assert [(f.kind, dict(f.args)) for f in result.frames] == [("TAKING", {"theme": "remote"})]
+
+
+@pytest.mark.parametrize(
+    "text", ["find the mug and to the kitchen", "locate tracy and need the to the kitchen but"]
+)
+def test_a_destination_said_to_a_search_is_not_dropped(vocabulary: Vocabulary, text: str) -> None:
+    """Half a command is not done silently: a search takes nothing anywhere, so 'to the kitchen' is asked
+    about (a speech transcript such as the second then snaps to another hypothesis the reader reads)."""
+    result = understand(text, vocabulary)
+    assert not result.accepted and "'to the kitchen' after" in result.reason
+
+
+@pytest.mark.parametrize(
+    ("text", "ground"),
+    [
+        ("look into the kitchen for the mug", "kitchen"),
+        ("look into the cupboard for the mug", "kitchen_cabinet"),
+    ],
+)
+def test_looking_into_a_place_searches_there(vocabulary: Vocabulary, text: str, ground: str) -> None:
+    result = understand(text, vocabulary)
+    assert result.accepted, result.reason
+    assert [f.to_dict() for f in result.frames] == [{"frame": "SEARCHING", "theme": "mug", "ground": ground}]
