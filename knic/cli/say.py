@@ -6,9 +6,10 @@ that matches no command is rejected with its reason (exit 4), never forced onto 
 The n-gram decoder (:class:`knic.language.lmspeech.NgramRecognizer`) listens by default: it hears people's
 phrasings better than the template grammar (``knic bench speech``) and starts in a fraction of the time
 (its model is cached on disk; the grammar's word graph is compiled anew, about 2.5 s). ``--decoder grammar``
-uses the template grammar (:class:`knic.language.speech.Recognizer`). Whisper hears the command too, in a
-child forked at once, and may replace pocketsphinx's transcript (:mod:`knic.language.whisperpass`); loading
-its model makes a start take about 1.7 s instead of 0.6 s, which ``--no-second-opinion`` saves.
+uses the template grammar (:class:`knic.language.speech.Recognizer`). Whisper hears the command first, in a
+child forked at once, and settles it when it is sure (:mod:`knic.language.whisperpass`); the child asks the
+daemon an earlier start left with the model loaded (:mod:`knic.language.whisperd`), else loads it itself
+(the first start in a world takes about 3 s, later ones about 0.85 s; ``--no-second-opinion`` about 0.6 s).
 """
 
 from __future__ import annotations
