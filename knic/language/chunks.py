@@ -185,6 +185,8 @@ class Chunker:
             put(phrase, 8, Chunk("pronoun", phrase, role=kind))
         put("me", 8, Chunk("me", "me"))
         self._table = table
+        #: the words of the command language's phrases (verbs, fillers, determiners, ...)
+        self.language_words = frozenset(w for p in table for w in p.split())
         #: verbs only when they open the command ("is the remote in the living room?")
         self._opening = {
             phrase: Chunk("verb", phrase, frames=v.frames, state=v.state, beneficiary=v.beneficiary)

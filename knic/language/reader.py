@@ -40,6 +40,7 @@ from knic.language.commands import CommandLanguage, command_language
 from knic.language.frames import KIND_NAMES, KIND_PLURALS, SPEAKER, CommandFrame
 from knic.language.household import ones_named, other_one, said_around, words_tidied
 from knic.language.learners import learners_read
+from knic.language.naming import said_named
 from knic.language.roles import INTERPRETERS
 from knic.language.segments import (
     cut,
@@ -126,6 +127,7 @@ class Reader:
         segments = [segment for segment in segments if segment]
         if not segments:
             raise LanguageError("nothing to understand: the command is empty")
+        segments = said_named(segments, self.vocabulary, self.chunker.language_words)  # naming.py
         segments = described(ones_named(segments, self.vocabulary), self.vocabulary)  # selecting.py
         segments = sorry_repairs(segments, self.chunks)
         # pointing first ("see that candle? put it on the nightstand"), else as said; unpunctuated ("close the

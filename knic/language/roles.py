@@ -127,9 +127,10 @@ def _carry(
             themes += reader.resolve(arg, ("item",), previous, groups)
         elif arg.prep == "beneficiary":
             roles["beneficiary"] = reader.resolve(arg, ("person",), previous, groups)[0]
-            if kind == "TAKING" and roles["beneficiary"] == SPEAKER and themes:
-                # "pick up the blanket for me": a favour, not where it goes; "take for me the slippers",
-                # said before the thing as "get me the slippers" is, is whom it is for
+            if themes and (kind == "PLACING" or (kind == "TAKING" and roles["beneficiary"] == SPEAKER)):
+                # "pick up the blanket for me", "pop the remote on the footstool for me": a favour, not
+                # where it goes; "take for me the slippers", said before the thing as "get me the slippers"
+                # is, is whom it is for
                 del roles["beneficiary"]
         elif arg.prep == "source":
             where = reader.resolve(arg, ("room", "furniture"), previous, groups)[0]

@@ -5,7 +5,16 @@
   post" or "the mail" for letters, "a pill box" for a pill organiser, "a cookie" for a biscuit (and so the
   biscuit tin), "the den" for a snug; a cloakroom is a downstairs toilet, so "the loo" is the cloakroom where
   the bathroom is another room; a one-word compound name ending in "shelves", "shelf" or "basin" is said by
-  that word ("the shelves" for the bookshelves, "the basin" for the washbasin).
+  that word ("the shelves" for the bookshelves, "the basin" for the washbasin);
+* "a couple of" and "a few" before a thing are determiners ("bring mary ann a couple of chocolates");
+* "for me" (or for another) after a thing put somewhere is a favour, not whom it is for ("pop the tv remote
+  on the footstool for me");
+* a thing said with "of", "for" or "under" before another word is the world's name that puts the words the
+  other way round (``knic.language.naming``): "the blind of the skylight", "a glass of water", "the cupboard
+  under the stairs";
+* a room named after a person is "rhys's room", and "his bedroom" once rhys was named;
+* a first name alone is the one person whose name it begins ("find jean"); where it begins several people's
+  names ("mary" for mary ann and mary beth) the reader asks which.
 """
 
 from __future__ import annotations
@@ -16,7 +25,7 @@ import pytest
 
 from knic.language.vocabulary import Vocabulary
 
-from .conftest import frames_read
+from .conftest import assert_asked, frames_read
 
 FARMHOUSE = "tests/fixtures/language/people20/farmhouse.yaml"
 
@@ -65,3 +74,84 @@ def farm() -> Vocabulary:
 )
 def test_general_english_names(farm: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
     assert frames_read(farm, text, "ffion") == frames
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        (
+            "oh go on then, bring mary ann a couple of chocolates",
+            [{"frame": "BRINGING", "theme": "chocolates", "beneficiary": "mary_ann"}],
+        ),
+        ("bring me a few chocolates", [{"frame": "BRINGING", "theme": "chocolates", "beneficiary": "me"}]),
+        (
+            "when you've a minute, pop the tv remote on the footstool for me",
+            [{"frame": "PLACING", "theme": "tv_remote", "goal": "footstool"}],
+        ),
+        (
+            "put the tartan blanket on the sofa for mary ann",
+            [{"frame": "PLACING", "theme": "tartan_blanket", "goal": "sofa"}],
+        ),
+    ],
+)
+def test_quantities_and_favours(farm: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
+    assert frames_read(farm, text, "ffion") == frames
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        (
+            "put the blind of the skylight at half",
+            [{"frame": "OPERATING", "device": "skylight_blind", "state": "50"}],
+        ),
+        ("bring me a glass of water", [{"frame": "BRINGING", "theme": "water_glass", "beneficiary": "me"}]),
+        (
+            "get the hoover from the cupboard under the stairs",
+            [
+                {
+                    "frame": "BRINGING",
+                    "theme": "hoover",
+                    "source": "under_stairs_cupboard",
+                    "beneficiary": "me",
+                }
+            ],
+        ),
+        (
+            "fetch the torch of the boot room",
+            [{"frame": "BRINGING", "theme": "torch", "source": "boot_room", "beneficiary": "me"}],
+        ),
+    ],
+)
+def test_names_said_the_other_way_round(farm: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
+    assert frames_read(farm, text, "jean_paul") == frames
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        (
+            "go and see if rhys is up, he'll be in his bedroom",
+            [{"frame": "SEARCHING", "theme": "rhys", "ground": "rhys_bedroom"}],
+        ),
+        (
+            "take the clean towels up to rhys's room",
+            [{"frame": "BRINGING", "theme": "clean_towels", "goal": "rhys_bedroom"}],
+        ),
+        ("find jean", [{"frame": "SEARCHING", "theme": "jean_paul"}]),
+        (
+            "find mary ann's hairbrush and give it to her",
+            [
+                {"frame": "SEARCHING", "theme": "hairbrush"},
+                {"frame": "BRINGING", "theme": "hairbrush", "beneficiary": "mary_ann"},
+            ],
+        ),
+    ],
+)
+def test_people_and_their_rooms(farm: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
+    assert frames_read(farm, text, "ffion") == frames
+
+
+@pytest.mark.parametrize("text", ["give mary the chocolates", "take mary's handbag to the annexe"])
+def test_a_first_name_of_two_people_is_asked_about(farm: Vocabulary, text: str) -> None:
+    assert_asked(farm, text, "mary ann or mary beth", "ffion")

@@ -1,0 +1,133 @@
+"""Names said around their words, put as the world's names before a command is chunked (used by
+:mod:`knic.language.reader`):
+
+* a thing said with "of", "for" or "under" before another word ("the blind of the skylight", "a glass of
+  water", "the lead for the dog", "the cupboard under the stairs") is the world's name that puts those words
+  the other way round ("skylight blind", "water glass", "dog lead", "under stairs cupboard"), where the world
+  has such a name;
+* a room named after a person ("rhys_bedroom") is that person's room: "rhys's room", "rhys's bedroom", and
+  "his room" or "her bedroom" once the person was named ("find rhys, he'll be in his bedroom");
+* a person's first name alone ("mary" for mary_ann) is that person where it begins one person's name; where
+  it begins several ("mary ann", "mary beth"), the reader asks which.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Collection
+
+from knic.language.chains import AmbiguityError
+from knic.language.shortnames import contains
+from knic.language.vocabulary import Vocabulary
+
+#: words said between a thing's name and the word its name starts with, and what the name keeps of them
+_AROUND = {"of": (), "for": (), "under": ("under",)}
+_ARTICLES = ("the", "a", "an")
+_OWN = ("his", "her", "their")
+#: what a person's room is called after "rhys's", beside the last word of the room's own name
+_ROOM_NOUNS = ("room", "bedroom")
+
+
+def said_named(segments: list[list[str]], vocabulary: Vocabulary, known: Collection[str]) -> list[list[str]]:
+    """The sentences with the names of the module docstring put as the world says them; ``known`` are the
+    words of the command language, which are never a first name.
+
+    Raises:
+        AmbiguityError: a first name begins several people's names.
+    """
+    phrases = {t.phrase for t in vocabulary.terms if t.type != "level"}
+    people = [t.phrase.split() for t in vocabulary.terms if vocabulary.is_subtype(t.type, "person")]
+    rooms = [t.phrase.split() for t in vocabulary.terms if vocabulary.is_subtype(t.type, "room")]
+    out = [_first_names(_turned_round(s, phrases), people, phrases, known) for s in segments]
+    return _persons_rooms(out, people, rooms)
+
+
+def _turned_round(words: list[str], phrases: Collection[str]) -> list[str]:
+    """ "the blind of the skylight" -> "the skylight blind" where that is a name and the words said are
+    none."""
+    out = list(words)
+    for i in range(len(out) - 2, 0, -1):
+        kept = _AROUND.get(out[i])
+        if kept is None:
+            continue
+        after = i + 1 + (out[i + 1] in _ARTICLES)
+        for n in range(min(3, i), 0, -1):
+            head = out[i - n : i]
+            if any(w in _ARTICLES for w in head):
+                continue
+            found = next(
+                (
+                    m
+                    for m in range(min(3, len(out) - after), 0, -1)
+                    if " ".join([*kept, *out[after : after + m], *head]) in phrases
+                    and " ".join(out[i - n : after + m]) not in phrases
+                ),
+                0,
+            )
+            if found:
+                out[i - n : after + found] = [*kept, *out[after : after + found], *head]
+                break
+    return out
+
+
+def _first_names(
+    words: list[str], people: list[list[str]], phrases: Collection[str], known: Collection[str]
+) -> list[str]:
+    """A first name alone as the one person's whole name; a question where it begins several."""
+    out: list[str] = []
+    for i, word in enumerate(words):
+        bare = word[:-2] if word.endswith("'s") else word
+        named = [p for p in people if len(p) > 1 and p[0] == bare]
+        whole = any(
+            words[i : i + len(p) - 1] == p[:-1]
+            and words[i + len(p) - 1 : i + len(p)] in ([p[-1]], [p[-1] + "'s"])
+            for p in named
+        )
+        if not named or whole or bare in phrases or bare in known:
+            out.append(word)
+            continue
+        if len(named) > 1:
+            options = [" ".join(p) for p in named]
+            raise AmbiguityError(f"which {bare} do you mean: {', '.join(options[:-1])} or {options[-1]}?")
+        out += [*named[0][:-1], named[0][-1] + word[len(bare) :]]
+    return out
+
+
+def _persons_rooms(
+    segments: list[list[str]], people: list[list[str]], rooms: list[list[str]]
+) -> list[list[str]]:
+    """ "rhys's room" and, once rhys was named, "his bedroom" as the room named after him."""
+    owned = {" ".join(p): r for p in people for r in rooms if len(r) > len(p) and contains(r, p)}
+    if not owned:
+        return segments
+    last = ""  # the person named latest
+    out: list[list[str]] = []
+    for segment in segments:
+        words = list(segment)
+        i = 0
+        while i < len(words):
+            mentioned = next((p for p in owned if words[i : i + len(p.split())] == p.split()), None)
+            owner = next((p for p in owned if _possessive(words, i, p)), None)
+            if owner is None and words[i] in _OWN and last:
+                owner, end = last, i + 1
+            elif owner is not None or mentioned is not None:
+                last = owner or mentioned or last
+                end = i + len(last.split())
+            else:
+                i += 1
+                continue
+            room = owned[owner] if owner is not None else []
+            if room and end < len(words) and words[end] in (*_ROOM_NOUNS, room[-1]):
+                words[i : end + 1] = room
+                end = i + len(room)
+            i = end
+        out.append(words)
+    return out
+
+
+def _possessive(words: list[str], i: int, person: str) -> bool:
+    """Whether ``words[i:]`` starts with ``person`` said as an owner ("rhys's", "mary ann's", "james'")."""
+    said = person.split()
+    end = i + len(said)
+    if words[i : end - 1] != said[:-1] or end > len(words):
+        return False
+    return words[end - 1] in (said[-1] + "'s", said[-1] + "'")
