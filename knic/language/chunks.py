@@ -101,8 +101,10 @@ class Chunker:
             plural = term.phrase.endswith("s") and not term.phrase.endswith("ss")
             variants = [term.phrase[:-1]] if plural else [term.phrase + "s", term.phrase + "es"]
             variants += [" ".join([*words[:-1], one]) for one in singulars(words[-1])]
-            if len(words) > 1:
-                variants.append(words[-1])
+            if len(words) > 1:  # "the lamp", and "the desk lamp" for the office desk lamp (not "bedroom
+                # light" for the left bedroom light: a name before the last word narrows it as said)
+                ending = [" ".join(words[-2:])] if len(words) > 2 and words[-2] not in self._full else []
+                variants += [words[-1], *ending]
                 plural_last = words[-1].endswith("s") and not words[-1].endswith("ss")
                 variants += [words[-1][:-1], *singulars(words[-1])] if plural_last else [words[-1] + "s"]
             for variant in variants:

@@ -8,16 +8,19 @@
 * a room named after a person ("rhys_bedroom") is that person's room: "rhys's room", "rhys's bedroom", and
   "his room" or "her bedroom" once the person was named ("find rhys, he'll be in his bedroom");
 * a person's first name alone ("mary" for mary_ann) is that person where it begins one person's name; where
-  it begins several ("mary ann", "mary beth"), the reader asks which.
+  it begins several ("mary ann", "mary beth"), the reader asks which;
+* of the devices a place narrows a word to ("the light in the attic"), those whose own name ends in that word
+  (the attic light, not the attic desk lamp, which is a light only by its kind), where some are
+  (:func:`called_so`).
 """
 
 from __future__ import annotations
 
-from collections.abc import Collection
+from collections.abc import Collection, Sequence
 
 from knic.language.chains import AmbiguityError
 from knic.language.shortnames import contains
-from knic.language.vocabulary import Vocabulary
+from knic.language.vocabulary import Term, Vocabulary
 
 #: words said between a thing's name and the word its name starts with, and what the name keeps of them
 _AROUND = {"of": (), "for": (), "under": ("under",)}
@@ -131,3 +134,18 @@ def _possessive(words: list[str], i: int, person: str) -> bool:
     if words[i : end - 1] != said[:-1] or end > len(words):
         return False
     return words[end - 1] in (said[-1] + "'s", said[-1] + "'")
+
+
+def called_so(terms: Sequence[Term], said: str, vocabulary: Vocabulary) -> tuple[Term, ...]:
+    """Of several devices ``said`` names, those whose own name (not one only given) ends in its last word;
+    all of them where none or all do."""
+    word = said.split()[-1] if said.split() else ""
+    devices = {t.symbol for t in terms if vocabulary.is_subtype(t.type, "device")}
+    if len(devices) < 2 or len(devices) < len({t.symbol for t in terms}):
+        return tuple(terms)
+    own = {
+        t.symbol
+        for t in vocabulary.terms
+        if t.symbol in devices and not t.given and t.phrase.split()[-1] in (word, word + "s", word[:-1])
+    }
+    return tuple(t for t in terms if t.symbol in own) if own and own != devices else tuple(terms)

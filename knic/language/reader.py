@@ -40,7 +40,7 @@ from knic.language.commands import CommandLanguage, command_language
 from knic.language.frames import KIND_NAMES, KIND_PLURALS, SPEAKER, CommandFrame
 from knic.language.household import ones_named, other_one, said_around, words_tidied
 from knic.language.learners import learners_read
-from knic.language.naming import said_named
+from knic.language.naming import called_so, said_named
 from knic.language.roles import INTERPRETERS
 from knic.language.segments import (
     cut,
@@ -131,8 +131,7 @@ class Reader:
         segments = described(ones_named(segments, self.vocabulary), self.vocabulary)  # selecting.py
         segments = sorry_repairs(segments, self.chunks)
         # pointing first ("see that candle? put it on the nightstand"), else as said; unpunctuated ("close the
-        # blinds it's too bright in here"): read again with the sentences the words start, then without those
-        # that only state something (knic.language.segments)
+        # blinds it's too bright"): by the sentences the words start, then without statements (segments.py)
         pointing = pointed(segments, self.chunks)
         if pointing is not None:
             with contextlib.suppress(LanguageError):
@@ -469,6 +468,7 @@ class Reader:
             if not kept:
                 where = self.vocabulary.phrase_of(rooms[0].symbol)
                 raise LanguageError(f"there is no {head.chunk.text} in the {where} in this world")
+            kept = called_so(kept, head.chunk.text, self.vocabulary)  # "the light in the attic": its light
             head.chunk = Chunk("entity", head.chunk.text, kept, role=head.chunk.role)
             if swapped:  # "to the hallway table": the table, where the preposition before the room says
                 head.prep, head.prep_text = place.prep, place.prep_text

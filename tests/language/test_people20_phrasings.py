@@ -14,7 +14,11 @@
   under the stairs";
 * a room named after a person is "rhys's room", and "his bedroom" once rhys was named;
 * a first name alone is the one person whose name it begins ("find jean"); where it begins several people's
-  names ("mary" for mary ann and mary beth) the reader asks which.
+  names ("mary" for mary ann and mary beth) the reader asks which;
+* the last two words of a longer name name it too: "desk lamp on" asks between the office and the attic desk
+  lamps (not among every lamp);
+* of the devices a room narrows a word to, those whose own name ends in it: "the light in the attic" is the
+  attic light, not the attic desk lamp.
 """
 
 from __future__ import annotations
@@ -155,3 +159,22 @@ def test_people_and_their_rooms(farm: Vocabulary, text: str, frames: list[dict[s
 @pytest.mark.parametrize("text", ["give mary the chocolates", "take mary's handbag to the annexe"])
 def test_a_first_name_of_two_people_is_asked_about(farm: Vocabulary, text: str) -> None:
     assert_asked(farm, text, "mary ann or mary beth", "ffion")
+
+
+@pytest.mark.parametrize("text", ["desk lamp on", "turn on the desk lamp"])
+def test_the_last_two_words_of_a_name(farm: Vocabulary, text: str) -> None:
+    assert_asked(farm, text, "the attic desk lamp or the office desk lamp", "dai")
+
+
+@pytest.mark.parametrize(
+    ("text", "device", "state"),
+    [
+        ("please, you can close the light in the attic?", "attic_light", "off"),
+        ("switch on the light in the attic", "attic_light", "on"),
+        ("turn on the lamp in the attic", "attic_desk_lamp", "on"),
+    ],
+)
+def test_the_light_in_a_room_is_the_one_called_so(
+    farm: Vocabulary, text: str, device: str, state: str
+) -> None:
+    assert frames_read(farm, text, "jean_paul") == [{"frame": "OPERATING", "device": device, "state": state}]
