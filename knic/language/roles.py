@@ -363,9 +363,11 @@ def _operating(reader: Resolver, clause: Clause, previous: Frames, groups: list[
     args = list(clause.args)
     reader.narrow(args)
     devices: list[str] = []
-    for arg in args:
+    for index, arg in enumerate(args):
         if arg.consumed or arg.prep == "beneficiary":  # "close the blinds for me"
             continue
+        # "lights off in the scullery and the boot room", "... in the kitchen and in the scullery": more rooms
+        more = arg.joined or (arg.prep == "place" and index > 0 and args[index - 1].consumed)
         if arg.chunk.kind == "entity" and not any(reader.is_a(t, "device") for t in arg.chunk.terms):
             rooms = [t for t in arg.chunk.terms if reader.is_a(t, "room")]
             # "dim the lounge to 40": the room's only dimmer; "dim the lounge": how far is then asked
@@ -373,7 +375,7 @@ def _operating(reader: Resolver, clause: Clause, previous: Frames, groups: list[
             own = reader.levelled_in(rooms) if clause.levels or clause.vague or stateless else []
             said = clause.states[-1] if clause.states else clause.verb.state if clause.verb else None
             own = own or room_lights(reader.vocabulary, rooms, said)  # "turn the hallway off"
-            if arg.prep is None and len(own) == 1:
+            if (arg.prep is None and len(own) == 1) or (more and devices and own):
                 devices += own
             elif arg.prep is None:
                 raise LanguageError(f"'{arg.chunk.text}' is not a device I can operate")

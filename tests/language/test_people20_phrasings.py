@@ -18,7 +18,9 @@
 * the last two words of a longer name name it too: "desk lamp on" asks between the office and the attic desk
   lamps (not among every lamp);
 * of the devices a room narrows a word to, those whose own name ends in it: "the light in the attic" is the
-  attic light, not the attic desk lamp.
+  attic light, not the attic desk lamp;
+* a room said after a room's lights with "and" ("lights off in the scullery and the boot room", "the lights in
+  the kitchen and in the scullery") switches that room's lights too.
 """
 
 from __future__ import annotations
@@ -178,3 +180,19 @@ def test_the_light_in_a_room_is_the_one_called_so(
     farm: Vocabulary, text: str, device: str, state: str
 ) -> None:
     assert frames_read(farm, text, "jean_paul") == [{"frame": "OPERATING", "device": device, "state": state}]
+
+
+@pytest.mark.parametrize(
+    ("text", "devices"),
+    [
+        (
+            "right, lights off in the scullery and the boot room",
+            ["scullery_light", "boot_room_light", "yard_light"],
+        ),
+        ("turn off the lights in the kitchen and in the scullery", ["kitchen_light", "scullery_light"]),
+    ],
+)
+def test_lights_in_two_rooms(farm: Vocabulary, text: str, devices: list[str]) -> None:
+    assert frames_read(farm, text, "ffion") == [
+        {"frame": "OPERATING", "device": d, "state": "off"} for d in devices
+    ]
