@@ -296,23 +296,14 @@ def start_passes(
         return job
 
     def hear() -> list[object] | None:
-        from knic.language import whisperd
-        from knic.language.whisperpass import model_dir
+        import numpy as np
 
-        key, folder = world_key(files, acoustic_model), model_dir()
-        if folder is None:
+        from knic.language.whisperpass import WhisperPass, model_dir, world_prompt
+
+        kept, folder = remembered_vocabulary(world_key(files, acoustic_model)), model_dir()
+        if kept is None or folder is None:
             return None
-        audio = samples()
-        heard = whisperd.ask(whisperd.remembered_socket(key, folder), audio)  # the model kept loaded
-        if heard is None:
-            import numpy as np
-
-            from knic.language.whisperpass import WhisperPass, world_prompt
-
-            kept = remembered_vocabulary(key)
-            if kept is None:
-                return None
-            heard = WhisperPass(world_prompt(kept[0]), folder=folder).hear(np.frombuffer(audio, dtype="<i2"))
+        heard = WhisperPass(world_prompt(kept[0]), folder=folder).hear(np.frombuffer(samples(), dtype="<i2"))
         return [heard.text, heard.mean_log_prob]
 
     decoded = [in_child(ngram(member)) for member in members]

@@ -14,10 +14,10 @@ SPEECH_FIXTURES = Path(__file__).resolve().parents[1] / "fixtures" / "speech"
 
 
 @pytest.fixture(autouse=True)
-def _short_lived_whisper_daemons(monkeypatch: pytest.MonkeyPatch) -> None:
-    """A Whisper daemon a test's ``knic say`` leaves (knic.language.whisperd) goes 20 s after its last use,
-    not 10 minutes: the suite leaves no process behind for long."""
-    from knic.language.whisperd import IDLE_ENV
+def _short_lived_say_daemons(monkeypatch: pytest.MonkeyPatch) -> None:
+    """A say daemon a test's ``knic say`` leaves (knic.language.sayd) goes 20 s after its last use, not 10
+    minutes: the suite leaves no process behind for long."""
+    from knic.language.sayd import IDLE_ENV
 
     monkeypatch.setenv(IDLE_ENV, "20")
 

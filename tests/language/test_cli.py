@@ -6,12 +6,12 @@ import json
 import tempfile
 import time
 from pathlib import Path
+from typing import Any
 
 import pytest
 
 from knic.cli import main
-from knic.language import whisperd
-from knic.language.whisperpass import model_dir
+from knic.language import sayd
 
 from .conftest import SPEECH_FIXTURES
 
@@ -59,22 +59,29 @@ def test_say_remembers_the_model_and_hears_the_same_the_next_time(
     """The first start builds and keeps the world's command model and vocabulary; the next decodes in child
     processes with them (knic.language.oneshot) and reads the same; a damaged copy is ignored."""
     monkeypatch.setattr(tempfile, "tempdir", str(tmp_path))
-    wav = str(SPEECH_FIXTURES / "cmd_011.wav")
+    monkeypatch.setenv("TMPDIR", str(tmp_path))  # the daemon's too
+    ask, wav = sayd.ask, str(SPEECH_FIXTURES / "cmd_011.wav")
     assert main(["say", wav, "--json"]) == 0
     first = json.loads(capsys.readouterr().out)
     kept = sorted(p.name for p in tmp_path.glob("knic-oneshot-*"))
     assert len(kept) == 3 and any(n.endswith("-vocabulary.json") for n in kept)
-    # a Whisper daemon keeps the model loaded for the next command (knic.language.whisperd)
-    (note,) = tmp_path.glob("knic-*/world-*.whisper")
-    daemon = whisperd.remembered_socket(note.stem.split("-")[1], model_dir())
+    # a say daemon keeps everything loaded for the next command (knic.language.sayd), which it answers
     deadline = time.monotonic() + 60.0
-    while not whisperd.running(daemon) and time.monotonic() < deadline:
+    while not any(map(sayd.running, tmp_path.glob("knic-*/say-*.sock"))) and time.monotonic() < deadline:
         time.sleep(0.05)
-    assert whisperd.running(daemon)
+    answered: list[dict[str, Any] | None] = []
+
+    def asked(*args: Any) -> dict[str, Any] | None:
+        answered.append(ask(*args))
+        return answered[-1]
+
+    monkeypatch.setattr(sayd, "ask", asked)
     assert main(["say", wav, "--json"]) == 0
     second = json.loads(capsys.readouterr().out)
     assert second["transcript"] == first["transcript"] == "bring me my glasses"
     assert second["goals"] == first["goals"] == ["(has annie glasses)"]
+    assert answered[0] is not None  # by the daemon
+    monkeypatch.setenv(sayd.IDLE_ENV, "0")  # no daemon asked: the remembered copies are read
     for path in tmp_path.glob("knic-oneshot-*.json"):
         path.write_text("{not json")
     assert main(["say", wav, "--json"]) == 0
