@@ -8,7 +8,8 @@ sentence, :func:`other_one` and :func:`said_around` on the chunks, between the p
 * what a device is said or asked to be before the request about it ("is the hallway light on? turn it
   off", "the blinds are stuck halfway, open them all the way"): the device is said, its state is not asked;
 * what someone is doing, said before or after the request ("jack's waiting in the hall, bring him the
-  water", "bring maria her laptop, she's working in the study"): talk; the person stays said for "him";
+  water", "bring maria her laptop, she's working in the study"), or where someone given a thing is ("give
+  dai his glasses, he's in the office"): talk; the person stays said for "him";
 * who left a thing where ("the tissues that grandma left on the sofa"): the place says where it is;
 * "on" before a place after a device's state was said ("turn off the lamp on the desk"): where, not on;
 * where a thing should go ("grandma's glasses need to go on her bedside table"): put it there;
@@ -137,6 +138,14 @@ def _doings(chunks: list[Chunk], is_a: Callable[[Chunk, str], bool]) -> list[Chu
         doing = nxt is not None and (
             (nxt.kind == "verb" and nxt.soft) or (nxt.kind == "unknown" and nxt.text.endswith("ing"))
         )
+        # "give dai his glasses, he's in the office": where he is, after no search ("find dai, he's in ...")
+        doing = doing or (
+            subject
+            and nxt is not None
+            and nxt.kind == "prep"
+            and nxt.text in ("in", "at")
+            and _given(out, is_a)
+        )
         if not ((subject or be) and doing):
             out.append(chunk)
             i += 1
@@ -154,6 +163,12 @@ def _doings(chunks: list[Chunk], is_a: Callable[[Chunk, str], bool]) -> list[Chu
             continue
         i = end
     return out
+
+
+def _given(said: list[Chunk], is_a: Callable[[Chunk, str], bool]) -> bool:
+    """Whether a person was named and no search was asked for in what was said."""
+    person = any(c.kind == "entity" and is_a(c, "person") for c in said)
+    return person and not any(c.kind == "verb" and c.frames[:1] == ("SEARCHING",) for c in said)
 
 
 def _left_by(chunks: list[Chunk], is_a: Callable[[Chunk, str], bool]) -> list[Chunk]:

@@ -20,7 +20,9 @@
 * of the devices a room narrows a word to, those whose own name ends in it: "the light in the attic" is the
   attic light, not the attic desk lamp;
 * a room said after a room's lights with "and" ("lights off in the scullery and the boot room", "the lights in
-  the kitchen and in the scullery") switches that room's lights too.
+  the kitchen and in the scullery") switches that room's lights too;
+* "he's in the office" after a person given something is where the person is, not where the thing is taken
+  from; after a search it is still where to look.
 """
 
 from __future__ import annotations
@@ -196,3 +198,28 @@ def test_lights_in_two_rooms(farm: Vocabulary, text: str, devices: list[str]) ->
     assert frames_read(farm, text, "ffion") == [
         {"frame": "OPERATING", "device": d, "state": "off"} for d in devices
     ]
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        (
+            "give dai his reading glasses, he's in the office",
+            [{"frame": "BRINGING", "theme": "reading_glasses", "beneficiary": "dai"}],
+        ),
+        (
+            "take the reading glasses to dai, she's in the office",
+            [{"frame": "BRINGING", "theme": "reading_glasses", "beneficiary": "dai"}],
+        ),
+        (
+            "could you do me a favour and find dai, I think he's in the office",
+            [{"frame": "SEARCHING", "theme": "dai", "ground": "farm_office"}],
+        ),
+        (
+            "put the clean towels on the shelf in the scullery",
+            [{"frame": "PLACING", "theme": "clean_towels", "goal": "scullery_shelf"}],
+        ),
+    ],
+)
+def test_where_a_person_is(farm: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
+    assert frames_read(farm, text, "ffion") == frames
