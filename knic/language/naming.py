@@ -11,14 +11,20 @@
   it begins several ("mary ann", "mary beth"), the reader asks which;
 * of the devices a place narrows a word to ("the light in the attic"), those whose own name ends in that word
   (the attic light, not the attic desk lamp, which is a light only by its kind), where some are
-  (:func:`called_so`).
+  (:func:`called_so`);
+* "there" said of a device ("put the blanket on the sofa and switch the lamp on in there") is the room of the
+  place named last, not the piece of furniture (:func:`places_before`).
 """
 
 from __future__ import annotations
 
 from collections.abc import Collection, Sequence
 
+from core.errors import LanguageError
 from knic.language.chains import AmbiguityError
+from knic.language.clauses import Arg
+from knic.language.frames import CommandFrame
+from knic.language.goals import room_of
 from knic.language.shortnames import contains
 from knic.language.vocabulary import Term, Vocabulary
 
@@ -149,3 +155,18 @@ def called_so(terms: Sequence[Term], said: str, vocabulary: Vocabulary) -> tuple
         if t.symbol in devices and not t.given and t.phrase.split()[-1] in (word, word + "s", word[:-1])
     }
     return tuple(t for t in terms if t.symbol in own) if own and own != devices else tuple(terms)
+
+
+def places_before(previous: Sequence[CommandFrame], args: Sequence[Arg], vocabulary: Vocabulary) -> list[str]:
+    """The places the earlier actions named, latest first (their goal, ground or source), as the rooms they
+    are in when ``args`` name a device."""
+    places = [f.get(r) or "" for f in reversed(previous) for r in ("goal", "ground", "source") if f.get(r)]
+    if not any(vocabulary.is_subtype(t.type, "device") for a in args for t in a.chunk.terms):
+        return places
+    rooms = []
+    for place in places:
+        try:
+            rooms.append(room_of(place, vocabulary))
+        except LanguageError:
+            rooms.append(place)
+    return rooms

@@ -40,7 +40,7 @@ from knic.language.commands import CommandLanguage, command_language
 from knic.language.frames import KIND_NAMES, KIND_PLURALS, SPEAKER, CommandFrame
 from knic.language.household import ones_named, other_one, said_around, words_tidied
 from knic.language.learners import learners_read
-from knic.language.naming import called_so, said_named
+from knic.language.naming import called_so, places_before, said_named
 from knic.language.roles import INTERPRETERS
 from knic.language.segments import (
     cut,
@@ -359,7 +359,7 @@ class Reader:
     def _there(self, clause: Clause, previous: list[CommandFrame]) -> None:
         """'there': the place the latest earlier action named (its goal, ground or source). With no place
         named before, "there" points at what the robot cannot see ("the cup over there") and is left out."""
-        places = [f.get(r) for f in reversed(previous) for r in ("goal", "ground", "source") if f.get(r)]
+        places = places_before(previous, clause.args, self.vocabulary)  # a device's: the room (naming.py)
         for arg in list(clause.args):
             if arg.chunk.kind != "there":
                 continue

@@ -22,7 +22,9 @@
 * a room said after a room's lights with "and" ("lights off in the scullery and the boot room", "the lights in
   the kitchen and in the scullery") switches that room's lights too;
 * "he's in the office" after a person given something is where the person is, not where the thing is taken
-  from; after a search it is still where to look.
+  from; after a search it is still where to look;
+* "there" said of a device is the room of the place named last ("put the tartan blanket on the sofa and
+  switch the lamp on in there": the snug's lamp).
 """
 
 from __future__ import annotations
@@ -223,3 +225,12 @@ def test_lights_in_two_rooms(farm: Vocabulary, text: str, devices: list[str]) ->
 )
 def test_where_a_person_is(farm: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
     assert frames_read(farm, text, "ffion") == frames
+
+
+def test_there_said_of_a_device_is_the_room(farm: Vocabulary) -> None:
+    text = "take mary ann to the snug, put the tartan blanket on the sofa and switch the lamp on in there"
+    assert frames_read(farm, text, "bethan") == [
+        {"frame": "ACCOMPANYING", "theme": "mary_ann", "goal": "snug"},
+        {"frame": "PLACING", "theme": "tartan_blanket", "goal": "sofa"},
+        {"frame": "OPERATING", "device": "snug_lamp", "state": "on"},
+    ]
