@@ -22,7 +22,8 @@ mends the tokens of one command, before they are cut into chunks:
   letters never shrink ("dsk", "opn", "teh"; "soa" is no "so"). Of several such words, a lone swap of two
   letters wins outside a noun phrase ("teh": the, not ten); after a determiner or a word of a name
   ("bathroom drawr") only names count, and several names make the word stand for all of them
-  (:meth:`Speller.names_for`), so that it is asked about ("the cug": the cup or the mug?). A real English
+  (:meth:`Speller.names_for`), so that it is asked about ("the cug": the cup or the mug?); else the one that
+  makes a phrase of the language with the next word wins ("wher is": where, not her or when). A real English
   word is never guessed at ("the cake" is no coke, "the basket" no blanket): it is refused naming it.
 
 English words are those of the pronouncing dictionary the speech side ships (pocketsphinx's cmudict),
@@ -158,6 +159,10 @@ class Speller:
             else:
                 noun = bool(out) and (self._kind_of(out[-1]) == "det" or out[-1] in self._name_words)
                 meant = self.candidates(token, noun)
+                if len(meant) > 1 and i + 1 < len(tokens):  # "wher is": where (a phrase with "is"), not her
+                    meant = (
+                        tuple(w for w in meant if self._kind_of(f"{w} {tokens[i + 1]}") is not None) or meant
+                    )
                 out.append(meant[0] if len(meant) == 1 else token)
             i += 1
         return out

@@ -24,7 +24,10 @@
 * "he's in the office" after a person given something is where the person is, not where the thing is taken
   from; after a search it is still where to look;
 * "there" said of a device is the room of the place named last ("put the tartan blanket on the sofa and
-  switch the lamp on in there": the snug's lamp).
+  switch the lamp on in there": the snug's lamp);
+* "where have I put", "where have I left" ask for a search as "where did I put" does;
+* of several words a typo is one edit from, the one that makes a phrase of the language with the next word
+  ("wher is the tv remote": where, not her or when).
 """
 
 from __future__ import annotations
@@ -234,3 +237,16 @@ def test_there_said_of_a_device_is_the_room(farm: Vocabulary) -> None:
         {"frame": "PLACING", "theme": "tartan_blanket", "goal": "sofa"},
         {"frame": "OPERATING", "device": "snug_lamp", "state": "on"},
     ]
+
+
+@pytest.mark.parametrize(
+    ("text", "theme"),
+    [
+        ("my pills, where have I put my pills", "pill_organiser"),
+        ("where have i left the tv remote", "tv_remote"),
+        ("wher is the tv remote", "tv_remote"),
+        ("wher are my specs", "reading_glasses"),
+    ],
+)
+def test_where_things_went(farm: Vocabulary, text: str, theme: str) -> None:
+    assert frames_read(farm, text, "mary_ann") == [{"frame": "SEARCHING", "theme": theme}]
