@@ -9,7 +9,8 @@ sentence, :func:`other_one` and :func:`said_around` on the chunks, between the p
   off", "the blinds are stuck halfway, open them all the way"): the device is said, its state is not asked;
 * what someone is doing, said before or after the request ("jack's waiting in the hall, bring him the
   water", "bring maria her laptop, she's working in the study"), or where someone given a thing is ("give
-  dai his glasses, he's in the office"): talk; the person stays said for "him";
+  dai his glasses, he's in the office"): talk; the person stays said for "him"; likewise whether someone is
+  about, asked before the request ("is bethan here yet? find her");
 * who left a thing where ("the tissues that grandma left on the sofa"): the place says where it is;
 * "on" before a place after a device's state was said ("turn off the lamp on the desk"): where, not on;
 * where a thing should go ("grandma's glasses need to go on her bedside table"): put it there;
@@ -38,6 +39,8 @@ _CONTRACTED = {"you're": ["you", "are"]}
 _STATE_WORDS = frozenset({"is", "are", "still", "already", "stuck", "left", "now", "all", "fully"})
 #: subjects said with "be" contracted ("she's working in the study")
 _CONTRACTED_DOERS = frozenset({"i'm", "we're", "they're", "he's", "she's", "you're"})
+#: words that ask whether someone is about ("is bethan here yet", "is rhys up yet", "is dai back")
+_ABOUT = frozenset({"yet", "back", "home", "around", "about", "awake", "up", "in", "still", "already", "now"})
 #: what may stand between a thing and "go" when the speaker says where it should go
 _SHOULD = frozenset({"need", "needs", "to", "should", "must", "has", "have", "can", "could", "ought", "is"})
 
@@ -82,7 +85,7 @@ def said_around(chunks: list[Chunk], vocabulary: Vocabulary, chunker: Chunker) -
         return any(vocabulary.is_subtype(t.type, category) for t in chunk.terms)
 
     chunks = _state_said(_own_room(_restated_before(chunks, is_a), vocabulary), is_a)
-    chunks = _doings(chunks, is_a)
+    chunks = _doings(_person_asked(chunks, is_a), is_a)
     chunks = _left_by(chunks, is_a)
     chunks = _placed_on(chunks, is_a)
     put, take = (chunker.chunks([verb])[0] for verb in ("put", "take"))
@@ -117,6 +120,23 @@ def _state_said(chunks: list[Chunk], is_a: Callable[[Chunk, str], bool]) -> list
     if not stated or _next_verb(chunks, at + 1) is None:
         return chunks
     return chunks[start : device + 1] + chunks[at + 1 :]
+
+
+def _person_asked(chunks: list[Chunk], is_a: Callable[[Chunk, str], bool]) -> list[Chunk]:
+    """Whether someone is about, asked before a request ("is bethan here yet? find her", "is rhys up yet?
+    bring him his hoodie"): the question is dropped, the person stays said for "her" or "him"."""
+    if len(chunks) < 3 or chunks[0].text not in ("is", "are") or chunks[1].kind != "entity":
+        return chunks
+    if not is_a(chunks[1], "person"):
+        return chunks
+    at = 2
+    while at < len(chunks) and (
+        (chunks[at].kind == "me" and chunks[at].role == "here")
+        or chunks[at].kind == "state"
+        or (chunks[at].kind in ("unknown", "unsaid") and chunks[at].text in _ABOUT)
+    ):
+        at += 1
+    return [chunks[1], *chunks[at:]] if at > 2 and _next_verb(chunks, at) is not None else chunks
 
 
 def _doings(chunks: list[Chunk], is_a: Callable[[Chunk, str], bool]) -> list[Chunk]:

@@ -27,7 +27,9 @@
   switch the lamp on in there": the snug's lamp);
 * "where have I put", "where have I left" ask for a search as "where did I put" does;
 * of several words a typo is one edit from, the one that makes a phrase of the language with the next word
-  ("wher is the tv remote": where, not her or when).
+  ("wher is the tv remote": where, not her or when);
+* whether someone is about, asked before a request ("is bethan here yet? find her"): the question is
+  dropped, the person stays said for "her".
 """
 
 from __future__ import annotations
@@ -250,3 +252,25 @@ def test_there_said_of_a_device_is_the_room(farm: Vocabulary) -> None:
 )
 def test_where_things_went(farm: Vocabulary, text: str, theme: str) -> None:
     assert frames_read(farm, text, "mary_ann") == [{"frame": "SEARCHING", "theme": theme}]
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        ("is bethan here yet? find her for me, there's a dear", [{"frame": "SEARCHING", "theme": "bethan"}]),
+        (
+            "is rhys up yet? bring him his hoodie",
+            [{"frame": "BRINGING", "theme": "hoodie", "beneficiary": "rhys"}],
+        ),
+        (
+            "is dai back? take him the letters",
+            [{"frame": "BRINGING", "theme": "letters", "beneficiary": "dai"}],
+        ),
+        (
+            "is mary ann in the parlour? go and see",
+            [{"frame": "SEARCHING", "theme": "mary_ann", "ground": "parlour"}],
+        ),
+    ],
+)
+def test_whether_someone_is_about(farm: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
+    assert frames_read(farm, text, "mary_ann") == frames
