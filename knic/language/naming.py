@@ -4,7 +4,8 @@
 * a thing said with "of", "for" or "under" before another word ("the blind of the skylight", "a glass of
   water", "the lead for the dog", "the cupboard under the stairs") is the world's name that puts those words
   the other way round ("skylight blind", "water glass", "dog lead", "under stairs cupboard"), where the world
-  has such a name;
+  has such a name; a container the world has no name for, said of what it holds ("a can of coke"), is what
+  it holds, so that a refusal names the drink;
 * a room named after a person ("rhys_bedroom") is that person's room: "rhys's room", "rhys's bedroom", and
   "his room" or "her bedroom" once the person was named ("find rhys, he'll be in his bedroom");
 * a person's first name alone ("mary" for mary_ann) is that person where it begins one person's name; where
@@ -25,13 +26,15 @@ from knic.language.chains import AmbiguityError
 from knic.language.clauses import Arg
 from knic.language.frames import CommandFrame
 from knic.language.goals import room_of
-from knic.language.shortnames import contains
+from knic.language.shortnames import containers, contains
 from knic.language.vocabulary import Term, Vocabulary
 
 #: words said between a thing's name and the word its name starts with, and what the name keeps of them
 _AROUND = {"of": (), "for": (), "under": ("under",)}
 _ARTICLES = ("the", "a", "an")
 _OWN = ("his", "her", "their")
+#: what holds a helping of a drink or food, beside the containers of ``synonyms.yaml``
+_HELPINGS = frozenset({"glass", "cup", "mug", "bowl", "pint", "bag", "slice", "piece"})
 #: what a person's room is called after "rhys's", beside the last word of the room's own name
 _ROOM_NOUNS = ("room", "bedroom")
 
@@ -46,7 +49,9 @@ def said_named(segments: list[list[str]], vocabulary: Vocabulary, known: Collect
     phrases = {t.phrase for t in vocabulary.terms if t.type != "level"}
     people = [t.phrase.split() for t in vocabulary.terms if vocabulary.is_subtype(t.type, "person")]
     rooms = [t.phrase.split() for t in vocabulary.terms if vocabulary.is_subtype(t.type, "room")]
-    out = [_first_names(_turned_round(s, phrases), people, phrases, known) for s in segments]
+    out = [
+        _first_names(_contents(_turned_round(s, phrases), phrases), people, phrases, known) for s in segments
+    ]
     return _persons_rooms(out, people, rooms)
 
 
@@ -76,6 +81,17 @@ def _turned_round(words: list[str], phrases: Collection[str]) -> list[str]:
                 out[i - n : after + found] = [*kept, *out[after : after + found], *head]
                 break
     return out
+
+
+def _contents(words: list[str], phrases: Collection[str]) -> list[str]:
+    """ "a can of coke" -> "a coke" where the world has no "can"."""
+    held = containers() | _HELPINGS
+    return [
+        w
+        for i, w in enumerate(words)
+        if not (w in held and w not in phrases and words[i + 1 : i + 2] == ["of"])
+        and not (w == "of" and i and words[i - 1] in held and words[i - 1] not in phrases)
+    ]
 
 
 def _first_names(

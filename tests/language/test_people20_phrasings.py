@@ -11,7 +11,8 @@
   on the footstool for me");
 * a thing said with "of", "for" or "under" before another word is the world's name that puts the words the
   other way round (``knic.language.naming``): "the blind of the skylight", "a glass of water", "the cupboard
-  under the stairs";
+  under the stairs"; a container the world has no name for, said of what it holds, is what it holds ("bring
+  me a can of coke" is refused naming the coke);
 * a room named after a person is "rhys's room", and "his bedroom" once rhys was named;
 * a first name alone is the one person whose name it begins ("find jean"); where it begins several people's
   names ("mary" for mary ann and mary beth) the reader asks which;
@@ -38,6 +39,7 @@ from typing import Any
 
 import pytest
 
+from knic.language import understand
 from knic.language.vocabulary import Vocabulary
 
 from .conftest import assert_asked, frames_read
@@ -274,3 +276,11 @@ def test_where_things_went(farm: Vocabulary, text: str, theme: str) -> None:
 )
 def test_whether_someone_is_about(farm: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
     assert frames_read(farm, text, "mary_ann") == frames
+
+
+@pytest.mark.parametrize(
+    ("text", "word"), [("bring me a can of coke", "coke"), ("bring me a bottle of wine", "wine")]
+)
+def test_a_container_the_world_lacks_is_what_it_holds(farm: Vocabulary, text: str, word: str) -> None:
+    result = understand(text, farm, speaker="rhys")
+    assert not result.accepted and f"'{word}'" in result.reason
