@@ -250,4 +250,27 @@ def sayings_dropped(chunks: list[Chunk]) -> list[Chunk]:
         saying = chunk.kind == "entity" and nxt is not None and nxt.kind == "unknown" and nxt.text in _SAYS
         return saying and any(c.kind == "verb" for c in out) and out[-1].kind not in _GOVERNING
 
-    return _talk_dropped(chunks, starts)
+    return _talk_dropped(_wishes_dropped(chunks), starts)
+
+
+def _wishes_dropped(chunks: list[Chunk]) -> list[Chunk]:
+    """Drop why the speaker asks, said after an action ("take me to the parlour, I want to play the piano"):
+    "i want to" (or the like) before a word the language does not know, up to the next verb said as a
+    command or a joiner."""
+    out: list[Chunk] = []
+    skipping = False
+    for i, chunk in enumerate(chunks):
+        after = chunks[i + 1 : i + 3]
+        if (
+            chunk.kind == "verb"
+            and chunk.text.split()[0] == "i"
+            and any(c.kind == "verb" for c in out)
+            and [c.kind for c in after] == ["prep", "unknown"]
+            and after[0].text == "to"
+        ):
+            skipping = True
+        elif skipping and (chunk.kind == "join" or (chunk.kind == "verb" and not chunk.soft)):
+            skipping = False
+        if not skipping:
+            out.append(chunk)
+    return out

@@ -30,7 +30,9 @@
 * of several words a typo is one edit from, the one that makes a phrase of the language with the next word
   ("wher is the tv remote": where, not her or when);
 * whether someone is about, asked before a request ("is bethan here yet? find her"): the question is
-  dropped, the person stays said for "her".
+  dropped, the person stays said for "her";
+* why the speaker asks, said after the request ("take me to the parlour, I want to play the piano": "i want
+  to" before a word the language does not know), is talk.
 """
 
 from __future__ import annotations
@@ -284,3 +286,23 @@ def test_whether_someone_is_about(farm: Vocabulary, text: str, frames: list[dict
 def test_a_container_the_world_lacks_is_what_it_holds(farm: Vocabulary, text: str, word: str) -> None:
     result = understand(text, farm, speaker="rhys")
     assert not result.accepted and f"'{word}'" in result.reason
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        (
+            "take me through to the front parlour, I want to play the piano",
+            [{"frame": "ACCOMPANYING", "theme": "me", "goal": "parlour"}],
+        ),
+        (
+            "take me to the parlour I want to play the piano and then turn the chandelier on",
+            [
+                {"frame": "ACCOMPANYING", "theme": "me", "goal": "parlour"},
+                {"frame": "OPERATING", "device": "parlour_chandelier", "state": "on"},
+            ],
+        ),
+    ],
+)
+def test_why_the_speaker_asks_is_talk(farm: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
+    assert frames_read(farm, text, "mary_ann") == frames
