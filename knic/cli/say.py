@@ -220,7 +220,8 @@ def _keep_for_the_next(
         oneshot.remember_model(key, *(ngram.model_files or ("", None)))
     if args.second_opinion:
         files, model = _world_files(args), args.acoustic_model
-        sayd.ensure(sayd.socket_path(key, model), sayd.place_of(files, model), vocabulary, speaker, model)
+        path, place = sayd.socket_path(key, model), sayd.place_of(files, model)
+        sayd.ensure(path, place, vocabulary, speaker, model, key)
 
 
 def _or(value: float | None, otherwise: Callable[[], float]) -> float:

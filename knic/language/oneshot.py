@@ -120,8 +120,8 @@ def remembered_vocabulary(key: str) -> tuple[Vocabulary, str] | None:
         return None
 
 
-def decode_here(samples: bytes, model: tuple[Path, Path], acoustic_model: str | Path) -> Decoded:
-    """The n-gram pass of one utterance with a remembered model (what the child runs).
+def decoder_for(model: tuple[Path, Path], acoustic_model: str | Path) -> Any:
+    """A pocketsphinx decoder searching a remembered model (dictionary, binary model) with an acoustic model.
 
     Raises:
         RuntimeError, ValueError, KeyError, TypeError: pocketsphinx refused the model or the settings.
@@ -135,7 +135,16 @@ def decode_here(samples: bytes, model: tuple[Path, Path], acoustic_model: str | 
     decoder = Decoder(lm=None, loglevel="FATAL", **{**options, "dict": str(model[0])})
     decoder.add_lm_file("ngram", str(model[1]))
     decoder.activate_search("ngram")
-    return ngram_pass(decoder, ngram_padded(samples), NBEST)
+    return decoder
+
+
+def decode_here(samples: bytes, model: tuple[Path, Path], acoustic_model: str | Path) -> Decoded:
+    """The n-gram pass of one utterance with a remembered model (what the child runs).
+
+    Raises:
+        RuntimeError, ValueError, KeyError, TypeError: pocketsphinx refused the model or the settings.
+    """
+    return ngram_pass(decoder_for(model, acoustic_model), ngram_padded(samples), NBEST)
 
 
 class Child:

@@ -44,7 +44,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
-    from knic.language.lmspeech import NgramRecognizer
+    from knic.language.sayhearing import Hearing
     from knic.language.vocabulary import Vocabulary
 
 #: seconds the daemon waits for a request before it leaves (``KNIC_SAY_IDLE_S`` overrides; 0: no daemon)
@@ -245,7 +245,7 @@ def running(path: Path | None) -> bool:
 
 
 def ensure(
-    path: Path | None, place: str, vocabulary: Vocabulary, speaker: str, acoustic_model: str | Path
+    path: Path | None, place: str, vocabulary: Vocabulary, speaker: str, acoustic_model: str | Path, key: str
 ) -> int | None:
     """Start the daemon at ``path`` for a world's ``vocabulary`` and default ``speaker`` unless one runs
     there or daemons are off (:func:`idle_s`); the new process's id, else None. The vocabulary goes to it
@@ -260,7 +260,7 @@ def ensure(
         staged = given.with_name(f"{given.name}.{os.getpid()}")
         staged.write_text(json.dumps({"vocabulary": vocabulary.to_data(), "speaker": speaker}), "utf-8")
         os.replace(staged, given)
-        command = [sys.executable, "-m", "knic.language.sayd", str(path), place, str(acoustic_model)]
+        command = [sys.executable, "-m", "knic.language.sayd", str(path), place, str(acoustic_model), key]
         process = subprocess.Popen(
             command,
             stdin=subprocess.DEVNULL,
@@ -273,7 +273,7 @@ def ensure(
     return process.pid
 
 
-def serve(path: Path, place: str, acoustic_model: str, idle: float) -> None:
+def serve(path: Path, place: str, acoustic_model: str, key: str, idle: float) -> None:
     """The daemon: take the socket's lock (another daemon of the same key leaves at once), load the world's
     vocabulary that :func:`ensure` left, build and warm the recogniser, listen at ``path`` (taking it over
     atomically, and retiring the daemon of the same place before it), answer each request, and leave after
@@ -294,44 +294,35 @@ def serve(path: Path, place: str, acoustic_model: str, idle: float) -> None:
                 return
             time.sleep(0.1)
     try:
-        loaded = _load(path, acoustic_model)
+        loaded = _load(path, acoustic_model, key)
         if loaded is not None:
-            vocabulary, speaker, recognizer = loaded
+            vocabulary, speaker, hearing = loaded
             try:
-                _listen(path, place, idle, lambda conn: _answer(conn, recognizer, vocabulary, speaker))
+                _listen(path, place, idle, lambda conn: _answer(conn, hearing, vocabulary, speaker))
             finally:
-                recognizer.close()
+                hearing.close()
     finally:
         lock_file.unlink(missing_ok=True)
         os.close(lock)
 
 
-def _load(path: Path, acoustic_model: str) -> tuple[Vocabulary, str, NgramRecognizer] | None:
-    """The vocabulary and default speaker :func:`ensure` left beside the socket, and the recogniser built
-    and warmed: Whisper's server has heard once (its model loaded), pocketsphinx has decoded once (its
-    workers forked now, before the socket exists, so that they hold no copy of it) and every member's
-    phone loop is built. None: nothing usable was left, or the recogniser could not be built."""
+def _load(path: Path, acoustic_model: str, key: str) -> tuple[Vocabulary, str, Hearing] | None:
+    """The vocabulary and default speaker :func:`ensure` left beside the socket, and what hears the world's
+    commands (:class:`Hearing`, its workers forked now, before the socket exists, so that they hold no copy
+    of it). None: nothing usable was left, or the models cannot be loaded."""
     from core.errors import KnicError
-    from knic.language.lmspeech import NgramRecognizer
+    from knic.language.sayhearing import Hearing
     from knic.language.vocabulary import Vocabulary
-    from knic.language.whisperpass import Heard
 
     given = path.with_suffix(".json")
     try:
         data = json.loads(given.read_text(encoding="utf-8"))
         vocabulary, speaker = Vocabulary.from_data(data["vocabulary"]), str(data["speaker"])
-        recognizer = NgramRecognizer(vocabulary, acoustic_model=acoustic_model)
-        silence = bytes(32000)  # one second
-        if recognizer.whisper is not None:
-            recognizer.whisper.hear(silence)
-        recognizer.recognize(silence, heard=lambda: Heard("", -1.0))  # unsure: pocketsphinx decodes
-        for index in range(len(recognizer.members)):
-            recognizer.phone_loop_of(index)
-    except (OSError, ValueError, KeyError, TypeError, KnicError):
+        return vocabulary, speaker, Hearing(vocabulary, acoustic_model, key)
+    except (OSError, ValueError, KeyError, TypeError, RuntimeError, KnicError):
         return None
     finally:
         given.unlink(missing_ok=True)
-    return vocabulary, speaker, recognizer
 
 
 def _listen(path: Path, place: str, idle: float, answer: Any) -> None:
@@ -394,7 +385,7 @@ def _still_mine(path: Path, inode: int) -> bool:
 READ_TIMEOUT_S = 10.0
 
 
-def _answer(conn: socket.socket, recognizer: NgramRecognizer, vocabulary: Vocabulary, speaker: str) -> None:
+def _answer(conn: socket.socket, hearing: Hearing, vocabulary: Vocabulary, speaker: str) -> None:
     """Read one request from ``conn`` and write the understanding; a malformed request, or any failure to
     hear it, gets no answer (the client then hears the command itself)."""
     from knic.language.understanding import understand_transcript
@@ -409,7 +400,7 @@ def _answer(conn: socket.socket, recognizer: NgramRecognizer, vocabulary: Vocabu
         samples = _read_frame(conn, MAX_REQUEST_BYTES)
         if not samples or len(samples) % 2:
             return
-        transcript = recognizer.recognize(samples)
+        transcript = hearing.transcript(samples)
         result = understand_transcript(transcript, vocabulary, speaker=said_by or speaker)
         conn.sendall(_framed(json.dumps(result.to_dict()).encode()))
     except Exception:  # whatever went wrong, the daemon goes on serving
@@ -420,9 +411,9 @@ def _leave(signum: int, frame: object) -> None:
     raise SystemExit(0)
 
 
-if __name__ == "__main__":  # python -m knic.language.sayd SOCKET PLACE ACOUSTIC_MODEL
+if __name__ == "__main__":  # python -m knic.language.sayd SOCKET PLACE ACOUSTIC_MODEL WORLD_KEY
     import signal
 
     signal.signal(signal.SIGTERM, _leave)
     with contextlib.suppress(KeyboardInterrupt):
-        serve(Path(sys.argv[1]), sys.argv[2], sys.argv[3], idle_s())
+        serve(Path(sys.argv[1]), sys.argv[2], sys.argv[3], sys.argv[4], idle_s())

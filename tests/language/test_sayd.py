@@ -310,7 +310,7 @@ def test_no_daemon_when_turned_off_or_the_folder_is_open(
     assert path.parent.stat().st_mode & 0o077 == 0
     assert sayd.ask(path, b"\0\0" * 1600) is None  # nothing listens
     monkeypatch.setenv(sayd.IDLE_ENV, "0")
-    assert sayd.ensure(path, "place", None, "annie", "auto") is None  # type: ignore[arg-type]
+    assert sayd.ensure(path, "place", None, "annie", "auto", "0123abcd") is None  # type: ignore[arg-type]
     assert list(path.parent.iterdir()) == []
     monkeypatch.setenv(sayd.IDLE_ENV, "nonsense")
     assert sayd.idle_s() == sayd.IDLE_S
