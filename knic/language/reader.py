@@ -40,7 +40,8 @@ from knic.language.commands import CommandLanguage, command_language
 from knic.language.frames import KIND_NAMES, KIND_PLURALS, SPEAKER, CommandFrame
 from knic.language.household import ones_named, other_one, said_around, words_tidied
 from knic.language.learners import learners_read
-from knic.language.naming import called_so, places_before, said_named
+from knic.language.naming import places_before, said_named
+from knic.language.places import Places
 from knic.language.roles import INTERPRETERS
 from knic.language.segments import (
     cut,
@@ -51,7 +52,6 @@ from knic.language.segments import (
     statements_dropped,
 )
 from knic.language.selecting import described
-from knic.language.shortnames import contains
 from knic.language.terse import for_asker, room_alone, told_read
 from knic.language.tidy import (
     SEGMENT_END,
@@ -70,12 +70,12 @@ from knic.language.tidy import (
     spelled,
     talk_dropped,
 )
-from knic.language.vocabulary import Term, Vocabulary, level_percent, normalize
+from knic.language.vocabulary import Vocabulary, level_percent, normalize
 
 MAX_ACTIONS = 3
 
 
-class Reader:
+class Reader(Places):
     """Reads normalised commands against one vocabulary (build once per vocabulary; :meth:`read` is pure)."""
 
     def __init__(self, vocabulary: Vocabulary, language: CommandLanguage | None = None):
@@ -371,10 +371,6 @@ class Reader:
 
     # ------------------------------------------------------------------ arguments
 
-    def is_a(self, term: Term, category: str) -> bool:
-        """Whether a name's type is ``category`` or a subtype of it."""
-        return self.vocabulary.is_subtype(term.type, category)
-
     def resolve(
         self,
         arg: Arg,
@@ -437,114 +433,6 @@ class Reader:
     def _listed(self, symbols: Sequence[str], last: str = "or") -> str:
         options = [f"the {self.vocabulary.phrase_of(s)}" for s in symbols]
         return ", ".join(options[:-1]) + f" {last} {options[-1]}"
-
-    def narrow(self, args: list[Arg]) -> None:
-        """Narrow furniture and devices by the place said right after them ("the table in the kitchen",
-        "the left light in the bedroom") or before them ("the kitchen table" said as two names)."""
-        for index in range(1, len(args)):
-            head, place = args[index - 1], args[index]
-            if (
-                place.prep not in ("place", None)
-                or place.chunk.kind != "entity"
-                or head.chunk.kind != "entity"
-            ):
-                continue
-            swapped = place.prep is None and not place.joined
-            if swapped:
-                head, place = place, head  # "kitchen light": the room said first
-                if not any(self.is_a(t, "room") for t in place.chunk.terms):
-                    continue
-            rooms = [t for t in place.chunk.terms if self.is_a(t, "room") or self.is_a(t, "furniture")]
-            narrowable = [t for t in head.chunk.terms if self.is_a(t, "furniture") or self.is_a(t, "device")]
-            if not rooms or not narrowable or len(narrowable) != len(head.chunk.terms):
-                continue
-            grouped = any(t.is_group for t in head.chunk.terms)
-            candidates = self._members(head.chunk.terms) if grouped else head.chunk.terms
-            kept = tuple(t for t in candidates if any(self._within(t, r) for r in rooms))
-            if not kept and place.prep is not None and place.prep_text not in self.language.containment:
-                kept = self._near(candidates, rooms)  # "the bedside table next to the bed"
-            if not kept and all(self.is_a(t, "light") for t in candidates):
-                kept = self._dimmers_in(rooms)  # "the living room light" where a dimmer is the room's light
-            if not kept:
-                where = self.vocabulary.phrase_of(rooms[0].symbol)
-                raise LanguageError(f"there is no {head.chunk.text} in the {where} in this world")
-            kept = called_so(kept, head.chunk.text, self.vocabulary)  # "the light in the attic": its light
-            head.chunk = Chunk("entity", head.chunk.text, kept, role=head.chunk.role)
-            if swapped:  # "to the hallway table": the table, where the preposition before the room says
-                head.prep, head.prep_text = place.prep, place.prep_text
-            if grouped:  # "the lights in the bedroom": those of the group that are there
-                head.quantity = head.quantity or "all"
-            place.consumed = True
-
-    def prefer_devices(self, arg: Arg, wants_level: bool, places: Sequence[str]) -> None:
-        """Of the several devices one name fits, keep those that can do what is asked and are where the
-        command went: with a level asked for, the dimmers and blinds ("turn the lamp up to half"); then those
-        in the room of the latest place said before ("go to the living room and switch on the lamp"), where
-        a dimmer may be the room's light. Nothing changes when no device fits these."""
-        chunk = arg.chunk
-        terms = tuple(t for t in chunk.terms if self.is_a(t, "device"))
-        if chunk.kind != "entity" or arg.quantity or len({t.symbol for t in terms}) < 2:
-            return
-        if wants_level:
-            levelled = tuple(t for t in terms if self.is_a(t, "dimmer") or self.is_a(t, "blinds"))
-            if not levelled and all(self.is_a(t, "light") for t in terms):
-                levelled = self._dimmers_in(tuple(t for t in self.vocabulary.terms if self.is_a(t, "room")))
-            terms = levelled or terms
-        for place in places:
-            rooms = [t for t in self.vocabulary.terms if t.symbol == place and self.is_a(t, "room")]
-            rooms += [
-                t
-                for t in self.vocabulary.terms
-                if t.symbol in self.vocabulary.locations.get(place, ()) and self.is_a(t, "room")
-            ]
-            if not rooms:
-                continue
-            there = tuple(t for t in terms if any(self._within(t, r) for r in rooms))
-            if not there and all(self.is_a(t, "light") for t in terms):
-                there = self._dimmers_in(rooms)
-            terms = there or terms
-            break
-        if len({t.symbol for t in terms}) < len({t.symbol for t in chunk.terms}):
-            arg.chunk = Chunk("entity", chunk.text, terms, role=chunk.role)
-
-    def levelled_in(self, rooms: Sequence[Term]) -> list[str]:
-        """The dimmers and blinds in the rooms ("dim the lounge to 40": the lounge's dimmer)."""
-        levelled = (t for t in self.vocabulary.terms if self.is_a(t, "dimmer") or self.is_a(t, "blinds"))
-        return list(
-            dict.fromkeys(
-                t.symbol for t in levelled if not t.is_group and any(self._within(t, r) for r in rooms)
-            )
-        )
-
-    def _dimmers_in(self, rooms: Sequence[Term]) -> tuple[Term, ...]:
-        """The dimmers (dimmable lights) in the rooms, one term each."""
-        found = {t.symbol: t for t in self.vocabulary.terms if self.is_a(t, "dimmer") and not t.is_group}
-        return tuple(t for t in found.values() if any(self._within(t, r) for r in rooms))
-
-    def _near(self, candidates: Sequence[Term], landmarks: Sequence[Term]) -> tuple[Term, ...]:
-        """Of the candidates said with a landmark ("next to the bed"), those in the landmark's room; a lone
-        candidate stays whatever the world says of its room."""
-        rooms = {r.symbol for r in landmarks if self.is_a(r, "room")}
-        rooms |= {p for r in landmarks for p in self.vocabulary.locations.get(r.symbol, ())}
-        others = [t for t in candidates if t.symbol not in {r.symbol for r in landmarks}]
-        kept = tuple(t for t in others if rooms & set(self.vocabulary.locations.get(t.symbol, ())))
-        return kept or (tuple(candidates) if len(candidates) == 1 else ())
-
-    def _members(self, terms: Sequence[Term]) -> tuple[Term, ...]:
-        """The terms of every member of the groups among ``terms`` (one term per member symbol)."""
-        symbols = {m for t in terms for m in t.members}
-        firsts = {t.symbol: t for t in reversed(self.vocabulary.terms) if t.symbol in symbols}
-        return tuple(firsts[s] for s in sorted(firsts))
-
-    def _within(self, term: Term, place: Term) -> bool:
-        if place.symbol in self.vocabulary.locations.get(term.symbol, ()):
-            return True
-        if self.is_a(term, "device"):
-            # whole words: the den's lamp is no "garden room reading lamp"
-            return contains(term.symbol.split("_"), place.symbol.split("_")) or contains(
-                term.phrase.split(), place.phrase.split()
-            )
-        return False
 
 
 __all__ = ["AmbiguityError", "Reader", "Reading", "chain", "level_percent"]
