@@ -130,8 +130,8 @@ def _acoustic_folders(acoustic_model: str | Path) -> list[Path]:
     for member in ensemble_members(acoustic_model):
         named = ACOUSTIC_MODELS.get(member) if isinstance(member, str) else None
         folder = named if named is not None or member in ACOUSTIC_MODELS else Path(member)
-        if folder is not None:
-            folders += [Path(folder), Path(folder) / NGRAM_SUBFOLDER]
+        if folder is not None:  # named by its whole path: another folder is another daemon
+            folders += [Path(folder).resolve(), Path(folder).resolve() / NGRAM_SUBFOLDER]
     return folders
 
 
