@@ -72,6 +72,8 @@ class Chunker:
         lang = language
         self._full: dict[str, list[Term]] = {}
         self._partial: dict[str, list[Term]] = {}
+        #: the things a name of another thing would also name by its last word ("desk": the writing desk)
+        self._shadowed: dict[str, list[Term]] = {}
         for term in vocabulary.terms:
             if term.type == "level":
                 continue
@@ -110,6 +112,8 @@ class Chunker:
             for variant in variants:
                 if variant not in self._full:
                     self._partial.setdefault(variant, []).append(term)
+                elif term not in self._full[variant]:  # "desk" said of the writing desk where a desk is too
+                    self._shadowed.setdefault(variant, []).append(term)
         for variant, terms in self._partial.items():  # "the table": the dining table, not a "bedside table"
             own = {t.symbol for t in terms if not t.given and variant in _forms(t.phrase.split()[-1])}
             if own and any(t.symbol not in own for t in terms):
@@ -239,6 +243,11 @@ class Chunker:
         )
 
     # ------------------------------------------------------------------ chunks
+
+    def also_named(self, phrase: str) -> tuple[Term, ...]:
+        """The things ``phrase`` names by the last word of their own names where it is the whole name of
+        another ("desk" said of the writing desk, where the box room has a desk)."""
+        return tuple(self._shadowed.get(phrase, ()))
 
     def chunks(self, tokens: Sequence[str]) -> list[Chunk]:
         """The chunks of a normalised token list (fillers dropped)."""

@@ -55,6 +55,9 @@ class Places:
                 kept = self._near(candidates, rooms)  # "the bedside table next to the bed"
             if not kept and all(self.is_a(t, "light") for t in candidates):
                 kept = self._dimmers_in(rooms)  # "the living room light" where a dimmer is the room's light
+            if not kept:  # "the desk in the den": the writing desk there, though the box room has a "desk"
+                also = self.chunker.also_named(head.chunk.text)
+                kept = tuple(t for t in also if any(self._within(t, r) for r in rooms))
             if not kept:
                 where = self.vocabulary.phrase_of(rooms[0].symbol)
                 raise LanguageError(f"there is no {head.chunk.text} in the {where} in this world")

@@ -460,6 +460,16 @@ def _from_onto(words: list[str], vocabulary: Vocabulary, phrases: dict[str, Term
             continue
         room = vocabulary.is_subtype(goal.type, "room")
         inside = goal.symbol in vocabulary.locations.get(source.symbol, ())
+        # "from the desk in the den": the den's writing desk, though the box room has a "desk"
+        inside = inside or (
+            words[end - 2] in (*_DETERMINERS, "from")  # said by one word
+            and any(
+                t.phrase.split()[-1] == words[end - 1]
+                and goal.symbol in vocabulary.locations.get(t.symbol, ())
+                for t in phrases.values()
+                if vocabulary.is_subtype(t.type, "furniture")
+            )
+        )
         if not (vocabulary.is_subtype(goal.type, "furniture") or (room and not inside)):
             continue
         return [*words[:i], *words[end:stop], *words[i:end], *words[stop:]]

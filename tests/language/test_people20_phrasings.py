@@ -32,7 +32,10 @@
 * whether someone is about, asked before a request ("is bethan here yet? find her"): the question is
   dropped, the person stays said for "her";
 * why the speaker asks, said after the request ("take me to the parlour, I want to play the piano": "i want
-  to" before a word the language does not know), is talk.
+  to" before a word the language does not know), is talk;
+* a piece of furniture said by the last word of its name with the room it is in, where another room has a
+  thing of that whole name ("the desk in the den" in the garden flat, whose box room has a "desk"): the one
+  in that room, as the source of a thing fetched too.
 """
 
 from __future__ import annotations
@@ -306,3 +309,18 @@ def test_a_container_the_world_lacks_is_what_it_holds(farm: Vocabulary, text: st
 )
 def test_why_the_speaker_asks_is_talk(farm: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
     assert frames_read(farm, text, "mary_ann") == frames
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        ("go to the desk in the den", [{"frame": "MOTION", "goal": "writing_desk"}]),
+        (
+            "fetch the pen from the desk in the den",
+            [{"frame": "BRINGING", "theme": "fountain_pen", "source": "writing_desk", "beneficiary": "me"}],
+        ),
+        ("go to the desk", [{"frame": "MOTION", "goal": "desk"}]),
+    ],
+)
+def test_furniture_told_by_its_room(text: str, frames: list[dict[str, str]]) -> None:
+    assert frames_read(_world("tests/fixtures/language/people19/garden_flat.yaml"), text, "arthur") == frames
