@@ -107,8 +107,11 @@ def statements_dropped(
     segments: list[list[str]], chunks: Callable[[Sequence[str]], list[Chunk]]
 ) -> list[list[str]] | None:
     """The segments without those that state something rather than ask ("turn the lights off i'm going to
-    bed": a segment opened by a subject and no verb of the command language); None when none is dropped or
-    nothing would be left."""
+    bed": a segment opened by a subject and no verb of the command language; "the sun is in my eyes, pull
+    the blinds down": no verb, and something the world has no name for said to be somewhere or something);
+    None when none is dropped or nothing would be left. A statement "it" may point back to stays ("the
+    newspaper is on the table, bring it to me": the newspaper is refused)."""
+    referred = any(c.kind == "pronoun" for segment in segments for c in chunks(segment))
     kept = [
         segment
         for segment in segments
@@ -117,8 +120,17 @@ def statements_dropped(
             and (said := chunks(segment))
             and said[0].kind != "verb"
         )
+        and not (_stated(chunks(segment)) and not referred)
     ]
     return kept if kept and len(kept) < len(segments) else None
+
+
+def _stated(said: list[Chunk]) -> bool:
+    """Whether a segment says something unknown is somewhere or something ("the sun is in my eyes") and asks
+    for nothing."""
+    return not any(c.kind == "verb" for c in said) and any(
+        a.kind == "unknown" and b.kind == "unknown" and b.text in _COPULAS for a, b in pairwise(said)
+    )
 
 
 def pointed(

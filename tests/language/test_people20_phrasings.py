@@ -35,7 +35,10 @@
   to" before a word the language does not know), is talk;
 * a piece of furniture said by the last word of its name with the room it is in, where another room has a
   thing of that whole name ("the desk in the den" in the garden flat, whose box room has a "desk"): the one
-  in that room, as the source of a thing fetched too.
+  in that room, as the source of a thing fetched too;
+* a statement before a request that says something the world has no name for is somewhere, and asks for
+  nothing ("the sun is in my eyes in the conservatory, pull the blinds down"): talk, unless "it" may point
+  back to it.
 """
 
 from __future__ import annotations
@@ -324,3 +327,17 @@ def test_why_the_speaker_asks_is_talk(farm: Vocabulary, text: str, frames: list[
 )
 def test_furniture_told_by_its_room(text: str, frames: list[dict[str, str]]) -> None:
     assert frames_read(_world("tests/fixtures/language/people19/garden_flat.yaml"), text, "arthur") == frames
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "the sun is in my eyes in the conservatory, pull the blinds down would you",
+        "the sun is in my eyes, close the conservatory blinds",
+    ],
+)
+def test_a_statement_before_a_request_is_talk(text: str) -> None:
+    flat = _world("tests/fixtures/language/people19/garden_flat.yaml")
+    assert frames_read(flat, text, "margaret") == [
+        {"frame": "OPERATING", "device": "conservatory_blinds", "state": "closed"}
+    ]
