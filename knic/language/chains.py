@@ -73,7 +73,9 @@ def referent(
 
 def settled(reading: Reading, vocabulary: Vocabulary) -> Reading:
     """The reading with each device set once: a device set again later to a level ends at that level ("open
-    the blinds and set them to 40"), the first setting goes (see :func:`_set_again`).
+    the blinds and set them to 40"), the first setting goes (see :func:`_set_again`); and each thing brought
+    once: a bringing said again later with more ("I fancy a sherry, bring me the bottle from the sideboard")
+    is that later one.
 
     Raises:
         AmbiguityError: a device is put in opposite states ("switch on the light and switch it off").
@@ -83,6 +85,12 @@ def settled(reading: Reading, vocabulary: Vocabulary) -> Reading:
         i
         for i, frame in enumerate(frames)
         if frame.kind == "OPERATING" and _set_again(frame, frames[i + 1 :], vocabulary)
+    }
+    drop |= {
+        i
+        for i, frame in enumerate(frames)
+        if frame.kind == "BRINGING"
+        and any(f.kind == "BRINGING" and frame.args.items() <= f.args.items() for f in frames[i + 1 :])
     }
     if not drop:
         return reading

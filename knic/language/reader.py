@@ -410,6 +410,9 @@ class Reader(Places):
             return [group] if group is not None else symbols
         if arg.quantity == "both":
             return self._both(chunk, symbols)
+        # "I fancy a sherry, bring me the bottle": of several things, the one said earlier in the command
+        said_before = [s for s in symbols if any(s in f.args.values() for f in previous)]
+        symbols = said_before if len(symbols) > 1 and len(said_before) == 1 else symbols
         if len(symbols) > 1:
             question = f"which {chunk.text} do you mean: {self._listed(symbols)}?"
             if arg.modifiers:  # words the world does not know before the name are said back ("kitchen light")

@@ -38,7 +38,9 @@
   in that room, as the source of a thing fetched too;
 * a statement before a request that says something the world has no name for is somewhere, and asks for
   nothing ("the sun is in my eyes in the conservatory, pull the blinds down"): talk, unless "it" may point
-  back to it.
+  back to it;
+* a name that fits several things fits the one said earlier in the command, and a bringing said again with
+  more is that one ("I fancy a sherry, bring me the bottle from the sideboard": the sherry bottle, once).
 """
 
 from __future__ import annotations
@@ -340,4 +342,11 @@ def test_a_statement_before_a_request_is_talk(text: str) -> None:
     flat = _world("tests/fixtures/language/people19/garden_flat.yaml")
     assert frames_read(flat, text, "margaret") == [
         {"frame": "OPERATING", "device": "conservatory_blinds", "state": "closed"}
+    ]
+
+
+def test_the_thing_said_before() -> None:
+    flat = _world("tests/fixtures/language/people19/garden_flat.yaml")
+    assert frames_read(flat, "I fancy a sherry, bring me the bottle from the sideboard", "margaret") == [
+        {"frame": "BRINGING", "theme": "sherry_bottle", "source": "sideboard", "beneficiary": "me"}
     ]
