@@ -58,6 +58,7 @@ from knic.language.acoustic import (
 )
 from knic.language.audio import Transcript, duration_of, pcm_bytes
 from knic.language.commands import command_language
+from knic.language.judging import Judging
 from knic.language.lmfiles import binary_model, build_model, dictionary_lines, model_words
 from knic.language.passworker import PassWorker, start_worker
 from knic.language.phoneloop import (
@@ -297,9 +298,8 @@ class NgramRecognizer:
         """The confidence threshold of a member model."""
         return self._members[index].threshold
 
-    def _decode(self, raw: bytes) -> tuple[int, Decoded]:
-        """Every member's n-gram pass (the later members' in their workers meanwhile); the chosen member's
-        index and result."""
+    def _decode(self, raw: bytes) -> list[Decoded]:
+        """Every member's n-gram pass (the later members' in their workers meanwhile)."""
         self.build()
         workers = self._workers or [None] * (len(self._members) - 1)
         request = struct.pack("!I", max(0, self.nbest)) + raw
@@ -314,8 +314,7 @@ class NgramRecognizer:
             # utterance slightly differently from the later ones, so this process's copies of the decoders
             # must have decoded too, to give the same results as the workers should one of them fail
             self._workers = [start_worker(_ngram_job(member)) for member in self._members[1:]]
-        index = choose_member(results)
-        return index, results[index]
+        return results
 
     def _server(self) -> WhisperServer:
         """Whisper's server, started on first use."""
@@ -416,13 +415,17 @@ class NgramRecognizer:
         """
         samples = pcm_bytes(audio)
         if self._prompt is None:
-            return self._first_opinion(samples, phone_score, decoded)
+            return self._first_opinion(samples, phone_score, decoded)[0]
         started = time.perf_counter()
-        own = settled(Opinion(self._server, samples, heard)(), self.reads)
+        whispered = Opinion(self._server, samples, heard)()
+        own = settled(whispered, self.reads)
         if own:  # pocketsphinx could not change the reading
             elapsed = (time.perf_counter() - started) * 1000.0
             return Transcript(own, True, math.nan, duration_of(samples), elapsed)
-        first = self._first_opinion(samples, phone_score, decoded)
+        judging = Judging(self._server(), samples, whispered, self.reads) if whispered is not None else None
+        first, paths = self._first_opinion(samples, phone_score, decoded)
+        if judging is not None:
+            first = judging.finish(first, paths)
         return replace(first, decode_ms=(time.perf_counter() - started) * 1000.0)  # Whisper's time too
 
     def _first_opinion(
@@ -430,16 +433,15 @@ class NgramRecognizer:
         samples: bytes,
         phone_score: Callable[[int], float] | None,
         decoded: Callable[[], list[Decoded] | None] | None,
-    ) -> Transcript:
-        """pocketsphinx's transcript of the utterance (see :meth:`recognize`)."""
+    ) -> tuple[Transcript, list[str]]:
+        """pocketsphinx's transcript of the utterance (see :meth:`recognize`) and each member's best path."""
         raw = ngram_padded(samples)
         started = time.perf_counter()
         results = decoded() if decoded is not None else None
-        if results is not None:
-            index = choose_member(results)
-            chosen = results[index]
-        else:
-            index, chosen = self._decode(raw)
+        if results is None:
+            results = self._decode(raw)
+        index = choose_member(results)
+        chosen, paths = results[index], [result[0] for result in results]
         best, score, frames, hypotheses, finished, after = chosen
         spoken = " ".join(best.split()[:-after]) if after else best
         if spoken != best and self.reads(spoken):  # last words heard after the speech ended ("... but")
@@ -450,11 +452,12 @@ class NgramRecognizer:
         if not read:
             elapsed = (time.perf_counter() - started) * 1000.0
             score = math.nan if text else float("-inf")
-            return Transcript(text, read, score, duration_of(samples), elapsed)
+            return Transcript(text, read, score, duration_of(samples), elapsed), paths
         reference = phone_score(index) if phone_score is not None else self.phone_loop_of(index).score(raw)
         elapsed = (time.perf_counter() - started) * 1000.0
         level = confidence(score, reference, frames)
-        return Transcript(text, level >= self.threshold_of(index), level, duration_of(samples), elapsed)
+        accepted = level >= self.threshold_of(index)
+        return Transcript(text, accepted, level, duration_of(samples), elapsed), paths
 
 
 def _ngram_job(member: _Member) -> Callable[[bytes], Decoded]:

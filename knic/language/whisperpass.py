@@ -14,15 +14,14 @@ the same layout (``model.bin``, ``tokenizer.json``). The audio is not padded to 
 to :data:`WINDOW_S` (the encoder's time is about proportional to its input: 66 ms for 10 s, 550 ms for
 30 s, on this project's 2-core machine).
 
-Log-mel features are computed here with numpy, the way Whisper's front end computes them (Hann window of
-400 samples, hop 160, 80 Slaney-scale mel bands, log10 clamped 8 below the maximum, scaled by 4).
+Log-mel features are computed with numpy (:mod:`knic.language.logmel`), the way Whisper's front end
+computes them.
 """
 
 from __future__ import annotations
 
 import contextlib
 import json
-import math
 import os
 import struct
 import subprocess
@@ -30,11 +29,11 @@ import sys
 import weakref
 from collections.abc import Callable
 from dataclasses import dataclass
-from functools import lru_cache
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from core.errors import LanguageError
+from knic.language.logmel import SAMPLE_RATE, log_mel
 from knic.language.vocabulary import normalize
 
 if TYPE_CHECKING:
@@ -55,10 +54,10 @@ MAX_TOKENS = 60
 #: CPU threads of the server's model: pocketsphinx waits for Whisper's answer (:func:`settled`), so Whisper
 #: has the cores to itself (two threads: 427 ms per dev utterance against 454 ms with one)
 SERVER_THREADS = max(1, min(2, os.cpu_count() or 1))
+#: transcripts of the beam search Whisper is asked for when it is not sure of its own (:meth:`alternatives`)
+BEAM = 5
 #: tokens the decoder may write per second of audio, besides 8 (people say about 3 words a second)
 TOKENS_PER_S = 6.0
-#: Whisper's front end
-SAMPLE_RATE, N_FFT, HOP, N_MELS = 16000, 400, 160, 80
 
 
 def model_dir() -> Path | None:
@@ -76,42 +75,6 @@ def model_dir() -> Path | None:
         return None
     folder = Path(next(iter(spec.submodule_search_locations))) / "model"
     return folder if (folder / "model.bin").is_file() else None
-
-
-@lru_cache(maxsize=2)
-def mel_filters(n_mels: int = N_MELS) -> npt.NDArray[np.float32]:
-    """Triangular filters on the Slaney mel scale (linear below 1 kHz, logarithmic above), each normalised
-    to unit area, as a ``(n_mels, N_FFT // 2 + 1)`` matrix."""
-    import numpy as np
-
-    def to_hz(mel: npt.NDArray[np.float64]) -> npt.NDArray[np.float64]:
-        linear = 200.0 / 3 * mel
-        knee = 15.0  # 1 kHz in mels
-        return np.where(mel < knee, linear, 1000.0 * np.exp(math.log(6.4) / 27.0 * (mel - knee)))
-
-    top = 3 * math.log(SAMPLE_RATE / 2 / 1000.0) / math.log(6.4) * 9 + 15.0  # Nyquist in mels
-    edges = to_hz(np.linspace(0.0, top, n_mels + 2))
-    bins = np.linspace(0.0, SAMPLE_RATE / 2, N_FFT // 2 + 1)
-    rising = (bins[None, :] - edges[:-2, None]) / (edges[1:-1] - edges[:-2])[:, None]
-    falling = (edges[2:, None] - bins[None, :]) / (edges[2:] - edges[1:-1])[:, None]
-    weights = np.maximum(0.0, np.minimum(rising, falling))
-    weights *= (2.0 / (edges[2:] - edges[:-2]))[:, None]
-    return weights.astype(np.float32)
-
-
-def log_mel(samples: npt.NDArray[np.float32]) -> npt.NDArray[np.float32]:
-    """Whisper's log-mel spectrogram of 16 kHz samples in [-1, 1]: ``(N_MELS, len(samples) // HOP)``."""
-    import numpy as np
-
-    padded = np.pad(samples.astype(np.float32), N_FFT // 2, mode="reflect")
-    frames = 1 + (len(padded) - N_FFT) // HOP
-    index = np.arange(N_FFT)[None, :] + HOP * np.arange(frames)[:, None]
-    window = (0.5 - 0.5 * np.cos(2 * np.pi * np.arange(N_FFT) / N_FFT)).astype(np.float32)
-    power = np.abs(np.fft.rfft(padded[index] * window, axis=1)) ** 2
-    mel = mel_filters() @ power[:-1].T.astype(np.float32)
-    logs = np.log10(np.maximum(mel, 1e-10))
-    logs = np.maximum(logs, logs.max() - 8.0)
-    return ((logs + 4.0) / 4.0).astype(np.float32)
 
 
 @dataclass(frozen=True)
@@ -142,6 +105,8 @@ class WhisperPass:
         self._model: Any = None
         self._tokenizer: Any = None
         self._start: list[int] = []
+        #: the last utterance heard: its encoder output, its frames and the most tokens to write for it
+        self._last: tuple[Any, int, int] | None = None
 
     def _load(self) -> None:
         if self._model is not None:
@@ -170,7 +135,8 @@ class WhisperPass:
         return list(self._tokenizer.encode(" " + text.strip(), add_special_tokens=False).ids)
 
     def hear(self, audio: npt.NDArray[np.int16]) -> Heard:
-        """Transcribe 16 kHz mono samples.
+        """Transcribe 16 kHz mono samples (greedy search); the utterance is kept for :meth:`alternatives` and
+        :meth:`scores`.
 
         Raises:
             LanguageError: the model cannot be loaded.
@@ -185,11 +151,62 @@ class WhisperPass:
         features = features[:, : features.shape[1] // 2 * 2]
         encoded = self._model.encode(ctranslate2.StorageView.from_array(np.ascontiguousarray(features[None])))
         most = min(MAX_TOKENS, int(TOKENS_PER_S * len(audio) / SAMPLE_RATE) + 8)
+        self._last = (encoded, features.shape[1] // 2, most)
         result = self._model.generate(
             encoded, [self._start], beam_size=1, max_length=len(self._start) + most, return_scores=True
         )[0]
-        tokens = [t for t in result.sequences_ids[0] if t < self._end]
-        return Heard(unrepeated(self._tokenizer.decode(tokens).strip()), float(result.scores[0]))
+        return Heard(self._text(result.sequences_ids[0]), float(result.scores[0]))
+
+    def _text(self, tokens: list[int]) -> str:
+        return unrepeated(self._tokenizer.decode([t for t in tokens if t < self._end]).strip())
+
+    def alternatives(self, count: int = BEAM) -> list[Heard]:
+        """The ``count`` best transcripts of a beam search of the last utterance heard, best first (none
+        before :meth:`hear`)."""
+        if self._last is None:
+            return []
+        encoded, _, most = self._last
+        result = self._model.generate(
+            encoded,
+            [self._start],
+            beam_size=count,
+            num_hypotheses=count,
+            max_length=len(self._start) + most,
+            return_scores=True,
+        )[0]
+        return [
+            Heard(self._text(t), float(s)) for t, s in zip(result.sequences_ids, result.scores, strict=True)
+        ]
+
+    def scores(self, texts: list[str]) -> list[float]:
+        """How well each text fits the last utterance heard: the mean log-probability of its tokens (written
+        capitalised and ended by a full stop, which penalises a text that stops short) when the decoder is
+        made to write it, without the world's prompt (:func:`forced_text`); none before :meth:`hear`."""
+        import ctranslate2
+        import numpy as np
+
+        if self._last is None or not texts:
+            return []
+        encoded, frames, _ = self._last
+        tokens = [self._encode(forced_text(text)) for text in texts]
+        batch = np.repeat(np.asarray(encoded), len(tokens), axis=0)
+        start = self._start[-2:]  # start of transcript, no timestamps: the prompt is not needed to score
+        aligned = self._model.align(
+            ctranslate2.StorageView.from_array(np.ascontiguousarray(batch)),
+            start,
+            tokens,
+            [frames] * len(tokens),
+        )
+        return [
+            float(np.mean(np.log(np.maximum(np.asarray(a.text_token_probs, dtype=np.float64), 1e-6))))
+            for a in aligned
+        ]
+
+
+def forced_text(text: str) -> str:
+    """A recogniser's lowercase words as Whisper writes a sentence: capitalised, with a full stop."""
+    text = text.strip()
+    return text[:1].upper() + text[1:] + "." if text else text
 
 
 def unrepeated(text: str) -> str:
@@ -268,6 +285,8 @@ class WhisperServer:
         self.prompt, self.folder = prompt, folder or model_dir()
         self._process: subprocess.Popen[bytes] | None = None
         self._pending = 0
+        #: the digest of the last utterance sent to the running server (:meth:`ask`)
+        self._heard = b""
         self._start()
 
     def _start(self) -> None:
@@ -277,7 +296,7 @@ class WhisperServer:
         except OSError:
             self._process = None
             return
-        self._process, self._pending = process, 0
+        self._process, self._pending, self._heard = process, 0, b""
         self._finalizer = weakref.finalize(self, _stop_server, process)
 
     @property
@@ -301,13 +320,40 @@ class WhisperServer:
             except OSError:  # it died, perhaps not yet reaped (its pid still shows): wait for it, start anew
                 self.close()
                 continue
-            self._pending += 1
+            self._pending, self._heard = self._pending + 1, _digest(samples)
             return True
         return False
 
     def result(self) -> Heard | None:
         """Whisper's hearing of the last utterance sent (replies to earlier ones skipped); None when the
         server died or failed on it."""
+        return heard_of(self._last_reply())
+
+    def ask(self, samples: bytes, question: dict[str, Any]) -> bool:
+        """Send a question about an utterance (:func:`answer_of`), the utterance first when it is not the
+        last one the server heard; False when no server could take it."""
+        if self._heard != _digest(samples) and not self.submit(samples):
+            return False
+        body = json.dumps(question).encode()
+        process = self._process
+        try:
+            if process is None or process.stdin is None:
+                return False
+            process.stdin.write(FRAME.pack(len(body) | QUESTION) + body)
+            process.stdin.flush()
+        except OSError:
+            self.close()
+            return False
+        self._pending += 1
+        return True
+
+    def answer(self) -> Any:
+        """The answer to the last question asked (earlier replies skipped): JSON data, None when the server
+        died or could not answer."""
+        return self._last_reply()
+
+    def _last_reply(self) -> Any:
+        """Every pending reply read: the last one's JSON data (None when the server died)."""
         process, found = self._process, None
         while self._pending and process is not None and process.stdout is not None:
             header = process.stdout.read(FRAME.size)
@@ -317,7 +363,7 @@ class WhisperServer:
                 return None
             self._pending -= 1
             try:
-                found = heard_of(json.loads(body))
+                found = json.loads(body)
             except ValueError:
                 found = None
         return found
@@ -340,6 +386,17 @@ class WhisperServer:
 
 #: a message between a client and the server: its length, then its bytes
 FRAME = struct.Struct("!I")
+#: the bit of a request's length that marks a question about the last utterance (:func:`answer_of`), not
+#: audio (requests are far shorter than 2 GiB)
+QUESTION = 1 << 31
+#: most texts one question may ask scores of, and their longest text
+MAX_TEXTS, MAX_TEXT_CHARS = 64, 1000
+
+
+def _digest(samples: bytes) -> bytes:
+    import hashlib
+
+    return hashlib.blake2b(samples, digest_size=16).digest()
 
 
 def _stop_server(process: subprocess.Popen[bytes]) -> None:
@@ -367,7 +424,12 @@ def serve(prompt: str, folder: str) -> None:
         header = requests.read(FRAME.size)
         if len(header) < FRAME.size:
             return
-        replies.write(framed_reply(whisper, requests.read(FRAME.unpack(header)[0])))
+        (size,) = FRAME.unpack(header)
+        if size & QUESTION:
+            answer = json.dumps(answer_of(whisper, requests.read(size & ~QUESTION))).encode()
+            replies.write(FRAME.pack(len(answer)) + answer)
+        else:
+            replies.write(framed_reply(whisper, requests.read(size)))
         replies.flush()
 
 
@@ -382,6 +444,30 @@ def framed_reply(whisper: WhisperPass, data: bytes) -> bytes:
     except (LanguageError, ValueError, RuntimeError):
         reply = b"null"
     return FRAME.pack(len(reply)) + reply
+
+
+def answer_of(whisper: WhisperPass, data: bytes) -> Any:
+    """The answer to a question about the last utterance heard (JSON): ``{"beam": n}``, the ``n`` best
+    transcripts of a beam search as ``[text, mean log-prob]`` pairs (:meth:`WhisperPass.alternatives`, n at
+    most 10); ``{"score": [text, ...]}``, each text's score (:meth:`WhisperPass.scores`). None for a malformed
+    question or when Whisper cannot answer."""
+    try:
+        question = json.loads(data)
+        if not isinstance(question, dict):
+            return None
+        if isinstance(question.get("beam"), int):
+            found = whisper.alternatives(max(1, min(10, question["beam"])))
+            return [[heard.text, heard.mean_log_prob] for heard in found]
+        texts = question.get("score")
+        if (
+            isinstance(texts, list)
+            and len(texts) <= MAX_TEXTS
+            and all(isinstance(t, str) and len(t) <= MAX_TEXT_CHARS for t in texts)
+        ):
+            return whisper.scores(texts)
+    except (LanguageError, ValueError, RuntimeError):
+        return None
+    return None
 
 
 class Opinion:

@@ -13,17 +13,13 @@ import pytest
 from core.errors import LanguageError
 from knic.language.audio import load_audio
 from knic.language.lmspeech import NgramRecognizer
+from knic.language.logmel import HOP, N_MELS, SAMPLE_RATE, log_mel, mel_filters
 from knic.language.understanding import understand_transcript
 from knic.language.whisperpass import (
-    HOP,
     MODEL_ENV,
-    N_MELS,
-    SAMPLE_RATE,
     SURE_LOG_PROB,
     Heard,
     WhisperPass,
-    log_mel,
-    mel_filters,
     model_dir,
     settled,
     unrepeated,

@@ -1,0 +1,97 @@
+"""Whisper as the judge of a spoken command it did not settle: of the transcripts both recognisers offer that
+the reader reads, the one Whisper finds fits the audio best.
+
+Whisper settles an utterance when it is sure of its own transcript and the reader reads it
+(:func:`~knic.language.whisperpass.settled`). Otherwise, before this module, pocketsphinx decided alone:
+its adapted acoustic model hears the voices it was adapted to well, and voices unlike them poorly, while
+Whisper, trained on far more speakers, often hears them nearly right ("could you get jagged you send an
+apple") or has the right transcript in its beam. So Whisper is asked two more things about the utterance
+(:meth:`~knic.language.whisperpass.WhisperServer.ask`, in its server, the encoder's output kept):
+
+1. its :data:`~knic.language.whisperpass.BEAM` best transcripts by beam search, asked before pocketsphinx
+   decodes so that both run at once;
+2. the score of every candidate the reader reads -- pocketsphinx's transcript and each acoustic model's
+   best path, Whisper's greedy transcript and its beam's -- as the mean log-probability of the candidate's
+   tokens when Whisper is made to write it (:meth:`~knic.language.whisperpass.WhisperPass.scores`).
+
+pocketsphinx's transcript is kept when pocketsphinx accepted it and Whisper's score of it is above
+:data:`KEEP_LOG_PROB`; else the best-scoring candidate is taken when its score is above
+:data:`TAKE_LOG_PROB`; else the utterance is refused. A candidate is only ever a transcript one of the
+recognisers heard, so Whisper's score cannot make up a command; other speech is refused because none of the
+candidates fits it (their scores fall far lower than those of commands, whichever recogniser heard them).
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Callable, Sequence
+from dataclasses import replace
+from typing import Any, Protocol
+
+from knic.language.audio import Transcript
+from knic.language.vocabulary import normalize
+from knic.language.whisperpass import BEAM, Heard, heard_of
+
+#: Whisper's score above which pocketsphinx's accepted transcript is kept. With :data:`TAKE_LOG_PROB`, set on
+#: the five spoken dev sets (407 commands in 20 voices, 134 other utterances) and ``speech_people3/dev``
+#: (112 commands, 12 other utterances, in 7 voices no acoustic adaptation heard), frame+args and other
+#: speech rejected (pocketsphinx alone after Whisper's settling: 377 and 73 commands, 126 and 12 rejected):
+#: -2.0 and -3.5: 377 and 92, 130 and 12; -2.0 and -4.0: 381 and 94, 130 and 12 (other speech's best
+#: candidates cluster between -4.0 and -4.7, hence -3.5); -1.5 and -3.0: 372 and 93; -3.0 and -3.0: 376
+#: and 91.
+KEEP_LOG_PROB = -2.0
+#: Whisper's score above which the best-scoring candidate the reader reads is taken (see above).
+TAKE_LOG_PROB = -3.5
+
+
+class Asked(Protocol):
+    """What judging needs of Whisper's server (:class:`~knic.language.whisperpass.WhisperServer`)."""
+
+    def ask(self, samples: bytes, question: dict[str, Any]) -> bool:
+        """Send a question about an utterance; False when it could not be sent."""
+        ...
+
+    def answer(self) -> Any:
+        """The answer to the last question (None: none)."""
+        ...
+
+
+class Judging:
+    """One utterance's judging, started before pocketsphinx decodes it (Whisper's beam search then runs
+    beside the decoding) and finished with pocketsphinx's transcript.
+
+    Args:
+        server: Whisper's server.
+        samples: the utterance (raw 16 kHz 16-bit PCM).
+        heard: Whisper's greedy transcript of it, when there is one.
+        reads: whether the reader reads a text (or asks about it).
+    """
+
+    def __init__(self, server: Asked, samples: bytes, heard: Heard | None, reads: Callable[[str], bool]):
+        self._server, self._samples, self._heard, self._reads = server, samples, heard, reads
+        self._asked = server.ask(samples, {"beam": BEAM})
+
+    def finish(self, first: Transcript, paths: Sequence[str]) -> Transcript:
+        """The judged transcript, given pocketsphinx's (``first``) and each acoustic model's best path
+        (``paths``); ``first`` itself when Whisper cannot answer."""
+        beam = self._server.answer() if self._asked else None
+        if not isinstance(beam, list):
+            return first
+        hypotheses = [self._heard, *(heard_of(item) for item in beam)]
+        whispered = [found.text for found in hypotheses if found is not None]
+        candidates: list[str] = []
+        for text in [first.text, *paths, *(normalize(t) for t in whispered)]:
+            if text and text not in candidates and self._reads(text):
+                candidates.append(text)
+        if not candidates:
+            return first
+        scores = self._server.answer() if self._server.ask(self._samples, {"score": candidates}) else None
+        if not isinstance(scores, list) or len(scores) != len(candidates):
+            return first
+        fits = dict(zip(candidates, (float(s) for s in scores), strict=True))
+        if first.in_grammar and fits.get(first.text, -math.inf) > KEEP_LOG_PROB:
+            return first
+        best = max(candidates, key=lambda text: fits[text])
+        if fits[best] > TAKE_LOG_PROB:
+            return replace(first, text=best, in_grammar=True, score=fits[best])
+        return replace(first, in_grammar=False, score=math.nan)
