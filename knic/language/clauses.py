@@ -100,6 +100,21 @@ _AFTER_A_THING = frozenset(
     | {"home", "together", "straight", "right", "quick", "fast", "asap", "later", "down", "up", "out", "in"}
     # whom it is said to ("fetch the mug mate", "bring the cup love to the kitchen")
     | {"mate", "buddy", "pal", "darling", "sweetie", "honey", "dear", "love", "sir", "madam", "robot"}
+    | {
+        "sweetheart",
+        "pet",
+        "hun",
+        "lad",
+        "son",
+        "grandma",
+        "granny",
+        "gran",
+        "nan",
+        "nana",
+        "grandad",
+        "grandpa",
+    }
+    | {"mum", "mom", "dad", "auntie", "uncle"}
 )
 #: what may follow a longer name in an action
 _GOES_ON = ("join", "prep", "verb")
@@ -121,9 +136,11 @@ def _compound(
     word = chunk.text
     if word in containers() or any(t.phrase.split()[-1] in containers() for t in chunk.terms):
         return False
-    # the phrase goes on ("the candle holder from the kitchen"), or ends the command after "a" ("bring me a
-    # candle holder"; "fetch the mug quick", "the glasses mate": said to the robot)
-    ended = (nxt is None and article in ("a", "an", "some")) or (nxt is not None and nxt.kind in _GOES_ON)
+    # the phrase goes on ("the candle holder from the kitchen"), or ends the command ("bring me a candle
+    # holder", "the candle holder"; "fetch the mug quick", "the glasses mate": said to the robot)
+    ended = (nxt is None and article in ("a", "an", "some", "the")) or (
+        nxt is not None and nxt.kind in _GOES_ON
+    )
     drawn_out = any(a == b == c for a, b, c in zip(word, word[1:], word[2:], strict=False))  # "pleeease"
     noun = (
         word.isalpha()

@@ -40,7 +40,10 @@
   nothing ("the sun is in my eyes in the conservatory, pull the blinds down"): talk, unless "it" may point
   back to it;
 * a name that fits several things fits the one said earlier in the command, and a bringing said again with
-  more is that one ("I fancy a sherry, bring me the bottle from the sideboard": the sherry bottle, once).
+  more is that one ("I fancy a sherry, bring me the bottle from the sideboard": the sherry bottle, once);
+* a noun after a thing's name that ends the command is a longer name the world lacks after "the" as after
+  "a" ("bring me the candle holder" where the world has a candle); a word said to the person addressed
+  ("the mug mate", "the candle grandma") is none.
 """
 
 from __future__ import annotations
@@ -350,3 +353,20 @@ def test_the_thing_said_before() -> None:
     assert frames_read(flat, "I fancy a sherry, bring me the bottle from the sideboard", "margaret") == [
         {"frame": "BRINGING", "theme": "sherry_bottle", "source": "sideboard", "beneficiary": "me"}
     ]
+
+
+@pytest.mark.parametrize(
+    ("text", "refused"),
+    [("bring me the candle holder", "candle holder"), ("bring me a candle holder", "candle holder")],
+)
+def test_a_longer_name_the_world_lacks(text: str, refused: str) -> None:
+    result = understand(text, _world("tests/fixtures/language/people18/townhouse.yaml"), speaker="nadia")
+    assert not result.accepted and f"'{refused}'" in result.reason
+
+
+@pytest.mark.parametrize("text", ["bring me the scented candle grandma", "fetch the coffee mug mate"])
+def test_a_word_to_the_person_addressed_is_no_longer_name(text: str) -> None:
+    assert (
+        frames_read(_world("tests/fixtures/language/people18/townhouse.yaml"), text, "nadia")[0]["frame"]
+        == "BRINGING"
+    )
