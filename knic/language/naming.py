@@ -10,6 +10,8 @@
   "his room" or "her bedroom" once the person was named ("find rhys, he'll be in his bedroom");
 * a person's first name alone ("mary" for mary_ann) is that person where it begins one person's name; where
   it begins several ("mary ann", "mary beth"), the reader asks which;
+* "could rosa have the book" (or "can" or "may", "get" for "have") asks for it for rosa: "rosa would like the
+  book";
 * of the devices a place narrows a word to ("the light in the attic"), those whose own name ends in that word
   (the attic light, not the attic desk lamp, which is a light only by its kind), where some are
   (:func:`called_so`);
@@ -49,9 +51,8 @@ def said_named(segments: list[list[str]], vocabulary: Vocabulary, known: Collect
     phrases = {t.phrase for t in vocabulary.terms if t.type != "level"}
     people = [t.phrase.split() for t in vocabulary.terms if vocabulary.is_subtype(t.type, "person")]
     rooms = [t.phrase.split() for t in vocabulary.terms if vocabulary.is_subtype(t.type, "room")]
-    out = [
-        _first_names(_contents(_turned_round(s, phrases), phrases), people, phrases, known) for s in segments
-    ]
+    out = [_contents(_turned_round(s, phrases), phrases) for s in segments]
+    out = [_asked_for(_first_names(s, people, phrases, known), people) for s in out]
     return _persons_rooms(out, people, rooms)
 
 
@@ -92,6 +93,17 @@ def _contents(words: list[str], phrases: Collection[str]) -> list[str]:
         if not (w in held and w not in phrases and words[i + 1 : i + 2] == ["of"])
         and not (w == "of" and i and words[i - 1] in held and words[i - 1] not in phrases)
     ]
+
+
+def _asked_for(words: list[str], people: list[list[str]]) -> list[str]:
+    """ "could rosa have the book" -> "rosa would like the book"."""
+    if not words or words[0] not in ("can", "could", "may"):
+        return words
+    for person in people:
+        end = 1 + len(person)
+        if words[1:end] == person and words[end : end + 1] in (["have"], ["get"]):
+            return [*person, "would", "like", *words[end + 1 :]]
+    return words
 
 
 def _first_names(

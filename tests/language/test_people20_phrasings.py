@@ -43,7 +43,9 @@
   more is that one ("I fancy a sherry, bring me the bottle from the sideboard": the sherry bottle, once);
 * a noun after a thing's name that ends the command is a longer name the world lacks after "the" as after
   "a" ("bring me the candle holder" where the world has a candle); a word said to the person addressed
-  ("the mug mate", "the candle grandma") is none.
+  ("the mug mate", "the candle grandma") is none;
+* "could rosa have her hairbrush" (or "can", "may"; "get" for "have"), said by someone else, asks for it
+  for rosa.
 """
 
 from __future__ import annotations
@@ -370,3 +372,17 @@ def test_a_word_to_the_person_addressed_is_no_longer_name(text: str) -> None:
         frames_read(_world("tests/fixtures/language/people18/townhouse.yaml"), text, "nadia")[0]["frame"]
         == "BRINGING"
     )
+
+
+@pytest.mark.parametrize(
+    ("text", "theme"),
+    [
+        ("could rosa get her hairbrush", "hairbrush"),
+        ("can rosa have her hairbrush", "hairbrush"),
+        ("could rosa have the pepper grinder please", "pepper_mill"),
+    ],
+)
+def test_asked_for_someone_else(text: str, theme: str) -> None:
+    assert frames_read(_world("worlds/test_bungalow/test_bungalow.yaml"), text, "walter") == [
+        {"frame": "BRINGING", "theme": theme, "beneficiary": "rosa"}
+    ]
