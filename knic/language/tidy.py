@@ -373,8 +373,12 @@ _HAVING = frozenset({"you", "you've", "have", "had", "finished", "done"})
 def after_moved(chunks: list[Chunk], verb_of: Callable[[str], Chunk | None]) -> list[Chunk]:
     """An action said to come first after another ("bring me the orange after you switch on the light",
     "... once you've switched on the light", "... when you have turned on the light"): it is put first. A
-    verb said in the past there is the verb (``verb_of`` gives the verb chunk of a word, else None)."""
+    verb said in the past there is the verb (``verb_of`` gives the verb chunk of a word, else None). After a
+    command that opens with "first", "after you" goes on in order ("first you go in the scullery, after you
+    take the gloves": then)."""
     said = next((i for i, c in enumerate(chunks) if c.kind == "verb"), None)
+    if chunks[:1] and chunks[0].text == "first":
+        return [Chunk("join", "then") if c.text == "after" and c.kind == "unknown" else c for c in chunks]
     for i in range(1, len(chunks) - 2):
         if said is None or i <= said or chunks[i].kind != "unknown" or chunks[i].text not in _AFTER:
             continue

@@ -45,7 +45,9 @@
   "a" ("bring me the candle holder" where the world has a candle); a word said to the person addressed
   ("the mug mate", "the candle grandma") is none;
 * "could rosa have her hairbrush" (or "can", "may"; "get" for "have"), said by someone else, asks for it
-  for rosa.
+  for rosa;
+* after a command that opens with "first", "after you" goes on in order ("first you go in the scullery,
+  after you take the rubber gloves, after you give them to ffion"); "I could murder a chocolate" asks for it.
 """
 
 from __future__ import annotations
@@ -385,4 +387,16 @@ def test_a_word_to_the_person_addressed_is_no_longer_name(text: str) -> None:
 def test_asked_for_someone_else(text: str, theme: str) -> None:
     assert frames_read(_world("worlds/test_bungalow/test_bungalow.yaml"), text, "walter") == [
         {"frame": "BRINGING", "theme": theme, "beneficiary": "rosa"}
+    ]
+
+
+def test_first_then_after_you(farm: Vocabulary) -> None:
+    text = "first you go in the scullery, after you take the rubber gloves, after you give them to ffion"
+    assert frames_read(farm, text, "jean_paul") == [
+        {"frame": "MOTION", "goal": "scullery"},
+        {"frame": "TAKING", "theme": "rubber_gloves", "source": "scullery"},
+        {"frame": "BRINGING", "theme": "rubber_gloves", "source": "scullery", "beneficiary": "ffion"},
+    ]
+    assert frames_read(farm, "I could murder a chocolate", "mary_ann") == [
+        {"frame": "BRINGING", "theme": "chocolates", "beneficiary": "me"}
     ]
