@@ -190,6 +190,7 @@ class Chunker:
         for phrase, kind in lang.pronouns.items():
             put(phrase, 8, Chunk("pronoun", phrase, role=kind))
         put("me", 8, Chunk("me", "me"))
+        put("us", 8, Chunk("me", "us"))  # "grab us the remote", "take us to the kitchen": the speaker
         self._table = table
         #: the words of the command language's phrases (verbs, fillers, determiners, ...)
         self.language_words = frozenset(w for p in table for w in p.split())

@@ -48,7 +48,8 @@
 * "could rosa have her hairbrush" (or "can", "may"; "get" for "have"), said by someone else, asks for it
   for rosa;
 * after a command that opens with "first", "after you" goes on in order ("first you go in the scullery,
-  after you take the rubber gloves, after you give them to ffion"); "I could murder a chocolate" asks for it.
+  after you take the rubber gloves, after you give them to ffion"); "I could murder a chocolate" asks for it;
+* "us" is the speaker, as "me" is ("grab us a couple of jam jars").
 """
 
 from __future__ import annotations
@@ -404,4 +405,10 @@ def test_first_then_after_you(farm: Vocabulary) -> None:
     ]
     assert frames_read(farm, "I could murder a chocolate", "mary_ann") == [
         {"frame": "BRINGING", "theme": "chocolates", "beneficiary": "me"}
+    ]
+
+
+def test_us_is_the_speaker(farm: Vocabulary) -> None:
+    assert frames_read(farm, "grab us a couple of jam jars", "ffion") == [
+        {"frame": "BRINGING", "theme": "jam_jars", "beneficiary": "me"}
     ]
