@@ -149,7 +149,8 @@ def _carry(
                 or (arg.chunk.kind == "pronoun" and arg.chunk.role == "person")
             ):
                 roles["beneficiary"] = reader.resolve(arg, ("person",), previous, groups)[0]
-                to_person = roles["beneficiary"] != SPEAKER
+                # "to granny in the living room", "to me in the lounge" (not "here"): where they are
+                to_person = roles["beneficiary"] != SPEAKER or arg.chunk.role != "here"
             else:
                 roles["goal"] = reader.resolve(arg, ("room", "furniture"), previous, groups)[0]
                 for theme in themes:

@@ -49,7 +49,9 @@
   for rosa;
 * after a command that opens with "first", "after you" goes on in order ("first you go in the scullery,
   after you take the rubber gloves, after you give them to ffion"); "I could murder a chocolate" asks for it;
-* "us" is the speaker, as "me" is ("grab us a couple of jam jars").
+* "us" is the speaker, as "me" is ("grab us a couple of jam jars");
+* a place said after "to me" is where the speaker is, as after "to granny" ("bring the book to me in the
+  lounge"); after "here" it is still where the thing is.
 """
 
 from __future__ import annotations
@@ -411,4 +413,14 @@ def test_first_then_after_you(farm: Vocabulary) -> None:
 def test_us_is_the_speaker(farm: Vocabulary) -> None:
     assert frames_read(farm, "grab us a couple of jam jars", "ffion") == [
         {"frame": "BRINGING", "theme": "jam_jars", "beneficiary": "me"}
+    ]
+
+
+def test_to_me_in_a_room() -> None:
+    flat = _world("worlds/test_flat/test_flat.yaml")
+    assert frames_read(flat, "bring the book to me in the lounge", "olga") == [
+        {"frame": "BRINGING", "theme": "book", "goal": "lounge", "beneficiary": "me"}
+    ]
+    assert frames_read(flat, "the book, bring it here would you, it's on the desk", "olga") == [
+        {"frame": "BRINGING", "theme": "book", "source": "desk", "beneficiary": "me"}
     ]
