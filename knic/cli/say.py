@@ -151,6 +151,8 @@ def _asked(args: argparse.Namespace) -> dict[str, Any] | None:
     from knic.language import sayd
     from knic.language.oneshot import world_key
 
+    if sayd.idle_s() <= 0:  # daemons are off
+        return None
     audio = _audio(args)
     path = sayd.socket_path(world_key(_world_files(args), args.acoustic_model), args.acoustic_model)
     return sayd.ask(path, audio, args.speaker)

@@ -2,14 +2,14 @@
 Unix socket.
 
 ``knic say`` is a new process for each command. Without a daemon it forks its decoder passes and Whisper at
-once and meanwhile loads the world (:mod:`knic.language.oneshot`): about 0.85 s median on the project's
+once and meanwhile loads the world (:mod:`knic.language.oneshot`): about 0.85-1.0 s median on the project's
 2-core machine, of which the interpreter, the imports and the world took 0.3-0.5 s before the recogniser
 started, and loading Whisper's model another 0.5 s in its child. The daemon keeps all of it loaded: the
-world's vocabulary and reader, an :class:`~knic.language.lmspeech.NgramRecognizer` with its pocketsphinx
-decoders, phone loops, worker processes and Whisper server. A ``knic say`` that finds it checks and reads
-the WAV file as without it, sends the audio (:func:`ask`) and prints the understanding it gets back, having
-imported little more than the command line; one that finds none, or gets no answer, hears the command
-itself as before and then starts the daemon (:func:`ensure`). A command is never lost to the daemon.
+world's vocabulary and reader, pocketsphinx's decoders in worker processes and Whisper's server
+(:class:`~knic.language.sayhearing.Hearing`). A ``knic say`` that finds it checks and reads the WAV file as
+without it, sends the audio (:func:`ask`) and prints the understanding it gets back, having imported little
+more than the command line; one that finds none, or gets no answer, hears the command itself as before and
+then starts the daemon (:func:`ensure`). A command is never lost to the daemon.
 
 The socket's name is a digest of what the answer depends on (:func:`socket_path`): the world key
 (:func:`~knic.language.oneshot.world_key`: the world's files, the language code including this module, the
