@@ -19,6 +19,7 @@ A cut never splits a phrase the chunker reads as one ("where did i leave" stays 
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
+from dataclasses import replace
 from itertools import pairwise
 
 from knic.language.chunks import Chunk
@@ -262,7 +263,24 @@ def sayings_dropped(chunks: list[Chunk]) -> list[Chunk]:
         saying = chunk.kind == "entity" and nxt is not None and nxt.kind == "unknown" and nxt.text in _SAYS
         return saying and any(c.kind == "verb" for c in out) and out[-1].kind not in _GOVERNING
 
-    return _talk_dropped(_wishes_dropped(chunks), starts)
+    return _talk_dropped(_wishes_dropped(_done_said(chunks)), starts)
+
+
+def _done_said(chunks: list[Chunk]) -> list[Chunk]:
+    """ "fetch the first aid kit, tom's cut his finger": what someone has done, said after an action, is a
+    saying about them (the verb after "has" or "is" is no action of the robot's)."""
+    out = list(chunks)
+    for i in range(1, len(out) - 2):
+        name, have, done = out[i : i + 3]
+        if (
+            name.kind == "entity"
+            and have.kind == "unknown"
+            and have.text in ("has", "had", "is", "was")
+            and done.kind == "verb"
+            and any(c.kind == "verb" for c in out[:i])
+        ):
+            out[i + 1 : i + 3] = [Chunk("unknown", "has"), replace(done, soft=True)]
+    return out
 
 
 def _wishes_dropped(chunks: list[Chunk]) -> list[Chunk]:

@@ -51,7 +51,8 @@
   after you take the rubber gloves, after you give them to ffion"); "I could murder a chocolate" asks for it;
 * "us" is the speaker, as "me" is ("grab us a couple of jam jars");
 * a place said after "to me" is where the speaker is, as after "to granny" ("bring the book to me in the
-  lounge"); after "here" it is still where the thing is.
+  lounge"); after "here" it is still where the thing is;
+* what someone has done, said after the request ("fetch the first aid kit, tom's cut his finger"), is talk.
 """
 
 from __future__ import annotations
@@ -423,4 +424,14 @@ def test_to_me_in_a_room() -> None:
     ]
     assert frames_read(flat, "the book, bring it here would you, it's on the desk", "olga") == [
         {"frame": "BRINGING", "theme": "book", "source": "desk", "beneficiary": "me"}
+    ]
+
+
+@pytest.mark.parametrize(
+    "text",
+    ["fetch the first aid kit, tom's cut his finger", "fetch the first aid kit, tom has cut his finger"],
+)
+def test_what_someone_has_done_is_talk(text: str) -> None:
+    assert frames_read(_world("tests/fixtures/language/people18/townhouse.yaml"), text, "nadia") == [
+        {"frame": "BRINGING", "theme": "first_aid_kit", "beneficiary": "me"}
     ]
