@@ -22,6 +22,7 @@
 from __future__ import annotations
 
 from collections.abc import Collection, Sequence
+from functools import lru_cache
 
 from core.errors import LanguageError
 from knic.language.chains import AmbiguityError
@@ -48,12 +49,19 @@ def said_named(segments: list[list[str]], vocabulary: Vocabulary, known: Collect
     Raises:
         AmbiguityError: a first name begins several people's names.
     """
-    phrases = {t.phrase for t in vocabulary.terms if t.type != "level"}
-    people = [t.phrase.split() for t in vocabulary.terms if vocabulary.is_subtype(t.type, "person")]
-    rooms = [t.phrase.split() for t in vocabulary.terms if vocabulary.is_subtype(t.type, "room")]
+    phrases, people, rooms = _names(vocabulary)
     out = [_contents(_turned_round(s, phrases), phrases) for s in segments]
     out = [_asked_for(_first_names(s, people, phrases, known), people) for s in out]
     return _persons_rooms(out, people, rooms)
+
+
+@lru_cache(maxsize=16)
+def _names(vocabulary: Vocabulary) -> tuple[frozenset[str], list[list[str]], list[list[str]]]:
+    """The world's phrases, and the words of its people's and its rooms' names (read once per vocabulary)."""
+    phrases = frozenset(t.phrase for t in vocabulary.terms if t.type != "level")
+    people = [t.phrase.split() for t in vocabulary.terms if vocabulary.is_subtype(t.type, "person")]
+    rooms = [t.phrase.split() for t in vocabulary.terms if vocabulary.is_subtype(t.type, "room")]
+    return phrases, people, rooms
 
 
 def _turned_round(words: list[str], phrases: Collection[str]) -> list[str]:
