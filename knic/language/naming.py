@@ -65,8 +65,8 @@ def _names(vocabulary: Vocabulary) -> tuple[frozenset[str], list[list[str]], lis
 
 
 def _turned_round(words: list[str], phrases: Collection[str]) -> list[str]:
-    """ "the blind of the skylight" -> "the skylight blind" where that is a name and the words said are
-    none."""
+    """ "the blind of the skylight" -> "the skylight blind", "the shelf for books" -> "the bookshelf", where
+    that is a name and the words said are none."""
     out = list(words)
     for i in range(len(out) - 2, 0, -1):
         kept = _AROUND.get(out[i])
@@ -79,17 +79,30 @@ def _turned_round(words: list[str], phrases: Collection[str]) -> list[str]:
                 continue
             found = next(
                 (
-                    m
+                    (m, name)
                     for m in range(min(3, len(out) - after), 0, -1)
-                    if " ".join([*kept, *out[after : after + m], *head]) in phrases
-                    and " ".join(out[i - n : after + m]) not in phrases
+                    if " ".join(out[i - n : after + m]) not in phrases
+                    for name in _the_other_way(list(kept), out[after : after + m], head)
+                    if name in phrases
                 ),
-                0,
+                None,
             )
             if found:
-                out[i - n : after + found] = [*kept, *out[after : after + found], *head]
+                out[i - n : after + found[0]] = found[1].split()
                 break
     return out
+
+
+def _the_other_way(kept: list[str], other: list[str], head: list[str]) -> list[str]:
+    """The names "head <kept> other" may be said the other way round as: "skylight blind", "under stairs
+    cupboard", and with the other word singular ("book shelf") or joined to the head ("bookshelf")."""
+    singular = (
+        [*other[:-1], other[-1][:-1]] if other[-1].endswith("s") and not other[-1].endswith("ss") else []
+    )
+    names = [" ".join([*kept, *other, *head]), *([" ".join([*kept, *singular, *head])] if singular else [])]
+    if not kept and len(head) == 1:
+        names += ["".join([*words, *head]) for words in (other, singular) if len(words) == 1]
+    return names
 
 
 def _contents(words: list[str], phrases: Collection[str]) -> list[str]:

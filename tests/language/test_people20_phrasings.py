@@ -12,8 +12,8 @@
   on the footstool for me");
 * a thing said with "of", "for" or "under" before another word is the world's name that puts the words the
   other way round (``knic.language.naming``): "the blind of the skylight", "a glass of water", "the cupboard
-  under the stairs"; a container the world has no name for, said of what it holds, is what it holds ("bring
-  me a can of coke" is refused naming the coke);
+  under the stairs", "the shelf for books" (the bookshelf); a container the world has no name for, said of
+  what it holds, is what it holds ("bring me a can of coke" is refused naming the coke);
 * a room named after a person is "rhys's room", and "his bedroom" once rhys was named;
 * a first name alone is the one person whose name it begins ("find jean"); where it begins several people's
   names ("mary" for mary ann and mary beth) the reader asks which;
@@ -434,4 +434,10 @@ def test_to_me_in_a_room() -> None:
 def test_what_someone_has_done_is_talk(text: str) -> None:
     assert frames_read(_world("tests/fixtures/language/people18/townhouse.yaml"), text, "nadia") == [
         {"frame": "BRINGING", "theme": "first_aid_kit", "beneficiary": "me"}
+    ]
+
+
+def test_the_shelf_for_books(vocabulary: Vocabulary) -> None:
+    assert frames_read(vocabulary, "Put the candle on the shelf for books.") == [
+        {"frame": "PLACING", "theme": "candle", "goal": "bookshelf"}
     ]
