@@ -147,14 +147,19 @@ def _doings(chunks: list[Chunk], is_a: Callable[[Chunk, str], bool]) -> list[Chu
     while i < len(chunks):
         chunk = chunks[i]
         subject = chunk.kind == "unknown" and chunk.text in _CONTRACTED_DOERS
+        been = (
+            chunk.text in ("has", "have", "had", "is")  # "rosa's been" is read "rosa is been"
+            and chunks[i + 1 : i + 2] != []
+            and chunks[i + 1].text == "been"
+        )
         be = (
             chunk.kind == "unknown"
-            and chunk.text in ("is", "are")
+            and (chunk.text in ("is", "are") or been)
             and bool(out)
             and out[-1].kind == "entity"
             and is_a(out[-1], "person")
         )
-        nxt = chunks[i + 1] if i + 1 < len(chunks) else None
+        nxt = chunks[i + 1 + been] if i + 1 + been < len(chunks) else None
         doing = nxt is not None and (
             (nxt.kind == "verb" and nxt.soft) or (nxt.kind == "unknown" and nxt.text.endswith("ing"))
         )
@@ -181,6 +186,8 @@ def _doings(chunks: list[Chunk], is_a: Callable[[Chunk, str], bool]) -> list[Chu
             out.append(chunk)  # nothing asked besides: left as said
             i += 1
             continue
+        # "rosa has been looking for the teddy, take it to her": the thing stays said for "it"
+        out += [c for c in chunks[i:end] if c.kind == "entity" and is_a(c, "item")]
         i = end
     return out
 

@@ -52,7 +52,9 @@
 * "us" is the speaker, as "me" is ("grab us a couple of jam jars");
 * a place said after "to me" is where the speaker is, as after "to granny" ("bring the book to me in the
   lounge"); after "here" it is still where the thing is;
-* what someone has done, said after the request ("fetch the first aid kit, tom's cut his finger"), is talk.
+* what someone has done, said after the request ("fetch the first aid kit, tom's cut his finger"), is talk;
+  so is what someone is or has been doing ("rosa has been looking for the teddy, take it to her"), the thing
+  in it staying said for "it".
 """
 
 from __future__ import annotations
@@ -440,4 +442,18 @@ def test_what_someone_has_done_is_talk(text: str) -> None:
 def test_the_shelf_for_books(vocabulary: Vocabulary) -> None:
     assert frames_read(vocabulary, "Put the candle on the shelf for books.") == [
         {"frame": "PLACING", "theme": "candle", "goal": "bookshelf"}
+    ]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "rosa has been looking for the teddy, take it to her",
+        "rosa's been looking for the teddy, take it to her",
+        "rosa is looking for the teddy, take it to her",
+    ],
+)
+def test_what_someone_has_been_doing_is_talk(text: str) -> None:
+    assert frames_read(_world("worlds/test_bungalow/test_bungalow.yaml"), text, "walter") == [
+        {"frame": "BRINGING", "theme": "teddy_bear", "beneficiary": "rosa"}
     ]
