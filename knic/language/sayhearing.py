@@ -2,23 +2,26 @@
 
 A ``knic say`` without the daemon forks pocketsphinx's passes and Whisper at once
 (:func:`knic.language.oneshot.start_passes`), so that a command Whisper does not settle waits for
-pocketsphinx no longer than for the longer of the two. The daemon does the same with processes started once:
-Whisper's server, pocketsphinx's passes in worker processes. On the first 20 commands of
+pocketsphinx no longer than for the longer of the two, and each child loads its model first. The daemon
+keeps the models loaded: Whisper in its server, pocketsphinx's decoders in the daemon itself, forked into a
+child per pass and command (a fresh copy of a decoder that has decoded nothing, as the one-shot child's), and
+the children are stopped as soon as Whisper settles the command. On the first 20 commands of
 ``tests/fixtures/speech_people/dev`` Whisper settled 7 (2-core machine, load about 3): with pocketsphinx
 waited for after Whisper, as :class:`~knic.language.lmspeech.NgramRecognizer` alone does, an unsettled
-command took 0.4 s of Whisper and 0.3-0.9 s of pocketsphinx.
+command took 0.4 s of Whisper and 0.3-0.9 s of pocketsphinx (median per command 0.94 s; beside Whisper in
+worker processes 0.73 s, the same transcripts). Workers kept from one command to the next went on with the
+passes of a settled command into the next one; a child per command is stopped instead.
 """
 
 from __future__ import annotations
 
 import contextlib
 import os
-from collections.abc import Callable
-from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
     from knic.language.audio import Transcript
+    from knic.language.oneshot import Child
     from knic.language.phoneloop import Decoded
     from knic.language.vocabulary import Vocabulary
     from knic.language.whisperpass import Heard
@@ -27,12 +30,12 @@ if TYPE_CHECKING:
 class Hearing:
     """What a daemon keeps loaded to hear a world's commands, each heard as ``knic say`` hears it without
     the daemon (:meth:`~knic.language.lmspeech.NgramRecognizer.recognize` given Whisper's hearing and
-    pocketsphinx's passes): pocketsphinx's n-gram pass of each acoustic model and the first model's phone
-    loop run in worker processes (:mod:`knic.language.passworker`) while Whisper hears the command in its
-    server (:class:`~knic.language.whisperpass.WhisperServer`, a program of its own: no thread pool lives
-    in this process, which forks), so that a command Whisper does not settle waits for pocketsphinx no
-    longer than for the longer of the two. Without the world's remembered command model
-    (:func:`~knic.language.oneshot.remembered_model`) the recogniser decodes in this process afterwards.
+    pocketsphinx's passes): Whisper hears the command in its server
+    (:class:`~knic.language.whisperpass.WhisperServer`, a program of its own: no thread pool lives in this
+    process, which forks) while pocketsphinx's n-gram pass of each acoustic model and the first model's
+    phone loop run in children forked with their decoders loaded (:func:`~knic.language.oneshot.in_child`).
+    Without the world's remembered command model (:func:`~knic.language.oneshot.remembered_model`) the
+    recogniser decodes in this process, after Whisper.
 
     Args:
         vocabulary: the world's spoken names.
@@ -41,101 +44,71 @@ class Hearing:
 
     Raises:
         LanguageError: pocketsphinx or Whisper cannot load their models.
+        RuntimeError, ValueError, KeyError, TypeError: pocketsphinx refused the remembered model.
     """
 
     def __init__(self, vocabulary: Vocabulary, acoustic_model: str, key: str):
         from knic.language.acoustic import ensemble_members
         from knic.language.lmspeech import NgramRecognizer
-        from knic.language.oneshot import remembered_model
-        from knic.language.passworker import start_worker
+        from knic.language.oneshot import decoder_for, remembered_model
+        from knic.language.phoneloop import PhoneLoop
         from knic.language.whisperpass import WhisperServer, world_prompt
 
-        # the recogniser's own passes only run when a worker failed, in this process (parallel=False)
+        self.whisper = WhisperServer(world_prompt(vocabulary))  # it loads the model meanwhile
+        # the recogniser's own passes only run when a child failed, in this process (parallel=False)
         self.recognizer = NgramRecognizer(
             vocabulary, acoustic_model=acoustic_model, lazy=True, parallel=False
         )
         members, model = ensemble_members(acoustic_model), remembered_model(key)
-        self._passes = [start_worker(_ngram_job(model, member)) for member in members] if model else []
-        self._phones = start_worker(_phone_job(members[0]))
-        self.whisper = WhisperServer(
-            world_prompt(vocabulary)
-        )  # started after the forks: none holds its pipes
-        silence = bytes(32000)  # one second: the workers make their decoders now, while Whisper loads
-        for worker in [*self._passes, self._phones]:
-            if worker is not None and worker.submit(silence):
-                worker.result()
+        self._decoders = [decoder_for(model, member) for member in members] if model else []
+        self._phone_loop = PhoneLoop(members[0])  # as the one-shot child's
         for index in range(1, len(members)):
             self.recognizer.phone_loop_of(index)
-        self.whisper.hear(silence)  # its model loaded, and its first pass done
+        self.whisper.hear(bytes(32000))  # one second of silence: its model loaded, its first pass done
 
     def transcript(self, samples: bytes) -> Transcript:
         """What the recogniser hears in raw 16 kHz 16-bit PCM (every pass started at once)."""
-        from knic.language.phoneloop import as_decoded, ngram_padded
+        from knic.language.oneshot import NBEST, PHONE_LOOP_NICENESS, in_child
+        from knic.language.phoneloop import as_decoded, ngram_padded, ngram_pass
 
         whispered = self.whisper.submit(samples)
         raw = ngram_padded(samples)
-        sent = [worker is not None and worker.submit(raw) for worker in self._passes]
-        phones = self._phones is not None and self._phones.submit(samples)
+
+        def ngram(decoder: Any) -> Child:
+            return in_child(lambda: ngram_pass(decoder, raw, NBEST))
+
+        def phones() -> float:
+            with contextlib.suppress(OSError):
+                os.nice(PHONE_LOOP_NICENESS)  # its score is needed last
+            return float(self._phone_loop.score_of(samples))
+
+        passes, phone_score_child = [ngram(decoder) for decoder in self._decoders], in_child(phones)
 
         def heard() -> Heard | None:
             return self.whisper.result() if whispered else None
 
         def decoded() -> list[Decoded] | None:
             found = []
-            for worker, asked in zip(self._passes, sent, strict=True):
-                result = as_decoded(worker.result()) if worker is not None and asked else None
+            for child in passes:
+                result = as_decoded(child())
                 if result is None:
                     return None
                 found.append(result)
             return found or None
 
         def phone_score(index: int) -> float:
-            score = self._phones.result() if index == 0 and phones and self._phones is not None else None
+            score = phone_score_child() if index == 0 else None
             if isinstance(score, (int, float)):
                 return float(score)
             return self.recognizer.phone_loop_of(index).score_of(samples)
 
-        return self.recognizer.recognize(samples, phone_score=phone_score, decoded=decoded, heard=heard)
+        try:
+            return self.recognizer.recognize(samples, phone_score=phone_score, decoded=decoded, heard=heard)
+        finally:
+            for child in [*passes, phone_score_child]:
+                child.cancel()  # the passes Whisper made unnecessary stop now
 
     def close(self) -> None:
-        """Stop the worker processes and Whisper's server."""
-        for worker in [*self._passes, self._phones]:
-            if worker is not None:
-                worker.close()
+        """Stop Whisper's server."""
         self.whisper.close()
         self.recognizer.close()
-
-
-def _ngram_job(model: tuple[Path, Path], member: str | Path) -> Callable[[bytes], Decoded]:
-    """A worker's job: the n-gram pass of padded raw audio with a member model (its decoder made at the first
-    request, in the worker; reset to its first state before each utterance, as the recogniser's own)."""
-    kept: list[Any] = []
-
-    def job(raw: bytes) -> Decoded:
-        from knic.language.oneshot import NBEST, decoder_for
-        from knic.language.phoneloop import ngram_pass
-
-        if not kept:
-            decoder = decoder_for(model, member)
-            kept.extend([decoder, decoder.get_cmn()])
-        return ngram_pass(kept[0], raw, NBEST, kept[1])
-
-    return job
-
-
-def _phone_job(member: str | Path) -> Callable[[bytes], float]:
-    """A worker's job: the phone loop's score of unpadded audio with a member model, at a lower priority
-    (:data:`~knic.language.oneshot.PHONE_LOOP_NICENESS`: its score is needed last)."""
-    kept: list[Any] = []
-
-    def job(samples: bytes) -> float:
-        from knic.language.oneshot import PHONE_LOOP_NICENESS
-        from knic.language.phoneloop import PhoneLoop
-
-        if not kept:
-            with contextlib.suppress(OSError):
-                os.nice(PHONE_LOOP_NICENESS)
-            kept.append(PhoneLoop(member))
-        return float(kept[0].score_of(samples))
-
-    return job
