@@ -115,6 +115,24 @@ _AFTER_A_THING = frozenset(
         "grandpa",
     }
     | {"mum", "mom", "dad", "auntie", "uncle"}
+    # a word that joins what comes next, heard in the silence after a command ("bring me the remote but")
+    | {
+        "but",
+        "and",
+        "or",
+        "nor",
+        "so",
+        "yet",
+        "if",
+        "because",
+        "than",
+        "that",
+        "which",
+        "who",
+        "what",
+        "when",
+    }
+    | {"where", "while", "though", "although", "unless", "until", "till", "like", "just", "not", "well"}
 )
 #: what may follow a longer name in an action
 _GOES_ON = ("join", "prep", "verb")
