@@ -59,6 +59,7 @@ class Hearing:
         self.recognizer = NgramRecognizer(
             vocabulary, acoustic_model=acoustic_model, lazy=True, parallel=False
         )
+        self.recognizer.whisper = self.whisper  # the one server, for its judging too
         members, model = ensemble_members(acoustic_model), remembered_model(key)
         self._decoders = [decoder_for(model, member) for member in members] if model else []
         self._phone_loop = PhoneLoop(members[0])  # as the one-shot child's

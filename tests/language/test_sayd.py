@@ -173,6 +173,19 @@ def test_a_say_through_the_daemon_prints_what_one_without_it_prints(
     assert text[1] == printed.getvalue() and text[1].startswith("heard: ")
     if wav == ACCEPTED:
         assert "goal: (has tracy mug)" in text[1]
+    else:  # Whisper judged pocketsphinx's transcript with the daemon's one server
+        assert _whisper_servers_of(world.daemon()) == 1
+
+
+def _whisper_servers_of(pid: int) -> int:
+    """How many Whisper servers (python -m knic.language.whisperpass) the process ``pid`` runs."""
+    count = 0
+    for stat_file in Path("/proc").glob("[0-9]*/stat"):
+        with contextlib.suppress(OSError, ValueError, IndexError):
+            parent = int(stat_file.read_text().rsplit(")", 1)[1].split()[1])
+            command = (stat_file.parent / "cmdline").read_bytes().split(b"\0")
+            count += parent == pid and b"knic.language.whisperpass" in command
+    return count
 
 
 def test_a_bad_file_is_the_same_error_with_a_daemon(
