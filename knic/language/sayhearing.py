@@ -34,8 +34,9 @@ class Hearing:
     (:class:`~knic.language.whisperpass.WhisperServer`, a program of its own: no thread pool lives in this
     process, which forks) while pocketsphinx's n-gram pass of each acoustic model and the first model's
     phone loop run in children forked with their decoders loaded (:func:`~knic.language.oneshot.in_child`).
-    Without the world's remembered command model (:func:`~knic.language.oneshot.remembered_model`) the
-    recogniser decodes in this process, after Whisper.
+    The recogniser's judging of a command Whisper does not settle (:class:`~knic.language.judging.Judging`)
+    asks the same server. Without the world's remembered command model
+    (:func:`~knic.language.oneshot.remembered_model`) the recogniser decodes in this process, after Whisper.
 
     Args:
         vocabulary: the world's spoken names.
