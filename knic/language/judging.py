@@ -14,9 +14,12 @@ apple") or has the right transcript in its beam. So Whisper is asked two more th
    best path, Whisper's greedy transcript and its beam's -- as the mean log-probability of the candidate's
    tokens when Whisper is made to write it (:meth:`~knic.language.whisperpass.WhisperPass.scores`).
 
-pocketsphinx's transcript is kept when pocketsphinx accepted it and Whisper's score of it is above
+pocketsphinx's transcript is kept when the reader reads it and Whisper's score of it is above
 :data:`KEEP_LOG_PROB`; else the best-scoring candidate is taken when its score is above
-:data:`TAKE_LOG_PROB`; else the utterance is refused. A candidate is only ever a transcript one of the
+:data:`TAKE_LOG_PROB`; else the utterance is refused. pocketsphinx's own confidence (its phone-loop pass,
+:func:`~knic.language.lmspeech.confidence`) is not needed then: on the dev sets below judging without it
+gave one command more at the same rejection, and saved the phone loop's time; it still decides when Whisper
+cannot answer. A candidate is only ever a transcript one of the
 recognisers heard, so Whisper's score cannot make up a command; other speech is refused because none of the
 candidates fits it (their scores fall far lower than those of commands, whichever recogniser heard them).
 """
@@ -32,13 +35,16 @@ from knic.language.audio import Transcript
 from knic.language.vocabulary import normalize
 from knic.language.whisperpass import BEAM, Heard, heard_of
 
-#: Whisper's score above which pocketsphinx's accepted transcript is kept. With :data:`TAKE_LOG_PROB`, set on
-#: the five spoken dev sets (407 commands in 20 voices, 134 other utterances) and ``speech_people3/dev``
-#: (112 commands, 12 other utterances, in 7 voices no acoustic adaptation heard), frame+args and other
-#: speech rejected (pocketsphinx alone after Whisper's settling: 377 and 73 commands, 126 and 12 rejected):
-#: -2.0 and -3.5: 377 and 92, 130 and 12; -2.0 and -4.0: 381 and 94, 130 and 12 (other speech's best
-#: candidates cluster between -4.0 and -4.7, hence -3.5); -1.5 and -3.0: 372 and 93; -3.0 and -3.0: 376
-#: and 91.
+#: Whisper's score above which pocketsphinx's transcript is kept. With :data:`TAKE_LOG_PROB`, set on the five
+#: spoken dev sets (407 commands in 20 voices, 134 other utterances) and ``speech_people3/dev`` (112
+#: commands, 12 other utterances, in 7 voices no acoustic adaptation heard), frame+args and other speech
+#: rejected (pocketsphinx alone after Whisper's settling: 377 and 73 commands, 126 and 12 rejected), with
+#: pocketsphinx's confidence: -2.0 and -3.5: 377 and 92, 130 and 12; -2.0 and -4.0: 381 and 94, 130 and 12
+#: (other speech's best candidates cluster between -4.0 and -4.7, hence -3.5); -1.5 and -3.0: 372 and 93;
+#: -3.0 and -3.0: 376 and 91; without it (as now): -2.0 and -3.5: 378 and 93, 130 and 12; -1.5: 375 and 94;
+#: -2.5: 380 and 93. Other rules that gave no more: keeping pocketsphinx's only within a margin of the best
+#: candidate's score, Whisper's beam without the prompt as more candidates, words of Whisper's transcript
+#: the command model lacks replaced by the nearest it has in sound (+1 command, -2 other speech).
 KEEP_LOG_PROB = -2.0
 #: Whisper's score above which the best-scoring candidate the reader reads is taken (see above).
 TAKE_LOG_PROB = -3.5
@@ -71,12 +77,13 @@ class Judging:
         self._server, self._samples, self._heard, self._reads = server, samples, heard, reads
         self._asked = server.ask(samples, {"beam": BEAM})
 
-    def finish(self, first: Transcript, paths: Sequence[str]) -> Transcript:
-        """The judged transcript, given pocketsphinx's (``first``) and each acoustic model's best path
-        (``paths``); ``first`` itself when Whisper cannot answer."""
+    def finish(self, first: Transcript, paths: Sequence[str]) -> Transcript | None:
+        """The judged transcript, given pocketsphinx's (``first``: ``in_grammar`` when the reader reads it)
+        and each acoustic model's best path (``paths``); None when Whisper cannot answer (pocketsphinx's
+        confidence decides then)."""
         beam = self._server.answer() if self._asked else None
         if not isinstance(beam, list):
-            return first
+            return None
         hypotheses = [self._heard, *(heard_of(item) for item in beam)]
         whispered = [found.text for found in hypotheses if found is not None]
         candidates: list[str] = []
@@ -84,13 +91,13 @@ class Judging:
             if text and text not in candidates and self._reads(text):
                 candidates.append(text)
         if not candidates:
-            return first
+            return replace(first, in_grammar=False, score=math.nan)
         scores = self._server.answer() if self._server.ask(self._samples, {"score": candidates}) else None
         if not isinstance(scores, list) or len(scores) != len(candidates):
-            return first
+            return None
         fits = dict(zip(candidates, (float(s) for s in scores), strict=True))
         if first.in_grammar and fits.get(first.text, -math.inf) > KEEP_LOG_PROB:
-            return first
+            return replace(first, score=fits[first.text])
         best = max(candidates, key=lambda text: fits[text])
         if fits[best] > TAKE_LOG_PROB:
             return replace(first, text=best, in_grammar=True, score=fits[best])

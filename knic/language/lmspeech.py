@@ -27,10 +27,9 @@ confidence, which already turns away most other speech. The threshold was set on
 A second opinion: Whisper (:mod:`knic.language.whisperpass`) hears each utterance first, in a server process
 of its own. When Whisper is sure of its transcript and the reader reads it, that transcript is taken and
 pocketsphinx does not decode (:func:`~knic.language.whisperpass.settled`); otherwise Whisper judges among
-the transcripts both recognisers offer (:mod:`knic.language.judging`). On the five spoken dev sets Whisper's
-settling took frame+args from 0.880 to 0.926 at the same rejection of other speech (0.948); its judging took
-a dev set in voices no acoustic adaptation heard from 0.65 to 0.82 and other speech rejected on the five
-sets from 0.940 to 0.970; ``second_opinion=False`` turns both off.
+the transcripts both recognisers offer (:mod:`knic.language.judging`). Settling took dev frame+args from 0.880
+to 0.926; judging took a dev set in voices no adaptation heard from 0.65 to 0.83 and other speech rejected
+from 0.940 to 0.970. ``second_opinion=False`` turns both off.
 
 Lifecycle: build once per vocabulary (sampling and estimating the model take a few seconds; the model is
 cached on disk by content), then :meth:`NgramRecognizer.recognize` per utterance; not thread-safe. With
@@ -418,7 +417,7 @@ class NgramRecognizer:
         """
         samples = pcm_bytes(audio)
         if self._prompt is None:
-            return self._first_opinion(samples, phone_score, decoded)[0]
+            return self._first_opinion(samples, phone_score, decoded)
         started = time.perf_counter()
         whispered = Opinion(self._server, samples, heard)()
         own = settled(whispered, self.reads)
@@ -426,9 +425,7 @@ class NgramRecognizer:
             elapsed = (time.perf_counter() - started) * 1000.0
             return Transcript(own, True, math.nan, duration_of(samples), elapsed)
         judging = Judging(self._server(), samples, whispered, self.reads) if whispered is not None else None
-        first, paths = self._first_opinion(samples, phone_score, decoded)
-        if judging is not None:
-            first = judging.finish(first, paths)
+        first = self._first_opinion(samples, phone_score, decoded, judging)
         return replace(first, decode_ms=(time.perf_counter() - started) * 1000.0)  # Whisper's time too
 
     def _first_opinion(
@@ -436,8 +433,10 @@ class NgramRecognizer:
         samples: bytes,
         phone_score: Callable[[int], float] | None,
         decoded: Callable[[], list[Decoded] | None] | None,
-    ) -> tuple[Transcript, list[str]]:
-        """pocketsphinx's transcript of the utterance (see :meth:`recognize`) and each member's best path."""
+        judging: Judging | None = None,
+    ) -> Transcript:
+        """pocketsphinx's transcript of the utterance (see :meth:`recognize`), judged by Whisper when
+        ``judging`` is given and Whisper answers (the phone loop's confidence is then not needed)."""
         raw = ngram_padded(samples)
         started = time.perf_counter()
         results = decoded() if decoded is not None else None
@@ -452,15 +451,18 @@ class NgramRecognizer:
         text, read = self._snap(best, list(hypotheses))
         if read and text == best and not finished:
             text = self._unheard_tail(text)
+        heard = Transcript(text, read, math.nan, duration_of(samples), 0.0)
+        judged = judging.finish(heard, paths) if judging else None
+        if judged is not None:
+            return replace(judged, decode_ms=(time.perf_counter() - started) * 1000.0)
         if not read:
             elapsed = (time.perf_counter() - started) * 1000.0
             score = math.nan if text else float("-inf")
-            return Transcript(text, read, score, duration_of(samples), elapsed), paths
+            return Transcript(text, read, score, duration_of(samples), elapsed)
         reference = phone_score(index) if phone_score is not None else self.phone_loop_of(index).score(raw)
         elapsed = (time.perf_counter() - started) * 1000.0
         level = confidence(score, reference, frames)
-        accepted = level >= self.threshold_of(index)
-        return Transcript(text, accepted, level, duration_of(samples), elapsed), paths
+        return Transcript(text, level >= self.threshold_of(index), level, duration_of(samples), elapsed)
 
 
 def _ngram_job(member: _Member) -> Callable[[bytes], Decoded]:

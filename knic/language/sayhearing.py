@@ -15,8 +15,6 @@ passes of a settled command into the next one; a child per command is stopped in
 
 from __future__ import annotations
 
-import contextlib
-import os
 from typing import TYPE_CHECKING, Any
 
 if TYPE_CHECKING:
@@ -32,11 +30,12 @@ class Hearing:
     the daemon (:meth:`~knic.language.lmspeech.NgramRecognizer.recognize` given Whisper's hearing and
     pocketsphinx's passes): Whisper hears the command in its server
     (:class:`~knic.language.whisperpass.WhisperServer`, a program of its own: no thread pool lives in this
-    process, which forks) while pocketsphinx's n-gram pass of each acoustic model and the first model's
-    phone loop run in children forked with their decoders loaded (:func:`~knic.language.oneshot.in_child`).
-    The recogniser's judging of a command Whisper does not settle (:class:`~knic.language.judging.Judging`)
-    asks the same server. Without the world's remembered command model
-    (:func:`~knic.language.oneshot.remembered_model`) the recogniser decodes in this process, after Whisper.
+    process, which forks) while pocketsphinx's n-gram pass of each acoustic model runs in a child forked with
+    its decoder loaded (:func:`~knic.language.oneshot.in_child`). The recogniser's judging of a command
+    Whisper does not settle (:class:`~knic.language.judging.Judging`) asks the same server; the phone loop
+    (pocketsphinx's confidence) runs in this process only when Whisper cannot judge. Without the world's
+    remembered command model (:func:`~knic.language.oneshot.remembered_model`) the recogniser decodes in this
+    process, after Whisper.
 
     Args:
         vocabulary: the world's spoken names.
@@ -70,7 +69,7 @@ class Hearing:
 
     def transcript(self, samples: bytes) -> Transcript:
         """What the recogniser hears in raw 16 kHz 16-bit PCM (every pass started at once)."""
-        from knic.language.oneshot import NBEST, PHONE_LOOP_NICENESS, in_child
+        from knic.language.oneshot import NBEST, in_child
         from knic.language.phoneloop import as_decoded, ngram_padded, ngram_pass
 
         whispered = self.whisper.submit(samples)
@@ -79,12 +78,7 @@ class Hearing:
         def ngram(decoder: Any) -> Child:
             return in_child(lambda: ngram_pass(decoder, raw, NBEST))
 
-        def phones() -> float:
-            with contextlib.suppress(OSError):
-                os.nice(PHONE_LOOP_NICENESS)  # its score is needed last
-            return float(self._phone_loop.score_of(samples))
-
-        passes, phone_score_child = [ngram(decoder) for decoder in self._decoders], in_child(phones)
+        passes = [ngram(decoder) for decoder in self._decoders]
 
         def heard() -> Heard | None:
             return self.whisper.result() if whispered else None
@@ -98,16 +92,14 @@ class Hearing:
                 found.append(result)
             return found or None
 
-        def phone_score(index: int) -> float:
-            score = phone_score_child() if index == 0 else None
-            if isinstance(score, (int, float)):
-                return float(score)
-            return self.recognizer.phone_loop_of(index).score_of(samples)
+        def phone_score(index: int) -> float:  # only when Whisper cannot judge the command
+            loop = self._phone_loop if index == 0 else self.recognizer.phone_loop_of(index)
+            return float(loop.score_of(samples))
 
         try:
             return self.recognizer.recognize(samples, phone_score=phone_score, decoded=decoded, heard=heard)
         finally:
-            for child in [*passes, phone_score_child]:
+            for child in passes:
                 child.cancel()  # the passes Whisper made unnecessary stop now
 
     def close(self) -> None:

@@ -114,37 +114,84 @@ def _first(text: str, accepted: bool) -> Transcript:
     return Transcript(text, accepted, 0.001 if accepted else math.nan, 2.0, 10.0)
 
 
-def _judged(first: Transcript, beam: list[list[Any]] | None, fits: dict[str, float] | None) -> Transcript:
+def _judged(
+    first: Transcript, beam: list[list[Any]] | None, fits: dict[str, float] | None
+) -> Transcript | None:
     server = _Server(beam, fits)
     judging = Judging(server, b"\0\0", Heard("Bring me the mud.", -0.9), _reads)
     return judging.finish(first, ["bring me a mug", "the mug"])
 
 
 def test_pocketsphinx_is_kept_when_whisper_finds_it_fits():
-    first = _first("bring me the mug", True)
-    assert _judged(first, [["Bring me the mug.", -0.5]], {"bring me the mug": -1.0}) == first
+    judged = _judged(
+        _first("bring me the mug", True), [["Bring me the mug.", -0.5]], {"bring me the mug": -1.0}
+    )
+    assert (
+        judged is not None
+        and judged.text == "bring me the mug"
+        and judged.in_grammar
+        and judged.score == -1.0
+    )
 
 
 def test_the_best_fitting_candidate_is_taken_when_pocketsphinx_does_not_fit():
     fits = {"bring me the mug": -2.5, "bring me a mug": -3.0, "put the mug down": -0.8}
     judged = _judged(_first("bring me the mug", True), [["Put the mug down.", -0.7]], fits)
-    assert judged.text == "put the mug down" and judged.in_grammar and judged.score == -0.8
+    assert (
+        judged is not None
+        and judged.text == "put the mug down"
+        and judged.in_grammar
+        and judged.score == -0.8
+    )
 
 
 def test_a_refused_transcript_is_rescued_by_a_candidate_whisper_heard():
     judged = _judged(_first("the mug", False), [["bring me the mud", -0.9]], {"bring me the mud": -1.2})
-    assert judged.text == "bring me the mud" and judged.in_grammar
+    assert judged is not None and judged.text == "bring me the mud" and judged.in_grammar
 
 
 def test_nothing_that_fits_is_refused():
     judged = _judged(_first("bring me the mug", True), [["Sing me a song.", -0.4]], {})
-    assert not judged.in_grammar and judged.text == "bring me the mug" and math.isnan(judged.score)
+    assert (
+        judged is not None
+        and not judged.in_grammar
+        and judged.text == "bring me the mug"
+        and math.isnan(judged.score)
+    )
+
+
+def test_nothing_the_reader_reads_is_refused():
+    judged = _judged(_first("the mug", False), [["Sing me a song.", -0.4]], {})
+    assert judged is not None and not judged.in_grammar and judged.text == "the mug"
 
 
 def test_pocketsphinx_decides_when_whisper_cannot_answer():
     first = _first("bring me the mug", True)
-    assert _judged(first, None, None) == first  # no beam
-    assert _judged(first, [["Bring me the mug.", -0.5]], None) == first  # no scores
+    assert _judged(first, None, None) is None  # no beam
+    assert _judged(first, [["Bring me the mug.", -0.5]], None) is None  # no scores
+
+
+def test_the_phone_loop_decides_only_when_whisper_cannot_judge(vocabulary):
+    class Dead:
+        def ask(self, samples: bytes, question: dict[str, Any]) -> bool:
+            return False
+
+        def answer(self) -> Any:
+            return None
+
+    asked: list[int] = []
+
+    def phone_score(index: int) -> float:
+        asked.append(index)
+        return 1e-300
+
+    with NgramRecognizer(vocabulary, lazy=True) as recognizer:
+        recognizer._server = lambda: _Server([["Please tell me the news.", -0.5]], {})  # type: ignore[method-assign,assignment,return-value]
+        judged = recognizer.recognize(NEWS, phone_score=phone_score, heard=lambda: Heard("Nonsense.", -3.0))
+        assert not asked and not judged.in_grammar  # judged: nothing fits, and no confidence was computed
+        recognizer._server = lambda: Dead()  # type: ignore[method-assign,assignment,return-value]
+        recognizer.recognize(NEWS, phone_score=phone_score, heard=lambda: Heard("Nonsense.", -3.0))
+    assert asked == [0] or asked == [1]  # Whisper could not judge: pocketsphinx's confidence decides
 
 
 def test_only_candidates_the_reader_reads_are_scored():
