@@ -104,6 +104,8 @@ class CommandLanguage:
     type_nouns: dict[str, tuple[str, ...]] = field(default_factory=dict)
     repairs: tuple[str, ...] = ()
     negations: tuple[str, ...] = ()
+    not_requests: tuple[str, ...] = ()
+    not_requests_unless: tuple[str, ...] = ()
     spellings: dict[str, str] = field(default_factory=dict)
     digit_words: dict[str, str] = field(default_factory=dict)
     typed_words: dict[str, str] = field(default_factory=dict)
@@ -251,6 +253,8 @@ def load_language(path: str | Path = DEFAULT_PATH) -> CommandLanguage:
         type_nouns=tables["type_nouns"],
         repairs=_phrases(data, "repairs", source),
         negations=_phrases(data, "negations", source),
+        not_requests=_phrases(data, "not_requests", source),
+        not_requests_unless=_phrases(data, "not_requests_unless", source),
         spellings=_spellings(data, source),
         digit_words=_spellings(data, source, "digit_words"),
         typed_words=_spellings(data, source, "typed_words"),

@@ -127,6 +127,9 @@ class Reader(Places):
         segments = [segment for segment in segments if segment]
         if not segments:
             raise LanguageError("nothing to understand: the command is empty")
+        opening = not_request(segments, language.not_requests, language.not_requests_unless)
+        if opening:
+            raise LanguageError(f"'{opening} ...' asks about something or says what you will do: no request")
         segments = said_named(segments, self.vocabulary, self.chunker.language_words)  # naming.py
         segments = described(ones_named(segments, self.vocabulary), self.vocabulary)  # selecting.py
         segments = sorry_repairs(segments, self.chunks)
@@ -439,3 +442,18 @@ class Reader(Places):
 
 
 __all__ = ["AmbiguityError", "Reader", "Reading", "chain", "level_percent"]
+
+
+def not_request(segments: list[list[str]], openings: Sequence[str], unless: Sequence[str]) -> str | None:
+    """The opening of a command of one sentence that asks about something or says what the speaker means to
+    do ("how do you spell kitchen", "i should water the plants later"), when no word of ``unless`` follows it
+    ("i should like you to ..."); else None."""
+    if len(segments) != 1:
+        return None
+    said = " ".join(segments[0])
+    for opening in openings:
+        if said == opening or said.startswith(opening + " "):
+            rest = said[len(opening) :].strip()
+            if not any(rest == word or rest.startswith(word + " ") for word in unless):
+                return opening
+    return None

@@ -1,0 +1,51 @@
+"""What the speaker asks about or means to do themselves is no request (commands.yaml ``not_requests``): a
+question about how ("how do you spell kitchen") or the speaker's own plan ("i should water the plants later")
+is refused, even when misheard into words that name the world; a request said that way is still read."""
+
+from __future__ import annotations
+
+import pytest
+
+from knic.language import understand
+from knic.language.vocabulary import Vocabulary
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "how do you spell kitchen",
+        "how do you stay in the kitchen",  # "how do you spell kitchen" as a recogniser heard it
+        "i should walk at the plant later",  # "i should water the plants later", heard so
+        "How do I get to the kitchen?",
+        "how does the dimmer work",
+        "I ought to go to the bedroom",
+    ],
+)
+def test_a_question_or_the_speakers_own_plan_is_refused(vocabulary: Vocabulary, text: str) -> None:
+    result = understand(text, vocabulary)
+    assert not result.accepted and not result.frames
+    assert "no request" in (result.reason or "")
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        (
+            "I should like you to bring me the mug",
+            [{"frame": "BRINGING", "theme": "mug", "beneficiary": "me"}],
+        ),
+        (
+            "how do you say, the remote, bring it to me",
+            [{"frame": "BRINGING", "theme": "remote", "beneficiary": "me"}],
+        ),
+        (
+            "I should water the plants later. Bring me the mug.",
+            [{"frame": "BRINGING", "theme": "mug", "beneficiary": "me"}],
+        ),
+    ],
+)
+def test_a_request_said_around_such_words_is_read(
+    vocabulary: Vocabulary, text: str, frames: list[dict[str, str]]
+) -> None:
+    result = understand(text, vocabulary)
+    assert result.accepted and [f.to_dict() for f in result.frames] == frames
