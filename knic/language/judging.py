@@ -8,10 +8,10 @@ Whisper, trained on far more speakers, often hears them nearly right ("could you
 apple") or has the right transcript in its beam. So Whisper is asked two more things about the utterance
 (:meth:`~knic.language.whisperpass.WhisperServer.ask`, in its server, the encoder's output kept):
 
-1. its :data:`~knic.language.whisperpass.BEAM` best transcripts by beam search, asked before pocketsphinx
-   decodes so that both run at once;
+1. the other transcripts of the beam search it heard the utterance with
+   (:data:`~knic.language.whisperpass.BEAM`; kept from its hearing, so asked at once);
 2. the score of every candidate the reader reads -- pocketsphinx's transcript and each acoustic model's
-   best path, Whisper's greedy transcript and its beam's -- as the mean log-probability of the candidate's
+   best path, Whisper's beam's transcripts -- as the mean log-probability of the candidate's
    tokens when Whisper is made to write it (:meth:`~knic.language.whisperpass.WhisperPass.scores`).
 
 pocketsphinx's transcript is kept when the reader reads it and Whisper's score of it is above
@@ -63,13 +63,13 @@ class Asked(Protocol):
 
 
 class Judging:
-    """One utterance's judging, started before pocketsphinx decodes it (Whisper's beam search then runs
-    beside the decoding) and finished with pocketsphinx's transcript.
+    """One utterance's judging, started before pocketsphinx decodes it (Whisper's beam is asked for then) and
+    finished with pocketsphinx's transcript.
 
     Args:
         server: Whisper's server.
         samples: the utterance (raw 16 kHz 16-bit PCM).
-        heard: Whisper's greedy transcript of it, when there is one.
+        heard: Whisper's best transcript of it, when there is one.
         reads: whether the reader reads a text (or asks about it).
     """
 

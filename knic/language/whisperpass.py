@@ -4,7 +4,8 @@ pocketsphinx (:mod:`knic.language.lmspeech`) hears what the command model lets i
 unlike its acoustic models as the nearest command. Whisper was trained on far more speakers, but knows
 nothing of the apartment and writes what it hears as free English ("bring me the mud"). Each utterance is
 therefore heard by Whisper first: when Whisper is sure of its transcript and the same reader reads it, it
-is taken (:func:`settled`); otherwise pocketsphinx decides alone.
+is taken (:func:`settled`); otherwise Whisper judges the transcripts both recognisers heard
+(:mod:`knic.language.judging`, through :meth:`WhisperServer.ask`).
 Whisper is told the world's names first (:func:`world_prompt`, the decoder's "previous text"), which on the
 dev sets took its own transcripts from 0.60 to 0.71 frame-with-arguments.
 
@@ -48,8 +49,9 @@ if TYPE_CHECKING:
 WINDOW_S = 10.0
 #: tokens the decoder may write after the prompt (a long command is about 30)
 MAX_TOKENS = 60
-#: CPU threads of the server's model: pocketsphinx waits for Whisper's answer (:func:`settled`), so Whisper
-#: has the cores to itself (two threads: 427 ms per dev utterance against 454 ms with one)
+#: CPU threads of the server's model: the recogniser waits for Whisper's answer before pocketsphinx decodes
+#: (:func:`settled`), so Whisper has the cores to itself (two threads: 427 ms per dev utterance against 454 ms
+#: with one)
 SERVER_THREADS = max(1, min(2, os.cpu_count() or 1))
 #: Whisper's beam (:meth:`WhisperPass.hear`); its other transcripts are candidates when Whisper is not sure
 #: of its best (:mod:`knic.language.judging`)
@@ -291,18 +293,12 @@ class WhisperServer:
         for _ in range(2):
             if self.pid is None:
                 self._start()
-            process = self._process
-            if process is None or process.stdin is None:
+            if self._process is None:
                 return False
-            try:
-                process.stdin.write(FRAME.pack(len(samples)) + samples)
-                process.stdin.flush()
-            except OSError:  # it died, perhaps not yet reaped (its pid still shows): wait for it, start anew
-                self.close()
-                continue
-            self._pending, self._heard = self._pending + 1, _digest(samples)
-            return True
-        return False
+            if self._send(FRAME.pack(len(samples)) + samples):
+                self._heard = _digest(samples)
+                return True
+        return False  # it died twice, perhaps not yet reaped (its pid still showed)
 
     def result(self) -> Heard | None:
         """Whisper's hearing of the last utterance sent (replies to earlier ones skipped); None when the
@@ -315,11 +311,15 @@ class WhisperServer:
         if self._heard != _digest(samples) and not self.submit(samples):
             return False
         body = json.dumps(question).encode()
+        return self._send(FRAME.pack(len(body) | QUESTION) + body)
+
+    def _send(self, request: bytes) -> bool:
+        """Write one framed request to the running server; a server that is gone is reaped (False)."""
         process = self._process
         try:
             if process is None or process.stdin is None:
                 return False
-            process.stdin.write(FRAME.pack(len(body) | QUESTION) + body)
+            process.stdin.write(request)
             process.stdin.flush()
         except OSError:
             self.close()
@@ -406,24 +406,24 @@ def serve(prompt: str, folder: str) -> None:
             return
         (size,) = FRAME.unpack(header)
         if size & QUESTION:
-            answer = json.dumps(answer_of(whisper, requests.read(size & ~QUESTION))).encode()
-            replies.write(FRAME.pack(len(answer)) + answer)
+            found = answer_of(whisper, requests.read(size & ~QUESTION))
         else:
-            replies.write(framed_reply(whisper, requests.read(size)))
+            found = hearing_of(whisper, requests.read(size))
+        answer = json.dumps(found).encode()
+        replies.write(FRAME.pack(len(answer)) + answer)
         replies.flush()
 
 
-def framed_reply(whisper: WhisperPass, data: bytes) -> bytes:
-    """The answer to one request (raw 16 kHz 16-bit PCM), framed: ``[text, mean log-prob]`` as JSON, or null
-    when Whisper cannot hear it."""
+def hearing_of(whisper: WhisperPass, data: bytes) -> list[Any] | None:
+    """The answer to one utterance (raw 16 kHz 16-bit PCM): ``[text, mean log-prob]``, or None when Whisper
+    cannot hear it."""
     import numpy as np
 
     try:
         heard = whisper.hear(np.frombuffer(data, dtype="<i2"))
-        reply = json.dumps([heard.text, heard.mean_log_prob]).encode()
     except (LanguageError, ValueError, RuntimeError):
-        reply = b"null"
-    return FRAME.pack(len(reply)) + reply
+        return None
+    return [heard.text, heard.mean_log_prob]
 
 
 def answer_of(whisper: WhisperPass, data: bytes) -> Any:
