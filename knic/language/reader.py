@@ -363,6 +363,7 @@ class Reader(Places):
         """'there': the place the latest earlier action named (its goal, ground or source). With no place
         named before, "there" points at what the robot cannot see ("the cup over there") and is left out."""
         places = places_before(previous, clause.args, self.vocabulary)  # a device's: the room (naming.py)
+        devices = any(self.is_a(t, "device") for a in clause.args for t in a.chunk.terms)
         for arg in list(clause.args):
             if arg.chunk.kind != "there":
                 continue
@@ -371,6 +372,8 @@ class Reader(Places):
                 continue
             terms = tuple(t for t in self.vocabulary.terms if t.symbol == places[0])[:1]
             arg.chunk = Chunk("entity", arg.chunk.text, terms)
+            if arg.prep == "source" and devices:  # "switch the light off there": "off" says the state, the
+                arg.prep, arg.prep_text = "place", "in"  # room is where the light must be
 
     # ------------------------------------------------------------------ arguments
 

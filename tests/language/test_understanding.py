@@ -187,6 +187,7 @@ REJECTED = [
     ("bring it to me", "'it'"),  # pronoun without a referent
     ("switch on the left light and switch it off", "it"),
     ("find the mug and find the cup and find the apple and find the lemon", "up to 3"),  # four actions
+    ("go to the bathroom and switch the light off there", "no light in the bathroom"),  # "off" no "from"
 ]
 
 
@@ -300,6 +301,10 @@ PHRASED = [
     ),
     (
         "go to the bedroom and turn off the lights there",
+        ["MOTION goal=bedroom", "OPERATING device=bedroom_lights state=off"],
+    ),
+    (
+        "go to the bedroom and switch the lights off there",
         ["MOTION goal=bedroom", "OPERATING device=bedroom_lights state=off"],
     ),
     ("go with tracy to the kitchen", ["ACCOMPANYING theme=tracy goal=kitchen"]),
