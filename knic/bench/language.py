@@ -127,7 +127,7 @@ def expected_goals(case: dict[str, Any], gold: list[dict[str, str]], vocabulary:
 _SAME_STATE = {"open": "100", "closed": "0"}
 
 
-def _same_states(frames: list[dict[str, str]]) -> list[dict[str, str]]:
+def same_states(frames: list[dict[str, str]]) -> list[dict[str, str]]:
     """Frames with each state written as the level it means, so that "open" and "100" compare equal."""
     return [{k: _SAME_STATE.get(v, v) if k == "state" else v for k, v in f.items()} for f in frames]
 
@@ -176,8 +176,8 @@ def evaluate(path: Path) -> dict[str, Any]:
         elapsed += time.perf_counter() - started
         got = [f.to_dict() for f in result.frames] if result.accepted else []
         if "frames" in case:
-            gold = _same_states([frame_spec(f) for f in case["frames"]])
-            got = _same_states(got)
+            gold = same_states([frame_spec(f) for f in case["frames"]])
+            got = same_states(got)
             tally["framed"] += 1
             tally["kinds"] += [f["frame"] for f in got] == [f["frame"] for f in gold]
             tally["main"] += [_main(f) for f in got] == [_main(f) for f in gold]

@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+from pathlib import Path
+
 import pytest
 
 from knic.language.speech import Recognizer
@@ -128,3 +130,25 @@ def test_the_speech_bench_prints_its_figures(capsys: pytest.CaptureFixture[str])
         "ms_per_utterance",
     }
     assert 0.0 <= figures["dev"]["frame_argument_accuracy"] <= 1.0 and figures["ms_per_utterance"] > 0
+
+
+def test_the_speech_bench_judges_a_level_as_the_text_bench_does(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    import json
+    import shutil
+
+    from knic.cli import main
+
+    shutil.copy("tests/fixtures/speech_dev/dev_055.wav", tmp_path / "open.wav")  # "open the bedroom blinds"
+    frame = {"frame": "OPERATING", "device": "bedroom_blinds", "state": "100"}  # the blinds open, as a level
+    entry = {"file": "open.wav", "text": "open the bedroom blinds", "in_grammar": True, "frames": [frame]}
+    gold = tmp_path / "gold.json"
+    args = ["bench", "speech", "--json", "--answers", "", "--dev", "", "--decoder", "grammar"]
+    gold.write_text(json.dumps([entry]), encoding="utf-8")  # a list, not the set's object: one clear error
+    assert main([*args, "--fixtures", str(tmp_path)]) != 0
+    assert "gold.json: cannot read the speech test set" in capsys.readouterr().err
+    gold.write_text(json.dumps({"utterances": [entry]}), encoding="utf-8")
+    assert main([*args, "--fixtures", str(tmp_path)]) == 0
+    figures = json.loads(capsys.readouterr().out)["grammar"]
+    assert figures["wer"] == 0.0 and figures["frame_argument_accuracy"] == 1.0
