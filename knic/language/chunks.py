@@ -101,7 +101,10 @@ class Chunker:
             # plurals of a name, and the singular of a plural name ("a car key" for the car keys, "an ice
             # lolly" for the ice lollies, "the curtain" for the bedroom curtains)
             plural = term.phrase.endswith("s") and not term.phrase.endswith("ss")
-            variants = [term.phrase[:-1]] if plural else [term.phrase + "s", term.phrase + "es"]
+            # "boxes", "potatoes" or "radios"; no "draweres", whose nearness to typos would hide "drawers"
+            endings: tuple[str, ...] = ("es",) if term.phrase.endswith(("x", "z", "ch", "sh")) else ("s",)
+            endings += ("es",) if term.phrase.endswith("o") else ()
+            variants = [term.phrase[:-1]] if plural else [term.phrase + e for e in endings]
             variants += [" ".join([*words[:-1], one]) for one in singulars(words[-1])]
             if len(words) > 1:  # "the lamp", and "the desk lamp" for the office desk lamp (not "bedroom
                 # light" for the left bedroom light: a name before the last word narrows it as said)

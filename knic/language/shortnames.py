@@ -10,10 +10,12 @@ common English synonyms. People in the house also say less:
   before "room": "open_plan_living_room" is "the living room";
 * a thing whose one-word name ends in a common noun by that noun: "newspaper" is "the paper", "armchair" "the
   chair", "hairbrush" "the brush";
-* a container of a drink or food by what it holds: "water_bottle" is "some water", "milk_carton" "the milk".
+* a container of a drink or food by what it holds: "water_bottle" is "some water", "milk_carton" "the milk";
+* a piece of furniture made of several of a thing by them: "drawer_unit" and "chest_of_drawers" are each "the
+  drawers" (both in one home: the reader asks which).
 
-The kinds of room, the nouns and the containers are general English, kept in ``synonyms.yaml``
-(``room_words``, ``heads``, ``containers``). A
+The kinds of room, the nouns, the containers and the units are general English, kept in ``synonyms.yaml``
+(``room_words``, ``heads``, ``containers``, ``units``). A
 short name that is already a name of the world is not given (the world's own names win: where "hall" names
 the hallway, an "entrance_hall" is not also "the hall"); one short name of several things names them all.
 """
@@ -94,6 +96,34 @@ def english_nearer() -> tuple[frozenset[str], ...]:
     return tuple(frozenset(" ".join(p.lower().split()) for p in group) for group in raw)
 
 
+@lru_cache(maxsize=1)
+def _units() -> dict[str, str]:
+    """``units`` of ``synonyms.yaml``: a thing -> its plural, for furniture made of several of it.
+
+    Raises:
+        LanguageError: not a mapping of single words.
+    """
+    data = read_yaml(_FILE, "synonyms", LanguageError) or {}
+    raw = data.get("units", {}) if isinstance(data, dict) else {}
+    if not isinstance(raw, dict) or not all(
+        isinstance(k, str) and isinstance(v, str) and len(k.split()) == len(v.split()) == 1
+        for k, v in raw.items()
+    ):
+        raise LanguageError(f"{_FILE}: 'units' maps single words to their plurals")
+    return {k.lower(): v.lower() for k, v in raw.items()}
+
+
+def _made_of(words: list[str], units: dict[str, str]) -> list[str]:
+    """What a piece of furniture made of several of a thing is called by them ("drawer unit", "chest of
+    drawers" -> "drawers", "drawer")."""
+    if len(words) == 2 and words[1] == "unit" and words[0] in units:
+        return [units[words[0]], words[0]]
+    one = {plural: thing for thing, plural in units.items()}
+    if len(words) == 3 and words[0] in ("chest", "set", "bank") and words[1] == "of" and words[2] in one:
+        return [words[2], one[words[2]]]
+    return []
+
+
 def contains(words: Sequence[str], part: Sequence[str]) -> bool:
     """Whether ``part`` is a run of whole words of ``words``."""
     return any(list(words[i : i + len(part)]) == list(part) for i in range(len(words) - len(part) + 1))
@@ -146,6 +176,7 @@ def short_names(
     """
     terms = list(terms)
     room_words, heads, containers = _word_lists()
+    units = _units()
     taken = {t.phrase for t in terms}
     out: list[tuple[str, N]] = []
     seen: set[tuple[str, str]] = set()
@@ -157,7 +188,7 @@ def short_names(
         if is_room(term.type):
             phrases += _room_kinds(words, room_words)
         else:
-            phrases += _content(words, containers)
+            phrases += _content(words, containers) + _made_of(words, units)
         for phrase in phrases:
             key = (phrase, term.phrase)
             if phrase not in taken and key not in seen:

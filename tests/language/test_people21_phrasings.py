@@ -4,7 +4,12 @@ never tuned on, ``tests/fixtures/language/people21/accessible_flat.yaml``) the r
 * Scottish and texting spellings (``commands.yaml`` spellings): "fae" from, "tae" to, "aff" off, "gie" give,
   "ma" my, "n" and, "gonnae" (would you), "pleas" please; "keep" a thing somewhere is to put it there (Indian
   English, "keep the saucepan on the hob"); "is possible to" and "it is possible to" are politeness, as "is it
-  possible to" is.
+  possible to" is;
+* a piece of furniture made of drawers is "the drawers" and "the drawer" (``synonyms.yaml`` units): a
+  "drawer unit" as a "chest of drawers"; "the drawer in the study" is the drawer unit there, and where a
+  home has both, "the drawers" alone asks which (a world file says where furniture is, not where things
+  are, so "the stamps from the drawers" asks too); a name's plural has "es" only after a hiss or an "o"
+  ("boxes", "potatoes"), so "drawres" is still a typo of "drawers" alone.
 """
 
 from __future__ import annotations
@@ -16,7 +21,7 @@ import pytest
 from knic.language import understand
 from knic.language.vocabulary import Vocabulary
 
-from .conftest import frames_read
+from .conftest import assert_asked, frames_read
 
 FLAT = "tests/fixtures/language/people21/accessible_flat.yaml"
 
@@ -90,3 +95,44 @@ def test_learners_politeness_leaves_the_missing_thing_named(flat: Vocabulary, te
     result = understand(text, flat, speaker="tomasz")
     assert not result.accepted
     assert f"no '{word}'" in result.reason
+
+
+GARDEN_FLAT = "tests/fixtures/language/people19/garden_flat.yaml"
+FARMHOUSE = "tests/fixtures/language/people20/farmhouse.yaml"
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        (
+            "put screwdriver in drawer in study",
+            [{"frame": "PLACING", "theme": "screwdriver", "goal": "drawer_unit"}],
+        ),
+        (
+            "bring the stamps from the drawer in the study",
+            [{"frame": "BRINGING", "theme": "stamps", "source": "drawer_unit", "beneficiary": "me"}],
+        ),
+        (
+            "bring me the hand cream from the drawers in the bedroom",
+            [{"frame": "BRINGING", "theme": "hand_cream", "source": "chest_of_drawers", "beneficiary": "me"}],
+        ),
+    ],
+)
+def test_a_drawer_unit_is_the_drawers(flat: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
+    assert frames_read(flat, text, "hamish") == frames
+
+
+@pytest.mark.parametrize("text", ["get the stamps from the drawers", "put the socks in the drawer"])
+def test_the_drawers_of_two_are_asked_about(flat: Vocabulary, text: str) -> None:
+    assert_asked(flat, text, "drawer unit", "hamish")
+
+
+def test_the_drawer_in_the_den_and_a_typo_of_drawers() -> None:
+    garden = _world(GARDEN_FLAT)
+    assert frames_read(garden, "get me the batteries from the drawer in the den", "arthur") == [
+        {"frame": "BRINGING", "theme": "batteries", "source": "drawer_unit", "beneficiary": "me"}
+    ]
+    farm = _world(FARMHOUSE)
+    assert frames_read(farm, "put teh earbuds on the chest of drawres", "rhys") == [
+        {"frame": "PLACING", "theme": "earbuds", "goal": "chest_of_drawers"}
+    ]
