@@ -316,6 +316,13 @@ class World:
         rung = [r for r in rooms if any(d.kind == "bell" and d.room == r for d in self.devices.values())]
         return rung if len(rooms) > 1 and len(rung) == 1 else rooms
 
+    def back_entrances(self) -> list[str]:
+        """The rooms other doors to the outside open into, where :meth:`entrances` tells the front door from
+        them (a back door, a garden door), each once, in file order."""
+        rooms = list(dict.fromkeys(d.rooms[0] for d in self.doors if len(d.rooms) == 1))
+        front = self.entrances()
+        return [r for r in rooms if r not in front]
+
     def bounds(self) -> tuple[float, float, float, float]:
         """``(xmin, ymin, xmax, ymax)`` of all room polygons."""
         xs = [p[0] for r in self.rooms.values() for p in r.polygon]

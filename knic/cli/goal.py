@@ -93,7 +93,7 @@ def world_vocabulary(world: str, domain: Any, lexicon: str | None) -> tuple[Any,
     for device, room in model.device_rooms().items():
         locations.setdefault(device, []).append(room)
     lexicon_path = lexicon or find_lexicon(domain, path) or WORLDS / "erl_home" / "lexicon.yaml"
-    names = Lexicon.load(lexicon_path).with_entrances(model.entrances())
+    names = Lexicon.load(lexicon_path).with_entrances(model.entrances(), model.back_entrances())
     vocabulary = Vocabulary.from_instances(instances, base.types, names, base.predicates, locations)
     return vocabulary, first_person(model)
 

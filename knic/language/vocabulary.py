@@ -171,18 +171,25 @@ class Lexicon:
             )
         return cls(names=names, groups=tuple(groups))
 
-    def with_entrances(self, rooms: Iterable[str]) -> Lexicon:
+    def with_entrances(self, rooms: Iterable[str], back: Iterable[str] = ()) -> Lexicon:
         """This lexicon with each of ``rooms`` also called "the front door" (the rooms a door to the outside
-        opens into, as a world file says: "go to the front door", "the table by the front door"); a room
-        keeps its own names, or its name spoken."""
+        opens into, as a world file says: "go to the front door", "the table by the front door") and each of
+        ``back`` "the back door" (the rooms of the other doors to the outside), where the one front door is
+        still "the door" ("go and answer the door"); a room keeps its own names, or its name spoken."""
         names = dict(self.names)
+        rooms, back = list(rooms), [room for room in back if room not in rooms]
+        plain = ("door",) if back and len(rooms) == 1 else ()
         for room in rooms:
-            names[room] = (*(names.get(room) or (normalize(room),)), FRONT_DOOR)
+            names[room] = (*(names.get(room) or (normalize(room),)), FRONT_DOOR, *plain)
+        for room in back:
+            names[room] = (*(names.get(room) or (normalize(room),)), BACK_DOOR)
         return Lexicon(names=names, groups=self.groups)
 
 
 #: what the room a door to the outside opens into is also called (:meth:`Lexicon.with_entrances`)
 FRONT_DOOR = "front door"
+#: what the room of another door to the outside is also called (:meth:`Lexicon.with_entrances`)
+BACK_DOOR = "back door"
 SYNONYMS_FILE = Path(__file__).with_name("synonyms.yaml")
 
 

@@ -422,7 +422,9 @@ def _intake(kb: KnowledgeBase, robot: Robot, world: World, confirm: bool) -> Goa
     from knic.system.names import world_lexicon
 
     chosen = world_lexicon(world.source)
-    names = (Lexicon.load(chosen) if chosen is not None else Lexicon()).with_entrances(world.entrances())
+    names = (Lexicon.load(chosen) if chosen is not None else Lexicon()).with_entrances(
+        world.entrances(), world.back_entrances()
+    )
     vocabulary = Vocabulary.from_knowledge_base(kb, names, world.device_rooms())
     return GoalIntake(kb, vocabulary, say=robot.say, confirm=confirm)
 

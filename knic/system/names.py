@@ -34,6 +34,6 @@ def run_vocabulary(system: KnicSystem, lexicon: str | Path | None = None) -> Voc
     """The vocabulary of a running system: ``lexicon``, else its world's (:func:`world_lexicon`)."""
     chosen = lexicon if lexicon is not None else world_lexicon(system.world.source)
     names = (Lexicon.load(chosen) if chosen is not None else Lexicon()).with_entrances(
-        system.world.entrances()
+        system.world.entrances(), system.world.back_entrances()
     )
     return Vocabulary.from_knowledge_base(system.kb, names, system.world.device_rooms())

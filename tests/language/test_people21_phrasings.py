@@ -9,7 +9,9 @@ never tuned on, ``tests/fixtures/language/people21/accessible_flat.yaml``) the r
   "drawer unit" as a "chest of drawers"; "the drawer in the study" is the drawer unit there, and where a
   home has both, "the drawers" alone asks which (a world file says where furniture is, not where things
   are, so "the stamps from the drawers" asks too); a name's plural has "es" only after a hiss or an "o"
-  ("boxes", "potatoes"), so "drawres" is still a typo of "drawers" alone.
+  ("boxes", "potatoes"), so "drawres" is still a typo of "drawers" alone;
+* the room another door to the outside opens into is "the back door" (``World.back_entrances``: where the
+  doorbell tells the front door from the others), and "the door" alone is then the front door.
 """
 
 from __future__ import annotations
@@ -136,3 +138,31 @@ def test_the_drawer_in_the_den_and_a_typo_of_drawers() -> None:
     assert frames_read(farm, "put teh earbuds on the chest of drawres", "rhys") == [
         {"frame": "PLACING", "theme": "earbuds", "goal": "chest_of_drawers"}
     ]
+
+
+@pytest.mark.parametrize(
+    ("world", "speaker", "text", "room"),
+    [
+        (FLAT, "dawn", "go to the back door", "kitchen"),
+        (FLAT, "tomasz", "you go to back door please", "kitchen"),
+        (FLAT, "dawn", "go and answer the door", "hall"),
+        (FLAT, "dawn", "go to the front door", "hall"),
+        (FARMHOUSE, "ffion", "go to the back door", "boot_room"),
+        (GARDEN_FLAT, "arthur", "go to the back door", "conservatory"),
+    ],
+)
+def test_the_back_door_is_the_room_of_another_outside_door(
+    world: str, speaker: str, text: str, room: str
+) -> None:
+    assert frames_read(_world(world), text, speaker) == [{"frame": "MOTION", "goal": room}]
+
+
+def test_back_entrances_leave_the_front_door_out() -> None:
+    from pathlib import Path
+
+    from worlds.loader import load_world
+
+    root = Path(__file__).resolve().parents[2]
+    flat = load_world(root / FLAT)
+    assert (flat.entrances(), flat.back_entrances()) == (["hall"], ["kitchen"])
+    assert load_world("erl_home").back_entrances() == []

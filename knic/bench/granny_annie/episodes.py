@@ -252,7 +252,9 @@ def world_vocabulary(world: World, lexicon: str | Path | None = None) -> Vocabul
     kb = KnowledgeBase.from_pddl(DOMAIN)
     seed_kb_from_world(kb, world)
     chosen = lexicon or lexicon_of(world)
-    names = (Lexicon.load(chosen) if chosen is not None else Lexicon()).with_entrances(world.entrances())
+    names = (Lexicon.load(chosen) if chosen is not None else Lexicon()).with_entrances(
+        world.entrances(), world.back_entrances()
+    )
     return Vocabulary.from_knowledge_base(kb, names)
 
 
