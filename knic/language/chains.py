@@ -9,7 +9,7 @@ nothing carries on is a BRINGING to the speaker, and "pick up the box" a TAKING 
 from __future__ import annotations
 
 from collections.abc import Collection, Sequence
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 from core.errors import LanguageError
 from knic.language.chunks import Chunk
@@ -42,7 +42,8 @@ def referent(
     vocabulary: Vocabulary,
 ) -> list[str]:
     """What a pronoun stands for: the latest earlier action's themes or beneficiaries of the pronoun's type
-    and of one of ``categories`` (all of them for "them", the last one otherwise).
+    and of one of ``categories`` (all of them for "them", the last one otherwise); "him" or "her" said where
+    no person was named is a thing (a child's teddy).
 
     Raises:
         LanguageError: nothing said earlier in the command fits.
@@ -67,6 +68,10 @@ def referent(
                     found.append(value)
         if found:
             return found if chunk.text == "them" else found[-1:]
+    said = [f.get(r) for g in groups for f in g for r in _REFERRED_ROLES]
+    people = any(s and vocabulary.is_subtype(vocabulary.type_of(s) or "", "person") for s in said)
+    if wanted == "person" and "item" in categories and not people:  # "my teddy's on the sofa, put him ..."
+        return referent(replace(chunk, role="item"), categories, groups, vocabulary)
     thing = "an object" if wanted == "item" else "a person" if wanted == "person" else "anything"
     raise LanguageError(f"'{chunk.text}' does not refer to {thing} named earlier in the command")
 

@@ -221,7 +221,7 @@ class Reader(Places):
         if len(clauses) > MAX_ACTIONS:
             raise LanguageError(f"{len(clauses)} actions in one command; I take up to {MAX_ACTIONS} at once")
         frames: list[CommandFrame] = []
-        mentioned, located = self._mentions(context)
+        mentioned, located, unsettled = self._mentions(context)
         for chunk in chunks:  # "annie's glasses are on the shelf, take them to her": annie is said
             symbols = {t.symbol for t in chunk.terms}
             if chunk.kind == "owner" and len(symbols) == 1:
@@ -236,6 +236,8 @@ class Reader(Places):
             except AmbiguityError:
                 raise
             except LanguageError as exc:
+                if unsettled and "does not refer" in str(exc):  # "it" is a thing said of several
+                    raise AmbiguityError(unsettled) from None
                 talk = clause.verb is not None and (clause.verb.soft or clause.names_nothing())
                 if (
                     talk
@@ -322,19 +324,27 @@ class Reader(Places):
         verb = clause.verb.text if clause.verb is not None else "the command"
         raise first_error or LanguageError(f"I do not know how to '{verb}' that")
 
-    def _mentions(self, context: list[Arg]) -> tuple[list[CommandFrame], dict[str, str]]:
+    def _mentions(self, context: list[Arg]) -> tuple[list[CommandFrame], dict[str, str], str]:
         """Things named before the first verb without making an action ("my glasses are in the bedroom,
-        bring them to me"), as frames for pronouns to refer to (the earliest group; never goals), and where
-        the command says each of them is ("there's a mug on the table in the kitchen": the kitchen table).
+        bring them to me"), as frames for pronouns to refer to (the earliest group; never goals), where
+        the command says each of them is ("there's a mug on the table in the kitchen": the kitchen table),
+        and the question a thing said so asks when it fits several and nothing tells which ("there's a mug
+        on the coffee table, take it ...": which mug, where the robot knows the table, not what is on it).
         """
         mentioned: list[CommandFrame] = []
         located: dict[str, str] = {}
+        unsettled = ""
         args = copy.deepcopy(context)
         with contextlib.suppress(LanguageError):  # a place that fits nothing leaves the things unplaced
             self.narrow(args)
         last: str | None = None
         for arg in args:
             symbols = {t.symbol for t in arg.chunk.terms}
+            items = sorted(
+                s for s in symbols if self.vocabulary.is_subtype(self.vocabulary.type_of(s) or "", "item")
+            )
+            if not arg.consumed and arg.prep is None and len(items) > 1 and len(items) == len(symbols):
+                unsettled = unsettled or f"which {arg.chunk.text} do you mean: {self._listed(items)}?"
             if arg.consumed or arg.chunk.kind != "entity" or len(symbols) != 1:
                 continue
             symbol = symbols.pop()
@@ -344,7 +354,7 @@ class Reader(Places):
                 last = symbol
             elif arg.prep == "place" and last is not None:
                 located.setdefault(last, symbol)
-        return mentioned, located
+        return mentioned, located, unsettled
 
     @staticmethod
     def _placed(frames: list[CommandFrame], located: dict[str, str]) -> list[CommandFrame]:

@@ -11,7 +11,10 @@ never tuned on, ``tests/fixtures/language/people21/accessible_flat.yaml``) the r
   are, so "the stamps from the drawers" asks too); a name's plural has "es" only after a hiss or an "o"
   ("boxes", "potatoes"), so "drawres" is still a typo of "drawers" alone;
 * the room another door to the outside opens into is "the back door" (``World.back_entrances``: where the
-  doorbell tells the front door from the others), and "the door" alone is then the front door.
+  doorbell tells the front door from the others), and "the door" alone is then the front door;
+* a thing said before the request that fits several ("there's a mug on the coffee table, take it ...", where
+  the robot knows the table but not which mug is on it) makes "it" ask which, rather than refer to nothing;
+* "him" or "her" where no person was named is a thing ("my teddy is on the sofa, put him on the day bed").
 """
 
 from __future__ import annotations
@@ -166,3 +169,49 @@ def test_back_entrances_leave_the_front_door_out() -> None:
     flat = load_world(root / FLAT)
     assert (flat.entrances(), flat.back_entrances()) == (["hall"], ["kitchen"])
     assert load_world("erl_home").back_entrances() == []
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "there's a mug on the coffee table, take it through to the kitchen",
+        "the mug on the kitchen table, bring it here to me",
+    ],
+)
+def test_it_of_a_thing_said_of_several_asks_which(flat: Vocabulary, text: str) -> None:
+    assert_asked(flat, text, "red mug", "morag")
+
+
+def test_a_named_mug_said_before_stays_it(flat: Vocabulary) -> None:
+    assert frames_read(flat, "the red mug is on the coffee table, bring it to me", "morag") == [
+        {"frame": "BRINGING", "theme": "red_mug", "source": "coffee_table", "beneficiary": "me"}
+    ]
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        (
+            "my teddy is on the sofa, put him on the day bed",
+            [{"frame": "PLACING", "theme": "teddy", "goal": "day_bed"}],
+        ),
+        (
+            "get the teddy and give him to callum",
+            [
+                {"frame": "TAKING", "theme": "teddy"},
+                {"frame": "BRINGING", "theme": "teddy", "beneficiary": "callum"},
+            ],
+        ),
+        (
+            "find isla and give her the teddy",
+            [
+                {"frame": "SEARCHING", "theme": "isla"},
+                {"frame": "BRINGING", "theme": "teddy", "beneficiary": "isla"},
+            ],
+        ),
+    ],
+)
+def test_him_of_a_toy_where_no_person_is_named(
+    flat: Vocabulary, text: str, frames: list[dict[str, str]]
+) -> None:
+    assert frames_read(flat, text, "isla") == frames
