@@ -349,10 +349,14 @@ class Reader(Places):
                 continue
             symbol = symbols.pop()
             place = any(self.is_a(t, "room") or self.is_a(t, "furniture") for t in arg.chunk.terms)
+            if arg.prep == "place" and not place and last is not None:
+                continue  # "the toaster near the kettle, bring it ...": the kettle only says where
             if arg.prep is None or not place:  # "i seem to have misplaced my glasses": said, whatever before
                 mentioned.append(CommandFrame("SEARCHING", {"theme": symbol}))
                 last = symbol
-            elif arg.prep == "place" and last is not None:
+            elif (
+                arg.prep in ("place", "source") and last is not None
+            ):  # "care folder from the desk, bring it"
                 located.setdefault(last, symbol)
         return mentioned, located, unsettled
 
@@ -429,6 +433,10 @@ class Reader(Places):
         # "I fancy a sherry, bring me the bottle": of several things, the one said earlier in the command
         said_before = [s for s in symbols if any(s in f.args.values() for f in previous)]
         symbols = said_before if len(symbols) > 1 and len(said_before) == 1 else symbols
+        # "go to the wet room, then take the shampoo from the cabinet": the one in the room gone to
+        gone = [f.get("goal") for f in previous if f.kind == "MOTION"][-1:]
+        there = [s for s in symbols if gone and gone[0] in self.vocabulary.locations.get(s, ())]
+        symbols = there if len(symbols) > 1 and len(there) == 1 else symbols
         if len(symbols) > 1:
             question = f"which {chunk.text} do you mean: {self._listed(symbols)}?"
             if arg.modifiers:  # words the world does not know before the name are said back ("kitchen light")

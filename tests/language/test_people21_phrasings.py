@@ -14,7 +14,12 @@ never tuned on, ``tests/fixtures/language/people21/accessible_flat.yaml``) the r
   doorbell tells the front door from the others), and "the door" alone is then the front door;
 * a thing said before the request that fits several ("there's a mug on the coffee table, take it ...", where
   the robot knows the table but not which mug is on it) makes "it" ask which, rather than refer to nothing;
-* "him" or "her" where no person was named is a thing ("my teddy is on the sofa, put him on the day bed").
+* "him" or "her" where no person was named is a thing ("my teddy is on the sofa, put him on the day bed");
+* a piece of furniture whose name fits several is the one in the room an earlier action went to ("first go
+  to the wet room, then take the shampoo from the cabinet": the bathroom cabinet, not the bedside one);
+* a thing said before the request "from" a place has it as its source, as one said "on" it does ("care
+  folder from the desk, bring it to the bedroom"); a thing said only to tell where another is ("the toaster
+  near the kettle, bring it ...") is not what "it" is.
 """
 
 from __future__ import annotations
@@ -215,3 +220,32 @@ def test_him_of_a_toy_where_no_person_is_named(
     flat: Vocabulary, text: str, frames: list[dict[str, str]]
 ) -> None:
     assert frames_read(flat, text, "isla") == frames
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        (
+            "first go to the wet room, then take the shampoo from the cabinet and bring it to me",
+            [
+                {"frame": "MOTION", "goal": "wet_room"},
+                {"frame": "TAKING", "theme": "shampoo", "source": "bathroom_cabinet"},
+                {"frame": "BRINGING", "theme": "shampoo", "source": "bathroom_cabinet", "beneficiary": "me"},
+            ],
+        ),
+        (
+            "care folder from the desk, bring it to the bedroom",
+            [{"frame": "BRINGING", "theme": "care_folder", "source": "desk", "goal": "bedroom"}],
+        ),
+        (
+            "the toaster near the kettle, bring it to the kitchen table",
+            [{"frame": "BRINGING", "theme": "toaster", "goal": "kitchen_table"}],
+        ),
+    ],
+)
+def test_places_said_around_the_request(flat: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
+    assert frames_read(flat, text, "priya") == frames
+
+
+def test_the_cabinet_with_no_room_gone_to_is_asked_about(flat: Vocabulary) -> None:
+    assert_asked(flat, "take the shampoo from the cabinet", "bedside cabinet", "priya")
