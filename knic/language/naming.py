@@ -192,8 +192,8 @@ def _possessive(words: list[str], i: int, person: str) -> bool:
 
 
 def called_so(terms: Sequence[Term], said: str, vocabulary: Vocabulary) -> tuple[Term, ...]:
-    """Of several devices ``said`` names, those whose own name (not one only given) ends in its last word;
-    all of them where none or all do."""
+    """Of several devices ``said`` names, those whose own name (not one only given) ends in its last word
+    (said as one: in it as one); all of them where none or all do."""
     word = said.split()[-1] if said.split() else ""
     devices = {t.symbol for t in terms if vocabulary.is_subtype(t.type, "device")}
     if len(devices) < 2 or len(devices) < len({t.symbol for t in terms}):
@@ -203,6 +203,11 @@ def called_so(terms: Sequence[Term], said: str, vocabulary: Vocabulary) -> tuple
         for t in vocabulary.terms
         if t.symbol in devices and not t.given and t.phrase.split()[-1] in (word, word + "s", word[:-1])
     }
+    # "the light in the kitchen": its kitchen light, not its under-cupboard lights (a plural name is several)
+    one = {
+        t.symbol for t in vocabulary.terms if t.symbol in own and not t.given and t.phrase.split()[-1] == word
+    }
+    own = one if not word.endswith("s") and one else own
     return tuple(t for t in terms if t.symbol in own) if own and own != devices else tuple(terms)
 
 

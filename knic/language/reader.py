@@ -437,6 +437,7 @@ class Reader(Places):
         gone = [f.get("goal") for f in previous if f.kind == "MOTION"][-1:]
         there = [s for s in symbols if gone and gone[0] in self.vocabulary.locations.get(s, ())]
         symbols = there if len(symbols) > 1 and len(there) == 1 else symbols
+        symbols = self._said_otherwise(arg, categories) or symbols
         if len(symbols) > 1:
             question = f"which {chunk.text} do you mean: {self._listed(symbols)}?"
             if arg.modifiers:  # words the world does not know before the name are said back ("kitchen light")
@@ -444,6 +445,26 @@ class Reader(Places):
                 question = f"I know no '{said}' here. {question[:1].upper()}{question[1:]}"
             raise AmbiguityError(question)
         return symbols
+
+    def _said_otherwise(self, arg: Arg, categories: Sequence[str]) -> list[str]:
+        """The one thing named by the words said before a type's noun with another noun of the type ("the
+        bedside light" for a bedside lamp, "the reading light" for a reading lamp), else none."""
+        if not arg.modifiers:
+            return []
+        for nouns in self.language.type_nouns.values():
+            forms = [(n, n + "s") for n in nouns]
+            for one, many in forms:
+                if arg.chunk.text not in (one, many):
+                    continue
+                said = {" ".join((*arg.modifiers, n if arg.chunk.text == one else m)) for n, m in forms}
+                named = {
+                    t.symbol
+                    for t in self.vocabulary.terms
+                    if t.phrase in said and any(self.is_a(t, c) for c in categories)
+                }
+                if len(named) == 1:
+                    return list(named)
+        return []
 
     def _both(self, chunk: Chunk, symbols: list[str]) -> list[str]:
         """The two things "both ..." names: two names, or one group of two; else a question."""

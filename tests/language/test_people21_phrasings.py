@@ -19,7 +19,11 @@ never tuned on, ``tests/fixtures/language/people21/accessible_flat.yaml``) the r
   to the wet room, then take the shampoo from the cabinet": the bathroom cabinet, not the bedside one);
 * a thing said before the request "from" a place has it as its source, as one said "on" it does ("care
   folder from the desk, bring it to the bedroom"); a thing said only to tell where another is ("the toaster
-  near the kettle, bring it ...") is not what "it" is.
+  near the kettle, bring it ...") is not what "it" is;
+* words before a type's noun that name a device with another noun of the type ("the bedside light" for the
+  bedside lamp, a dimmer; "the reading light" for a reading lamp) name it;
+* "the light" in a room with a light and a device of a plural name ("under cupboard lights") is the light;
+  "the lights" there are both.
 """
 
 from __future__ import annotations
@@ -249,3 +253,38 @@ def test_places_said_around_the_request(flat: Vocabulary, text: str, frames: lis
 
 def test_the_cabinet_with_no_room_gone_to_is_asked_about(flat: Vocabulary) -> None:
     assert_asked(flat, "take the shampoo from the cabinet", "bedside cabinet", "priya")
+
+
+@pytest.mark.parametrize(
+    ("world", "text", "frames"),
+    [
+        (
+            FLAT,
+            "turn on the bedside light",
+            [{"frame": "OPERATING", "device": "bedside_lamp", "state": "on"}],
+        ),
+        (FLAT, "turn on the floor light", [{"frame": "OPERATING", "device": "floor_lamp", "state": "on"}]),
+        (
+            FARMHOUSE,
+            "turn on the reading light",
+            [{"frame": "OPERATING", "device": "reading_lamp", "state": "on"}],
+        ),
+        (
+            FLAT,
+            "switch on the light in the kitchen",
+            [{"frame": "OPERATING", "device": "kitchen_light", "state": "on"}],
+        ),
+        (
+            FLAT,
+            "switch off the lights in the kitchen",
+            [
+                {"frame": "OPERATING", "device": "kitchen_light", "state": "off"},
+                {"frame": "OPERATING", "device": "under_cupboard_lights", "state": "off"},
+            ],
+        ),
+    ],
+)
+def test_lamps_and_lights(world: str, text: str, frames: list[dict[str, str]]) -> None:
+    vocabulary = _world(world)
+    speaker = "hamish" if world == FLAT else "ffion"
+    assert frames_read(vocabulary, text, speaker) == frames
