@@ -159,6 +159,9 @@ def _carry(
             if not themes:
                 raise LanguageError(f"'{arg.prep_text} {arg.chunk.text}' but no object to {kind.lower()}")
             where = reader.resolve(arg, ("room", "furniture"), previous, groups)[0]
+            if _carried_in(reader, clause, arg, roles):  # "bring the egg basket in the kitchen": into it
+                roles["goal"] = where
+                continue
             for theme in themes:
                 sources.setdefault(theme, where)
     if not themes:
@@ -195,6 +198,25 @@ def _carry(
             CommandFrame(f.kind, {**f.args, "beneficiary": who}) for f in frames if f.kind == "BRINGING"
         ]
     return frames
+
+
+#: verbs that carry a thing somewhere: "in" a room said last after them, with no one and nowhere else said, is
+#: where it goes, as a learner says "into" ("bring the egg basket in the kitchen"); after "fetch" or "get" (go
+#: and get) or "take" (also to pick up: "take the laptop, the one in the study") it is where the thing is
+_CARRY_VERBS = frozenset({"bring", "carry"})
+
+
+def _carried_in(reader: Resolver, clause: Clause, arg: Arg, roles: dict[str, str]) -> bool:
+    """Whether a room said with "in" last in a clause of a carrying verb is where the thing goes."""
+    last = [a for a in clause.args if not a.consumed][-1:]
+    return (
+        clause.verb is not None
+        and clause.verb.text in _CARRY_VERBS
+        and arg.prep_text == "in"
+        and last == [arg]
+        and not ({"goal", "beneficiary"} & set(roles))
+        and all(reader.is_a(t, "room") for t in arg.chunk.terms)
+    )
 
 
 def _discarded_into(reader: Resolver, clause: Clause) -> str | None:

@@ -23,7 +23,10 @@ never tuned on, ``tests/fixtures/language/people21/accessible_flat.yaml``) the r
 * words before a type's noun that name a device with another noun of the type ("the bedside light" for the
   bedside lamp, a dimmer; "the reading light" for a reading lamp) name it;
 * "the light" in a room with a light and a device of a plural name ("under cupboard lights") is the light;
-  "the lights" there are both.
+  "the lights" there are both;
+* "bring" or "carry" a thing "in" a room said last, with no one and nowhere else said, takes it into the room
+  (a learner's "in" for "into": "bring the egg basket in the kitchen"); "bring me the milk jug in the kitchen"
+  and "fetch the torch in the boot room" still name where the thing is.
 """
 
 from __future__ import annotations
@@ -288,3 +291,28 @@ def test_lamps_and_lights(world: str, text: str, frames: list[dict[str, str]]) -
     vocabulary = _world(world)
     speaker = "hamish" if world == FLAT else "ffion"
     assert frames_read(vocabulary, text, speaker) == frames
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        (
+            "is it possible to bring the egg basket in the kitchen",
+            [{"frame": "BRINGING", "theme": "egg_basket", "goal": "kitchen"}],
+        ),
+        (
+            "bring me the milk jug in the kitchen",
+            [{"frame": "BRINGING", "theme": "milk_jug", "source": "kitchen", "beneficiary": "me"}],
+        ),
+        (
+            "fetch the torch in the boot room",
+            [{"frame": "BRINGING", "theme": "torch", "source": "boot_room", "beneficiary": "me"}],
+        ),
+        (
+            "bring the cheese in the kitchen to dai",
+            [{"frame": "BRINGING", "theme": "cheese", "source": "kitchen", "beneficiary": "dai"}],
+        ),
+    ],
+)
+def test_bring_in_a_room_is_into_it(text: str, frames: list[dict[str, str]]) -> None:
+    assert frames_read(_world(FARMHOUSE), text, "jean_paul") == frames
