@@ -19,6 +19,7 @@ from knic.language.complaints import dark_read
 from knic.language.frames import CommandFrame
 from knic.language.goals import frames_to_goals, hints
 from knic.language.grammar import Grammar
+from knic.language.owned import owned_read
 from knic.language.reader import AmbiguityError, Reader
 from knic.language.vocabulary import Vocabulary
 from knowledge_base import Fact
@@ -138,7 +139,8 @@ def understand(
     """
     del grammar
     try:
-        reading = reader_for(vocabulary).read(dark_read(text))  # "it's dark in the study": its lights
+        # "it's dark in the study": its lights; "hoodie from my bed": the bed in the speaker's own room
+        reading = reader_for(vocabulary).read(dark_read(owned_read(text, vocabulary, speaker)))
     except AmbiguityError as exc:
         question = str(exc)[:1].upper() + str(exc)[1:]
         return Understanding(text, reason=f"ambiguous: {exc}", speaker=speaker, question=question)

@@ -26,7 +26,9 @@ never tuned on, ``tests/fixtures/language/people21/accessible_flat.yaml``) the r
   "the lights" there are both;
 * "bring" or "carry" a thing "in" a room said last, with no one and nowhere else said, takes it into the room
   (a learner's "in" for "into": "bring the egg basket in the kitchen"); "bring me the milk jug in the kitchen"
-  and "fetch the torch in the boot room" still name where the thing is.
+  and "fetch the torch in the boot room" still name where the thing is;
+* "my bed" (or desk, ...) said by someone with a room named after them is the one in that room, where the
+  world has several (``knic.language.owned``): "hoodie from my bed" said by rhys is his single bed.
 """
 
 from __future__ import annotations
@@ -316,3 +318,21 @@ def test_lamps_and_lights(world: str, text: str, frames: list[dict[str, str]]) -
 )
 def test_bring_in_a_room_is_into_it(text: str, frames: list[dict[str, str]]) -> None:
     assert frames_read(_world(FARMHOUSE), text, "jean_paul") == frames
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        (
+            "hoodie from my bed pls",
+            [{"frame": "BRINGING", "theme": "hoodie", "source": "single_bed", "beneficiary": "me"}],
+        ),
+        ("put my hoodie on my bed", [{"frame": "PLACING", "theme": "hoodie", "goal": "single_bed"}]),
+    ],
+)
+def test_my_bed_is_the_one_in_my_room(text: str, frames: list[dict[str, str]]) -> None:
+    assert frames_read(_world(FARMHOUSE), text, "rhys") == frames
+
+
+def test_my_bed_without_a_room_of_ones_own_is_asked_about() -> None:
+    assert_asked(_world(FARMHOUSE), "hoodie from my bed pls", "single bed", "ffion")
