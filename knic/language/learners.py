@@ -1,7 +1,8 @@
 """Orders and shortcuts of speakers of English as a second language, and of elderly speakers, read as the
 command they mean (used by :class:`knic.language.reader.Reader`): the verb said last ("to the bathroom go"),
 where the speaker themself goes said before the request ("i go to bed now, switch off the lamp"), a room told
-by what is in it ("go to the room where is the bed"), "give it me"."""
+by what is in it ("go to the room where is the bed"), "give it me", "you" before the verb after the thing
+("toolbox you take from shelf")."""
 
 from __future__ import annotations
 
@@ -12,7 +13,23 @@ from knic.language.vocabulary import Vocabulary
 
 def learners_read(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
     """The chunks with the orders of this module put as a command says them."""
-    return verb_last_moved(own_going_dropped(room_told(it_me(chunks), vocabulary)))
+    return verb_last_moved(own_going_dropped(room_told(it_me(subject_dropped(chunks)), vocabulary)))
+
+
+def subject_dropped(chunks: list[Chunk]) -> list[Chunk]:
+    """ "toolbox you take from shelf and you put on workbench": "you" said right before a verb, after the
+    thing or a joiner, is whom the speaker tells, not a thing of the world."""
+    return [
+        c
+        for i, c in enumerate(chunks)
+        if not (
+            c.text == "you"
+            and c.kind == "unknown"
+            and 0 < i < len(chunks) - 1
+            and chunks[i - 1].kind in ("entity", "join")
+            and chunks[i + 1].kind == "verb"
+        )
+    ]
 
 
 def it_me(chunks: list[Chunk]) -> list[Chunk]:

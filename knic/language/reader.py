@@ -129,7 +129,9 @@ class Reader(Places):
             raise LanguageError("nothing to understand: the command is empty")
         opening = not_request(segments, language.not_requests, language.not_requests_unless)
         if opening:
-            raise LanguageError(f"'{opening} ...' asks about something or says what you will do: no request")
+            raise LanguageError(
+                f"'{opening} ...' asks about something or says what you will do: no request, no action for me"
+            )
         segments = said_named(segments, self.vocabulary, self.chunker.language_words)  # naming.py
         segments = described(ones_named(segments, self.vocabulary), self.vocabulary)  # selecting.py
         segments = sorry_repairs(segments, self.chunks)

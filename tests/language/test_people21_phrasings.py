@@ -28,7 +28,11 @@ never tuned on, ``tests/fixtures/language/people21/accessible_flat.yaml``) the r
   (a learner's "in" for "into": "bring the egg basket in the kitchen"); "bring me the milk jug in the kitchen"
   and "fetch the torch in the boot room" still name where the thing is;
 * "my bed" (or desk, ...) said by someone with a room named after them is the one in that room, where the
-  world has several (``knic.language.owned``): "hoodie from my bed" said by rhys is his single bed.
+  world has several (``knic.language.owned``): "hoodie from my bed" said by rhys is his single bed;
+* a command of one sentence opening "are you" asks about the robot, no request ("are you a boy robot or a
+  girl robot"), unless a request follows ("are you able to bring me the tablet");
+* a learner's "batteries, where they are?" (or "where it is") asks for a search;
+* "you" said between the thing and the verb ("toolbox you take from shelf") is whom the speaker tells.
 """
 
 from __future__ import annotations
@@ -336,3 +340,35 @@ def test_my_bed_is_the_one_in_my_room(text: str, frames: list[dict[str, str]]) -
 
 def test_my_bed_without_a_room_of_ones_own_is_asked_about() -> None:
     assert_asked(_world(FARMHOUSE), "hoodie from my bed pls", "single bed", "ffion")
+
+
+def test_are_you_asks_about_the_robot(flat: Vocabulary) -> None:
+    result = understand("are you a boy robot or a girl robot", flat, speaker="isla")
+    assert not result.accepted
+    assert "no request" in result.reason and "action" in result.reason
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        (
+            "are you able to bring me the tablet",
+            [{"frame": "BRINGING", "theme": "tablet", "beneficiary": "me"}],
+        ),
+        (
+            "are you there? bring me the tablet",
+            [{"frame": "BRINGING", "theme": "tablet", "beneficiary": "me"}],
+        ),
+        ("batteries, where they are?", [{"frame": "SEARCHING", "theme": "batteries"}]),
+        ("the glasses, where it is?", [{"frame": "SEARCHING", "theme": "glasses"}]),
+        (
+            "toolbox you take from shelf and you put on workbench",
+            [
+                {"frame": "TAKING", "theme": "toolbox", "source": "utility_shelves"},
+                {"frame": "PLACING", "theme": "toolbox", "goal": "workbench"},
+            ],
+        ),
+    ],
+)
+def test_learners_orders(flat: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
+    assert frames_read(flat, text, "tomasz") == frames
