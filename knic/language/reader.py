@@ -267,9 +267,22 @@ class Reader(Places):
             frames.extend(group)
         if not frames:  # every clause was talk
             raise skipped or LanguageError(f"no action in '{' '.join(tokens)}'")
+        if self._asked_first(clauses[0], frames):  # "is there a parcel on the hall table? bring it to me"
+            if frames[0].get("ground"):
+                located.setdefault(frames[0].args["theme"], frames[0].args["ground"])
+            frames = frames[1:]
+            ask_where, held = {i - 1 for i in ask_where if i}, {i - 1 for i in held if i}
         reading = chain(self._placed(frames, located), self.vocabulary, ask_where=ask_where, held=held)
         reading = settled(reading, self.vocabulary)  # "open the blinds and set them to 40": at 40
         return for_asker(reading, asker)  # "tracy asks the robot to fetch her glasses": for tracy
+
+    def _asked_first(self, clause: Clause, frames: list[CommandFrame]) -> bool:
+        """Whether the command opens by asking whether a thing is somewhere ("is there a parcel on the hall
+        table?") and then acts on that thing: the question only says where it is, no search of its own."""
+        asked = clause.verb is not None and clause.verb.text in self.language.opening_verbs()
+        theme = frames[0].get("theme") if asked and frames[0].kind == "SEARCHING" else None
+        carried = ("BRINGING", "TAKING", "PLACING")
+        return theme is not None and any(f.kind in carried and f.get("theme") == theme for f in frames[1:])
 
     def _verb_of(self, word: str) -> Chunk | None:
         said = self.chunker.chunks([word])

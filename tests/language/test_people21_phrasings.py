@@ -32,7 +32,10 @@ never tuned on, ``tests/fixtures/language/people21/accessible_flat.yaml``) the r
 * a command of one sentence opening "are you" asks about the robot, no request ("are you a boy robot or a
   girl robot"), unless a request follows ("are you able to bring me the tablet");
 * a learner's "batteries, where they are?" (or "where it is") asks for a search;
-* "you" said between the thing and the verb ("toolbox you take from shelf") is whom the speaker tells.
+* "you" said between the thing and the verb ("toolbox you take from shelf") is whom the speaker tells;
+* a command that opens asking whether a thing is somewhere and then acts on it ("is there a parcel on the
+  hall table? bring it to me") takes the place as where the thing is, with no search of its own;
+* a pill dispenser is a pill box (``synonyms.yaml``), not the box of tissues.
 """
 
 from __future__ import annotations
@@ -372,3 +375,32 @@ def test_are_you_asks_about_the_robot(flat: Vocabulary) -> None:
 )
 def test_learners_orders(flat: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
     assert frames_read(flat, text, "tomasz") == frames
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        (
+            "is there a parcel on the hall table? bring it to me",
+            [{"frame": "BRINGING", "theme": "parcel", "source": "console_table", "beneficiary": "me"}],
+        ),
+        (
+            "is the remote on the coffee table? put it on the sofa",
+            [{"frame": "PLACING", "theme": "tv_remote", "goal": "sofa"}],
+        ),
+        ("are my glasses in the bedroom", [{"frame": "SEARCHING", "theme": "glasses", "ground": "bedroom"}]),
+        (
+            "bring the pill box from the kitchen table to morag",
+            [
+                {
+                    "frame": "BRINGING",
+                    "theme": "pill_dispenser",
+                    "source": "kitchen_table",
+                    "beneficiary": "morag",
+                }
+            ],
+        ),
+    ],
+)
+def test_asked_where_then_acted_on(flat: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
+    assert frames_read(flat, text, "morag") == frames
