@@ -35,7 +35,8 @@ never tuned on, ``tests/fixtures/language/people21/accessible_flat.yaml``) the r
 * "you" said between the thing and the verb ("toolbox you take from shelf") is whom the speaker tells;
 * a command that opens asking whether a thing is somewhere and then acts on it ("is there a parcel on the
   hall table? bring it to me") takes the place as where the thing is, with no search of its own;
-* a pill dispenser is a pill box (``synonyms.yaml``), not the box of tissues.
+* a pill dispenser is a pill box (``synonyms.yaml``), not the box of tissues; a white cane is a "white
+  stick" (British).
 """
 
 from __future__ import annotations
@@ -404,3 +405,9 @@ def test_learners_orders(flat: Vocabulary, text: str, frames: list[dict[str, str
 )
 def test_asked_where_then_acted_on(flat: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
     assert frames_read(flat, text, "morag") == frames
+
+
+def test_a_white_stick_is_the_white_cane(flat: Vocabulary) -> None:
+    assert frames_read(
+        flat, "I can't find my white stick, it should be on the bench by the front door", "morag"
+    ) == [{"frame": "SEARCHING", "theme": "white_cane", "ground": "shoe_bench"}]
