@@ -117,8 +117,11 @@ class Chunker:
                     self._partial.setdefault(variant, []).append(term)
                 elif term not in self._full[variant]:  # "desk" said of the writing desk where a desk is too
                     self._shadowed.setdefault(variant, []).append(term)
+        # a one-word compound name ends in what it is ("armchair": a chair, as a "wicker chair" is)
+        compounds = {t.symbol: t.phrase for t in vocabulary.terms if not t.given and " " not in t.phrase}
         for variant, terms in self._partial.items():  # "the table": the dining table, not a "bedside table"
             own = {t.symbol for t in terms if not t.given and variant in _forms(t.phrase.split()[-1])}
+            own |= {t.symbol for t in terms if own and compounds.get(t.symbol, " ").endswith(variant)}
             if own and any(t.symbol not in own for t in terms):
                 self._partial[variant] = [t for t in terms if t.symbol in own]
         named: dict[str, Term] = {}  # one term per single thing, for the nouns of its type

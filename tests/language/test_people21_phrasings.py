@@ -36,7 +36,9 @@ never tuned on, ``tests/fixtures/language/people21/accessible_flat.yaml``) the r
 * a command that opens asking whether a thing is somewhere and then acts on it ("is there a parcel on the
   hall table? bring it to me") takes the place as where the thing is, with no search of its own;
 * a pill dispenser is a pill box (``synonyms.yaml``), not the box of tissues; a white cane is a "white
-  stick" (British).
+  stick" (British);
+* "the chair" where the world has a wicker chair and an armchair fits both (a one-word compound is what its
+  end names, as a two-word name is) and is asked about.
 """
 
 from __future__ import annotations
@@ -411,3 +413,10 @@ def test_a_white_stick_is_the_white_cane(flat: Vocabulary) -> None:
     assert frames_read(
         flat, "I can't find my white stick, it should be on the bench by the front door", "morag"
     ) == [{"frame": "SEARCHING", "theme": "white_cane", "ground": "shoe_bench"}]
+
+
+def test_the_chair_of_a_chair_and_an_armchair_is_asked_about(flat: Vocabulary) -> None:
+    assert_asked(flat, "put the cardigan on the chair", "armchair", "dawn")
+    assert frames_read(flat, "put the cardigan on the wicker chair", "dawn") == [
+        {"frame": "PLACING", "theme": "cardigan", "goal": "wicker_chair"}
+    ]
