@@ -432,6 +432,14 @@ class Reader(Places):
             things = " or ".join(KIND_PLURALS.get(c, c) for c in categories)
             raise AmbiguityError(f"which {things} do you mean by '{chunk.text}'? Name them, please")
         terms = [t for t in chunk.terms if any(self.is_a(t, c) for c in categories)]
+        items = all(self.is_a(t, "item") for t in chunk.terms)
+        if arg.modifiers and terms and items and all(t.given and t.phrase != chunk.text for t in chunk.terms):
+            # "my hearing aid": no "aid" ends a name of the world's own, only one a synonym gives ("band
+            # aids" for the plasters); "the big light" is still a light where the world names lights
+            ends = {t.phrase.split()[-1] for t in self.vocabulary.terms if not t.given}
+            if not ends & {chunk.text, chunk.text + "s", chunk.text[:-1]}:
+                said = " ".join((*arg.modifiers, chunk.text))
+                raise LanguageError(f"there is no '{said}' here: this world has nothing called that")
         if not terms:
             kinds = " or ".join(KIND_NAMES.get(c, c) for c in categories)
             raise LanguageError(f"'{chunk.text}' is not {kinds}")

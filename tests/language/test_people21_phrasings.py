@@ -38,7 +38,9 @@ never tuned on, ``tests/fixtures/language/people21/accessible_flat.yaml``) the r
 * a pill dispenser is a pill box (``synonyms.yaml``), not the box of tissues; a white cane is a "white
   stick" (British);
 * "the chair" where the world has a wicker chair and an armchair fits both (a one-word compound is what its
-  end names, as a two-word name is) and is asked about.
+  end names, as a two-word name is) and is asked about;
+* a thing said by an unknown word and the last word of a name only a synonym gives, where no name of the
+  world's own ends so, is refused naming both ("find my hearing aid" is not the plasters' "band aids").
 """
 
 from __future__ import annotations
@@ -419,4 +421,13 @@ def test_the_chair_of_a_chair_and_an_armchair_is_asked_about(flat: Vocabulary) -
     assert_asked(flat, "put the cardigan on the chair", "armchair", "dawn")
     assert frames_read(flat, "put the cardigan on the wicker chair", "dawn") == [
         {"frame": "PLACING", "theme": "cardigan", "goal": "wicker_chair"}
+    ]
+
+
+def test_an_aid_that_only_a_synonym_names_is_refused(flat: Vocabulary) -> None:
+    result = understand("find my hearing aid", flat, speaker="hamish")
+    assert not result.accepted
+    assert "no 'hearing aid'" in result.reason
+    assert frames_read(flat, "bring me a band aid", "hamish") == [
+        {"frame": "BRINGING", "theme": "plasters", "beneficiary": "me"}
     ]
