@@ -40,7 +40,8 @@ never tuned on, ``tests/fixtures/language/people21/accessible_flat.yaml``) the r
 * "the chair" where the world has a wicker chair and an armchair fits both (a one-word compound is what its
   end names, as a two-word name is) and is asked about;
 * a thing said by an unknown word and the last word of a name only a synonym gives, where no name of the
-  world's own ends so, is refused naming both ("find my hearing aid" is not the plasters' "band aids").
+  world's own ends so, is refused naming both ("find my hearing aid" is not the plasters' "band aids");
+* a thing that "would be lovely" (nice, great, wonderful) is asked for ("a glass of water would be lovely").
 """
 
 from __future__ import annotations
@@ -430,4 +431,18 @@ def test_an_aid_that_only_a_synonym_names_is_refused(flat: Vocabulary) -> None:
     assert "no 'hearing aid'" in result.reason
     assert frames_read(flat, "bring me a band aid", "hamish") == [
         {"frame": "BRINGING", "theme": "plasters", "beneficiary": "me"}
+    ]
+
+
+@pytest.mark.parametrize(
+    ("text", "theme"),
+    [
+        ("I'm parched, a glass of water would be lovely", "water_glass"),
+        ("the chocolates would be nice", "chocolates"),
+        ("some biscuits would be great, thanks", "biscuit_tin"),
+    ],
+)
+def test_a_thing_that_would_be_lovely_is_asked_for(text: str, theme: str) -> None:
+    assert frames_read(_world(FARMHOUSE), text, "mary_ann") == [
+        {"frame": "BRINGING", "theme": theme, "beneficiary": "me"}
     ]
