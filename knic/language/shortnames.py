@@ -22,7 +22,7 @@ the hallway, an "entrance_hall" is not also "the hall"); one short name of sever
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterable, Sequence
+from collections.abc import Callable, Iterable, Mapping, Sequence
 from functools import lru_cache
 from pathlib import Path
 from typing import Protocol, TypeVar
@@ -195,3 +195,18 @@ def short_names(
                 seen.add(key)
                 out.append((phrase, term))
     return out
+
+
+def own_phrases(
+    symbol: str, phrases: tuple[str, ...], instances: Mapping[str, str], room: bool
+) -> tuple[str, ...]:
+    """A symbol's phrases less each one-word phrase that ends the name of another thing of its type, unless
+    the thing is a room: where a lexicon written for one home calls its ``bedroom_blinds`` "the blinds", a
+    home with more blinds ("kitchen_blind", "study_blind") means them all, or asks which."""
+    kind = instances.get(symbol)
+    if room or len(phrases) < 2:
+        return phrases
+    ends = {o.replace("_", " ").split()[-1] for o, k in instances.items() if k == kind and o != symbol}
+    ends |= {end[:-1] for end in ends if end.endswith("s")} | {end + "s" for end in ends}
+    kept = tuple(p for p in phrases if " " in p or p not in ends)
+    return kept or phrases

@@ -20,7 +20,7 @@ from typing import Any, Protocol
 
 from core.errors import LanguageError
 from core.inputs import read_yaml
-from knic.language.shortnames import contains, english_nearer, short_names
+from knic.language.shortnames import contains, english_nearer, own_phrases, short_names
 
 #: Number words for 0..100, enough for percent levels.
 UNIT_WORDS = [
@@ -334,7 +334,12 @@ class Vocabulary:
                 percent = level_percent(symbol)
                 phrases: tuple[str, ...] = (number_words(percent),) if percent is not None else ()
             else:
-                phrases = lexicon.names.get(symbol) or (normalize(symbol),)
+                phrases = own_phrases(
+                    symbol,
+                    lexicon.names.get(symbol) or (normalize(symbol),),
+                    instances,
+                    _is_subtype(types, type_name, "room"),
+                )
             terms.extend(Term(p, symbol, type_name, (symbol,)) for p in phrases)
         terms += _synonym_variants(terms, english_synonyms() if synonyms is None else synonyms)
         terms += [

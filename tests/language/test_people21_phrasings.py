@@ -41,7 +41,10 @@ never tuned on, ``tests/fixtures/language/people21/accessible_flat.yaml``) the r
   end names, as a two-word name is) and is asked about;
 * a thing said by an unknown word and the last word of a name only a synonym gives, where no name of the
   world's own ends so, is refused naming both ("find my hearing aid" is not the plasters' "band aids");
-* a thing that "would be lovely" (nice, great, wonderful) is asked for ("a glass of water would be lovely").
+* a thing that "would be lovely" (nice, great, wonderful) is asked for ("a glass of water would be lovely");
+* a one-word lexicon phrase that ends the name of another thing of the same type is left out
+  (``shortnames.own_phrases``): the ERL lexicon's "blinds" for ``bedroom_blinds`` is no name of the accessible
+  flat's bedroom blinds alone, so "close the blinds" there is every blind, as plurals are.
 """
 
 from __future__ import annotations
@@ -445,4 +448,18 @@ def test_an_aid_that_only_a_synonym_names_is_refused(flat: Vocabulary) -> None:
 def test_a_thing_that_would_be_lovely_is_asked_for(text: str, theme: str) -> None:
     assert frames_read(_world(FARMHOUSE), text, "mary_ann") == [
         {"frame": "BRINGING", "theme": theme, "beneficiary": "me"}
+    ]
+
+
+def test_a_borrowed_lexicon_word_that_ends_other_names_is_not_one_things(flat: Vocabulary) -> None:
+    devices = [f["device"] for f in frames_read(flat, "close the blinds", "dawn")]
+    assert sorted(devices) == [
+        "bedroom_blinds",
+        "conservatory_blinds",
+        "kitchen_blind",
+        "living_room_blinds",
+        "study_blind",
+    ]
+    assert frames_read(flat, "close the bedroom blinds", "dawn") == [
+        {"frame": "OPERATING", "device": "bedroom_blinds", "state": "closed"}
     ]
