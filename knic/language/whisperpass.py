@@ -28,7 +28,7 @@ import struct
 import subprocess
 import sys
 import weakref
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -58,6 +58,8 @@ SERVER_THREADS = max(1, min(2, os.cpu_count() or 1))
 BEAM = 5
 #: tokens the decoder may write per second of audio, besides 8 (people say about 3 words a second)
 TOKENS_PER_S = 6.0
+#: the paces :meth:`WhisperPass.stretched` plays an utterance at (slower and faster than said)
+MIN_RATE, MAX_RATE = 0.5, 2.0
 
 
 @dataclass(frozen=True)
@@ -90,6 +92,7 @@ class WhisperPass:
         self._start: list[int] = []
         #: the last utterance heard: its encoder output, its frames and its beam's transcripts
         self._last: tuple[Any, int, list[Heard]] | None = None
+        self._audio: npt.NDArray[np.int16] | None = None
 
     def _load(self) -> None:
         if self._model is not None:
@@ -120,34 +123,63 @@ class WhisperPass:
     def hear(self, audio: npt.NDArray[np.int16]) -> Heard:
         """Transcribe 16 kHz mono samples: the best of a beam search of :data:`BEAM` (no slower here than a
         greedy search, and its other transcripts are kept for :meth:`alternatives`); the utterance is kept
-        for :meth:`scores`.
+        for :meth:`scores` and :meth:`stretched`.
 
         Raises:
             LanguageError: the model cannot be loaded.
         """
+        self._load()
+        encoded, frames, (found,) = self._beams([audio])
+        self._last = (encoded, frames, found)
+        self._audio = audio
+        return found[0]
+
+    def _beams(self, audios: Sequence[npt.NDArray[np.int16]]) -> tuple[Any, int, list[list[Heard]]]:
+        """The encoder's output of some utterances (in one batch, each padded with silence to the same
+        length), their frames and each one's beam search transcripts, best first."""
         import ctranslate2
         import numpy as np
 
-        self._load()
-        samples = np.asarray(audio, dtype=np.float32) / 32768.0
-        silence = max(SAMPLE_RATE // 2, int(WINDOW_S * SAMPLE_RATE) - len(samples))
-        features = log_mel(np.concatenate([samples, np.zeros(silence, np.float32)]))
-        features = features[:, : features.shape[1] // 2 * 2]
-        encoded = self._model.encode(ctranslate2.StorageView.from_array(np.ascontiguousarray(features[None])))
-        most = min(MAX_TOKENS, int(TOKENS_PER_S * len(audio) / SAMPLE_RATE) + 8)
-        result = self._model.generate(
+        longest = max(len(a) for a in audios)
+        size = longest + max(SAMPLE_RATE // 2, int(WINDOW_S * SAMPLE_RATE) - longest)
+        batch = []
+        for audio in audios:
+            samples = np.zeros(size, np.float32)
+            samples[: len(audio)] = np.asarray(audio, dtype=np.float32) / 32768.0
+            batch.append(log_mel(samples))
+        features = np.stack(batch)[:, :, : batch[0].shape[1] // 2 * 2]
+        encoded = self._model.encode(ctranslate2.StorageView.from_array(np.ascontiguousarray(features)))
+        most = min(MAX_TOKENS, int(TOKENS_PER_S * longest / SAMPLE_RATE) + 8)
+        results = self._model.generate(
             encoded,
-            [self._start],
+            [self._start] * len(audios),
             beam_size=BEAM,
             num_hypotheses=BEAM,
             max_length=len(self._start) + most,
             return_scores=True,
-        )[0]
+        )
         found = [
-            Heard(self._text(t), float(s)) for t, s in zip(result.sequences_ids, result.scores, strict=True)
+            [Heard(self._text(t), float(s)) for t, s in zip(r.sequences_ids, r.scores, strict=True)]
+            for r in results
         ]
-        self._last = (encoded, features.shape[1] // 2, found)
-        return found[0]
+        return encoded, features.shape[2] // 2, found
+
+    def stretched(self, rates: Sequence[float]) -> list[Heard]:
+        """The beam's transcripts of the last utterance heard played at each rate (``rate`` times as fast;
+        resampled, so its pitch moves with its pace: a voice Whisper mishears is often heard right a little
+        higher or lower), rate after rate, in one batch; the utterance kept for :meth:`scores` stays the one
+        heard. Rates outside :data:`MIN_RATE` to :data:`MAX_RATE` are left out; none before :meth:`hear`."""
+        import numpy as np
+
+        rates = [r for r in rates if MIN_RATE <= r <= MAX_RATE]
+        if self._audio is None or not rates:
+            return []
+        audio = np.asarray(self._audio, dtype=np.float32)
+        played = [
+            np.interp(np.arange(int(len(audio) / r)) * r, np.arange(len(audio)), audio).astype(np.int16)
+            for r in rates
+        ]
+        return [heard for found in self._beams(played)[2] for heard in found]
 
     def _text(self, tokens: list[int]) -> str:
         return unrepeated(self._tokenizer.decode([t for t in tokens if t < self._end]).strip())
@@ -371,6 +403,8 @@ FRAME = struct.Struct("!I")
 QUESTION = 1 << 31
 #: most texts one question may ask scores of, and their longest text
 MAX_TEXTS, MAX_TEXT_CHARS = 64, 1000
+#: most paces one question may ask the utterance heard at
+MAX_RATES = 4
 
 
 def _digest(samples: bytes) -> bytes:
@@ -429,14 +463,22 @@ def hearing_of(whisper: WhisperPass, data: bytes) -> list[Any] | None:
 def answer_of(whisper: WhisperPass, data: bytes) -> Any:
     """The answer to a question about the last utterance heard (JSON): ``{"beam": n}``, the ``n`` best
     transcripts of a beam search as ``[text, mean log-prob]`` pairs (:meth:`WhisperPass.alternatives`, n at
-    most 10); ``{"score": [text, ...]}``, each text's score (:meth:`WhisperPass.scores`). None for a malformed
-    question or when Whisper cannot answer."""
+    most 10); ``{"stretch": [rate, ...]}`` (at most :data:`MAX_RATES`), the same for the utterance played at
+    each rate (:meth:`WhisperPass.stretched`); ``{"score": [text, ...]}``, each text's
+    score (:meth:`WhisperPass.scores`). None for a malformed question or when Whisper cannot answer."""
     try:
         question = json.loads(data)
         if not isinstance(question, dict):
             return None
+        rates = question.get("stretch")
         if isinstance(question.get("beam"), int):
             found = whisper.alternatives(max(1, min(10, question["beam"])))
+        elif isinstance(rates, list) and len(rates) <= MAX_RATES:
+            numbers = [float(r) for r in rates if isinstance(r, (int, float)) and not isinstance(r, bool)]
+            found = whisper.stretched(numbers)
+        else:
+            found = None
+        if found is not None:
             return [[heard.text, heard.mean_log_prob] for heard in found]
         texts = question.get("score")
         if (

@@ -11,11 +11,13 @@ from typing import Any
 
 import pytest
 
+from knic.language import judging
 from knic.language.audio import Transcript, load_audio, pcm_bytes
-from knic.language.judging import KEEP_LOG_PROB, TAKE_LOG_PROB, Judging
+from knic.language.judging import KEEP_LOG_PROB, STRETCH, TAKE_LOG_PROB, Judging
 from knic.language.lmspeech import NgramRecognizer
 from knic.language.understanding import understand_transcript
 from knic.language.whisperpass import (
+    BEAM,
     FRAME,
     QUESTION,
     Heard,
@@ -59,6 +61,21 @@ def test_whisper_beam_gives_several_transcripts_best_first(whisper):
     assert any("blind" in h.text.lower() for h in found)
 
 
+def test_a_stretched_hearing_adds_transcripts_and_keeps_the_utterance_scored(whisper):
+    before = whisper.scores(["put the blinds at seventy five percent"])
+    slower = whisper.stretched([0.9])
+    assert 1 <= len(slower) <= BEAM and any("blind" in h.text.lower() for h in slower)
+    assert whisper.scores(["put the blinds at seventy five percent"]) == before  # still the utterance heard
+    assert whisper.stretched([0.1, float("nan")]) == []  # no pace that far off
+    both = whisper.stretched([0.9, 1.1])
+    assert [(h.text, round(h.mean_log_prob, 3)) for h in both[: len(slower)]] == [
+        (h.text, round(h.mean_log_prob, 3)) for h in slower
+    ]  # heard in one batch as heard alone
+    asked = answer_of(whisper, json.dumps({"stretch": [0.9, 1.1, "fast"]}).encode())
+    assert [text for text, _ in asked] == [h.text for h in both]
+    assert answer_of(whisper, json.dumps({"stretch": [0.9] * 5}).encode()) is None
+
+
 def test_malformed_questions_get_no_answer(whisper):
     assert answer_of(whisper, b"not json") is None
     assert answer_of(whisper, b"[1, 2]") is None
@@ -89,8 +106,13 @@ def test_the_server_answers_questions_about_an_utterance_it_is_sent_first(vocabu
 class _Server:
     """Whisper's server as judging sees it: a beam, then scores from a table."""
 
-    def __init__(self, beam: list[list[Any]] | None, fits: dict[str, float] | None):
-        self.beam, self.fits = beam, fits
+    def __init__(
+        self,
+        beam: list[list[Any]] | None,
+        fits: dict[str, float] | None,
+        stretched: list[list[Any]] | None = None,
+    ):
+        self.beam, self.fits, self.stretched = beam, fits, stretched or []
         self.questions: list[dict[str, Any]] = []
         self._answer: Any = None
 
@@ -98,6 +120,8 @@ class _Server:
         self.questions.append(question)
         if "beam" in question:
             self._answer = self.beam
+        elif "stretch" in question:
+            self._answer = self.stretched
         else:
             self._answer = None if self.fits is None else [self.fits.get(t, -9.0) for t in question["score"]]
         return True
@@ -197,7 +221,22 @@ def test_the_phone_loop_decides_only_when_whisper_cannot_judge(vocabulary):
 def test_only_candidates_the_reader_reads_are_scored():
     server = _Server([["Sing me a song.", -0.4], ["Bring me the mug.", -0.6]], {})
     Judging(server, b"\0\0", None, _reads).finish(_first("the mug", False), ["bring me a mug"])
-    assert server.questions[-1] == {"score": ["bring me a mug", "bring me the mug"]}
+    assert server.questions[1] == {"score": ["bring me a mug", "bring me the mug"]}
+
+
+def test_other_paces_are_heard_only_when_pocketsphinx_does_not_fit_and_their_best_is_taken():
+    stretched = [["Bring me the mug.", -0.5], ["Bring me the lemon.", -0.7]]
+    kept = _Server([["Bring me the mud.", -0.9]], {"bring me a mug": -1.0}, stretched)
+    judged = Judging(kept, b"\0\0", None, _reads).finish(_first("bring me a mug", True), [])
+    assert judged is not None and judged.text == "bring me a mug"
+    assert not any("stretch" in q for q in kept.questions)  # pocketsphinx's fits: nothing more is asked
+    server = _Server(
+        [["Bring me the mud.", -0.9]], {"bring me a mug": -2.5, "bring me the mug": -0.8}, stretched
+    )
+    judged = Judging(server, b"\0\0", None, _reads).finish(_first("bring me a mug", True), [])
+    assert judged is not None and judged.text == "bring me the mug" and judged.in_grammar
+    assert server.questions[2] == {"stretch": list(STRETCH)}
+    assert server.questions[3] == {"score": ["bring me the mug", "bring me the lemon"]}  # only the new ones
 
 
 @pytest.fixture(scope="module")
@@ -218,6 +257,29 @@ def test_commands_pocketsphinx_refuses_in_unheard_voices_are_judged_right(
 ):
     with NgramRecognizer(vocabulary, second_opinion=False) as alone:
         assert not alone.recognize(recording).in_grammar  # pocketsphinx alone refuses it
+    result = understand_transcript(recognizer.recognize(recording), vocabulary)
+    assert result.accepted and [f.to_dict() for f in result.frames] == frames
+
+
+#: development recordings Whisper mishears as said and hears right a little slower or faster
+STRETCHED = [
+    ("people3_081.wav", [{"frame": "MOTION", "goal": "dining_room"}]),  # "er go to the dinning room"
+    (
+        "people3_019.wav",
+        [{"frame": "OPERATING", "device": "all_lights", "state": "on"}],
+    ),  # "turn on all the lights"
+]
+
+
+@pytest.mark.parametrize(("name", "frames"), STRETCHED, ids=[s[0] for s in STRETCHED])
+def test_a_command_whisper_mishears_is_heard_right_at_another_pace(
+    recognizer, vocabulary, monkeypatch, name, frames
+):
+    recording = load_audio(FIXTURES / "speech_people3" / "dev" / name)
+    monkeypatch.setattr(judging, "STRETCH", ())
+    before = understand_transcript(recognizer.recognize(recording), vocabulary)
+    assert [f.to_dict() for f in before.frames] != frames  # at its own pace: wrong, or refused
+    monkeypatch.undo()
     result = understand_transcript(recognizer.recognize(recording), vocabulary)
     assert result.accepted and [f.to_dict() for f in result.frames] == frames
 
