@@ -44,7 +44,8 @@ never tuned on, ``tests/fixtures/language/people21/accessible_flat.yaml``) the r
 * a thing that "would be lovely" (nice, great, wonderful) is asked for ("a glass of water would be lovely");
 * a one-word lexicon phrase that ends the name of another thing of the same type is left out
   (``shortnames.own_phrases``): the ERL lexicon's "blinds" for ``bedroom_blinds`` is no name of the accessible
-  flat's bedroom blinds alone, so "close the blinds" there is every blind, as plurals are.
+  flat's bedroom blinds alone, so "close the blinds" there is every blind, as plurals are;
+* "a third" and "two thirds" are levels (33 and 67 percent; commands.yaml levels), not the number two.
 """
 
 from __future__ import annotations
@@ -463,3 +464,21 @@ def test_a_borrowed_lexicon_word_that_ends_other_names_is_not_one_things(flat: V
     assert frames_read(flat, "close the bedroom blinds", "dawn") == [
         {"frame": "OPERATING", "device": "bedroom_blinds", "state": "closed"}
     ]
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        ("set the floor lamp to a third", [{"frame": "OPERATING", "device": "floor_lamp", "state": "33"}]),
+        (
+            "put the bedside lamp at two thirds",
+            [{"frame": "OPERATING", "device": "bedside_lamp", "state": "67"}],
+        ),
+        (
+            "open the study blind a third of the way",
+            [{"frame": "OPERATING", "device": "study_blind", "state": "33"}],
+        ),
+    ],
+)
+def test_thirds_are_levels(flat: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
+    assert frames_read(flat, text, "hamish") == frames
