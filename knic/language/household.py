@@ -55,7 +55,8 @@ _NOT_ENDING_A_THING = frozenset(
 
 
 def words_tidied(tokens: list[str]) -> list[str]:
-    """The words without hesitations, with "you're" spelled out after a word of time. A hesitation between a
+    """The words without hesitations, with "you're" spelled out after a word of time and "me" said again for
+    "my" ("bring me me glasses", as said in Britain and Ireland). A hesitation between a
     thing said after an article and the same article said again ("get me a cup of tea er a cup") is the
     speaker correcting the thing: it is read as "i mean"."""
     out: list[str] = []
@@ -73,6 +74,8 @@ def words_tidied(tokens: list[str]) -> list[str]:
         if token in _CONTRACTED and out and out[-1] in _TIME_WORDS:
             out += _CONTRACTED[token]
             continue
+        if token == "me" and out[-1:] == ["me"] and i + 1 < len(tokens):  # "fetch me me slippers": my
+            token = "my"
         out.append(token)
     return out
 

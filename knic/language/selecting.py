@@ -251,9 +251,10 @@ def _left_out(
 
 def _heads(phrase: str) -> set[str]:
     """The words that say what kind of thing a name names: its last ("orange juice": juice; a "tea towel" is
-    no tea), and before a container what it holds ("water bottle": water)."""
+    no tea), and before a container of a two-word name what it holds ("water bottle": water; a "hot water
+    bottle" holds no drink)."""
     words = phrase.split()
-    return {words[-1], *(words[-2:-1] if words[-1] in containers() else ())}
+    return {words[-1], *(words[-2:-1] if words[-1] in containers() and len(words) == 2 else ())}
 
 
 def _kind(words: list[str], vocabulary: Vocabulary) -> list[str]:

@@ -136,8 +136,8 @@ def containers() -> frozenset[str]:
 
 
 def _content(words: list[str], containers: frozenset[str]) -> list[str]:
-    """What a container named by it holds ("water bottle" -> "water")."""
-    return [" ".join(words[:-1])] if len(words) >= 2 and words[-1] in containers else []
+    """What a container named by it holds ("water bottle" -> "water"; a "hot water bottle" holds no water)."""
+    return [words[0]] if len(words) == 2 and words[-1] in containers else []
 
 
 def _ordinal(words: list[str]) -> list[str]:

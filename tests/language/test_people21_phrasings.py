@@ -45,7 +45,10 @@ never tuned on, ``tests/fixtures/language/people21/accessible_flat.yaml``) the r
 * a one-word lexicon phrase that ends the name of another thing of the same type is left out
   (``shortnames.own_phrases``): the ERL lexicon's "blinds" for ``bedroom_blinds`` is no name of the accessible
   flat's bedroom blinds alone, so "close the blinds" there is every blind, as plurals are;
-* "a third" and "two thirds" are levels (33 and 67 percent; commands.yaml levels), not the number two.
+* "a third" and "two thirds" are levels (33 and 67 percent; commands.yaml levels), not the number two;
+* "me" said again for "my" ("fetch me me slippers");
+* only a two-word name ending in a container says what it holds ("water bottle": some water): a "hot water
+  bottle" is no drink.
 """
 
 from __future__ import annotations
@@ -482,3 +485,18 @@ def test_a_borrowed_lexicon_word_that_ends_other_names_is_not_one_things(flat: V
 )
 def test_thirds_are_levels(flat: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
     assert frames_read(flat, text, "hamish") == frames
+
+
+def test_me_said_again_is_my(flat: Vocabulary) -> None:
+    assert frames_read(flat, "robot could ya bring me me glasses", "morag") == [
+        {"frame": "BRINGING", "theme": "glasses", "beneficiary": "me"}
+    ]
+
+
+def test_a_hot_water_bottle_is_no_drink(flat: Vocabulary) -> None:
+    assert_asked(flat, "could you bring me a drink", "orange juice", "isla")
+    result = understand("could you bring me a drink", flat, speaker="isla")
+    assert "hot water bottle" not in result.reason
+    assert frames_read(flat, "fetch the hot water bottle", "isla") == [
+        {"frame": "BRINGING", "theme": "hot_water_bottle", "beneficiary": "me"}
+    ]
