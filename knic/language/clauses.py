@@ -488,7 +488,15 @@ def add_to_clause(
             or nxt.kind in ("join", "prep", "verb")
             or (nxt.kind == "det" and clause.verb is not None)
         )
-        if expecting and ended:
+        # "give bethan the plasters": a word between a verb that gives and a thing is whom it is for
+        given_to = (
+            clause.verb is not None
+            and "BRINGING" in clause.verb.frames
+            and not (clause.args or clause.pending)
+            and nxt is not None
+            and nxt.kind == "det"
+        )
+        if (expecting and ended) or given_to:
             # the whole name not known ("the front door is open": 'front door'), not its last word
             phrase = [*clause.pending, chunk.text]
             while len(phrase) > 1 and phrase[-1] in _LINKING:

@@ -13,7 +13,25 @@ from knic.language.vocabulary import Vocabulary
 
 def learners_read(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
     """The chunks with the orders of this module put as a command says them."""
-    return verb_last_moved(own_going_dropped(room_told(it_me(subject_dropped(chunks)), vocabulary)))
+    said = subject_dropped(appositions_dropped(chunks, vocabulary))
+    return verb_last_moved(own_going_dropped(room_told(it_me(said), vocabulary)))
+
+
+def appositions_dropped(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
+    """ "find tomasz the handyman", "give it to bethan the nurse": what a person is, said after their name as
+    "the" and a word the world has no name for, only says who they are."""
+    out: list[Chunk] = []
+    i = 0
+    while i < len(chunks):
+        chunk = chunks[i]
+        out.append(chunk)
+        i += 1
+        person = chunk.kind == "entity" and any(vocabulary.is_subtype(t.type, "person") for t in chunk.terms)
+        if person and i + 1 < len(chunks) and chunks[i].text == "the" and chunks[i + 1].kind == "unknown":
+            end = i + 2
+            if end == len(chunks) or chunks[end].kind in ("prep", "verb", "join"):
+                i = end
+    return out
 
 
 def subject_dropped(chunks: list[Chunk]) -> list[Chunk]:

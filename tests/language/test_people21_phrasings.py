@@ -48,7 +48,11 @@ never tuned on, ``tests/fixtures/language/people21/accessible_flat.yaml``) the r
 * "a third" and "two thirds" are levels (33 and 67 percent; commands.yaml levels), not the number two;
 * "me" said again for "my" ("fetch me me slippers");
 * only a two-word name ending in a container says what it holds ("water bottle": some water): a "hot water
-  bottle" is no drink.
+  bottle" is no drink;
+* what a person is, said after their name as "the" and a word the world has no name for, only says who they
+  are ("find tomasz the handyman");
+* a word between a verb that gives and a thing is whom it is for: one the world lacks is refused by name
+  ("give bethan the plasters" where there is no bethan), not dropped to give the thing to the speaker.
 """
 
 from __future__ import annotations
@@ -500,3 +504,28 @@ def test_a_hot_water_bottle_is_no_drink(flat: Vocabulary) -> None:
     assert frames_read(flat, "fetch the hot water bottle", "isla") == [
         {"frame": "BRINGING", "theme": "hot_water_bottle", "beneficiary": "me"}
     ]
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        ("find tomasz the handyman", [{"frame": "SEARCHING", "theme": "tomasz"}]),
+        (
+            "give the toolbox to tomasz the handyman",
+            [{"frame": "BRINGING", "theme": "toolbox", "beneficiary": "tomasz"}],
+        ),
+    ],
+)
+def test_what_a_person_is_said_after_the_name(
+    flat: Vocabulary, text: str, frames: list[dict[str, str]]
+) -> None:
+    assert frames_read(flat, text, "hamish") == frames
+
+
+@pytest.mark.parametrize(
+    ("text", "word"), [("give bethan the plasters", "bethan"), ("bring grandad his glasses", "grandad")]
+)
+def test_a_recipient_the_world_lacks_is_named(flat: Vocabulary, text: str, word: str) -> None:
+    result = understand(text, flat, speaker="dawn")
+    assert not result.accepted
+    assert f"no '{word}'" in result.reason
