@@ -54,12 +54,34 @@ _NOT_ENDING_A_THING = frozenset(
 )
 
 
+#: what a thing did that asks where it is now ("where did my phone go", "where has the hairbrush gone")
+_GONE = ("go", "gone", "went", "disappeared", "vanished")
+
+
+def gone_asked(tokens: list[str]) -> list[str]:
+    """ "where did my phone go", "where has the hairbrush gone", "where'd the keys go": where the thing is."""
+    for i, token in enumerate(tokens[:-2]):
+        if token not in ("where", "where'd") or (
+            token == "where" and tokens[i + 1] not in ("did", "has", "have")
+        ):
+            continue
+        start = i + 1 if token == "where'd" else i + 2
+        if tokens[start] in ("you", "i", "we", "they", "he", "she"):  # "where did you go": no thing asked for
+            continue
+        for end in range(start + 1, min(start + 6, len(tokens))):
+            if tokens[end] in _GONE:
+                after = end + 1 + (tokens[end + 1 : end + 2] == ["to"])
+                return [*tokens[:i], "where", "is", *tokens[start:end], *tokens[after:]]
+    return tokens
+
+
 def words_tidied(tokens: list[str]) -> list[str]:
     """The words without hesitations, with "you're" spelled out after a word of time and "me" said again for
     "my" ("bring me me glasses", as said in Britain and Ireland). A hesitation between a
     thing said after an article and the same article said again ("get me a cup of tea er a cup") is the
     speaker correcting the thing: it is read as "i mean"."""
     out: list[str] = []
+    tokens = gone_asked(tokens)
     for i, token in enumerate(tokens):
         if token in HESITATIONS:
             nxt = tokens[i + 1] if i + 1 < len(tokens) else ""

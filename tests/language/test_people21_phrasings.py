@@ -52,7 +52,8 @@ never tuned on, ``tests/fixtures/language/people21/accessible_flat.yaml``) the r
 * what a person is, said after their name as "the" and a word the world has no name for, only says who they
   are ("find tomasz the handyman");
 * a word between a verb that gives and a thing is whom it is for: one the world lacks is refused by name
-  ("give bethan the plasters" where there is no bethan), not dropped to give the thing to the speaker.
+  ("give bethan the plasters" where there is no bethan), not dropped to give the thing to the speaker;
+* "where did my glasses go", "where has the hairbrush gone", "where'd the keys go" ask where the thing is.
 """
 
 from __future__ import annotations
@@ -529,3 +530,15 @@ def test_a_recipient_the_world_lacks_is_named(flat: Vocabulary, text: str, word:
     result = understand(text, flat, speaker="dawn")
     assert not result.accepted
     assert f"no '{word}'" in result.reason
+
+
+@pytest.mark.parametrize(
+    ("text", "theme"),
+    [
+        ("where did the hairbrush go", "hairbrush"),
+        ("where has the hairbrush gone", "hairbrush"),
+        ("where'd the house keys go", "house_keys"),
+    ],
+)
+def test_where_a_thing_went_is_a_search(flat: Vocabulary, text: str, theme: str) -> None:
+    assert frames_read(flat, text, "morag") == [{"frame": "SEARCHING", "theme": theme}]
