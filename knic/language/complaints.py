@@ -1,6 +1,7 @@
 """A complaint about the light, read as the request it makes.
 
-"It's far too dark in the study" (or "on the landing") asks for the study's lights: the whole command is read
+"It's far too dark in the study" (or "on the landing"; "pitch black", "gloomy"; "I can't see a thing in the
+study", "the study is too dark") asks for the study's lights: the whole command is read
 as "turn on the lights in the study" (the room's light, its group of lights, or a question which). A complaint
 about "here" or "there" is left as said (where that is is not known), and so is one said beside a request
 ("it's dark in the bedroom, turn on the left lamp": the request says what to do, the complaint is talk).
@@ -21,9 +22,16 @@ _DEGREE = (
     r"(?:(?:so|too|far|way|very|really|rather|quite|pretty|a bit|a little|awfully|terribly|getting|ever so"
     r"|pitch|a tad|dreadfully|horribly)\s+)*"
 )
+_PLACE = r"(?P<place>(?!(?:here|there)\b)(?:(?:the|my|our|your)\s+)?[a-z']+(?:\s+[a-z']+){0,2}?)"
 _DARK = re.compile(
-    rf"^{_OPENING}(?:it's|its|it is)\s+{_DEGREE}dark\s+(?:in|inside|on|out on|up on|down in)\s+"
-    r"(?P<place>(?!(?:here|there)\b)(?:(?:the|my|our|your)\s+)?[a-z']+(?:\s+[a-z']+){0,2}?)"
+    rf"^{_OPENING}(?:(?:it's|its|it is)\s+{_DEGREE}(?:dark|black|gloomy|dim)"
+    r"|i can't see|i cannot see|i can not see|i can't see a thing|i can't see anything)"
+    rf"\s+(?:in|inside|on|out on|up on|down in)\s+{_PLACE}"
+    r"(?:\s+(?:please|now|tonight|today))?$"
+)
+#: "the living room is too dark": the room said first
+_DARK_ROOM = re.compile(
+    rf"^{_OPENING}{_PLACE}(?:\s+is|'s)\s+{_DEGREE}(?:dark|gloomy|pitch black)"
     r"(?:\s+(?:please|now|tonight|today))?$"
 )
 #: a stop or comma inside the text: more was said than the complaint
@@ -49,7 +57,7 @@ def dark_read(text: str) -> str:
     unchanged."""
     if _INNER_BREAK.search(text):
         return _said_beside(text)
-    match = _DARK.match(normalize(text))
+    match = _DARK.match(normalize(text)) or _DARK_ROOM.match(normalize(text))
     return f"turn on the lights in {match.group('place')}" if match else text
 
 

@@ -53,7 +53,10 @@ never tuned on, ``tests/fixtures/language/people21/accessible_flat.yaml``) the r
   are ("find tomasz the handyman");
 * a word between a verb that gives and a thing is whom it is for: one the world lacks is refused by name
   ("give bethan the plasters" where there is no bethan), not dropped to give the thing to the speaker;
-* "where did my glasses go", "where has the hairbrush gone", "where'd the keys go" ask where the thing is.
+* "where did my glasses go", "where has the hairbrush gone", "where'd the keys go" ask where the thing is;
+* a dark room complained of otherwise than "it's dark in ..." (``knic.language.complaints``): "it's pitch
+  black in the hall", "it's gloomy in the bedroom", "I can't see a thing in the study", "the living room is
+  too dark", "the bedroom's dark" ask for its lights.
 """
 
 from __future__ import annotations
@@ -542,3 +545,17 @@ def test_a_recipient_the_world_lacks_is_named(flat: Vocabulary, text: str, word:
 )
 def test_where_a_thing_went_is_a_search(flat: Vocabulary, text: str, theme: str) -> None:
     assert frames_read(flat, text, "morag") == [{"frame": "SEARCHING", "theme": theme}]
+
+
+@pytest.mark.parametrize(
+    ("text", "device"),
+    [
+        ("it's pitch black in the hall", "hall_light"),
+        ("it's gloomy in the bedroom", "bedroom_light"),
+        ("I can't see a thing in the study", "study_light"),
+        ("the living room is too dark", "living_room_light"),
+        ("the bedroom's dark", "bedroom_light"),
+    ],
+)
+def test_a_dark_room_said_otherwise(flat: Vocabulary, text: str, device: str) -> None:
+    assert frames_read(flat, text, "morag") == [{"frame": "OPERATING", "device": device, "state": "on"}]
