@@ -426,6 +426,9 @@ def _operating(reader: Resolver, clause: Clause, previous: Frames, groups: list[
     lights = all(reader.vocabulary.is_subtype(reader.vocabulary.type_of(m) or "", "light") for m in members)
     if state in _LIGHT_STATES and lights:
         state = _LIGHT_STATES[state]  # "open the left light": switch it on
+    blinds = all(reader.vocabulary.is_subtype(reader.vocabulary.type_of(m) or "", "blinds") for m in members)
+    if state in _BLINDS_STATES and blinds and members:
+        state = _BLINDS_STATES[state]  # "turn the blinds off": close them
     # "the lights please"; "dim the lounge", "set the dimmer": how far
     if state is None and (clause.verb is None or not lights):
         _ask_level(reader.vocabulary, list(dict.fromkeys(devices)))
@@ -437,6 +440,8 @@ def _operating(reader: Resolver, clause: Clause, previous: Frames, groups: list[
 
 #: a light "opened" or "closed" is switched on or off (as several languages say it)
 _LIGHT_STATES = {"open": "on", "closed": "off"}
+#: blinds switched on or off are opened or closed (the level each means)
+_BLINDS_STATES = {"on": "open", "off": "closed"}
 
 
 def _implicit(

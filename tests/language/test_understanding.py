@@ -307,6 +307,8 @@ PHRASED = [
         "go to the bedroom and switch the lights off there",
         ["MOTION goal=bedroom", "OPERATING device=bedroom_lights state=off"],
     ),
+    ("turn the blinds off", ["OPERATING device=bedroom_blinds state=closed"]),  # blinds open and close
+    ("switch the blinds on", ["OPERATING device=bedroom_blinds state=open"]),
     ("go with tracy to the kitchen", ["ACCOMPANYING theme=tracy goal=kitchen"]),
     ("find the cup, it should be in the kitchen", ["SEARCHING theme=cup ground=kitchen"]),
     ("put the glasses on the bedside table next to the bed", ["PLACING theme=glasses goal=bedside_table"]),
