@@ -123,7 +123,8 @@ def _carry(
             roles["goal"] = reader.resolve(arg, ("room", "furniture"), previous, groups)[0]
             for theme in themes:
                 goals.setdefault(theme, roles["goal"])
-        elif arg.prep is None:
+        elif arg.prep is None or (arg.prep == "companion" and themes and _names_items(reader, arg)):
+            # "bring me the stamps along with the envelopes": one more thing
             themes += reader.resolve(arg, ("item",), previous, groups)
         elif arg.prep == "beneficiary":
             roles["beneficiary"] = reader.resolve(arg, ("person",), previous, groups)[0]
@@ -307,6 +308,12 @@ def _landmarks_passed(reader: Resolver, args: list[Arg], *, beside: bool) -> Non
             )
         ):
             arg.consumed = True
+
+
+def _names_items(reader: Resolver, arg: Arg) -> bool:
+    """Whether an argument names things to carry (and nothing else)."""
+    terms = arg.chunk.terms
+    return arg.chunk.kind == "entity" and bool(terms) and all(reader.is_a(t, "item") for t in terms)
 
 
 def _names_only_places(reader: Resolver, arg: Arg) -> bool:

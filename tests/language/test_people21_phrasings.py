@@ -56,7 +56,9 @@ never tuned on, ``tests/fixtures/language/people21/accessible_flat.yaml``) the r
 * "where did my glasses go", "where has the hairbrush gone", "where'd the keys go" ask where the thing is;
 * a dark room complained of otherwise than "it's dark in ..." (``knic.language.complaints``): "it's pitch
   black in the hall", "it's gloomy in the bedroom", "I can't see a thing in the study", "the living room is
-  too dark", "the bedroom's dark" ask for its lights.
+  too dark", "the bedroom's dark" ask for its lights;
+* a thing said "along with", "together with" or "as well as" another thing carried or put is carried or put
+  too ("bring me the stamps along with the envelopes"); a person said so still goes along.
 """
 
 from __future__ import annotations
@@ -559,3 +561,34 @@ def test_where_a_thing_went_is_a_search(flat: Vocabulary, text: str, theme: str)
 )
 def test_a_dark_room_said_otherwise(flat: Vocabulary, text: str, device: str) -> None:
     assert frames_read(flat, text, "morag") == [{"frame": "OPERATING", "device": device, "state": "on"}]
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        (
+            "bring me the stamps along with the envelopes",
+            [
+                {"frame": "BRINGING", "theme": "stamps", "beneficiary": "me"},
+                {"frame": "BRINGING", "theme": "envelopes", "beneficiary": "me"},
+            ],
+        ),
+        (
+            "bring me the milk as well as the orange juice",
+            [
+                {"frame": "BRINGING", "theme": "milk", "beneficiary": "me"},
+                {"frame": "BRINGING", "theme": "orange_juice", "beneficiary": "me"},
+            ],
+        ),
+        (
+            "put the socks in the wardrobe together with the slippers",
+            [
+                {"frame": "PLACING", "theme": "socks", "goal": "wardrobe"},
+                {"frame": "PLACING", "theme": "slippers", "goal": "wardrobe"},
+            ],
+        ),
+        ("go to the kitchen with morag", [{"frame": "ACCOMPANYING", "theme": "morag", "goal": "kitchen"}]),
+    ],
+)
+def test_things_said_along_with_others(flat: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
+    assert frames_read(flat, text, "hamish") == frames
