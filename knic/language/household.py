@@ -26,8 +26,9 @@ sentence, :func:`other_one` and :func:`said_around` on the chunks, between the p
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
+from dataclasses import replace
 
-from knic.language.chunks import Chunk, Chunker, past_determiners
+from knic.language.chunks import Chunk, Chunker, past_determiners, singulars
 from knic.language.vocabulary import Vocabulary
 
 #: hesitations, dropped even inside a phrase (they are fillers wherever they stand)
@@ -111,10 +112,31 @@ def said_around(chunks: list[Chunk], vocabulary: Vocabulary, chunker: Chunker) -
 
     chunks = _state_said(_own_room(_restated_before(chunks, is_a), vocabulary), is_a)
     chunks = _doings(_person_asked(chunks, is_a), is_a)
-    chunks = _left_by(chunks, is_a)
-    chunks = _placed_on(chunks, is_a)
+    chunks = _placed_on(_left_by(_one_of(chunks), is_a), is_a)
     put, take = (chunker.chunks([verb])[0] for verb in ("put", "take"))
     return _taken_along(_should_go(chunks, is_a, put), is_a, take)
+
+
+def _one_of(chunks: list[Chunk]) -> list[Chunk]:
+    """ "grab one of the mugs": one thing of those the plural names, said as "the mug" (asked which where
+    several fit), not all of them."""
+    out = list(chunks)
+    for i in range(len(out) - 3, -1, -1):
+        if len(out[i : i + 4]) < 4:
+            continue
+        one, of, the, things = out[i : i + 4]
+        if (one.text, of.text, the.kind, things.kind, things.role) == (
+            "one",
+            "of",
+            "det",
+            "entity",
+            "plural",
+        ):
+            *_, last = things.text.split()
+            one_said = (singulars(last) or [last[:-1] if last.endswith("s") else last])[0]
+            text = " ".join([*things.text.split()[:-1], one_said])
+            out[i : i + 4] = [the, replace(things, text=text, role="")]
+    return out
 
 
 def _next_verb(chunks: Sequence[Chunk], start: int) -> int | None:

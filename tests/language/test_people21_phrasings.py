@@ -58,7 +58,8 @@ never tuned on, ``tests/fixtures/language/people21/accessible_flat.yaml``) the r
   black in the hall", "it's gloomy in the bedroom", "I can't see a thing in the study", "the living room is
   too dark", "the bedroom's dark" ask for its lights;
 * a thing said "along with", "together with" or "as well as" another thing carried or put is carried or put
-  too ("bring me the stamps along with the envelopes"); a person said so still goes along.
+  too ("bring me the stamps along with the envelopes"); a person said so still goes along;
+* "one of the mugs" is one mug, asked which where several fit, not every mug.
 """
 
 from __future__ import annotations
@@ -592,3 +593,12 @@ def test_a_dark_room_said_otherwise(flat: Vocabulary, text: str, device: str) ->
 )
 def test_things_said_along_with_others(flat: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
     assert frames_read(flat, text, "hamish") == frames
+
+
+@pytest.mark.parametrize(
+    ("text", "word"), [("grab one of the mugs", "which mug"), ("turn on one of the lamps", "which lamp")]
+)
+def test_one_of_the_things_is_one(flat: Vocabulary, text: str, word: str) -> None:
+    result = understand(text, flat, speaker="hamish")
+    assert not result.accepted
+    assert word in result.reason
