@@ -36,13 +36,14 @@ from typing import TYPE_CHECKING, Any
 from core.errors import LanguageError
 from knic.language.logmel import SAMPLE_RATE, log_mel
 from knic.language.modelfolder import MODEL_ENV, MODEL_PACKAGE, model_dir
+from knic.language.prompt import MAX_PROMPT_TOKENS
+from knic.language.prompt import world_prompt as world_prompt  # the name its users import from here
 from knic.language.vocabulary import normalize
 
 if TYPE_CHECKING:
     import numpy as np
     import numpy.typing as npt
 
-    from knic.language.vocabulary import Vocabulary
 
 #: seconds of audio (the utterance, then silence) the encoder sees; shorter windows made the decoder repeat
 #: a short command over and over (6 s: 3 of 12 dev utterances; 10 s: none)
@@ -114,7 +115,8 @@ class WhisperPass:
             raise LanguageError(f"cannot load the Whisper model in {self.folder}: {exc}") from exc
         special = self._tokenizer.token_to_id
         self._end = special("<|endoftext|>")
-        prefix = [special("<|startofprev|>"), *self._encode(self.prompt)] if self.prompt else []
+        prompt = self._encode(self.prompt)[:MAX_PROMPT_TOKENS]
+        prefix = [special("<|startofprev|>"), *prompt] if self.prompt else []
         self._start = [*prefix, special("<|startoftranscript|>"), special("<|notimestamps|>")]
 
     def _encode(self, text: str) -> list[int]:
@@ -231,25 +233,6 @@ def unrepeated(text: str) -> str:
         if plain[:size] == plain[size : 2 * size] and set(plain[size:]) <= set(plain[:size]):
             return " ".join(words[:size])
     return text
-
-
-def world_prompt(vocabulary: Vocabulary) -> str:
-    """The world's names as the decoder's previous text: the people (capitalised), then rooms, furniture,
-    objects and devices, each by its first name, in the world's order; level names and the robot left out."""
-    people: list[str] = []
-    things: list[str] = []
-    for instance in vocabulary.instances:
-        kind = vocabulary.type_of(instance) or ""
-        if instance == vocabulary.robot or not kind or vocabulary.is_subtype(kind, "level"):
-            continue
-        phrase = vocabulary.phrase_of(instance)
-        if not phrase or phrase in people or phrase in things:
-            continue
-        if vocabulary.is_subtype(kind, "person"):
-            people.append(" ".join(word.capitalize() for word in phrase.split()))
-        else:
-            things.append(phrase)
-    return ", ".join(people) + (". " if people else "") + ", ".join(things) + ("." if things else "")
 
 
 #: Mean log-probability per token above which Whisper is sure of its transcript. Set on the five spoken

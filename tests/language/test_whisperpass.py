@@ -75,6 +75,24 @@ def test_the_prompt_names_people_and_things_but_not_the_robot_or_levels(vocabula
     assert "r2d2" not in prompt.lower() and "rtwodtwo" not in prompt and "fifty" not in prompt
 
 
+def test_a_large_world_tells_whisper_what_its_decoder_has_room_for(vocabulary):
+    from knic.cli.goal import world_vocabulary
+    from knic.language.prompt import MAX_PROMPT_CHARS
+    from knic.language.world import DEFAULT_DOMAIN
+
+    farmhouse = FIXTURES / "language" / "people20" / "farmhouse.yaml"
+    prompt = world_prompt(world_vocabulary(str(farmhouse), DEFAULT_DOMAIN, None)[0])
+    assert len(prompt) <= MAX_PROMPT_CHARS
+    assert world_prompt(vocabulary).endswith("door bell, doorbell.")  # the apartment's names all fit
+    assert prompt.startswith("Ffion, Dai, Mary Ann, Rhys, Jean Paul, Mary Beth, Bethan.")
+    assert "scullery" in prompt and "attic room" in prompt and "welly boots" in prompt  # rooms, then objects
+    assert "skylight blind" not in prompt  # a device, left for last
+    heard = WhisperPass(prompt).hear(load_audio(DIMMER))  # 550 tokens in full: every hearing failed
+    assert heard.text and heard.mean_log_prob <= 0.0
+    wordy = WhisperPass("kitchen, " * 400)  # however long a prompt is given, the decoder gets what fits
+    assert wordy.hear(load_audio(DIMMER)).text
+
+
 def test_whisper_hears_a_command(whisper):
     heard = whisper.hear(load_audio(DIMMER))
     assert heard.text.lower().rstrip(".") == "put the dimmer at 50"
