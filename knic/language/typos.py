@@ -163,9 +163,19 @@ class Speller:
                     meant = (
                         tuple(w for w in meant if self._kind_of(f"{w} {tokens[i + 1]}") is not None) or meant
                     )
+                if len(meant) > 1 and out:  # "can i hav my teddy": have (a phrase with "can i"), not has
+                    meant = tuple(w for w in meant if self._ends_phrase(out, w)) or meant
+                if len(meant) > 1 and not out and i + 1 < len(tokens):  # "fnd my glasses": find, not and
+                    meant = tuple(w for w in meant if self._kind_of(w) == "verb") or meant
                 out.append(meant[0] if len(meant) == 1 else token)
             i += 1
         return out
+
+    def _ends_phrase(self, before: Sequence[str], word: str) -> bool:
+        """Whether ``word`` ends a phrase of the language begun by the one or two words before it."""
+        return any(
+            self._kind_of(" ".join([*before[-n:], word])) is not None for n in (1, 2) if len(before) >= n
+        )
 
     def names_for(self, word: str) -> tuple[str, ...]:
         """The names a word after a determiner may be a typo of, when it is one of several ("cug")."""

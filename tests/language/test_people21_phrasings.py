@@ -59,7 +59,10 @@ never tuned on, ``tests/fixtures/language/people21/accessible_flat.yaml``) the r
   too dark", "the bedroom's dark" ask for its lights;
 * a thing said "along with", "together with" or "as well as" another thing carried or put is carried or put
   too ("bring me the stamps along with the envelopes"); a person said so still goes along;
-* "one of the mugs" is one mug, asked which where several fit, not every mug.
+* "one of the mugs" is one mug, asked which where several fit, not every mug;
+* of several words a typo is one edit from, the one that ends a phrase of the language with the words before
+  it ("can i hav my teddy": have, so no "can" of the watering can), and a command's first word a verb ("fnd my
+  glasses": find, not and).
 """
 
 from __future__ import annotations
@@ -602,3 +605,14 @@ def test_one_of_the_things_is_one(flat: Vocabulary, text: str, word: str) -> Non
     result = understand(text, flat, speaker="hamish")
     assert not result.accepted
     assert word in result.reason
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        ("can i hav my teddy pleese", [{"frame": "BRINGING", "theme": "teddy", "beneficiary": "me"}]),
+        ("fnd my glasses", [{"frame": "SEARCHING", "theme": "glasses"}]),
+    ],
+)
+def test_typos_settled_by_the_words_before(flat: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
+    assert frames_read(flat, text, "isla") == frames
