@@ -177,7 +177,8 @@ def _carry(
         thing = reader.vocabulary.phrase_of(themes[0])
         raise AmbiguityError(f"where should I put the {thing}: on which piece of furniture or in which room?")
     if kind == "PLACING" and "goal" not in roles:
-        raise LanguageError(f"{_verb(clause)} the {themes[0]} where? I heard no place")
+        thing = reader.vocabulary.phrase_of(themes[0])
+        raise LanguageError(f"{_verb(clause)} the {thing} where? I heard no place")
     if kind == "TAKING" and ("goal" in roles or "beneficiary" in roles):
         kind = "BRINGING"
     if clause.verb is not None and clause.verb.beneficiary == "me" and "goal" not in roles:

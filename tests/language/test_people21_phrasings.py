@@ -62,7 +62,9 @@ never tuned on, ``tests/fixtures/language/people21/accessible_flat.yaml``) the r
 * "one of the mugs" is one mug, asked which where several fit, not every mug;
 * of several words a typo is one edit from, the one that ends a phrase of the language with the words before
   it ("can i hav my teddy": have, so no "can" of the watering can), and a command's first word a verb ("fnd my
-  glasses": find, not and).
+  glasses": find, not and);
+* "send" a thing somewhere takes it there; "tidy" or "clear" a thing away puts it somewhere (asked where when
+  not said); a place asked for names the thing as said ("the fruit bowl", not its symbol).
 """
 
 from __future__ import annotations
@@ -616,3 +618,17 @@ def test_one_of_the_things_is_one(flat: Vocabulary, text: str, word: str) -> Non
 )
 def test_typos_settled_by_the_words_before(flat: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
     assert frames_read(flat, text, "isla") == frames
+
+
+def test_send_tidy_and_clear() -> None:
+    farm = _world(FARMHOUSE)
+    assert frames_read(farm, "send the letters up to the office", "ffion") == [
+        {"frame": "BRINGING", "theme": "letters", "goal": "farm_office"}
+    ]
+    assert frames_read(farm, "tidy the jigsaw onto the card table", "ffion") == [
+        {"frame": "PLACING", "theme": "jigsaw", "goal": "card_table"}
+    ]
+    assert_asked(farm, "tidy the jigsaw away", "jigsaw", "ffion")
+    result = understand("clear the fruit bowl off the kitchen table", farm, speaker="ffion")
+    assert not result.accepted
+    assert "the fruit bowl where" in result.reason
