@@ -64,7 +64,8 @@ never tuned on, ``tests/fixtures/language/people21/accessible_flat.yaml``) the r
   it ("can i hav my teddy": have, so no "can" of the watering can), and a command's first word a verb ("fnd my
   glasses": find, not and);
 * "send" a thing somewhere takes it there; "tidy" or "clear" a thing away puts it somewhere (asked where when
-  not said); a place asked for names the thing as said ("the fruit bowl", not its symbol).
+  not said); a place asked for names the thing as said ("the fruit bowl", not its symbol);
+* "remind me to take my pills" asks for a reminder, which the robot cannot give: no request to bring them.
 """
 
 from __future__ import annotations
@@ -632,3 +633,9 @@ def test_send_tidy_and_clear() -> None:
     result = understand("clear the fruit bowl off the kitchen table", farm, speaker="ffion")
     assert not result.accepted
     assert "the fruit bowl where" in result.reason
+
+
+def test_a_reminder_is_no_request_to_bring(flat: Vocabulary) -> None:
+    result = understand("remind me to take my pills", flat, speaker="morag")
+    assert not result.accepted
+    assert "no request" in result.reason
