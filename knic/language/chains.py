@@ -146,7 +146,13 @@ def chain(
     Raises:
         AmbiguityError: where to is not said for a frame that needs it (the message asks).
     """
-    out = list(frames)
+    # "come and find me in the study": the speaker is there, so go there
+    out = [
+        CommandFrame("MOTION", {"goal": f.args["ground"]})
+        if f.kind == "SEARCHING" and f.get("theme") == SPEAKER and f.get("ground")
+        else f
+        for f in frames
+    ]
     dropped: set[int] = set()
     waypoints: set[int] = set()
     for index, frame in enumerate(out):

@@ -65,7 +65,8 @@ never tuned on, ``tests/fixtures/language/people21/accessible_flat.yaml``) the r
   glasses": find, not and);
 * "send" a thing somewhere takes it there; "tidy" or "clear" a thing away puts it somewhere (asked where when
   not said); a place asked for names the thing as said ("the fruit bowl", not its symbol);
-* "remind me to take my pills" asks for a reminder, which the robot cannot give: no request to bring them.
+* "remind me to take my pills" asks for a reminder, which the robot cannot give: no request to bring them;
+* "come and find me in the study" and "meet me in the kitchen" go where the speaker is.
 """
 
 from __future__ import annotations
@@ -639,3 +640,15 @@ def test_a_reminder_is_no_request_to_bring(flat: Vocabulary) -> None:
     result = understand("remind me to take my pills", flat, speaker="morag")
     assert not result.accepted
     assert "no request" in result.reason
+
+
+@pytest.mark.parametrize(
+    ("text", "room"),
+    [
+        ("come and find me in the study", "study"),
+        ("meet me in the kitchen", "kitchen"),
+        ("come find me, I'm in the bedroom", "bedroom"),
+    ],
+)
+def test_find_me_somewhere_goes_there(flat: Vocabulary, text: str, room: str) -> None:
+    assert frames_read(flat, text, "hamish") == [{"frame": "MOTION", "goal": room}]
