@@ -193,9 +193,12 @@ def _possessive(words: list[str], i: int, person: str) -> bool:
 
 def called_so(terms: Sequence[Term], said: str, vocabulary: Vocabulary) -> tuple[Term, ...]:
     """Of several devices ``said`` names, those whose own name (not one only given) ends in its last word
-    (said as one: in it as one); all of them where none or all do."""
+    (said as one: in it as one); all of them where none or all do, or where the word is a plural ("the lights
+    in the study": its light and its desk lamp)."""
     word = said.split()[-1] if said.split() else ""
     devices = {t.symbol for t in terms if vocabulary.is_subtype(t.type, "device")}
+    if word.endswith("s") and not word.endswith("ss"):  # "the lights in the study": all of them
+        return tuple(terms)
     if len(devices) < 2 or len(devices) < len({t.symbol for t in terms}):
         return tuple(terms)
     own = {

@@ -55,7 +55,7 @@ never tuned on, ``tests/fixtures/language/people21/accessible_flat.yaml``) the r
   ("give bethan the plasters" where there is no bethan), not dropped to give the thing to the speaker;
 * "where did my glasses go", "where has the hairbrush gone", "where'd the keys go" ask where the thing is;
 * a dark room complained of otherwise than "it's dark in ..." (``knic.language.complaints``): "it's pitch
-  black in the hall", "it's gloomy in the bedroom", "I can't see a thing in the study", "the living room is
+  black in the hall", "it's gloomy in the bedroom", "I can't see a thing in the wet room", "the living room is
   too dark", "the bedroom's dark" ask for its lights;
 * a thing said "along with", "together with" or "as well as" another thing carried or put is carried or put
   too ("bring me the stamps along with the envelopes"); a person said so still goes along;
@@ -66,7 +66,9 @@ never tuned on, ``tests/fixtures/language/people21/accessible_flat.yaml``) the r
 * "send" a thing somewhere takes it there; "tidy" or "clear" a thing away puts it somewhere (asked where when
   not said); a place asked for names the thing as said ("the fruit bowl", not its symbol);
 * "remind me to take my pills" asks for a reminder, which the robot cannot give: no request to bring them;
-* "come and find me in the study" and "meet me in the kitchen" go where the speaker is.
+* "come and find me in the study" and "meet me in the kitchen" go where the speaker is;
+* "the lights in the study" are all its lights (its light and its desk lamp); "the light in the study" is
+  still the one its name calls a light.
 """
 
 from __future__ import annotations
@@ -562,7 +564,7 @@ def test_where_a_thing_went_is_a_search(flat: Vocabulary, text: str, theme: str)
     [
         ("it's pitch black in the hall", "hall_light"),
         ("it's gloomy in the bedroom", "bedroom_light"),
-        ("I can't see a thing in the study", "study_light"),
+        ("I can't see a thing in the wet room", "wet_room_light"),
         ("the living room is too dark", "living_room_light"),
         ("the bedroom's dark", "bedroom_light"),
     ],
@@ -652,3 +654,11 @@ def test_a_reminder_is_no_request_to_bring(flat: Vocabulary) -> None:
 )
 def test_find_me_somewhere_goes_there(flat: Vocabulary, text: str, room: str) -> None:
     assert frames_read(flat, text, "hamish") == [{"frame": "MOTION", "goal": room}]
+
+
+def test_the_lights_of_a_room_are_all_of_them(flat: Vocabulary) -> None:
+    frames = frames_read(flat, "switch on the lights in the study", "hamish")
+    assert sorted(f["device"] for f in frames) == ["desk_lamp", "study_light"]
+    assert frames_read(flat, "switch on the light in the study", "hamish") == [
+        {"frame": "OPERATING", "device": "study_light", "state": "on"}
+    ]
