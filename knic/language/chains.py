@@ -8,6 +8,7 @@ nothing carries on is a BRINGING to the speaker, and "pick up the box" a TAKING 
 
 from __future__ import annotations
 
+import contextlib
 from collections.abc import Collection, Sequence
 from dataclasses import dataclass, field, replace
 
@@ -71,7 +72,8 @@ def referent(
     said = [f.get(r) for g in groups for f in g for r in _REFERRED_ROLES]
     people = any(s and vocabulary.is_subtype(vocabulary.type_of(s) or "", "person") for s in said)
     if wanted == "person" and "item" in categories and not people:  # "my teddy's on the sofa, put him ..."
-        return referent(replace(chunk, role="item"), categories, groups, vocabulary)
+        with contextlib.suppress(LanguageError):
+            return referent(replace(chunk, role="item"), categories, groups, vocabulary)
     thing = "an object" if wanted == "item" else "a person" if wanted == "person" else "anything"
     raise LanguageError(f"'{chunk.text}' does not refer to {thing} named earlier in the command")
 
