@@ -13,7 +13,7 @@ from __future__ import annotations
 
 import itertools
 from collections.abc import Callable
-from dataclasses import dataclass, field
+from dataclasses import dataclass, field, replace
 
 from knic.language.chunks import Chunk
 from knic.language.shortnames import containers
@@ -340,10 +340,13 @@ def split_clauses(
                 # "i want the blinds open", "leave the lights on", "i'd like the blinds open halfway"
                 current.states.append(chunk.state)
                 continue
-            subject = _subject(current) if chunk.beneficiary == "subject" else None
+            # "the orchid needs water, take it to the kitchen": what a thing needs is said of it, no request
+            of_thing = chunk.beneficiary == "subject" and bool(current.args) and current.args[-1].prep is None
+            of_thing = of_thing and names_item(current.args[-1].chunk)
+            subject = _subject(current) if chunk.beneficiary == "subject" and not of_thing else None
             unnamed = chunk.beneficiary == "subject" and index > 0 and chunks[index - 1].kind == "unknown"
             said = current.missing[-1:] if unnamed and subject is None else []
-            current = Clause(chunk)
+            current = Clause(replace(chunk, soft=True) if of_thing else chunk)
             if subject is not None:  # "tracy needs the remote": the remote is for tracy
                 current.args.append(Arg(subject.chunk, "beneficiary", "for", False))
             current.missing.extend(said)  # "the kid wants the remote": no one the world knows

@@ -68,7 +68,9 @@ never tuned on, ``tests/fixtures/language/people21/accessible_flat.yaml``) the r
 * "remind me to take my pills" asks for a reminder, which the robot cannot give: no request to bring them;
 * "come and find me in the study" and "meet me in the kitchen" go where the speaker is;
 * "the lights in the study" are all its lights (its light and its desk lamp); "the light in the study" is
-  still the one its name calls a light.
+  still the one its name calls a light;
+* what a thing needs ("the orchid needs water, take it to the kitchen") is said of it, no request for the
+  thing; "hamish needs his headphones" still is.
 """
 
 from __future__ import annotations
@@ -662,3 +664,20 @@ def test_the_lights_of_a_room_are_all_of_them(flat: Vocabulary) -> None:
     assert frames_read(flat, "switch on the light in the study", "hamish") == [
         {"frame": "OPERATING", "device": "study_light", "state": "on"}
     ]
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        (
+            "the orchid needs water, take it to the kitchen",
+            [{"frame": "BRINGING", "theme": "orchid", "goal": "kitchen"}],
+        ),
+        (
+            "hamish needs his headphones",
+            [{"frame": "BRINGING", "theme": "headphones", "beneficiary": "hamish"}],
+        ),
+    ],
+)
+def test_what_a_thing_needs_is_said_of_it(flat: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
+    assert frames_read(flat, text, "priya") == frames
