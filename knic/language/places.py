@@ -60,7 +60,9 @@ class Places:
                 kept = tuple(t for t in also if any(self._within(t, r) for r in rooms))
             if not kept:
                 where = self.vocabulary.phrase_of(rooms[0].symbol)
-                raise LanguageError(f"there is no {head.chunk.text} in the {where} in this world")
+                plural = grouped or head.chunk.role == "plural"
+                there = "there are no" if plural else "there is no"  # "there are no lights in the nursery"
+                raise LanguageError(f"{there} {head.chunk.text} in the {where} in this world")
             kept = called_so(kept, head.chunk.text, self.vocabulary)  # "the light in the attic": its light
             head.chunk = Chunk("entity", head.chunk.text, kept, role=head.chunk.role)
             if swapped:  # "to the hallway table": the table, where the preposition before the room says

@@ -70,7 +70,9 @@ never tuned on, ``tests/fixtures/language/people21/accessible_flat.yaml``) the r
 * "the lights in the study" are all its lights (its light and its desk lamp); "the light in the study" is
   still the one its name calls a light;
 * what a thing needs ("the orchid needs water, take it to the kitchen") is said of it, no request for the
-  thing; "hamish needs his headphones" still is.
+  thing; "hamish needs his headphones" still is;
+* a room with no lights is refused in English ("there are no lights in the utility room"; one lamp: "there
+  is no lamp ...").
 """
 
 from __future__ import annotations
@@ -681,3 +683,9 @@ def test_the_lights_of_a_room_are_all_of_them(flat: Vocabulary) -> None:
 )
 def test_what_a_thing_needs_is_said_of_it(flat: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
     assert frames_read(flat, text, "priya") == frames
+
+
+def test_no_lights_in_a_room_is_said_in_english(other_house: Vocabulary) -> None:
+    result = understand("turn on the lights in the nursery", other_house, speaker="maria")
+    assert not result.accepted
+    assert "there are no lights in the nursery" in result.reason
