@@ -211,7 +211,9 @@ class Reader(Places):
         chunks = restated(negated_dropped(chunks, self.language.negations), self._kind_of)
         chunks = sayings_dropped(doings_dropped(talk_dropped(repaired(left_undone(chunks), self._kind_of))))
         chunks = room_alone(chunks, self.vocabulary, self.chunker)  # "ok robot, dining room"
-        if not chunks:
+        verbless = not any(c.kind == "verb" for c in chunks)
+        if not chunks or (verbless and [c.kind for c in chunks[:3]] == ["entity", "det", "entity"]):
+            # "light the candle", as "water the plant": a name said as a verb the robot has not
             raise LanguageError(f"no action in '{' '.join(tokens)}': say what to do, e.g. 'bring me ...'")
         context: list[Arg] = []
         clauses = self.clauses(chunks, context)

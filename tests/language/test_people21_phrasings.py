@@ -72,7 +72,9 @@ never tuned on, ``tests/fixtures/language/people21/accessible_flat.yaml``) the r
 * what a thing needs ("the orchid needs water, take it to the kitchen") is said of it, no request for the
   thing; "hamish needs his headphones" still is;
 * a room with no lights is refused in English ("there are no lights in the utility room"; one lamp: "there
-  is no lamp ...").
+  is no lamp ...");
+* a command of no verb that opens with a name, a determiner and another name says a name as a verb the robot
+  has not ("light the candle", as "water the plant"): no action, not a question which light.
 """
 
 from __future__ import annotations
@@ -689,3 +691,9 @@ def test_no_lights_in_a_room_is_said_in_english(other_house: Vocabulary) -> None
     result = understand("turn on the lights in the nursery", other_house, speaker="maria")
     assert not result.accepted
     assert "there are no lights in the nursery" in result.reason
+
+
+def test_light_the_candle_is_no_action(vocabulary: Vocabulary) -> None:
+    result = understand("light the candle", vocabulary)
+    assert not result.accepted and not result.question
+    assert "no action" in result.reason
