@@ -11,10 +11,12 @@ without, it serves until ``--max-sim-time``, Ctrl-C or SIGTERM.
 from __future__ import annotations
 
 import argparse
+import contextlib
 import json
 import math
 import signal
 import sys
+import time
 from collections.abc import Iterator
 from contextlib import contextmanager
 from pathlib import Path
@@ -136,5 +138,10 @@ def ros_attached(args: argparse.Namespace, system: Any) -> Iterator[Any]:
             yield node
         finally:
             node.publish_snapshot()
+            linger = float(getattr(args, "linger", 0.0) or 0.0)
+            if linger > 0:  # DDS serves what is kept to subscribers that join now, in its own threads
+                print(f"knic: run over; the ROS 2 node stays up {linger:g} s", file=sys.stderr)
+                with contextlib.suppress(KeyboardInterrupt):
+                    time.sleep(linger)
             node.close()
             link.close()

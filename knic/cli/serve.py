@@ -130,7 +130,8 @@ def add_run_serve_arguments(parser: argparse.ArgumentParser) -> None:
         type=float,
         default=0.0,
         metavar="S",
-        help="with --serve: keep the page up S s after the run",
+        help="with --serve: keep the page up S s after the run; with --ros: keep the node up S s after it (a"
+        " subscriber that joins then still gets the latched topics and the last 10,000 fact events)",
     )
 
 
@@ -142,6 +143,8 @@ def run_journal(args: argparse.Namespace) -> Path | None:
     Raises:
         KnicError: unsafe or invalid --serve options.
     """
+    if getattr(args, "linger", 0.0) < 0:
+        raise KnicError(f"--linger: expected seconds >= 0, got {args.linger}")
     if not getattr(args, "serve", False):
         return args.journal
     from knic.web.server import check_binding
@@ -149,8 +152,6 @@ def run_journal(args: argparse.Namespace) -> Path | None:
     check_binding(args.host, args.port, args.token)
     if args.pace is not None and not args.pace > 0:
         raise KnicError(f"--pace: expected a positive number, got {args.pace}")
-    if args.linger < 0:
-        raise KnicError(f"--linger: expected seconds >= 0, got {args.linger}")
     missing = [name for name in ("fastapi", "uvicorn") if importlib.util.find_spec(name) is None]
     if missing:
         raise KnicError(f"--serve needs the 'web' extra (pip install 'knic[web]'): {missing[0]} is missing")

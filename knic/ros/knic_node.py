@@ -158,7 +158,8 @@ class KnicNode:
         n, q = link.node("knic", parameter_overrides=[Parameter("use_sim_time", value=True)]), tp.reliable
         self.node = n
         self.pub_facts = n.create_publisher(String, tp.FACTS, q(1, latched=True))
-        self.pub_events = n.create_publisher(String, tp.FACT_EVENTS, q(10000))
+        # transient local too: a subscriber matched late (discovery can take seconds) asks for what it missed
+        self.pub_events = n.create_publisher(String, tp.FACT_EVENTS, q(10000, latched=True))
         self.pub_plan = n.create_publisher(String, tp.PLAN, q(10, latched=True))
         self.pub_trace = n.create_publisher(String, tp.TRACE, q(100))
         self.pub_command = n.create_publisher(String, tp.COMMAND_LOG, q(100))

@@ -55,6 +55,12 @@ def test_unknown_goal_is_refused_with_one_line(capsys: pytest.CaptureFixture[str
     assert main(["run", "--world", "erl_home_paper", "--goal", "fly me to the moon"]) == 4
 
 
+def test_a_negative_linger_is_refused_before_anything_runs(capsys: pytest.CaptureFixture[str]) -> None:
+    goal = ["--world", "erl_home_paper", "--goal", "(object_at glasses bedroom)"]
+    assert main(["run", *goal, "--ros", "--linger", "-1"]) == 2  # with --ros as with --serve
+    assert capsys.readouterr().err.strip() == "knic: error: --linger: expected seconds >= 0, got -1.0"
+
+
 def test_unreachable_in_time_exits_non_zero(capsys: pytest.CaptureFixture[str]) -> None:
     code = main(
         ["run", "--world", "erl_home_paper", "--goal", "(object_at glasses bedroom)", "--max-sim-time", "5"]

@@ -24,14 +24,22 @@ def test_run_with_ros_publishes_what_it_does(processes: Processes, domain: int) 
         w.node.create_subscription(Path, tp.TRAJECTORY, paths.append, tp.reliable(10, latched=True))
         topic = tp.octomap_topic("objects", "glasses")
         w.node.create_subscription(MarkerArray, topic, octomaps.append, tp.reliable(1, latched=True))
-        run = processes.start("run", "run", "--world", "erl_home_paper", "--goal", GOAL, "--ros", "--json")
+        args = ["--world", "erl_home_paper", "--goal", GOAL, "--ros", "--linger", "8", "--json"]
+        run = processes.start("run", "run", *args)
         w.wait("the run to end", lambda: run.poll() is not None, 180)
+        assert run.returncode == 0, processes.errors("run")
+
+        def goal_reached() -> bool:
+            events = (json_from_ros(m) for m in w.got[tp.FACT_EVENTS])
+            return any(e.get("fact") == GOAL and e["kind"] == "add_fact" for e in events)
+
+        # discovery can take seconds here (after the run's 3 s of work): the node lingers, and the events it
+        # keeps reach the watcher then; the watcher takes one message a spin
+        w.wait("the goal's fact event", goal_reached, 30)
         for _ in range(20):
             w.executor.spin_once(timeout_sec=0.05)
         w.node.destroy_node()
-    assert run.returncode == 0, processes.errors("run")
     events = [json_from_ros(m) for m in w.got[tp.FACT_EVENTS]]
-    assert any(e.get("fact") == GOAL and e["kind"] == "add_fact" for e in events)
     assert [e["seq"] for e in events] == sorted(e["seq"] for e in events)  # in the knowledge base's order
     assert any("(pick r2d2 glasses entrance)" in json_from_ros(m)["plan"] for m in w.got[tp.PLAN])
     assert paths and len(path_from_ros(paths[-1])) >= 2

@@ -53,7 +53,7 @@ class Watcher:
         q = tp.reliable
         for topic, msg_type, qos in (
             (tp.FACTS, String, q(1, latched=True)),
-            (tp.FACT_EVENTS, String, q(1000)),
+            (tp.FACT_EVENTS, String, q(1000, latched=True)),
             (tp.GOAL_REPLY, String, q(50, latched=True)),
             (tp.KB_REPLY, String, q(10)),
             (tp.PLAN, String, q(10, latched=True)),
