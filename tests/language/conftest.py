@@ -74,3 +74,14 @@ def assert_asked(vocabulary: Vocabulary, text: str, word: str, speaker: str = "a
     assert not result.accepted
     assert result.reason.startswith("ambiguous"), result.reason
     assert word in result.reason
+
+
+def world_of(file: str) -> Vocabulary:
+    """A world file's vocabulary (``file`` relative to the project), as the language bench and ``knic goal
+    --world`` read it."""
+    from knic.cli.goal import world_vocabulary
+    from knic.language.world import DEFAULT_DOMAIN
+
+    path = Path(__file__).resolve().parents[2] / file
+    vocabulary: Any = world_vocabulary(str(path), DEFAULT_DOMAIN, None)[0]
+    return vocabulary

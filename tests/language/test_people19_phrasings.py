@@ -36,35 +36,21 @@
 
 from __future__ import annotations
 
-from typing import Any
-
 import pytest
 
 from knic.language import understand
 from knic.language.vocabulary import Vocabulary
 
-from .conftest import assert_asked, frames_read
+from .conftest import assert_asked, frames_read, world_of
 
 GARDEN_FLAT = "tests/fixtures/language/people19/garden_flat.yaml"
 TOWNHOUSE = "tests/fixtures/language/people18/townhouse.yaml"
 
 
-def _world(file: str) -> Vocabulary:
-    """A world file's vocabulary, as the language bench and ``knic goal --world`` read it."""
-    from pathlib import Path
-
-    from knic.cli.goal import world_vocabulary
-    from knic.language.world import DEFAULT_DOMAIN
-
-    path = Path(__file__).resolve().parents[2] / file
-    vocabulary: Any = world_vocabulary(str(path), DEFAULT_DOMAIN, None)[0]
-    return vocabulary
-
-
 @pytest.fixture(scope="module")
 def flat() -> Vocabulary:
     """The garden flat's vocabulary."""
-    return _world(GARDEN_FLAT)
+    return world_of(GARDEN_FLAT)
 
 
 @pytest.mark.parametrize(
@@ -192,7 +178,7 @@ def test_an_object_as_where_a_thing_goes_is_still_no_place(flat: Vocabulary) -> 
 )
 def test_a_rooms_lights_at_a_level_are_its_dimmer(world: str, text: str, device: str, state: str) -> None:
     speaker = "margaret" if world == GARDEN_FLAT else "nadia"
-    assert frames_read(_world(world), text, speaker) == [
+    assert frames_read(world_of(world), text, speaker) == [
         {"frame": "OPERATING", "device": device, "state": state}
     ]
 
@@ -300,7 +286,7 @@ def test_a_verbs_word_after_my_ends_a_name(flat: Vocabulary, text: str, frames: 
     ],
 )
 def test_people_said_together_are_each_brought_it(text: str, people: list[str]) -> None:
-    assert frames_read(_world(TOWNHOUSE), text, "nadia") == [
+    assert frames_read(world_of(TOWNHOUSE), text, "nadia") == [
         {"frame": "BRINGING", "theme": "water_bottle", "beneficiary": who} for who in people
     ]
 

@@ -58,34 +58,20 @@
 
 from __future__ import annotations
 
-from typing import Any
-
 import pytest
 
 from knic.language import understand
 from knic.language.vocabulary import Vocabulary
 
-from .conftest import assert_asked, frames_read
+from .conftest import assert_asked, frames_read, world_of
 
 FARMHOUSE = "tests/fixtures/language/people20/farmhouse.yaml"
-
-
-def _world(file: str) -> Vocabulary:
-    """A world file's vocabulary, as the language bench and ``knic goal --world`` read it."""
-    from pathlib import Path
-
-    from knic.cli.goal import world_vocabulary
-    from knic.language.world import DEFAULT_DOMAIN
-
-    path = Path(__file__).resolve().parents[2] / file
-    vocabulary: Any = world_vocabulary(str(path), DEFAULT_DOMAIN, None)[0]
-    return vocabulary
 
 
 @pytest.fixture(scope="module")
 def farm() -> Vocabulary:
     """The farmhouse's vocabulary."""
-    return _world(FARMHOUSE)
+    return world_of(FARMHOUSE)
 
 
 @pytest.mark.parametrize(
@@ -341,7 +327,9 @@ def test_why_the_speaker_asks_is_talk(farm: Vocabulary, text: str, frames: list[
     ],
 )
 def test_furniture_told_by_its_room(text: str, frames: list[dict[str, str]]) -> None:
-    assert frames_read(_world("tests/fixtures/language/people19/garden_flat.yaml"), text, "arthur") == frames
+    assert (
+        frames_read(world_of("tests/fixtures/language/people19/garden_flat.yaml"), text, "arthur") == frames
+    )
 
 
 @pytest.mark.parametrize(
@@ -352,14 +340,14 @@ def test_furniture_told_by_its_room(text: str, frames: list[dict[str, str]]) -> 
     ],
 )
 def test_a_statement_before_a_request_is_talk(text: str) -> None:
-    flat = _world("tests/fixtures/language/people19/garden_flat.yaml")
+    flat = world_of("tests/fixtures/language/people19/garden_flat.yaml")
     assert frames_read(flat, text, "margaret") == [
         {"frame": "OPERATING", "device": "conservatory_blinds", "state": "closed"}
     ]
 
 
 def test_the_thing_said_before() -> None:
-    flat = _world("tests/fixtures/language/people19/garden_flat.yaml")
+    flat = world_of("tests/fixtures/language/people19/garden_flat.yaml")
     assert frames_read(flat, "I fancy a sherry, bring me the bottle from the sideboard", "margaret") == [
         {"frame": "BRINGING", "theme": "sherry_bottle", "source": "sideboard", "beneficiary": "me"}
     ]
@@ -370,14 +358,14 @@ def test_the_thing_said_before() -> None:
     [("bring me the candle holder", "candle holder"), ("bring me a candle holder", "candle holder")],
 )
 def test_a_longer_name_the_world_lacks(text: str, refused: str) -> None:
-    result = understand(text, _world("tests/fixtures/language/people18/townhouse.yaml"), speaker="nadia")
+    result = understand(text, world_of("tests/fixtures/language/people18/townhouse.yaml"), speaker="nadia")
     assert not result.accepted and f"'{refused}'" in result.reason
 
 
 @pytest.mark.parametrize("text", ["bring me the scented candle grandma", "fetch the coffee mug mate"])
 def test_a_word_to_the_person_addressed_is_no_longer_name(text: str) -> None:
     assert (
-        frames_read(_world("tests/fixtures/language/people18/townhouse.yaml"), text, "nadia")[0]["frame"]
+        frames_read(world_of("tests/fixtures/language/people18/townhouse.yaml"), text, "nadia")[0]["frame"]
         == "BRINGING"
     )
 
@@ -391,7 +379,7 @@ def test_a_word_to_the_person_addressed_is_no_longer_name(text: str) -> None:
     ],
 )
 def test_asked_for_someone_else(text: str, theme: str) -> None:
-    assert frames_read(_world("worlds/test_bungalow/test_bungalow.yaml"), text, "walter") == [
+    assert frames_read(world_of("worlds/test_bungalow/test_bungalow.yaml"), text, "walter") == [
         {"frame": "BRINGING", "theme": theme, "beneficiary": "rosa"}
     ]
 
@@ -415,7 +403,7 @@ def test_us_is_the_speaker(farm: Vocabulary) -> None:
 
 
 def test_to_me_in_a_room() -> None:
-    flat = _world("worlds/test_flat/test_flat.yaml")
+    flat = world_of("worlds/test_flat/test_flat.yaml")
     assert frames_read(flat, "bring the book to me in the lounge", "olga") == [
         {"frame": "BRINGING", "theme": "book", "goal": "lounge", "beneficiary": "me"}
     ]
@@ -429,7 +417,7 @@ def test_to_me_in_a_room() -> None:
     ["fetch the first aid kit, tom's cut his finger", "fetch the first aid kit, tom has cut his finger"],
 )
 def test_what_someone_has_done_is_talk(text: str) -> None:
-    assert frames_read(_world("tests/fixtures/language/people18/townhouse.yaml"), text, "nadia") == [
+    assert frames_read(world_of("tests/fixtures/language/people18/townhouse.yaml"), text, "nadia") == [
         {"frame": "BRINGING", "theme": "first_aid_kit", "beneficiary": "me"}
     ]
 
@@ -449,6 +437,6 @@ def test_the_shelf_for_books(vocabulary: Vocabulary) -> None:
     ],
 )
 def test_what_someone_has_been_doing_is_talk(text: str) -> None:
-    assert frames_read(_world("worlds/test_bungalow/test_bungalow.yaml"), text, "walter") == [
+    assert frames_read(world_of("worlds/test_bungalow/test_bungalow.yaml"), text, "walter") == [
         {"frame": "BRINGING", "theme": "teddy_bear", "beneficiary": "rosa"}
     ]

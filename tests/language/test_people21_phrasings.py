@@ -79,34 +79,20 @@ never tuned on, ``tests/fixtures/language/people21/accessible_flat.yaml``) the r
 
 from __future__ import annotations
 
-from typing import Any
-
 import pytest
 
 from knic.language import understand
 from knic.language.vocabulary import Vocabulary
 
-from .conftest import assert_asked, frames_read
+from .conftest import assert_asked, frames_read, world_of
 
 FLAT = "tests/fixtures/language/people21/accessible_flat.yaml"
-
-
-def _world(file: str) -> Vocabulary:
-    """A world file's vocabulary, as the language bench and ``knic goal --world`` read it."""
-    from pathlib import Path
-
-    from knic.cli.goal import world_vocabulary
-    from knic.language.world import DEFAULT_DOMAIN
-
-    path = Path(__file__).resolve().parents[2] / file
-    vocabulary: Any = world_vocabulary(str(path), DEFAULT_DOMAIN, None)[0]
-    return vocabulary
 
 
 @pytest.fixture(scope="module")
 def flat() -> Vocabulary:
     """The accessible flat's vocabulary."""
-    return _world(FLAT)
+    return world_of(FLAT)
 
 
 @pytest.mark.parametrize(
@@ -193,11 +179,11 @@ def test_the_drawers_of_two_are_asked_about(flat: Vocabulary, text: str) -> None
 
 
 def test_the_drawer_in_the_den_and_a_typo_of_drawers() -> None:
-    garden = _world(GARDEN_FLAT)
+    garden = world_of(GARDEN_FLAT)
     assert frames_read(garden, "get me the batteries from the drawer in the den", "arthur") == [
         {"frame": "BRINGING", "theme": "batteries", "source": "drawer_unit", "beneficiary": "me"}
     ]
-    farm = _world(FARMHOUSE)
+    farm = world_of(FARMHOUSE)
     assert frames_read(farm, "put teh earbuds on the chest of drawres", "rhys") == [
         {"frame": "PLACING", "theme": "earbuds", "goal": "chest_of_drawers"}
     ]
@@ -217,7 +203,7 @@ def test_the_drawer_in_the_den_and_a_typo_of_drawers() -> None:
 def test_the_back_door_is_the_room_of_another_outside_door(
     world: str, speaker: str, text: str, room: str
 ) -> None:
-    assert frames_read(_world(world), text, speaker) == [{"frame": "MOTION", "goal": room}]
+    assert frames_read(world_of(world), text, speaker) == [{"frame": "MOTION", "goal": room}]
 
 
 def test_back_entrances_leave_the_front_door_out() -> None:
@@ -336,7 +322,7 @@ def test_the_cabinet_with_no_room_gone_to_is_asked_about(flat: Vocabulary) -> No
     ],
 )
 def test_lamps_and_lights(world: str, text: str, frames: list[dict[str, str]]) -> None:
-    vocabulary = _world(world)
+    vocabulary = world_of(world)
     speaker = "hamish" if world == FLAT else "ffion"
     assert frames_read(vocabulary, text, speaker) == frames
 
@@ -363,7 +349,7 @@ def test_lamps_and_lights(world: str, text: str, frames: list[dict[str, str]]) -
     ],
 )
 def test_bring_in_a_room_is_into_it(text: str, frames: list[dict[str, str]]) -> None:
-    assert frames_read(_world(FARMHOUSE), text, "jean_paul") == frames
+    assert frames_read(world_of(FARMHOUSE), text, "jean_paul") == frames
 
 
 @pytest.mark.parametrize(
@@ -377,11 +363,11 @@ def test_bring_in_a_room_is_into_it(text: str, frames: list[dict[str, str]]) -> 
     ],
 )
 def test_my_bed_is_the_one_in_my_room(text: str, frames: list[dict[str, str]]) -> None:
-    assert frames_read(_world(FARMHOUSE), text, "rhys") == frames
+    assert frames_read(world_of(FARMHOUSE), text, "rhys") == frames
 
 
 def test_my_bed_without_a_room_of_ones_own_is_asked_about() -> None:
-    assert_asked(_world(FARMHOUSE), "hoodie from my bed pls", "single bed", "ffion")
+    assert_asked(world_of(FARMHOUSE), "hoodie from my bed pls", "single bed", "ffion")
 
 
 def test_are_you_asks_about_the_robot(flat: Vocabulary) -> None:
@@ -476,7 +462,7 @@ def test_an_aid_that_only_a_synonym_names_is_refused(flat: Vocabulary) -> None:
     ],
 )
 def test_a_thing_that_would_be_lovely_is_asked_for(text: str, theme: str) -> None:
-    assert frames_read(_world(FARMHOUSE), text, "mary_ann") == [
+    assert frames_read(world_of(FARMHOUSE), text, "mary_ann") == [
         {"frame": "BRINGING", "theme": theme, "beneficiary": "me"}
     ]
 
@@ -631,7 +617,7 @@ def test_typos_settled_by_the_words_before(flat: Vocabulary, text: str, frames: 
 
 
 def test_send_tidy_and_clear() -> None:
-    farm = _world(FARMHOUSE)
+    farm = world_of(FARMHOUSE)
     assert frames_read(farm, "send the letters up to the office", "ffion") == [
         {"frame": "BRINGING", "theme": "letters", "goal": "farm_office"}
     ]
