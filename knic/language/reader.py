@@ -130,7 +130,8 @@ class Reader(Places):
         opening = not_request(segments, language.not_requests, language.not_requests_unless)
         if opening:
             raise LanguageError(
-                f"'{opening} ...' asks about something or says what you will do: no request, no action for me"
+                f"'{opening} ...' asks about something or says what you do or will do: no request, no action"
+                " for me"
             )
         segments = said_named(segments, self.vocabulary, self.chunker.language_words)  # naming.py
         segments = described(ones_named(segments, self.vocabulary), self.vocabulary)  # selecting.py

@@ -1,6 +1,7 @@
-"""What the speaker asks about or means to do themselves is no request (commands.yaml ``not_requests``): a
-question about how ("how do you spell kitchen") or the speaker's own plan ("i should water the plants later")
-is refused, even when misheard into words that name the world; a request said that way is still read."""
+"""What the speaker asks about, means to do themselves or does as a habit is no request (commands.yaml
+``not_requests``): a question about how ("how do you spell kitchen"), the speaker's own plan ("i should water
+the plants later") or habit ("i always keep the soap in the bathroom") is refused, even when misheard into
+words that name the world; a request said that way is still read."""
 
 from __future__ import annotations
 
@@ -19,6 +20,8 @@ from knic.language.vocabulary import Vocabulary
         "How do I get to the kitchen?",
         "how does the dimmer work",
         "I ought to go to the bedroom",
+        "i always keep the soap in the bathroom",  # a habit, heard word for word
+        "We usually put the remote on the coffee table.",
     ],
 )
 def test_a_question_or_the_speakers_own_plan_is_refused(vocabulary: Vocabulary, text: str) -> None:
@@ -41,6 +44,10 @@ def test_a_question_or_the_speakers_own_plan_is_refused(vocabulary: Vocabulary, 
         (
             "I should water the plants later. Bring me the mug.",
             [{"frame": "BRINGING", "theme": "mug", "beneficiary": "me"}],
+        ),
+        (
+            "i always forget, bring me my glasses",
+            [{"frame": "BRINGING", "theme": "glasses", "beneficiary": "me"}],
         ),
     ],
 )
