@@ -13,7 +13,7 @@ import pytest
 
 from knic.language import judging
 from knic.language.audio import Transcript, load_audio, pcm_bytes
-from knic.language.judging import KEEP_LOG_PROB, STRETCH, TAKE_LOG_PROB, Judging
+from knic.language.judging import KEEP_LOG_PROB, STRETCH, STRETCH_FLOOR, TAKE_LOG_PROB, Judging
 from knic.language.lmspeech import NgramRecognizer
 from knic.language.understanding import understand_transcript
 from knic.language.whisperpass import (
@@ -222,6 +222,15 @@ def test_only_candidates_the_reader_reads_are_scored():
     server = _Server([["Sing me a song.", -0.4], ["Bring me the mug.", -0.6]], {})
     Judging(server, b"\0\0", None, _reads).finish(_first("the mug", False), ["bring me a mug"])
     assert server.questions[1] == {"score": ["bring me a mug", "bring me the mug"]}
+
+
+def test_other_paces_are_not_asked_for_when_nothing_said_resembles_a_command():
+    server = _Server(
+        [["Bring me the mud.", -0.9]], {"bring me a mug": STRETCH_FLOOR - 1}, [["Bring me it.", -0.1]]
+    )
+    judged = Judging(server, b"\0\0", None, _reads).finish(_first("bring me a mug", False), [])
+    assert judged is not None and not judged.in_grammar
+    assert not any("stretch" in q for q in server.questions)
 
 
 def test_other_paces_are_heard_only_when_pocketsphinx_does_not_fit_and_their_best_is_taken():

@@ -22,6 +22,7 @@ from knic.language.vocabulary import Vocabulary
         "I ought to go to the bedroom",
         "i always keep the soap in the bathroom",  # a habit, heard word for word
         "We usually put the remote on the coffee table.",
+        "i'll always keep the soap in the bathroom",  # as Whisper wrote it
     ],
 )
 def test_a_question_or_the_speakers_own_plan_is_refused(vocabulary: Vocabulary, text: str) -> None:
