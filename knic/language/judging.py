@@ -20,7 +20,9 @@ pocketsphinx's transcript is kept when the reader reads it and Whisper's score o
 higher or lower too), which for voices it mishears often gives the right transcript (on the dev set of
 voices no adaptation heard, commands with a right candidate went from 4 to 11 of the 23 judged wrong), and
 those it reads are scored too; the best-scoring candidate is taken when its score is above
-:data:`TAKE_LOG_PROB`; else the utterance is refused. pocketsphinx's own confidence (its phone-loop pass,
+:data:`TAKE_LOG_PROB`; else the utterance is refused. A transcript looping on one word (:func:`looped`) is no
+candidate: on the dev sets of other speech it was the one a reading was taken from. pocketsphinx's own
+confidence (its phone-loop pass,
 :func:`~knic.language.lmspeech.confidence`) is not needed then: on the dev sets below judging without it
 gave one command more at the same rejection, and saved the phone loop's time; it still decides when Whisper
 cannot answer. A candidate is only ever a transcript one of the
@@ -64,6 +66,8 @@ STRETCH = (0.9, 1.1)
 #: the score some candidate must pass before Whisper hears the utterance at other paces (the commands rescued
 #: so on the dev sets had a best candidate of -5.6 or better; other speech mostly has none that reads)
 STRETCH_FLOOR = -6.0
+#: a word said this many times in a row makes a transcript no candidate (:func:`looped`)
+LOOP = 4
 
 
 class Asked(Protocol):
@@ -130,6 +134,8 @@ class Judging:
         texts = [*heard, *(normalize(found.text) for found in whispered if found is not None)]
         candidates: list[str] = []
         for text in texts:
+            if looped(text):  # a decoder's loop, not speech; its repeated words score too well
+                continue
             if text and text not in candidates and text not in fits and self._reads(text):
                 candidates.append(text)
         if not candidates:
@@ -139,3 +145,11 @@ class Judging:
             return None
         fits.update(zip(candidates, (float(s) for s in scores), strict=True))
         return candidates
+
+
+def looped(text: str) -> bool:
+    """Whether a transcript says one word :data:`LOOP` times or more in a row ("is my fetch are it a a a a a
+    a"): pocketsphinx's decoder looping on a short word through noise or speech it cannot match. Whisper
+    scores such a text high (each repeat is easy to predict after the one before): it is no candidate."""
+    words = text.split()
+    return any(len(set(words[i : i + LOOP])) == 1 for i in range(len(words) - LOOP + 1))

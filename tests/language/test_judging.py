@@ -13,7 +13,7 @@ import pytest
 
 from knic.language import judging
 from knic.language.audio import Transcript, load_audio, pcm_bytes
-from knic.language.judging import KEEP_LOG_PROB, STRETCH, STRETCH_FLOOR, TAKE_LOG_PROB, Judging
+from knic.language.judging import KEEP_LOG_PROB, STRETCH, STRETCH_FLOOR, TAKE_LOG_PROB, Judging, looped
 from knic.language.lmspeech import NgramRecognizer
 from knic.language.understanding import understand_transcript
 from knic.language.whisperpass import (
@@ -222,6 +222,16 @@ def test_only_candidates_the_reader_reads_are_scored():
     server = _Server([["Sing me a song.", -0.4], ["Bring me the mug.", -0.6]], {})
     Judging(server, b"\0\0", None, _reads).finish(_first("the mug", False), ["bring me a mug"])
     assert server.questions[1] == {"score": ["bring me a mug", "bring me the mug"]}
+
+
+def test_a_transcript_looping_on_a_word_is_no_candidate():
+    assert looped("are the mug with a is my fetch are it a a a a a a") and not looped("the the mug a a a")
+    server = _Server([], {"bring me the mug a a a a a": -0.5, "bring me the mug": -1.0})
+    judged = Judging(server, b"\0\0", None, _reads).finish(
+        _first("bring me the mug a a a a a", False), ["bring me the mug"]
+    )
+    assert judged is not None and judged.text == "bring me the mug"
+    assert server.questions[1] == {"score": ["bring me the mug"]}
 
 
 def test_other_paces_are_not_asked_for_when_nothing_said_resembles_a_command():
