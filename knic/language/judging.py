@@ -15,17 +15,17 @@ apple") or has the right transcript in its beam. So Whisper is asked two more th
    tokens when Whisper is made to write it (:meth:`~knic.language.whisperpass.WhisperPass.scores`).
 
 pocketsphinx's transcript is kept when the reader reads it and Whisper's score of it is above
-:data:`KEEP_LOG_PROB`. Else Whisper also hears the utterance played a little slower or faster
-(:data:`STRETCH`, :meth:`~knic.language.whisperpass.WhisperPass.stretched`: resampled, so the voice is
-higher or lower too), which for voices it mishears often gives the right transcript (on the dev set of
-voices no adaptation heard, commands with a right candidate went from 4 to 11 of the 23 judged wrong), and
-those it reads are scored too; the best-scoring candidate is taken when its score is above
-:data:`TAKE_LOG_PROB`; else the utterance is refused. A transcript looping on one word (:func:`looped`) is no
-candidate: on the dev sets of other speech it was the one a reading was taken from. pocketsphinx's own
-confidence (its phone-loop pass,
-:func:`~knic.language.lmspeech.confidence`) is not needed then: on the dev sets below judging without it
-gave one command more at the same rejection, and saved the phone loop's time; it still decides when Whisper
-cannot answer. A candidate is only ever a transcript one of the
+:data:`KEEP_LOG_PROB`. Else, where some candidate scores above :data:`STRETCH_FLOOR`, Whisper also hears the
+utterance played a little slower or faster (:data:`STRETCH`,
+:meth:`~knic.language.whisperpass.WhisperPass.stretched`: resampled, so the voice is higher or lower too),
+which for voices it mishears often gives the right transcript (on the dev set of voices no adaptation heard,
+commands with a right candidate went from 4 to 11 of the 23 judged wrong), and those it reads are scored
+too. The best-scoring candidate is taken when its score is above :data:`TAKE_LOG_PROB`; else the utterance
+is refused. A transcript looping on one word (:func:`looped`) is no candidate: Whisper scores the repeats
+too well (on a dev set of other speech such a transcript was taken). pocketsphinx's own confidence (its
+phone-loop pass, :func:`~knic.language.lmspeech.confidence`) is not needed then: on the dev sets below
+judging without it gave one command more at the same rejection, and saved the phone loop's time; it still
+decides when Whisper cannot answer. A candidate is only ever a transcript one of the
 recognisers heard, so Whisper's score cannot make up a command; other speech is refused because none of the
 candidates fits it (their scores fall far lower than those of commands, whichever recogniser heard them).
 """
