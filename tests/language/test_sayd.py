@@ -95,7 +95,7 @@ class World:
         return pid
 
     def sockets(self) -> list[Path]:
-        return sorted(self.folder.glob("knic-*/say-*.sock"))
+        return sorted((self.folder / f"knic-{os.getuid()}").glob("say-*.sock"))
 
 
 @pytest.fixture(scope="module")
