@@ -312,16 +312,19 @@ class World:
     def entrances(self) -> list[str]:
         """The rooms a door to the outside (a front door) opens into, each once, in file order; where several
         do, the one with the doorbell, if only one has a bell (a garden door is no front door)."""
-        rooms = list(dict.fromkeys(d.rooms[0] for d in self.doors if len(d.rooms) == 1))
+        rooms = self._outside_rooms()
         rung = [r for r in rooms if any(d.kind == "bell" and d.room == r for d in self.devices.values())]
         return rung if len(rooms) > 1 and len(rung) == 1 else rooms
 
     def back_entrances(self) -> list[str]:
         """The rooms other doors to the outside open into, where :meth:`entrances` tells the front door from
         them (a back door, a garden door), each once, in file order."""
-        rooms = list(dict.fromkeys(d.rooms[0] for d in self.doors if len(d.rooms) == 1))
         front = self.entrances()
-        return [r for r in rooms if r not in front]
+        return [r for r in self._outside_rooms() if r not in front]
+
+    def _outside_rooms(self) -> list[str]:
+        """The rooms a door to the outside opens into, each once, in file order."""
+        return list(dict.fromkeys(d.rooms[0] for d in self.doors if len(d.rooms) == 1))
 
     def bounds(self) -> tuple[float, float, float, float]:
         """``(xmin, ymin, xmax, ymax)`` of all room polygons."""

@@ -25,7 +25,7 @@ _DEGREE = (
 _PLACE = r"(?P<place>(?!(?:here|there)\b)(?:(?:the|my|our|your)\s+)?[a-z']+(?:\s+[a-z']+){0,2}?)"
 _DARK = re.compile(
     rf"^{_OPENING}(?:(?:it's|its|it is)\s+{_DEGREE}(?:dark|black|gloomy|dim)"
-    r"|i can't see|i cannot see|i can not see|i can't see a thing|i can't see anything)"
+    r"|i (?:can't|cannot|can not) see(?: a thing| anything)?)"
     rf"\s+(?:in|inside|on|out on|up on|down in)\s+{_PLACE}"
     r"(?:\s+(?:please|now|tonight|today))?$"
 )

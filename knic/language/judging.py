@@ -105,8 +105,7 @@ class Judging:
         if not isinstance(beam, list):
             return None
         fits: dict[str, float] = {}
-        candidates = self._candidates([first.text, *paths], [self._heard, *(heard_of(b) for b in beam)], fits)
-        if candidates is None:
+        if not self._scored([first.text, *paths], [self._heard, *(heard_of(b) for b in beam)], fits):
             return None
         if first.in_grammar and fits.get(first.text, -math.inf) > KEEP_LOG_PROB:
             return replace(first, score=fits[first.text])
@@ -117,20 +116,16 @@ class Judging:
         asked = self._server.ask(self._samples, {"stretch": list(STRETCH)})
         stretched = self._server.answer() if asked else None
         more = [heard_of(item) for item in stretched] if isinstance(stretched, list) else []
-        if more and self._candidates([], more, fits) is None:
+        if not self._scored([], more, fits):
             return None
-        if not fits:
-            return replace(first, in_grammar=False, score=math.nan)
         best = max(fits, key=lambda text: fits[text])
         if fits[best] > TAKE_LOG_PROB:
             return replace(first, text=best, in_grammar=True, score=fits[best])
         return replace(first, in_grammar=False, score=math.nan)
 
-    def _candidates(
-        self, heard: list[str], whispered: list[Heard | None], fits: dict[str, float]
-    ) -> list[str] | None:
+    def _scored(self, heard: list[str], whispered: list[Heard | None], fits: dict[str, float]) -> bool:
         """Score the texts not scored yet that the reader reads (``heard`` as written, Whisper's normalised)
-        into ``fits``; the texts scored now, or None when Whisper cannot answer."""
+        into ``fits``; False when Whisper cannot answer."""
         texts = [*heard, *(normalize(found.text) for found in whispered if found is not None)]
         candidates: list[str] = []
         for text in texts:
@@ -139,12 +134,12 @@ class Judging:
             if text and text not in candidates and text not in fits and self._reads(text):
                 candidates.append(text)
         if not candidates:
-            return candidates
+            return True
         scores = self._server.answer() if self._server.ask(self._samples, {"score": candidates}) else None
         if not isinstance(scores, list) or len(scores) != len(candidates):
-            return None
+            return False
         fits.update(zip(candidates, (float(s) for s in scores), strict=True))
-        return candidates
+        return True
 
 
 def looped(text: str) -> bool:

@@ -218,7 +218,7 @@ def places_before(previous: Sequence[CommandFrame], args: Sequence[Arg], vocabul
     """The places the earlier actions named, latest first (their goal, ground or source), as the rooms they
     are in when ``args`` name a device."""
     places = [f.get(r) or "" for f in reversed(previous) for r in ("goal", "ground", "source") if f.get(r)]
-    if not any(vocabulary.is_subtype(t.type, "device") for a in args for t in a.chunk.terms):
+    if not names_device(args, vocabulary):
         return places
     rooms = []
     for place in places:
@@ -227,3 +227,8 @@ def places_before(previous: Sequence[CommandFrame], args: Sequence[Arg], vocabul
         except LanguageError:
             rooms.append(place)
     return rooms
+
+
+def names_device(args: Sequence[Arg], vocabulary: Vocabulary) -> bool:
+    """Whether some argument names a device."""
+    return any(vocabulary.is_subtype(t.type, "device") for a in args for t in a.chunk.terms)

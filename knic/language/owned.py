@@ -8,6 +8,7 @@ from __future__ import annotations
 
 import re
 
+from knic.language.shortnames import contains
 from knic.language.vocabulary import Vocabulary
 
 _MY = re.compile(r"\b(my|ma) ([a-z]+(?: [a-z]+)?)\b", re.IGNORECASE)
@@ -19,13 +20,9 @@ def own_room(vocabulary: Vocabulary, speaker: str) -> str | None:
     rooms = [
         symbol
         for symbol, kind in vocabulary.instances.items()
-        if vocabulary.is_subtype(kind, "room") and _contains(symbol.split("_"), said) and symbol != speaker
+        if vocabulary.is_subtype(kind, "room") and contains(symbol.split("_"), said) and symbol != speaker
     ]
     return rooms[0] if len(rooms) == 1 else None
-
-
-def _contains(words: list[str], part: list[str]) -> bool:
-    return any(words[i : i + len(part)] == part for i in range(len(words) - len(part) + 1))
 
 
 def owned_read(text: str, vocabulary: Vocabulary, speaker: str) -> str:

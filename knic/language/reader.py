@@ -40,7 +40,7 @@ from knic.language.commands import CommandLanguage, command_language
 from knic.language.frames import KIND_NAMES, KIND_PLURALS, SPEAKER, CommandFrame
 from knic.language.household import ones_named, other_one, said_around, words_tidied
 from knic.language.learners import learners_read
-from knic.language.naming import places_before, said_named
+from knic.language.naming import names_device, places_before, said_named
 from knic.language.places import Places
 from knic.language.roles import INTERPRETERS
 from knic.language.segments import (
@@ -395,7 +395,6 @@ class Reader(Places):
         """'there': the place the latest earlier action named (its goal, ground or source). With no place
         named before, "there" points at what the robot cannot see ("the cup over there") and is left out."""
         places = places_before(previous, clause.args, self.vocabulary)  # a device's: the room (naming.py)
-        devices = any(self.is_a(t, "device") for a in clause.args for t in a.chunk.terms)
         for arg in list(clause.args):
             if arg.chunk.kind != "there":
                 continue
@@ -404,8 +403,9 @@ class Reader(Places):
                 continue
             terms = tuple(t for t in self.vocabulary.terms if t.symbol == places[0])[:1]
             arg.chunk = Chunk("entity", arg.chunk.text, terms)
-            if arg.prep == "source" and devices:  # "switch the light off there": "off" says the state, the
-                arg.prep, arg.prep_text = "place", "in"  # room is where the light must be
+            if arg.prep == "source" and names_device(clause.args, self.vocabulary):
+                # "switch the light off there": "off" says the state; the room is where the light must be
+                arg.prep, arg.prep_text = "place", "in"
 
     # ------------------------------------------------------------------ arguments
 

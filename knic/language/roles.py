@@ -431,11 +431,10 @@ def _operating(reader: Resolver, clause: Clause, previous: Frames, groups: list[
     elif clause.states:
         state = clause.states[-1]
     members = [m for d in devices for m in reader.vocabulary.members(d)]
-    lights = all(reader.vocabulary.is_subtype(reader.vocabulary.type_of(m) or "", "light") for m in members)
+    lights = _all_are(reader.vocabulary, members, "light")
     if state in _LIGHT_STATES and lights:
         state = _LIGHT_STATES[state]  # "open the left light": switch it on
-    blinds = all(reader.vocabulary.is_subtype(reader.vocabulary.type_of(m) or "", "blinds") for m in members)
-    if state in _BLINDS_STATES and blinds and members:
+    if state in _BLINDS_STATES and _all_are(reader.vocabulary, members, "blinds"):
         state = _BLINDS_STATES[state]  # "turn the blinds off": close them
     # "the lights please"; "dim the lounge", "set the dimmer": how far
     if state is None and (clause.verb is None or not lights):
@@ -450,6 +449,11 @@ def _operating(reader: Resolver, clause: Clause, previous: Frames, groups: list[
 _LIGHT_STATES = {"open": "on", "closed": "off"}
 #: blinds switched on or off are opened or closed (the level each means)
 _BLINDS_STATES = {"on": "open", "off": "closed"}
+
+
+def _all_are(vocabulary: Vocabulary, symbols: list[str], kind: str) -> bool:
+    """Whether each of the symbols is of type ``kind`` (or a subtype)."""
+    return all(vocabulary.is_subtype(vocabulary.type_of(s) or "", kind) for s in symbols)
 
 
 def _implicit(
