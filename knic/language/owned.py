@@ -1,17 +1,28 @@
-"""A speaker's own furniture, for :func:`knic.language.understanding.understand`: where the speaker has a
-room named after them ("rhys_bedroom"), "my bed" is the bed in that room, when the world has several beds and
-one of them is there ("hoodie from my bed": rhys's single bed, not the double bed or the camp bed). The world
-names no owners of furniture; a person's room is the one sign of whose a piece of it is.
+"""A speaker's and a person's own things and furniture, for :func:`knic.language.understanding.understand`.
+
+* Where the speaker has a room named after them ("rhys_bedroom"), "my bed" is the bed in that room, when the
+  world has several beds and one of them is there ("hoodie from my bed": rhys's single bed, not the double bed
+  or the camp bed). The world names no owners of furniture; a person's room is the one sign of whose a piece
+  of it is.
+* Where a thing's name holds a person's name ("kerry_keys", "maisie_lunchbox"), "my keys" said by kerry,
+  "kerry's keys", "kerrys keys" (typed without the apostrophe) and "her keys" once kerry was named are that
+  thing: the world names its owner. Said by someone who owns none of them, "my keys" still asks which.
+* A person's name with an "s" and no apostrophe before a word ("get tylers basketball") is said as the
+  owner ("tyler's"), not as the one to give it to.
 """
 
 from __future__ import annotations
 
 import re
+from functools import lru_cache
 
 from knic.language.shortnames import contains
 from knic.language.vocabulary import Vocabulary
 
 _MY = re.compile(r"\b(my|ma) ([a-z]+(?: [a-z]+)?)\b", re.IGNORECASE)
+_WORD = re.compile(r"[a-z']+")
+_SPEAKERS = ("my", "ma", "mine")
+_OTHERS = ("his", "her", "their")
 
 
 def own_room(vocabulary: Vocabulary, speaker: str) -> str | None:
@@ -26,8 +37,10 @@ def own_room(vocabulary: Vocabulary, speaker: str) -> str | None:
 
 
 def owned_read(text: str, vocabulary: Vocabulary, speaker: str) -> str:
-    """``text`` with "my <furniture>" said as "the <furniture> in <the speaker's room>" where that tells one
-    of several pieces of furniture of that name (see the module docstring); else ``text``."""
+    """``text`` with a person's own things said by their names, and "my <furniture>" said as "the
+    <furniture> in <the speaker's room>" where that tells one of several pieces of furniture of that name (see
+    the module docstring); else ``text``."""
+    text = _things_read(text, vocabulary, speaker)
     room = own_room(vocabulary, speaker)
     if room is None:
         return text
@@ -53,3 +66,88 @@ def _furniture_named(vocabulary: Vocabulary, said: str) -> list[str]:
         if vocabulary.is_subtype(t.type, "furniture") and (t.phrase == said or t.phrase.endswith(" " + said))
     }
     return sorted(found)
+
+
+@lru_cache(maxsize=16)
+def _owned(vocabulary: Vocabulary) -> tuple[tuple[str, ...], dict[tuple[str, str], str]]:
+    """The people's names, and (owner, the rest of a thing's name) -> the thing's name, for the things whose
+    names hold a person's name ("kerry keys": ("kerry", "keys"))."""
+    people = sorted(
+        {t.phrase for t in vocabulary.terms if vocabulary.is_subtype(t.type, "person")}, key=lambda p: -len(p)
+    )
+    owned: dict[tuple[str, str], str] = {}
+    for term in vocabulary.terms:
+        if not vocabulary.is_subtype(term.type, "item"):
+            continue
+        words = term.phrase.split()
+        for person in people:
+            said = person.split()
+            at = next((i for i in range(len(words)) if words[i : i + len(said)] == said), None)
+            rest = words[:at] + words[at + len(said) :] if at is not None else []
+            if rest:
+                owned.setdefault((person, " ".join(rest)), term.phrase)
+                break
+    return tuple(people), owned
+
+
+def _things_read(text: str, vocabulary: Vocabulary, speaker: str) -> str:
+    """``text`` with the owned things of the module docstring said by their names (the rest kept as said)."""
+    people, owned = _owned(vocabulary)
+    if not people:
+        return text
+    spans = list(_WORD.finditer(text.lower()))
+    words = [m.group(0) for m in spans]
+    me = vocabulary.phrase_of(speaker)
+    last = ""  # the person named latest, whom "his" or "her" means
+    changes: list[tuple[int, int, str]] = []  # (first word, word after the last, said instead)
+    i = 0
+    while i < len(words):
+        owner, end = _owner_at(words, i, people)
+        if owner is None and words[i] in _SPEAKERS:
+            owner, end = me, i + 1
+        elif owner is None and words[i] in _OTHERS and last:
+            owner, end = last, i + 1
+        elif owner is None:
+            last = next((p for p in people if words[i : i + len(p.split())] == p.split()), None) or last
+            i += 1
+            continue
+        if words[i] not in _SPEAKERS + _OTHERS:
+            last = owner
+        thing = _owned_thing(owned, owner, words[end : end + 2])
+        if thing is not None:
+            changes.append((i, end + thing[1], "the " + thing[0]))
+            i = end + thing[1]
+            continue
+        if words[end - 1] == owner.split()[-1] + "s":  # "tylers basketball"
+            changes.append((end - 1, end, owner.split()[-1] + "'s"))
+        i = end
+    for first, after, said in reversed(changes):
+        text = text[: spans[first].start()] + said + text[spans[after - 1].end() :]
+    return text
+
+
+def _owner_at(words: list[str], i: int, people: tuple[str, ...]) -> tuple[str | None, int]:
+    """The person said as an owner at ``words[i]`` ("kerry's", "kerrys", "james'") and where that ends."""
+    for person in people:
+        said = person.split()
+        end = i + len(said)
+        if end > len(words) or words[i : end - 1] != said[:-1]:
+            continue
+        last = said[-1]
+        forms = (last + "'s", last + "'") + ((last + "s",) if not last.endswith("s") else ())
+        if words[end - 1] in forms and end < len(words):
+            return person, end
+    return None, i
+
+
+def _owned_thing(owned: dict[tuple[str, str], str], owner: str, after: list[str]) -> tuple[str, int] | None:
+    """The name of ``owner``'s thing said by the (one or two) words ``after``, and how many words it took."""
+    for n in (2, 1):
+        said = " ".join(after[:n])
+        if len(after) < n:
+            continue
+        forms = (said, said + "s", said[:-1] if said.endswith("s") else said)
+        name = next((owned[(owner, f)] for f in forms if (owner, f) in owned), None)
+        if name is not None:
+            return name, n
+    return None

@@ -55,6 +55,9 @@ class Places:
                 kept = self._near(candidates, rooms)  # "the bedside table next to the bed"
             if not kept and all(self.is_a(t, "light") for t in candidates):
                 kept = self._dimmers_in(rooms)  # "the living room light" where a dimmer is the room's light
+            elif grouped and self._all_said(head) and all(self.is_a(t, "light") for t in candidates):
+                # "all the lights in the bedroom": its bedside lamp too, a dimmer being a light that dims
+                kept += tuple(t for t in self._dimmers_in(rooms) if t.symbol not in {k.symbol for k in kept})
             if not kept:  # "the desk in the den": the writing desk there, though the box room has a "desk"
                 also = self.chunker.also_named(head.chunk.text)
                 kept = tuple(t for t in also if any(self._within(t, r) for r in rooms))
@@ -115,6 +118,11 @@ class Places:
         """The dimmers (dimmable lights) in the rooms, one term each."""
         found = {t.symbol: t for t in self.vocabulary.terms if self.is_a(t, "dimmer") and not t.is_group}
         return tuple(t for t in found.values() if any(self._within(t, r) for r in rooms))
+
+    @staticmethod
+    def _all_said(arg: Arg) -> bool:
+        """Whether "all" was said of the argument ("all the lights", as one name or as a quantity)."""
+        return arg.quantity == "all" or arg.chunk.text.split()[:1] == ["all"]
 
     def _near(self, candidates: Sequence[Term], landmarks: Sequence[Term]) -> tuple[Term, ...]:
         """Of the candidates said with a landmark ("next to the bed"), those in the landmark's room; a lone

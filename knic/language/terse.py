@@ -214,7 +214,9 @@ def switched_only(vocabulary: Vocabulary, arg: Arg, args: list[Arg], levelled: b
         LanguageError: the room's lights named can only be switched on or off.
     """
     terms = arg.chunk.terms
-    if not levelled or not terms or not all(vocabulary.is_subtype(t.type, "light") for t in terms):
+    dims = [vocabulary.is_subtype(t.type, "dimmer") for t in terms]
+    lit = [d or vocabulary.is_subtype(t.type, "light") for d, t in zip(dims, terms, strict=True)]
+    if not levelled or not terms or not all(lit) or all(dims):  # lights, or a room's lights and dimmers
         return
     rooms = [
         a
