@@ -13,8 +13,42 @@ from knic.language.vocabulary import Vocabulary
 
 def learners_read(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
     """The chunks with the orders of this module put as a command says them."""
-    said = subject_dropped(appositions_dropped(chunks, vocabulary))
+    said = subject_dropped(appositions_dropped(helped_to(chunks), vocabulary))
+    said = carried_in(said, vocabulary)
     return verb_last_moved(own_going_dropped(room_told(it_me(said), vocabulary)))
+
+
+def helped_to(chunks: list[Chunk]) -> list[Chunk]:
+    """ "please help me to on the landing light", "kindly help me off the fan" (Nigerian English, where "on"
+    and "off" are verbs): "help me (to)" before "on" or "off" is politeness; the switching is the request."""
+    for i in range(len(chunks) - 2):
+        if chunks[i].kind != "verb" or chunks[i].text != "help" or chunks[i + 1].kind != "me":
+            continue
+        at = i + 2 + (chunks[i + 2].text == "to")
+        if (
+            at + 1 < len(chunks)
+            and chunks[at].text in ("on", "off")
+            and chunks[at + 1].kind in ("det", "entity")
+        ):
+            return [*chunks[:i], *chunks[at:]]
+    return chunks
+
+
+def carried_in(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
+    """ "bring me in the post", "bring in the washing": "in" right after a verb of carrying (and whom for)
+    and before a thing, not a place, says only that it comes indoors."""
+    out = list(chunks)
+    for i in range(len(out) - 1, 0, -1):
+        if out[i].kind != "prep" or out[i].text != "in":
+            continue
+        verb = i - 1 - (out[i - 1].kind in ("me", "entity") and i > 1 and out[i - 2].kind == "verb")
+        if out[verb].kind != "verb" or "BRINGING" not in out[verb].frames:
+            continue
+        at = past_determiners(out, i + 1)
+        thing = at < len(out) and out[at].kind == "entity" and out[at].terms
+        if thing and all(vocabulary.is_subtype(t.type, "item") for t in out[at].terms):
+            del out[i]
+    return out
 
 
 def appositions_dropped(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:

@@ -232,3 +232,22 @@ def places_before(previous: Sequence[CommandFrame], args: Sequence[Arg], vocabul
 def names_device(args: Sequence[Arg], vocabulary: Vocabulary) -> bool:
     """Whether some argument names a device."""
     return any(vocabulary.is_subtype(t.type, "device") for a in args for t in a.chunk.terms)
+
+
+def synonym_only(arg: Arg, vocabulary: Vocabulary) -> None:
+    """Refuse a thing said by words the world does not know and a last word only a synonym gives ("my hearing
+    aid": no "aid" ends a name of the world's own, only the plasters' "band aids"); "the big light" is still a
+    light where the world names lights.
+
+    Raises:
+        LanguageError: the thing said so, named.
+    """
+    chunk = arg.chunk
+    items = all(vocabulary.is_subtype(t.type, "item") for t in chunk.terms)
+    if not arg.modifiers or not chunk.terms or not items:
+        return
+    if all(t.given and t.phrase != chunk.text for t in chunk.terms):
+        ends = {t.phrase.split()[-1] for t in vocabulary.terms if not t.given}
+        if not ends & {chunk.text, chunk.text + "s", chunk.text[:-1]}:
+            said = " ".join((*arg.modifiers, chunk.text))
+            raise LanguageError(f"there is no '{said}' here: this world has nothing called that")

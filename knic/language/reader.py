@@ -40,7 +40,7 @@ from knic.language.commands import CommandLanguage, command_language
 from knic.language.frames import KIND_NAMES, KIND_PLURALS, SPEAKER, CommandFrame
 from knic.language.household import ones_named, other_one, said_around, words_tidied
 from knic.language.learners import learners_read
-from knic.language.naming import names_device, places_before, said_named
+from knic.language.naming import names_device, places_before, said_named, synonym_only
 from knic.language.places import Places
 from knic.language.roles import INTERPRETERS
 from knic.language.segments import (
@@ -365,6 +365,7 @@ class Reader(Places):
                 unsettled = unsettled or f"which {arg.chunk.text} do you mean: {self._listed(items)}?"
             if arg.consumed or arg.chunk.kind != "entity" or len(symbols) != 1:
                 continue
+            synonym_only(arg, self.vocabulary)  # "my hearing aid, where is it": no plasters
             symbol = symbols.pop()
             place = any(self.is_a(t, "room") or self.is_a(t, "furniture") for t in arg.chunk.terms)
             if arg.prep == "place" and not place and last is not None:
@@ -435,14 +436,8 @@ class Reader(Places):
             things = " or ".join(KIND_PLURALS.get(c, c) for c in categories)
             raise AmbiguityError(f"which {things} do you mean by '{chunk.text}'? Name them, please")
         terms = [t for t in chunk.terms if any(self.is_a(t, c) for c in categories)]
-        items = all(self.is_a(t, "item") for t in chunk.terms)
-        if arg.modifiers and terms and items and all(t.given and t.phrase != chunk.text for t in chunk.terms):
-            # "my hearing aid": no "aid" ends a name of the world's own, only one a synonym gives ("band
-            # aids" for the plasters); "the big light" is still a light where the world names lights
-            ends = {t.phrase.split()[-1] for t in self.vocabulary.terms if not t.given}
-            if not ends & {chunk.text, chunk.text + "s", chunk.text[:-1]}:
-                said = " ".join((*arg.modifiers, chunk.text))
-                raise LanguageError(f"there is no '{said}' here: this world has nothing called that")
+        if terms:
+            synonym_only(arg, self.vocabulary)  # "my hearing aid" is no "band aid" (naming.py)
         if not terms:
             kinds = " or ".join(KIND_NAMES.get(c, c) for c in categories)
             raise LanguageError(f"'{chunk.text}' is not {kinds}")

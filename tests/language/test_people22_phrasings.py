@@ -9,7 +9,13 @@ tuned on, ``tests/fixtures/language/people22/terraced_house.yaml``) the reader f
 * "all the lights" of a room are its dimmers too ("turn off all the lights in the main bedroom": the ceiling
   light and the bedside lamp); a level asked of them still sets the dimmers only; "the lights" there (as a
   dark room asks for) are still those named lights;
-* "while you're at it" is talk around the request.
+* "while you're at it" and "at all" ("where is it at all", Irish) are talk around the request;
+* "help me (to)" before "on" or "off" (Nigerian English, where they are verbs: "please help me to on the
+  landing light") is politeness; "help me to the bathroom" still goes along;
+* "in" right after a verb of carrying and before a thing ("bring me in the post") says it comes indoors;
+  "in here" is here; "outta" is "out of";
+* a thing said before the request by an unknown word and a last word only a synonym gives ("my hearing aid,
+  where is it") is refused naming it, as it is said after the verb.
 """
 
 from __future__ import annotations
@@ -131,3 +137,38 @@ def test_while_you_are_at_it_is_talk(house: Vocabulary) -> None:
     assert [f.to_dict() for f in result.frames] == [
         {"frame": "OPERATING", "device": "kitchen_blind", "state": "closed"}
     ]
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        (
+            "please help me to on the landing light",
+            [{"frame": "OPERATING", "device": "landing_light", "state": "on"}],
+        ),
+        (
+            "kindly help me off the bathroom light",
+            [{"frame": "OPERATING", "device": "bathroom_light", "state": "off"}],
+        ),
+        ("help me to the bathroom", [{"frame": "ACCOMPANYING", "theme": "me", "goal": "bathroom"}]),
+        (
+            "bring me in the post from the hall table",
+            [{"frame": "BRINGING", "theme": "post", "source": "hall_table", "beneficiary": "me"}],
+        ),
+        ("bring the throw in here to me", [{"frame": "BRINGING", "theme": "throw", "beneficiary": "me"}]),
+        ("bring the laptop in the kitchen", [{"frame": "BRINGING", "theme": "laptop", "goal": "kitchen"}]),
+        ("where is my shawl at all", [{"frame": "SEARCHING", "theme": "shawl"}]),
+        (
+            "grab the milk outta the fridge",
+            [{"frame": "TAKING", "theme": "milk", "source": "fridge"}],
+        ),
+    ],
+)
+def test_helped_to_carried_in_and_at_all(house: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
+    assert frames_read(house, text, "emeka") == frames
+
+
+@pytest.mark.parametrize("text", ["my hearing aid, where is it at all", "find my hearing aid"])
+def test_a_hearing_aid_said_first_is_no_plaster(house: Vocabulary, text: str) -> None:
+    result = understand(text, house, speaker="bridget")
+    assert not result.accepted and "no 'hearing aid'" in result.reason
