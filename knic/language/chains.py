@@ -206,14 +206,17 @@ def chain(
         sought_again = any(f.kind == "SEARCHING" and f.get("theme") == frame.get("theme") for f in later)
         if frame.kind == "SEARCHING" and frame.get("ground") is None and sought_again:
             dropped.add(index)
-    kept_frames: list[CommandFrame] = []
+    kept_frames: dict[int, CommandFrame] = {}
     for index, frame in enumerate(out):  # "tracy wants her mug, take it to her": said twice, done once
         if index in dropped:
             continue
-        if any(frame.kind == k.kind and frame.args == k.args for k in kept_frames):
-            dropped.add(index)
-        else:
-            kept_frames.append(frame)
+        twin = next((k for k, f in kept_frames.items() if (frame.kind, frame.args) == (f.kind, f.args)), None)
+        if twin is None:
+            kept_frames[index] = frame
+            continue
+        dropped.add(index)
+        if index not in waypoints:  # "go to the landing and wait for me there": the place is kept
+            waypoints.discard(twin)
     if dropped:
         kept = [i for i in range(len(out)) if i not in dropped]
         out = [out[i] for i in kept]

@@ -33,6 +33,8 @@ class Places:
         "the left light in the bedroom") or before them ("the kitchen table" said as two names)."""
         for index in range(1, len(args)):
             head, place = args[index - 1], args[index]
+            if self._room_first(head, place):
+                continue
             if (
                 place.prep not in ("place", None)
                 or place.chunk.kind != "entity"
@@ -118,6 +120,26 @@ class Places:
         """The dimmers (dimmable lights) in the rooms, one term each."""
         found = {t.symbol: t for t in self.vocabulary.terms if self.is_a(t, "dimmer") and not t.is_group}
         return tuple(t for t in found.values() if any(self._within(t, r) for r in rooms))
+
+    def _room_first(self, room: Arg, place: Arg) -> bool:
+        """ "put the soap in the downstairs toilet on the basin": a room said with "in" right before a piece
+        of furniture of a name that fits several narrows it to the one there (the room is then said)."""
+        if (
+            room.prep != "place"
+            or room.prep_text not in ("in", "inside")
+            or place.prep not in ("place", "goal")
+        ):
+            return False
+        rooms = [t for t in room.chunk.terms if self.is_a(t, "room")]
+        pieces = [t for t in place.chunk.terms if self.is_a(t, "furniture")]
+        if not rooms or len(rooms) != len(room.chunk.terms) or len(pieces) != len(place.chunk.terms):
+            return False
+        kept = tuple(t for t in pieces if any(self._within(t, r) for r in rooms))
+        if not kept or len({t.symbol for t in pieces}) < 2:
+            return False
+        place.chunk = Chunk("entity", place.chunk.text, kept, role=place.chunk.role)
+        room.consumed = True
+        return True
 
     @staticmethod
     def _all_said(arg: Arg) -> bool:

@@ -52,7 +52,7 @@ from knic.language.segments import (
     statements_dropped,
 )
 from knic.language.selecting import described
-from knic.language.terse import for_asker, room_alone, told_read
+from knic.language.terse import for_asker, room_alone, told_read, wished_first
 from knic.language.tidy import (
     SEGMENT_END,
     after_moved,
@@ -86,6 +86,9 @@ class Reader(Places):
         self._units = frozenset(p.split()[0] for p in self.language.percent)
         level_words = self.language.prepositions.get("level", ())
         self._before_numbers = frozenset(p.split()[-1] for p in level_words) | {"to", "at"}
+        #: what the speaker says they want ("i need the duvet, bring it to the bedroom": terse.wished_first)
+        wishes = (p for v in self.language.verbs if v.name in ("want", "need") for p in v.phrases)
+        self._wishes = frozenset(p for p in wishes if p != "i'll have")  # an order, as "can i have" is
 
     def chunks(self, tokens: Sequence[str]) -> list[Chunk]:
         """The chunks of a normalised token list (see :class:`~knic.language.chunks.Chunker`)."""
@@ -270,11 +273,18 @@ class Reader(Places):
             frames.extend(group)
         if not frames:  # every clause was talk
             raise skipped or LanguageError(f"no action in '{' '.join(tokens)}'")
-        if self._asked_first(clauses[0], frames):  # "is there a parcel on the hall table? bring it to me"
-            if frames[0].get("ground"):
-                located.setdefault(frames[0].args["theme"], frames[0].args["ground"])
-            frames = frames[1:]
-            ask_where, held = {i - 1 for i in ask_where if i}, {i - 1 for i in held if i}
+        # "is there a parcel on the hall table? bring it to me", "i need the duvet from the cupboard, bring it
+        # to the back bedroom": the first only says what and where the thing is
+        n = (
+            1
+            if self._asked_first(clauses[0], frames)
+            else wished_first(clauses[0], groups[1:2], frames, self._wishes)
+        )
+        for frame in frames[:n]:
+            if frame.get("ground") or frame.get("source"):
+                located.setdefault(frame.args["theme"], frame.get("ground") or frame.args["source"])
+        frames = frames[n:]
+        ask_where, held = {i - n for i in ask_where if i >= n}, {i - n for i in held if i >= n}
         reading = chain(self._placed(frames, located), self.vocabulary, ask_where=ask_where, held=held)
         reading = settled(reading, self.vocabulary)  # "open the blinds and set them to 40": at 40
         return for_asker(reading, asker)  # "tracy asks the robot to fetch her glasses": for tracy

@@ -18,14 +18,14 @@ the third person (used by :class:`knic.language.reader.Reader` and :mod:`knic.la
 
 from __future__ import annotations
 
-from collections.abc import Sequence
+from collections.abc import Collection, Sequence
 from dataclasses import replace
 from itertools import pairwise
 
 from core.errors import LanguageError
 from knic.language.chains import Reading
 from knic.language.chunks import Chunk, Chunker, past_determiners
-from knic.language.clauses import Arg
+from knic.language.clauses import Arg, Clause
 from knic.language.frames import SPEAKER, CommandFrame
 from knic.language.vocabulary import Term, Vocabulary
 
@@ -345,3 +345,27 @@ def robot_unnamed(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
     while end > start and robot(chunks[end - 1]):
         end -= 1
     return chunks[start:end] if (start, end) != (0, len(chunks)) else chunks
+
+
+def wished_first(
+    clause: Clause, first: list[list[CommandFrame]], frames: list[CommandFrame], wishes: Collection[str]
+) -> int:
+    """How many actions the command opens with that only say what the speaker wants ("i need the spare duvet
+    from the airing cupboard", a verb of ``wishes``) when it then sends each of those things elsewhere ("bring
+    it to the back bedroom", "put them on the table"): the wish says what and where from, the later action
+    what to do, with no bringing of its own to the speaker; else 0. A wish said with where it should go, or
+    followed by a bringing to the speaker, is left as said."""
+    group = first[0] if clause.verb is not None and clause.verb.text in wishes and len(first) == 1 else []
+    if (
+        not group
+        or frames[: len(group)] != group
+        or any(f.kind != "BRINGING" or f.get("goal") for f in group)
+    ):
+        return 0
+    later = {
+        f.get("theme")
+        for f in frames[len(group) :]
+        if f.kind == "PLACING"
+        or (f.kind == "BRINGING" and (f.get("goal") or f.get("beneficiary") != SPEAKER))
+    }
+    return len(group) if all(f.get("theme") in later for f in group) else 0

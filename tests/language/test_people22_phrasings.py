@@ -15,7 +15,13 @@ tuned on, ``tests/fixtures/language/people22/terraced_house.yaml``) the reader f
 * "in" right after a verb of carrying and before a thing ("bring me in the post") says it comes indoors;
   "in here" is here; "outta" is "out of";
 * a thing said before the request by an unknown word and a last word only a synonym gives ("my hearing aid,
-  where is it") is refused naming it, as it is said after the verb.
+  where is it") is refused naming it, as it is said after the verb;
+* a command that opens with what the speaker wants ("I need the spare duvet from the airing cupboard") and
+  then says what to do with it ("bring it to the back bedroom") is that one action, from where the wish said;
+* "go to the landing and wait for me there": the place said twice is kept as the goal, not dropped as a
+  place on the way;
+* a room said with "in" right before a piece of furniture of a name that fits several ("put the hand soap in
+  the downstairs toilet on the basin") is where that piece is.
 """
 
 from __future__ import annotations
@@ -172,3 +178,61 @@ def test_helped_to_carried_in_and_at_all(house: Vocabulary, text: str, frames: l
 def test_a_hearing_aid_said_first_is_no_plaster(house: Vocabulary, text: str) -> None:
     result = understand(text, house, speaker="bridget")
     assert not result.accepted and "no 'hearing aid'" in result.reason
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        (
+            "please I need the spare duvet from the airing cupboard, bring it to the back bedroom",
+            [
+                {
+                    "frame": "BRINGING",
+                    "theme": "spare_duvet",
+                    "source": "airing_cupboard",
+                    "goal": "back_bedroom",
+                }
+            ],
+        ),
+        (
+            "I want the laptop, put it on the dining table",
+            [{"frame": "PLACING", "theme": "laptop", "goal": "dining_table"}],
+        ),
+        (
+            "i want the laptop and the bible, bring them to the kitchen",
+            [
+                {"frame": "BRINGING", "theme": "laptop", "goal": "kitchen"},
+                {"frame": "BRINGING", "theme": "bible", "goal": "kitchen"},
+            ],
+        ),
+        ("i need the laptop", [{"frame": "BRINGING", "theme": "laptop", "beneficiary": "me"}]),
+        (
+            "I want to ask, is there milk in the fridge? if there is, bring it for me",
+            [{"frame": "BRINGING", "theme": "milk", "source": "fridge", "beneficiary": "me"}],
+        ),
+    ],
+)
+def test_a_wish_then_what_to_do_with_it_is_one_action(
+    house: Vocabulary, text: str, frames: list[dict[str, str]]
+) -> None:
+    assert frames_read(house, text, "emeka") == frames
+
+
+@pytest.mark.parametrize(
+    "text", ["I beg you, go to the landing and wait for me there", "go to the landing and stay there"]
+)
+def test_waiting_there_keeps_the_place(house: Vocabulary, text: str) -> None:
+    result = understand(text, house, speaker="emeka")
+    assert [str(g) for g in result.goals] == ["(robot_at robbie landing)"]
+
+
+@pytest.mark.parametrize(
+    ("text", "goal"),
+    [
+        ("put the hand soap in the downstairs toilet on the basin", "hand_basin"),
+        ("put the plasters in the bathroom on the basin", "washbasin"),
+        ("put the laptop in the kitchen on the table", "dining_table"),
+    ],
+)
+def test_a_room_said_before_the_furniture_tells_which(house: Vocabulary, text: str, goal: str) -> None:
+    assert frames_read(house, text, "ana")[0]["goal"] == goal
