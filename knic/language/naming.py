@@ -29,8 +29,8 @@ from knic.language.chains import AmbiguityError
 from knic.language.clauses import Arg
 from knic.language.frames import CommandFrame
 from knic.language.goals import room_of
-from knic.language.shortnames import containers, contains
-from knic.language.vocabulary import Term, Vocabulary
+from knic.language.shortnames import containers, contains, english_opposites
+from knic.language.vocabulary import Term, Vocabulary, english_synonyms
 
 #: words said between a thing's name and the word its name starts with, and what the name keeps of them
 _AROUND = {"of": (), "for": (), "under": ("under",)}
@@ -50,7 +50,12 @@ def said_named(segments: list[list[str]], vocabulary: Vocabulary, known: Collect
         AmbiguityError: a first name begins several people's names.
     """
     phrases, people, rooms = _names(vocabulary)
-    out = [_contents(_turned_round(s, phrases), phrases) for s in segments]
+    for segment in segments:
+        _opposite_refused(segment, phrases)
+    canon = _canonical_names(vocabulary)
+    out = [
+        _synonyms_said(_contents(_turned_round(s, phrases, canon), phrases), phrases, canon) for s in segments
+    ]
     out = [_asked_for(_first_names(s, people, phrases, known), people) for s in out]
     return _persons_rooms(out, people, rooms)
 
@@ -64,9 +69,80 @@ def _names(vocabulary: Vocabulary) -> tuple[frozenset[str], list[list[str]], lis
     return phrases, people, rooms
 
 
-def _turned_round(words: list[str], phrases: Collection[str]) -> list[str]:
+def _opposite_refused(words: list[str], phrases: Collection[str]) -> None:
+    """Refuse a name said with the other word of an opposite pair ("the back door" where the world has a
+    front door and no back door; "the left lamp" where it has only a right lamp): it names nothing here, not
+    the thing the world has (``synonyms.yaml`` opposites).
+
+    Raises:
+        LanguageError: the name said, where the world has only its opposite.
+    """
+    opposite = english_opposites()
+    for i, word in enumerate(words):
+        others = opposite.get(word, frozenset())
+        for n in (2, 1) if others else ():
+            rest = words[i + 1 : i + 1 + n]
+            tail, said = " ".join(rest), " ".join(words[i : i + 1 + n])
+            if len(rest) < n or tail in phrases or any(p == said or p.endswith(" " + said) for p in phrases):
+                continue
+            if any(p.endswith(" " + tail) and p.split()[-n - 1] in others for p in phrases):
+                raise LanguageError(f"there is no '{said}' here: this world has nothing called that")
+
+
+def _canonical(words: Sequence[str]) -> str:
+    """A name with each synonym (``synonyms.yaml``) said as the first word of its set ("telly clicker": "tv
+    remote")."""
+    sets = _synonym_sets()
+    out: list[str] = []
+    i = 0
+    while i < len(words):
+        found = next(((m, first) for m, first in sets if list(words[i : i + len(m)]) == m), None)
+        out += found[1] if found else [words[i]]
+        i += len(found[0]) if found else 1
+    return " ".join(out)
+
+
+@lru_cache(maxsize=1)
+def _synonym_sets() -> tuple[tuple[list[str], list[str]], ...]:
+    """(a synonym's words, the first of its set's words), the longest synonyms first."""
+    pairs = [(m.split(), group[0].split()) for group in english_synonyms() for m in group]
+    return tuple(sorted(pairs, key=lambda pair: -len(pair[0])))
+
+
+@lru_cache(maxsize=16)
+def _canonical_names(vocabulary: Vocabulary) -> dict[str, str]:
+    """A name said with synonyms (:func:`_canonical`) -> the world's name, where it names one thing."""
+    symbols: dict[str, set[str]] = {}
+    named: dict[str, str] = {}
+    for term in vocabulary.terms:
+        if term.type != "level" and len(term.phrase.split()) > 1:
+            said = _canonical(term.phrase.split())
+            symbols.setdefault(said, set()).add(term.symbol)
+            named.setdefault(said, term.phrase)
+    return {said: named[said] for said, found in symbols.items() if len(found) == 1}
+
+
+def _synonyms_said(words: list[str], phrases: Collection[str], canon: dict[str, str]) -> list[str]:
+    """ "the telly clicker" -> "the tv remote": a name said with more than one synonym of its words, which
+    the names the synonyms give (one word replaced at a time) do not reach."""
+    out = list(words)
+    i = 0
+    while i < len(out):
+        for n in (4, 3, 2):
+            span = out[i : i + n]
+            said = " ".join(span)
+            name = canon.get(_canonical(span)) if len(span) == n and said not in phrases else None
+            if name is not None and name != said:
+                out[i : i + n] = name.split()
+                break
+        i += 1
+    return out
+
+
+def _turned_round(words: list[str], phrases: Collection[str], canon: dict[str, str]) -> list[str]:
     """ "the blind of the skylight" -> "the skylight blind", "the shelf for books" -> "the bookshelf", where
-    that is a name and the words said are none."""
+    that is a name (or one said with synonyms: "the clicker for the telly", the tv remote) and the words said
+    are none."""
     out = list(words)
     for i in range(len(out) - 2, 0, -1):
         kept = _AROUND.get(out[i])
@@ -82,8 +158,8 @@ def _turned_round(words: list[str], phrases: Collection[str]) -> list[str]:
                     (m, name)
                     for m in range(min(3, len(out) - after), 0, -1)
                     if " ".join(out[i - n : after + m]) not in phrases
-                    for name in _the_other_way(list(kept), out[after : after + m], head)
-                    if name in phrases
+                    for said in _the_other_way(list(kept), out[after : after + m], head)
+                    if (name := said if said in phrases else canon.get(_canonical(said.split()), ""))
                 ),
                 None,
             )

@@ -63,6 +63,7 @@ from knic.language.tidy import (
     fluent,
     forbidden_dropped,
     left_undone,
+    modal_unnamed,
     negated_dropped,
     relative_dropped,
     repaired,
@@ -214,7 +215,7 @@ class Reader(Places):
         chunks = said_around(other_one(chunks, self.vocabulary), self.vocabulary, self.chunker)
         chunks = restated(negated_dropped(chunks, self.language.negations), self._kind_of)
         chunks = sayings_dropped(doings_dropped(talk_dropped(repaired(left_undone(chunks), self._kind_of))))
-        chunks = room_alone(chunks, self.vocabulary, self.chunker)  # "ok robot, dining room"
+        chunks = modal_unnamed(room_alone(chunks, self.vocabulary, self.chunker))  # "ok robot, dining room"
         verbless = not any(c.kind == "verb" for c in chunks)
         if not chunks or (verbless and [c.kind for c in chunks[:3]] == ["entity", "det", "entity"]):
             # "light the candle", as "water the plant": a name said as a verb the robot has not

@@ -97,6 +97,29 @@ def english_nearer() -> tuple[frozenset[str], ...]:
 
 
 @lru_cache(maxsize=1)
+def english_opposites() -> dict[str, frozenset[str]]:
+    """Each word of the ``opposites`` pairs of ``synonyms.yaml`` -> the words opposite it, read once.
+
+    Raises:
+        LanguageError: not a list of pairs of words.
+    """
+    data = read_yaml(_FILE, "synonyms", LanguageError) or {}
+    raw = data.get("opposites", []) if isinstance(data, dict) else []
+    if not isinstance(raw, list) or not all(
+        isinstance(pair, list)
+        and len(pair) == 2
+        and all(isinstance(w, str) and len(w.split()) == 1 for w in pair)
+        for pair in raw
+    ):
+        raise LanguageError(f"{_FILE}: 'opposites' is a list of pairs of words")
+    out: dict[str, set[str]] = {}
+    for one, other in raw:
+        out.setdefault(one.lower(), set()).add(other.lower())
+        out.setdefault(other.lower(), set()).add(one.lower())
+    return {word: frozenset(others) for word, others in out.items()}
+
+
+@lru_cache(maxsize=1)
 def _units() -> dict[str, str]:
     """``units`` of ``synonyms.yaml``: a thing -> its plural, for furniture made of several of it.
 

@@ -275,8 +275,14 @@ _CUT_OFF = re.compile(r"(?<![\w'-])[\w']+-(?=\s+\S)")
 
 def cut_off_dropped(text: str) -> str:
     """Drop words the speaker broke off to say again ("go to the kit- the kitchen", "bring me the m- the
-    mug"): the determiner said twice is then one (:func:`fluent`)."""
-    return _CUT_OFF.sub("", text)
+    mug"): the determiner said twice is then one (:func:`fluent`); and a tag urging the request on, said last
+    ("bring me the mug, go on"; :data:`_TAG`)."""
+    return _CUT_OFF.sub("", _TAG.sub("", text))
+
+
+#: "go on" said last, after a request ("bring me the mug, go on", "hurry up"): urging, no motion ("the cushion
+#: should go on the sofa" has its place after it)
+_TAG = re.compile(r"(?<=\S)[\s,]+(?:go on|go on now|go on then|hurry up|chop chop)[\s.!]*$", re.IGNORECASE)
 
 
 #: words that forbid the action right after them ("don't go to the kitchen")
@@ -450,3 +456,21 @@ def restated(chunks: list[Chunk], kind_of: Callable[[Chunk], str]) -> list[Chunk
         if start > 0 and out[start - 1].kind == "prep":
             return out[:start] + out[first + 1 :]
     return out
+
+
+#: names' last words that are English modal verbs ("watering can", "last will")
+_MODALS = frozenset({"can", "could", "will", "would", "may", "might", "must", "shall", "should"})
+
+
+def modal_unnamed(chunks: list[Chunk]) -> list[Chunk]:
+    """A modal verb said without a determiner in a command of no verb ("no can not watching full of old
+    photos") is the verb, not the last word of a name ("watering can"): the words are then no request, rather
+    than one for the watering can. "the can" and "bring me the can" still name it."""
+    if any(c.kind == "verb" for c in chunks):
+        return chunks
+    return [
+        Chunk("unknown", c.text)
+        if c.kind == "entity" and c.text in _MODALS and (i == 0 or chunks[i - 1].kind != "det")
+        else c
+        for i, c in enumerate(chunks)
+    ]
