@@ -275,11 +275,19 @@ _CUT_OFF = re.compile(r"(?<![\w'-])[\w']+-(?=\s+\S)")
 
 def cut_off_dropped(text: str) -> str:
     """Drop words the speaker broke off to say again ("go to the kit- the kitchen", "bring me the m- the
-    mug"): the determiner said twice is then one (:func:`fluent`); and a tag urging the request on, said last
-    ("bring me the mug, go on"; :data:`_TAG`)."""
-    return _CUT_OFF.sub("", _TAG.sub("", text))
+    mug"): the determiner said twice is then one (:func:`fluent`); and, said last, a tag urging the request
+    on ("bring me the mug, go on"; :data:`_TAG`) or a pain giving the reason ("my tummy hurts";
+    :data:`_ACHE`)."""
+    return _CUT_OFF.sub("", _ACHE.sub("", _TAG.sub("", text)))
 
 
+#: a pain said last, after a request ("bring me the calpol my tummy hurts", "... my back is killing me"): why
+#: it is asked, no request of its own
+_ACHE = re.compile(
+    r"(?<=\S)[\s,]+(?:because |cos |cause )?(?:my|our) [a-z]+ (?:hurts|aches|is sore|is killing me|"
+    r"hurt|ache|are sore|are killing me)[\s.!]*$",
+    re.IGNORECASE,
+)
 #: "go on" said last, after a request ("bring me the mug, go on", "hurry up"): urging, no motion ("the cushion
 #: should go on the sofa" has its place after it)
 _TAG = re.compile(r"(?<=\S)[\s,]+(?:go on|go on now|go on then|hurry up|chop chop)[\s.!]*$", re.IGNORECASE)

@@ -15,6 +15,8 @@ mends the tokens of one command, before they are cut into chunks:
   light").
 * **Apostrophes left out.** A word nobody knows that is a known word with "s" ("shes", "tracys") is that
   word with "'s".
+* **Spellings of an ending.** A word nobody knows ending in "y" where a name has it ending in "ie", or the
+  other way round, is that word ("hoody": hoodie).
 * **Typos.** A word nobody knows (no known word and no English word) one edit from exactly one known word
   (a letter missing, added, changed or two letters swapped; two edits for words of eight letters or more
   when none is one edit away) is that word: "kitchn", "teh", "brign", "remtoe". A doubled or undoubled
@@ -24,7 +26,8 @@ mends the tokens of one command, before they are cut into chunks:
   ("bathroom drawr") only names count, and several names make the word stand for all of them
   (:meth:`Speller.names_for`), so that it is asked about ("the cug": the cup or the mug?); else the one that
   makes a phrase of the language with the next word wins ("wher is": where, not her or when). A real English
-  word is never guessed at ("the cake" is no coke, "the basket" no blanket): it is refused naming it.
+  word is never guessed at ("the cake" is no coke, "the basket" no blanket): it is refused naming it; except
+  after a word of a name, where one word one edit away ends that name with it ("rubber duk": duck).
 
 English words are those of the pronouncing dictionary the speech side ships (pocketsphinx's cmudict),
 read once, the first time a word no table knows is near a known word (a command of known words never reads
@@ -158,7 +161,7 @@ class Speller:
                 out.append(heard)
             else:
                 noun = bool(out) and (self._kind_of(out[-1]) == "det" or out[-1] in self._name_words)
-                meant = self.candidates(token, noun)
+                meant = self.candidates(token, noun) or self._in_name(out, token)
                 if len(meant) > 1 and i + 1 < len(tokens):  # "wher is": where (a phrase with "is"), not her
                     meant = (
                         tuple(w for w in meant if self._kind_of(f"{w} {tokens[i + 1]}") is not None) or meant
@@ -170,6 +173,16 @@ class Speller:
                 out.append(meant[0] if len(meant) == 1 else token)
             i += 1
         return out
+
+    def _in_name(self, before: Sequence[str], word: str) -> tuple[str, ...]:
+        """The one word, one edit from ``word``, that ends a name of the world with the word said before it
+        ("rubber duk": duck), though ``word`` is English: the name's first word tells what was meant."""
+        if not before or before[-1] not in self._name_words or word in self._known or not word.isalpha():
+            return ()
+        if len(word) < _SHORT:
+            return ()
+        near = sorted(w for w in edits(word) if f"{before[-1]} {w}" in self._names and len(w) >= len(word))
+        return tuple(near) if len(near) == 1 else ()
 
     def _ends_phrase(self, before: Sequence[str], word: str) -> bool:
         """Whether ``word`` ends a phrase of the language begun by the one or two words before it."""
@@ -194,6 +207,10 @@ class Speller:
             return ()
         if word.endswith("s") and word[:-1] in self._known and self._english(word) is False:
             return (word[:-1] + "'s",)  # "shes", "tracys": the apostrophe left out
+        # "hoody" for a hoodie, "nighty" for a nightie: the other spelling of an ending
+        variant = word[:-1] + "ie" if word.endswith("y") else word[:-2] + "y" if word.endswith("ie") else ""
+        if variant in self._name_words:
+            return (variant,)
         near = sorted(w for w in edits(word) if w in self._known)
         if len(word) == _SHORT:  # "dsk", "opn", "teh": grown or swapped, never shrunk
             near = [w for w in near if len(w) >= len(word)]

@@ -21,7 +21,11 @@ tuned on, ``tests/fixtures/language/people22/terraced_house.yaml``) the reader f
 * "go to the landing and wait for me there": the place said twice is kept as the goal, not dropped as a
   place on the way;
 * a room said with "in" right before a piece of furniture of a name that fits several ("put the hand soap in
-  the downstairs toilet on the basin") is where that piece is.
+  the downstairs toilet on the basin") is where that piece is;
+* a word right after a word of a name, one edit from the word that ends the name, is that word though it is
+  English ("the rubber duk": duck); a word ending "y" where a name ends it "ie" is that ("my hoody");
+* a pain said last ("bring me the calpol my tummy hurts") gives the reason, no request of its own;
+* "is it going to rain", "will it ...", "the house is very beautiful" ask or say something: no request.
 
 Known gaps of earlier rounds, closed in this one:
 
@@ -316,3 +320,40 @@ def test_the_can_is_still_the_watering_can() -> None:
     assert frames_read(world_of(FLAT), "the can please", "isla") == [
         {"frame": "BRINGING", "theme": "watering_can", "beneficiary": "me"}
     ]
+
+
+@pytest.mark.parametrize(
+    ("speaker", "text", "frames"),
+    [
+        ("maisie", "wher is the rubber duk", [{"frame": "SEARCHING", "theme": "rubber_duck"}]),
+        (
+            "tyler",
+            "brign my hoody to the living room",
+            [{"frame": "BRINGING", "theme": "hoodie", "goal": "living_room"}],
+        ),
+        (
+            "maisie",
+            "pleeease can you bring me the calpol my tummy hurts",
+            [{"frame": "BRINGING", "theme": "calpol", "beneficiary": "me"}],
+        ),
+        (
+            "emeka",
+            "bring me the plasters, my knee is killing me",
+            [{"frame": "BRINGING", "theme": "plasters", "beneficiary": "me"}],
+        ),
+    ],
+)
+def test_typos_in_a_name_and_a_pain_said_last(
+    house: Vocabulary, speaker: str, text: str, frames: list[dict[str, str]]
+) -> None:
+    assert frames_read(house, text, speaker) == frames
+
+
+@pytest.mark.parametrize(
+    "text",
+    ["is it going to rain at all today", "will it be sunny later", "the house is very beautiful", "the cake"],
+)
+def test_weather_and_praise_are_no_request(house: Vocabulary, text: str) -> None:
+    result = understand(text, house, speaker="bridget")
+    assert not result.accepted
+    assert "no action" in result.reason or "no 'cake'" in result.reason
