@@ -53,6 +53,7 @@ def said_named(segments: list[list[str]], vocabulary: Vocabulary, known: Collect
     for segment in segments:
         _opposite_refused(segment, phrases)
     canon = _canonical_names(vocabulary)
+    segments = [_one_said(s, phrases, _told_by_first_word(vocabulary), known) for s in segments]
     out = [
         _synonyms_said(_contents(_turned_round(s, phrases, canon), phrases), phrases, canon) for s in segments
     ]
@@ -120,6 +121,33 @@ def _canonical_names(vocabulary: Vocabulary) -> dict[str, str]:
             symbols.setdefault(said, set()).add(term.symbol)
             named.setdefault(said, term.phrase)
     return {said: named[said] for said, found in symbols.items() if len(found) == 1}
+
+
+@lru_cache(maxsize=16)
+def _told_by_first_word(vocabulary: Vocabulary) -> dict[str, str]:
+    """The first word of the world's longer names -> the name, where the word starts the names of one thing
+    only ("spotty": the spotty mug; not "kitchen", which starts several)."""
+    symbols: dict[str, set[str]] = {}
+    named: dict[str, str] = {}
+    for term in vocabulary.terms:
+        words = term.phrase.split()
+        if len(words) > 1 and not term.given and term.type != "level":
+            symbols.setdefault(words[0], set()).add(term.symbol)
+            named.setdefault(words[0], term.phrase)
+    return {word: named[word] for word, found in symbols.items() if len(found) == 1}
+
+
+def _one_said(
+    words: list[str], phrases: Collection[str], told: dict[str, str], known: Collection[str]
+) -> list[str]:
+    """ "bring me the spotty one": a word that starts the name of one thing only, said before "one", is that
+    thing ("the spotty mug"); a word of the command language or a name of its own stays as said."""
+    out = list(words)
+    for i in range(len(out) - 1, 0, -1):
+        word = out[i - 1]
+        if out[i] == "one" and word in told and word not in phrases and word not in known:
+            out[i - 1 : i + 1] = told[word].split()
+    return out
 
 
 def _synonyms_said(words: list[str], phrases: Collection[str], canon: dict[str, str]) -> list[str]:

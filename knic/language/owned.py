@@ -115,7 +115,8 @@ def _things_read(text: str, vocabulary: Vocabulary, speaker: str) -> str:
             last = owner
         thing = _owned_thing(owned, owner, words[end : end + 2])
         if thing is not None:
-            changes.append((i, end + thing[1], "the " + thing[0]))
+            mine = words[i] in _SPEAKERS  # "grab my keys": still the speaker's own, for them
+            changes.append((i, end + thing[1], ("my " if mine else "the ") + thing[0]))
             i = end + thing[1]
             continue
         if words[end - 1] == owner.split()[-1] + "s":  # "tylers basketball"

@@ -21,7 +21,7 @@ from knic.language.clauses import Arg, Clause
 from knic.language.commands import CommandLanguage
 from knic.language.frames import SPEAKER, CommandFrame
 from knic.language.selecting import came_from
-from knic.language.terse import placed_from, room_lights, switched_only, taken_from_first
+from knic.language.terse import devices_named_in, placed_from, room_lights, switched_only, taken_from_first
 from knic.language.vocabulary import Term, Vocabulary, level_percent
 
 Frames = list[CommandFrame]
@@ -394,6 +394,7 @@ def _operating(reader: Resolver, clause: Clause, previous: Frames, groups: list[
     args = list(clause.args)
     reader.narrow(args)
     devices: list[str] = []
+    named = ""  # the word the latest device was said by ("curtains")
     for index, arg in enumerate(args):
         if arg.consumed or arg.prep == "beneficiary":  # "close the blinds for me"
             continue
@@ -401,6 +402,10 @@ def _operating(reader: Resolver, clause: Clause, previous: Frames, groups: list[
         more = arg.joined or (arg.prep == "place" and index > 0 and args[index - 1].consumed)
         if arg.chunk.kind == "entity" and not any(reader.is_a(t, "device") for t in arg.chunk.terms):
             rooms = [t for t in arg.chunk.terms if reader.is_a(t, "room")]
+            again = devices_named_in(reader.vocabulary, rooms, named) if more and devices else []
+            if again:  # "close the curtains in the bedroom and the back room": the back room's too
+                devices += again
+                continue
             # "dim the lounge to 40": the room's only dimmer; "dim the lounge": how far is then asked
             stateless = not clause.states and (clause.verb is None or clause.verb.state is None)
             own = reader.levelled_in(rooms) if clause.levels or clause.vague or stateless else []
@@ -417,6 +422,7 @@ def _operating(reader: Resolver, clause: Clause, previous: Frames, groups: list[
         )  # "bedroom light to 40"
         reader.prefer_devices(arg, bool(clause.levels or clause.vague), places)
         devices += reader.resolve(arg, ("device",), previous, groups)
+        named = arg.chunk.text
     if not devices:
         devices = _implicit(clause, groups, reader.vocabulary, "device", "light, dimmer or blinds")
     if clause.vague and not clause.levels:

@@ -77,6 +77,24 @@ def room_lights(vocabulary: Vocabulary, rooms: Sequence[Term], state: str | None
     return [group] if group is not None else symbols
 
 
+def devices_named_in(vocabulary: Vocabulary, rooms: Sequence[Term], said: str) -> list[str]:
+    """The devices in the rooms whose own names end in the word a device was said by before ("close the
+    curtains in the bedroom and the back room": the back room curtains), else []."""
+    word = said.split()[-1] if said.split() else ""
+    forms = {word, word + "s", word[:-1] if word.endswith("s") else word}
+    found = [
+        t.symbol
+        for t in vocabulary.terms
+        if word
+        and not t.is_group
+        and not t.given
+        and vocabulary.is_subtype(t.type, "device")
+        and t.phrase.split()[-1] in forms
+        and any(_within(vocabulary, t, r) for r in rooms)
+    ]
+    return list(dict.fromkeys(found))
+
+
 def _within(vocabulary: Vocabulary, device: Term, room: Term) -> bool:
     if room.symbol in vocabulary.locations.get(device.symbol, ()):
         return True

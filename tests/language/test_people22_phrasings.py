@@ -25,7 +25,11 @@ tuned on, ``tests/fixtures/language/people22/terraced_house.yaml``) the reader f
 * a word right after a word of a name, one edit from the word that ends the name, is that word though it is
   English ("the rubber duk": duck); a word ending "y" where a name ends it "ie" is that ("my hoody");
 * a pain said last ("bring me the calpol my tummy hurts") gives the reason, no request of its own;
-* "is it going to rain", "will it ...", "the house is very beautiful" ask or say something: no request.
+* "is it going to rain", "will it ...", "the house is very beautiful" ask or say something: no request;
+* "grab my keys" of the speaker's own keys is still for the speaker, as "grab my glasses" is;
+* a device said in one room and then another ("close the curtains in the main bedroom and the back room") is
+  the device of that name in each;
+* "the spotty one": a word that starts the name of one thing only, said before "one", is that thing.
 
 Known gaps of earlier rounds, closed in this one:
 
@@ -357,3 +361,30 @@ def test_weather_and_praise_are_no_request(house: Vocabulary, text: str) -> None
     result = understand(text, house, speaker="bridget")
     assert not result.accepted
     assert "no action" in result.reason or "no 'cake'" in result.reason
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        ("grab my keys, I'm off out", [{"frame": "BRINGING", "theme": "kerry_keys", "beneficiary": "me"}]),
+        (
+            "close the curtains in the main bedroom and the back room",
+            [
+                {"frame": "OPERATING", "device": "main_bedroom_curtains", "state": "closed"},
+                {"frame": "OPERATING", "device": "back_room_curtains", "state": "closed"},
+            ],
+        ),
+        (
+            "open the blinds in the kitchen and in the box room",
+            [
+                {"frame": "OPERATING", "device": "kitchen_blind", "state": "open"},
+                {"frame": "OPERATING", "device": "box_room_blind", "state": "open"},
+            ],
+        ),
+        ("bring me the spotty one", [{"frame": "BRINGING", "theme": "spotty_mug", "beneficiary": "me"}]),
+    ],
+)
+def test_my_keys_devices_in_two_rooms_and_the_spotty_one(
+    house: Vocabulary, text: str, frames: list[dict[str, str]]
+) -> None:
+    assert frames_read(house, text, "kerry") == frames
