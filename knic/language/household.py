@@ -67,8 +67,12 @@ def gone_asked(tokens: list[str]) -> list[str]:
         ):
             continue
         start = i + 1 if token == "where'd" else i + 2
-        if tokens[start] in ("you", "i", "we", "they", "he", "she"):  # "where did you go": no thing asked for
+        if tokens[start] in ("you", "i", "we", "he", "she"):  # "where did you go": no thing asked for
             continue
+        if tokens[start : start + 2] in (["it", "go"], ["they", "go"], ["it", "gone"], ["they", "gone"]):
+            # "my slippers, where did they go": where a thing said before is
+            copula = "is" if tokens[start] == "it" else "are"
+            return [*tokens[:i], "where", copula, tokens[start], *tokens[start + 2 :]]
         for end in range(start + 1, min(start + 6, len(tokens))):
             if tokens[end] in _GONE:
                 after = end + 1 + (tokens[end + 1 : end + 2] == ["to"])

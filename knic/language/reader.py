@@ -46,6 +46,7 @@ from knic.language.roles import INTERPRETERS
 from knic.language.segments import (
     cut,
     doings_dropped,
+    operates_it,
     pointed,
     sayings_dropped,
     sorry_repairs,
@@ -179,6 +180,8 @@ class Reader(Places):
                 if any(chunk.kind == "verb" for chunk in self.chunks(segment)):
                     self._read_tokens(self._fluent(segment))
                     break
+        if any(operates_it(s, self.chunks) for s in segments):  # "the radio, turn it off": the switching
+            kept = [segment for segment in segments if self._names_things(segment, it=True)]  # is no talk
         if not kept or len(kept) == len(segments):
             raise whole
         try:

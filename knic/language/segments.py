@@ -134,6 +134,14 @@ def _stated(said: list[Chunk]) -> bool:
     )
 
 
+def operates_it(segment: Sequence[str], chunks: Callable[[Sequence[str]], list[Chunk]]) -> bool:
+    """Whether a stretch of a command switches or sets "it" or "them" ("turn it off", "open them"): a verb
+    that only operates devices, first, and a pronoun; such a stretch is the request, never talk around it."""
+    said = chunks(segment)
+    operates = bool(said) and said[0].kind == "verb" and said[0].frames == ("OPERATING",)
+    return operates and any(c.kind == "pronoun" for c in said)
+
+
 def pointed(
     segments: list[list[str]], chunks: Callable[[Sequence[str]], list[Chunk]]
 ) -> list[list[str]] | None:
