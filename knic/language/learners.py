@@ -14,7 +14,7 @@ from knic.language.vocabulary import Vocabulary
 def learners_read(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
     """The chunks with the orders of this module put as a command says them."""
     said = subject_dropped(appositions_dropped(helped_to(chunks), vocabulary))
-    said = carried_in(said, vocabulary)
+    said = out_the(carried_in(said, vocabulary), vocabulary)
     return verb_last_moved(own_going_dropped(room_told(it_me(said), vocabulary)))
 
 
@@ -32,6 +32,23 @@ def helped_to(chunks: list[Chunk]) -> list[Chunk]:
         ):
             return [*chunks[:i], *chunks[at:]]
     return chunks
+
+
+def out_the(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
+    """ "get the butter out the fridge" (American and British speech): "out" right before a determiner and a
+    place, after a thing, is "out of" (where the thing is taken from), not the state "off"."""
+    out = list(chunks)
+    for i in range(1, len(out) - 2):
+        if out[i].text != "out" or out[i].kind not in ("state", "prep") or out[i - 1].kind != "entity":
+            continue
+        at = past_determiners(out, i + 1)
+        place = at < len(out) and at > i + 1 and out[at].kind == "entity" and out[at].terms
+        rooms_or_furniture = ("room", "furniture")
+        if place and all(
+            any(vocabulary.is_subtype(t.type, k) for k in rooms_or_furniture) for t in out[at].terms
+        ):
+            out[i] = Chunk("prep", "out of", role="source")
+    return out
 
 
 def carried_in(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:

@@ -30,6 +30,8 @@ tuned on, ``tests/fixtures/language/people22/terraced_house.yaml``) the reader f
 * a device said in one room and then another ("close the curtains in the main bedroom and the back room") is
   the device of that name in each;
 * "the spotty one": a word that starts the name of one thing only, said before "one", is that thing;
+* "i am wanting the tea bags", "hamish is wanting his headphones" (Indian English): a wish;
+* "get the butter out the fridge": "out" before a place is "out of", not the state "off";
 * "my slippers, where did they go", "the remote, where has it gone": where the thing said before is;
 * "the radio, turn it off" switches "it": where the thing is no device that is refused, not read as a
   request for the radio with the switching dropped as talk.
@@ -409,3 +411,19 @@ def test_where_a_thing_said_before_went(text: str, theme: str) -> None:
     garden = world_of(GARDEN_FLAT)
     assert frames_read(garden, text, "margaret") == [{"frame": "SEARCHING", "theme": theme}]
     assert not understand("where did you go", garden, speaker="margaret").accepted
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        (
+            "get the butter out the fridge",
+            [{"frame": "BRINGING", "theme": "butter", "source": "fridge", "beneficiary": "me"}],
+        ),
+        ("put the hall light out", [{"frame": "OPERATING", "device": "hall_light", "state": "off"}]),
+        ("I am wanting the tea bags", [{"frame": "BRINGING", "theme": "tea_bags", "beneficiary": "me"}]),
+        ("emeka is wanting his laptop", [{"frame": "BRINGING", "theme": "laptop", "beneficiary": "emeka"}]),
+    ],
+)
+def test_out_the_and_the_progressive_wish(house: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
+    assert frames_read(house, text, "kerry") == frames
