@@ -23,7 +23,8 @@ mends the tokens of one command, before they are cut into chunks:
   letter is a slip even where it makes an English word ("dinning", "hamer", "lemmon"). Words of three
   letters never shrink ("dsk", "opn", "teh"; "soa" is no "so"). Of several such words, a lone swap of two
   letters wins outside a noun phrase ("teh": the, not ten); after a determiner or a word of a name
-  ("bathroom drawr") only names count, and several names make the word stand for all of them
+  ("bathroom drawr") only names count, the one keeping most of the word's letters at both ends wins
+  ("glases": glasses, not glass), and several names that tie make the word stand for all of them
   (:meth:`Speller.names_for`), so that it is asked about ("the cug": the cup or the mug?); else the one that
   makes a phrase of the language with the next word wins ("wher is": where, not her or when). A real English
   word is never guessed at ("the cake" is no coke, "the basket" no blanket): it is refused naming it; except
@@ -104,6 +105,26 @@ def doubled(a: str, b: str) -> bool:
     return any(
         long_[i] == long_[i + 1] and long_[:i] + long_[i + 1 :] == short for i in range(len(long_) - 1)
     )
+
+
+def _ends_kept(near: list[str], word: str) -> list[str]:
+    """Of several names a word may be a typo of, the one that keeps most of its letters at both ends
+    ("glases": glasses, not glass); all of them where that ties ("cug": cup or mug, asked about)."""
+    if len(near) < 2:
+        return near
+
+    def kept(other: str) -> int:
+        start = next(
+            (i for i, (a, b) in enumerate(zip(word, other, strict=False)) if a != b),
+            min(len(word), len(other)),
+        )
+        pairs = zip(reversed(word), reversed(other), strict=False)
+        end = next((i for i, (a, b) in enumerate(pairs) if a != b), min(len(word), len(other)))
+        return start + end
+
+    best = max(kept(w) for w in near)
+    top = [w for w in near if kept(w) == best]
+    return top if len(top) == 1 else near
 
 
 class Speller:
@@ -222,7 +243,7 @@ class Speller:
                 if distance(word, w) == 2
             )
         if in_noun:
-            near = [w for w in near if w in self._name_words]
+            near = _ends_kept([w for w in near if w in self._name_words], word)
         elif len(near) > 1:
             swaps = [w for w in near if swapped(word, w)]
             near = swaps if len(swaps) == 1 else near

@@ -32,6 +32,8 @@ tuned on, ``tests/fixtures/language/people22/terraced_house.yaml``) the reader f
 * "the spotty one": a word that starts the name of one thing only, said before "one", is that thing;
 * "i am wanting the tea bags", "hamish is wanting his headphones" (Indian English): a wish;
 * "get the butter out the fridge": "out" before a place is "out of", not the state "off";
+* a typo near several names is the one keeping most of its letters at both ends ("my glases": glasses, not
+  glass); a tie is still asked about ("the cug": cup or mug);
 * "my slippers, where did they go", "the remote, where has it gone": where the thing said before is;
 * "the radio, turn it off" switches "it": where the thing is no device that is refused, not read as a
   request for the radio with the switching dropped as talk.
@@ -427,3 +429,10 @@ def test_where_a_thing_said_before_went(text: str, theme: str) -> None:
 )
 def test_out_the_and_the_progressive_wish(house: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
     assert frames_read(house, text, "kerry") == frames
+
+
+def test_a_typo_keeps_its_ends(vocabulary: Vocabulary) -> None:
+    assert frames_read(vocabulary, "bring me my glases") == [
+        {"frame": "BRINGING", "theme": "glasses", "beneficiary": "me"}
+    ]
+    assert_asked(vocabulary, "bring me the cug", "cup")
