@@ -125,28 +125,39 @@ def _canonical_names(vocabulary: Vocabulary) -> dict[str, str]:
 
 @lru_cache(maxsize=16)
 def _told_by_first_word(vocabulary: Vocabulary) -> dict[str, str]:
-    """The first word of the world's longer names -> the name, where the word starts the names of one thing
-    only ("spotty": the spotty mug; not "kitchen", which starts several)."""
+    """The first word of the longer names of the world's things (items) -> the name, where the word (or a
+    synonym of it) starts the names of one thing only ("spotty": the spotty mug; "telly": the tv remote; not
+    "kitchen", which starts several)."""
     symbols: dict[str, set[str]] = {}
     named: dict[str, str] = {}
     for term in vocabulary.terms:
         words = term.phrase.split()
-        if len(words) > 1 and not term.given and term.type != "level":
-            symbols.setdefault(words[0], set()).add(term.symbol)
-            named.setdefault(words[0], term.phrase)
+        if len(words) > 1 and not term.given and vocabulary.is_subtype(term.type, "item"):
+            first = _canonical(words[:1])  # "telly" for a "tv remote" too
+            symbols.setdefault(first, set()).add(term.symbol)
+            named.setdefault(first, term.phrase)
     return {word: named[word] for word, found in symbols.items() if len(found) == 1}
 
 
 def _one_said(
     words: list[str], phrases: Collection[str], told: dict[str, str], known: Collection[str]
 ) -> list[str]:
-    """ "bring me the spotty one": a word that starts the name of one thing only, said before "one", is that
-    thing ("the spotty mug"); a word of the command language or a name of its own stays as said."""
+    """ "bring me the spotty one", "the thing for the telly": a word that starts the name of one thing only
+    (or a synonym of it), said before "one" or "thing" or after "thing for", is that thing ("the spotty mug",
+    "the tv remote"); a word of the command language or a name of its own stays as said."""
     out = list(words)
     for i in range(len(out) - 1, 0, -1):
         word = out[i - 1]
-        if out[i] == "one" and word in told and word not in phrases and word not in known:
-            out[i - 1 : i + 1] = told[word].split()
+        name = told.get(_canonical([word])) if word not in phrases and word not in known else None
+        if out[i] in ("one", "thing") and name:
+            out[i - 1 : i + 1] = name.split()
+    for i in range(len(out) - 2):
+        at = i + 2 + (out[i + 2] in _ARTICLES and i + 3 < len(out))
+        word = out[at] if at < len(out) else ""
+        name = told.get(_canonical([word])) if word not in phrases and word not in known else None
+        if out[i : i + 2] == ["thing", "for"] and name:
+            out[i : at + 1] = name.split()
+            break
     return out
 
 

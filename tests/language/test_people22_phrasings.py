@@ -29,7 +29,8 @@ tuned on, ``tests/fixtures/language/people22/terraced_house.yaml``) the reader f
 * "grab my keys" of the speaker's own keys is still for the speaker, as "grab my glasses" is;
 * a device said in one room and then another ("close the curtains in the main bedroom and the back room") is
   the device of that name in each;
-* "the spotty one": a word that starts the name of one thing only, said before "one", is that thing;
+* "the spotty one", "the thing for the telly", "the telly thing": a word (or a synonym of it) that starts
+  the name of one thing only, said before "one" or "thing" or after "thing for", is that thing;
 * "i am wanting the tea bags", "hamish is wanting his headphones" (Indian English): a wish;
 * "get the butter out the fridge": "out" before a place is "out of", not the state "off";
 * a typo near several names is the one keeping most of its letters at both ends ("my glases": glasses, not
@@ -436,3 +437,11 @@ def test_a_typo_keeps_its_ends(vocabulary: Vocabulary) -> None:
         {"frame": "BRINGING", "theme": "glasses", "beneficiary": "me"}
     ]
     assert_asked(vocabulary, "bring me the cug", "cup")
+
+
+@pytest.mark.parametrize("text", ["bring me the thing for the telly", "bring me the telly thing"])
+def test_the_thing_for_the_telly(house: Vocabulary, vocabulary: Vocabulary, text: str) -> None:
+    assert frames_read(house, text, "kerry") == [
+        {"frame": "BRINGING", "theme": "tv_remote", "beneficiary": "me"}
+    ]
+    assert frames_read(vocabulary, text) == [{"frame": "BRINGING", "theme": "remote", "beneficiary": "me"}]
