@@ -370,8 +370,9 @@ def wished_first(
 ) -> int:
     """How many actions the command opens with that only say what the speaker wants ("i need the spare duvet
     from the airing cupboard", a verb of ``wishes``) when it then sends each of those things elsewhere ("bring
-    it to the back bedroom", "put them on the table"): the wish says what and where from, the later action
-    what to do, with no bringing of its own to the speaker; else 0. A wish said with where it should go, or
+    it to the back bedroom", "put them on the table") or asks for a search ("i need my glasses, could you
+    find them"): the wish says what and where from, the later action what to do, with no bringing of its own
+    to the speaker; else 0. A wish said with where it should go, or
     followed by a bringing to the speaker, is left as said."""
     group = first[0] if clause.verb is not None and clause.verb.text in wishes and len(first) == 1 else []
     if (
@@ -383,7 +384,7 @@ def wished_first(
     later = {
         f.get("theme")
         for f in frames[len(group) :]
-        if f.kind == "PLACING"
+        if f.kind in ("PLACING", "SEARCHING")
         or (f.kind == "BRINGING" and (f.get("goal") or f.get("beneficiary") != SPEAKER))
     }
     return len(group) if all(f.get("theme") in later for f in group) else 0

@@ -189,11 +189,16 @@ class Speller:
                     )
                 if len(meant) > 1 and out:  # "can i hav my teddy": have (a phrase with "can i"), not has
                     meant = tuple(w for w in meant if self._ends_phrase(out, w)) or meant
-                if len(meant) > 1 and not out and i + 1 < len(tokens):  # "fnd my glasses": find, not and
+                opening = all(self._polite(w) for w in out)  # "pleas tke the glue": only politeness before
+                if len(meant) > 1 and opening and i + 1 < len(tokens):  # "fnd my glasses": find, not and
                     meant = tuple(w for w in meant if self._kind_of(w) == "verb") or meant
                 out.append(meant[0] if len(meant) == 1 else token)
             i += 1
         return out
+
+    def _polite(self, word: str) -> bool:
+        """Whether a word is one of the language's and of no kind of phrase or name (politeness: "please")."""
+        return word in self._known and word not in self._name_words and self._kind_of(word) is None
 
     def _in_name(self, before: Sequence[str], word: str) -> tuple[str, ...]:
         """The one word, one edit from ``word``, that ends a name of the world with the word said before it

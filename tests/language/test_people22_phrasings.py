@@ -33,6 +33,9 @@ tuned on, ``tests/fixtures/language/people22/terraced_house.yaml``) the reader f
   the name of one thing only, said before "one" or "thing" or after "thing for", is that thing;
 * "i am wanting the tea bags", "hamish is wanting his headphones" (Indian English): a wish;
 * "get the butter out the fridge": "out" before a place is "out of", not the state "off";
+* a mistyped word after politeness only is read as the command's first word ("pleas tke the glue": take,
+  a verb, not the);
+* a wish followed by a search for the thing ("i need my glasses, could you find them") is the search;
 * a typo near several names is the one keeping most of its letters at both ends ("my glases": glasses, not
   glass); a tie is still asked about ("the cug": cup or mug);
 * "my slippers, where did they go", "the remote, where has it gone": where the thing said before is;
@@ -445,3 +448,13 @@ def test_the_thing_for_the_telly(house: Vocabulary, vocabulary: Vocabulary, text
         {"frame": "BRINGING", "theme": "tv_remote", "beneficiary": "me"}
     ]
     assert frames_read(vocabulary, text) == [{"frame": "BRINGING", "theme": "remote", "beneficiary": "me"}]
+
+
+def test_a_typo_after_politeness_and_a_wish_then_a_search(vocabulary: Vocabulary) -> None:
+    flat = world_of(FLAT)
+    assert frames_read(flat, "pleas tke the glue to workbenh", "tomasz") == [
+        {"frame": "BRINGING", "theme": "glue", "goal": "workbench"}
+    ]
+    assert frames_read(vocabulary, "well um the thing is i need my glasses, could you find them") == [
+        {"frame": "SEARCHING", "theme": "glasses"}
+    ]
