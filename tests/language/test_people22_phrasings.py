@@ -26,6 +26,8 @@ tuned on, ``tests/fixtures/language/people22/terraced_house.yaml``) the reader f
   English ("the rubber duk": duck); a word ending "y" where a name ends it "ie" is that ("my hoody");
 * a pain said last ("bring me the calpol my tummy hurts") gives the reason, no request of its own;
 * "is it going to rain", "will it ...", "the house is very beautiful" ask or say something: no request;
+  so do "why is the kitchen blind closed", "thanks for bringing the post" and "I've put the milk in the
+  fridge" (what the speaker did); "why don't you bring me the post" still asks for it;
 * "grab my keys" of the speaker's own keys is still for the speaker, as "grab my glasses" is;
 * a device said in one room and then another ("close the curtains in the main bedroom and the back room") is
   the device of that name in each;
@@ -457,4 +459,19 @@ def test_a_typo_after_politeness_and_a_wish_then_a_search(vocabulary: Vocabulary
     ]
     assert frames_read(vocabulary, "well um the thing is i need my glasses, could you find them") == [
         {"frame": "SEARCHING", "theme": "glasses"}
+    ]
+
+
+@pytest.mark.parametrize(
+    "text",
+    ["why is the kitchen blind closed", "thanks for bringing the post", "I've put the milk in the fridge"],
+)
+def test_questions_thanks_and_what_the_speaker_did_are_no_request(house: Vocabulary, text: str) -> None:
+    result = understand(text, house, speaker="kerry")
+    assert not result.accepted and "no action" in result.reason
+
+
+def test_why_dont_you_still_asks(house: Vocabulary) -> None:
+    assert frames_read(house, "why don't you bring me the post", "kerry") == [
+        {"frame": "BRINGING", "theme": "post", "beneficiary": "me"}
     ]
