@@ -115,8 +115,10 @@ def _things_read(text: str, vocabulary: Vocabulary, speaker: str) -> str:
             last = owner
         thing = _owned_thing(owned, owner, words[end : end + 2])
         if thing is not None:
-            mine = words[i] in _SPEAKERS  # "grab my keys": still the speaker's own, for them
-            changes.append((i, end + thing[1], ("my " if mine else "the ") + thing[0]))
+            # the owner stays said: "grab my keys" is still for the speaker, and "fetch maisie's lunchbox and
+            # give it to her" names maisie for "her"
+            said = "my" if words[i] in _SPEAKERS else words[i] if words[i] in _OTHERS else f"{owner}'s"
+            changes.append((i, end + thing[1], f"{said} {thing[0]}"))
             i = end + thing[1]
             continue
         if words[end - 1] == owner.split()[-1] + "s":  # "tylers basketball"

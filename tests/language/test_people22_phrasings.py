@@ -475,3 +475,10 @@ def test_why_dont_you_still_asks(house: Vocabulary) -> None:
     assert frames_read(house, "why don't you bring me the post", "kerry") == [
         {"frame": "BRINGING", "theme": "post", "beneficiary": "me"}
     ]
+
+
+def test_the_owner_said_is_there_for_her(house: Vocabulary) -> None:
+    assert frames_read(house, "fetch maisie's lunchbox and give it to her", "kerry") == [
+        {"frame": "TAKING", "theme": "maisie_lunchbox"},
+        {"frame": "BRINGING", "theme": "maisie_lunchbox", "beneficiary": "maisie"},
+    ]
