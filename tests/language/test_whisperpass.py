@@ -71,7 +71,9 @@ def test_log_mel_of_a_tone_peaks_in_its_band():
 def test_the_prompt_names_people_and_things_but_not_the_robot_or_levels(vocabulary):
     prompt = world_prompt(vocabulary)
     assert prompt.startswith("Granny Annie, Tracy, Jack.")
-    assert "kitchen cabinet" in prompt and "reading glasses" in prompt
+    words = prompt.split(".", 1)[1].split()
+    assert {"cabinet", "reading", "glasses", "armchair"} <= set(words)
+    assert words.count("kitchen") == 1  # kitchen, kitchen counter, kitchen table: each word once
     assert "r2d2" not in prompt.lower() and "rtwodtwo" not in prompt and "fifty" not in prompt
 
 
@@ -83,10 +85,10 @@ def test_a_large_world_tells_whisper_what_its_decoder_has_room_for(vocabulary):
     farmhouse = FIXTURES / "language" / "people20" / "farmhouse.yaml"
     prompt = world_prompt(world_vocabulary(str(farmhouse), DEFAULT_DOMAIN, None)[0])
     assert len(prompt) <= MAX_PROMPT_CHARS
-    assert world_prompt(vocabulary).endswith("door bell, doorbell.")  # the apartment's names all fit
+    assert world_prompt(vocabulary).endswith("door bell doorbell.")  # the apartment's names all fit
     assert prompt.startswith("Ffion, Dai, Mary Ann, Rhys, Jean Paul, Mary Beth, Bethan.")
-    assert "scullery" in prompt and "attic room" in prompt and "welly boots" in prompt  # rooms, then objects
-    assert "skylight blind" not in prompt  # a device, left for last
+    assert {"scullery", "attic", "welly", "boots"} <= set(prompt.split())  # rooms, then objects
+    assert "skylight" not in prompt  # a device, left for last
     heard = WhisperPass(prompt).hear(load_audio(DIMMER))  # 550 tokens in full: every hearing failed
     assert heard.text and heard.mean_log_prob <= 0.0
     wordy = WhisperPass("kitchen, " * 400)  # however long a prompt is given, the decoder gets what fits
