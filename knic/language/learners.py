@@ -102,11 +102,17 @@ def subject_dropped(chunks: list[Chunk]) -> list[Chunk]:
 
 
 def it_me(chunks: list[Chunk]) -> list[Chunk]:
-    """ "give it me", "bring them me" (British): "it" or "them" right after a verb, then "me", is to me."""
+    """ "give it me", "bring them me" (British): "it" or "them" right after a verb, then "me", is to me; so is
+    "me" said last after a thing ("bring apple me", a learner's order)."""
     out = list(chunks)
     for i in range(len(out) - 2, 0, -1):
         if out[i - 1].kind == "verb" and out[i].kind == "pronoun" and out[i + 1].kind == "me":
             out.insert(i + 1, Chunk("prep", "to", role="goal"))
+    last = len(out) - 1
+    if last >= 2 and out[last].kind == "me" and out[last - 1].kind == "entity":
+        verb = past_determiners(out, 1) if out[0].kind == "verb" else 0
+        if verb == last - 1:  # the verb, determiners, the thing, "me"
+            out.insert(last, Chunk("prep", "to", role="goal"))
     return out
 
 

@@ -126,6 +126,9 @@ def _carry(
         elif arg.prep is None or (arg.prep == "companion" and themes and _names_items(reader, arg)):
             # "bring me the stamps along with the envelopes": one more thing
             themes += reader.resolve(arg, ("item",), previous, groups)
+        elif arg.prep == "beneficiary" and kind == "BRINGING" and themes and _names_only_places(reader, arg):
+            # "i'm needing the sponge for the kitchen", "the towels for the bathroom": where it goes
+            roles["goal"] = reader.resolve(arg, ("room", "furniture"), previous, groups)[0]
         elif arg.prep == "beneficiary":
             roles["beneficiary"] = reader.resolve(arg, ("person",), previous, groups)[0]
             if themes and (kind == "PLACING" or (kind == "TAKING" and roles["beneficiary"] == SPEAKER)):

@@ -35,6 +35,9 @@ tuned on, ``tests/fixtures/language/people22/terraced_house.yaml``) the reader f
   the name of one thing only, said before "one" or "thing" or after "thing for", is that thing;
 * "i am wanting the tea bags", "hamish is wanting his headphones" (Indian English): a wish;
 * "get the butter out the fridge": "out" before a place is "out of", not the state "off";
+* a thing brought "for" a room or a piece of furniture ("i'm needing the sponge for the kitchen") goes there;
+  "for annie" is still whom it is for;
+* "bring apple me" (a learner's order): "me" said last after the thing is whom it is for;
 * a mistyped word after politeness only is read as the command's first word ("pleas tke the glue": take,
   a verb, not the);
 * a wish followed by a search for the thing ("i need my glasses, could you find them") is the search;
@@ -482,3 +485,19 @@ def test_the_owner_said_is_there_for_her(house: Vocabulary) -> None:
         {"frame": "TAKING", "theme": "maisie_lunchbox"},
         {"frame": "BRINGING", "theme": "maisie_lunchbox", "beneficiary": "maisie"},
     ]
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        (
+            "i'm needing the sponge for the kitchen",
+            [{"frame": "BRINGING", "theme": "sponge", "goal": "kitchen"}],
+        ),
+        ("bring the tissues for annie", [{"frame": "BRINGING", "theme": "tissues", "beneficiary": "annie"}]),
+        ("bring apple me", [{"frame": "BRINGING", "theme": "apple", "beneficiary": "me"}]),
+        ("bring the apple me", [{"frame": "BRINGING", "theme": "apple", "beneficiary": "me"}]),
+    ],
+)
+def test_for_a_room_and_me_said_last(vocabulary: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
+    assert frames_read(vocabulary, text) == frames
