@@ -21,13 +21,17 @@ SEGMENT_END = re.compile(r"[.?!;,]+|\s-\s")
 
 
 def unplaced(chunks: list[Chunk]) -> list[Chunk]:
-    """The names of things among ``chunks`` that no preposition governs (what an action was about)."""
+    """The names of things among ``chunks`` that no preposition governs (what an action was about); "on" or
+    "off" right after the verb is its particle, not a preposition ("switch on the floor lamp": the lamp)."""
     out: list[Chunk] = []
     previous: Chunk | None = None
+    particle = False  # the latest word was "on" or "off" right after a verb
     for chunk in chunks:
-        if chunk.kind == "entity" and (previous is None or previous.kind != "prep"):
+        if chunk.kind == "entity" and (previous is None or previous.kind != "prep" or particle):
             out.append(chunk)
         if chunk.kind != "det":
+            verb = previous is not None and previous.kind == "verb"
+            particle = verb and chunk.kind == "prep" and chunk.state is not None
             previous = chunk
     return out
 

@@ -38,6 +38,8 @@ tuned on, ``tests/fixtures/language/people22/terraced_house.yaml``) the reader f
 * a thing brought "for" a room or a piece of furniture ("i'm needing the sponge for the kitchen") goes there;
   "for annie" is still whom it is for;
 * "bring apple me" (a learner's order): "me" said last after the thing is whom it is for;
+* a correction that says the action again of "it" ("switch on the floor lamp, actually make it 40 percent")
+  keeps the device the first action switched ("on" right after the verb is no preposition);
 * a mistyped word after politeness only is read as the command's first word ("pleas tke the glue": take,
   a verb, not the);
 * a wish followed by a search for the thing ("i need my glasses, could you find them") is the search;
@@ -501,3 +503,22 @@ def test_the_owner_said_is_there_for_her(house: Vocabulary) -> None:
 )
 def test_for_a_room_and_me_said_last(vocabulary: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
     assert frames_read(vocabulary, text) == frames
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        (
+            "switch on the floor lamp, actually make it 40 percent",
+            [{"frame": "OPERATING", "device": "floor_lamp", "state": "40"}],
+        ),
+        (
+            "place the spotty mug on the worktop, correction, place it on the dining table",
+            [{"frame": "PLACING", "theme": "spotty_mug", "goal": "dining_table"}],
+        ),
+    ],
+)
+def test_a_correction_of_it_keeps_the_device(
+    house: Vocabulary, text: str, frames: list[dict[str, str]]
+) -> None:
+    assert frames_read(house, text, "kerry") == frames
