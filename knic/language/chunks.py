@@ -51,6 +51,13 @@ def singulars(word: str) -> list[str]:
     return []
 
 
+def _plural_endings(word: str) -> tuple[str, ...]:
+    """What makes a name's last word plural: "es" after a hiss ("boxes"), "s" or "es" after an "o"
+    ("radios", "potatoes"), else "s"; no "draweres", whose nearness to typos would hide "drawers"."""
+    endings: tuple[str, ...] = ("es",) if word.endswith(("x", "z", "ch", "sh")) else ("s",)
+    return endings + (("es",) if word.endswith("o") else ())
+
+
 def _forms(word: str) -> tuple[str, ...]:
     """A name's last word and its singulars ("shelves": shelves, shelve, shelf)."""
     plural = word.endswith("s") and not word.endswith("ss")
@@ -101,9 +108,7 @@ class Chunker:
             # plurals of a name, and the singular of a plural name ("a car key" for the car keys, "an ice
             # lolly" for the ice lollies, "the curtain" for the bedroom curtains)
             plural = term.phrase.endswith("s") and not term.phrase.endswith("ss")
-            # "boxes", "potatoes" or "radios"; no "draweres", whose nearness to typos would hide "drawers"
-            endings: tuple[str, ...] = ("es",) if term.phrase.endswith(("x", "z", "ch", "sh")) else ("s",)
-            endings += ("es",) if term.phrase.endswith("o") else ()
+            endings = _plural_endings(term.phrase)
             variants = [term.phrase[:-1]] if plural else [term.phrase + e for e in endings]
             variants += [" ".join([*words[:-1], one]) for one in singulars(words[-1])]
             if len(words) > 1:  # "the lamp", and "the desk lamp" for the office desk lamp (not "bedroom
@@ -111,7 +116,12 @@ class Chunker:
                 ending = [" ".join(words[-2:])] if len(words) > 2 and words[-2] not in self._full else []
                 variants += [words[-1], *ending]
                 plural_last = words[-1].endswith("s") and not words[-1].endswith("ss")
-                variants += [words[-1][:-1], *singulars(words[-1])] if plural_last else [words[-1] + "s"]
+                last_endings = _plural_endings(words[-1])  # "lunchboxes" for the lunchboxes of two people
+                variants += (
+                    [words[-1][:-1], *singulars(words[-1])]
+                    if plural_last
+                    else [words[-1] + e for e in last_endings]
+                )
             for variant in variants:
                 if variant not in self._full:
                     self._partial.setdefault(variant, []).append(term)
@@ -141,7 +151,9 @@ class Chunker:
                     known += [t for t in things if t.symbol not in {k.symbol for k in known}]
         #: plurals of a name's last word ("lamps" for the left and the right lamp): all of them are meant
         self._plural = {
-            p for p, ts in self._partial.items() if any(p == t.phrase.split()[-1] + "s" for t in ts)
+            p
+            for p, ts in self._partial.items()
+            if any(p in (t.phrase.split()[-1] + e for e in _plural_endings(t.phrase)) for t in ts)
         }
         table: dict[str, tuple[int, Chunk | None]] = {}  # phrase -> (priority, chunk); None drops it
 

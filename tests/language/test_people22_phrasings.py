@@ -40,6 +40,8 @@ tuned on, ``tests/fixtures/language/people22/terraced_house.yaml``) the reader f
 * "bring apple me" (a learner's order): "me" said last after the thing is whom it is for;
 * a correction that says the action again of "it" ("switch on the floor lamp, actually make it 40 percent")
   keeps the device the first action switched ("on" right after the verb is no preposition);
+* the plural of a longer name's last word takes "es" after a hiss, as a one-word name's does ("both
+  lunchboxes": maisie's and tyler's);
 * a mistyped word after politeness only is read as the command's first word ("pleas tke the glue": take,
   a verb, not the);
 * a wish followed by a search for the thing ("i need my glasses, could you find them") is the search;
@@ -522,3 +524,10 @@ def test_a_correction_of_it_keeps_the_device(
     house: Vocabulary, text: str, frames: list[dict[str, str]]
 ) -> None:
     assert frames_read(house, text, "kerry") == frames
+
+
+def test_the_plural_of_a_last_word_in_es(house: Vocabulary) -> None:
+    assert frames_read(house, "bring both lunchboxes to the kitchen", "kerry") == [
+        {"frame": "BRINGING", "theme": "maisie_lunchbox", "goal": "kitchen"},
+        {"frame": "BRINGING", "theme": "tyler_lunchbox", "goal": "kitchen"},
+    ]
