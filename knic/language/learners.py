@@ -14,7 +14,7 @@ from knic.language.vocabulary import Vocabulary
 def learners_read(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
     """The chunks with the orders of this module put as a command says them."""
     said = subject_dropped(appositions_dropped(helped_to(chunks), vocabulary))
-    said = out_the(carried_in(said, vocabulary), vocabulary)
+    said = gapped_given(out_the(carried_in(said, vocabulary), vocabulary), vocabulary)
     return verb_last_moved(own_going_dropped(room_told(it_me(said), vocabulary)))
 
 
@@ -31,6 +31,30 @@ def helped_to(chunks: list[Chunk]) -> list[Chunk]:
             and chunks[at + 1].kind in ("det", "entity")
         ):
             return [*chunks[:i], *chunks[at:]]
+    return chunks
+
+
+def gapped_given(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
+    """ "give tyler the headset and maisie the unicorn": after a verb that gives, a person and a thing, then
+    "and" with another person and thing, the verb is said again for the second pair."""
+
+    def person(chunk: Chunk) -> bool:
+        return (
+            chunk.kind == "entity"
+            and bool(chunk.terms)
+            and all(vocabulary.is_subtype(t.type, "person") for t in chunk.terms)
+        )
+
+    if len(chunks) < 6 or chunks[0].kind != "verb" or "BRINGING" not in chunks[0].frames:
+        return chunks
+    if not (person(chunks[1]) or chunks[1].kind == "me"):
+        return chunks
+    for i in range(2, len(chunks) - 2):
+        thing = chunks[i - 1].kind == "entity" and not person(chunks[i - 1])
+        if chunks[i].kind == "join" and person(chunks[i + 1]) and thing:
+            after = past_determiners(chunks, i + 2)
+            if after < len(chunks) and chunks[after].kind == "entity" and not person(chunks[after]):
+                return [*chunks[: i + 1], chunks[0], *chunks[i + 1 :]]
     return chunks
 
 

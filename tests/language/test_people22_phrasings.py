@@ -42,6 +42,8 @@ tuned on, ``tests/fixtures/language/people22/terraced_house.yaml``) the reader f
   keeps the device the first action switched ("on" right after the verb is no preposition);
 * the plural of a longer name's last word takes "es" after a hiss, as a one-word name's does ("both
   lunchboxes": maisie's and tyler's);
+* "give tyler the headset and maisie the unicorn": the verb that gives is said again for the second person
+  and thing;
 * a mistyped word after politeness only is read as the command's first word ("pleas tke the glue": take,
   a verb, not the);
 * a wish followed by a search for the thing ("i need my glasses, could you find them") is the search;
@@ -530,4 +532,15 @@ def test_the_plural_of_a_last_word_in_es(house: Vocabulary) -> None:
     assert frames_read(house, "bring both lunchboxes to the kitchen", "kerry") == [
         {"frame": "BRINGING", "theme": "maisie_lunchbox", "goal": "kitchen"},
         {"frame": "BRINGING", "theme": "tyler_lunchbox", "goal": "kitchen"},
+    ]
+
+
+def test_a_second_person_and_thing_after_and(house: Vocabulary) -> None:
+    assert frames_read(house, "give tyler the headset and maisie the unicorn", "kerry") == [
+        {"frame": "BRINGING", "theme": "headset", "beneficiary": "tyler"},
+        {"frame": "BRINGING", "theme": "stuffed_unicorn", "beneficiary": "maisie"},
+    ]
+    assert frames_read(house, "give maisie the unicorn and the lego", "kerry") == [
+        {"frame": "BRINGING", "theme": "stuffed_unicorn", "beneficiary": "maisie"},
+        {"frame": "BRINGING", "theme": "lego", "beneficiary": "maisie"},
     ]
