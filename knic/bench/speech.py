@@ -3,7 +3,9 @@
 The sets are ``tests/fixtures/speech_people/test`` (held out: never tuned on) and ``.../dev`` (tuned on):
 the commands of the text sets (``tests/fixtures/language``) and out-of-domain speech, synthesised with
 espeak-ng in voices that neither the other set nor the acoustic adaptation uses (``generate.py`` there). Each
-``gold.json`` has each file's transcription, whether it is a command (``in_grammar``), and its gold frames.
+``gold.json`` has each file's transcription, whether it is a command (``in_grammar``), and its gold frames;
+its ``world``, when that is a world file (relative to the set's folder) or a world's name, is the home the set
+is said in (``speech_world_dev``: the bungalow of ``worlds/test_bungalow``), else the apartment.
 Both decoders run on both sets: ``grammar`` (the template grammar, :class:`knic.language.speech.Recognizer`)
 and ``ngram`` (the n-gram model with a confidence, :class:`knic.language.lmspeech.NgramRecognizer`);
 ``--decoder`` picks one. The earlier sets (``tests/fixtures/speech``, ``speech_dev``: template phrasings,
@@ -161,7 +163,13 @@ def evaluate(
         utterances = gold["utterances"][: limit or None]
     except (OSError, ValueError, KeyError, TypeError) as exc:  # TypeError: not an object with a list
         raise KnicError(f"{fixtures / 'gold.json'}: cannot read the speech test set: {exc}") from exc
-    vocabulary = read_vocabulary()
+    world = gold.get("world")
+    if isinstance(world, str) and not world.endswith(".pddl"):  # a world file or name: its own vocabulary
+        from knic.bench.language import _world_file_vocabulary
+
+        vocabulary = _world_file_vocabulary(world, fixtures / "gold.json")
+    else:  # the apartment's PDDL problem, the default
+        vocabulary = read_vocabulary()
     speaker = gold.get("speaker", "annie")
     from knic.language.acoustic import acoustic_model_for
 
@@ -174,8 +182,8 @@ def evaluate(
     }
     if filler_weight is not None:
         extra["filler_weight"] = filler_weight
-    key = json.dumps([decoder, extra, filler_weight, second_opinion], sort_keys=True, default=str)
-    if key not in _BUILT:  # the sets of one run share the recogniser (they are read in the same world)
+    key = json.dumps([decoder, extra, filler_weight, second_opinion, world], sort_keys=True, default=str)
+    if key not in _BUILT:  # the sets of one run read in the same world share the recogniser
         recognizer: Any
         if decoder == "ngram":
             recognizer = NgramRecognizer(

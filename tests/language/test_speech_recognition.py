@@ -152,3 +152,23 @@ def test_the_speech_bench_judges_a_level_as_the_text_bench_does(
     assert main([*args, "--fixtures", str(tmp_path)]) == 0
     figures = json.loads(capsys.readouterr().out)["grammar"]
     assert figures["wer"] == 0.0 and figures["frame_argument_accuracy"] == 1.0
+
+
+def test_the_speech_bench_hears_a_set_in_its_own_world(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    import json
+
+    from knic.cli import main
+
+    args = ["bench", "speech", "--json", "--answers", "", "--dev", "", "--decoder", "ngram", "--limit", "4"]
+    assert main([*args, "--fixtures", "tests/fixtures/speech_world_dev"]) == 0  # said in the bungalow
+    figures = json.loads(capsys.readouterr().out)["ngram"]
+    # car keys, a newspaper, a teddy bear and a reading lamp: none of them in the apartment, whose words would
+    # refuse all four; in the bungalow's own words the four were heard right on the machines measured
+    assert figures["in_grammar"] == 4 and figures["frame_argument_accuracy"] >= 0.5
+    gold = json.loads(Path("tests/fixtures/speech_world_dev/gold.json").read_text(encoding="utf-8"))
+    gold["world"] = "no_such_world"
+    (tmp_path / "gold.json").write_text(json.dumps(gold), encoding="utf-8")
+    assert main([*args, "--fixtures", str(tmp_path)]) != 0
+    assert "world 'no_such_world'" in capsys.readouterr().err
