@@ -15,7 +15,7 @@ def learners_read(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
     """The chunks with the orders of this module put as a command says them."""
     said = subject_dropped(appositions_dropped(helped_to(chunks), vocabulary))
     said = gapped_given(out_the(carried_in(said, vocabulary), vocabulary), vocabulary)
-    return verb_last_moved(own_going_dropped(room_told(it_me(said), vocabulary)))
+    return verb_last_moved(own_going_dropped(own_doing_dropped(room_told(it_me(said), vocabulary))))
 
 
 def helped_to(chunks: list[Chunk]) -> list[Chunk]:
@@ -231,6 +231,31 @@ def _setting(chunks: list[Chunk], at: int) -> bool:
 
 #: the speaker said as who does something ("i go to bed now", "i'm going out")
 _SPEAKER_SUBJECTS = (("i",), ("we",), ("i'm",), ("im",), ("we're",), ("i", "am"), ("we", "are"))
+
+
+#: the speaker said as who did something, before what they did ("i put", "i've put", "we have moved")
+_DOERS = (("i",), ("we",), ("i've",), ("we've",), ("i", "have"), ("we", "have"))
+#: what the speaker may say they did with a thing before asking something of it
+_CARRIED = ("PLACING", "TAKING", "BRINGING")
+
+
+def own_doing_dropped(chunks: list[Chunk]) -> list[Chunk]:
+    """Drop what the speaker says they did with a thing before asking something ("i put the milk in the
+    fridge, bring me the butter", "i've put my keys somewhere, can you find them"): "i" or "we" and a verb of
+    carrying or putting, up to the next action; the things said stay, for a later "them". Said alone it is
+    left to the reader (no request: ``not_requests``)."""
+    said = [c.text if c.kind == "unknown" else "" for c in chunks[:2]]
+    size = next((len(s) for s in sorted(_DOERS, key=len, reverse=True) if said[: len(s)] == list(s)), 0)
+    if not size or len(chunks) < size + 2 or chunks[size].kind != "verb":
+        return chunks
+    if chunks[size].frames[:1] not in [(k,) for k in _CARRIED] or chunks[size].beneficiary is not None:
+        return chunks
+    nxt = next((i for i in range(size + 1, len(chunks)) if chunks[i].kind in ("verb", "join")), None)
+    while nxt is not None and nxt < len(chunks) and chunks[nxt].kind == "join":
+        nxt += 1
+    if nxt is None or nxt >= len(chunks) or chunks[nxt].kind != "verb":
+        return chunks
+    return [*unplaced(chunks[size + 1 : nxt]), *chunks[nxt:]]
 
 
 def own_going_dropped(chunks: list[Chunk]) -> list[Chunk]:

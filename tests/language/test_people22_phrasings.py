@@ -44,6 +44,8 @@ tuned on, ``tests/fixtures/language/people22/terraced_house.yaml``) the reader f
   lunchboxes": maisie's and tyler's);
 * "give tyler the headset and maisie the unicorn": the verb that gives is said again for the second person
   and thing;
+* what the speaker did with a thing, said before a request ("i put the milk in the fridge, bring me the
+  butter", "i've put my keys somewhere, can you find them"), is no action; the thing stays said for "them";
 * a mistyped word after politeness only is read as the command's first word ("pleas tke the glue": take,
   a verb, not the);
 * a wish followed by a search for the thing ("i need my glasses, could you find them") is the search;
@@ -544,3 +546,22 @@ def test_a_second_person_and_thing_after_and(house: Vocabulary) -> None:
         {"frame": "BRINGING", "theme": "stuffed_unicorn", "beneficiary": "maisie"},
         {"frame": "BRINGING", "theme": "lego", "beneficiary": "maisie"},
     ]
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        (
+            "i put the milk in the fridge, bring me the butter",
+            [{"frame": "BRINGING", "theme": "butter", "beneficiary": "me"}],
+        ),
+        ("i've put my keys somewhere, can you find them", [{"frame": "SEARCHING", "theme": "kerry_keys"}]),
+        ("we've moved the sofa, go to the living room", [{"frame": "MOTION", "goal": "living_room"}]),
+        ("i want the milk, put it in the fridge", [{"frame": "PLACING", "theme": "milk", "goal": "fridge"}]),
+    ],
+)
+def test_what_the_speaker_did_before_a_request(
+    house: Vocabulary, text: str, frames: list[dict[str, str]]
+) -> None:
+    assert frames_read(house, text, "kerry") == frames
+    assert not understand("i put the milk in the fridge", house, speaker="kerry").accepted
