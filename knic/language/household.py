@@ -59,6 +59,12 @@ _NOT_ENDING_A_THING = frozenset(
 _GONE = ("go", "gone", "went", "disappeared", "vanished")
 
 
+#: who may be asked where they put a thing, as the command language says it ("where did you put")
+_ASKERS = frozenset({"you", "i", "we"})
+#: what someone did with a thing that asks where it is now ("where did emeka put the calpol")
+_PUT_AWAY = frozenset({"put", "leave", "left", "hide", "hid", "hidden", "move", "moved", "stash", "stashed"})
+
+
 def gone_asked(tokens: list[str]) -> list[str]:
     """ "where did my phone go", "where has the hairbrush gone", "where'd the keys go": where the thing is."""
     for i, token in enumerate(tokens[:-2]):
@@ -67,6 +73,9 @@ def gone_asked(tokens: list[str]) -> list[str]:
         ):
             continue
         start = i + 1 if token == "where'd" else i + 2
+        if tokens[start] not in _ASKERS and tokens[start + 1 : start + 2] and tokens[start + 1] in _PUT_AWAY:
+            # "where did emeka put the calpol", "where has tyler left my keys": where the thing is
+            return [*tokens[:i], "where", "is", *tokens[start + 2 :]]
         if tokens[start] in ("you", "i", "we", "he", "she"):  # "where did you go": no thing asked for
             continue
         if tokens[start : start + 2] in (["it", "go"], ["they", "go"], ["it", "gone"], ["they", "gone"]):

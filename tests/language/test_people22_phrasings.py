@@ -46,6 +46,7 @@ tuned on, ``tests/fixtures/language/people22/terraced_house.yaml``) the reader f
   and thing;
 * what the speaker did with a thing, said before a request ("i put the milk in the fridge, bring me the
   butter", "i've put my keys somewhere, can you find them"), is no action; the thing stays said for "them";
+* "where did emeka put the calpol", "where has tyler left my keys": where the thing is;
 * a mistyped word after politeness only is read as the command's first word ("pleas tke the glue": take,
   a verb, not the);
 * a wish followed by a search for the thing ("i need my glasses, could you find them") is the search;
@@ -565,3 +566,11 @@ def test_what_the_speaker_did_before_a_request(
 ) -> None:
     assert frames_read(house, text, "kerry") == frames
     assert not understand("i put the milk in the fridge", house, speaker="kerry").accepted
+
+
+@pytest.mark.parametrize(
+    ("text", "theme"),
+    [("where did emeka put the calpol", "calpol"), ("where has tyler left my keys", "kerry_keys")],
+)
+def test_where_someone_put_a_thing(house: Vocabulary, text: str, theme: str) -> None:
+    assert frames_read(house, text, "kerry") == [{"frame": "SEARCHING", "theme": theme}]
