@@ -28,7 +28,9 @@ mends the tokens of one command, before they are cut into chunks:
   (:meth:`Speller.names_for`), so that it is asked about ("the cug": the cup or the mug?); else the one that
   makes a phrase of the language with the next word wins ("wher is": where, not her or when). A real English
   word is never guessed at ("the cake" is no coke, "the basket" no blanket): it is refused naming it; except
-  after a word of a name, where one word one edit away ends that name with it ("rubber duk": duck).
+  after a word of a name, where one word one edit away ends that name with it ("rubber duk": duck), and
+  before the last word of a two-word name whose first word is two edits or fewer away and starts alike
+  ("paper mill": the pepper mill; speech mishears a name so).
 
 English words are those of the pronouncing dictionary the speech side ships (pocketsphinx's cmudict),
 read once, the first time a word no table knows is near a known word (a command of known words never reads
@@ -178,6 +180,7 @@ class Speller:
                 i += 1
                 continue
             heard = self._homophone(out, token, tokens[i + 1 :])
+            heard = heard or (self._before_name(token, tokens[i + 1]) if i + 1 < len(tokens) else None)
             if heard is not None:
                 out.append(heard)
             else:
@@ -199,6 +202,24 @@ class Speller:
     def _polite(self, word: str) -> bool:
         """Whether a word is one of the language's and of no kind of phrase or name (politeness: "please")."""
         return word in self._known and word not in self._name_words and self._kind_of(word) is None
+
+    def _before_name(self, word: str, after: str) -> str | None:
+        """The first word of the one two-word name that ends with ``after`` and begins with a word two edits
+        or fewer from ``word`` and with its letter ("paper mill": the pepper mill, not the newspaper and a
+        mill), where ``word`` and ``after`` are no part of a name together: the name's last word tells what
+        was meant (a recogniser's near miss, or a typo of a known word). Not for a person's name or a short
+        word."""
+        said = f" {word} {after}"
+        if len(word) < _SHORT + 1 or word in self._people or after not in self._name_words:
+            return None
+        if any(said in f" {name}" for name in self._names):  # "desk lamp" of the attic desk lamp
+            return None
+        near = {
+            first
+            for first, _, last in (name.partition(" ") for name in self._names)
+            if last == after and first != word and first[:1] == word[:1] and distance(first, word) <= 2
+        }
+        return near.pop() if len(near) == 1 else None
 
     def _in_name(self, before: Sequence[str], word: str) -> tuple[str, ...]:
         """The one word, one edit from ``word``, that ends a name of the world with the word said before it
