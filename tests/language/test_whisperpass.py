@@ -20,8 +20,10 @@ from knic.language.whisperpass import (
     SURE_LOG_PROB,
     Heard,
     WhisperPass,
+    forced_text,
     model_dir,
     settled,
+    told_people,
     unrepeated,
     world_prompt,
 )
@@ -180,3 +182,20 @@ def test_whisper_rescues_a_command_pocketsphinx_refused(recognizer, vocabulary):
     assert transcript.in_grammar and not math.isnan(transcript.decode_ms)
     assert result.accepted
     assert [f.to_dict() for f in result.frames] == [{"frame": "TAKING", "theme": "tissues"}]
+
+
+def test_candidates_are_scored_told_the_peoples_names(vocabulary):
+    from knic.cli.goal import world_vocabulary
+    from knic.language.judging import KEEP_LOG_PROB
+    from knic.language.world import DEFAULT_DOMAIN
+
+    assert told_people(world_prompt(vocabulary)) == ["Granny Annie", "Tracy", "Jack"]
+    assert told_people("hall kitchen bell.") == [] and told_people("") == []
+    assert forced_text("i think rosa is in", {"rosa"}) == "I think Rosa is in."
+    bungalow = world_vocabulary("worlds/test_bungalow/test_bungalow.yaml", DEFAULT_DOMAIN, None)[0]
+    said = load_audio(FIXTURES / "speech_world_dev" / "world_dev_022.wav")  # "take the newspaper to rosa"
+    told, untold = WhisperPass(world_prompt(bungalow)), WhisperPass("")
+    told.hear(said), untold.hear(said)
+    right = "take the newspaper to rosa"
+    # unprompted, a name Whisper does not know scores the right transcript out ("... to also" won)
+    assert untold.scores([right])[0] < KEEP_LOG_PROB < told.scores([right])[0]
