@@ -330,7 +330,28 @@ class Chunker:
                 soft = best[2].kind == "verb" and i in inflected
                 out.append(replace(best[2], soft=True) if soft else best[2])
             i += best[0]
+        out = self._headed(out)
         return _owned(out) if _OWNER in tokens else out
+
+    def _headed(self, chunks: list[Chunk]) -> list[Chunk]:
+        """The chunks without a thing said by a shorter name right before another thing said by its whole
+        name: the last noun of two is what is meant ("pick up mill alarm clock", heard for "the alarm
+        clock": not the pepper mill too). A room or a person so said is kept (it narrows or owns the next)."""
+        kept: list[Chunk] = []
+        for at, chunk in enumerate(chunks):
+            after = chunks[at + 1] if at + 1 < len(chunks) else None
+            if (
+                after is not None
+                and chunk.kind == after.kind == "entity"
+                and chunk.terms
+                and chunk.text not in self._full
+                and after.text in self._full
+                and not {t.symbol for t in chunk.terms} & {t.symbol for t in after.terms}
+                and all(t.type not in ("room", "person") for t in chunk.terms)
+            ):
+                continue
+            kept.append(chunk)
+        return kept
 
     def _kind_of(self, phrase: str) -> str | None:
         """A phrase's kind in the language tables ("state" for a word that also says a state), else None."""
