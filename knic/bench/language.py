@@ -78,7 +78,7 @@ def add_arguments(parser: argparse.ArgumentParser) -> None:
     )
 
 
-def _world_file_vocabulary(name: str, path: Path) -> Any:
+def world_file_vocabulary(name: str, path: Path) -> Any:
     """The vocabulary of a simulator world named in a case (``world: test_flat``, or a world file), as
     ``knic goal --world`` reads it.
 
@@ -156,7 +156,7 @@ def evaluate(path: Path) -> dict[str, Any]:
     for case in cases:
         name = case.get("world", "erl") if isinstance(case, dict) else "erl"
         if name not in worlds:
-            worlds[name] = _world_file_vocabulary(str(name), path)
+            worlds[name] = world_file_vocabulary(str(name), path)
     tally = {
         "right": 0,
         "kinds": 0,

@@ -165,9 +165,9 @@ def evaluate(
         raise KnicError(f"{fixtures / 'gold.json'}: cannot read the speech test set: {exc}") from exc
     world = gold.get("world")
     if isinstance(world, str) and not world.endswith(".pddl"):  # a world file or name: its own vocabulary
-        from knic.bench.language import _world_file_vocabulary
+        from knic.bench.language import world_file_vocabulary
 
-        vocabulary = _world_file_vocabulary(world, fixtures / "gold.json")
+        vocabulary = world_file_vocabulary(world, fixtures / "gold.json")
     else:  # the apartment's PDDL problem, the default
         vocabulary = read_vocabulary()
     speaker = gold.get("speaker", "annie")

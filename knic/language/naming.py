@@ -21,7 +21,7 @@
 
 from __future__ import annotations
 
-from collections.abc import Collection, Sequence
+from collections.abc import Collection, Iterable, Sequence
 from functools import lru_cache
 
 from core.errors import LanguageError
@@ -52,8 +52,8 @@ def said_named(segments: list[list[str]], vocabulary: Vocabulary, known: Collect
     phrases, people, rooms = _names(vocabulary)
     for segment in segments:
         _opposite_refused(segment, phrases)
-    canon = _canonical_names(vocabulary)
-    segments = [_one_said(s, phrases, _told_by_first_word(vocabulary), known) for s in segments]
+    canon, told = _canonical_names(vocabulary), _told_by_first_word(vocabulary)
+    segments = [_one_said(s, phrases, told, known) for s in segments]
     out = [
         _synonyms_said(_contents(_turned_round(s, phrases, canon), phrases), phrases, canon) for s in segments
     ]
@@ -113,14 +113,8 @@ def _synonym_sets() -> tuple[tuple[list[str], list[str]], ...]:
 @lru_cache(maxsize=16)
 def _canonical_names(vocabulary: Vocabulary) -> dict[str, str]:
     """A name said with synonyms (:func:`_canonical`) -> the world's name, where it names one thing."""
-    symbols: dict[str, set[str]] = {}
-    named: dict[str, str] = {}
-    for term in vocabulary.terms:
-        if term.type != "level" and len(term.phrase.split()) > 1:
-            said = _canonical(term.phrase.split())
-            symbols.setdefault(said, set()).add(term.symbol)
-            named.setdefault(said, term.phrase)
-    return {said: named[said] for said, found in symbols.items() if len(found) == 1}
+    longer = [t for t in vocabulary.terms if t.type != "level" and len(t.phrase.split()) > 1]
+    return _naming_one((_canonical(t.phrase.split()), t) for t in longer)
 
 
 @lru_cache(maxsize=16)
@@ -128,15 +122,23 @@ def _told_by_first_word(vocabulary: Vocabulary) -> dict[str, str]:
     """The first word of the longer names of the world's things (items) -> the name, where the word (or a
     synonym of it) starts the names of one thing only ("spotty": the spotty mug; "telly": the tv remote; not
     "kitchen", which starts several)."""
+    items = [
+        t
+        for t in vocabulary.terms
+        if len(t.phrase.split()) > 1 and not t.given and vocabulary.is_subtype(t.type, "item")
+    ]
+    return _naming_one((_canonical(t.phrase.split()[:1]), t) for t in items)  # "telly" for a "tv remote" too
+
+
+def _naming_one(said: Iterable[tuple[str, Term]]) -> dict[str, str]:
+    """Of (words said, a term they stand for): the words -> the term's name, where they stand for one thing
+    only (the first name given of it)."""
     symbols: dict[str, set[str]] = {}
     named: dict[str, str] = {}
-    for term in vocabulary.terms:
-        words = term.phrase.split()
-        if len(words) > 1 and not term.given and vocabulary.is_subtype(term.type, "item"):
-            first = _canonical(words[:1])  # "telly" for a "tv remote" too
-            symbols.setdefault(first, set()).add(term.symbol)
-            named.setdefault(first, term.phrase)
-    return {word: named[word] for word, found in symbols.items() if len(found) == 1}
+    for words, term in said:
+        symbols.setdefault(words, set()).add(term.symbol)
+        named.setdefault(words, term.phrase)
+    return {words: named[words] for words, found in symbols.items() if len(found) == 1}
 
 
 def _one_said(

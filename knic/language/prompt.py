@@ -46,6 +46,15 @@ def world_prompt(vocabulary: Vocabulary) -> str:
     return _written(people, names)
 
 
+def told_people(prompt: str) -> list[str]:
+    """The people's names a prompt :func:`world_prompt` wrote opens with, as written there ("Granny Annie,
+    Tracy, Jack." before the things' words); none when it names nobody (Whisper's server is given the
+    prompt's text only)."""
+    head, stop, _ = prompt.partition(". ")
+    names = [name.strip().rstrip(".") for name in head.split(",")] if stop or prompt.endswith(".") else []
+    return [name for name in names if name and all(word[:1].isupper() for word in name.split())]
+
+
 def _written(people: list[str], things: list[str]) -> str:
     """The prompt's text: the people's names, then the things' words, each word once ("kitchen counter,
     kitchen table" as "kitchen counter table"). The decoder reads the prompt once per beam of every

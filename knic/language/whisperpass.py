@@ -36,7 +36,7 @@ from typing import TYPE_CHECKING, Any
 from core.errors import LanguageError
 from knic.language.logmel import SAMPLE_RATE, log_mel
 from knic.language.modelfolder import MODEL_ENV, MODEL_PACKAGE, model_dir
-from knic.language.prompt import MAX_PROMPT_TOKENS
+from knic.language.prompt import MAX_PROMPT_TOKENS, told_people
 from knic.language.prompt import world_prompt as world_prompt  # the name its users import from here
 from knic.language.vocabulary import normalize
 
@@ -233,18 +233,10 @@ class WhisperPass:
 def forced_text(text: str, names: Collection[str] = ()) -> str:
     """A recogniser's lowercase words as Whisper writes a sentence: capitalised, with a full stop, and "I"
     ("i'm": "I'm") and the words of ``names`` (people's names: "rosa") capitalised too."""
-    words = [
-        w[:1].upper() + w[1:] if w in names or w == "i" or w.startswith("i'") else w for w in text.split()
-    ]
-    return " ".join(words)[:1].upper() + " ".join(words)[1:] + "." if words else ""
-
-
-def told_people(prompt: str) -> list[str]:
-    """The people's names a world's prompt (:func:`~knic.language.prompt.world_prompt`) opens with, as
-    written there ("Granny Annie, Tracy, Jack." before the things' words); none when it names nobody."""
-    head, stop, _ = prompt.partition(". ")
-    names = [name.strip().rstrip(".") for name in head.split(",")] if stop or prompt.endswith(".") else []
-    return [name for name in names if name and all(word[:1].isupper() for word in name.split())]
+    said = " ".join(
+        w.capitalize() if w in names or w == "i" or w.startswith("i'") else w for w in text.split()
+    )
+    return said[:1].upper() + said[1:] + "." if said else ""
 
 
 def unrepeated(text: str) -> str:

@@ -14,6 +14,7 @@ from core.errors import LanguageError
 from knic.language.audio import load_audio
 from knic.language.lmspeech import NgramRecognizer
 from knic.language.logmel import HOP, N_MELS, SAMPLE_RATE, log_mel, mel_filters
+from knic.language.prompt import told_people
 from knic.language.understanding import understand_transcript
 from knic.language.whisperpass import (
     MODEL_ENV,
@@ -23,7 +24,6 @@ from knic.language.whisperpass import (
     forced_text,
     model_dir,
     settled,
-    told_people,
     unrepeated,
     world_prompt,
 )
