@@ -4,15 +4,15 @@ The sets are ``tests/fixtures/language/dev.yaml`` (tuned on) and ``tests/fixture
 (written afterwards in other words), and ``people2/dev.yaml`` and ``people2/test.yaml`` (100 commands each,
 written blind: the writer saw the apartment's description and the gold format only, not the grammar, the
 reader, the lexicon or the earlier sets; ``people2-test`` is never tuned on). ``--file`` runs a set of one's
-own. ``people3`` to ``people22`` are further blind development sets (``people5`` to ``people15`` span both
+own. ``people3`` to ``people23`` are further blind development sets (``people5`` to ``people15`` span both
 houses; ``people16`` the simulator's test flat and bungalow; ``people18`` a townhouse of its own, a world file
-beside the set; ``people19`` a garden flat, ``people20`` a farmhouse, ``people21`` an accessible flat and
-``people22`` a terraced family house on two floors, likewise). Each case is a command with its gold frames and
-goals, or with a word the refusal (``reject``) or the question back (``question``) must contain. Cases run
-against the ERL apartment or, with ``world: other``, against a different house
-(``tests/fixtures/language/other_world``), to show that the language code knows no world's names; ``world:`` a
-simulator world's name or file (``test_flat``, ``test_bungalow``; a relative file is looked for beside the set
-first) reads it as ``knic goal --world`` does.
+beside the set; ``people19`` a garden flat, ``people20`` a farmhouse, ``people21`` an accessible flat,
+``people22`` a terraced family house on two floors and ``people23`` a shared student house, likewise). Each
+case is a command with its gold frames and goals, or with a word the refusal (``reject``) or the question back
+(``question``) must contain. Cases run against the ERL apartment or, with ``world: other``, against a
+different house (``tests/fixtures/language/other_world``), to show that the language code knows no world's
+names; ``world:`` a simulator world's name or file (``test_flat``, ``test_bungalow``; a relative file is
+looked for beside the set first) reads it as ``knic goal --world`` does.
 Figures:
 
 * ``accuracy`` -- share of cases handled exactly right (frames and goals, or the right refusal or question);
@@ -64,6 +64,7 @@ SETS = {
     "people20-dev": FIXTURES / "people20" / "dev.yaml",
     "people21-dev": FIXTURES / "people21" / "dev.yaml",
     "people22-dev": FIXTURES / "people22" / "dev.yaml",
+    "people23-dev": FIXTURES / "people23" / "dev.yaml",
 }
 OTHER_WORLD = FIXTURES / "other_world" / "problem.pddl"
 _MAIN = {"MOTION": ("goal",), "OPERATING": ("device", "state")}
