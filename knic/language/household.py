@@ -3,6 +3,7 @@ by :class:`knic.language.reader.Reader`: :func:`words_tidied` and :func:`ones_na
 sentence, :func:`other_one` and :func:`said_around` on the chunks, between the passes of
 :mod:`knic.language.tidy`).
 
+* a thing said, then "where" alone ("chopsticks, where?"): where it is (:func:`where_last`);
 * hesitations inside a phrase ("when you um get a minute"), and "you're" after "when" or "once" ("when
   you're done": when you are done), in the words (:func:`words_tidied`);
 * what a device is said or asked to be before the request about it ("is the hallway light on? turn it
@@ -25,6 +26,7 @@ sentence, :func:`other_one` and :func:`said_around` on the chunks, between the p
 
 from __future__ import annotations
 
+import re
 from collections.abc import Callable, Sequence
 from dataclasses import replace
 
@@ -56,7 +58,32 @@ _NOT_ENDING_A_THING = frozenset(
 
 
 #: what a thing did that asks where it is now ("where did my phone go", "where has the hairbrush gone")
-_GONE = ("go", "gone", "went", "disappeared", "vanished")
+_GONE = ("go", "gone", "went", "disappeared", "vanished", "got")
+#: question words, and what stresses them without adding a word of meaning ("where tf is", "where on earth")
+_WH = frozenset({"where", "what", "who", "how", "why", "which"})
+_WH_STRESSED = (
+    ["tf"],
+    ["the", "hell"],
+    ["the", "heck"],
+    ["on", "earth"],
+    ["the", "fuck"],
+    ["in", "the", "world"],
+)
+#: what, said before a last "where", asks something else ("do you know where", "i wonder where")
+_NOT_A_THING = frozenset(
+    {"know", "wonder", "see", "is", "are", "put", "left", "go", "went", "did", "i", "you"}
+)
+_WHERE_LAST = re.compile(r"^\s*(?P<thing>[a-z' ]+?)\s*[,.]?\s+where\s*\??\s*$")
+
+
+def where_last(text: str) -> str:
+    """ "chopsticks, where?", "my keys where": a thing said, then "where" alone (said by learners and tired
+    people): where the thing is ("where is my keys"); else ``text``."""
+    match = _WHERE_LAST.match(text.lower())
+    words = match.group("thing").split() if match else []
+    if not words or len(words) > 4 or "where" in words or _NOT_A_THING & set(words):
+        return text
+    return f"where is {match.group('thing') if match else ''}"
 
 
 #: who may be asked where they put a thing, as the command language says it ("where did you put")
@@ -66,7 +93,12 @@ _PUT_AWAY = frozenset({"put", "leave", "left", "hide", "hid", "hidden", "move", 
 
 
 def gone_asked(tokens: list[str]) -> list[str]:
-    """ "where did my phone go", "where has the hairbrush gone", "where'd the keys go": where the thing is."""
+    """ "where did my phone go", "where has the hairbrush gone", "where'd the keys go", "where has the rota
+    got to": where the thing is; "where tf is", "where on earth are": where."""
+    for i in range(len(tokens) - 1, 0, -1):
+        for said in _WH_STRESSED:
+            if tokens[i - 1] in _WH and tokens[i : i + len(said)] == said:
+                tokens = [*tokens[:i], *tokens[i + len(said) :]]
     for i, token in enumerate(tokens[:-2]):
         if token not in ("where", "where'd") or (
             token == "where" and tokens[i + 1] not in ("did", "has", "have")

@@ -3,7 +3,8 @@
 * Where the speaker has a room named after them ("rhys_bedroom"), "my bed" is the bed in that room, when the
   world has several beds and one of them is there ("hoodie from my bed": rhys's single bed, not the double bed
   or the camp bed). The world names no owners of furniture; a person's room is the one sign of whose a piece
-  of it is.
+  of it is. So too for a device ("open my blind", "my room light off": the one in that room), and "my room"
+  or "my bedroom" is that room.
 * Where a thing's name holds a person's name ("kerry_keys", "maisie_lunchbox"), "my keys" said by kerry,
   "kerry's keys", "kerrys keys" (typed without the apostrophe) and "her keys" once kerry was named are that
   thing: the world names its owner. Said by someone who owns none of them, "my keys" still asks which.
@@ -23,6 +24,7 @@ _MY = re.compile(r"\b(my|ma) ([a-z]+(?: [a-z]+)?)\b", re.IGNORECASE)
 _WORD = re.compile(r"[a-z']+")
 _SPEAKERS = ("my", "ma", "mine")
 _OTHERS = ("his", "her", "their")
+_ROOMS = ("room", "bedroom")  # "my room": the speaker's own
 
 
 def own_room(vocabulary: Vocabulary, speaker: str) -> str | None:
@@ -48,22 +50,27 @@ def owned_read(text: str, vocabulary: Vocabulary, speaker: str) -> str:
 
     def mine(match: re.Match[str]) -> str:
         for said in (match.group(2), match.group(2).split()[0]):
-            named = _furniture_named(vocabulary, said.lower())
+            rest = match.group(2)[len(said) :]
+            if said.lower() in _ROOMS:  # "bring it to my room": the room named after the speaker
+                return f"the {where}{rest}"
+            named = _placed_named(vocabulary, said.lower())
             there = [s for s in named if room in vocabulary.locations.get(s, ())]
             if len(named) > 1 and len(there) == 1:
-                rest = match.group(2)[len(said) :]
                 return f"the {said} in the {where}{rest}"
         return match.group(0)
 
     return _MY.sub(mine, text)
 
 
-def _furniture_named(vocabulary: Vocabulary, said: str) -> list[str]:
-    """The furniture whose name is ``said`` or ends with it."""
+def _placed_named(vocabulary: Vocabulary, said: str) -> list[str]:
+    """The furniture and devices whose name is ``said`` or ends with it (devices are in rooms too: "my
+    blind", "my room light")."""
     found = {
         t.symbol
         for t in vocabulary.terms
-        if vocabulary.is_subtype(t.type, "furniture") and (t.phrase == said or t.phrase.endswith(" " + said))
+        if not t.is_group
+        and (vocabulary.is_subtype(t.type, "furniture") or vocabulary.is_subtype(t.type, "device"))
+        and (t.phrase == said or t.phrase.endswith(" " + said))
     }
     return sorted(found)
 

@@ -55,6 +55,12 @@ class Places:
             kept = tuple(t for t in candidates if any(self._within(t, r) for r in rooms))
             if not kept and place.prep is not None and place.prep_text not in self.language.containment:
                 kept = self._near(candidates, rooms)  # "the bedside table next to the bed"
+            if (
+                not kept
+                and all(self.is_a(t, "device") for t in candidates)
+                and all(self.is_a(t, "furniture") for t in rooms)
+            ):  # "the lamp on my desk": a device is in a room, not on furniture; the one in the desk's room
+                kept = self._near(candidates, self._in_next_room(rooms, args, index))
             if not kept and all(self.is_a(t, "light") for t in candidates):
                 kept = self._dimmers_in(rooms)  # "the living room light" where a dimmer is the room's light
             elif grouped and self._all_said(head) and all(self.is_a(t, "light") for t in candidates):
@@ -140,6 +146,14 @@ class Places:
         place.chunk = Chunk("entity", place.chunk.text, kept, role=place.chunk.role)
         room.consumed = True
         return True
+
+    def _in_next_room(self, pieces: Sequence[Term], args: list[Arg], index: int) -> Sequence[Term]:
+        """The pieces of furniture in the room said right after them ("the desk in mei's room"), else all."""
+        after = args[index + 1] if index + 1 < len(args) else None
+        if after is None or after.prep != "place" or after.chunk.kind != "entity":
+            return pieces
+        rooms = [t for t in after.chunk.terms if self.is_a(t, "room")]
+        return [t for t in pieces if any(self._within(t, r) for r in rooms)] or pieces
 
     @staticmethod
     def _all_said(arg: Arg) -> bool:

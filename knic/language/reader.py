@@ -38,7 +38,7 @@ from knic.language.chunks import Chunk, Chunker
 from knic.language.clauses import Arg, Clause, split_clauses
 from knic.language.commands import CommandLanguage, command_language
 from knic.language.frames import KIND_NAMES, KIND_PLURALS, SPEAKER, CommandFrame
-from knic.language.household import ones_named, other_one, said_around, words_tidied
+from knic.language.household import ones_named, other_one, said_around, where_last, words_tidied
 from knic.language.learners import learners_read
 from knic.language.naming import names_device, places_before, said_named, synonym_only
 from knic.language.places import Places
@@ -119,7 +119,7 @@ class Reader(Places):
         """
         language = self.language
         text = digits_read(
-            cut_off_dropped(text),
+            where_last(cut_off_dropped(text)),
             language.digit_words,
             language.typed_words,
             self._units,

@@ -225,9 +225,15 @@ def own_phrases(
 ) -> tuple[str, ...]:
     """A symbol's phrases less each one-word phrase that ends the name of another thing of its type, unless
     the thing is a room: where a lexicon written for one home calls its ``bedroom_blinds`` "the blinds", a
-    home with more blinds ("kitchen_blind", "study_blind") means them all, or asks which."""
+    home with more blinds ("kitchen_blind", "study_blind") means them all, or asks which. A phrase that is
+    another thing's own name is that thing's: where a home has a ``bedside_table`` and a ``night_stand``,
+    "the night stand" is the night stand."""
     kind = instances.get(symbol)
-    if room or len(phrases) < 2:
+    if len(phrases) < 2:
+        return phrases
+    others = {o.replace("_", " ") for o in instances if o != symbol}
+    phrases = tuple(p for p in phrases if p not in others) or phrases
+    if room:
         return phrases
     ends = {o.replace("_", " ").split()[-1] for o, k in instances.items() if k == kind and o != symbol}
     ends |= {end[:-1] for end in ends if end.endswith("s")} | {end + "s" for end in ends}
