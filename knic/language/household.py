@@ -3,6 +3,7 @@ by :class:`knic.language.reader.Reader`: :func:`words_tidied` and :func:`ones_na
 sentence, :func:`other_one` and :func:`said_around` on the chunks, between the passes of
 :mod:`knic.language.tidy`).
 
+* "bin the pizza box": thrown away (:func:`binned`);
 * a thing said, then "where" alone ("chopsticks, where?"): where it is (:func:`where_last`);
 * hesitations inside a phrase ("when you um get a minute"), and "you're" after "when" or "once" ("when
   you're done": when you are done), in the words (:func:`words_tidied`);
@@ -50,6 +51,8 @@ _SHOULD = frozenset({"need", "needs", "to", "should", "must", "has", "have", "ca
 
 #: articles a thing said again after a hesitation starts with ("a cup of tea, er, a cup")
 _ARTICLES = frozenset({"a", "an", "the", "my", "some", "your"})
+#: what "bin" is a noun after ("in the bin the ...", "the kitchen bin")
+_NOT_BINNED = frozenset({"a", "an", "the", "my", "your", "our", "in", "into", "to", "from", "by", "near"})
 #: words after which a hesitation before an article is no correction ("bring me uh the mug", "to uh the")
 _NOT_ENDING_A_THING = frozenset(
     {"me", "him", "her", "us", "them", "it", "and", "or", "then", "to", "from", "of", "on", "in", "at", "for"}
@@ -121,13 +124,22 @@ def gone_asked(tokens: list[str]) -> list[str]:
     return tokens
 
 
+def binned(tokens: list[str]) -> list[str]:
+    """ "bin the pizza box": "bin" said as a verb, right before a determiner and after none, throws the thing
+    away."""
+    for i, token in enumerate(tokens[:-1]):
+        if token == "bin" and tokens[i + 1] in _ARTICLES and (i == 0 or tokens[i - 1] not in _NOT_BINNED):
+            return [*tokens[:i], "toss", "away", *tokens[i + 1 :]]
+    return tokens
+
+
 def words_tidied(tokens: list[str]) -> list[str]:
     """The words without hesitations, with "you're" spelled out after a word of time and "me" said again for
     "my" ("bring me me glasses", as said in Britain and Ireland). A hesitation between a
     thing said after an article and the same article said again ("get me a cup of tea er a cup") is the
     speaker correcting the thing: it is read as "i mean"."""
     out: list[str] = []
-    tokens = gone_asked(tokens)
+    tokens = binned(gone_asked(tokens))
     for i, token in enumerate(tokens):
         if token in HESITATIONS:
             nxt = tokens[i + 1] if i + 1 < len(tokens) else ""

@@ -4,7 +4,8 @@
   world has several beds and one of them is there ("hoodie from my bed": rhys's single bed, not the double bed
   or the camp bed). The world names no owners of furniture; a person's room is the one sign of whose a piece
   of it is. So too for a device ("open my blind", "my room light off": the one in that room), and "my room"
-  or "my bedroom" is that room.
+  or "my bedroom" is that room. "His desk", "her room" are so of the person named last before them ("is
+  finn's laptop on his desk": finn's desk).
 * Where a thing's name holds a person's name ("kerry_keys", "maisie_lunchbox"), "my keys" said by kerry,
   "kerry's keys", "kerrys keys" (typed without the apostrophe) and "her keys" once kerry was named are that
   thing: the world names its owner. Said by someone who owns none of them, "my keys" still asks which.
@@ -20,7 +21,7 @@ from functools import lru_cache
 from knic.language.shortnames import contains
 from knic.language.vocabulary import Vocabulary
 
-_MY = re.compile(r"\b(my|ma) ([a-z]+(?: [a-z]+)?)\b", re.IGNORECASE)
+_MY = re.compile(r"\b(my|ma|his|her|their) ([a-z]+(?: [a-z]+)?)\b", re.IGNORECASE)
 _WORD = re.compile(r"[a-z']+")
 _SPEAKERS = ("my", "ma", "mine")
 _OTHERS = ("his", "her", "their")
@@ -41,14 +42,27 @@ def own_room(vocabulary: Vocabulary, speaker: str) -> str | None:
 def owned_read(text: str, vocabulary: Vocabulary, speaker: str) -> str:
     """``text`` with a person's own things said by their names, and "my <furniture>" said as "the
     <furniture> in <the speaker's room>" where that tells one of several pieces of furniture of that name (see
-    the module docstring); else ``text``."""
+    the module docstring); "his" or "her" likewise of the person named last before it; else ``text``."""
     text = _things_read(text, vocabulary, speaker)
-    room = own_room(vocabulary, speaker)
-    if room is None:
-        return text
-    where = vocabulary.phrase_of(room)
+    people = {t.phrase: t.symbol for t in vocabulary.terms if vocabulary.is_subtype(t.type, "person")}
+
+    def owner(match: re.Match[str]) -> str | None:
+        if match.group(1).lower() in _SPEAKERS:
+            return speaker
+        before = text[: match.start()].lower()
+        named = [
+            (m.end(), symbol)
+            for p, symbol in people.items()
+            for m in re.finditer(rf"\b{re.escape(p)}\b", before)
+        ]
+        return max(named)[1] if named else None
 
     def mine(match: re.Match[str]) -> str:
+        whose = owner(match)
+        room = own_room(vocabulary, whose) if whose else None
+        if room is None:
+            return match.group(0)
+        where = vocabulary.phrase_of(room)
         for said in (match.group(2), match.group(2).split()[0]):
             rest = match.group(2)[len(said) :]
             if said.lower() in _ROOMS:  # "bring it to my room": the room named after the speaker

@@ -178,8 +178,11 @@ class Places:
     def _within(self, term: Term, place: Term) -> bool:
         if place.symbol in self.vocabulary.locations.get(term.symbol, ()):
             return True
-        if self.is_a(term, "device"):
-            # whole words: the den's lamp is no "garden room reading lamp"
+        if self.is_a(term, "device") and not (
+            self.vocabulary.locations.get(term.symbol) and self.is_a(place, "room")
+        ):
+            # a device is where its name says (whole words: the den's lamp is no "garden room reading lamp"),
+            # unless the world places it in another room (the top landing's light is not on the landing)
             return contains(term.symbol.split("_"), place.symbol.split("_")) or contains(
                 term.phrase.split(), place.phrase.split()
             )

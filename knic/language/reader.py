@@ -42,10 +42,12 @@ from knic.language.household import ones_named, other_one, said_around, where_la
 from knic.language.learners import learners_read
 from knic.language.naming import names_device, places_before, said_named, synonym_only
 from knic.language.places import Places
+from knic.language.remarks import remark, tagged, times_dropped
 from knic.language.roles import INTERPRETERS
 from knic.language.segments import (
     cut,
     doings_dropped,
+    late_repairs,
     operates_it,
     pointed,
     sayings_dropped,
@@ -126,21 +128,25 @@ class Reader(Places):
             self._before_numbers,
         )
         segments = [
-            words_tidied(spelled(normalize(part).split(), self.language.spellings))
+            times_dropped(words_tidied(spelled(normalize(part).split(), self.language.spellings)))
             for part in SEGMENT_END.split(text)
         ]
         segments = [segment for segment in segments if segment]
         if not segments:
             raise LanguageError("nothing to understand: the command is empty")
-        opening = not_request(segments, language.not_requests, language.not_requests_unless)
+        opening = not_request(
+            tagged(segments, self.chunks), language.not_requests, language.not_requests_unless
+        )
         if opening:
             raise LanguageError(
                 f"'{opening} ...' asks about something or says what you do or will do: no request, no action"
                 " for me"
             )
+        if stated := remark(segments, self.chunks):  # "the landing light has been flickering all week"
+            raise LanguageError(f"'{stated}' says how something is or was: no request, no action for me")
         segments = said_named(segments, self.vocabulary, self.chunker.language_words)  # naming.py
         segments = described(ones_named(segments, self.vocabulary), self.vocabulary)  # selecting.py
-        segments = sorry_repairs(segments, self.chunks)
+        segments = late_repairs(sorry_repairs(segments, self.chunks), self.chunks)
         # pointing first ("see that candle? put it on the nightstand"), else as said; unpunctuated ("close the
         # blinds it's too bright"): by the sentences the words start, then without statements (segments.py)
         pointing = pointed(segments, self.chunks)

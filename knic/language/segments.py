@@ -188,6 +188,32 @@ def sorry_repairs(
     return out
 
 
+#: what a speaker says after the thing that corrects what they said ("..., the lounge light I mean")
+_LATE_REPAIRS = (["actually"], ["i", "mean"], ["i", "meant"], ["rather"])
+
+
+def late_repairs(
+    segments: list[list[str]], chunks: Callable[[Sequence[str]], list[Chunk]]
+) -> list[list[str]]:
+    """The segments with a repair said last in a sentence after an action ("switch on the floor lamp, er,
+    the lounge light I mean", "get my laptop, well, the laptop charger actually") said first in it, as
+    "i mean the lounge light": the thing corrects what the action said. A sentence with a verb of its own
+    ("..., actually make it 60") is left as said."""
+    out: list[list[str]] = []
+    for segment in segments:
+        marker = next((m for m in _LATE_REPAIRS if len(segment) > len(m) and segment[-len(m) :] == m), None)
+        said = chunks(segment[: -len(marker)]) if marker else []
+        if (
+            marker is not None
+            and any(c.kind == "verb" for s in out for c in chunks(s))
+            and not any(c.kind in ("verb", "repair") for c in said)
+            and any(c.kind in ("entity", "me", "number", "level", "state") for c in said)
+        ):
+            segment = ["i", "mean", *segment[: -len(marker)]]
+        out.append(segment)
+    return out
+
+
 def _corrects(before: list[str], after: list[str], chunks: Callable[[Sequence[str]], list[Chunk]]) -> bool:
     if not any(c.kind == "verb" for c in chunks(before)):
         return False

@@ -1,0 +1,96 @@
+"""Remarks: what a speaker says of how something is or was, with no request in it, for
+:class:`knic.language.reader.Reader` (refused: no action for the robot).
+
+* A sentence that says what something was, did or has been doing ("the landing light has been flickering all
+  week", "shift was brutal", "students kept their houses tidy"): words, then a past or perfect "be", "have"
+  or "keep" before any verb of the command language, and no request after it; a thing "left" so ("the
+  garage light has been left on again") is a complaint that asks for the other state, no remark. A command
+  of such sentences and talk naming nothing of the world ("in my day, ...") is a remark; a request said
+  with one ("the post was delivered, bring it to me") is read as said.
+* A question tag or talk said after the one sentence of a command ("is it going to be sunny tomorrow, do you
+  think?") leaves that sentence alone for :func:`knic.language.reader.not_request`.
+* "all" before a word of time ("leave the porch light on all night", "flickering all week") is a time, not
+  every device: it is dropped (:func:`times_dropped`).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+
+from knic.language.chunks import Chunk
+
+#: a past or perfect "be", "have" or "keep" that says what something was or did
+_PAST = (("has", "been"), ("have", "been"), ("had", "been"), ("was",), ("were",), ("kept",), ("used", "to"))
+#: words a sentence asking something opens with: no remark
+_ASKING = frozenset({"where", "what", "who", "which", "how", "why", "when", "is", "are", "did", "do", "can"})
+#: what is said right before a past "be" of a thing ("the mug that was ...": the thing is described)
+_DESCRIBING = frozenset({"that", "which", "who", "what", "it", "there"})
+#: words of time "all" goes before ("all week"); "all the time", "all along"
+_TIMES = frozenset(
+    {"week", "day", "night", "morning", "afternoon", "evening", "year", "month", "weekend", "along", "summer"}
+    | {"winter", "autumn", "spring", "today", "yesterday", "weekend", "term", "semester"}
+)
+#: what a sentence that names nothing of the world may hold and still be talk
+_TALK = frozenset({"unknown", "det", "prep", "join", "pronoun", "noun", "owner"})
+
+
+def remark(segments: list[list[str]], chunks: Callable[[Sequence[str]], list[Chunk]]) -> str | None:
+    """The sentence a command of remarks says (see the module docstring), else None."""
+    stated: list[str] | None = None
+    for segment in segments:
+        said = chunks(segment)
+        if not said:
+            continue
+        if _states(segment, chunks):
+            stated = stated or segment
+            continue
+        if not all(c.kind in _TALK and not c.terms for c in said):
+            return None
+    return " ".join(stated) if stated else None
+
+
+def _states(segment: list[str], chunks: Callable[[Sequence[str]], list[Chunk]]) -> bool:
+    """Whether a sentence says what something was or did (see the module docstring)."""
+    if not segment or segment[0] in _ASKING:
+        return False
+    for at in range(1, len(segment)):
+        marker = next((p for p in _PAST if tuple(segment[at : at + len(p)]) == p), None)
+        if marker is None:
+            continue
+        before = chunks(segment[:at])
+        # a verb with more said after it asks ("bring me the mug that was ..."); one said right before the
+        # "be" is a noun ("shift was brutal")
+        if segment[at - 1] in _DESCRIBING or any(c.kind == "verb" for c in before[:-1]):
+            return False
+        if segment[at + len(marker) : at + len(marker) + 1] == ["left"]:
+            return False  # "the garage light has been left on again": a complaint that asks it off
+        after = chunks(segment[at + len(marker) :])
+        # "... tidy" said last is what was kept so; a verb with more after it asks ("the light was on all
+        # night turn it off")
+        return not any(c.kind == "verb" for c in after[:-1])
+    return False
+
+
+def tagged(segments: list[list[str]], chunks: Callable[[Sequence[str]], list[Chunk]]) -> list[list[str]]:
+    """The first sentence alone when the others are talk naming nothing ("..., do you think?"), else all."""
+    rest = [chunks(s) for s in segments[1:]]
+    if rest and all(all(c.kind in _TALK and not c.terms for c in said) for said in rest):
+        return segments[:1]
+    return segments
+
+
+def times_dropped(tokens: list[str]) -> list[str]:
+    """The words without "all" before a word of time ("all week", "all the time")."""
+    out: list[str] = []
+    i = 0
+    while i < len(tokens):
+        if tokens[i] == "all" and i + 1 < len(tokens):
+            if tokens[i + 1] in _TIMES:
+                i += 2
+                continue
+            if tokens[i + 1 : i + 3] == ["the", "time"]:
+                i += 3
+                continue
+        out.append(tokens[i])
+        i += 1
+    return out
