@@ -2,7 +2,8 @@
 command they mean (used by :class:`knic.language.reader.Reader`): the verb said last ("to the bathroom go"),
 where the speaker themself goes said before the request ("i go to bed now, switch off the lamp"), a room told
 by what is in it ("go to the room where is the bed"), "give it me", "you" before the verb after the thing
-("toolbox you take from shelf")."""
+("toolbox you take from shelf"), a place said before the thing there ("on my desk is calculator") and a thing
+said before the verb that puts it ("the dumbbells put on the weights bench and the boots on the rack")."""
 
 from __future__ import annotations
 
@@ -15,7 +16,52 @@ def learners_read(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
     """The chunks with the orders of this module put as a command says them."""
     said = subject_dropped(appositions_dropped(helped_to(chunks), vocabulary))
     said = gapped_given(out_the(carried_in(said, vocabulary), vocabulary), vocabulary)
-    return verb_last_moved(own_going_dropped(own_doing_dropped(room_told(it_me(said), vocabulary))))
+    said = verb_last_moved(own_going_dropped(own_doing_dropped(room_told(it_me(said), vocabulary))))
+    return object_first(place_first(said, vocabulary), vocabulary)
+
+
+#: what says where a thing is after the place said first ("on my desk is calculator")
+_BE = frozenset({"is", "are", "lies", "sits", "stands"})
+#: the place prepositions a learner opens with before saying what is there
+_FIRST_PLACES = frozenset({"on", "in", "at", "under", "inside", "on top of", "next to", "by"})
+
+
+def place_first(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
+    """ "on my desk is calculator, bring it to the kitchen table" (a place said first, as Polish and German
+    speakers may): the thing is said first, "calculator is on my desk, ...", so that the place says where it
+    is."""
+    if len(chunks) < 4 or chunks[0].kind != "prep" or chunks[0].text not in _FIRST_PLACES:
+        return chunks
+    at = next((i for i, c in enumerate(chunks) if c.kind in ("verb", "join") or c.text in _BE), None)
+    if at is None or at < 2 or chunks[at].text not in _BE:
+        return chunks
+    thing = at + 1 + (chunks[at + 1].kind == "det" if at + 1 < len(chunks) else 0)
+    if thing >= len(chunks) or not _is(chunks[thing], vocabulary, "item"):
+        return chunks
+    return [*chunks[at + 1 : thing + 1], chunks[at], *chunks[:at], *chunks[thing + 1 :]]
+
+
+def object_first(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
+    """ "the dumbbells put on the weights bench and the work boots on the shoe rack": a thing said before a
+    verb that carries or puts it, the verb followed by where: the thing is said after the verb ("put the
+    dumbbells on ...") so that what follows "and" is read as more of the same."""
+    start = 1 if chunks[:1] and chunks[0].kind == "det" else 0
+    if len(chunks) < start + 3 or not _is(chunks[start], vocabulary, "item"):
+        return chunks
+    verb, after = chunks[start + 1], chunks[start + 2]
+    carries = {"PLACING", "BRINGING"} & set(verb.frames)
+    if verb.kind != "verb" or not carries or verb.beneficiary or after.kind != "prep":
+        return chunks
+    return [verb, *chunks[: start + 1], *chunks[start + 2 :]]
+
+
+def _is(chunk: Chunk, vocabulary: Vocabulary, kind: str) -> bool:
+    """Whether a chunk names only things of ``kind``."""
+    return (
+        chunk.kind == "entity"
+        and bool(chunk.terms)
+        and all(vocabulary.is_subtype(t.type, kind) for t in chunk.terms)
+    )
 
 
 def helped_to(chunks: list[Chunk]) -> list[Chunk]:

@@ -42,7 +42,7 @@ from knic.language.household import ones_named, other_one, said_around, where_la
 from knic.language.learners import learners_read
 from knic.language.naming import names_device, places_before, said_named, synonym_only
 from knic.language.places import Places
-from knic.language.remarks import remark, tagged, times_dropped
+from knic.language.remarks import done_dropped, remark, tagged, times_dropped
 from knic.language.roles import INTERPRETERS
 from knic.language.segments import (
     cut,
@@ -147,6 +147,7 @@ class Reader(Places):
         segments = said_named(segments, self.vocabulary, self.chunker.language_words)  # naming.py
         segments = described(ones_named(segments, self.vocabulary), self.vocabulary)  # selecting.py
         segments = late_repairs(sorry_repairs(segments, self.chunks), self.chunks)
+        segments = done_dropped(segments, self.chunks, lambda c: any(self.is_a(t, "person") for t in c.terms))
         # pointing first ("see that candle? put it on the nightstand"), else as said; unpunctuated ("close the
         # blinds it's too bright"): by the sentences the words start, then without statements (segments.py)
         pointing = pointed(segments, self.chunks)

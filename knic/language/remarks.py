@@ -11,6 +11,9 @@
   think?") leaves that sentence alone for :func:`knic.language.reader.not_request`.
 * "all" before a word of time ("leave the porch light on all night", "flickering all week") is a time, not
   every device: it is dropped (:func:`times_dropped`).
+* What someone did with a thing said before ("do you happen to know where the headphones are? jas borrowed
+  them"): a sentence of a person, a past verb the command language lacks and no thing named, said beside a
+  request, is talk (:func:`done_dropped`): jas is no one to look for.
 """
 
 from __future__ import annotations
@@ -25,6 +28,8 @@ _PAST = (("has", "been"), ("have", "been"), ("had", "been"), ("was",), ("were",)
 _ASKING = frozenset({"where", "what", "who", "which", "how", "why", "when", "is", "are", "did", "do", "can"})
 #: what is said right before a past "be" of a thing ("the mug that was ...": the thing is described)
 _DESCRIBING = frozenset({"that", "which", "who", "what", "it", "there"})
+#: words that make what follows a wish ("it'd be great if the light was off", "i wish the blinds were shut")
+_WISHING = frozenset({"if", "wish", "rather"})
 #: words of time "all" goes before ("all week"); "all the time", "all along"
 _TIMES = frozenset(
     {"week", "day", "night", "morning", "afternoon", "evening", "year", "month", "weekend", "along", "summer"}
@@ -62,6 +67,8 @@ def _states(segment: list[str], chunks: Callable[[Sequence[str]], list[Chunk]]) 
         # "be" is a noun ("shift was brutal")
         if segment[at - 1] in _DESCRIBING or any(c.kind == "verb" for c in before[:-1]):
             return False
+        if _WISHING & set(segment[:at]):  # "it'd be great if the landing light was off": a wish
+            return False
         if segment[at + len(marker) : at + len(marker) + 1] == ["left"]:
             return False  # "the garage light has been left on again": a complaint that asks it off
         after = chunks(segment[at + len(marker) :])
@@ -94,3 +101,24 @@ def times_dropped(tokens: list[str]) -> list[str]:
         out.append(tokens[i])
         i += 1
     return out
+
+
+def done_dropped(
+    segments: list[list[str]],
+    chunks: Callable[[Sequence[str]], list[Chunk]],
+    is_person: Callable[[Chunk], bool],
+) -> list[list[str]]:
+    """The sentences without those saying what someone did to a thing said before (see the module
+    docstring), when a sentence with a verb is left; else all."""
+    kept = [s for s in segments if not _done(chunks(s), is_person)]
+    acts = any(c.kind == "verb" for s in kept for c in chunks(s))
+    return kept if acts and len(kept) < len(segments) else segments
+
+
+def _done(said: list[Chunk], is_person: Callable[[Chunk], bool]) -> bool:
+    """Whether a sentence is a person, a word in "-ed" the tables do not know, and no name after it."""
+    if len(said) < 2 or said[0].kind != "entity" or not is_person(said[0]):
+        return False
+    if said[1].kind != "unknown" or not said[1].text.endswith("ed"):
+        return False
+    return not any(c.terms or c.kind in ("verb", "me") for c in said[2:])
