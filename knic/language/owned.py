@@ -11,6 +11,9 @@
   thing: the world names its owner. Said by someone who owns none of them, "my keys" still asks which.
 * A person's name with an "s" and no apostrophe before a word ("get tylers basketball") is said as the
   owner ("tyler's"), not as the one to give it to.
+* Things given to several people ("give tyler and maisie the lunchboxes", "... their lunchboxes") where each
+  of them owns one of the things by its name go each to its owner, not every thing to every one of them
+  (:func:`own_pairs`).
 """
 
 from __future__ import annotations
@@ -18,6 +21,7 @@ from __future__ import annotations
 import re
 from functools import lru_cache
 
+from knic.language.frames import CommandFrame
 from knic.language.shortnames import contains
 from knic.language.vocabulary import Vocabulary
 
@@ -175,3 +179,17 @@ def _owned_thing(owned: dict[tuple[str, str], str], owner: str, after: list[str]
         if name is not None:
             return name, n
     return None
+
+
+def own_pairs(frames: list[CommandFrame]) -> list[CommandFrame]:
+    """The frames with each thing given to its owner only, where things are given to several people and each
+    of them owns exactly one of the things by its name (see the module docstring); else ``frames``."""
+    given = [f for f in frames if f.kind == "BRINGING" and f.get("beneficiary") and f.get("theme")]
+    people = list(dict.fromkeys(str(f.get("beneficiary")) for f in given))
+    things = list(dict.fromkeys(str(f.get("theme")) for f in given))
+    if len(people) < 2 or len(given) != len(people) * len(things):
+        return frames
+    owners = {p: [t for t in things if contains(t.split("_"), p.split("_"))] for p in people}
+    if any(len(owned) != 1 for owned in owners.values()):
+        return frames
+    return [f for f in frames if f not in given or owners[str(f.get("beneficiary"))] == [f.get("theme")]]

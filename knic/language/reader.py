@@ -41,8 +41,9 @@ from knic.language.frames import KIND_NAMES, KIND_PLURALS, SPEAKER, CommandFrame
 from knic.language.household import ones_named, other_one, said_around, where_last, words_tidied
 from knic.language.learners import learners_read
 from knic.language.naming import names_device, places_before, said_named, synonym_only
+from knic.language.owned import own_pairs
 from knic.language.places import Places
-from knic.language.remarks import done_dropped, remark, tagged, times_dropped
+from knic.language.remarks import done_dropped, refused, tagged, times_dropped, together_dropped
 from knic.language.roles import INTERPRETERS
 from knic.language.segments import (
     cut,
@@ -142,8 +143,9 @@ class Reader(Places):
                 f"'{opening} ...' asks about something or says what you do or will do: no request, no action"
                 " for me"
             )
-        if stated := remark(segments, self.chunks):  # "the landing light has been flickering all week"
-            raise LanguageError(f"'{stated}' says how something is or was: no request, no action for me")
+        if refusal := refused(segments, self.chunks):  # "the landing light has been flickering all week"
+            raise LanguageError(refusal)
+        segments = together_dropped(segments, self.chunks)  # "..., could you take them together"
         segments = said_named(segments, self.vocabulary, self.chunker.language_words)  # naming.py
         segments = described(ones_named(segments, self.vocabulary), self.vocabulary)  # selecting.py
         segments = late_repairs(sorry_repairs(segments, self.chunks), self.chunks)
@@ -296,7 +298,8 @@ class Reader(Places):
                 located.setdefault(frame.args["theme"], frame.get("ground") or frame.args["source"])
         frames = frames[n:]
         ask_where, held = {i - n for i in ask_where if i >= n}, {i - n for i in held if i >= n}
-        reading = chain(self._placed(frames, located), self.vocabulary, ask_where=ask_where, held=held)
+        frames = own_pairs(self._placed(frames, located))  # "give tyler and maisie their lunchboxes"
+        reading = chain(frames, self.vocabulary, ask_where=ask_where, held=held)
         reading = settled(reading, self.vocabulary)  # "open the blinds and set them to 40": at 40
         return for_asker(reading, asker)  # "tracy asks the robot to fetch her glasses": for tracy
 

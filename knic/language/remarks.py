@@ -14,6 +14,10 @@
 * What someone did with a thing said before ("do you happen to know where the headphones are? jas borrowed
   them"): a sentence of a person, a past verb the command language lacks and no thing named, said beside a
   request, is talk (:func:`done_dropped`): jas is no one to look for.
+* "together" (or "at once", "in one go") said last says how, not what: dropped; a sentence then left with a
+  verb and "it" or "them" only, after a sentence that named them ("bring me the milk and the butter, could
+  you take them together"), asks nothing more (:func:`together_dropped`).
+* "set an alarm (a timer, a reminder) for half six": no action the robot has (:func:`undoable`).
 """
 
 from __future__ import annotations
@@ -37,6 +41,17 @@ _TIMES = frozenset(
 )
 #: what a sentence that names nothing of the world may hold and still be talk
 _TALK = frozenset({"unknown", "det", "prep", "join", "pronoun", "noun", "owner"})
+
+
+def refused(segments: list[list[str]], chunks: Callable[[Sequence[str]], list[Chunk]]) -> str | None:
+    """Why a command of remarks, or one asking to set an alarm, is refused (see the module docstring); else
+    None."""
+    stated = remark(segments, chunks)
+    if stated:
+        return f"'{stated}' says how something is or was: no request, no action for me"
+    timed = (undoable(segments) or "").removesuffix("s")
+    article = "an" if timed[:1] in ("a", "e", "i", "o", "u") else "a"
+    return f"setting {article} {timed} is no action for me" if timed else None
 
 
 def remark(segments: list[list[str]], chunks: Callable[[Sequence[str]], list[Chunk]]) -> str | None:
@@ -122,3 +137,37 @@ def _done(said: list[Chunk], is_person: Callable[[Chunk], bool]) -> bool:
     if said[1].kind != "unknown" or not said[1].text.endswith("ed"):
         return False
     return not any(c.terms or c.kind in ("verb", "me") for c in said[2:])
+
+
+#: how things are carried, said last ("take them together")
+_TOGETHER = (["all", "together"], ["together"], ["at", "once"], ["in", "one", "go"], ["in", "one", "trip"])
+#: what "set" asks that no robot's action does ("set an alarm for half six")
+_TIMED = frozenset({"alarm", "alarms", "timer", "timers", "reminder", "reminders"})
+
+
+def together_dropped(
+    segments: list[list[str]], chunks: Callable[[Sequence[str]], list[Chunk]]
+) -> list[list[str]]:
+    """The sentences without "together" said last, and without a sentence then left as a verb and a pronoun
+    after another sentence (see the module docstring)."""
+    out: list[list[str]] = []
+    for segment in segments:
+        how = next((t for t in _TOGETHER if len(segment) > len(t) and segment[-len(t) :] == t), None)
+        if how is None:
+            out.append(segment)
+            continue
+        said = chunks(segment[: -len(how)])
+        if out and [c.kind for c in said if c.kind != "quant"] == ["verb", "pronoun"]:
+            continue  # "..., could you take them together": the things said before, carried as said
+        out.append(segment[: -len(how)])
+    return out
+
+
+def undoable(segments: list[list[str]]) -> str | None:
+    """What a command asks to set that no action of the robot does ("an alarm"), else None."""
+    for segment in segments:
+        for i, word in enumerate(segment):
+            timed = next((w for w in segment[i + 1 : i + 4] if w in _TIMED), None)
+            if word == "set" and timed is not None and "clock" not in segment[i + 1 : i + 5]:
+                return timed
+    return None

@@ -42,7 +42,13 @@
 Known gaps of earlier rounds, closed in this one:
 
 * "the porch light has been flickering all week" (the bungalow) is a remark, not a question which devices
-  "all" means.
+  "all" means;
+* "together" (or "at once", "in one go") said last says how things are carried: "..., could you take them
+  together" adds no TAKING, "take the milk to her together" no frame of its own (``knic.language.remarks``);
+* "set an alarm (a timer, a reminder) for half six" is refused as no action, not as a missing alarm; "set the
+  alarm clock on ..." still puts the clock;
+* things given to several people where each owns one of them by its name ("give tyler and maisie the
+  lunchboxes") go each to its owner, not every thing to everyone (``knic.language.owned``).
 """
 
 from __future__ import annotations
@@ -369,3 +375,71 @@ def test_wishes_complaints_and_learners_orders(
 
 def test_it_is_dark_with_no_place_still_asks_which_light(house: Vocabulary) -> None:
     assert_asked(house, "it's dark, switch on the light please", "light", "tomasz")
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        (
+            "bring me the milk and the butter, could you take them together",
+            [
+                {"frame": "BRINGING", "theme": "milk", "beneficiary": "me"},
+                {"frame": "BRINGING", "theme": "butter", "beneficiary": "me"},
+            ],
+        ),
+        (
+            "bring me the milk and the butter, could you take it together",
+            [
+                {"frame": "BRINGING", "theme": "milk", "beneficiary": "me"},
+                {"frame": "BRINGING", "theme": "butter", "beneficiary": "me"},
+            ],
+        ),
+        (
+            "find maisie and take the fish fingers to her together",
+            [
+                {"frame": "SEARCHING", "theme": "maisie"},
+                {"frame": "BRINGING", "theme": "fish_fingers", "beneficiary": "maisie"},
+            ],
+        ),
+        (
+            "take the milk to tyler together with the butter",
+            [
+                {"frame": "BRINGING", "theme": "milk", "beneficiary": "tyler"},
+                {"frame": "BRINGING", "theme": "butter", "beneficiary": "tyler"},
+            ],
+        ),
+        (
+            "give tyler and maisie the lunchboxes",
+            [
+                {"frame": "BRINGING", "theme": "tyler_lunchbox", "beneficiary": "tyler"},
+                {"frame": "BRINGING", "theme": "maisie_lunchbox", "beneficiary": "maisie"},
+            ],
+        ),
+        (
+            "give tyler and maisie their lunchboxes",
+            [
+                {"frame": "BRINGING", "theme": "tyler_lunchbox", "beneficiary": "tyler"},
+                {"frame": "BRINGING", "theme": "maisie_lunchbox", "beneficiary": "maisie"},
+            ],
+        ),
+        (
+            "give tyler and maisie the milk",
+            [
+                {"frame": "BRINGING", "theme": "milk", "beneficiary": "tyler"},
+                {"frame": "BRINGING", "theme": "milk", "beneficiary": "maisie"},
+            ],
+        ),
+        (
+            "set the alarm clock on the right bedside table",
+            [{"frame": "PLACING", "theme": "alarm_clock", "goal": "right_bedside_table"}],
+        ),
+    ],
+)
+def test_together_own_pairs_and_the_alarm_clock(text: str, frames: list[dict[str, str]]) -> None:
+    assert frames_read(world_of(TERRACE), text, "kerry") == frames
+
+
+@pytest.mark.parametrize("text", ["set an alarm for half six", "can you set a timer for ten minutes"])
+def test_setting_an_alarm_is_no_action(text: str) -> None:
+    result = understand(text, world_of(TERRACE), speaker="dave")
+    assert not result.accepted and not result.question and "no action" in result.reason, result.reason
