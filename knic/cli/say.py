@@ -186,8 +186,13 @@ def _run(args: argparse.Namespace, decoder: str, passes: Passes | None) -> int:
     from knic.language.understanding import understand_transcript
 
     if passes is not None:
+        remembered = oneshot.remembered_model(key)  # its command model judges Whisper's candidates
         ngram = NgramRecognizer(
-            vocabulary, acoustic_model=args.acoustic_model, lazy=True, second_opinion=args.second_opinion
+            vocabulary,
+            acoustic_model=args.acoustic_model,
+            lazy=True,
+            second_opinion=args.second_opinion,
+            command_model=remembered[1] if remembered else None,
         )
         transcript = ngram.recognize(  # Whisper's answer first: pocketsphinx's is waited for only if needed
             audio,

@@ -14,20 +14,22 @@ apple") or has the right transcript in its beam. So Whisper is asked two more th
    best path, Whisper's beam's transcripts -- as the mean log-probability of the candidate's
    tokens when Whisper is made to write it (:meth:`~knic.language.whisperpass.WhisperPass.scores`).
 
-pocketsphinx's transcript is kept when the reader reads it and Whisper's score of it is above
-:data:`KEEP_LOG_PROB`. Else, where some candidate scores above :data:`STRETCH_FLOOR`, Whisper also hears the
-utterance played a little slower or faster (:data:`STRETCH`,
-:meth:`~knic.language.whisperpass.WhisperPass.stretched`: resampled, so the voice is higher or lower too),
-which for voices it mishears often gives the right transcript (on the dev set of voices no adaptation heard,
-commands with a right candidate went from 4 to 11 of the 23 judged wrong), and those it reads are scored
-too. The best-scoring candidate is taken when its score is above :data:`TAKE_LOG_PROB`; else the utterance
-is refused. A transcript looping on one word (:func:`looped`) is no candidate: Whisper scores the repeats
-too well (on a dev set of other speech such a transcript was taken). pocketsphinx's own confidence (its
-phone-loop pass, :func:`~knic.language.lmspeech.confidence`) is not needed then: on the dev sets below
-judging without it gave one command more at the same rejection, and saved the phone loop's time; it still
-decides when Whisper cannot answer. A candidate is only ever a transcript one of the
-recognisers heard, so Whisper's score cannot make up a command; other speech is refused because none of the
-candidates fits it (their scores fall far lower than those of commands, whichever recogniser heard them).
+Each candidate's score is Whisper's plus, weighed by :data:`COMMAND_WEIGHT`, how well it fits the command
+model (:class:`~knic.language.commandfit.CommandFit`: Whisper knows English, the command model the home's
+commands). pocketsphinx's transcript is kept when the reader reads it, Whisper's score of it is above
+:data:`KEEP_LOG_PROB` and no other candidate scores more than :data:`KEEP_MARGIN` higher. Else, where some
+candidate scores above :data:`STRETCH_FLOOR`, Whisper also hears the utterance played a little slower or
+faster (:data:`STRETCH`, :meth:`~knic.language.whisperpass.WhisperPass.stretched`: resampled, so the voice is
+higher or lower too), which for voices it mishears often gives the right transcript (on the dev set of voices
+no adaptation heard, commands with a right candidate went from 4 to 11 of the 23 judged wrong), and those it
+reads are scored too. The best-scoring candidate is taken when Whisper's score of it is above
+:data:`TAKE_LOG_PROB`; else the utterance is refused. A transcript looping on one word (:func:`looped`) is no
+candidate: Whisper scores the repeats too well (on a dev set of other speech such a transcript was taken).
+pocketsphinx's own confidence (its phone-loop pass, :func:`~knic.language.membership.confidence`) is not
+needed then: on the dev sets below judging without it gave one command more at the same rejection, and saved
+the phone loop's time; it still decides when Whisper cannot answer. A candidate is only ever a transcript one
+of the recognisers heard, so Whisper's score cannot make up a command; other speech is refused because none of
+the candidates fits it (their scores fall far lower than those of commands, whichever recogniser heard them).
 """
 
 from __future__ import annotations
@@ -66,6 +68,20 @@ STRETCH = (0.9, 1.1)
 #: the score some candidate must pass before Whisper hears the utterance at other paces (the commands rescued
 #: so on the dev sets had a best candidate of -5.6 or better; other speech mostly has none that reads)
 STRETCH_FLOOR = -6.0
+#: the weight of the command model's fit (mean log10 probability per word,
+#: :class:`~knic.language.commandfit.CommandFit`) added to Whisper's score (mean natural-log probability per
+#: token) to rank the candidates. Whisper hears English, the command model knows what commands say: "go to the
+#: entrance aisle" fit the audio a little better than "... hall" (-0.64 against -0.84), the command model
+#: much less (-2.12 against -0.77). Measured offline on the candidates of the eight spoken dev sets (549
+#: commands, 194 other utterances, candidates as scored on 29 Nov), with :data:`KEEP_MARGIN`: frame+args
+#: 500 with Whisper alone; weight 0.5: 504; 0.8: 506; 1.0: 505; 2.0: 503 (margin not used); with margin 0.4:
+#: weight 0.5: 508, 0.8: 511, 1.0: 509. Other speech rejected 188 in each (its candidates score too low
+#: either way).
+COMMAND_WEIGHT = 0.8
+#: pocketsphinx's transcript, though it fits above :data:`KEEP_LOG_PROB`, is not kept when another
+#: candidate's score (Whisper's with the command model's, above) is higher by more than this; it still may
+#: win with the rest. Measured as above, weight 0.8: margin 0.2: 509, 0.3: 511, 0.4: 511, 0.5: 511, none: 506.
+KEEP_MARGIN = 0.4
 #: a word said this many times in a row makes a transcript no candidate (:func:`looped`)
 LOOP = 4
 
@@ -91,11 +107,30 @@ class Judging:
         samples: the utterance (raw 16 kHz 16-bit PCM).
         heard: Whisper's best transcript of it, when there is one.
         reads: whether the reader reads a text (or asks about it).
+        fit: the command model's fit of a text (:class:`~knic.language.commandfit.CommandFit`), added to
+            Whisper's score weighed by :data:`COMMAND_WEIGHT`; None: Whisper's score alone.
     """
 
-    def __init__(self, server: Asked, samples: bytes, heard: Heard | None, reads: Callable[[str], bool]):
-        self._server, self._samples, self._heard, self._reads = server, samples, heard, reads
+    def __init__(
+        self,
+        server: Asked,
+        samples: bytes,
+        heard: Heard | None,
+        reads: Callable[[str], bool],
+        fit: Callable[[str], float] | None = None,
+    ):
+        self._server, self._samples, self._heard, self._reads, self._fit = server, samples, heard, reads, fit
         self._asked = server.ask(samples, {"beam": BEAM})
+        self._fits: dict[str, float] = {}  # Whisper's score of each candidate
+        self._command: dict[str, float] = {}  # the command model's, once asked for
+
+    def _judged(self, text: str) -> float:
+        """A candidate's score: Whisper's, plus the command model's fit weighed by :data:`COMMAND_WEIGHT`."""
+        if self._fit is None:
+            return self._fits[text]
+        if text not in self._command:
+            self._command[text] = self._fit(text)
+        return self._fits[text] + COMMAND_WEIGHT * self._command[text]
 
     def finish(self, first: Transcript, paths: Sequence[str]) -> Transcript | None:
         """The judged transcript, given pocketsphinx's (``first``: ``in_grammar`` when the reader reads it)
@@ -104,11 +139,13 @@ class Judging:
         beam = self._server.answer() if self._asked else None
         if not isinstance(beam, list):
             return None
-        fits: dict[str, float] = {}
+        fits = self._fits
         if not self._scored([first.text, *paths], [self._heard, *(heard_of(b) for b in beam)], fits):
             return None
         if first.in_grammar and fits.get(first.text, -math.inf) > KEEP_LOG_PROB:
-            return replace(first, score=fits[first.text])
+            rival = max(fits, key=self._judged)
+            if self._judged(first.text) >= self._judged(rival) - KEEP_MARGIN:
+                return replace(first, score=fits[first.text])
         if not fits or max(fits.values()) <= STRETCH_FLOOR:  # nothing said resembles a command
             return replace(first, in_grammar=False, score=math.nan)
         # pocketsphinx's does not fit: what Whisper hears at other paces is asked for only now (it is kept
@@ -118,7 +155,7 @@ class Judging:
         more = [heard_of(item) for item in stretched] if isinstance(stretched, list) else []
         if not self._scored([], more, fits):
             return None
-        best = max(fits, key=lambda text: fits[text])
+        best = max(fits, key=self._judged)
         if fits[best] > TAKE_LOG_PROB:
             return replace(first, text=best, in_grammar=True, score=fits[best])
         return replace(first, in_grammar=False, score=math.nan)

@@ -16,7 +16,7 @@ from knic.language.commands import command_language
 from knic.language.vocabulary import Vocabulary
 
 #: Sentences sampled for the model. Measured on the development sets with the templates of 28 Nov 2026 (263
-#: commands in 10 voices, 134 other utterances; see :data:`knic.language.lmspeech.CONFIDENCE_THRESHOLD`):
+#: commands in 10 voices, 134 other utterances; see :data:`knic.language.membership.CONFIDENCE_THRESHOLD`):
 #: frame+args 0.817 with 4000, 0.852 with 12000, 0.829 with 30000 (more templates need more samples; past
 #: that, no gain).
 SENTENCES = 12000

@@ -18,11 +18,11 @@ Out-of-domain speech: an n-gram search also forces any audio onto some word sequ
 utterance is therefore decoded a second time with pocketsphinx's unconstrained phone loop (the wheel's
 ``en-us-phone.lm.bin``, in a decoder of its own at half the frame rate: :data:`PHONE_DECODER_OPTIONS`); the
 confidence is the log-likelihood ratio of the two best paths per frame
-(:func:`confidence`). Command speech fits the command model about as well as the free phone loop
-(confidence near zero); other speech fits it much worse. Below :data:`CONFIDENCE_THRESHOLD` the transcript
-is marked out of domain; what the reader does not understand is rejected by the reader whatever the
-confidence, which already turns away most other speech. The threshold was set on the development sets only
-(``knic bench speech --decoder ngram``).
+(:func:`~knic.language.membership.confidence`). Command speech fits the command model about as well as the
+free phone loop (confidence near zero); other speech fits it much worse. Below the model's threshold
+(:data:`~knic.language.membership.CONFIDENCE_THRESHOLD`) the transcript is marked out of domain; what the
+reader does not understand is rejected by the reader whatever the confidence, which already turns away most
+other speech. The threshold was set on the development sets only (``knic bench speech --decoder ngram``).
 
 A second opinion: Whisper (:mod:`knic.language.whisperpass`) hears each utterance first, in a server process
 of its own. When Whisper is sure of its transcript and the reader reads it, that transcript is taken and
@@ -58,9 +58,11 @@ from knic.language.acoustic import (
     wheel_model_dir,
 )
 from knic.language.audio import Transcript, duration_of, pcm_bytes
+from knic.language.commandfit import CommandFit
 from knic.language.commands import command_language
 from knic.language.judging import Judging
 from knic.language.lmfiles import binary_model, build_model, dictionary_lines, model_words
+from knic.language.membership import CONFIDENCE_THRESHOLD, MODEL_THRESHOLDS, choose_member, confidence
 from knic.language.passworker import PassWorker, start_worker
 from knic.language.phoneloop import (
     NGRAM_DECODER_OPTIONS,
@@ -87,61 +89,12 @@ if TYPE_CHECKING:
     import numpy as np
     import numpy.typing as npt
 
-#: Confidence (:func:`confidence`: log-likelihood ratio of the n-gram and phone-loop best paths, per frame)
-#: below which speech is taken as out of domain. Set on the development sets only, in 13 voices:
-#: ``tests/fixtures/speech_people/dev`` (115 commands, 6 other), ``speech_ood_dev`` (24 other),
-#: ``speech_voices_dev`` (84 commands, 92 other, four voices no other set has) and ``speech_dev`` without
-#: the voices that the test set also uses (64 commands, 12 other); 263 commands and 134 other utterances.
-#: With the acoustic adaptation of 28 Nov 2026 (3000 sentences in 214 voices, none of these sets') and the
-#: decoder settings below, frame+args / other speech rejected by threshold: -0.0002: 0.757 / 0.978; -0.0004:
-#: 0.825 / 0.970; -0.0006: 0.859 / 0.970; -0.0008: 0.871 / 0.955; -0.001: 0.871 / 0.940. -0.0008 keeps every
-#: command read right (the earlier 480-sentence adaptation, phone loop in the n-gram decoder: 0.825 / 0.955
-#: at -0.0016). The median confidence of commands moves with the voice, so the threshold sits as low as the
-#: other speech allows. Tried on the same sets: rejecting also by the
-#: model's own log-probability per word of the transcript (garbage transcripts of other speech are unlikely
-#: word strings) gained at most one point of rejection for a point of frame+args. The previous measure (the
-#: difference of the two scores as probabilities, per frame) depended on the voice much more. With dither
-#: (below) a speech_voices_dev command fell to -0.00097: -0.001 keeps it, other speech rejected
-#: speech_ood_dev 1.0, speech_voices_dev 0.913 (at -0.0012: 0.917 and 0.902). With the stdlib padding noise
-#: of :mod:`knic.language.audio` (28 Nov 2026; the same dev sets, frame+args / other speech rejected):
-#: -0.0006: 0.825 / 0.963; -0.0008: 0.829 / 0.955; -0.001: 0.840 / 0.925; -0.0011: 0.840 / 0.925; -0.0012:
-#: 0.844 / 0.910. -0.0011 keeps a speech_voices_dev command that fell to -0.00110 at the same rejection.
-#: With the phone loop at a third of the frame rate (28 Nov 2026;
-#: :data:`~knic.language.phoneloop.PHONE_DECODER_OPTIONS`), set with :data:`BASE_CONFIDENCE_THRESHOLD` over
-#: all five spoken dev sets (407 commands, 134 other utterances) and the Granny Annie voice bank (24
-#: requests): 0.0 and 0.001: 0.865 / 0.963, bank 20 of 24 (0.0001 and 0.001: a bank request at 0.00007
-#: refused, 19; -0.0005 and 0.0009: about 0.875 / 0.910; 0.0004 and 0.001: about 0.826 / 0.985). The phone
-#: loop being coarser now, commands fit the command model about as well as it or better, hence a threshold
-#: near zero. Tried and not kept: padding each recording at its own background level instead of the fixed
-#: faint noise (a synthesised recording's digital silence steps up to the padding, sometimes heard as a last
-#: word): dev frame+args +2 commands and WER down on every set, but the voice bank fell to 16-17 of 24 (first
-#: words lost: "locate the tablet" heard as "the tablet").
-CONFIDENCE_THRESHOLD = 0.0
 #: Hypotheses of the N-best list tried when the best one is not a command the reader understands (dev:
 #: frame+args 0.71 -> 0.76 with 10; 30 gave the same).
 NBEST = 10
 #: Hypotheses (the best, then the N-best) tried without their last one or two words when none is read whole
 #: (dev: see :data:`~knic.language.phoneloop.NGRAM_TRAIL_SILENCE`).
 TRIMMED = 3
-
-
-#: Confidence threshold of the wheel's unadapted model (``base``) when it is a member of an ensemble (its
-#: confidences of commands sit higher than the adaptation's). Set on the development sets with the ``auto``
-#: ensemble (speech_people/dev, speech_voices_dev, speech_ood_dev and speech_engines_dev: 320 commands, 128
-#: other utterances), frame+args / other speech rejected: -0.0003: 0.845 / 0.914; -0.0004: 0.845 / 0.914;
-#: -0.0005: 0.849 / 0.898; -0.0006: 0.852 / 0.875. Since 28 Nov 2026 0.001, set with
-#: :data:`CONFIDENCE_THRESHOLD` (see there): at 0.0009 other speech rejected falls by about 0.02, at 0.0011
-#: frame+args by about 0.01.
-BASE_CONFIDENCE_THRESHOLD = 0.001
-#: Each acoustic model's own threshold (a folder or other name: :data:`CONFIDENCE_THRESHOLD`).
-MODEL_THRESHOLDS: dict[str, float] = {"espeak": CONFIDENCE_THRESHOLD, "base": BASE_CONFIDENCE_THRESHOLD}
-#: Log-likelihood ratio per frame by which a later member of an ensemble must fit the audio better than the
-#: first to be chosen (:func:`choose_member`). The same dev sets, frame+args / other speech rejected with the
-#: ``auto`` ensemble: 0: 0.826 / 0.930; 0.0002: 0.842 / 0.914; 0.0006-0.001: 0.845 / 0.906-0.914 (espeak-ng
-#: voices as with the adaptation alone: speech_people/dev 0.861, speech_voices_dev 0.845; other engines'
-#: voices 0.831, against 0.068 with the adaptation alone and 0.856 with the wheel's model alone); 0.0015:
-#: 0.792. The adaptation alone: 0.623 / 0.938.
-FIRST_MEMBER_PREFERENCE = 0.0008
 
 
 class _Member:
@@ -165,9 +118,10 @@ class NgramRecognizer:
         vocabulary: the world's spoken names.
         acoustic_model: as for :class:`~knic.language.speech.Recognizer`, or a name of
             :data:`~knic.language.acoustic.ENSEMBLES`: each utterance is then decoded with every member model
-            and the transcript of the one that fits it best is kept (:func:`choose_member`).
+            and the transcript of the one that fits it best is kept
+            (:func:`~knic.language.membership.choose_member`).
         threshold: confidence below which a transcript is out of domain (default: each model's own,
-            :data:`MODEL_THRESHOLDS`).
+            :data:`~knic.language.membership.MODEL_THRESHOLDS`).
         decoder_options: pocketsphinx options over :data:`NGRAM_DECODER_OPTIONS`.
         nbest: when the best hypothesis is no command the reader reads, the first of this many N-best
             hypotheses it reads becomes the transcript (0: the best hypothesis, always).
@@ -184,6 +138,9 @@ class NgramRecognizer:
             server process of its own) and take its transcript where
             :func:`~knic.language.whisperpass.settled` says so; off, or without the model installed,
             pocketsphinx alone.
+        command_model: the command model in pocketsphinx's binary form, for judging a ``lazy`` recogniser's
+            candidates before its decoders are built (:mod:`knic.language.commandfit`); a built recogniser
+            uses its own.
 
     Raises:
         LanguageError: pocketsphinx refuses the options, the model or the phone loop.
@@ -202,6 +159,7 @@ class NgramRecognizer:
         lazy: bool = False,
         parallel: bool = True,
         second_opinion: bool = True,
+        command_model: Path | None = None,
     ):
         self.nbest = nbest
         reader = None if reads else reader_for(vocabulary)  # the one understanding reads with
@@ -225,6 +183,10 @@ class NgramRecognizer:
         ]
         self._phone_options = {**self._decoder_options, **PHONE_DECODER_OPTIONS, **(phone_options or {})}
         self._built = False
+        #: the command model's fit of a transcript, for judging (:mod:`knic.language.commandfit`): read from
+        #: ``command_model`` when first needed, or taken from the decoders once built
+        self._command_fit: CommandFit | None = None
+        self._command_model = command_model
         self._parallel = parallel
         self._workers: list[PassWorker | None] | None = None
         #: the model's dictionary and binary language model, once built (what :mod:`knic.language.oneshot`
@@ -274,6 +236,8 @@ class NgramRecognizer:
                     raise LanguageError(f"pocketsphinx refused the decoder options {options}: {exc}") from exc
                 try:
                     model, binary = binary_model(decoder, arpa)
+                    if self._command_fit is None:
+                        self._command_fit = CommandFit(model, decoder.logmath)
                     decoder.add_lm("ngram", model)
                     decoder.activate_search("ngram")
                 except (RuntimeError, ValueError) as exc:
@@ -372,6 +336,14 @@ class NgramRecognizer:
                     return shorter, True
         return text, False
 
+    def _fit(self, text: str) -> float:
+        """The command model's fit of a transcript (:class:`~knic.language.commandfit.CommandFit`); 0.0 for
+        every text while the model is neither built nor given (judging is then by Whisper's score alone)."""
+        if self._command_fit is None and self._command_model is not None:
+            self._command_fit = CommandFit.read(self._command_model)
+            self._command_model = None  # read once, or not at all
+        return self._command_fit(text) if self._command_fit is not None else 0.0
+
     def _unheard_tail(self, text: str) -> str:
         """``text`` without its last word or two when the best path had not finished them as the audio ended
         and the reader reads the rest the same way (a word heard in the silence after the command: "bring me
@@ -424,7 +396,9 @@ class NgramRecognizer:
         if own:  # pocketsphinx could not change the reading
             elapsed = (time.perf_counter() - started) * 1000.0
             return Transcript(own, True, math.nan, duration_of(samples), elapsed)
-        judging = Judging(self._server(), samples, whispered, self.reads) if whispered is not None else None
+        judging = None
+        if whispered is not None:
+            judging = Judging(self._server(), samples, whispered, self.reads, self._fit)
         first = self._first_opinion(samples, phone_score, decoded, judging)
         return replace(first, decode_ms=(time.perf_counter() - started) * 1000.0)  # Whisper's time too
 
@@ -473,37 +447,6 @@ def _ngram_job(member: _Member) -> Callable[[bytes], Decoded]:
         return ngram_pass(member.decoder, request[4:], nbest, member.initial_cmn)
 
     return job
-
-
-def choose_member(results: list[Decoded]) -> int:
-    """The index of the member model whose n-gram pass fits the audio best: the first, unless another's best
-    path beats it by more than :data:`FIRST_MEMBER_PREFERENCE` in log-likelihood per frame (a pass without a
-    path never wins)."""
-    best, best_log = 0, _log_score(results[0])
-    for index, result in enumerate(results[1:], start=1):
-        log = _log_score(result)
-        if log > best_log + (FIRST_MEMBER_PREFERENCE if best == 0 else 0.0):
-            best, best_log = index, log
-    return best
-
-
-def _log_score(result: Decoded) -> float:
-    """A pass's best path log score per frame (``-inf``: no path)."""
-    score, frames = result[1], result[2]
-    return math.log(score) / max(1, frames) if score > 0.0 else float("-inf")
-
-
-def confidence(score: float, phone_score: float, frames: int) -> float:
-    """Log-likelihood ratio per frame of the command model's best path against the free phone loop's.
-
-    pocketsphinx hands path scores over as probabilities (its log scores exponentiated), so the ratio of two
-    is the difference of the log scores; per frame, so that long and short utterances compare. Zero: the
-    command model explains the audio as well as any phone sequence; negative: worse. ``-inf`` when either
-    path is missing.
-    """
-    if score <= 0.0 or phone_score <= 0.0:
-        return float("-inf")
-    return math.log(score / phone_score) / max(1, frames)
 
 
 #: the command decoders a listening command can use: ``ngram`` (:class:`NgramRecognizer`, the default: it

@@ -56,11 +56,15 @@ class Hearing:
 
         self.whisper = WhisperServer(world_prompt(vocabulary))  # it loads the model meanwhile
         # the recogniser's own passes only run when a child failed, in this process (parallel=False)
+        members, model = ensemble_members(acoustic_model), remembered_model(key)
         self.recognizer = NgramRecognizer(
-            vocabulary, acoustic_model=acoustic_model, lazy=True, parallel=False
+            vocabulary,
+            acoustic_model=acoustic_model,
+            lazy=True,
+            parallel=False,
+            command_model=model[1] if model else None,
         )
         self.recognizer.whisper = self.whisper  # the one server, for its judging too
-        members, model = ensemble_members(acoustic_model), remembered_model(key)
         self._decoders = [decoder_for(model, member) for member in members] if model else []
         self._phone_loop = PhoneLoop(members[0])  # as the one-shot child's
         for index in range(1, len(members)):

@@ -12,12 +12,8 @@ import pytest
 from core.errors import LanguageError
 from knic.cli import main
 from knic.language.acoustic import acoustic_model_for, acoustic_model_options, ensemble_members
-from knic.language.lmspeech import (
-    FIRST_MEMBER_PREFERENCE,
-    MODEL_THRESHOLDS,
-    NgramRecognizer,
-    choose_member,
-)
+from knic.language.lmspeech import NgramRecognizer
+from knic.language.membership import FIRST_MEMBER_PREFERENCE, MODEL_THRESHOLDS, choose_member
 from knic.language.understanding import understand_transcript
 from knic.language.vocabulary import Vocabulary
 

@@ -10,7 +10,8 @@ from pathlib import Path
 
 import pytest
 
-from knic.language.lmspeech import NgramRecognizer, confidence
+from knic.language.lmspeech import NgramRecognizer
+from knic.language.membership import confidence
 from knic.language.ngram import arpa_from_sentences
 from knic.language.phoneloop import SPEECH_END_MARGIN, speech_end, words_after_speech
 from knic.language.understanding import understand, understand_transcript

@@ -31,7 +31,7 @@ ACOUSTIC_MODELS: dict[str, Path | None] = {"espeak": MODEL_DIR, "base": None}
 #: The model the grammar decoder and the answer recogniser load unless told otherwise.
 DEFAULT_ACOUSTIC_MODEL = "espeak"
 #: Named sets of acoustic models for the n-gram decoder: it decodes each utterance with every member and
-#: keeps the one that fits the audio best (:func:`knic.language.lmspeech.choose_member`). ``auto``: the
+#: keeps the one that fits the audio best (:func:`knic.language.membership.choose_member`). ``auto``: the
 #: espeak-ng adaptation, which hears espeak-ng voices far better, and the wheel's model trained on human
 #: speech, which hears other speakers far better (the adaptation collapses on other engines' voices: dev
 #: frame+args 0.07 against the wheel's 0.86).
