@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import argparse
 import importlib
+import os
 import sys
 from collections.abc import Callable, Sequence
 
@@ -91,7 +92,22 @@ def main(argv: Sequence[str] | None = None) -> int:
     except KeyboardInterrupt:
         print("knic: interrupted", file=sys.stderr)
         return 130
+    except BrokenPipeError:  # the reader of our output left ("knic goal - | head -1"): stop quietly
+        _drop_stdout()
+        return 141  # as a shell reports a process ended by SIGPIPE
     return code
+
+
+def _drop_stdout() -> None:
+    """Point standard output at the null device, so that Python's flush at exit, to a pipe with no reader,
+    raises no second error."""
+    devnull = os.open(os.devnull, os.O_WRONLY)
+    try:
+        os.dup2(devnull, sys.stdout.fileno())
+    except (OSError, ValueError):  # no file descriptor behind stdout (a test's capture): nothing to flush
+        pass
+    finally:
+        os.close(devnull)
 
 
 if __name__ == "__main__":

@@ -138,3 +138,27 @@ def test_the_remembered_model_follows_the_phrasings(tmp_path: Path, monkeypatch:
     before = oneshot.world_key(["worlds/erl_home/erl_home_domain.pddl"], "auto")
     phrasings.write_text("bring me the {item=apple} love\n", encoding="utf-8")
     assert oneshot.world_key(["worlds/erl_home/erl_home_domain.pddl"], "auto") != before
+
+
+def test_goal_batch_answers_each_line_and_stops_quietly_when_its_reader_leaves() -> None:
+    import subprocess
+    import sys
+
+    knic = [sys.executable, "-c", "import sys; from knic.cli import main; sys.exit(main())", "goal", "-"]
+    lines = "bring me the mug\n\ngo to the kitchen\nsing me a song\n"
+    done = subprocess.run(knic, input=lines, capture_output=True, text=True, timeout=120, check=False)
+    answers = [json.loads(line) for line in done.stdout.splitlines()]
+    assert [a["accepted"] for a in answers] == [True, True, False]  # the empty line is skipped
+    assert answers[1]["frames"] == [{"frame": "MOTION", "goal": "kitchen"}]
+    assert done.returncode == 4 and "1 command(s) not understood" in done.stderr
+    # the reader takes one answer and leaves ("knic goal - | head -1"): no traceback, the shell's SIGPIPE code
+    process = subprocess.Popen(
+        knic, stdin=subprocess.PIPE, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True
+    )
+    assert process.stdin is not None and process.stdout is not None
+    process.stdin.write("bring me the mug\n")
+    process.stdin.flush()
+    assert json.loads(process.stdout.readline())["accepted"]
+    process.stdout.close()
+    _, errors = process.communicate("go to the kitchen\n" * 200, timeout=120)
+    assert process.returncode == 141 and "Traceback" not in errors
