@@ -188,6 +188,10 @@ def understand_transcript(
     }
     if not transcript.text or not transcript.in_grammar:
         heard = f" (heard: '{transcript.text}')" if transcript.text else ""
+        if transcript.text:  # what the reader finds wrong with the words heard, when it refuses them too
+            read = understand(transcript.text, vocabulary, speaker=speaker, grammar=grammar)
+            if not read.accepted and not read.question and read.reason:
+                heard = f" (heard: '{transcript.text}'; {read.reason})"
         reason = f"the speech matched no command{heard}"
         return Understanding(transcript.text, reason=reason, speaker=speaker, extra=extra)
     result = understand(transcript.text, vocabulary, speaker=speaker, grammar=grammar)

@@ -2,10 +2,12 @@
 
 from __future__ import annotations
 
+import math
 from pathlib import Path
 
 import pytest
 
+from knic.language.audio import Transcript
 from knic.language.speech import Recognizer
 from knic.language.understanding import default_grammar, understand_transcript
 from knic.language.vocabulary import Vocabulary
@@ -40,6 +42,16 @@ def test_speech_outside_the_grammar_is_rejected(recognizer: Recognizer, vocabula
     result = understand_transcript(transcript, vocabulary)
     assert not result.accepted and result.goals == ()
     assert "matched no command" in result.reason or "understand" in result.reason
+
+
+def test_a_command_heard_but_refused_says_what_the_world_lacks(vocabulary: Vocabulary) -> None:
+    heard = Transcript("bring me the unicorn", False, math.nan, 2.0, 10.0)  # no such thing in the apartment
+    result = understand_transcript(heard, vocabulary)
+    assert not result.accepted and result.goals == () and result.frames == ()
+    assert "matched no command" in result.reason and "'bring me the unicorn'" in result.reason
+    assert "unicorn" in result.reason.split(";", 1)[1]  # the reader's own reason follows what was heard
+    other = understand_transcript(Transcript("bring me the mug", False, math.nan, 2.0, 10.0), vocabulary)
+    assert not other.accepted and ";" not in other.reason  # the reader takes it: the speech refused it
 
 
 def test_decoding_does_not_depend_on_what_came_before(recognizer: Recognizer) -> None:
