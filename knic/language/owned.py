@@ -3,9 +3,9 @@
 * Where the speaker has a room named after them ("rhys_bedroom"), "my bed" is the bed in that room, when the
   world has several beds and one of them is there ("hoodie from my bed": rhys's single bed, not the double bed
   or the camp bed). The world names no owners of furniture; a person's room is the one sign of whose a piece
-  of it is. So too for a device ("open my blind", "my room light off": the one in that room), and "my room"
-  or "my bedroom" is that room. "His desk", "her room" are so of the person named last before them ("is
-  finn's laptop on his desk": finn's desk).
+  of it is. So too for a device ("open my blind", "my room light off": the one in that room; "my big
+  light": the big light there), and "my room" or "my bedroom" is that room. "His desk", "her room" are so
+  of the person named last before them ("is finn's laptop on his desk": finn's desk).
 * Where a thing's name holds a person's name ("kerry_keys", "maisie_lunchbox"), "my keys" said by kerry,
   "kerry's keys", "kerrys keys" (typed without the apostrophe) and "her keys" once kerry was named are that
   thing: the world names its owner. Said by someone who owns none of them, "my keys" still asks which.
@@ -75,6 +75,12 @@ def owned_read(text: str, vocabulary: Vocabulary, speaker: str) -> str:
             there = [s for s in named if room in vocabulary.locations.get(s, ())]
             if len(named) > 1 and len(there) == 1:
                 return f"the {said} in the {where}{rest}"
+        head = match.group(2).split()[-1].lower()
+        if len(match.group(2).split()) > 1 and not _placed_named(vocabulary, match.group(2).lower()):
+            # "my big light": a word of its own before a name's last word; the one of the room, if any there
+            there = [s for s in _placed_named(vocabulary, head) if room in vocabulary.locations.get(s, ())]
+            if there:
+                return f"the {match.group(2)} in the {where}"
         return match.group(0)
 
     return _MY.sub(mine, text)

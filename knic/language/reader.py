@@ -43,7 +43,7 @@ from knic.language.learners import learners_read
 from knic.language.naming import names_device, places_before, said_named, synonym_only
 from knic.language.owned import own_pairs
 from knic.language.places import Places
-from knic.language.remarks import done_dropped, refused, tagged, times_dropped, together_dropped
+from knic.language.remarks import done_dropped, plain_words, refused, tagged, together_dropped
 from knic.language.roles import INTERPRETERS
 from knic.language.segments import (
     cut,
@@ -129,7 +129,7 @@ class Reader(Places):
             self._before_numbers,
         )
         segments = [
-            times_dropped(words_tidied(spelled(normalize(part).split(), self.language.spellings)))
+            plain_words(words_tidied(spelled(normalize(part).split(), self.language.spellings)))
             for part in SEGMENT_END.split(text)
         ]
         segments = [segment for segment in segments if segment]

@@ -10,7 +10,8 @@
 * A question tag or talk said after the one sentence of a command ("is it going to be sunny tomorrow, do you
   think?") leaves that sentence alone for :func:`knic.language.reader.not_request`.
 * "all" before a word of time ("leave the porch light on all night", "flickering all week") is a time, not
-  every device: it is dropped (:func:`times_dropped`).
+  every device: it is dropped (:func:`times_dropped`); "it would be nice if" before how a thing should be
+  ("... if the reading lamp was off") only wishes it so (:func:`plain_words`).
 * What someone did with a thing said before ("do you happen to know where the headphones are? jas borrowed
   them"): a sentence of a person, a past verb the command language lacks and no thing named, said beside a
   request, is talk (:func:`done_dropped`): jas is no one to look for.
@@ -32,6 +33,9 @@ _PAST = (("has", "been"), ("have", "been"), ("had", "been"), ("was",), ("were",)
 _ASKING = frozenset({"where", "what", "who", "which", "how", "why", "when", "is", "are", "did", "do", "can"})
 #: what is said right before a past "be" of a thing ("the mug that was ...": the thing is described)
 _DESCRIBING = frozenset({"that", "which", "who", "what", "it", "there"})
+#: states a device said to have been in (perfect) is complained of ("the lamp has been on all day": asks it
+#: off); "the lamp was on" is a remark
+_STATES = (["on"], ["off"], ["open"], ["closed"], ["shut"])
 #: words that make what follows a wish ("it'd be great if the light was off", "i wish the blinds were shut")
 _WISHING = frozenset({"if", "wish", "rather"})
 #: words of time "all" goes before ("all week"); "all the time", "all along"
@@ -84,7 +88,8 @@ def _states(segment: list[str], chunks: Callable[[Sequence[str]], list[Chunk]]) 
             return False
         if _WISHING & set(segment[:at]):  # "it'd be great if the landing light was off": a wish
             return False
-        if segment[at + len(marker) : at + len(marker) + 1] == ["left"]:
+        said = segment[at + len(marker) : at + len(marker) + 1]
+        if said == ["left"] or (marker[-1:] == ("been",) and said in _STATES):
             return False  # "the garage light has been left on again": a complaint that asks it off
         after = chunks(segment[at + len(marker) :])
         # "... tidy" said last is what was kept so; a verb with more after it asks ("the light was on all
@@ -99,6 +104,29 @@ def tagged(segments: list[list[str]], chunks: Callable[[Sequence[str]], list[Chu
     if rest and all(all(c.kind in _TALK and not c.terms for c in said) for said in rest):
         return segments[:1]
     return segments
+
+
+#: openings of a wish about how a thing should be ("it would be nice if the lamp was off")
+_WISH_OPENINGS = (
+    ["it", "would", "be"],
+    ["it'd", "be"],
+    ["would", "be"],
+    ["it", "will", "be"],
+    ["it'll", "be"],
+)
+
+
+def plain_words(tokens: list[str]) -> list[str]:
+    """The words without "all" before a word of time (:func:`times_dropped`) and without the opening of a
+    wish about how a thing should be ("it would be nice if the reading lamp was off": the lamp off), when
+    what follows "if" is no "you" ("... if you brought me the paper" is read with its verb)."""
+    tokens = times_dropped(tokens)
+    for opening in _WISH_OPENINGS:
+        end = len(opening) + 1  # the opening, a word ("nice"), "if", and no "you" after it
+        said = tokens[: len(opening)] == opening and tokens[end : end + 1] == ["if"]
+        if said and tokens[end + 1 : end + 2] and tokens[end + 1] not in ("you", "u"):
+            return [t for t in tokens[end + 1 :] if t not in ("was", "were")]  # the thing, how it should be
+    return tokens
 
 
 def times_dropped(tokens: list[str]) -> list[str]:

@@ -250,12 +250,13 @@ def talk_dropped(chunks: list[Chunk]) -> list[Chunk]:
 #: the state a device is put in when it is said to be left in the other one
 _UNDONE = {"on": "off", "off": "on", "open": "closed", "closed": "open"}
 #: words that say a device's state is left as it should not be ("is still on", "has been left on")
-_LEFT_SO = frozenset({"still", "left"})
+_LEFT_SO = frozenset({"still", "left", "been"})
 
 
 def left_undone(chunks: list[Chunk]) -> list[Chunk]:
     """A device said to be left in a state, with no verb ("the hallway light is still on", "the garage light
-    has been left on again", "the blinds are still open"): a complaint, so the other state is asked for."""
+    has been left on again", "the blinds are still open", "the lamp has been on all day"): a complaint, so the
+    other state is asked for."""
     for i in range(1, len(chunks) - 1):
         marker, state = chunks[i], chunks[i + 1]  # the state may be a verb's ("still open")
         undone = _UNDONE.get(state.state or "") if state.kind in ("state", "prep", "verb") else None
@@ -264,7 +265,9 @@ def left_undone(chunks: list[Chunk]) -> list[Chunk]:
         if any(chunk.kind == "verb" for chunk in chunks[: i + 1]):
             return chunks  # "leave the light on", "is the light still on?"
         after = chunks[i + 2] if i + 2 < len(chunks) else None
-        if chunks[i - 1].text not in COPULAS | {"been"} or (after and after.kind in ("det", "entity")):
+        if chunks[i - 1].text not in COPULAS | {"been", "has", "have"} or (
+            after and after.kind in ("det", "entity")
+        ):
             continue  # "my glasses are still on the table": where they are
         end = i + 2
         if end < len(chunks) and chunks[end].text == "again":
