@@ -8,7 +8,8 @@ sentence, :func:`other_one` and :func:`said_around` on the chunks, between the p
 * hesitations inside a phrase ("when you um get a minute"), and "you're" after "when" or "once" ("when
   you're done": when you are done), in the words (:func:`words_tidied`);
 * what a device is said or asked to be before the request about it ("is the hallway light on? turn it
-  off", "the blinds are stuck halfway, open them all the way"): the device is said, its state is not asked;
+  off", "the blinds are stuck halfway, open them all the way", "if the hallway light is on again, turn it
+  off"): the device is said, its state is not asked;
 * what someone is doing, said before or after the request ("jack's waiting in the hall, bring him the
   water", "bring maria her laptop, she's working in the study"), or where someone given a thing is ("give
   dai his glasses, he's in the office"): talk; the person stays said for "him"; likewise whether someone is
@@ -39,6 +40,8 @@ HESITATIONS = frozenset({"um", "umm", "uh", "uhh", "uhm", "er", "erm", "hmm"})
 #: words after which "you're" opens a clause of time ("when you're done", "once you're finished")
 _TIME_WORDS = frozenset({"when", "once", "after", "until", "till"})
 _CONTRACTED = {"you're": ["you", "are"]}
+#: what says a device's state is a condition of the request after it ("if the hallway light is on, ...")
+_IF = frozenset({"if", "when", "whenever"})
 #: what a device is said to be before its state ("the blinds are still shut", "are stuck halfway")
 _STATE_WORDS = frozenset({"is", "are", "still", "already", "stuck", "left", "now", "all", "fully"})
 #: subjects said with "be" contracted ("she's working in the study")
@@ -208,7 +211,8 @@ def _state_said(chunks: list[Chunk], is_a: Callable[[Chunk, str], bool]) -> list
     """A device's state said or asked before the first action ("is the hallway light on?", "the study blinds
     are open", "the blinds are stuck halfway") with an action after it: the state is dropped, the device
     stays said (for "it" or "them")."""
-    start = 1 if chunks and chunks[0].kind == "verb" and chunks[0].text in ("is", "are") else 0
+    asked = chunks and chunks[0].kind == "verb" and chunks[0].text in ("is", "are")
+    start = 1 if asked or (chunks and chunks[0].kind == "unknown" and chunks[0].text in _IF) else 0
     at = past_determiners(chunks, start)
     if at >= len(chunks) or chunks[at].kind != "entity" or not is_a(chunks[at], "device"):
         return chunks

@@ -43,7 +43,7 @@ from knic.language.learners import learners_read
 from knic.language.naming import names_device, places_before, said_named, synonym_only
 from knic.language.owned import own_pairs
 from knic.language.places import Places
-from knic.language.remarks import done_dropped, plain_words, refused, tagged, together_dropped
+from knic.language.remarks import plain_words, refused, tagged
 from knic.language.roles import INTERPRETERS
 from knic.language.segments import (
     cut,
@@ -56,6 +56,7 @@ from knic.language.segments import (
     statements_dropped,
 )
 from knic.language.selecting import described
+from knic.language.sentences import sentences_read
 from knic.language.terse import for_asker, room_alone, told_read, wished_first
 from knic.language.tidy import (
     SEGMENT_END,
@@ -145,11 +146,10 @@ class Reader(Places):
             )
         if refusal := refused(segments, self.chunks):  # "the landing light has been flickering all week"
             raise LanguageError(refusal)
-        segments = together_dropped(segments, self.chunks)  # "..., could you take them together"
         segments = said_named(segments, self.vocabulary, self.chunker.language_words)  # naming.py
         segments = described(ones_named(segments, self.vocabulary), self.vocabulary)  # selecting.py
         segments = late_repairs(sorry_repairs(segments, self.chunks), self.chunks)
-        segments = done_dropped(segments, self.chunks, lambda c: any(self.is_a(t, "person") for t in c.terms))
+        segments = sentences_read(segments, self.chunks, self.is_a)  # "jas borrowed them", "..., light off"
         # pointing first ("see that candle? put it on the nightstand"), else as said; unpunctuated ("close the
         # blinds it's too bright"): by the sentences the words start, then without statements (segments.py)
         pointing = pointed(segments, self.chunks)

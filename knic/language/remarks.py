@@ -12,12 +12,6 @@
 * "all" before a word of time ("leave the porch light on all night", "flickering all week") is a time, not
   every device: it is dropped (:func:`times_dropped`); "it would be nice if" before how a thing should be
   ("... if the reading lamp was off") only wishes it so (:func:`plain_words`).
-* What someone did with a thing said before ("do you happen to know where the headphones are? jas borrowed
-  them"): a sentence of a person, a past verb the command language lacks and no thing named, said beside a
-  request, is talk (:func:`done_dropped`): jas is no one to look for.
-* "together" (or "at once", "in one go") said last says how, not what: dropped; a sentence then left with a
-  verb and "it" or "them" only, after a sentence that named them ("bring me the milk and the butter, could
-  you take them together"), asks nothing more (:func:`together_dropped`).
 * "set an alarm (a timer, a reminder) for half six": no action the robot has (:func:`undoable`).
 """
 
@@ -146,49 +140,8 @@ def times_dropped(tokens: list[str]) -> list[str]:
     return out
 
 
-def done_dropped(
-    segments: list[list[str]],
-    chunks: Callable[[Sequence[str]], list[Chunk]],
-    is_person: Callable[[Chunk], bool],
-) -> list[list[str]]:
-    """The sentences without those saying what someone did to a thing said before (see the module
-    docstring), when a sentence with a verb is left; else all."""
-    kept = [s for s in segments if not _done(chunks(s), is_person)]
-    acts = any(c.kind == "verb" for s in kept for c in chunks(s))
-    return kept if acts and len(kept) < len(segments) else segments
-
-
-def _done(said: list[Chunk], is_person: Callable[[Chunk], bool]) -> bool:
-    """Whether a sentence is a person, a word in "-ed" the tables do not know, and no name after it."""
-    if len(said) < 2 or said[0].kind != "entity" or not is_person(said[0]):
-        return False
-    if said[1].kind != "unknown" or not said[1].text.endswith("ed"):
-        return False
-    return not any(c.terms or c.kind in ("verb", "me") for c in said[2:])
-
-
-#: how things are carried, said last ("take them together")
-_TOGETHER = (["all", "together"], ["together"], ["at", "once"], ["in", "one", "go"], ["in", "one", "trip"])
 #: what "set" asks that no robot's action does ("set an alarm for half six")
 _TIMED = frozenset({"alarm", "alarms", "timer", "timers", "reminder", "reminders"})
-
-
-def together_dropped(
-    segments: list[list[str]], chunks: Callable[[Sequence[str]], list[Chunk]]
-) -> list[list[str]]:
-    """The sentences without "together" said last, and without a sentence then left as a verb and a pronoun
-    after another sentence (see the module docstring)."""
-    out: list[list[str]] = []
-    for segment in segments:
-        how = next((t for t in _TOGETHER if len(segment) > len(t) and segment[-len(t) :] == t), None)
-        if how is None:
-            out.append(segment)
-            continue
-        said = chunks(segment[: -len(how)])
-        if out and [c.kind for c in said if c.kind != "quant"] == ["verb", "pronoun"]:
-            continue  # "..., could you take them together": the things said before, carried as said
-        out.append(segment[: -len(how)])
-    return out
 
 
 def undoable(segments: list[list[str]]) -> str | None:

@@ -43,7 +43,14 @@
 * Gen-Z talk around a request ("lowkey", "ngl", "tbh", "fr", "istg", "no cap", "deadass") is dropped, and
   "r", "cud", "wud" are "are", "could", "would";
 * a device that "has been on all day" is complained of, as one "still on" is (asked off); one that "was on"
-  is a remark; "it would be nice if the reading lamp was off" wishes it off.
+  is a remark; "it would be nice if the reading lamp was off" wishes it off;
+* a device's state said as a condition ("if the hallway light is on (again), turn it off") says the device,
+  as "is the hallway light on? turn it off" does; "again" is talk;
+* "any idea where", "have you any idea where", "would you know where", "you haven't seen my glasses, have
+  you?", "i seem to have misplaced the remote": searches;
+* a terse sentence of a device and its state beside a sentence of another kind ("travel mug to kitchen,
+  landing light off", "bring the mug to the kitchen, landing light off") is an action of its own, and so is
+  the terse carrying beside it (``knic.language.sentences``).
 
 Known gaps of earlier rounds, closed in this one:
 
@@ -492,3 +499,64 @@ def test_a_big_light_with_no_room_asks(house: Vocabulary) -> None:
 def test_a_lamp_that_was_on_is_a_remark(house: Vocabulary) -> None:
     result = understand("the porch light was on", house, speaker="jas")
     assert not result.accepted and not result.question and "no action" in result.reason, result.reason
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        (
+            "istg if the hallway light is on again... turn it off",
+            [{"frame": "OPERATING", "device": "hallway_light", "state": "off"}],
+        ),
+        (
+            "the hallway light is on again, turn it off",
+            [{"frame": "OPERATING", "device": "hallway_light", "state": "off"}],
+        ),
+        (
+            "kettle to my room, then blackout blind down",
+            [
+                {"frame": "BRINGING", "theme": "kettle", "goal": "dara_room"},
+                {"frame": "OPERATING", "device": "blackout_blind", "state": "closed"},
+            ],
+        ),
+        (
+            "bring the travel mug to the kitchen, landing light off",
+            [
+                {"frame": "BRINGING", "theme": "travel_mug", "goal": "kitchen"},
+                {"frame": "OPERATING", "device": "landing_light", "state": "off"},
+            ],
+        ),
+        (
+            "landing light off, travel mug to kitchen",
+            [
+                {"frame": "OPERATING", "device": "landing_light", "state": "off"},
+                {"frame": "BRINGING", "theme": "travel_mug", "goal": "kitchen"},
+            ],
+        ),
+        (
+            "landing light off, top landing light off",
+            [
+                {"frame": "OPERATING", "device": "landing_light", "state": "off"},
+                {"frame": "OPERATING", "device": "top_landing_light", "state": "off"},
+            ],
+        ),
+    ],
+)
+def test_conditions_and_terse_sentences_of_two_kinds(
+    house: Vocabulary, text: str, frames: list[dict[str, str]]
+) -> None:
+    assert frames_read(house, text, "dara") == frames
+
+
+@pytest.mark.parametrize(
+    ("text", "theme"),
+    [
+        ("any idea where the remote is?", "remote"),
+        ("have you any idea where my glasses are", "glasses"),
+        ("would you know where the tablet is", "tablet"),
+        ("you haven't seen my glasses, have you?", "glasses"),
+        ("i seem to have misplaced the remote", "remote"),
+    ],
+)
+def test_more_ways_of_asking_where(vocabulary: Vocabulary, text: str, theme: str) -> None:
+    assert frames_read(vocabulary, text) == [{"frame": "SEARCHING", "theme": theme}]

@@ -1,0 +1,136 @@
+"""What the sentences of a command say of each other, read before its words are (used by
+:class:`knic.language.reader.Reader` on the command's stretches between stops and commas):
+
+* What someone did with a thing said before ("do you happen to know where the headphones are? jas borrowed
+  them"): a sentence of a person, a past verb the command language lacks and no thing named, said beside a
+  request, is talk (:func:`done_dropped`): jas is no one to look for.
+* "together" (or "at once", "in one go") said last says how, not what: dropped; a sentence then left with a
+  verb and "it" or "them" only, after a sentence that named them ("bring me the milk and the butter, could
+  you take them together"), asks nothing more (:func:`together_dropped`).
+* A terse sentence of a device and its state beside a sentence of another kind ("travel mug to kitchen,
+  landing light off", "bring the mug to the kitchen, landing light off"): the device's is said with "turn",
+  and a terse one of things and where they go ("travel mug to kitchen") with "take", so that each is an
+  action of its own (:func:`verbs_said`); a command of one kind only ("hall light on, landing light off";
+  "take the sponge, the soap and the tissues to the bathroom") is read as said.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+
+from knic.language.chunks import Chunk
+from knic.language.vocabulary import Term
+
+#: how things are carried, said last ("take them together")
+_TOGETHER = (["all", "together"], ["together"], ["at", "once"], ["in", "one", "go"], ["in", "one", "trip"])
+#: what a device's sentence may hold besides the device and its state
+_WITH_STATE = frozenset({"det", "level", "number", "percent", "prep", "state", "quant"})
+
+
+def sentences_read(
+    segments: list[list[str]],
+    chunks: Callable[[Sequence[str]], list[Chunk]],
+    is_a: Callable[[Term, str], bool],
+) -> list[list[str]]:
+    """The sentences with the rules of the module docstring applied."""
+    segments = together_dropped(segments, chunks)
+    segments = done_dropped(segments, chunks, lambda c: any(is_a(t, "person") for t in c.terms))
+    return verbs_said(segments, chunks, is_a)
+
+
+def done_dropped(
+    segments: list[list[str]],
+    chunks: Callable[[Sequence[str]], list[Chunk]],
+    is_person: Callable[[Chunk], bool],
+) -> list[list[str]]:
+    """The sentences without those saying what someone did to a thing said before (see the module
+    docstring), when a sentence with a verb is left; else all."""
+    kept = [s for s in segments if not _done(chunks(s), is_person)]
+    acts = any(c.kind == "verb" for s in kept for c in chunks(s))
+    return kept if acts and len(kept) < len(segments) else segments
+
+
+def _done(said: list[Chunk], is_person: Callable[[Chunk], bool]) -> bool:
+    """Whether a sentence is a person, a word in "-ed" the tables do not know, and no name after it."""
+    if len(said) < 2 or said[0].kind != "entity" or not is_person(said[0]):
+        return False
+    if said[1].kind != "unknown" or not said[1].text.endswith("ed"):
+        return False
+    return not any(c.terms or c.kind in ("verb", "me") for c in said[2:])
+
+
+def together_dropped(
+    segments: list[list[str]], chunks: Callable[[Sequence[str]], list[Chunk]]
+) -> list[list[str]]:
+    """The sentences without "together" said last, and without a sentence then left as a verb and a pronoun
+    after another sentence (see the module docstring)."""
+    out: list[list[str]] = []
+    for segment in segments:
+        how = next((t for t in _TOGETHER if len(segment) > len(t) and segment[-len(t) :] == t), None)
+        if how is None:
+            out.append(segment)
+            continue
+        said = chunks(segment[: -len(how)])
+        if out and [c.kind for c in said if c.kind != "quant"] == ["verb", "pronoun"]:
+            continue  # "..., could you take them together": the things said before, carried as said
+        out.append(segment[: -len(how)])
+    return out
+
+
+def verbs_said(
+    segments: list[list[str]],
+    chunks: Callable[[Sequence[str]], list[Chunk]],
+    is_a: Callable[[Term, str], bool],
+) -> list[list[str]]:
+    """The sentences with the verb a terse sentence leaves unsaid, in a command of terse sentences of two
+    kinds or of a terse one beside one with a verb (see the module docstring); else as said."""
+    if len(segments) < 2:
+        return segments
+    kinds = [_terse_kind(chunks(s), is_a) for s in segments]
+    if "device" not in kinds or len({k or "said" for k in kinds}) < 2:
+        return segments  # things listed after a verb ("take the sponge, the soap and the tissues to ...")
+    out: list[list[str]] = []
+    for segment, kind in zip(segments, kinds, strict=True):
+        if kind is None:
+            out.append(segment)
+            continue
+        joined = 0
+        while joined < len(segment) and [c.kind for c in chunks(segment[: joined + 1])] == ["join"]:
+            joined += 1  # "..., then landing light off": the verb after "then"
+        verb = "turn" if kind == "device" else "take"
+        out.append([*segment[:joined], verb, *segment[joined:]])
+    return out
+
+
+def _terse_kind(said: list[Chunk], is_a: Callable[[Term, str], bool]) -> str | None:
+    """ "device": a sentence of devices and a state or level only ("landing light off"); "carry": of things
+    and where they go only ("travel mug to kitchen"); else None."""
+    said = [c for c in said if c.kind != "join"]
+    if not said or any(c.kind in ("verb", "unknown", "pronoun") for c in said):
+        return None
+    named = [c for c in said if c.kind == "entity"]
+    if not named:
+        return None
+    if all(is_a(t, "device") for c in named for t in c.terms) and any(
+        c.kind in ("state", "level", "number") or (c.kind == "prep" and c.state) for c in said
+    ):
+        return "device" if all(c.kind in _WITH_STATE or c.kind == "entity" for c in said) else None
+    goal = next((i for i, c in enumerate(said) if c.kind == "prep" and c.role == "goal"), None)
+    if goal is None or goal == 0 or goal + 1 >= len(said):
+        return None
+    things = [c for c in said[:goal] if c.kind == "entity"]
+    where = said[goal + 1 :]
+    placed = all(
+        c.kind in ("det", "me") or (c.kind == "entity" and any(is_a(t, k) for t in c.terms for k in _PLACES))
+        for c in where
+    )
+    carried = bool(things) and all(is_a(t, "item") for c in things for t in c.terms)
+    return (
+        "carry"
+        if carried and placed and all(c.kind in ("det", "entity", "join") for c in said[:goal])
+        else None
+    )
+
+
+#: where a thing said tersely may go
+_PLACES = ("room", "furniture", "person")
