@@ -188,6 +188,15 @@ def sorry_repairs(
     return out
 
 
+#: what a speaker says alone between an action and what corrects it ("..., wait, the box room")
+_PAUSES = (
+    ["wait"],
+    ["hang", "on"],
+    ["hold", "on"],
+    ["no", "hang", "on"],
+    ["no", "hold", "on"],
+    ["oh", "wait"],
+)
 #: what a speaker says after the thing that corrects what they said ("..., the lounge light I mean")
 _LATE_REPAIRS = (["actually"], ["i", "mean"], ["i", "meant"], ["rather"])
 
@@ -198,9 +207,14 @@ def late_repairs(
     """The segments with a repair said last in a sentence after an action ("switch on the floor lamp, er,
     the lounge light I mean", "get my laptop, well, the laptop charger actually") said first in it, as
     "i mean the lounge light": the thing corrects what the action said. A sentence with a verb of its own
-    ("..., actually make it 60") is left as said."""
+    ("..., actually make it 60") is left as said. "Wait", "hang on" or "hold on" said alone between an
+    action and what corrects it ("..., wait, the box room") is "no wait"."""
     out: list[list[str]] = []
-    for segment in segments:
+    for at, segment in enumerate(segments):
+        after = segments[at + 1] if at + 1 < len(segments) else []
+        if segment in _PAUSES and out and _corrects([t for s in out for t in s], after, chunks):
+            out.append(["no", "wait"])  # "take the towels to the bathroom, wait, the box room"
+            continue
         marker = next((m for m in _LATE_REPAIRS if len(segment) > len(m) and segment[-len(m) :] == m), None)
         said = chunks(segment[: -len(marker)]) if marker else []
         if (

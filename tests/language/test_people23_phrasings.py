@@ -50,7 +50,11 @@
   you?", "i seem to have misplaced the remote": searches;
 * a terse sentence of a device and its state beside a sentence of another kind ("travel mug to kitchen,
   landing light off", "bring the mug to the kitchen, landing light off") is an action of its own, and so is
-  the terse carrying beside it (``knic.language.sentences``).
+  the terse carrying beside it (``knic.language.sentences``);
+* "wait", "hang on" or "hold on" said alone between an action and what corrects it ("take the towels to the
+  bathroom, wait, the box room") is "no wait"; "go to the landing and wait" still waits;
+* "a crack", "most of the way", "partway" say no level: the reader asks how far;
+* "I require ...", "I'll need ...", "(one) would be grateful for ...": the speaker's wish.
 
 Known gaps of earlier rounds, closed in this one:
 
@@ -560,3 +564,55 @@ def test_conditions_and_terse_sentences_of_two_kinds(
 )
 def test_more_ways_of_asking_where(vocabulary: Vocabulary, text: str, theme: str) -> None:
     assert frames_read(vocabulary, text) == [{"frame": "SEARCHING", "theme": theme}]
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        (
+            "take the towels upstairs to the bathroom, wait, the box room",
+            [{"frame": "BRINGING", "theme": "towels", "goal": "box_room"}],
+        ),
+        (
+            "bring me the kettle, no hang on, the bread",
+            [{"frame": "BRINGING", "theme": "bread", "beneficiary": "me"}],
+        ),
+        (
+            "bring me the kettle, hold on, the bread",
+            [{"frame": "BRINGING", "theme": "bread", "beneficiary": "me"}],
+        ),
+        ("go to the landing and wait", [{"frame": "MOTION", "goal": "landing"}]),
+    ],
+)
+def test_a_pause_before_a_correction(text: str, frames: list[dict[str, str]]) -> None:
+    assert frames_read(world_of(TERRACE), text, "kerry") == frames
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "open the skylight blind a crack",
+        "close the skylight blind most of the way",
+        "open the blackout blind partway",
+    ],
+)
+def test_vague_amounts_ask_how_far(house: Vocabulary, text: str) -> None:
+    assert_asked(house, text, "how far", "sol")
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        (
+            "I require the spare duvet from the linen cupboard.",
+            [{"frame": "BRINGING", "theme": "spare_duvet", "source": "linen_cupboard", "beneficiary": "me"}],
+        ),
+        (
+            "One would be grateful for the post.",
+            [{"frame": "BRINGING", "theme": "post", "beneficiary": "me"}],
+        ),
+        ("I'll need the umbrella later", [{"frame": "BRINGING", "theme": "umbrella", "beneficiary": "me"}]),
+    ],
+)
+def test_formal_wishes(house: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
+    assert frames_read(house, text, "hargreaves") == frames
