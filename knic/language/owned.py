@@ -5,7 +5,8 @@
   or the camp bed). The world names no owners of furniture; a person's room is the one sign of whose a piece
   of it is. So too for a device ("open my blind", "my room light off": the one in that room; "my big
   light": the big light there), and "my room" or "my bedroom" is that room. "His desk", "her room" are so
-  of the person named last before them ("is finn's laptop on his desk": finn's desk).
+  of the person named last before them ("is finn's laptop on his desk": finn's desk), and "mei's lamp",
+  "sol's blind" of the person named.
 * Where a thing's name holds a person's name ("kerry_keys", "maisie_lunchbox"), "my keys" said by kerry,
   "kerry's keys", "kerrys keys" (typed without the apostrophe) and "her keys" once kerry was named are that
   thing: the world names its owner. Said by someone who owns none of them, "my keys" still asks which.
@@ -30,6 +31,7 @@ _WORD = re.compile(r"[a-z']+")
 _SPEAKERS = ("my", "ma", "mine")
 _OTHERS = ("his", "her", "their")
 _ROOMS = ("room", "bedroom")  # "my room": the speaker's own
+_TITLES = r"(?:mr|mrs|miss|ms|mx|dr|master)\.?"  # said before a name ("Miss Mei's room")
 
 
 def own_room(vocabulary: Vocabulary, speaker: str) -> str | None:
@@ -51,8 +53,11 @@ def owned_read(text: str, vocabulary: Vocabulary, speaker: str) -> str:
     people = {t.phrase: t.symbol for t in vocabulary.terms if vocabulary.is_subtype(t.type, "person")}
 
     def owner(match: re.Match[str]) -> str | None:
-        if match.group(1).lower() in _SPEAKERS:
+        said = match.group(1).lower()
+        if said in _SPEAKERS:
             return speaker
+        if said not in _OTHERS:  # "mei's lamp": the person named
+            return people.get(said.removesuffix("'s").removesuffix("'"))
         before = text[: match.start()].lower()
         named = [
             (m.end(), symbol)
@@ -83,7 +88,18 @@ def owned_read(text: str, vocabulary: Vocabulary, speaker: str) -> str:
                 return f"the {match.group(2)} in the {where}"
         return match.group(0)
 
-    return _MY.sub(mine, text)
+    text = _MY.sub(mine, text)
+    names = "|".join(re.escape(p) for p in sorted(people, key=len, reverse=True))
+    return (
+        re.sub(
+            rf"\b(?:{_TITLES}\s+)?((?:{names})(?:'s|'))\s+([a-z]+(?: [a-z]+)?)\b",
+            mine,
+            text,
+            flags=re.IGNORECASE,
+        )
+        if names
+        else text
+    )
 
 
 def _placed_named(vocabulary: Vocabulary, said: str) -> list[str]:
