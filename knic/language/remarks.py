@@ -7,6 +7,8 @@
   garage light has been left on again") is a complaint that asks for the other state, no remark. A command
   of such sentences and talk naming nothing of the world ("in my day, ...") is a remark; a request said
   with one ("the post was delivered, bring it to me") is read as said.
+* A sentence with no verb of the command language that says how something is ("the kitchen's a mess again",
+  "the porch light is broken", "the lounge is so cold") is a remark too.
 * A question tag or talk said after the one sentence of a command ("is it going to be sunny tomorrow, do you
   think?") leaves that sentence alone for :func:`knic.language.reader.not_request`.
 * "all" before a word of time ("leave the porch light on all night", "flickering all week") is a time, not
@@ -30,6 +32,12 @@ _DESCRIBING = frozenset({"that", "which", "who", "what", "it", "there"})
 #: states a device said to have been in (perfect) is complained of ("the lamp has been on all day": asks it
 #: off); "the lamp was on" is a remark
 _STATES = (["on"], ["off"], ["open"], ["closed"], ["shut"])
+#: "be" said of how a thing is ("the lounge is a tip"), words of degree after it, and what a thing said to
+#: be so is looked for, not remarked on; sentences opening so are asked or meant otherwise
+_COPULAS = frozenset({"is", "are", "am"})
+_DEGREES = frozenset({"so", "too", "very", "really", "such", "quite", "pretty", "well", "totally", "all"})
+_LOST = frozenset({"lost", "missing", "gone", "nowhere"})
+_NOT_SUBJECTS = frozenset({"let's", "here's", "where's", "what's", "who's", "how's"})
 #: words that make what follows a wish ("it'd be great if the light was off", "i wish the blinds were shut")
 _WISHING = frozenset({"if", "wish", "rather"})
 #: words of time "all" goes before ("all week"); "all the time", "all along"
@@ -59,7 +67,7 @@ def remark(segments: list[list[str]], chunks: Callable[[Sequence[str]], list[Chu
         said = chunks(segment)
         if not said:
             continue
-        if _states(segment, chunks):
+        if _states(segment, chunks) or _described(segment, chunks):
             stated = stated or segment
             continue
         if not all(c.kind in _TALK and not c.terms for c in said):
@@ -90,6 +98,28 @@ def _states(segment: list[str], chunks: Callable[[Sequence[str]], list[Chunk]]) 
         # night turn it off")
         return not any(c.kind == "verb" for c in after[:-1])
     return False
+
+
+def _described(segment: list[str], chunks: Callable[[Sequence[str]], list[Chunk]]) -> bool:
+    """Whether a sentence with no verb of the command language says how something is ("the kitchen's a mess
+    again", "the porch light is broken", "the lounge is so cold"): a subject, "is" (or "'s", "are"), then a
+    word the tables do not know, after articles and words of degree only. A thing said to be lost or missing
+    ("my glasses are missing") is no remark."""
+    if len(segment) < 2 or segment[0] in _ASKING or _LOST & set(segment):
+        return False
+    at = next(
+        (i + 1 for i, w in enumerate(segment) if (w in _COPULAS and i > 0) or (w.endswith("'s") and w[:-2])),
+        None,
+    )
+    if at is None or at >= len(segment) or segment[0] in _NOT_SUBJECTS:
+        return False
+    said = chunks(segment)
+    if any(c.kind == "verb" and not c.soft for c in said):
+        return False
+    after = [c for c in chunks(segment[at:]) if c.kind != "det" and c.text not in _DEGREES]
+    if any(c.kind in ("state", "level", "number", "entity") or c.state for c in after):
+        return False  # "the hallway light is still on": a complaint; "... is stuck on the shelf": where
+    return bool(after) and (after[0].kind == "unknown" or (after[0].kind == "verb" and after[0].soft))
 
 
 def tagged(segments: list[list[str]], chunks: Callable[[Sequence[str]], list[Chunk]]) -> list[list[str]]:

@@ -56,7 +56,10 @@
 * "a crack", "most of the way", "partway" say no level: the reader asks how far;
 * "I require ...", "I'll need ...", "(one) would be grateful for ...": the speaker's wish;
 * a person's device or furniture ("mei's lamp", "close sol's blind", "Miss Mei's room") is the one of that
-  name in the room named after them, as the speaker's own is; a title before the name is dropped.
+  name in the room named after them, as the speaker's own is; a title before the name is dropped;
+* a sentence with no verb of the command language that says how something is ("the kitchen's a mess again",
+  "the porch light is broken", "the lounge is so cold") is a remark: no action, not a missing "mess" or a
+  question on or off; "the hallway light is still on" still asks it off.
 
 Known gaps of earlier rounds, closed in this one:
 
@@ -642,3 +645,23 @@ def test_a_persons_device_is_in_their_room(
 
 def test_a_persons_lamp_of_a_room_without_one_asks(house: Vocabulary) -> None:
     assert_asked(house, "jas's lamp off", "lamp", "hargreaves")  # jas's room has fairy lights, no lamp
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "the kitchen's a mess again",
+        "the porch light is broken",
+        "the lounge is so cold",
+        "it's freezing in here",
+    ],
+)
+def test_how_something_is_is_a_remark(house: Vocabulary, text: str) -> None:
+    result = understand(text, house, speaker="dara")
+    assert not result.accepted and not result.question and "no action" in result.reason, result.reason
+
+
+def test_a_light_still_on_is_still_a_complaint(house: Vocabulary) -> None:
+    assert frames_read(house, "the hallway light is still on", "dara") == [
+        {"frame": "OPERATING", "device": "hallway_light", "state": "off"}
+    ]
