@@ -59,7 +59,9 @@
   name in the room named after them, as the speaker's own is; a title before the name is dropped;
 * a sentence with no verb of the command language that says how something is ("the kitchen's a mess again",
   "the porch light is broken", "the lounge is so cold") is a remark: no action, not a missing "mess" or a
-  question on or off; "the hallway light is still on" still asks it off.
+  question on or off; "the hallway light is still on" still asks it off;
+* more indirect requests: "is it ok if you ...", "I don't suppose you know where ...", "it might be nice to
+  have the easel lamp at forty"; "a bit later", "in a minute", "later" say when, not how far.
 
 Known gaps of earlier rounds, closed in this one:
 
@@ -665,3 +667,29 @@ def test_a_light_still_on_is_still_a_complaint(house: Vocabulary) -> None:
     assert frames_read(house, "the hallway light is still on", "dara") == [
         {"frame": "OPERATING", "device": "hallway_light", "state": "off"}
     ]
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        (
+            "is it ok if you turn the easel lamp off",
+            [{"frame": "OPERATING", "device": "easel_lamp", "state": "off"}],
+        ),
+        ("I don't suppose you know where the bike pump is", [{"frame": "SEARCHING", "theme": "bike_pump"}]),
+        (
+            "maybe you could open my blind a bit later",
+            [{"frame": "OPERATING", "device": "sol_room_blind", "state": "open"}],
+        ),
+        (
+            "it might be nice to have the easel lamp at forty",
+            [{"frame": "OPERATING", "device": "easel_lamp", "state": "40"}],
+        ),
+        (
+            "it would be nice to have the sketchbook",
+            [{"frame": "BRINGING", "theme": "sketchbook", "beneficiary": "me"}],
+        ),
+    ],
+)
+def test_more_indirect_requests(house: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
+    assert frames_read(house, text, "sol") == frames
