@@ -76,7 +76,11 @@ STRETCH_FLOOR = -6.0
 #: commands, 194 other utterances, candidates as scored on 29 Nov), with :data:`KEEP_MARGIN`: frame+args
 #: 500 with Whisper alone; weight 0.5: 504; 0.8: 506; 1.0: 505; 2.0: 503 (margin not used); with margin 0.4:
 #: weight 0.5: 508, 0.8: 511, 1.0: 509. Other speech rejected 188 in each (its candidates score too low
-#: either way).
+#: either way). Measured by the recogniser on the same sets: 498 -> 506 commands, 188 other utterances
+#: rejected either way. Tried and not kept: candidates blended from pocketsphinx's and Whisper's transcripts
+#: (each place they differ taken from one or the other, the four the command model fits best scored too):
+#: 509 commands, but 181 other utterances rejected ("do you know where i was born" became "... where
+#: eyeglasses are in"); pocketsphinx's 10-best as candidates too: one command more offline.
 COMMAND_WEIGHT = 0.8
 #: pocketsphinx's transcript, though it fits above :data:`KEEP_LOG_PROB`, is not kept when another
 #: candidate's score (Whisper's with the command model's, above) is higher by more than this; it still may
