@@ -85,6 +85,7 @@ def read_vocabulary(
             for atom in section[1:]:
                 if isinstance(atom, list) and atom and isinstance(atom[0], str):
                     predicates[atom[0]] = tuple(_typed(atom[1:]))
+    _check_named_types(Path(domain), types)
     locations: dict[str, list[str]] = {}
     if problem is not None:
         for section in _read_sexp(Path(problem)):
@@ -100,6 +101,31 @@ def read_vocabulary(
 
 
 Sexp = str | list["Sexp"]
+
+#: the types commands name things by: a domain must declare one of them, or a type below one
+NAMED_TYPES = ("room", "furniture", "item", "person", "device")
+
+
+def _check_named_types(domain: Path, types: dict[str, str | None]) -> None:
+    """Refuse a domain none of whose types a command can name (a domain of its own, with types such as
+    ``place`` and ``thing``): every command would be refused, each for a thing that "is not an object".
+
+    Raises:
+        LanguageError: no type of the domain is, or is below, one of :data:`NAMED_TYPES`.
+    """
+    for name in types:
+        seen: set[str] = set()
+        kind: str | None = name
+        while kind is not None and kind not in seen:
+            if kind in NAMED_TYPES:
+                return
+            seen.add(kind)
+            kind = types.get(kind)
+    declared = ", ".join(sorted(t for t in types if t != "object")) or "none"
+    raise LanguageError(
+        f"{domain}: commands name things by the types {', '.join(NAMED_TYPES)} or types below them, "
+        f"and this domain declares none of them (its types: {declared})"
+    )
 
 
 def _read_sexp(path: Path) -> list[Sexp]:

@@ -162,3 +162,21 @@ def test_goal_batch_answers_each_line_and_stops_quietly_when_its_reader_leaves()
     process.stdout.close()
     _, errors = process.communicate("go to the kitchen\n" * 200, timeout=120)
     assert process.returncode == 141 and "Traceback" not in errors
+
+
+def test_goal_in_a_domain_whose_types_no_command_names_is_one_line(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    domain, problem = tmp_path / "office.pddl", tmp_path / "office_problem.pddl"
+    domain.write_text(
+        "(define (domain office) (:requirements :strips :typing) (:types place thing agent)\n"
+        "  (:predicates (at ?a - agent ?p - place) (in ?t - thing ?p - place)))\n"
+    )
+    problem.write_text(
+        "(define (problem p) (:domain office) (:objects lobby - place stapler - thing bot - agent)\n"
+        "  (:init (at bot lobby) (in stapler lobby)) (:goal (at bot lobby)))\n"
+    )
+    code = main(["goal", "--domain", str(domain), "--problem", str(problem), "bring me the stapler"])
+    err = capsys.readouterr().err.strip()
+    assert code == 4 and len(err.splitlines()) == 1
+    assert str(domain) in err and "declares none" in err and "agent, place, thing" in err
