@@ -440,9 +440,16 @@ def _operating(reader: Resolver, clause: Clause, previous: Frames, groups: list[
     elif clause.states:
         state = clause.states[-1]
     members = [m for d in devices for m in reader.vocabulary.members(d)]
-    lights = _all_are(reader.vocabulary, members, "light")
-    if state in _LIGHT_STATES and lights:
-        state = _LIGHT_STATES[state]  # "open the left light": switch it on
+    kinds = [reader.vocabulary.type_of(m) or "" for m in members]
+    is_light = [reader.vocabulary.is_subtype(k, "light") for k in kinds]
+    lights = all(is_light)
+    # "close all the lights": dimmers said with lights are switched as the lights are
+    dimmed = all(
+        lit or reader.vocabulary.is_subtype(k, "dimmer") for lit, k in zip(is_light, kinds, strict=True)
+    )
+    lit = lights or (any(is_light) and dimmed)
+    if state in _LIGHT_STATES and lit:
+        state = _LIGHT_STATES[state]  # "open the left light", "close all the lights" (dimmers too): on, off
     if state in _BLINDS_STATES and _all_are(reader.vocabulary, members, "blinds"):
         state = _BLINDS_STATES[state]  # "turn the blinds off": close them
     # "the lights please"; "dim the lounge", "set the dimmer": how far

@@ -61,7 +61,9 @@
   "the porch light is broken", "the lounge is so cold") is a remark: no action, not a missing "mess" or a
   question on or off; "the hallway light is still on" still asks it off;
 * more indirect requests: "is it ok if you ...", "I don't suppose you know where ...", "it might be nice to
-  have the easel lamp at forty"; "a bit later", "in a minute", "later" say when, not how far.
+  have the easel lamp at forty"; "a bit later", "in a minute", "later" say when, not how far;
+* "close all light" (a learner's "close" of lights, dimmers among them) switches every one off; a dimmer
+  alone "turned right up" is still at full.
 
 Known gaps of earlier rounds, closed in this one:
 
@@ -693,3 +695,13 @@ def test_a_light_still_on_is_still_a_complaint(house: Vocabulary) -> None:
 )
 def test_more_indirect_requests(house: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
     assert frames_read(house, text, "sol") == frames
+
+
+def test_closing_all_the_lights_switches_the_dimmers_off_too(house: Vocabulary) -> None:
+    frames = frames_read(house, "close all light", "mei")
+    assert {f["state"] for f in frames} == {"off"} and {"lounge_light", "kitchen_light"} <= {
+        f["device"] for f in frames
+    }
+    assert frames_read(house, "turn the lounge light right up", "mei") == [
+        {"frame": "OPERATING", "device": "lounge_light", "state": "open"}
+    ]
