@@ -26,8 +26,7 @@ def add_world_arguments(parser: argparse.ArgumentParser) -> None:
     parser.add_argument("--json", action="store_true", help="print one JSON object")
     parser.add_argument(
         "--speaker",
-        help="the person 'me' refers to (default: annie; with --world, annie if the world has her, else its "
-        "first known person)",
+        help="the person 'me' refers to (default: annie if the world has her, else its first known person)",
     )
     parser.add_argument(
         "--world",
@@ -59,9 +58,12 @@ def load_vocabulary(args: argparse.Namespace) -> Any:
         if args.speaker is None:
             args.speaker = me or "annie"
         return vocabulary
-    args.speaker = args.speaker or "annie"
     problem = args.problem or (DEFAULT_PROBLEM if args.domain is None else None)
-    return read_vocabulary(domain, problem, args.lexicon)
+    vocabulary = read_vocabulary(domain, problem, args.lexicon)
+    if args.speaker is None:  # annie, or the problem's first person where it has no annie
+        people = sorted(s for s, t in vocabulary.instances.items() if vocabulary.is_subtype(t, "person"))
+        args.speaker = "annie" if "annie" in people or not people else people[0]
+    return vocabulary
 
 
 def world_vocabulary(world: str, domain: Any, lexicon: str | None) -> tuple[Any, str | None]:

@@ -180,3 +180,14 @@ def test_goal_in_a_domain_whose_types_no_command_names_is_one_line(
     err = capsys.readouterr().err.strip()
     assert code == 4 and len(err.splitlines()) == 1
     assert str(domain) in err and "declares none" in err and "agent, place, thing" in err
+
+
+def test_goal_in_a_problem_without_annie_is_for_its_first_person(capsys: pytest.CaptureFixture[str]) -> None:
+    other = Path(__file__).resolve().parents[1] / "fixtures" / "language" / "other_world" / "problem.pddl"
+    assert main(["goal", "--problem", str(other), "--json", "bring me the teddy bear"]) == 0
+    assert json.loads(capsys.readouterr().out)["goals"] == ["(has maria teddy_bear)"]  # maria, oscar: maria
+    assert (
+        main(["goal", "--problem", str(other), "--speaker", "oscar", "--json", "bring me the teddy bear"])
+        == 0
+    )
+    assert json.loads(capsys.readouterr().out)["goals"] == ["(has oscar teddy_bear)"]
