@@ -15,6 +15,8 @@
   every device: it is dropped (:func:`times_dropped`); "it would be nice if" before how a thing should be
   ("... if the reading lamp was off") only wishes it so (:func:`plain_words`).
 * "set an alarm (a timer, a reminder) for half six": no action the robot has (:func:`undoable`).
+* A request taken back in a sentence of its own said last ("take the rugby ball to the garden, actually no,
+  leave it", "bring me the kettle, oh never mind"): no action.
 """
 
 from __future__ import annotations
@@ -55,9 +57,41 @@ def refused(segments: list[list[str]], chunks: Callable[[Sequence[str]], list[Ch
     stated = remark(segments, chunks)
     if stated:
         return f"'{stated}' says how something is or was: no request, no action for me"
+    if len(segments) > 1 and _taken_back(
+        segments[-1]
+    ):  # "take the ball to the garden, actually no, leave it"
+        return "you took the request back: no action for me"
     timed = (undoable(segments) or "").removesuffix("s")
     article = "an" if timed[:1] in ("a", "e", "i", "o", "u") else "a"
     return f"setting {article} {timed} is no action for me" if timed else None
+
+
+#: what takes a request back when said last in a sentence of its own, after words of repair
+_TAKEN_BACK = (
+    ["leave", "it"],
+    ["forget", "it"],
+    ["forget", "that"],
+    ["never", "mind"],
+    ["nevermind"],
+    ["don't", "bother"],
+    ["dont", "bother"],
+    ["no", "need"],
+    ["cancel", "that"],
+    ["cancel", "it"],
+    ["scratch", "that"],
+    ["leave", "them"],
+)
+_REPAIRING = frozenset(
+    {"actually", "no", "wait", "sorry", "oh", "on", "second", "thought", "thoughts", "just"}
+)
+
+
+def _taken_back(segment: list[str]) -> bool:
+    """Whether a sentence only takes back what was asked ("actually no, leave it", "oh never mind")."""
+    start = 0
+    while start < len(segment) and segment[start] in _REPAIRING:
+        start += 1
+    return segment[start:] in _TAKEN_BACK
 
 
 def remark(segments: list[list[str]], chunks: Callable[[Sequence[str]], list[Chunk]]) -> str | None:

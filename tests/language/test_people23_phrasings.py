@@ -63,7 +63,10 @@
 * more indirect requests: "is it ok if you ...", "I don't suppose you know where ...", "it might be nice to
   have the easel lamp at forty"; "a bit later", "in a minute", "later" say when, not how far;
 * "close all light" (a learner's "close" of lights, dimmers among them) switches every one off; a dimmer
-  alone "turned right up" is still at full.
+  alone "turned right up" is still at full;
+* a request taken back in a sentence of its own said last ("take the rugby ball to the garden, actually no,
+  leave it", "bring me the kettle, oh never mind") is no action; "no, leave it on the garden table" still
+  corrects where.
 
 Known gaps of earlier rounds, closed in this one:
 
@@ -704,4 +707,23 @@ def test_closing_all_the_lights_switches_the_dimmers_off_too(house: Vocabulary) 
     }
     assert frames_read(house, "turn the lounge light right up", "mei") == [
         {"frame": "OPERATING", "device": "lounge_light", "state": "open"}
+    ]
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "take the rugby ball to the garden, actually no, leave it",
+        "bring me the kettle, oh never mind",
+        "turn off the landing light, no wait, leave it",
+    ],
+)
+def test_a_request_taken_back_is_no_action(house: Vocabulary, text: str) -> None:
+    result = understand(text, house, speaker="finn")
+    assert not result.accepted and not result.question and "no action" in result.reason, result.reason
+
+
+def test_leave_it_somewhere_still_corrects(house: Vocabulary) -> None:
+    assert frames_read(house, "take the frisbee to the garden, no, leave it on the garden table", "finn") == [
+        {"frame": "PLACING", "theme": "frisbee", "goal": "garden_table"}
     ]
