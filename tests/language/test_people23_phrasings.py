@@ -66,7 +66,9 @@
   alone "turned right up" is still at full;
 * a request taken back in a sentence of its own said last ("take the rugby ball to the garden, actually no,
   leave it", "bring me the kettle, oh never mind") is no action; "no, leave it on the garden table" still
-  corrects where.
+  corrects where;
+* a learner's and an Irish speaker's ways of asking where: "the helmet, where you have put it?", "you have
+  seen my keys?", "you saw the calculator?", "I'm only after losing my rosary beads".
 
 Known gaps of earlier rounds, closed in this one:
 
@@ -726,4 +728,22 @@ def test_a_request_taken_back_is_no_action(house: Vocabulary, text: str) -> None
 def test_leave_it_somewhere_still_corrects(house: Vocabulary) -> None:
     assert frames_read(house, "take the frisbee to the garden, no, leave it on the garden table", "finn") == [
         {"frame": "PLACING", "theme": "frisbee", "goal": "garden_table"}
+    ]
+
+
+@pytest.mark.parametrize(
+    ("text", "theme"),
+    [
+        ("the helmet, where you have put it?", "helmet"),
+        ("you have seen my keys?", "tomasz_keys"),
+        ("you saw the calculator?", "calculator"),
+    ],
+)
+def test_a_learners_where(house: Vocabulary, text: str, theme: str) -> None:
+    assert frames_read(house, text, "tomasz") == [{"frame": "SEARCHING", "theme": theme}]
+
+
+def test_only_after_losing() -> None:
+    assert frames_read(world_of(TERRACE), "I'm only after losing my rosary beads", "bridget") == [
+        {"frame": "SEARCHING", "theme": "rosary_beads"}
     ]
