@@ -6,7 +6,7 @@
   of it is. So too for a device ("open my blind", "my room light off": the one in that room; "my big
   light": the big light there), and "my room" or "my bedroom" is that room. "His desk", "her room" are so
   of the person named last before them ("is finn's laptop on his desk": finn's desk), and "mei's lamp",
-  "sol's blind" of the person named.
+  "sol's blind" of the person named; "go to finn's" is to finn's room.
 * Where a thing's name holds a person's name ("kerry_keys", "maisie_lunchbox"), "my keys" said by kerry,
   "kerry's keys", "kerrys keys" (typed without the apostrophe) and "her keys" once kerry was named are that
   thing: the world names its owner. Said by someone who owns none of them, "my keys" still asks which.
@@ -32,6 +32,8 @@ _SPEAKERS = ("my", "ma", "mine")
 _OTHERS = ("his", "her", "their")
 _ROOMS = ("room", "bedroom")  # "my room": the speaker's own
 _TITLES = r"(?:mr|mrs|miss|ms|mx|dr|master)\.?"  # said before a name ("Miss Mei's room")
+#: what may follow a person's name said as an owner of no thing ("go to finn's", "... to finn's and then ...")
+_SAID_ALONE = r"\s*(?:$|[,.!?;]|\s(?:and|then|to|for|please|now)\b)"
 
 
 def own_room(vocabulary: Vocabulary, speaker: str) -> str | None:
@@ -88,18 +90,17 @@ def owned_read(text: str, vocabulary: Vocabulary, speaker: str) -> str:
                 return f"the {match.group(2)} in the {where}"
         return match.group(0)
 
+    def theirs(match: re.Match[str]) -> str:  # "go to finn's": the room named after finn
+        room = own_room(vocabulary, people[match.group(1).lower()])
+        return f"the {vocabulary.phrase_of(room)}" if room else match.group(0)
+
     text = _MY.sub(mine, text)
     names = "|".join(re.escape(p) for p in sorted(people, key=len, reverse=True))
-    return (
-        re.sub(
-            rf"\b(?:{_TITLES}\s+)?((?:{names})(?:'s|'))\s+([a-z]+(?: [a-z]+)?)\b",
-            mine,
-            text,
-            flags=re.IGNORECASE,
-        )
-        if names
-        else text
-    )
+    if not names:
+        return text
+    text = re.sub(rf"\b(?:{_TITLES}\s+)?({names})'s(?={_SAID_ALONE})", theirs, text, flags=re.IGNORECASE)
+    owner_then = rf"\b(?:{_TITLES}\s+)?((?:{names})(?:'s|'))\s+([a-z]+(?: [a-z]+)?)\b"
+    return re.sub(owner_then, mine, text, flags=re.IGNORECASE)
 
 
 def _placed_named(vocabulary: Vocabulary, said: str) -> list[str]:

@@ -68,7 +68,9 @@
   leave it", "bring me the kettle, oh never mind") is no action; "no, leave it on the garden table" still
   corrects where;
 * a learner's and an Irish speaker's ways of asking where: "the helmet, where you have put it?", "you have
-  seen my keys?", "you saw the calculator?", "I'm only after losing my rosary beads".
+  seen my keys?", "you saw the calculator?", "I'm only after losing my rosary beads";
+* "go to finn's" (a person's name said as an owner of nothing after it) is to the room named after them; where
+  no room is ("go to dave's" in the terraced house) it is to the person.
 
 Known gaps of earlier rounds, closed in this one:
 
@@ -747,3 +749,22 @@ def test_only_after_losing() -> None:
     assert frames_read(world_of(TERRACE), "I'm only after losing my rosary beads", "bridget") == [
         {"frame": "SEARCHING", "theme": "rosary_beads"}
     ]
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        ("go to finn's", [{"frame": "MOTION", "goal": "finn_room"}]),
+        (
+            "take the hoodie to finn's, please",
+            [{"frame": "BRINGING", "theme": "hoodie", "goal": "finn_room"}],
+        ),
+        ("bring me finn's guitar", [{"frame": "BRINGING", "theme": "guitar", "beneficiary": "me"}]),
+    ],
+)
+def test_a_persons_place(house: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
+    assert frames_read(house, text, "jas") == frames
+
+
+def test_a_persons_place_with_no_room_is_the_person() -> None:
+    assert frames_read(world_of(TERRACE), "go to dave's", "kerry") == [{"frame": "MOTION", "goal": "dave"}]
