@@ -141,10 +141,10 @@ def _described(segment: list[str], chunks: Callable[[Sequence[str]], list[Chunk]
     ("my glasses are missing") is no remark."""
     if len(segment) < 2 or segment[0] in _ASKING or _LOST & set(segment):
         return False
-    at = next(
-        (i + 1 for i, w in enumerate(segment) if (w in _COPULAS and i > 0) or (w.endswith("'s") and w[:-2])),
-        None,
-    )
+    at = next((i + 1 for i, w in enumerate(segment) if w in _COPULAS and i > 0), None)  # "the laptop is dead"
+    at = at or next(
+        (i + 1 for i, w in enumerate(segment) if w.endswith("'s") and w[:-2]), None
+    )  # "kitchen's"
     if at is None or at >= len(segment) or segment[0] in _NOT_SUBJECTS:
         return False
     said = chunks(segment)

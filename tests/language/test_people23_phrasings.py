@@ -665,6 +665,7 @@ def test_a_persons_lamp_of_a_room_without_one_asks(house: Vocabulary) -> None:
         "the porch light is broken",
         "the lounge is so cold",
         "it's freezing in here",
+        "jas's laptop is dead",
     ],
 )
 def test_how_something_is_is_a_remark(house: Vocabulary, text: str) -> None:
