@@ -1,6 +1,9 @@
 """What the sentences of a command say of each other, read before its words are (used by
 :class:`knic.language.reader.Reader` on the command's stretches between stops and commas):
 
+* A sentence after a request that gives its reason ("..., as I wish to inspect the washing line",
+  "..., because I'm cold"), or a reason said on in the request's sentence ("take me to the lounge so that I
+  can watch tv"), asks nothing more: dropped (:func:`reasons_dropped`).
 * What someone did with a thing said before ("do you happen to know where the headphones are? jas borrowed
   them"): a sentence of a person, a past verb the command language lacks and no thing named, said beside a
   request, is talk (:func:`done_dropped`): jas is no one to look for.
@@ -33,9 +36,49 @@ def sentences_read(
     is_a: Callable[[Term, str], bool],
 ) -> list[list[str]]:
     """The sentences with the rules of the module docstring applied."""
-    segments = together_dropped(segments, chunks)
+    segments = reasons_dropped(together_dropped(segments, chunks), chunks)
     segments = done_dropped(segments, chunks, lambda c: any(is_a(t, "person") for t in c.terms))
     return verbs_said(segments, chunks, is_a)
+
+
+#: how a sentence giving the reason for a request opens ("..., as I wish to inspect the washing line")
+_REASONS = (
+    ["because"],
+    ["cos"],
+    ["coz"],
+    ["cause"],
+    ["'cause"],
+    ["since"],
+    ["so", "that"],
+    *([w, s] for w in ("as", "so") for s in ("i", "we", "it", "he", "she", "they", "i'm", "i've", "it's")),
+)
+
+
+#: a reason said on in the sentence of the request, with no stop before it
+_SAID_ON = (["because"], ["cos"], ["coz"], ["so", "that"], ["so", "i", "can"], ["so", "we", "can"])
+
+
+def reasons_dropped(
+    segments: list[list[str]], chunks: Callable[[Sequence[str]], list[Chunk]]
+) -> list[list[str]]:
+    """The sentences without those after a request that give its reason ("..., as I wish to inspect the
+    washing line", "..., because I want to see the garden"): a reason asks for nothing more."""
+    out: list[list[str]] = []
+    for segment in segments:
+        acted = any(c.kind == "verb" for s in out for c in chunks(s))
+        if acted and any(segment[: len(r)] == r for r in _REASONS):
+            continue
+        # said on in the same sentence ("take me to the lounge so that I can watch tv"): cut there
+        at = next(
+            (i for i in range(1, len(segment)) if any(segment[i : i + len(r)] == r for r in _SAID_ON)), None
+        )
+        if at is not None and any(c.kind == "verb" for c in chunks(segment[:at])):
+            # up to a request said after it ("... because i'm cold and then turn the dimmer down")
+            on = (j for j in range(at + 1, len(segment)) if segment[j] in ("and", "then"))
+            end = next((j for j in on if any(c.kind == "verb" for c in chunks(segment[j:]))), len(segment))
+            segment = segment[:at] + segment[end:]
+        out.append(segment)
+    return out
 
 
 def done_dropped(

@@ -70,7 +70,11 @@
 * a learner's and an Irish speaker's ways of asking where: "the helmet, where you have put it?", "you have
   seen my keys?", "you saw the calculator?", "I'm only after losing my rosary beads";
 * "go to finn's" (a person's name said as an owner of nothing after it) is to the room named after them; where
-  no room is ("go to dave's" in the terraced house) it is to the person.
+  no room is ("go to dave's" in the terraced house) it is to the person;
+* the reason for a request, in a sentence of its own after it ("..., as I wish to inspect the washing line")
+  or said on in its sentence ("take me to the lounge so that I can watch tv"), asks nothing more; a request
+  said after the reason ("... because i'm cold and then turn the lounge light down to 20") is still read
+  (``knic.language.sentences``).
 
 Known gaps of earlier rounds, closed in this one:
 
@@ -769,3 +773,35 @@ def test_a_persons_place(house: Vocabulary, text: str, frames: list[dict[str, st
 
 def test_a_persons_place_with_no_room_is_the_person() -> None:
     assert frames_read(world_of(TERRACE), "go to dave's", "kerry") == [{"frame": "MOTION", "goal": "dave"}]
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        (
+            "I would be most obliged if you would be good enough to escort me to the garden, as I wish to"
+            " inspect the washing line.",
+            [{"frame": "ACCOMPANYING", "theme": "me", "goal": "garden"}],
+        ),
+        (
+            "take me to the lounge so that I can watch tv",
+            [{"frame": "ACCOMPANYING", "theme": "me", "goal": "lounge"}],
+        ),
+        (
+            "bring me the kettle because i'm cold and then turn the lounge light down to 20",
+            [
+                {"frame": "BRINGING", "theme": "kettle", "beneficiary": "me"},
+                {"frame": "OPERATING", "device": "lounge_light", "state": "20"},
+            ],
+        ),
+        (
+            "bring me the kettle, as well as the toaster",
+            [
+                {"frame": "BRINGING", "theme": "kettle", "beneficiary": "me"},
+                {"frame": "BRINGING", "theme": "toaster", "beneficiary": "me"},
+            ],
+        ),
+    ],
+)
+def test_a_reason_asks_nothing_more(house: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
+    assert frames_read(house, text, "hargreaves") == frames
