@@ -4,10 +4,11 @@ The sets are ``tests/fixtures/language/dev.yaml`` (tuned on) and ``tests/fixture
 (written afterwards in other words), and ``people2/dev.yaml`` and ``people2/test.yaml`` (100 commands each,
 written blind: the writer saw the apartment's description and the gold format only, not the grammar, the
 reader, the lexicon or the earlier sets; ``people2-test`` is never tuned on). ``--file`` runs a set of one's
-own. ``people3`` to ``people23`` are further blind development sets (``people5`` to ``people15`` span both
+own. ``people3`` to ``people24`` are further blind development sets (``people5`` to ``people15`` span both
 houses; ``people16`` the simulator's test flat and bungalow; ``people18`` a townhouse of its own, a world file
 beside the set; ``people19`` a garden flat, ``people20`` a farmhouse, ``people21`` an accessible flat,
-``people22`` a terraced family house on two floors and ``people23`` a shared student house, likewise). Each
+``people22`` a terraced family house on two floors, ``people23`` a shared student house and ``people24`` a
+detached family house with a granny annexe and a garden office, likewise). Each
 case is a command with its gold frames and goals, or with a word the refusal (``reject``) or the question back
 (``question``) must contain. Cases run against the ERL apartment or, with ``world: other``, against a
 different house (``tests/fixtures/language/other_world``), to show that the language code knows no world's
@@ -65,6 +66,7 @@ SETS = {
     "people21-dev": FIXTURES / "people21" / "dev.yaml",
     "people22-dev": FIXTURES / "people22" / "dev.yaml",
     "people23-dev": FIXTURES / "people23" / "dev.yaml",
+    "people24-dev": FIXTURES / "people24" / "dev.yaml",
 }
 OTHER_WORLD = FIXTURES / "other_world" / "problem.pddl"
 _MAIN = {"MOTION": ("goal",), "OPERATING": ("device", "state")}
