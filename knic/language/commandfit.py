@@ -7,6 +7,10 @@ and "go to the entrance hall" it may find the first fits a little better, of "ta
 and "... kitchen diner" likewise. The command model knows which of them a command says. The judge adds the
 two, the command model's part weighed by :data:`~knic.language.judging.COMMAND_WEIGHT`, as a recogniser adds
 its language model's score to its acoustic one.
+
+Whisper settles an utterance it is sure of (:func:`~knic.language.whisperpass.settled`) only when the command
+model has every word of its transcript (:meth:`CommandFit.knows`); one with a word no command says ("bramp the
+juice", "put it on the brick shelf") is judged with pocketsphinx's transcripts instead.
 """
 
 from __future__ import annotations
@@ -48,6 +52,10 @@ class CommandFit:
         """log10 P(word | the last two words of ``history``), None when the model lacks the word."""
         found = self._logmath.log_to_log10(self._model.prob([word, *reversed(history[-2:])]))
         return None if found < _NO_WORD_LOG10 else float(found)
+
+    def knows(self, text: str) -> bool:
+        """Whether the model has every word of a text."""
+        return all(self._log10(word, []) is not None for word in text.split())
 
     def __call__(self, text: str) -> float:
         words = [*text.split(), "</s>"]

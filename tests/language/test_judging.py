@@ -11,7 +11,7 @@ from typing import Any
 
 import pytest
 
-from knic.language import judging
+from knic.language import judging, understand
 from knic.language.audio import Transcript, load_audio, pcm_bytes
 from knic.language.commandfit import UNKNOWN_LOG10, CommandFit
 from knic.language.judging import (
@@ -26,6 +26,7 @@ from knic.language.judging import (
 )
 from knic.language.lmspeech import NgramRecognizer
 from knic.language.understanding import understand_transcript
+from knic.language.vocabulary import normalize
 from knic.language.whisperpass import (
     BEAM,
     FRAME,
@@ -34,6 +35,7 @@ from knic.language.whisperpass import (
     WhisperPass,
     WhisperServer,
     answer_of,
+    settled,
     world_prompt,
 )
 
@@ -381,5 +383,38 @@ def test_the_command_model_puts_right_what_whisper_ranks_wrong(
     before = understand_transcript(recognizer.recognize(recording), vocabulary)
     assert [f.to_dict() for f in before.frames] != frames  # Whisper's score alone: wrong
     monkeypatch.undo()
+    result = understand_transcript(recognizer.recognize(recording), vocabulary)
+    assert result.accepted and [f.to_dict() for f in result.frames] == frames
+
+
+#: development recordings Whisper is sure of with a word no command says, which judging hears right
+UNKNOWN_WORD_SETTLED = [
+    # "grab the juice and leave it on the coffee table" (espeak-ng en-gb-x-gbclan+f1): "bramp the juice ..."
+    (
+        "speech_voices_dev/voices_dev_084.wav",
+        [
+            {"frame": "TAKING", "theme": "juice"},
+            {"frame": "PLACING", "theme": "juice", "goal": "coffee_table"},
+        ],
+    ),
+    # "pick up the candle and put it on the bookshelf" (flite's kal16 three semitones down): "the brick shelf"
+    (
+        "speech_people3/dev/people3_040.wav",
+        [
+            {"frame": "TAKING", "theme": "candle"},
+            {"frame": "PLACING", "theme": "candle", "goal": "bookshelf"},
+        ],
+    ),
+]
+
+
+@pytest.mark.parametrize(("name", "frames"), UNKNOWN_WORD_SETTLED, ids=[c[0] for c in UNKNOWN_WORD_SETTLED])
+def test_whisper_does_not_settle_a_transcript_with_a_word_no_command_says(
+    recognizer, vocabulary, name, frames
+):
+    recording = load_audio(FIXTURES / name)
+    sure = recognizer._server().hear(pcm_bytes(recording))
+    assert sure is not None and settled(sure, recognizer.reads)  # Whisper is sure, and the reader reads it
+    assert [f.to_dict() for f in understand(normalize(sure.text), vocabulary).frames] != frames  # wrongly
     result = understand_transcript(recognizer.recognize(recording), vocabulary)
     assert result.accepted and [f.to_dict() for f in result.frames] == frames
