@@ -33,6 +33,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import replace
 
 from knic.language.chunks import Chunk, Chunker, past_determiners, singulars
+from knic.language.contracted import contracted
 from knic.language.vocabulary import Vocabulary
 
 #: hesitations, dropped even inside a phrase (they are fillers wherever they stand)
@@ -142,7 +143,7 @@ def words_tidied(tokens: list[str]) -> list[str]:
     thing said after an article and the same article said again ("get me a cup of tea er a cup") is the
     speaker correcting the thing: it is read as "i mean"."""
     out: list[str] = []
-    tokens = binned(gone_asked(tokens))
+    tokens = binned(gone_asked(contracted(tokens)))
     for i, token in enumerate(tokens):
         if token in HESITATIONS:
             nxt = tokens[i + 1] if i + 1 < len(tokens) else ""

@@ -3,7 +3,8 @@ command they mean (used by :class:`knic.language.reader.Reader`): the verb said 
 where the speaker themself goes said before the request ("i go to bed now, switch off the lamp"), a room told
 by what is in it ("go to the room where is the bed"), "give it me", "you" before the verb after the thing
 ("toolbox you take from shelf"), a place said before the thing there ("on my desk is calculator") and a thing
-said before the verb that puts it ("the dumbbells put on the weights bench and the boots on the rack")."""
+said before the verb that puts it ("the dumbbells put on the weights bench and the boots on the rack"), and
+"on" or "off" said as a verb after "and" ("switch off the office light and on the desk lamp")."""
 
 from __future__ import annotations
 
@@ -14,10 +15,33 @@ from knic.language.vocabulary import Vocabulary
 
 def learners_read(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
     """The chunks with the orders of this module put as a command says them."""
-    said = subject_dropped(appositions_dropped(helped_to(chunks), vocabulary))
+    said = subject_dropped(appositions_dropped(helped_to(state_as_verb(chunks, vocabulary)), vocabulary))
     said = gapped_given(out_the(carried_in(said, vocabulary), vocabulary), vocabulary)
     said = verb_last_moved(own_going_dropped(own_doing_dropped(room_told(it_me(said), vocabulary))))
     return object_first(place_first(said, vocabulary), vocabulary)
+
+
+def state_as_verb(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
+    """ "switch off the office light and on the desk lamp" (Indian English says "on the light", "off the
+    fan"): "on" or "off" right after "and" and before a device, once a verb was said, is that verb again with
+    this state ("and switch on the desk lamp"), not the earlier device's state."""
+    out: list[Chunk] = []
+    verb: Chunk | None = None
+    for i, chunk in enumerate(chunks):
+        out.append(chunk)
+        if chunk.kind == "verb":
+            verb = chunk
+        thing = i + 2 + (i + 2 < len(chunks) and chunks[i + 2].kind == "det")
+        if (
+            verb is not None
+            and chunk.kind == "join"
+            and thing < len(chunks)
+            and chunks[i + 1].kind == "prep"
+            and chunks[i + 1].state in ("on", "off")
+            and _is(chunks[thing], vocabulary, "device")
+        ):
+            out.append(verb)
+    return out
 
 
 #: what says where a thing is after the place said first ("on my desk is calculator")

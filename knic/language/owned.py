@@ -2,14 +2,16 @@
 
 * Where the speaker has a room named after them ("rhys_bedroom"), "my bed" is the bed in that room, when the
   world has several beds and one of them is there ("hoodie from my bed": rhys's single bed, not the double bed
-  or the camp bed). The world names no owners of furniture; a person's room is the one sign of whose a piece
-  of it is. So too for a device ("open my blind", "my room light off": the one in that room; "my big
-  light": the big light there), and "my room" or "my bedroom" is that room. "His desk", "her room" are so
-  of the person named last before them ("is finn's laptop on his desk": finn's desk), and "mei's lamp",
-  "sol's blind" of the person named; "go to finn's" is to finn's room.
-* Where a thing's name holds a person's name ("kerry_keys", "maisie_lunchbox"), "my keys" said by kerry,
-  "kerry's keys", "kerrys keys" (typed without the apostrophe) and "her keys" once kerry was named are that
-  thing: the world names its owner. Said by someone who owns none of them, "my keys" still asks which.
+  or the camp bed). A person's room is the usual sign of whose a piece of furniture is. So too for a device
+  ("open my blind", "my room light off": the one in that room; "my big light": the big light there), and "my
+  room" or "my bedroom" is that room; with no room named after them, the room of the furniture named after
+  them ("joy_bed": "my bedroom" said by joy is the room her bed stands in). "His desk", "her room" are so of
+  the person named last before them ("is finn's laptop on his desk": finn's desk), and "mei's lamp", "sol's
+  blind" of the person named; "go to finn's" is to finn's room.
+* Where a thing's or a piece of furniture's name holds a person's name ("kerry_keys", "maisie_lunchbox",
+  "joy_bed"), "my keys" (or "my bed") said by kerry, "kerry's keys", "kerrys keys" (typed without the
+  apostrophe) and "her keys" once kerry was named are that thing: the world names its owner. Said by someone
+  who owns none of them, "my keys" still asks which.
 * A person's name with an "s" and no apostrophe before a word ("get tylers basketball") is said as the
   owner ("tyler's"), not as the one to give it to.
 * Things given to several people ("give tyler and maisie the lunchboxes", "... their lunchboxes") where each
@@ -44,7 +46,17 @@ def own_room(vocabulary: Vocabulary, speaker: str) -> str | None:
         for symbol, kind in vocabulary.instances.items()
         if vocabulary.is_subtype(kind, "room") and contains(symbol.split("_"), said) and symbol != speaker
     ]
-    return rooms[0] if len(rooms) == 1 else None
+    if rooms:
+        return rooms[0] if len(rooms) == 1 else None
+    # none named after them: the room of the furniture that is ("joy_bed" in the annexe bedroom)
+    theirs = {
+        room
+        for symbol, kind in vocabulary.instances.items()
+        if vocabulary.is_subtype(kind, "furniture") and contains(symbol.split("_"), said)
+        for room in vocabulary.locations.get(symbol, ())
+        if vocabulary.is_subtype(vocabulary.instances.get(room, ""), "room")
+    }
+    return theirs.pop() if len(theirs) == 1 else None
 
 
 def owned_read(text: str, vocabulary: Vocabulary, speaker: str) -> str:
@@ -125,7 +137,7 @@ def _owned(vocabulary: Vocabulary) -> tuple[tuple[str, ...], dict[tuple[str, str
     )
     owned: dict[tuple[str, str], str] = {}
     for term in vocabulary.terms:
-        if not vocabulary.is_subtype(term.type, "item"):
+        if not (vocabulary.is_subtype(term.type, "item") or vocabulary.is_subtype(term.type, "furniture")):
             continue
         words = term.phrase.split()
         for person in people:

@@ -24,6 +24,7 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 
 from knic.language.chunks import Chunk
+from knic.language.tidy import unplaced
 
 #: a past or perfect "be", "have" or "keep" that says what something was or did
 _PAST = (("has", "been"), ("have", "been"), ("had", "been"), ("was",), ("were",), ("kept",), ("used", "to"))
@@ -54,6 +55,9 @@ _TALK = frozenset({"unknown", "det", "prep", "join", "pronoun", "noun", "owner"}
 def refused(segments: list[list[str]], chunks: Callable[[Sequence[str]], list[Chunk]]) -> str | None:
     """Why a command of remarks, or one asking to set an alarm, is refused (see the module docstring); else
     None."""
+    lacking = told_there(segments, chunks)
+    if lacking:  # "there's a parcel at the door, can you get it": the world has no parcel
+        return f"there is no '{lacking}' here: this world has nothing called that"
     stated = remark(segments, chunks)
     if stated:
         return f"'{stated}' says how something is or was: no request, no action for me"
@@ -64,6 +68,23 @@ def refused(segments: list[list[str]], chunks: Callable[[Sequence[str]], list[Ch
     timed = (undoable(segments) or "").removesuffix("s")
     article = "an" if timed[:1] in ("a", "e", "i", "o", "u") else "a"
     return f"setting {article} {timed} is no action for me" if timed else None
+
+
+def told_there(segments: list[list[str]], chunks: Callable[[Sequence[str]], list[Chunk]]) -> str | None:
+    """The word for a thing said to be there ("there is a parcel at the door", "there's a spider in the bath")
+    that names nothing of the world, when the command then acts on "it" or "them" and names no other thing
+    but places; else None."""
+    words = [t for segment in segments for t in segment]
+    said = chunks(words)
+    for i, chunk in enumerate(said[:-2]):
+        opens = chunk.text == "there's" or (chunk.text == "there" and said[i + 1].text in ("is", "are"))
+        at = i + 1 + (chunk.text == "there")
+        if not opens or at + 1 >= len(said) or said[at].kind != "det" or said[at + 1].kind != "unknown":
+            continue
+        rest = said[at + 2 :]
+        if any(c.kind == "pronoun" for c in rest) and not unplaced(said):  # places may be said
+            return said[at + 1].text
+    return None
 
 
 #: what takes a request back when said last in a sentence of its own, after words of repair

@@ -51,6 +51,15 @@ _REASONS = (
     ["since"],
     ["so", "that"],
     *([w, s] for w in ("as", "so") for s in ("i", "we", "it", "he", "she", "they", "i'm", "i've", "it's")),
+    # what the speaker has to do themself, said after the request ("..., gotta ask priya something", "where
+    # is bronte? i must give her the sun hat", "switch on the geyser, i want to bath")
+    ["got", "to"],
+    ["i've", "got", "to"],
+    ["i", "have", "to"],
+    ["i", "must"],
+    ["i", "need", "to"],
+    ["i", "want", "to"],
+    ["we", "have", "to"],
 )
 
 

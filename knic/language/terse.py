@@ -198,11 +198,12 @@ _SUBJECTS = frozenset({"it", "he", "she"})
 def third_person_read(tokens: list[str], chunker: Chunker) -> list[str]:
     """Verbs said of the robot in the third person, as task descriptions say them ("the robot goes to the
     bedroom, then it finds the glasses", "picks up the apple and carries it to tracy"): read as the verb;
-    "it", "he" or "she" right before such a verb is its subject and dropped. Words the reader knows stay."""
+    "it", "he" or "she" right before such a verb is its subject and dropped. Words the reader knows stay, and
+    so does a comparison's verb ("as bright as it goes")."""
     out: list[str] = []
     for token in tokens:
         base = _verb_of(token, chunker) if len(token) > 3 and token.endswith("s") else None
-        if base is None:
+        if base is None or (out[-2:-1] == ["as"] and out[-1] in _SUBJECTS):  # "as bright as it goes"
             out.append(token)
             continue
         if out and out[-1] in _SUBJECTS:

@@ -1,0 +1,61 @@
+"""Words a dictation app or a careful speaker writes out or mishears, put back as said plainly (used by
+:func:`knic.language.household.words_tidied`, one stretch of a command at a time):
+
+* "it is" opening a stretch, before no article ("switch on the fan, it is very hot"): "it's", a
+  remark about the weather or the room, not "it" for a thing said before ("is it on the table" stays);
+* "their is", "their are" (a homophone): "there is", "there are";
+* "were" before a word in "-ing" where no one it could be said of comes before it ("switch the garden lights
+  on were having a barbecue", "were going out"): "we're", the speaker's own doing;
+* "still" after a thing and before where it is ("is the lasagne still in the oven?"): dropped, the question is
+  where the thing is; "the light is still on" keeps it (a complaint);
+* what is waited for ("go to the hallway and wait for the postman", "... wait for mark there"): dropped up to
+  the next "and" or "then", the robot waits where it went ("wait for me" is a verb of its own and stays).
+"""
+
+from __future__ import annotations
+
+#: what may stand before "were" said for "we're": the end of a request, not a thing it is said of
+_BEFORE_WE_RE = frozenset(
+    {"on", "off", "up", "down", "open", "closed", "please", "now", "too", "as", "because"}
+)
+#: where a thing is said to be, after "still"
+_PLACES = frozenset({"in", "on", "at", "inside", "under", "by", "next"})
+#: what "still" follows when it says how something is ("is still on"), not where a thing is
+_BEING = frozenset({"is", "are", "was", "were", "it's", "they're", "it", "they"})
+#: articles and determiners: "it is a ..." names what it is
+_NAMING = frozenset({"a", "an", "the", "my", "your", "this", "that", "in", "on", "at"})
+
+
+def contracted(tokens: list[str]) -> list[str]:
+    """``tokens`` (one stretch of a command, lower case) with the statements of the module docstring said as
+    contractions."""
+    out: list[str] = []
+    i = 0
+    while i < len(tokens):
+        token = tokens[i]
+        nxt = tokens[i + 1] if i + 1 < len(tokens) else ""
+        after = tokens[i + 2] if i + 2 < len(tokens) else ""
+        if not out and token == "it" and nxt == "is" and after and after not in _NAMING:
+            out.append("it's")
+            i += 2
+            continue
+        if token == "for" and out[-1:] == ["wait"] and nxt != "me":
+            while i < len(tokens) and tokens[i] not in ("and", "then", "there"):
+                i += 1
+            continue
+        if token == "their" and nxt in ("is", "are"):
+            out.append("there")
+        elif (
+            token == "still"
+            and out
+            and out[-1] not in _BEING
+            and nxt in _PLACES
+            and after in ("the", "my", "a")
+        ):
+            pass
+        elif token == "were" and nxt.endswith("ing") and (not out or out[-1] in _BEFORE_WE_RE):
+            out.append("we're")
+        else:
+            out.append(token)
+        i += 1
+    return out
