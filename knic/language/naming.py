@@ -97,17 +97,23 @@ def _canonical(words: Sequence[str]) -> str:
     out: list[str] = []
     i = 0
     while i < len(words):
-        found = next(((m, first) for m, first in sets if list(words[i : i + len(m)]) == m), None)
+        starting = sets.get(words[i], ())
+        found = next(((m, first) for m, first in starting if list(words[i : i + len(m)]) == m), None)
         out += found[1] if found else [words[i]]
         i += len(found[0]) if found else 1
     return " ".join(out)
 
 
 @lru_cache(maxsize=1)
-def _synonym_sets() -> tuple[tuple[list[str], list[str]], ...]:
-    """(a synonym's words, the first of its set's words), the longest synonyms first."""
+def _synonym_sets() -> dict[str, tuple[tuple[list[str], list[str]], ...]]:
+    """A synonym's first word -> (the synonym's words, the first of its set's words), the longest synonyms
+    first."""
     pairs = [(m.split(), group[0].split()) for group in english_synonyms() for m in group]
-    return tuple(sorted(pairs, key=lambda pair: -len(pair[0])))
+    by_first: dict[str, list[tuple[list[str], list[str]]]] = {}
+    for pair in sorted(pairs, key=lambda pair: -len(pair[0])):
+        if pair[0]:
+            by_first.setdefault(pair[0][0], []).append(pair)
+    return {first: tuple(found) for first, found in by_first.items()}
 
 
 @lru_cache(maxsize=16)
