@@ -160,6 +160,11 @@ class Speller:
         self._english = english
         self._names = frozenset(names)
         self._joined = {n.replace(" ", ""): n for n in self._names if " " in n}
+        #: the pairs of words said one after the other in names; the first words of two-word names by the last
+        self._pairs = {pair for n in self._names for pair in zip(n.split(), n.split()[1:], strict=False)}
+        self._firsts: dict[str, set[str]] = {}
+        for first, _, last in (n.partition(" ") for n in self._names):
+            self._firsts.setdefault(last, set()).add(first)
         self._by_length: dict[int, list[str]] = {}
         for word in self._known:
             self._by_length.setdefault(len(word), []).append(word)
@@ -209,15 +214,14 @@ class Speller:
         mill), where ``word`` and ``after`` are no part of a name together: the name's last word tells what
         was meant (a recogniser's near miss, or a typo of a known word). Not for a person's name or a short
         word."""
-        said = f" {word} {after}"
         if len(word) < _SHORT + 1 or word in self._people or after not in self._name_words:
             return None
-        if any(said in f" {name}" for name in self._names):  # "desk lamp" of the attic desk lamp
+        if (word, after) in self._pairs:  # "desk lamp" of the attic desk lamp
             return None
         near = {
             first
-            for first, _, last in (name.partition(" ") for name in self._names)
-            if last == after and first != word and first[:1] == word[:1] and distance(first, word) <= 2
+            for first in self._firsts.get(after, ())
+            if first != word and first[:1] == word[:1] and distance(first, word) <= 2
         }
         return near.pop() if len(near) == 1 else None
 
