@@ -9,7 +9,9 @@
 * "still" after a thing and before where it is ("is the lasagne still in the oven?"): dropped, the question is
   where the thing is; "the light is still on" keeps it (a complaint);
 * what is waited for ("go to the hallway and wait for the postman", "... wait for mark there"): dropped up to
-  the next "and" or "then", the robot waits where it went ("wait for me" is a verb of its own and stays).
+  the next "and" or "then", the robot waits where it went ("wait for me" is a verb of its own and stays);
+* "both" after "them" ("the tongs and the sun cream, bring them both to the kitchen"), "all" there before
+  where they go ("put them all on the table"), and "both of them": "them".
 """
 
 from __future__ import annotations
@@ -18,6 +20,8 @@ from __future__ import annotations
 _BEFORE_WE_RE = frozenset(
     {"on", "off", "up", "down", "open", "closed", "please", "now", "too", "as", "because"}
 )
+#: where things go, after "them all"
+_GOING = frozenset({"to", "on", "in", "into", "onto", "back", "away", ""})
 #: where a thing is said to be, after "still"
 _PLACES = frozenset({"in", "on", "at", "inside", "under", "by", "next"})
 #: what "still" follows when it says how something is ("is still on"), not where a thing is
@@ -42,6 +46,12 @@ def contracted(tokens: list[str]) -> list[str]:
         if token == "for" and out[-1:] == ["wait"] and nxt != "me":
             while i < len(tokens) and tokens[i] not in ("and", "then", "there"):
                 i += 1
+            continue
+        if out[-1:] in (["them"], ["em"]) and (token == "both" or (token == "all" and nxt in _GOING)):
+            i += 1
+            continue
+        if token == "both" and nxt == "of" and after in ("them", "em"):
+            i += 2
             continue
         if token == "their" and nxt in ("is", "are"):
             out.append("there")

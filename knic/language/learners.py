@@ -4,7 +4,8 @@ where the speaker themself goes said before the request ("i go to bed now, switc
 by what is in it ("go to the room where is the bed"), "give it me", "you" before the verb after the thing
 ("toolbox you take from shelf"), a place said before the thing there ("on my desk is calculator") and a thing
 said before the verb that puts it ("the dumbbells put on the weights bench and the boots on the rack"), and
-"on" or "off" said as a verb after "and" ("switch off the office light and on the desk lamp")."""
+"on" or "off" said as a verb after "and" ("switch off the office light and on the desk lamp"), where from
+said first ("from the kitchen island the fruit bowl bring to my room") and a thing thrown to a person."""
 
 from __future__ import annotations
 
@@ -15,7 +16,8 @@ from knic.language.vocabulary import Vocabulary
 
 def learners_read(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
     """The chunks with the orders of this module put as a command says them."""
-    said = subject_dropped(appositions_dropped(helped_to(state_as_verb(chunks, vocabulary)), vocabulary))
+    said = source_first(thrown_to(state_as_verb(chunks, vocabulary), vocabulary), vocabulary)
+    said = subject_dropped(appositions_dropped(helped_to(said), vocabulary))
     said = gapped_given(out_the(carried_in(said, vocabulary), vocabulary), vocabulary)
     said = verb_last_moved(own_going_dropped(own_doing_dropped(room_told(it_me(said), vocabulary))))
     return object_first(place_first(said, vocabulary), vocabulary)
@@ -41,6 +43,42 @@ def state_as_verb(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
             and _is(chunks[thing], vocabulary, "device")
         ):
             out.append(verb)
+    return out
+
+
+def source_first(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
+    """ "from the kitchen island the fruit bowl bring to my room" (a German speaker's order: where from, what,
+    then the verb): the verb and the thing first, then where from, then the rest as said."""
+    if len(chunks) < 4 or chunks[0].kind != "prep" or chunks[0].text != "from":
+        return chunks
+    place = 1 + (chunks[1].kind == "det")
+    thing = place + 1 + (place + 1 < len(chunks) and chunks[place + 1].kind == "det")
+    verb = thing + 1
+    if verb >= len(chunks) or chunks[verb].kind != "verb" or chunks[verb].beneficiary == "subject":
+        return chunks
+    if not (_is(chunks[place], vocabulary, "room") or _is(chunks[place], vocabulary, "furniture")):
+        return chunks
+    if not _is(chunks[thing], vocabulary, "item"):
+        return chunks
+    me = verb + 1 + (verb + 1 < len(chunks) and chunks[verb + 1].kind == "me")  # "... bring me"
+    return [*chunks[verb:me], *chunks[place + 1 : verb], *chunks[: place + 1], *chunks[me:]]
+
+
+#: verbs of throwing: a thing thrown to a person is given to them
+_THROWN = frozenset({"throw", "toss", "chuck", "lob", "bung"})
+
+
+def thrown_to(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
+    """ "chuck the football back to arjun", "toss the keys to mark": a thing thrown "to" a person (not to a
+    place) is given to them, as "chuck me the remote" is to the speaker."""
+    out = list(chunks)
+    for i, chunk in enumerate(chunks):
+        if chunk.kind != "verb" or chunk.text not in _THROWN:
+            continue
+        end = next((k for k in range(i + 1, len(chunks)) if chunks[k].kind in ("verb", "join")), len(chunks))
+        to = [k for k in range(i + 1, end - 1) if chunks[k].kind == "prep" and chunks[k].text == "to"]
+        if to and _is(chunks[to[-1] + 1], vocabulary, "person"):
+            out[i] = Chunk("verb", "give", frames=("BRINGING",))
     return out
 
 

@@ -146,6 +146,8 @@ def _two_sides(words: list[str], phrases: dict[str, Term]) -> list[str]:
         second, noun = words[at], _singular(words[at + 1], phrases, words[at])
         if first in phrases or f"{second} {noun}" not in phrases or f"{first} {noun}" not in phrases:
             continue
+        if first == second:  # "my laptop and the laptop charger": a thing, then another named after it
+            continue
         return [*words[:i], noun, "and", *words[i + 1 : at], second, noun, *words[at + 2 :]]
     return words
 

@@ -27,7 +27,15 @@ got wrong, each tried in the student house of people23 as well:
   for mei there") is dropped: the robot waits where it went (``knic.language.contracted``);
 * what the speaker has to do, said after the request ("..., gotta ask Priya something", "where is Bronte? I
   must give her the sun hat", "switch on the geyser please, I want to bath") is a reason: it asks nothing
-  more, and a thing the world lacks in the request is named (``knic.language.sentences``).
+  more, and a thing the world lacks in the request is named (``knic.language.sentences``);
+* a thing thrown ("chuck", "toss", "throw", "lob", "bung") to a person is given to them ("chuck the football
+  back to Arjun"); thrown to a place it is still put there (``knic.language.learners``);
+* "them both", "both of them", "them all" before where they go, are "them" (``knic.language.contracted``);
+* where from said first, then the thing, then the verb ("from the kitchen island the fruit bowl bring to my
+  room", a German speaker's order) is read as "bring the fruit bowl from the kitchen island to my room"
+  (``knic.language.learners``);
+* "my laptop and the laptop charger": a thing and then another named after it, not "the laptop charger and
+  the laptop charger" (two sides of one noun, ``knic.language.selecting``).
 """
 
 from __future__ import annotations
@@ -295,3 +303,123 @@ def test_what_the_speaker_has_to_do_after_a_request_asks_nothing_more(
 def test_a_missing_thing_before_the_speakers_own_wish_is_named(house: Vocabulary) -> None:
     result = understand("Switch on the geyser please, I want to bath", house, speaker="joy")
     assert not result.accepted and "geyser" in result.reason, result.reason
+
+
+@pytest.mark.parametrize(
+    ("world", "text", "frames"),
+    [
+        (
+            HOUSE,
+            "Chuck the football back to Arjun",
+            [{"frame": "BRINGING", "theme": "football", "beneficiary": "arjun"}],
+        ),
+        (
+            STUDENTS,
+            "chuck the frisbee to jas",
+            [{"frame": "BRINGING", "theme": "frisbee", "beneficiary": "jas"}],
+        ),
+        (
+            STUDENTS,
+            "toss the tv remote back to mei",
+            [{"frame": "BRINGING", "theme": "tv_remote", "beneficiary": "mei"}],
+        ),
+        (
+            STUDENTS,
+            "throw the frisbee to the garden",
+            [{"frame": "PLACING", "theme": "frisbee", "goal": "garden"}],
+        ),
+    ],
+)
+def test_a_thing_thrown_to_a_person_is_given(world: str, text: str, frames: list[dict[str, str]]) -> None:
+    assert _read(world, text) == frames
+
+
+@pytest.mark.parametrize(
+    ("world", "text", "frames"),
+    [
+        (
+            HOUSE,
+            "The tongs and the sun cream, bring them both to the kitchen",
+            [
+                {"frame": "BRINGING", "theme": "tongs", "goal": "kitchen"},
+                {"frame": "BRINGING", "theme": "sun_cream", "goal": "kitchen"},
+            ],
+        ),
+        (
+            STUDENTS,
+            "the headphones and the guitar, take both of them to the lounge",
+            [
+                {"frame": "BRINGING", "theme": "headphones", "goal": "lounge"},
+                {"frame": "BRINGING", "theme": "guitar", "goal": "lounge"},
+            ],
+        ),
+        (
+            STUDENTS,
+            "get the eggs and the hummus and put them all on the worktop",
+            [
+                {"frame": "TAKING", "theme": "eggs"},
+                {"frame": "TAKING", "theme": "hummus"},
+                {"frame": "PLACING", "theme": "eggs", "goal": "worktop"},
+                {"frame": "PLACING", "theme": "hummus", "goal": "worktop"},
+            ],
+        ),
+    ],
+)
+def test_them_both(world: str, text: str, frames: list[dict[str, str]]) -> None:
+    assert _read(world, text) == frames
+
+
+@pytest.mark.parametrize(
+    ("world", "speaker", "text", "frames"),
+    [
+        (
+            HOUSE,
+            "jonas",
+            "From the kitchen island the fruit bowl bring to my room",
+            [{"frame": "BRINGING", "theme": "fruit_bowl", "source": "kitchen_island", "goal": "jonas_room"}],
+        ),
+        (
+            HOUSE,
+            "jonas",
+            "from the fridge the whole milk bring me please",
+            [{"frame": "BRINGING", "theme": "whole_milk", "source": "fridge", "beneficiary": "me"}],
+        ),
+        (
+            STUDENTS,
+            "tomasz",
+            "from the fridge the eggs bring to the kitchen table",
+            [{"frame": "BRINGING", "theme": "eggs", "source": "fridge", "goal": "kitchen_table"}],
+        ),
+    ],
+)
+def test_where_from_said_first(world: str, speaker: str, text: str, frames: list[dict[str, str]]) -> None:
+    assert frames_read(_world(world), text, speaker) == frames
+
+
+@pytest.mark.parametrize(
+    ("world", "speaker", "text", "frames"),
+    [
+        (
+            HOUSE,
+            "jonas",
+            "Bring my laptop and the laptop charger to the living room",
+            [
+                {"frame": "BRINGING", "theme": "jonas_laptop", "goal": "living_room"},
+                {"frame": "BRINGING", "theme": "laptop_charger", "goal": "living_room"},
+            ],
+        ),
+        (
+            STUDENTS,
+            "finn",
+            "bring my laptop and the laptop charger to the lounge",
+            [
+                {"frame": "BRINGING", "theme": "finn_laptop", "goal": "lounge"},
+                {"frame": "BRINGING", "theme": "laptop_charger", "goal": "lounge"},
+            ],
+        ),
+    ],
+)
+def test_a_thing_and_another_named_after_it(
+    world: str, speaker: str, text: str, frames: list[dict[str, str]]
+) -> None:
+    assert frames_read(_world(world), text, speaker) == frames
