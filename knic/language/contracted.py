@@ -10,6 +10,10 @@
   where the thing is; "the light is still on" keeps it (a complaint);
 * what is waited for ("go to the hallway and wait for the postman", "... wait for mark there"): dropped up to
   the next "and" or "then", the robot waits where it went ("wait for me" is a verb of its own and stays);
+* "over" after "the one" or "the ones" and before "the" ("the blind in the kitchen, the one over the sink"):
+  "above", where it is ("turn on over lights", a mishearing, stays unread);
+* "hear" for "here" after "over", "in", "back", "up", "down" or "right", or last ("bring the red mug over
+  hear"); "can you hear me" stays;
 * "both" after "them" ("the tongs and the sun cream, bring them both to the kitchen"), "all" there before
   where they go ("put them all on the table"), and "both of them": "them".
 """
@@ -20,6 +24,8 @@ from __future__ import annotations
 _BEFORE_WE_RE = frozenset(
     {"on", "off", "up", "down", "open", "closed", "please", "now", "too", "as", "because"}
 )
+#: what "here" follows that "hear" does not ("over here", "back here")
+_HERE_AFTER = (["over"], ["in"], ["back"], ["up"], ["down"], ["right"])
 #: where things go, after "them all"
 _GOING = frozenset({"to", "on", "in", "into", "onto", "back", "away", ""})
 #: where a thing is said to be, after "still"
@@ -55,6 +61,10 @@ def contracted(tokens: list[str]) -> list[str]:
             continue
         if token == "their" and nxt in ("is", "are"):
             out.append("there")
+        elif token == "over" and out[-1:] in (["one"], ["ones"]) and nxt == "the":
+            out.append("above")
+        elif token == "hear" and (not nxt or out[-1:] in _HERE_AFTER):
+            out.append("here")
         elif (
             token == "still"
             and out

@@ -22,7 +22,12 @@ before they are cut into chunks (by :class:`knic.language.reader.Reader`, after
 * "from the coffee table on the tv table": from the one onto the other, not the coffee table that is on the
   tv table (nor the one in a room it is not in);
 * one of two things "whichever" ("the mug or the cup, whichever is closer") or "either ... or": the robot
-  cannot tell which; it asks.
+  cannot tell which; it asks;
+* a size said of a thing where the world names one of its kind small ("mini_fridge" beside "fridge"): "the
+  small fridge" is the mini fridge, "the big fridge" the fridge; where one of its kind is named big ("double
+  bed", "master bedroom") "the big bed", "the big bedroom" is that one;
+* a place said alone before a sentence that says "in there" or "on there" ("the fridge, is the butter in
+  there?"): that place.
 """
 
 from __future__ import annotations
@@ -119,11 +124,64 @@ def described(segments: list[list[str]], vocabulary: Vocabulary) -> list[list[st
         words = _all_but(words, vocabulary, phrases)
         words = _kind(words, vocabulary)
         words = _room_first(_landmark_unknown(words, phrases, heads), vocabulary, phrases)
-        words = _from_onto(words, vocabulary, phrases)
+        words = _sized(_from_onto(words, vocabulary, phrases), phrases)
         if words:
             out.append(words)
     _whichever([w for words in out for w in words], phrases)  # "the mug or the cup, whichever is closer"
-    return _fell_from(out, vocabulary, phrases)
+    return _fell_from(_there_named(out, vocabulary, phrases), vocabulary, phrases)
+
+
+#: words that say a thing is the small one of its kind, in what is said and in the world's names
+_SMALL = frozenset({"small", "little", "mini", "tiny", "compact", "smaller"})
+#: words that say a thing is the big one of its kind
+_BIG = frozenset({"big", "large", "bigger", "larger", "main"})
+#: words of the world's names that say a thing is the big one of its kind ("double bed", "master bedroom")
+_BIG_NAMES = frozenset({"big", "large", "double", "king", "master", "main"})
+
+
+def _sized(words: list[str], phrases: dict[str, Term]) -> list[str]:
+    """ "the small fridge" where the world has a fridge and a mini fridge: the mini fridge (the one whose name
+    says it is small); "the big fridge" there: the fridge (the one whose name does not). Else as said."""
+    out = list(words)
+    for i, word in enumerate(words[:-1]):
+        noun = words[i + 1]
+        if word not in _SMALL | _BIG or f"{word} {noun}" in phrases:
+            continue
+        big = [p for p in phrases if p.endswith(f" {noun}") and p.split()[-2] in _BIG_NAMES]
+        if word in _BIG and len({phrases[p].symbol for p in big}) == 1:  # "the big bed": the double bed
+            out[i] = big[0].rsplit(" ", 1)[0]
+            continue
+        small = [p for p in phrases if p.endswith(f" {noun}") and p.split()[-2] in _SMALL]
+        if len(small) != 1 or noun not in phrases:  # "the big fridge" beside the mini fridge: the fridge
+            continue
+        out[i] = small[0].rsplit(" ", 1)[0] if word in _SMALL else ""
+    return [w for w in out if w]
+
+
+def _there_named(
+    segments: list[list[str]], vocabulary: Vocabulary, phrases: dict[str, Term]
+) -> list[list[str]]:
+    """ "the big fridge, is the butter in there?": a place said alone in a sentence before one that says "in
+    there" (or "on there") is that place; the sentence of it alone is dropped."""
+    out: list[list[str]] = []
+    for segment in segments:
+        said = out[-1] if out else []
+        name = " ".join(said[1:] if said[:1] == ["the"] else said)
+        places = ("room", "furniture")
+        place = phrases.get(name)
+        at = next(
+            (
+                i
+                for i in range(1, len(segment))
+                if segment[i - 1 : i + 1] in (["in", "there"], ["on", "there"])
+            ),
+            0,
+        )
+        if at and place is not None and any(vocabulary.is_subtype(place.type, k) for k in places):
+            out[-1] = [*segment[:at], "the", *name.split(), *segment[at + 1 :]]
+            continue
+        out.append(segment)
+    return out
 
 
 def _said_again(words: list[str], others: bool) -> list[str]:

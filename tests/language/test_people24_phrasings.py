@@ -35,7 +35,15 @@ got wrong, each tried in the student house of people23 as well:
   room", a German speaker's order) is read as "bring the fruit bowl from the kitchen island to my room"
   (``knic.language.learners``);
 * "my laptop and the laptop charger": a thing and then another named after it, not "the laptop charger and
-  the laptop charger" (two sides of one noun, ``knic.language.selecting``).
+  the laptop charger" (two sides of one noun, ``knic.language.selecting``);
+* "above", "below", "underneath", "opposite" say where a thing is ("the blind above the sink";
+  ``commands.yaml``), and so does "over" after "the one" ("..., the one over the sink"; "over" alone stays
+  unknown: "turn on over lights", a recogniser's mishearing, is not read as all the lights); "hear" after
+  "over", "in" or "back", or said last, is "here" (``knic.language.contracted``);
+* a size said where the world names one thing of a kind small ("mini_fridge" beside "fridge"): "the small
+  fridge" is the mini fridge, "the big fridge" the other; where one of a kind is named big ("double bed",
+  "master bedroom", "main bedroom") "the big bed", "the big bedroom" is that one; a place said alone before
+  "is the butter in there?" is where "there" is (``knic.language.selecting``).
 """
 
 from __future__ import annotations
@@ -51,11 +59,12 @@ from .conftest import assert_asked, frames_read, world_of
 
 HOUSE = "tests/fixtures/language/people24/family_house.yaml"
 STUDENTS = "tests/fixtures/language/people23/student_house.yaml"
+TERRACE = "tests/fixtures/language/people22/terraced_house.yaml"
 #: someone of each world to say what is said there
 SPEAKERS = {HOUSE: "mark", STUDENTS: "finn"}
 
 
-@lru_cache(maxsize=2)
+@lru_cache(maxsize=3)
 def _world(file: str) -> Vocabulary:
     return world_of(file)
 
@@ -423,3 +432,81 @@ def test_a_thing_and_another_named_after_it(
     world: str, speaker: str, text: str, frames: list[dict[str, str]]
 ) -> None:
     assert frames_read(_world(world), text, speaker) == frames
+
+
+@pytest.mark.parametrize(
+    ("world", "text", "frames"),
+    [
+        (
+            HOUSE,
+            "Open the blind in the kitchen, the one over the sink",
+            [{"frame": "OPERATING", "device": "kitchen_blind", "state": "open"}],
+        ),
+        (
+            HOUSE,
+            "open the blind above the sink",
+            [{"frame": "OPERATING", "device": "kitchen_blind", "state": "open"}],
+        ),
+        (
+            HOUSE,
+            "Bring the biltong from the small fridge to the patio table",
+            [{"frame": "BRINGING", "theme": "biltong", "source": "mini_fridge", "goal": "patio_table"}],
+        ),
+        (
+            HOUSE,
+            "The big fridge, is the butter in there?",
+            [{"frame": "SEARCHING", "theme": "butter", "ground": "fridge"}],
+        ),
+        (
+            STUDENTS,
+            "the coffee table, is the pizza box on there",
+            [{"frame": "SEARCHING", "theme": "pizza_box", "ground": "coffee_table"}],
+        ),
+        (
+            STUDENTS,
+            "bring the eggs from the big fridge",
+            [{"frame": "BRINGING", "theme": "eggs", "source": "fridge", "beneficiary": "me"}],
+        ),
+        (
+            HOUSE,
+            "Can you bring the red mug over hear",
+            [{"frame": "BRINGING", "theme": "red_mug", "beneficiary": "me"}],
+        ),
+        (
+            STUDENTS,
+            "bring me the guitar over hear",
+            [{"frame": "BRINGING", "theme": "guitar", "beneficiary": "me"}],
+        ),
+    ],
+)
+def test_over_sizes_in_there_and_hear(world: str, text: str, frames: list[dict[str, str]]) -> None:
+    assert _read(world, text) == frames
+
+
+@pytest.mark.parametrize(
+    ("world", "speaker", "text", "frames"),
+    [
+        (
+            HOUSE,
+            "rosa",
+            "Put the blanket on the big bed upstairs",
+            [{"frame": "PLACING", "theme": "blanket", "goal": "double_bed"}],
+        ),
+        (
+            HOUSE,
+            "rosa",
+            "Turn the ceiling light in the big bedroom to twenty",
+            [{"frame": "OPERATING", "device": "master_bedroom_light", "state": "20"}],
+        ),
+        (TERRACE, "kerry", "go to the big bed", [{"frame": "MOTION", "goal": "double_bed"}]),
+        (TERRACE, "kerry", "go to the big bedroom", [{"frame": "MOTION", "goal": "main_bedroom"}]),
+    ],
+)
+def test_the_big_one_is_the_one_named_big(
+    world: str, speaker: str, text: str, frames: list[dict[str, str]]
+) -> None:
+    assert frames_read(_world(world), text, speaker) == frames
+
+
+def test_a_size_no_name_says_still_asks() -> None:
+    assert_asked(_world(TERRACE), "go to the small bed", "bed", "kerry")
