@@ -179,6 +179,9 @@ def test_the_speech_bench_hears_a_set_in_its_own_world(
     # car keys, a newspaper, a teddy bear and a reading lamp: none of them in the apartment, whose words would
     # refuse all four; in the bungalow's own words the four were heard right on the machines measured
     assert figures["in_grammar"] == 4 and figures["frame_argument_accuracy"] >= 0.5
+    assert main([*args, "--fixtures", "tests/fixtures/speech_world_dev2"]) == 0  # said in the student house
+    figures = json.loads(capsys.readouterr().out)["ngram"]  # soy sauce, parcel, rugby ball, kitchen light
+    assert figures["in_grammar"] == 4 and figures["frame_argument_accuracy"] >= 0.5
     gold = json.loads(Path("tests/fixtures/speech_world_dev/gold.json").read_text(encoding="utf-8"))
     gold["world"] = "no_such_world"
     (tmp_path / "gold.json").write_text(json.dumps(gold), encoding="utf-8")
