@@ -5,15 +5,19 @@
   remark about the weather or the room, not "it" for a thing said before ("is it on the table" stays);
 * "their is", "their are" (a homophone): "there is", "there are";
 * "were" before a word in "-ing" where no one it could be said of comes before it ("switch the garden lights
-  on were having a barbecue", "were going out"): "we're", the speaker's own doing;
+  on were having a barbecue", "were going out"), or before what people do ("... in the living room were going
+  to bed"): "we're", the speaker's own doing;
 * "still" after a thing and before where it is ("is the lasagne still in the oven?"): dropped, the question is
   where the thing is; "the light is still on" keeps it (a complaint);
 * what is waited for ("go to the hallway and wait for the postman", "... wait for mark there"): dropped up to
   the next "and" or "then", the robot waits where it went ("wait for me" is a verb of its own and stays);
-* "over" after "the one" or "the ones" and before "the" ("the blind in the kitchen, the one over the sink"):
-  "above", where it is ("turn on over lights", a mishearing, stays unread);
+* "over" after a thing and before "the" ("the blind in the kitchen, the one over the sink", "the light over
+  the sink"): "above", where it is; after a verb of moving or "it" ("hand it over the fence") it stays, and
+  so does "over" before no article ("turn on over lights", a mishearing);
 * "hear" for "here" after "over", "in", "back", "up", "down" or "right", or last ("bring the red mug over
   hear"); "can you hear me" stays;
+* a term of address said last ("bring me my blanket my boy", "..., boet", "..., my dear"): dropped, unless a
+  preposition comes before it ("take it to my boy");
 * "both" after "them" ("the tongs and the sun cream, bring them both to the kitchen"), "all" there before
   where they go ("put them all on the table"), and "both of them": "them".
 """
@@ -24,6 +28,30 @@ from __future__ import annotations
 _BEFORE_WE_RE = frozenset(
     {"on", "off", "up", "down", "open", "closed", "please", "now", "too", "as", "because"}
 )
+#: what "over" follows when it says where something moves, not where a thing is
+_MOVED_OVER = frozenset(
+    {
+        "it",
+        "them",
+        "go",
+        "come",
+        "walk",
+        "run",
+        "jump",
+        "climb",
+        "hand",
+        "pass",
+        "throw",
+        "lean",
+        "bend",
+        "fall",
+    }
+)
+#: terms of address said last, after "my" or alone
+_ADDRESSED = frozenset({"boy", "girl", "dear", "darling", "friend", "lovely", "love", "angel", "sweetheart"})
+_ADDRESSED_ALONE = frozenset({"boet", "bru", "china", "mate", "mein", "lad", "lass", "doll"})
+#: what may come before someone spoken of, not to ("take it to my boy")
+_SPOKEN_OF = frozenset({"to", "for", "with", "from", "by", "of", "near", "give", "find", "and", "is", "are"})
 #: what "here" follows that "hear" does not ("over here", "back here")
 _HERE_AFTER = (["over"], ["in"], ["back"], ["up"], ["down"], ["right"])
 #: where things go, after "them all"
@@ -32,6 +60,8 @@ _GOING = frozenset({"to", "on", "in", "into", "onto", "back", "away", ""})
 _PLACES = frozenset({"in", "on", "at", "inside", "under", "by", "next"})
 #: what "still" follows when it says how something is ("is still on"), not where a thing is
 _BEING = frozenset({"is", "are", "was", "were", "it's", "they're", "it", "they"})
+#: what people do, not things, after "were" ("... in the living room were going to bed")
+_OUR_DOING = frozenset({"going", "having", "heading", "leaving", "watching", "eating", "cooking"})
 #: articles and determiners: "it is a ..." names what it is
 _NAMING = frozenset({"a", "an", "the", "my", "your", "this", "that", "in", "on", "at"})
 
@@ -61,7 +91,7 @@ def contracted(tokens: list[str]) -> list[str]:
             continue
         if token == "their" and nxt in ("is", "are"):
             out.append("there")
-        elif token == "over" and out[-1:] in (["one"], ["ones"]) and nxt == "the":
+        elif token == "over" and out and out[-1] not in _MOVED_OVER and nxt == "the":
             out.append("above")
         elif token == "hear" and (not nxt or out[-1:] in _HERE_AFTER):
             out.append("here")
@@ -73,9 +103,25 @@ def contracted(tokens: list[str]) -> list[str]:
             and after in ("the", "my", "a")
         ):
             pass
-        elif token == "were" and nxt.endswith("ing") and (not out or out[-1] in _BEFORE_WE_RE):
+        elif (
+            token == "were"
+            and nxt.endswith("ing")
+            and (not out or out[-1] in _BEFORE_WE_RE or nxt in _OUR_DOING)
+        ):
             out.append("we're")
         else:
             out.append(token)
         i += 1
-    return out
+    return _unaddressed(out)
+
+
+def _unaddressed(tokens: list[str]) -> list[str]:
+    """``tokens`` without a term of address said last (see the module docstring)."""
+    said = 0
+    if len(tokens) > 2 and tokens[-2] == "my" and tokens[-1] in _ADDRESSED:
+        said = 2
+    elif len(tokens) > 1 and tokens[-1] in _ADDRESSED_ALONE:
+        said = 1
+    if said and tokens[-said - 1] not in _SPOKEN_OF:
+        return tokens[:-said]
+    return tokens

@@ -29,21 +29,26 @@ def state_as_verb(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
     this state ("and switch on the desk lamp"), not the earlier device's state."""
     out: list[Chunk] = []
     verb: Chunk | None = None
+    if len(chunks) > 2 and _state_before_device(chunks, 0, vocabulary):  # "off the kitchen light and on ..."
+        verb = Chunk("verb", "switch", frames=("OPERATING",))
     for i, chunk in enumerate(chunks):
         out.append(chunk)
         if chunk.kind == "verb":
             verb = chunk
-        thing = i + 2 + (i + 2 < len(chunks) and chunks[i + 2].kind == "det")
-        if (
-            verb is not None
-            and chunk.kind == "join"
-            and thing < len(chunks)
-            and chunks[i + 1].kind == "prep"
-            and chunks[i + 1].state in ("on", "off")
-            and _is(chunks[thing], vocabulary, "device")
-        ):
+        if verb is not None and chunk.kind == "join" and _state_before_device(chunks, i + 1, vocabulary):
             out.append(verb)
     return out
+
+
+def _state_before_device(chunks: list[Chunk], at: int, vocabulary: Vocabulary) -> bool:
+    """Whether "on" or "off" at ``at`` comes right before a device (after a determiner, if any)."""
+    thing = at + 1 + (at + 1 < len(chunks) and chunks[at + 1].kind == "det")
+    return (
+        thing < len(chunks)
+        and chunks[at].kind == "prep"
+        and chunks[at].state in ("on", "off")
+        and _is(chunks[thing], vocabulary, "device")
+    )
 
 
 def source_first(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
@@ -287,7 +292,7 @@ def _is_room(vocabulary: Vocabulary, symbol: str) -> bool:
 
 
 #: what may stand before a verb said last ("to the bathroom go", "the candle on the dining table put it")
-_BEFORE_LAST_VERB = frozenset({"det", "entity", "prep", "me", "quant"})
+_BEFORE_LAST_VERB = frozenset({"det", "entity", "prep", "me", "quant", "owner"})
 #: what may follow a verb said last, with it: how a device is set ("the blinds open halfway")
 _SETTINGS = frozenset({"state", "level", "number", "percent", "vague"})
 

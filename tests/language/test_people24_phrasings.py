@@ -43,7 +43,13 @@ got wrong, each tried in the student house of people23 as well:
 * a size said where the world names one thing of a kind small ("mini_fridge" beside "fridge"): "the small
   fridge" is the mini fridge, "the big fridge" the other; where one of a kind is named big ("double bed",
   "master bedroom", "main bedroom") "the big bed", "the big bedroom" is that one; a place said alone before
-  "is the butter in there?" is where "there" is (``knic.language.selecting``).
+  "is the butter in there?" is where "there" is (``knic.language.selecting``);
+* a person's thing said before a learner's "where it is" ("Arjun's school bag, where it is?") is searched for,
+  not the person too; "off the kitchen light and on the pendant lights" with no verb at all switches each as
+  said (``knic.language.learners``); "were going to bed" after a request is "we're"; "bung" and "lob" put or
+  throw; a "coldie", "stubby" or "tinnie" is a beer; a term of address said last ("my boy", "my dear",
+  "boet") is dropped, unless said after "to" ("take it to my boy"); "over the" after a thing is "above the"
+  ("the light over the sink"); "over" before no article stays unknown (``knic.language.contracted``).
 """
 
 from __future__ import annotations
@@ -510,3 +516,84 @@ def test_the_big_one_is_the_one_named_big(
 
 def test_a_size_no_name_says_still_asks() -> None:
     assert_asked(_world(TERRACE), "go to the small bed", "bed", "kerry")
+
+
+@pytest.mark.parametrize(
+    ("world", "speaker", "text", "frames"),
+    [
+        (HOUSE, "priya", "Arjun's school bag, where it is?", [{"frame": "SEARCHING", "theme": "school_bag"}]),
+        (STUDENTS, "sol", "finn's laptop, where it is?", [{"frame": "SEARCHING", "theme": "finn_laptop"}]),
+        (
+            HOUSE,
+            "priya",
+            "Please off the kitchen light and on the pendant lights",
+            [
+                {"frame": "OPERATING", "device": "kitchen_light", "state": "off"},
+                {"frame": "OPERATING", "device": "pendant_lights", "state": "on"},
+            ],
+        ),
+        (
+            STUDENTS,
+            "mei",
+            "on the landing light and off the hallway light",
+            [
+                {"frame": "OPERATING", "device": "landing_light", "state": "on"},
+                {"frame": "OPERATING", "device": "hallway_light", "state": "off"},
+            ],
+        ),
+        (
+            HOUSE,
+            "mark",
+            "Turn off the lights in the living room were going to bed",
+            [
+                {"frame": "OPERATING", "device": "living_room_light", "state": "off"},
+                {"frame": "OPERATING", "device": "reading_lamp", "state": "off"},
+            ],
+        ),
+        (
+            HOUSE,
+            "bronte",
+            "Bung the tongs in the sink",
+            [{"frame": "PLACING", "theme": "tongs", "goal": "sink"}],
+        ),
+        (
+            STUDENTS,
+            "jas",
+            "lob the rugby ball to finn",
+            [{"frame": "BRINGING", "theme": "rugby_ball", "beneficiary": "finn"}],
+        ),
+        (
+            HOUSE,
+            "bronte",
+            "Can ya grab me a coldie from the fridge",
+            [{"frame": "BRINGING", "theme": "beer", "source": "fridge", "beneficiary": "me"}],
+        ),
+        (
+            HOUSE,
+            "joy",
+            "Ag shame, bring me my blanket my boy",
+            [{"frame": "BRINGING", "theme": "blanket", "beneficiary": "me"}],
+        ),
+        (
+            STUDENTS,
+            "hargreaves",
+            "bring me the post, my dear",
+            [{"frame": "BRINGING", "theme": "post", "beneficiary": "me"}],
+        ),
+        (
+            HOUSE,
+            "rosa",
+            "Turn off the light over the sink",
+            [{"frame": "OPERATING", "device": "kitchen_light", "state": "off"}],
+        ),
+    ],
+)
+def test_more_of_the_six_voices(world: str, speaker: str, text: str, frames: list[dict[str, str]]) -> None:
+    assert frames_read(_world(world), text, speaker) == frames
+
+
+def test_over_before_no_article_and_my_boy_after_to_stay() -> None:
+    result = understand("turn on over lights", _world(HOUSE), speaker="mark")
+    assert not result.accepted
+    result = understand("bring the teapot to my boy", _world(HOUSE), speaker="joy")
+    assert not result.accepted and "boy" in result.reason
