@@ -3,7 +3,9 @@
 
 * "it is" opening a stretch, before no article ("switch on the fan, it is very hot"): "it's", a
   remark about the weather or the room, not "it" for a thing said before ("is it on the table" stays);
-* "their is", "their are" (a homophone): "there is", "there are";
+* "their is", "their are" (a homophone): "there is", "there are"; "were" opening a stretch before "is",
+  "are", "did" or "have" ("were are my car keys"): "where"; "no" after "you" ("do you no where ..."):
+  "know"; "sea" after "you", "can" or "to" ("can you sea if ..."): "see";
 * "were" before a word in "-ing" where no one it could be said of comes before it ("switch the garden lights
   on were having a barbecue", "were going out"), or before what people do ("... in the living room were going
   to bed"): "we're", the speaker's own doing;
@@ -91,6 +93,12 @@ def contracted(tokens: list[str]) -> list[str]:
             continue
         if token == "their" and nxt in ("is", "are"):
             out.append("there")
+        elif token == "were" and not out and nxt in ("is", "are", "did", "have", "has", "do"):
+            out.append("where")
+        elif token == "no" and out[-1:] == ["you"] and nxt in ("where", "if", "whether"):
+            out.append("know")
+        elif token == "sea" and out[-1:] in (["you"], ["can"], ["to"]):
+            out.append("see")
         elif token == "over" and out and out[-1] not in _MOVED_OVER and nxt == "the":
             out.append("above")
         elif token == "hear" and (not nxt or out[-1:] in _HERE_AFTER):

@@ -49,7 +49,9 @@ got wrong, each tried in the student house of people23 as well:
   said (``knic.language.learners``); "were going to bed" after a request is "we're"; "bung" and "lob" put or
   throw; a "coldie", "stubby" or "tinnie" is a beer; a term of address said last ("my boy", "my dear",
   "boet") is dropped, unless said after "to" ("take it to my boy"); "over the" after a thing is "above the"
-  ("the light over the sink"); "over" before no article stays unknown (``knic.language.contracted``).
+  ("the light over the sink"); "over" before no article stays unknown (``knic.language.contracted``);
+* a dictation app's homophones: "were are my car keys" (where), "do you no where" (know), "can you sea if"
+  (see) (``knic.language.contracted``); "form the fridge" (from), "the hole milk" (whole) (``commands.yaml``).
 """
 
 from __future__ import annotations
@@ -597,3 +599,30 @@ def test_over_before_no_article_and_my_boy_after_to_stay() -> None:
     assert not result.accepted
     result = understand("bring the teapot to my boy", _world(HOUSE), speaker="joy")
     assert not result.accepted and "boy" in result.reason
+
+
+@pytest.mark.parametrize(
+    ("world", "text", "frames"),
+    [
+        (HOUSE, "were are my car keys", [{"frame": "SEARCHING", "theme": "car_keys"}]),
+        (STUDENTS, "were is the tv remote", [{"frame": "SEARCHING", "theme": "tv_remote"}]),
+        (HOUSE, "do you no where the wallet is", [{"frame": "SEARCHING", "theme": "wallet"}]),
+        (
+            HOUSE,
+            "bring me the hole milk",
+            [{"frame": "BRINGING", "theme": "whole_milk", "beneficiary": "me"}],
+        ),
+        (
+            HOUSE,
+            "can you sea if arjun is in the garden",
+            [{"frame": "SEARCHING", "theme": "arjun", "ground": "garden"}],
+        ),
+        (
+            STUDENTS,
+            "bring me the eggs form the fridge",
+            [{"frame": "BRINGING", "theme": "eggs", "source": "fridge", "beneficiary": "me"}],
+        ),
+    ],
+)
+def test_a_dictation_apps_homophones(world: str, text: str, frames: list[dict[str, str]]) -> None:
+    assert _read(world, text) == frames
