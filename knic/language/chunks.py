@@ -64,6 +64,11 @@ def _forms(word: str) -> tuple[str, ...]:
     return (word, *([word[:-1], *singulars(word)] if plural else ()))
 
 
+def _own_ends(phrase: str) -> tuple[str, ...]:
+    """The forms of a name's last word, and its last two words when it has three or more."""
+    return (*_forms(phrase.split()[-1]), *([" ".join(phrase.split()[-2:])] if phrase.count(" ") > 1 else []))
+
+
 def past_determiners(chunks: Sequence[Chunk], at: int) -> int:
     """The index of the first chunk from ``at`` that is no determiner (``len(chunks)`` when none is)."""
     while at < len(chunks) and chunks[at].kind == "det":
@@ -91,7 +96,7 @@ class Chunker:
         own_last: dict[str, set[str]] = {}
         for t in vocabulary.terms:
             if not t.given and len(t.phrase.split()) > 1:
-                for form in _forms(t.phrase.split()[-1]):
+                for form in _own_ends(t.phrase):  # "lounge light": the annexe lounge light's own end
                     own_last.setdefault(form, set()).add(t.symbol)
         given = {
             p: ts
@@ -113,7 +118,8 @@ class Chunker:
             variants += [" ".join([*words[:-1], one]) for one in singulars(words[-1])]
             if len(words) > 1:  # "the lamp", and "the desk lamp" for the office desk lamp (not "bedroom
                 # light" for the left bedroom light: a name before the last word narrows it as said)
-                ending = [" ".join(words[-2:])] if len(words) > 2 and words[-2] not in self._full else []
+                end = " ".join(words[-2:])  # kept beside a synonym it is the end of ("lounge light")
+                ending = [end] if len(words) > 2 and (words[-2] not in self._full or end in given) else []
                 variants += [words[-1], *ending]
                 plural_last = words[-1].endswith("s") and not words[-1].endswith("ss")
                 last_endings = _plural_endings(words[-1])  # "lunchboxes" for the lunchboxes of two people
@@ -130,7 +136,7 @@ class Chunker:
         # a one-word compound name ends in what it is ("armchair": a chair, as a "wicker chair" is)
         compounds = {t.symbol: t.phrase for t in vocabulary.terms if not t.given and " " not in t.phrase}
         for variant, terms in self._partial.items():  # "the table": the dining table, not a "bedside table"
-            own = {t.symbol for t in terms if not t.given and variant in _forms(t.phrase.split()[-1])}
+            own = {t.symbol for t in terms if not t.given and variant in _own_ends(t.phrase)}
             own |= {t.symbol for t in terms if own and compounds.get(t.symbol, " ").endswith(variant)}
             if own and any(t.symbol not in own for t in terms):
                 self._partial[variant] = [t for t in terms if t.symbol in own]

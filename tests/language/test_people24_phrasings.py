@@ -51,7 +51,10 @@ got wrong, each tried in the student house of people23 as well:
   "boet") is dropped, unless said after "to" ("take it to my boy"); "over the" after a thing is "above the"
   ("the light over the sink"); "over" before no article stays unknown (``knic.language.contracted``);
 * a dictation app's homophones: "were are my car keys" (where), "do you no where" (know), "can you sea if"
-  (see) (``knic.language.contracted``); "form the fridge" (from), "the hole milk" (whole) (``commands.yaml``).
+  (see) (``knic.language.contracted``); "form the fridge" (from), "the hole milk" (whole) (``commands.yaml``);
+* a lexicon's phrase for one thing that is the end of another thing's own name ("lounge light", a synonym of
+  the living room light, and the end of the "annexe lounge light"): the other thing's, as a thing's own
+  last word already beat a synonym (``knic.language.chunks``).
 """
 
 from __future__ import annotations
@@ -626,3 +629,11 @@ def test_over_before_no_article_and_my_boy_after_to_stay() -> None:
 )
 def test_a_dictation_apps_homophones(world: str, text: str, frames: list[dict[str, str]]) -> None:
     assert _read(world, text) == frames
+
+
+def test_the_end_of_a_things_own_name_beats_a_synonym(house: Vocabulary) -> None:
+    # "lounge" is a lexicon's word for the living room; "lounge light" ends the annexe lounge light's own name
+    assert frames_read(house, "The lounge light, just a little dimmer, to about twenty", "joy") == [
+        {"frame": "OPERATING", "device": "annexe_lounge_light", "state": "20"}
+    ]
+    assert frames_read(house, "go to the living room", "joy") == [{"frame": "MOTION", "goal": "living_room"}]
