@@ -20,6 +20,8 @@
   hear"); "can you hear me" stays;
 * a term of address said last ("bring me my blanket my boy", "..., boet", "..., my dear"): dropped, unless a
   preposition comes before it ("take it to my boy");
+* a level said as a change ("turn the lamp up by 20 percent", "down by 10"): "a bit", a level meant but not
+  said (the reader knows no present level: it asks how far); "halfway between off and full": "halfway";
 * "both" after "them" ("the tongs and the sun cream, bring them both to the kitchen"), "all" there before
   where they go ("put them all on the table"), and "both of them": "them".
 """
@@ -49,6 +51,17 @@ _MOVED_OVER = frozenset(
         "fall",
     }
 )
+#: what says a number is a percentage
+_PERCENT = frozenset({"percent", "%", "per", "pc"})
+_TENS = frozenset(
+    {"five", "ten", "fifteen", "twenty", "thirty", "forty", "fifty", "sixty", "seventy", "eighty"}
+)
+
+
+def _number(word: str) -> bool:
+    return word.isdigit() or word in _TENS
+
+
 #: terms of address said last, after "my" or alone
 _ADDRESSED = frozenset({"boy", "girl", "dear", "darling", "friend", "lovely", "love", "angel", "sweetheart"})
 _ADDRESSED_ALONE = frozenset({"boet", "bru", "china", "mate", "mein", "lad", "lass", "doll"})
@@ -90,6 +103,14 @@ def contracted(tokens: list[str]) -> list[str]:
             continue
         if token == "both" and nxt == "of" and after in ("them", "em"):
             i += 2
+            continue
+        if token == "by" and _number(nxt) and (after in _PERCENT or out[-1:] in (["up"], ["down"])):
+            out += ["a", "bit"]
+            i += (3 + (after == "per")) if after in _PERCENT else 2  # "per cent": one word more
+            continue
+        if token in ("halfway", "midway") and nxt == "between" and "and" in tokens[i:]:
+            out.append(token)
+            i = tokens.index("and", i) + 2
             continue
         if token == "their" and nxt in ("is", "are"):
             out.append("there")

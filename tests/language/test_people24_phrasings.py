@@ -54,7 +54,9 @@ got wrong, each tried in the student house of people23 as well:
   (see) (``knic.language.contracted``); "form the fridge" (from), "the hole milk" (whole) (``commands.yaml``);
 * a lexicon's phrase for one thing that is the end of another thing's own name ("lounge light", a synonym of
   the living room light, and the end of the "annexe lounge light"): the other thing's, as a thing's own
-  last word already beat a synonym (``knic.language.chunks``).
+  last word already beat a synonym (``knic.language.chunks``);
+* a level said as a change ("up by 20 percent", "down by 10") asks how far, not sets 20 or 10; "halfway
+  between off and full" is halfway (``knic.language.contracted``).
 """
 
 from __future__ import annotations
@@ -637,3 +639,24 @@ def test_the_end_of_a_things_own_name_beats_a_synonym(house: Vocabulary) -> None
         {"frame": "OPERATING", "device": "annexe_lounge_light", "state": "20"}
     ]
     assert frames_read(house, "go to the living room", "joy") == [{"frame": "MOTION", "goal": "living_room"}]
+
+
+@pytest.mark.parametrize(
+    ("world", "text", "device"),
+    [
+        (HOUSE, "turn the bedside lamp up by 20 percent", "bedside lamp"),
+        (HOUSE, "turn the bedside lamp up by twenty per cent", "bedside lamp"),
+        (STUDENTS, "turn the floor lamp down by 10", "floor lamp"),
+    ],
+)
+def test_a_level_said_as_a_change_asks_how_far(world: str, text: str, device: str) -> None:
+    assert_asked(_world(world), text, device, SPEAKERS[world])
+
+
+def test_halfway_between_off_and_full_is_halfway(students: Vocabulary) -> None:
+    assert frames_read(students, "turn the floor lamp halfway between off and full", "finn") == [
+        {"frame": "OPERATING", "device": "floor_lamp", "state": "50"}
+    ]
+    assert frames_read(students, "turn the floor lamp to 20 percent", "finn") == [
+        {"frame": "OPERATING", "device": "floor_lamp", "state": "20"}
+    ]
