@@ -49,6 +49,7 @@ _MOVED_OVER = frozenset(
         "lean",
         "bend",
         "fall",
+        "all",
     }
 )
 #: what says a number is a percentage

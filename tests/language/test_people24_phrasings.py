@@ -604,6 +604,8 @@ def test_over_before_no_article_and_my_boy_after_to_stay() -> None:
     assert not result.accepted
     result = understand("bring the teapot to my boy", _world(HOUSE), speaker="joy")
     assert not result.accepted and "boy" in result.reason
+    result = understand("Arjun left his lego all over the floor again", _world(HOUSE), speaker="mark")
+    assert not result.accepted and "all over the floor" in result.reason
 
 
 @pytest.mark.parametrize(
