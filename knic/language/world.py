@@ -85,7 +85,6 @@ def read_vocabulary(
             for atom in section[1:]:
                 if isinstance(atom, list) and atom and isinstance(atom[0], str):
                     predicates[atom[0]] = tuple(_typed(atom[1:]))
-    _check_named_types(Path(domain), types)
     locations: dict[str, list[str]] = {}
     if problem is not None:
         for section in _read_sexp(Path(problem)):
@@ -97,7 +96,9 @@ def read_vocabulary(
                         locations.setdefault(str(atom[1]), []).append(str(atom[2]))
     lexicon_path = Path(lexicon) if lexicon is not None else find_lexicon(domain, problem)
     lexicon_data = Lexicon.load(lexicon_path) if lexicon_path is not None else None
-    return Vocabulary.from_instances(instances, types, lexicon_data, predicates, locations)
+    vocabulary = Vocabulary.from_instances(instances, types, lexicon_data, predicates, locations)
+    _check_named_types(Path(domain), vocabulary)
+    return vocabulary
 
 
 Sexp = str | list["Sexp"]
@@ -106,21 +107,16 @@ Sexp = str | list["Sexp"]
 NAMED_TYPES = ("room", "furniture", "item", "person", "device")
 
 
-def _check_named_types(domain: Path, types: dict[str, str | None]) -> None:
+def _check_named_types(domain: Path, vocabulary: Vocabulary) -> None:
     """Refuse a domain none of whose types a command can name (a domain of its own, with types such as
     ``place`` and ``thing``): every command would be refused, each for a thing that "is not an object".
 
     Raises:
         LanguageError: no type of the domain is, or is below, one of :data:`NAMED_TYPES`.
     """
-    for name in types:
-        seen: set[str] = set()
-        kind: str | None = name
-        while kind is not None and kind not in seen:
-            if kind in NAMED_TYPES:
-                return
-            seen.add(kind)
-            kind = types.get(kind)
+    types = vocabulary.types
+    if any(vocabulary.is_subtype(kind, named) for kind in types for named in NAMED_TYPES):
+        return
     declared = ", ".join(sorted(t for t in types if t != "object")) or "none"
     raise LanguageError(
         f"{domain}: commands name things by the types {', '.join(NAMED_TYPES)} or types below them, "
