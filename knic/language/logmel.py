@@ -40,14 +40,22 @@ def mel_filters(n_mels: int = N_MELS) -> npt.NDArray[np.float32]:
 
 
 def log_mel(samples: npt.NDArray[np.float32]) -> npt.NDArray[np.float32]:
-    """Whisper's log-mel spectrogram of 16 kHz samples in [-1, 1]: ``(N_MELS, len(samples) // HOP)``."""
+    """Whisper's log-mel spectrogram of 16 kHz samples in [-1, 1]: ``(N_MELS, len(samples) // HOP)``.
+
+    The frames of the silence an utterance is padded with (:mod:`knic.language.whisperpass`) are not
+    transformed: all zeros, their bands take the floor value, as a transform would give them (the same
+    features, in about half the time for a command of 2.5 s in a window of 8 s)."""
     import numpy as np
 
     padded = np.pad(samples.astype(np.float32), N_FFT // 2, mode="reflect")
     frames = 1 + (len(padded) - N_FFT) // HOP
-    index = np.arange(N_FFT)[None, :] + HOP * np.arange(frames)[:, None]
+    sounding = np.flatnonzero(padded)
+    # frames from the first whose window starts after the last sample that is not zero are silent
+    needed = min(frames, int(sounding[-1]) // HOP + 1) if len(sounding) else 0
+    index = np.arange(N_FFT)[None, :] + HOP * np.arange(needed)[:, None]
     window = (0.5 - 0.5 * np.cos(2 * np.pi * np.arange(N_FFT) / N_FFT)).astype(np.float32)
-    power = np.abs(np.fft.rfft(padded[index] * window, axis=1)) ** 2
+    power = np.zeros((frames, N_FFT // 2 + 1))
+    power[:needed] = np.abs(np.fft.rfft(padded[index] * window, axis=1)) ** 2
     mel = mel_filters() @ power[:-1].T.astype(np.float32)
     logs = np.log10(np.maximum(mel, 1e-10))
     logs = np.maximum(logs, logs.max() - 8.0)

@@ -23,7 +23,6 @@ from __future__ import annotations
 
 import contextlib
 import json
-import os
 import struct
 import subprocess
 import sys
@@ -52,10 +51,12 @@ if TYPE_CHECKING:
 WINDOW_S = 8.0
 #: tokens the decoder may write after the prompt (a long command is about 30)
 MAX_TOKENS = 60
-#: CPU threads of the server's model: the recogniser waits for Whisper's answer before pocketsphinx decodes
-#: (:func:`settled`), so Whisper has the cores to itself (two threads: 427 ms per dev utterance against 454 ms
-#: with one)
-SERVER_THREADS = max(1, min(2, os.cpu_count() or 1))
+#: CPU threads of the server's model. One: on this project's 2-core machine CTranslate2's int8 kernels ran
+#: slower on two threads than on one (on speech_people2/dev, encoder 40 against 32 ms, beam search 80 against
+#: 51 ms per utterance), and the other core is left to pocketsphinx's passes, which begin while Whisper hears
+#: (:mod:`knic.language.lmspeech`). On the nine spoken dev sets every result was the same, and the time per
+#: utterance 10-20% less than with two (speech_people2/dev 300 -> 251 ms, speech_people3/dev 399 -> 318 ms).
+SERVER_THREADS = 1
 #: Whisper's beam (:meth:`WhisperPass.hear`); its other transcripts are candidates when Whisper is not sure
 #: of its best (:mod:`knic.language.judging`)
 BEAM = 5

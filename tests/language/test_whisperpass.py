@@ -70,6 +70,23 @@ def test_log_mel_of_a_tone_peaks_in_its_band():
     assert weights[1000 * 400 // SAMPLE_RATE] > 0  # the loudest band is one whose filter passes 1 kHz
 
 
+
+def test_log_mel_of_speech_padded_with_silence_is_every_frame_transformed():
+    noise = np.random.default_rng(3).normal(0.0, 0.1, 40_000).astype(np.float32)
+    padded = np.concatenate([noise, np.zeros(88_000, np.float32)])
+    features = log_mel(padded)
+    # every frame transformed, as Whisper's front end does it
+    wide = np.pad(padded, 200, mode="reflect")
+    frames = np.stack([wide[at : at + 400] for at in range(0, len(wide) - 400 + 1, HOP)])
+    window = (0.5 - 0.5 * np.cos(2 * np.pi * np.arange(400) / 400)).astype(np.float32)
+    power = np.abs(np.fft.rfft(frames * window, axis=1)) ** 2
+    logs = np.log10(np.maximum(mel_filters() @ power[:-1].T.astype(np.float32), 1e-10))
+    expected = (np.maximum(logs, logs.max() - 8.0) + 4.0) / 4.0
+    assert features.shape == expected.shape == (N_MELS, len(padded) // HOP)
+    np.testing.assert_allclose(features, expected, atol=1e-6)
+    assert (features[:, -100:] == features.min()).all()  # the silence at the floor
+    assert (log_mel(np.zeros(16_000, np.float32)) == log_mel(np.zeros(16_000, np.float32)).min()).all()
+
 def test_the_prompt_names_people_and_things_but_not_the_robot_or_levels(vocabulary):
     prompt = world_prompt(vocabulary)
     assert prompt.startswith("Granny Annie, Tracy, Jack.")
