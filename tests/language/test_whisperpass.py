@@ -70,7 +70,6 @@ def test_log_mel_of_a_tone_peaks_in_its_band():
     assert weights[1000 * 400 // SAMPLE_RATE] > 0  # the loudest band is one whose filter passes 1 kHz
 
 
-
 def test_log_mel_of_speech_padded_with_silence_is_every_frame_transformed():
     noise = np.random.default_rng(3).normal(0.0, 0.1, 40_000).astype(np.float32)
     padded = np.concatenate([noise, np.zeros(88_000, np.float32)])
@@ -86,6 +85,7 @@ def test_log_mel_of_speech_padded_with_silence_is_every_frame_transformed():
     np.testing.assert_allclose(features, expected, atol=1e-6)
     assert (features[:, -100:] == features.min()).all()  # the silence at the floor
     assert (log_mel(np.zeros(16_000, np.float32)) == log_mel(np.zeros(16_000, np.float32)).min()).all()
+
 
 def test_the_prompt_names_people_and_things_but_not_the_robot_or_levels(vocabulary):
     prompt = world_prompt(vocabulary)
