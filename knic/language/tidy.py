@@ -7,6 +7,7 @@ import re
 from collections.abc import Callable, Collection, Mapping
 
 from knic.language.chunks import Chunk
+from knic.language.decimals import decimals_read
 
 #: "is", "are": after words the world has no name for, what follows is talk, not part of the action
 COPULAS = frozenset({"is", "are", "was", "were"})
@@ -113,8 +114,9 @@ def digits_read(
     :attr:`CommandLanguage.digit_words`), before numbers are spelled out, unless they are a number: what
     follows is counted ("2 apples", "2 of them") or one of ``units`` ("2 percent", "4 %"), the word before is
     one of ``before_numbers`` ("to 2", "at 4"), or nothing follows; typed signs as their words ("3/4": three
-    quarters; :attr:`CommandLanguage.typed_words`)."""
-    tokens = text.split()
+    quarters; :attr:`CommandLanguage.typed_words`); decimals as whole numbers first
+    (:func:`~knic.language.decimals.decimals_read`)."""
+    tokens = decimals_read(text).split()
     for i, token in enumerate(tokens):
         bare = token.strip(".,;:!?")
         if bare in typed:

@@ -48,6 +48,21 @@ def test_a_level_the_world_lacks_goes_to_the_nearest_with_a_note(
     assert result.to_dict()["notes"] == list(result.notes)
 
 
+@pytest.mark.parametrize(
+    ("text", "goal"),
+    [
+        ("set the dimmer to 0.5", "(device_level living_room_dimmer l50)"),  # a share: half
+        ("Put the blinds at 0.75.", "(device_level bedroom_blinds l75)"),
+        ("dim the living room light to 1.0", "(device_level living_room_dimmer l100)"),
+        ("open the blinds to 74.6%", "(device_level bedroom_blinds l75)"),  # not 746, nor 74 then 6
+    ],
+)
+def test_a_decimal_level_is_one_level_not_two_numbers(vocabulary: Vocabulary, text: str, goal: str) -> None:
+    result = understand(text, vocabulary)
+    assert result.accepted, result.reason
+    assert [str(g) for g in result.goals] == [goal]
+
+
 @pytest.mark.parametrize("text", ["come to me", "take the mug to the kitchen and then come back to me"])
 def test_coming_to_the_speaker_asks_where_they_are(vocabulary: Vocabulary, text: str) -> None:
     result = understand(text, vocabulary)

@@ -134,6 +134,10 @@ def test_vocabulary_of_a_smaller_world() -> None:
 def test_normalize_and_numbers() -> None:
     assert normalize("Half-open the Blinds, please!") == "half open the blinds please"
     assert normalize("set the dimmer to 75%") == "set the dimmer to seventy five percent"
+    assert normalize("dim it to 0.5") == "dim it to fifty percent"  # a share, not "zero five"
+    assert normalize("the blinds to 30.5 %") == "the blinds to thirty one percent"  # not "thirty five"
+    assert normalize("set it to 1.0.") == "set it to one hundred percent"
+    assert normalize("open them 62.5") == "open them sixty three"
     assert [number_words(n) for n in (0, 13, 40, 99, 100)] == [
         "zero",
         "thirteen",
