@@ -43,7 +43,7 @@ from knic.language.learners import learners_read
 from knic.language.naming import names_device, places_before, said_named, synonym_only
 from knic.language.owned import own_pairs
 from knic.language.places import Places
-from knic.language.remarks import plain_words, refused, tagged
+from knic.language.remarks import NoSuchAction, plain_words, refused, tagged, unknown_action
 from knic.language.roles import INTERPRETERS
 from knic.language.segments import (
     cut,
@@ -158,6 +158,8 @@ class Reader(Places):
                 return self._read_segments(pointing)
         try:
             return self._read_segments(segments)
+        except NoSuchAction:  # "... and wash it": read otherwise, the washing would be dropped (remarks.py)
+            raise
         except LanguageError as exc:
             first = exc
         tries = [cut(s, self.chunks) for s in (segments, *([pointing] if pointing else []))]
@@ -232,6 +234,8 @@ class Reader(Places):
         if not chunks or (verbless and [c.kind for c in chunks[:3]] == ["entity", "det", "entity"]):
             # "light the candle", as "water the plant": a name said as a verb the robot has not
             raise LanguageError(f"no action in '{' '.join(tokens)}': say what to do, e.g. 'bring me ...'")
+        if verb := unknown_action(chunks, self._kind_of):
+            raise NoSuchAction(f"I cannot {verb} things: '{verb}' is no action of mine")
         context: list[Arg] = []
         clauses = self.clauses(chunks, context)
         if not clauses:

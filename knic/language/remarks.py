@@ -15,14 +15,18 @@
   every device: it is dropped (:func:`times_dropped`); "it would be nice if" before how a thing should be
   ("... if the reading lamp was off") only wishes it so (:func:`plain_words`).
 * "set an alarm (a timer, a reminder) for half six": no action the robot has (:func:`undoable`).
+* A later action of a chain the robot has no verb for ("bring me the cup and wash it", "... then polish the
+  mug", "... and water the plant"): refused by name (:func:`unknown_action`), not dropped.
 * A request taken back in a sentence of its own said last ("take the rugby ball to the garden, actually no,
   leave it", "bring me the kettle, oh never mind"): no action.
 """
 
 from __future__ import annotations
 
+import itertools
 from collections.abc import Callable, Sequence
 
+from core.errors import LanguageError
 from knic.language.chunks import Chunk
 from knic.language.tidy import unplaced
 
@@ -236,4 +240,39 @@ def undoable(segments: list[list[str]]) -> str | None:
             timed = next((w for w in segment[i + 1 : i + 4] if w in _TIMED), None)
             if word == "set" and timed is not None and "clock" not in segment[i + 1 : i + 5]:
                 return timed
+    return None
+
+
+#: words that may stand between a joiner and what it joins without being a verb ("and maybe the mug")
+_NOT_VERBS = frozenset(
+    {"maybe", "perhaps", "possibly", "probably", "even", "just", "only", "especially", "also"}
+)
+
+
+class NoSuchAction(LanguageError):
+    """A command asks for an action the robot has not (:func:`unknown_action`): refused whichever way the
+    rest of it could be read."""
+
+
+def unknown_action(chunks: Sequence[Chunk], kind_of: Callable[[Chunk], str]) -> str | None:
+    """The verb of a later action of a chain that is no action of the robot's: a word the command language
+    does not know ("... and wash it", "... then polish the mug") before an object (a pronoun of one said last
+    or before a preposition or a joiner, or a determiner and its name; ``kind_of``: what a chunk names,
+    "object" for a thing), or an object's name said as a verb before a determiner and anything named but a
+    person ("... and water the plant"), right after a joiner; else None.
+    An unknown word before a place is left out as before ("go and answer the door": the robot goes there)."""
+    for at, (joiner, word) in enumerate(itertools.pairwise(chunks)):
+        if joiner.kind != "join" or word.kind not in ("unknown", "entity") or word.text in _NOT_VERBS:
+            continue
+        after = chunks[at + 2 : at + 4]
+        # "wash it", "wash them in the sink"; not "..., they are in the shed" (the subject of what follows)
+        pronoun = [c.kind for c in after[:1]] == ["pronoun"] and after[0].role != "person"
+        acted_on = kind_of(after[1]) if [c.kind for c in after] == ["det", "entity"] else ""
+        if word.kind == "entity":  # an object's name before what it is done to: "water the plant"
+            if kind_of(word) == "object" and acted_on not in ("", "person"):
+                return word.text
+        elif pronoun and after[1:2] and after[1].kind not in ("prep", "join"):
+            continue
+        elif (pronoun or acted_on == "object") and not word.text.endswith("ly"):
+            return word.text
     return None

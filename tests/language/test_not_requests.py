@@ -57,3 +57,35 @@ def test_a_request_said_around_such_words_is_read(
 ) -> None:
     result = understand(text, vocabulary)
     assert result.accepted and [f.to_dict() for f in result.frames] == frames
+
+
+@pytest.mark.parametrize(
+    ("text", "verb"),
+    [
+        ("take the cup to the kitchen and wash it", "wash"),  # was the taking alone, the washing dropped
+        ("fetch the mug then polish it", "polish"),
+        ("bring me the cup and then dust the candle", "dust"),
+        ("bring me the cup and water the plant", "water"),  # a thing's name said as a verb: not a bringing
+    ],
+)
+def test_a_later_action_the_robot_has_not_is_refused_by_name(
+    vocabulary: Vocabulary, text: str, verb: str
+) -> None:
+    result = understand(text, vocabulary)
+    assert not result.accepted and not result.goals
+    assert result.reason == f"I cannot {verb} things: '{verb}' is no action of mine"
+
+
+@pytest.mark.parametrize(
+    ("text", "goals"),
+    [
+        ("bring me the cup and maybe the mug", ["(has annie cup)", "(has annie mug)"]),
+        ("bring me the cup and the water", ["(has annie cup)", "(has annie water)"]),
+    ],
+)
+def test_words_after_a_joiner_that_are_no_verb_still_read(
+    vocabulary: Vocabulary, text: str, goals: list[str]
+) -> None:
+    result = understand(text, vocabulary)
+    assert result.accepted, result.reason
+    assert [str(g) for g in result.goals][: len(goals)] == goals
