@@ -1,13 +1,36 @@
-"""Decimal numbers in commands ("dim it to 0.5", "the blinds at 62.5%"), read before a full stop would split
-them into two numbers ("zero", "five"): levels are whole percentages.
+"""Typed text as the reader reads it: typographic marks a phone or a word processor puts in ("annie’s",
+"I’d", "café", "wait… no") as plain ones, and decimal numbers ("dim it to 0.5", "the blinds at 62.5%") read
+before a full stop would split them into two numbers ("zero", "five"): levels are whole percentages.
 """
 
 from __future__ import annotations
 
 import re
+import unicodedata
 
 #: a decimal number (not part of a longer run of digits and points: "1.2.3"), and "%" or "percent" after it
 DECIMAL = re.compile(r"(?<![\d.])(\d+)\.(\d+)(?!\.?\d)(\s*(?:%|percent\b))?", re.IGNORECASE)
+#: typographic marks and their plain forms: curly and other apostrophes, quotes, dashes, the ellipsis and
+#: spaces that are not plain ones
+_PLAIN = str.maketrans(
+    {
+        **dict.fromkeys("\u2018\u2019\u201a\u201b\u02bc\u2032\u00b4\u0060", "'"),
+        **dict.fromkeys("\u201c\u201d\u201e\u201f\u00ab\u00bb", '"'),
+        **dict.fromkeys("\u2013\u2014\u2015\u2212", " - "),
+        "\u2026": "...",
+        **dict.fromkeys("\u00a0\u2009\u202f\u200b", " "),
+    }
+)
+
+
+def plain_typed(text: str) -> str:
+    """``text`` with typographic marks as plain ones ("annie’s": "annie's", "wait…": "wait...") and letters
+    without their accents ("café": "cafe", "Zoë": "Zoe"); words in other scripts are left as they are."""
+    text = text.translate(_PLAIN)
+    if text.isascii():
+        return text
+    folded = unicodedata.normalize("NFKD", text)
+    return "".join(c for c in folded if not unicodedata.combining(c))
 
 
 def decimals_read(text: str) -> str:

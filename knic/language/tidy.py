@@ -7,7 +7,7 @@ import re
 from collections.abc import Callable, Collection, Mapping
 
 from knic.language.chunks import Chunk
-from knic.language.decimals import decimals_read
+from knic.language.decimals import decimals_read, plain_typed
 
 #: "is", "are": after words the world has no name for, what follows is talk, not part of the action
 COPULAS = frozenset({"is", "are", "was", "were"})
@@ -116,7 +116,7 @@ def digits_read(
     one of ``before_numbers`` ("to 2", "at 4"), or nothing follows; typed signs as their words ("3/4": three
     quarters; :attr:`CommandLanguage.typed_words`); decimals as whole numbers first
     (:func:`~knic.language.decimals.decimals_read`)."""
-    tokens = decimals_read(text).split()
+    tokens = decimals_read(plain_typed(text)).split()
     for i, token in enumerate(tokens):
         bare = token.strip(".,;:!?")
         if bare in typed:

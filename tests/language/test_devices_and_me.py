@@ -67,3 +67,19 @@ def test_a_decimal_level_is_one_level_not_two_numbers(vocabulary: Vocabulary, te
 def test_coming_to_the_speaker_asks_where_they_are(vocabulary: Vocabulary, text: str) -> None:
     result = understand(text, vocabulary)
     assert not result.accepted and result.question == "Where are you: in which room?"
+
+
+@pytest.mark.parametrize(
+    ("text", "goal"),
+    [
+        ("I\u2019d like the cup please", "(has annie cup)"),  # was "i d like ...": no action
+        ("could you find annie\u2019s glasses", "(reported glasses)"),  # was "annies": not an object
+        ("br\u00edng me the c\u00fcp", "(has annie cup)"),
+    ],
+)
+def test_typographic_marks_and_accents_read_as_typed_plainly(
+    vocabulary: Vocabulary, text: str, goal: str
+) -> None:
+    result = understand(text, vocabulary)
+    assert result.accepted, result.reason
+    assert str(result.goals[0]).startswith(goal)

@@ -138,6 +138,8 @@ def test_normalize_and_numbers() -> None:
     assert normalize("the blinds to 30.5 %") == "the blinds to thirty one percent"  # not "thirty five"
     assert normalize("set it to 1.0.") == "set it to one hundred percent"
     assert normalize("open them 62.5") == "open them sixty three"
+    # typed on a phone or in a word processor: curly apostrophes, accents, dashes
+    assert normalize("I\u2019d like Zo\u00eb\u2019s caf\u00e9 \u2014 now") == "i'd like zoe's cafe now"
     assert [number_words(n) for n in (0, 13, 40, 99, 100)] == [
         "zero",
         "thirteen",
