@@ -11,8 +11,9 @@
   to bed"): "we're", the speaker's own doing;
 * "still" after a thing and before where it is ("is the lasagne still in the oven?"): dropped, the question is
   where the thing is; "the light is still on" keeps it (a complaint);
-* what is waited for ("go to the hallway and wait for the postman", "... wait for mark there"): dropped up to
-  the next "and" or "then", the robot waits where it went ("wait for me" is a verb of its own and stays);
+* what is waited for ("go to the hallway and wait for the postman", "... wait for mark there", "wait in the
+  hall for the taxi driver"): dropped up to the next "and" or "then", the robot waits where it went ("wait
+  for me" is a verb of its own and stays);
 * "over" after a thing and before "the" ("the blind in the kitchen, the one over the sink", "the light over
   the sink"): "above", where it is; after a verb of moving or "it" ("hand it over the fence") it stays, and
   so does "over" before no article ("turn on over lights", a mishearing);
@@ -59,6 +60,14 @@ _TENS = frozenset(
 )
 
 
+def _waiting(said: list[str]) -> bool:
+    """Whether the latest action said is a wait, with where at most ("wait in the hall for ...")."""
+    if not said or "wait" not in said:
+        return False
+    at = len(said) - 1 - said[::-1].index("wait")
+    return not any(word in ("and", "then") for word in said[at:])
+
+
 def _number(word: str) -> bool:
     return word.isdigit() or word in _TENS
 
@@ -95,7 +104,7 @@ def contracted(tokens: list[str]) -> list[str]:
             out.append("it's")
             i += 2
             continue
-        if token == "for" and out[-1:] == ["wait"] and nxt != "me":
+        if token == "for" and _waiting(out) and nxt not in ("me", "us"):
             while i < len(tokens) and tokens[i] not in ("and", "then", "there"):
                 i += 1
             continue

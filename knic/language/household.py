@@ -34,6 +34,7 @@ from dataclasses import replace
 
 from knic.language.chunks import Chunk, Chunker, past_determiners, singulars
 from knic.language.contracted import contracted
+from knic.language.dialects import dialect_words
 from knic.language.vocabulary import Vocabulary
 
 #: hesitations, dropped even inside a phrase (they are fillers wherever they stand)
@@ -138,12 +139,12 @@ def binned(tokens: list[str]) -> list[str]:
 
 
 def words_tidied(tokens: list[str]) -> list[str]:
-    """The words without hesitations, with "you're" spelled out after a word of time and "me" said again for
-    "my" ("bring me me glasses", as said in Britain and Ireland). A hesitation between a
-    thing said after an article and the same article said again ("get me a cup of tea er a cup") is the
-    speaker correcting the thing: it is read as "i mean"."""
+    """The words without hesitations, in plain English (:mod:`knic.language.dialects`), with "you're" spelled
+    out after a word of time and "me" said again for "my" ("bring me me glasses", as said in Britain and
+    Ireland). A hesitation between a thing said after an article and the same article said again ("get me a
+    cup of tea er a cup") is the speaker correcting the thing: it is read as "i mean"."""
     out: list[str] = []
-    tokens = binned(gone_asked(contracted(tokens)))
+    tokens = binned(gone_asked(contracted(dialect_words(tokens))))
     for i, token in enumerate(tokens):
         if token in HESITATIONS:
             nxt = tokens[i + 1] if i + 1 < len(tokens) else ""

@@ -1,0 +1,139 @@
+"""Words of regional and world Englishes that stand for plain English words only in context, put back as said
+plainly (used by :func:`knic.language.household.words_tidied`, one stretch of a command at a time, before
+:mod:`knic.language.regional` reads the forms that need the world's names; the words that always stand for
+one plain word, such as Jamaican "di" for "the", are ``spellings`` in ``commands.yaml``):
+
+* Jamaican English: "mi" for "I" opening a stretch ("mi cyaan find ..."), for "me" before where to, after
+  "give" or before no thing ("carry mi go a di bedroom", "bring mi di sheets"), else for "my" ("bring mi
+  slippers"); "him" for "he" opening a stretch, and for "his" before a thing after a preposition, after
+  "him" or after a verb of the past ("give him him comic", "inna him tea", "Tobias cut him finger"); "dem"
+  after a thing is its plural said again, dropped ("open di blinds dem"), elsewhere "them"; "where X deh"
+  is "where is X"; "go a" is "go to"; "go" said after the thing carried, before where to ("carry di teapot
+  go a di kitchen"), is "to";
+* Northern English "tha" for "you" after a verb of asking ("has tha seen ...": "have you seen"); elsewhere
+  "tha" is a typed "the" ("turn on tha light"); "it" or "them" with the person straight after, said last
+  ("take it him", "give them her"): "to" that person;
+* Tagalog "paki-" (please) before a verb ("pakibring the sheets", "paki-close the curtains"): the verb;
+* "wait on me" (American South, Scotland): "wait for me";
+* "come" or "go" before a state after "make" ("mek di bedside lamp come on", "make the lights go off"): the
+  device made so;
+* "like" before a number ("likkle bit, like twenty", "to like 40"): "to", a level said roughly;
+* "up the stairs", "down the stairs" before where to ("help me up the stairs to the heather room"): the way
+  there, not a place.
+"""
+
+from __future__ import annotations
+
+#: verbs of asking after which "tha" is "you" ("has tha seen", "can tha fetch")
+_ASKING = frozenset({"has", "have", "can", "could", "will", "would", "did", "do", "wilt", "hast"})
+#: words after which "mi" or "him" is no possessive (what follows is no thing of theirs)
+_NOT_A_THING = frozenset(
+    {"the", "a", "an", "to", "in", "on", "at", "for", "from", "and", "then", "please", "here", "there", "go"}
+    | {"come", "some", "your", "his", "her", "up", "down", "back", "into", "with", "one", "off", "out", "now"}
+    | {"today", "tonight", "again", "too", "as", "so", "because", "when", "if", "or", ""}
+)
+#: people said straight after "it" or "them", given the thing ("take it him")
+_GIVEN = frozenset({"him", "her", "me", "us"})
+#: verbs of carrying after whose object "go" is "to" (Jamaican serial verbs: "carry it go a di kitchen")
+_CARRYING = frozenset({"carry", "take", "bring", "fetch", "send", "move", "put"})
+#: prepositions after which Jamaican "him" is "his"
+_PREPOSITIONS = frozenset({"in", "on", "to", "from", "into", "at", "off", "with", "for"})
+#: past verbs after which "him" before a thing is "his" ("tobias cut him finger")
+_PAST = frozenset({"cut", "hurt", "broke", "lost", "left", "dropped", "burnt", "burned", "forgot", "bumped"})
+#: where "mi" stands for "me": before where to or a verb of going
+_MI_ME = frozenset({"go", "come", "to", "a", "in", "up", "down", "back", "over", "out"})
+#: what joins actions: "go" after one starts a new action
+_JOINING = frozenset({"and", "then", "to", "please", "", "n"})
+#: what says a new action comes next ("put it in the bin and after that go to the hallway")
+_NEXT_ACTION = frozenset({"and", "then", "after", "afterwards", "next", "finally", "also", "n"})
+#: what "go a" is "go to" before
+_ARTICLES = frozenset({"the", "my", "your", "his", "her", "our", "me", "mi"})
+#: states a device is made to come or go to ("make the lamp come on", "make the lights go off")
+_STATES = frozenset({"on", "off", "out"})
+#: number words a level may be said with after "like" ("like twenty")
+_NUMBERS = frozenset(
+    {"five", "ten", "fifteen", "twenty", "thirty", "forty", "fifty", "sixty", "seventy", "eighty", "ninety"}
+    | {"hundred", "half", "halfway"}
+)
+#: what "like" follows when it is the verb ("i'd like twenty")
+_LIKING = frozenset({"i", "i'd", "would", "you", "we", "they", "he", "she", "don't", "really", "we'd"})
+#: the Jamaican plural said after a thing ("di blinds dem")
+_PLURAL_MARK = "dem"
+
+
+def dialect_words(tokens: list[str]) -> list[str]:
+    """``tokens`` (one stretch of a command, lower case, after ``spellings``) with the words of the module
+    docstring said in plain English."""
+    out: list[str] = []
+    carried = False  # a verb of carrying was said in this action
+    i = 0
+    while i < len(tokens):
+        token, nxt = tokens[i], tokens[i + 1] if i + 1 < len(tokens) else ""
+        before = out[-1] if out else ""
+        i += 1
+        if token == "tha":
+            if before in _ASKING:
+                out[-1:] = ["have" if before == "has" else before, "you"]
+            else:
+                out.append("the")
+            continue
+        if token.startswith("paki") and token[4:].isalpha() and len(token) > 5:
+            token = token[4:]  # "pakibring"
+        elif token == "paki":
+            continue  # "paki-close"
+        if token in ("up", "down") and tokens[i : i + 3] in (["the", "stairs", "to"], ["the", "stair", "to"]):
+            i += 2  # "help me up the stairs to ...": the way, not a place
+            continue
+        if carried and token == "go" and nxt in ("a", "to") and before not in _JOINING:
+            out.append("to")  # "carry di teapot go a di kitchen"
+            i += 1
+            continue
+        if token in ("come", "go") and nxt in _STATES and _making(out):
+            continue  # "mek di lamp come on": turn it on
+        if token == "a" and before == "go" and nxt in _ARTICLES:
+            token = "to"
+        elif token == "like" and (nxt.isdigit() or nxt in _NUMBERS) and before not in _LIKING:
+            if before in ("to", "at"):
+                continue  # "to like twenty": to twenty
+            token = "to"  # "likkle bit, like twenty": to twenty
+        elif token == "on" and before == "wait" and nxt in ("me", "us"):
+            token = "for"
+        elif token == "mi":
+            token = _mi(before, nxt, bool(out))
+        elif token == "him":
+            if not out:
+                token = "he"
+            elif nxt not in _NOT_A_THING and (before in _PREPOSITIONS | _PAST or before == "him"):
+                token = "his"
+        elif token == _PLURAL_MARK:
+            if before and before not in _CARRYING | _NOT_A_THING | _JOINING:
+                continue  # "di blinds dem": the plural said again
+            token = "them"
+        if token in _GIVEN and before in ("it", "them") and nxt in ("", "and", "then", "please"):
+            out.append("to")  # "take it him"
+        listed = token == "and" and nxt in _ARTICLES | {"a", "an", "some"}  # "the cornflakes and the jam"
+        carried = (carried or token in _CARRYING) and (token not in _NEXT_ACTION or listed)
+        out.append(token)
+    if len(out) > 2 and out[0] == "where" and out[-1] == "deh":  # "where keith deh?": where is keith
+        out = ["where", "is", *out[1:-1]]
+    return out
+
+
+def _mi(before: str, nxt: str, said: bool) -> str:
+    """Jamaican "mi": "i" opening a stretch; "me" before where to, after "give" or before no thing; else
+    "my"."""
+    if not said:
+        return "i"
+    if nxt in _MI_ME or nxt in _NOT_A_THING or before in ("give", "gimme"):
+        return "me"
+    return "my"
+
+
+def _making(said: list[str]) -> bool:
+    """Whether the latest action said so far is "make" ("make the lamp come on"), no "and" or "then" since."""
+    for word in reversed(said):
+        if word in ("and", "then"):
+            return False
+        if word == "make":
+            return True
+    return False
