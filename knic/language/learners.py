@@ -26,15 +26,17 @@ def learners_read(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
 def state_as_verb(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
     """ "switch off the office light and on the desk lamp" (Indian English says "on the light", "off the
     fan"): "on" or "off" right after "and" and before a device, once a verb was said, is that verb again with
-    this state ("and switch on the desk lamp"), not the earlier device's state."""
+    this state ("and switch on the desk lamp"), not the earlier device's state; after a verb that switches
+    nothing ("go to kit's room and off his night light"), "switch"."""
     out: list[Chunk] = []
+    switch = Chunk("verb", "switch", frames=("OPERATING",))
     verb: Chunk | None = None
     if len(chunks) > 2 and _state_before_device(chunks, 0, vocabulary):  # "off the kitchen light and on ..."
-        verb = Chunk("verb", "switch", frames=("OPERATING",))
+        verb = switch
     for i, chunk in enumerate(chunks):
         out.append(chunk)
         if chunk.kind == "verb":
-            verb = chunk
+            verb = chunk if "OPERATING" in chunk.frames else switch
         if verb is not None and chunk.kind == "join" and _state_before_device(chunks, i + 1, vocabulary):
             out.append(verb)
     return out

@@ -29,6 +29,7 @@ from knic.language.chains import AmbiguityError
 from knic.language.clauses import Arg
 from knic.language.frames import CommandFrame
 from knic.language.goals import room_of
+from knic.language.regional import regional_said
 from knic.language.shortnames import containers, contains, english_opposites
 from knic.language.vocabulary import Term, Vocabulary, english_synonyms
 
@@ -49,6 +50,7 @@ def said_named(segments: list[list[str]], vocabulary: Vocabulary, known: Collect
     Raises:
         AmbiguityError: a first name begins several people's names.
     """
+    segments = regional_said(segments, vocabulary)  # "fetch us t'atlas", "where's me stick" (regional.py)
     phrases, people, rooms = _names(vocabulary)
     for segment in segments:
         _opposite_refused(segment, phrases)

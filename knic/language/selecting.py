@@ -72,6 +72,7 @@ _KINDS = {
     "food": frozenset(
         {"apple", "lemon", "banana", "orange", "pear", "peach", "plum", "grapes", "lime", "bread", "biscuit"}
         | {"biscuits", "cake", "sandwich", "cookie", "cookies", "crackers", "cheese", "chocolate", "yogurt"}
+        | {"yoghurt", "popcorn", "eggs", "egg", "crisps", "nuts", "jam", "cereal", "soup", "noodles", "pizza"}
     ),
 }
 _KIND_WORDS = {
@@ -321,8 +322,8 @@ def _kind(words: list[str], vocabulary: Vocabulary) -> list[str]:
     """ "something to drink", "a cold drink": the one thing of the world of that kind."""
     for i, word in enumerate(words):
         kind = _KIND_WORDS.get(word)
-        if kind is None or not i:
-            continue
+        if kind is None or not i or _name_starts(words[i : i + 2], vocabulary):
+            continue  # "the snack bar", "the drinks cabinet": a name of the world, no kind of thing
         start = i
         if words[i - 1] == "to":  # "something (cold) to drink"; "i want to drink": a verb
             start = i - 2
@@ -351,6 +352,12 @@ def _kind(words: list[str], vocabulary: Vocabulary) -> list[str]:
         symbol = next(iter(things))
         return [*words[:start], "the", *vocabulary.phrase_of(symbol).split(), *words[i + 1 :]]
     return words
+
+
+def _name_starts(words: list[str], vocabulary: Vocabulary) -> bool:
+    """Whether two words said together start a name of the world ("snack bar", "fruit bowl")."""
+    said = " ".join(words)
+    return len(words) == 2 and any(f"{t.phrase} ".startswith(f"{said} ") for t in vocabulary.terms)
 
 
 def _whichever(words: list[str], phrases: dict[str, Term]) -> None:

@@ -227,7 +227,8 @@ def own_phrases(
     the thing is a room: where a lexicon written for one home calls its ``bedroom_blinds`` "the blinds", a
     home with more blinds ("kitchen_blind", "study_blind") means them all, or asks which. A phrase that is
     another thing's own name is that thing's: where a home has a ``bedside_table`` and a ``night_stand``,
-    "the night stand" is the night stand."""
+    "the night stand" is the night stand. The symbol's own name is always kept: where a home has a ``sofa``
+    and a ``cinema_sofa``, "the sofa" is the sofa, not the cinema sofa by its last word."""
     kind = instances.get(symbol)
     if len(phrases) < 2:
         return phrases
@@ -237,5 +238,6 @@ def own_phrases(
         return phrases
     ends = {o.replace("_", " ").split()[-1] for o, k in instances.items() if k == kind and o != symbol}
     ends |= {end[:-1] for end in ends if end.endswith("s")} | {end + "s" for end in ends}
-    kept = tuple(p for p in phrases if " " in p or p not in ends)
+    own = symbol.replace("_", " ")
+    kept = tuple(p for p in phrases if " " in p or p not in ends or p == own)
     return kept or phrases

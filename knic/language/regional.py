@@ -1,0 +1,210 @@
+"""Words of regional and learners' English read as the standard words they stand for, before chunking.
+
+Two steps, both general English (no world's names), run by :func:`knic.language.naming.said_named` before
+the world's names are put as the world says them:
+
+* :func:`regional_words`, on the words of one sentence:
+
+  - the Yorkshire and Lancashire article "t'" joined to its noun ("put t'light on", "fetch us t'atlas from
+    t'study"): "the";
+  - a dropped "g" written with an apostrophe ("fixin'", "watchin'", "nothin'"): the "-ing" word; and "gi'"
+    (give), "an'" (and), "o'" (of);
+  - a Japanese honorific after a name ("Kit-kun", "Wilf-san", "Haruka-chan", "Tanaka-sama"): left out;
+  - "where" straight before a possessive or an article, its verb left out ("where my handbag?", a learner's
+    and Singaporean English): "where is";
+  - "on" before "up", "over", "down", "out" or "back" and then "to" ("tote it on up to the guest room",
+    "carry it on over to Huiling", Southern US): left out;
+  - "both" said last after two things joined by "and" ("the hall light and the landing light both"):
+    left out, the two were named.
+
+* :func:`regional_said`, on the sentences of a command with the world's names:
+
+  - "me" for "my" before a thing's name (Yorkshire, Irish, Scouse, Australian: "where's me stick?", "fetch us
+    me flat cap", "put me stick back"), except after a verb that takes whom for ("bring me cup", a learner's
+    "me" without its article);
+  - a question tag said last in Singaporean English ("... can?", "... can or not?", "got ... or not?"): left
+    out; a "can" after an article or making a name with the word before ("the watering can") is a can;
+  - "got" opening a question ("got oat milk in the fridge or not?", Singaporean and colloquial English):
+    "is there";
+  - "is it" opening a question before an article ("is it the tablet still on the desk?", Singaporean
+    English): "is";
+  - "take X come" ("go and take my mug come", Singaporean English: bring it here): "take X to me";
+  - "get the light" with no state said ("get the light in the gym, hon", American English): switched off;
+  - "step one", "step two" opening a sentence (a nurse's or a manual's numbered steps), and a sentence that
+    is only a number ("1. turn on the light. 2. take wilf ...", the "2" read as "to"): left out.
+"""
+
+from __future__ import annotations
+
+import re
+from functools import lru_cache
+
+from knic.language.vocabulary import Vocabulary
+
+#: a Yorkshire "t'" before its noun; "gi'", "an'", "o'"; a dropped "g" ("fixin'")
+_ARTICLE = re.compile(r"^t'([a-z].*)$")
+_CLIPPED = {"gi'": "give", "an'": "and", "o'": "of", "where'd": "where did"}
+#: Northern English words for "something", "anything", "nothing"
+_NORTHERN = {"summat": "something", "owt": "anything", "nowt": "nothing"}
+_DROPPED_G = re.compile(r"^([a-z]+)in'$")
+#: Japanese honorifics said after a name
+_HONORIFICS = frozenset({"san", "kun", "chan", "sama"})
+#: what "where" stands before when its "is" is left out
+_POSSESSIVES = frozenset({"my", "the", "your", "his", "her", "our", "their", "me"})
+#: what makes "where ... " a question with a verb of its own ("where my pen has got to")
+_VERBS_AFTER = frozenset({"is", "are", "was", "were", "has", "have", "had", "did", "do", "does", "'s"})
+#: particles of direction after "on" in "carry it on up to ..."
+_ON_WHERE = frozenset({"up", "over", "down", "out", "back"})
+#: the verbs after which "me" is whom a thing is for ("bring me cup"), not "my"
+_FOR_WHOM = frozenset(
+    {"bring", "fetch", "get", "give", "hand", "pass", "grab", "find", "buy", "chuck", "throw", "toss", "lob"}
+    | {"bung", "send", "pour", "make", "fix", "show", "tell", "read", "save", "leave", "order", "help", "let"}
+    | {"excuse", "for", "to", "with", "take", "carry", "gi'", "give", "get", "pass"}
+)
+#: the words of a Singaporean question tag said last ("can?", "can or not?", "or not?")
+_TAGS = (("can", "or", "not"), ("can", "anot"), ("or", "not"), ("can",))
+_DETERMINERS = frozenset({"the", "a", "an", "my", "your", "this", "that", "his", "her", "our", "their"})
+#: a numbered step opening a sentence ("step one: go to the kitchen")
+_STEP = frozenset({"step", "stage"})
+_NUMBERS = frozenset(
+    {"one", "two", "three", "four", "five", "six", "seven", "eight", "nine", "ten", "1", "2", "3", "4"}
+)
+
+
+def regional_words(tokens: list[str]) -> list[str]:
+    """The words of one sentence with the regional and learners' forms of the module docstring read."""
+    out: list[str] = []
+    for i, token in enumerate(tokens):
+        if article := _ARTICLE.match(token):
+            out += ["the", article.group(1)]
+        elif token in _CLIPPED or token in _NORTHERN:
+            out += (_CLIPPED.get(token) or _NORTHERN[token]).split()
+        elif dropped := _DROPPED_G.match(token):
+            out.append(dropped.group(1) + "ing")
+        elif token in _HONORIFICS and out and out[-1] not in _DETERMINERS:
+            continue  # "kit kun": Kit
+        elif token == "on" and tokens[i + 1 : i + 2] in ([w] for w in _ON_WHERE) and "to" in tokens[i + 2 :]:
+            continue  # "tote it on up to the guest room"
+        else:
+            out.append(token)
+    for i, token in enumerate(out[:-1]):
+        rest = set(out[i + 2 :])
+        if token == "where" and out[i + 1] in _POSSESSIVES and not rest & _VERBS_AFTER:
+            out.insert(i + 1, "is")  # "where my handbag": where is my handbag
+            break
+    if len(out) > 3 and out[-1] == "both" and "and" in out[:-2]:
+        out.pop()  # "the hall light and the landing light both"
+    if len(out) > 3 and out[-2:] == ["and", "all"]:
+        out = out[:-2]  # "... and the landing light an' all": as well
+    return _got_to(out)
+
+
+def _got_to(words: list[str]) -> list[str]:
+    """ "where did the biscuit tin get (off) to", "where did it go off to": where is it."""
+    for tail in (["get", "off", "to"], ["go", "off", "to"], ["get", "to"]):
+        n = len(tail)
+        if words[:3] == ["where", "did", "the"] and len(words) > n + 3 and words[-n:] == tail:
+            return ["where", "is", *words[2:-n]]
+    return words
+
+
+@lru_cache(maxsize=16)
+def _names(vocabulary: Vocabulary) -> tuple[frozenset[str], frozenset[str], frozenset[str]]:
+    """The world's phrases of things (items, furniture, devices), their first words, and the phrases of its
+    lights (read once per vocabulary)."""
+    things = frozenset(
+        t.phrase
+        for t in vocabulary.terms
+        if any(vocabulary.is_subtype(t.type, k) for k in ("item", "furniture", "device"))
+    )
+    lights = frozenset(
+        t.phrase
+        for t in vocabulary.terms
+        if vocabulary.is_subtype(t.type, "light") or vocabulary.is_subtype(t.type, "dimmer")
+    )
+    return things, frozenset(p.split()[0] for p in things), lights
+
+
+def _name_at(words: list[str], at: int, phrases: frozenset[str]) -> int:
+    """The number of words of the longest phrase of ``phrases`` said from ``at`` on (0: none)."""
+    for end in range(len(words), at, -1):
+        if " ".join(words[at:end]) in phrases:
+            return end - at
+    return 0
+
+
+def regional_said(segments: list[list[str]], vocabulary: Vocabulary) -> list[list[str]]:
+    """The sentences with the forms of the module docstring that need the world's names read."""
+    things, firsts, lights = _names(vocabulary)
+    firsts = firsts | {p.split()[-1] for p in things}
+    out: list[list[str]] = []
+    segments = [s for s in segments if len(s) > 1 or s[0] not in _NUMBERS | {"to", "for"}] or segments
+    for n, segment in enumerate(segments):
+        words = regional_words(segment)
+        if words[:1] and words[0] in _STEP and words[1:2] and words[1] in _NUMBERS:
+            words = words[2:]  # "step two, take wilf to the bathroom"
+        if n == 0 and words[:1] == ["got"] and words[1:2] != ["to"]:
+            words = ["is", "there", *words[1:]]  # "got oat milk in the fridge or not"
+        if n == 0 and words[:2] == ["is", "it"] and words[2:3] and words[2] in _DETERMINERS:
+            words = ["is", *words[2:]]  # "is it the tablet still on kit's desk"
+        words = _my_said_me(words, things, firsts)
+        words = [
+            "the" if w == "them" and words[i + 1 : i + 2] and words[i + 1] in firsts else w
+            for i, w in enumerate(words)
+        ]  # "shut them blinds in the gym"
+        if len(segments) > 1 and words[:2] in (["i'm", "off"], ["we're", "off"]) and len(words) > 2:
+            continue  # "..., i'm off to the loo": where the speaker is going, no request
+        if n == len(segments) - 1 or len(words) <= 3:
+            words = _tag_dropped(words, things)
+        words = _come_here(words, things)
+        words = _light_got(words, lights)
+        if words:
+            out.append(words)
+    return out
+
+
+def _my_said_me(words: list[str], things: frozenset[str], firsts: frozenset[str]) -> list[str]:
+    """ "where's me stick", "fetch us me flat cap": "me" before a thing's name, not after a verb that takes
+    whom a thing is for, is "my"."""
+    out = list(words)
+    for i, word in enumerate(words):
+        if word != "me" or not words[i + 1 : i + 2] or words[i + 1] not in firsts:
+            continue
+        if i and words[i - 1] in _FOR_WHOM and words[i - 1] != "us":
+            continue
+        if _name_at(words, i + 1, things) or words[i + 1] in firsts:
+            out[i] = "my"
+    return out
+
+
+def _tag_dropped(words: list[str], things: frozenset[str]) -> list[str]:
+    """A Singaporean question tag said last ("... can?", "... can or not?", "... or not?") left out."""
+    for tag in _TAGS:
+        n = len(tag)
+        if len(words) <= n or tuple(words[-n:]) != tag:
+            continue
+        before = words[-n - 1]
+        if tag[0] == "can" and (
+            before in _DETERMINERS or any(f" {p}".endswith(f" {before} can") for p in things)
+        ):
+            return words  # "bring me the watering can"
+        return words[:-n]
+    return words
+
+
+def _come_here(words: list[str], things: frozenset[str]) -> list[str]:
+    """ "take my travel mug come" (Singaporean English): take it to the speaker."""
+    if len(words) < 3 or words[-1] != "come" or not {"take", "bring", "get", "fetch"} & set(words[:-1]):
+        return words
+    ends = {p.split()[-1] for p in things}
+    return [*words[:-1], "to", "me"] if words[-2] in ends else words
+
+
+def _light_got(words: list[str], lights: frozenset[str]) -> list[str]:
+    """ "get the light in the gym" with no state said: switch it off (American English)."""
+    if "get" not in words or {"on", "off", "up", "down", "percent"} & set(words):
+        return words
+    at = words.index("get")
+    if words[at + 1 : at + 2] != ["the"] or not _name_at(words, at + 2, lights | {"light", "lights"}):
+        return words
+    return [*words[:at], "switch", "off", *words[at + 1 :]]
