@@ -139,7 +139,7 @@ def contracted(tokens: list[str]) -> list[str]:
             and out
             and out[-1] not in _BEING
             and nxt in _PLACES
-            and after in ("the", "my", "a")
+            and (after in ("the", "my", "a") or after.startswith("t'") or after.endswith("'s"))
         ):
             pass
         elif (

@@ -35,6 +35,7 @@ from dataclasses import replace
 from knic.language.chunks import Chunk, Chunker, past_determiners, singulars
 from knic.language.contracted import contracted
 from knic.language.dialects import dialect_words
+from knic.language.regional import regional_words
 from knic.language.vocabulary import Vocabulary
 
 #: hesitations, dropped even inside a phrase (they are fillers wherever they stand)
@@ -144,7 +145,7 @@ def words_tidied(tokens: list[str]) -> list[str]:
     Ireland). A hesitation between a thing said after an article and the same article said again ("get me a
     cup of tea er a cup") is the speaker correcting the thing: it is read as "i mean"."""
     out: list[str] = []
-    tokens = binned(gone_asked(contracted(dialect_words(tokens))))
+    tokens = binned(gone_asked(contracted(dialect_words(regional_words(tokens)))))
     for i, token in enumerate(tokens):
         if token in HESITATIONS:
             nxt = tokens[i + 1] if i + 1 < len(tokens) else ""

@@ -1,9 +1,9 @@
 """Words of regional and learners' English read as the standard words they stand for, before chunking.
 
-Two steps, both general English (no world's names), run by :func:`knic.language.naming.said_named` before
-the world's names are put as the world says them:
+Two steps, both general English (no world's names):
 
-* :func:`regional_words`, on the words of one sentence:
+* :func:`regional_words`, on the words of one sentence, first of all (from
+  :func:`knic.language.household.words_tidied`):
 
   - the Yorkshire and Lancashire article "t'" joined to its noun ("put t'light on", "fetch us t'atlas from
     t'study"): "the";
@@ -17,7 +17,8 @@ the world's names are put as the world says them:
   - "both" said last after two things joined by "and" ("the hall light and the landing light both"):
     left out, the two were named.
 
-* :func:`regional_said`, on the sentences of a command with the world's names:
+* :func:`regional_said`, on the sentences of a command with the world's names, before they are put as the
+  world says them (from :func:`knic.language.naming.said_named`):
 
   - "me" for "my" before a thing's name (Yorkshire, Irish, Scouse, Australian: "where's me stick?", "fetch us
     me flat cap", "put me stick back"), except after a verb that takes whom for ("bring me cup", a learner's
@@ -100,11 +101,16 @@ def regional_words(tokens: list[str]) -> list[str]:
 
 
 def _got_to(words: list[str]) -> list[str]:
-    """ "where did the biscuit tin get (off) to", "where did it go off to": where is it."""
+    """ "where did the biscuit tin get (off) to", "where did it go off to": where is it; "... where my pen has
+    got to" (a question's order inside another): "where has my pen got to"."""
     for tail in (["get", "off", "to"], ["go", "off", "to"], ["get", "to"]):
         n = len(tail)
         if words[:3] == ["where", "did", "the"] and len(words) > n + 3 and words[-n:] == tail:
             return ["where", "is", *words[2:-n]]
+    if "where" in words and words[-3:] in (["has", "got", "to"], ["have", "got", "to"]):
+        at = words.index("where")
+        if at + 1 < len(words) - 3 and words[at + 1] in _POSSESSIVES:
+            return [*words[: at + 1], words[-3], *words[at + 1 : -3], "got", "to"]
     return words
 
 
@@ -140,7 +146,7 @@ def regional_said(segments: list[list[str]], vocabulary: Vocabulary) -> list[lis
     out: list[list[str]] = []
     segments = [s for s in segments if len(s) > 1 or s[0] not in _NUMBERS | {"to", "for"}] or segments
     for n, segment in enumerate(segments):
-        words = regional_words(segment)
+        words = list(segment)
         if words[:1] and words[0] in _STEP and words[1:2] and words[1] in _NUMBERS:
             words = words[2:]  # "step two, take wilf to the bathroom"
         if n == 0 and words[:1] == ["got"] and words[1:2] != ["to"]:

@@ -13,7 +13,13 @@ got wrong, each tried in the ERL apartment as well, with sentences of other spea
   blinds", "I'm off to the loo" said after a request; a dropped "g" ("fixin'"); Japanese honorifics
   ("Kit-kun", "Wilf-san"); a Singaporean question tag ("..., can?", "... or not?"), "got X in the Y or
   not?", "is it the X ...?", "where my handbag?", "take my mug come"; Southern US "get the light", "carry it
-  on over to"; "where'd the biscuit tin get off to?"; a nurse's "step one: ..." and "1. ... 2. ...".
+  on over to"; "where'd the biscuit tin get off to?"; a nurse's "step one: ..." and "1. ... 2. ..."; "where
+  my pen has got to" (a question's order inside another);
+* "tote" brings (American English), "the icebox" is the fridge, "position yourself next to" goes
+  (``commands.yaml``, ``synonyms.yaml``); "the roof", "the terrace", "the mezzanine", "the gym" name the room
+  whose name has them (``room_words``); a colon ends a stretch as a comma does ("one more thing before you
+  dash off: ...", not "4:30"; ``knic.language.tidy``); "still" before a place said with a possessive ("is
+  the tablet still on Kit's desk?") is dropped as before "the" (``knic.language.contracted``).
 """
 
 from __future__ import annotations
@@ -279,3 +285,69 @@ def test_numbered_steps_in_the_apartment(vocabulary: Vocabulary) -> None:
         {"frame": "BRINGING", "theme": "juice", "source": "kitchen", "beneficiary": "me"},
     ]
     assert understand("step", _duplex(), speaker="marisol").accepted is False
+
+
+@pytest.mark.parametrize(
+    ("text", "speaker", "frames"),
+    [
+        (
+            "Tote this bed linen on up to the guest room",
+            "darlene",
+            [{"frame": "BRINGING", "theme": "bed_linen", "goal": "guest_room"}],
+        ),
+        (
+            "Put the eggs back in the icebox, hon",
+            "darlene",
+            [{"frame": "PLACING", "theme": "eggs", "goal": "fridge"}],
+        ),
+        ("Position yourself next to the guest bed", "marisol", [{"frame": "MOTION", "goal": "guest_bed"}]),
+        (
+            "Go up on t'roof and fetch me sunglasses",
+            "wilf",
+            [
+                {"frame": "MOTION", "goal": "roof_terrace"},
+                {"frame": "BRINGING", "theme": "sunglasses", "source": "roof_terrace", "beneficiary": "me"},
+            ],
+        ),
+        ("go up to the mezzanine", "cornelius", [{"frame": "MOTION", "goal": "mezzanine_study"}]),
+        (
+            "One more thing before you dash off: the floor lamp in the living area, set it to half?",
+            "cornelius",
+            [{"frame": "OPERATING", "device": "floor_lamp", "state": "50"}],
+        ),
+        (
+            "Do you happen to know, and there's no hurry at all, where my fountain pen has got to?",
+            "cornelius",
+            [{"frame": "SEARCHING", "theme": "fountain_pen"}],
+        ),
+        (
+            "Is it the tablet still on Kit's desk?",
+            "huiling",
+            [{"frame": "SEARCHING", "theme": "tablet", "ground": "kit_desk"}],
+        ),
+    ],
+)
+def test_words_and_stretches(
+    duplex: Vocabulary, text: str, speaker: str, frames: list[dict[str, str]]
+) -> None:
+    """ "tote", "the icebox", "position yourself", "the roof", "the mezzanine", "the gym" (a room's kind said
+    alone), a colon ending a stretch, "where my pen has got to", "still on kit's desk"."""
+    assert frames_read(duplex, text, speaker) == frames
+
+
+def test_words_and_stretches_in_the_apartment(vocabulary: Vocabulary) -> None:
+    assert frames_read(vocabulary, "tote the cup to the kitchen") == [
+        {"frame": "BRINGING", "theme": "cup", "goal": "kitchen"}
+    ]
+    assert frames_read(vocabulary, "position yourself next to the sofa") == [
+        {"frame": "MOTION", "goal": "sofa"}
+    ]
+    assert frames_read(vocabulary, "one more thing: bring me the remote") == [
+        {"frame": "BRINGING", "theme": "remote", "beneficiary": "me"}
+    ]
+    assert frames_read(vocabulary, "is the remote still on tracy's bed") == [
+        {"frame": "SEARCHING", "theme": "remote", "ground": "bed"}
+    ]
+    assert frames_read(vocabulary, "I wonder, and don't rush, where my glasses have got to") == [
+        {"frame": "SEARCHING", "theme": "glasses"}
+    ]
