@@ -36,6 +36,7 @@ from knic.language.chunks import Chunk, Chunker, past_determiners, singulars
 from knic.language.contracted import contracted
 from knic.language.dialects import dialect_words
 from knic.language.regional import regional_words
+from knic.language.restating import restated
 from knic.language.vocabulary import Vocabulary
 
 #: hesitations, dropped even inside a phrase (they are fillers wherever they stand)
@@ -443,7 +444,9 @@ def _restated_before(chunks: list[Chunk], is_a: Callable[[Chunk, str], bool]) ->
 
 def ones_named(segments: list[list[str]], vocabulary: Vocabulary) -> list[list[str]]:
     """ "the right one" said after "the left lamp": "the right lamp", where the world has a thing called so
-    (the last word of a name said before, with the word said before "one")."""
+    (the last word of a name said before, with the word said before "one"); first, what is said again more
+    exactly is put where it was said (:mod:`knic.language.restating`)."""
+    segments = restated(segments, vocabulary)
     names = {t.phrase for t in vocabulary.terms if len(t.phrase.split()) == 2}
     said: list[str] = []
     out: list[list[str]] = []

@@ -13,7 +13,12 @@ apartment as well:
 * what is waited for after where the robot waits ("wait in the hall for the taxi driver") is dropped, as
   "wait for the postman" is (``knic.language.contracted``);
 * "the ref" (Filipino English) is the fridge, "the CR" (comfort room) a toilet or bathroom, a "ball cap" a
-  baseball cap (``synonyms.yaml``).
+  baseball cap (``synonyms.yaml``);
+* what is said again more exactly in a later stretch: a level said roughly, then exactly ("a bit brighter,
+  put it to eighty percent"), a name said again longer ("the lamp. The lamp. The standard lamp"), a device
+  named by its kind alone after another in the same room ("desk lamp to fifty, blind half open")
+  (``knic.language.restating``); "little brighter", "bit dimmer" without their article ask how far as
+  "a little brighter" does (``commands.yaml``).
 """
 
 from __future__ import annotations
@@ -27,6 +32,7 @@ from knic.language.vocabulary import Vocabulary
 from .conftest import frames_read, world_of
 
 HOUSE = "tests/fixtures/language/people25/guest_house.yaml"
+FAMILY = "tests/fixtures/language/people24/family_house.yaml"
 
 
 @lru_cache(maxsize=1)
@@ -165,3 +171,95 @@ def test_other_englishes_in_the_apartment(
     vocabulary: Vocabulary, text: str, frames: list[dict[str, str]]
 ) -> None:
     assert frames_read(vocabulary, text) == frames
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        (
+            "Make the living room dimmer a bit brighter, put it to eighty percent",
+            [{"frame": "OPERATING", "device": "living_room_dimmer", "state": "80"}],
+        ),
+        (
+            "Turn the dimmer up a little, set it at 60",
+            [{"frame": "OPERATING", "device": "living_room_dimmer", "state": "60"}],
+        ),
+        (
+            "Turn on the light. The light. The hallway light, by the door.",
+            [{"frame": "OPERATING", "device": "hallway_light", "state": "on"}],
+        ),
+        (
+            "Bring me the glasses. The glasses!",
+            [{"frame": "BRINGING", "theme": "glasses", "beneficiary": "me"}],
+        ),
+    ],
+)
+def test_said_again_more_exactly_in_the_apartment(
+    vocabulary: Vocabulary, text: str, frames: list[dict[str, str]]
+) -> None:
+    assert frames_read(vocabulary, text) == frames
+
+
+@pytest.mark.parametrize(
+    ("file", "text", "speaker", "frames"),
+    [
+        (
+            HOUSE,
+            "Turn on the lamp. The lamp. The standard lamp, next to me.",
+            "cornelius",
+            [{"frame": "OPERATING", "device": "standard_lamp", "state": "on"}],
+        ),
+        (
+            HOUSE,
+            "Mek di breakfast room light likkle brighter, put it to eighty percent",
+            "dolores",
+            [{"frame": "OPERATING", "device": "breakfast_room_light", "state": "80"}],
+        ),
+        (
+            HOUSE,
+            "Desk lamp to fifty, blind half open",
+            "imogen",
+            [
+                {"frame": "OPERATING", "device": "desk_lamp", "state": "50"},
+                {"frame": "OPERATING", "device": "bluebell_room_blind", "state": "50"},
+            ],
+        ),
+        (
+            HOUSE,
+            "Turn the lounge light off and dim the lamp to twenty",
+            "keith",
+            [
+                {"frame": "OPERATING", "device": "lounge_light", "state": "off"},
+                {"frame": "OPERATING", "device": "standard_lamp", "state": "20"},
+            ],
+        ),
+        (
+            FAMILY,
+            "Turn the kitchen light off and close the blind",
+            "priya",
+            [
+                {"frame": "OPERATING", "device": "kitchen_light", "state": "off"},
+                {"frame": "OPERATING", "device": "kitchen_blind", "state": "closed"},
+            ],
+        ),
+        (
+            FAMILY,
+            "Switch off the office light and the lamp",
+            "priya",
+            [
+                {"frame": "OPERATING", "device": "office_light", "state": "off"},
+                {"frame": "OPERATING", "device": "desk_lamp", "state": "off"},
+            ],
+        ),
+    ],
+)
+def test_said_again_more_exactly_in_the_houses(
+    file: str, text: str, speaker: str, frames: list[dict[str, str]]
+) -> None:
+    assert frames_read(world_of(file), text, speaker) == frames
+
+
+def test_all_of_a_kind_stays_all_of_them() -> None:
+    """ "close all the blinds" after a device of one room: every blind, not the one in that room."""
+    frames = frames_read(world_of(FAMILY), "Turn off the kitchen light and close all the blinds", "priya")
+    assert len([f for f in frames if f["frame"] == "OPERATING"]) > 2

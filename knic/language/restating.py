@@ -1,0 +1,139 @@
+"""What a speaker says again, more exactly, in a later stretch of the same command (used by
+:func:`knic.language.household.ones_named` on the sentences of a command, with the world's names):
+
+* a level said roughly and then exactly for the same device ("make the breakfast room light a bit brighter,
+  put it to eighty percent", "turn the lamp up a little, set it at 60"): the exact level, said where the
+  rough one was;
+* a thing's name said again alone, longer ("turn on the lamp. The lamp. The standard lamp, next to me."; "put
+  it on the table, the kitchen table"): the longer name where the shorter was said, and a name said again as
+  it was, dropped;
+* a device named by its kind alone ("blind", "blinds", "lamp") after another device was named by its own
+  name ("turn the breakfast room light down to ten and shut the blinds", "desk lamp to fifty, blind half
+  open"): the one of that kind in the same room, where there is exactly one (a speaker names the room once).
+"""
+
+from __future__ import annotations
+
+from functools import lru_cache
+
+from knic.language.commands import command_language
+from knic.language.vocabulary import Vocabulary
+
+#: verbs a level is said again with, of "it" or "them" ("put it to eighty percent")
+_SETTING = frozenset({"put", "set", "turn", "make", "dim", "bring", "take"})
+_IT = frozenset({"it", "them"})
+_ARTICLES = frozenset({"the", "a", "an", "my", "that", "this", "your", "our"})
+#: what says every thing of a kind is meant ("all the blinds", "both lamps")
+_ALL = frozenset({"all", "both", "every", "each", "of", "two", "three"})
+#: what a device's kind noun follows when it is said alone ("shut the blinds", "blind half open")
+_ALONE_AFTER = _ARTICLES | {"", "and", "then", "open", "close", "shut", "raise", "lower", "draw"}
+
+
+@lru_cache(maxsize=16)
+def _devices(vocabulary: Vocabulary) -> tuple[tuple[str, str, str], ...]:
+    """(phrase, symbol, room) of each device of the world with one room."""
+    out = []
+    for term in vocabulary.terms:
+        rooms = vocabulary.locations.get(term.symbol, ())
+        if vocabulary.is_subtype(term.type, "device") and len(rooms) == 1:
+            out.append((term.phrase, term.symbol, rooms[0]))
+    return tuple(out)
+
+
+def restated(segments: list[list[str]], vocabulary: Vocabulary) -> list[list[str]]:
+    """The sentences with what is said again more exactly put where it was first said (see the module
+    docstring)."""
+    segments = _level_restated([list(s) for s in segments])
+    segments = _name_restated(segments, {t.phrase for t in vocabulary.terms})
+    return _kind_in_room(segments, vocabulary)
+
+
+def _level_restated(segments: list[list[str]]) -> list[list[str]]:
+    vague = sorted((p.split() for p in command_language().vague_levels), key=len, reverse=True)
+    for n in range(len(segments) - 1):
+        later = segments[n + 1]
+        if len(later) < 4 or later[0] not in _SETTING or later[1] not in _IT:
+            continue
+        at = next((i for i, w in enumerate(later) if w in ("to", "at")), None)
+        if at is None or at + 1 >= len(later):
+            continue
+        words = segments[n]
+        for phrase in vague:
+            k = len(phrase)
+            start = next((i for i in range(len(words) - k + 1) if words[i : i + k] == phrase), None)
+            if start is not None:
+                segments[n] = [*words[:start], *later[at:], *words[start + k :]]
+                segments[n + 1] = []
+                break
+    return [s for s in segments if s]
+
+
+def _name_restated(segments: list[list[str]], phrases: set[str]) -> list[list[str]]:
+    out: list[list[str]] = []
+    for segment in segments:
+        name = segment[1:] if segment[:1] and segment[0] in _ARTICLES else segment
+        said = " ".join(name)
+        earlier = f" {' '.join(w for s in out for w in s)} "
+        if len(segment) > 1 and segment[0] in _ARTICLES and f" {' '.join(segment)} " in earlier:
+            continue  # "the lamp. The lamp.": said again as it was
+        if not out or not name or said not in phrases:
+            out.append(segment)
+            continue
+        last = name[-1]
+        for s in reversed(out):
+            spots = [i for i in range(1, len(s)) if s[i] == last and s[i - 1] in _ARTICLES]
+            if spots:
+                i = spots[-1]
+                s[i : i + 1] = name
+                break
+        else:
+            out.append(segment)
+    return out
+
+
+def _kind_in_room(segments: list[list[str]], vocabulary: Vocabulary) -> list[list[str]]:
+    devices = _devices(vocabulary)
+    if not devices:
+        return segments
+    kinds = {noun for nouns in command_language().type_nouns.values() for noun in nouns if " " not in noun}
+    room: str | None = None
+    out: list[list[str]] = []
+    for segment in segments:
+        words = list(segment)
+        i = 0
+        while i < len(words):
+            named = _device_at(words, i, devices)
+            if named is not None:
+                room, size = named[2], len(named[0].split())
+                i += size
+                continue
+            word = words[i]
+            before = words[i - 1] if i else ""
+            counted = set(words[max(0, i - 2) : i]) & _ALL  # "close all the blinds": every one
+            if room is not None and word in kinds and before in _ALONE_AFTER and not counted:
+                stem = word[:-1] if word.endswith("s") else word
+                there = {d for p, d, r in devices if r == room and p.split()[-1] in (word, stem, stem + "s")}
+                if len(there) == 1:
+                    own = there.pop().replace("_", " ").split()  # the device's own name
+                    words[i : i + 1] = own
+                    i += len(own)
+                    continue
+            i += 1
+        out.append(words)
+    return out
+
+
+def _device_at(
+    words: list[str], at: int, devices: tuple[tuple[str, str, str], ...]
+) -> tuple[str, str, str] | None:
+    """The device whose whole phrase (of two words or more) is said from ``at``, the longest; else None."""
+    best = None
+    for device in devices:
+        phrase = device[0].split()
+        if (
+            len(phrase) > 1
+            and words[at : at + len(phrase)] == phrase
+            and (best is None or len(phrase) > len(best[0].split()))
+        ):
+            best = device
+    return best
