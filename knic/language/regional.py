@@ -65,6 +65,16 @@ _FOR_WHOM = frozenset(
 #: the words of a Singaporean question tag said last ("can?", "can or not?", "or not?")
 _TAGS = (("can", "or", "not"), ("can", "anot"), ("or", "not"), ("can",))
 _DETERMINERS = frozenset({"the", "a", "an", "my", "your", "this", "that", "his", "her", "our", "their"})
+#: where the speaker says they left a thing, hedged: "i left"
+_LEFT = (
+    ("i", "seem", "to", "have", "left"),
+    ("i", "must", "have", "left"),
+    ("i", "think", "i", "left"),
+    ("i", "have", "left"),
+    ("i've", "left"),
+)
+#: what a person said of after a request did: a remark ("huiling wanted to look at malaya")
+_SUBJECTS = frozenset({"he", "she", "they"})
 #: a numbered step opening a sentence ("step one: go to the kitchen")
 _STEP = frozenset({"step", "stage"})
 _NUMBERS = frozenset(
@@ -97,6 +107,12 @@ def regional_words(tokens: list[str]) -> list[str]:
         out.pop()  # "the hall light and the landing light both"
     if len(out) > 3 and out[-2:] == ["and", "all"]:
         out = out[:-2]  # "... and the landing light an' all": as well
+    for said in _LEFT:
+        n = len(said)
+        at = next((i for i in range(len(out) - n + 1) if tuple(out[i : i + n]) == said), None)
+        if at is not None:
+            out[at : at + n] = ["i", "left"]  # "i seem to have left them on the reading chair"
+            break
     return _got_to(out)
 
 
@@ -145,6 +161,8 @@ def regional_said(segments: list[list[str]], vocabulary: Vocabulary) -> list[lis
     firsts = firsts | {p.split()[-1] for p in things}
     out: list[list[str]] = []
     segments = [s for s in segments if len(s) > 1 or s[0] not in _NUMBERS | {"to", "for"}] or segments
+    segments = _aside_in_question(segments)
+    people = {t.phrase for t in vocabulary.terms if vocabulary.is_subtype(t.type, "person")}
     for n, segment in enumerate(segments):
         words = list(segment)
         if words[:1] and words[0] in _STEP and words[1:2] and words[1] in _NUMBERS:
@@ -160,12 +178,35 @@ def regional_said(segments: list[list[str]], vocabulary: Vocabulary) -> list[lis
         ]  # "shut them blinds in the gym"
         if len(segments) > 1 and words[:2] in (["i'm", "off"], ["we're", "off"]) and len(words) > 2:
             continue  # "..., i'm off to the loo": where the speaker is going, no request
+        if n and len(words) > 2 and (words[0] in _SUBJECTS | people) and words[1].endswith("ed"):
+            continue  # "... to the dining table? huiling wanted to look at malaya": what someone did
         if n == len(segments) - 1 or len(words) <= 3:
             words = _tag_dropped(words, things)
         words = _come_here(words, things)
         words = _light_got(words, lights)
         if words:
             out.append(words)
+    return out
+
+
+def _aside_in_question(segments: list[list[str]]) -> list[list[str]]:
+    """ "where, I ask myself, has Haruka got to?": "where" and the question it opens, without the aside."""
+    out: list[list[str]] = []
+    skip = 0
+    for i, segment in enumerate(segments):
+        if skip:
+            skip -= 1
+            continue
+        after = segments[i + 2][:1] if i + 2 < len(segments) else []
+        if segment == ["where"] and after and after[0] in _VERBS_AFTER:
+            question = segments[i + 2]
+            gone = question[-2:] in (["got", "to"], ["gone", "to"]) or question[-1:] == ["gone"]
+            if question[0] in ("has", "have") and gone:  # "has haruka got to": where is haruka
+                question = ["is", *question[1 : -2 if question[-1] == "to" else -1]]
+            out.append(["where", *question])
+            skip = 2
+        else:
+            out.append(segment)
     return out
 
 

@@ -14,7 +14,9 @@ got wrong, each tried in the ERL apartment as well, with sentences of other spea
   ("Kit-kun", "Wilf-san"); a Singaporean question tag ("..., can?", "... or not?"), "got X in the Y or
   not?", "is it the X ...?", "where my handbag?", "take my mug come"; Southern US "get the light", "carry it
   on over to"; "where'd the biscuit tin get off to?"; a nurse's "step one: ..." and "1. ... 2. ..."; "where
-  my pen has got to" (a question's order inside another);
+  my pen has got to" (a question's order inside another); "I seem to have left them on ..." (where the
+  thing is); "Huiling wanted to ..." said after a request (a remark); "where, I ask myself, has Haruka got
+  to?" (an aside inside a question);
 * "tote" brings (American English), "the icebox" is the fridge, "position yourself next to" goes
   (``commands.yaml``, ``synonyms.yaml``); "the roof", "the terrace", "the mezzanine", "the gym" name the room
   whose name has them (``room_words``); a colon ends a stretch as a comma does ("one more thing before you
@@ -350,4 +352,49 @@ def test_words_and_stretches_in_the_apartment(vocabulary: Vocabulary) -> None:
     ]
     assert frames_read(vocabulary, "I wonder, and don't rush, where my glasses have got to") == [
         {"frame": "SEARCHING", "theme": "glasses"}
+    ]
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        (
+            "Bring me my reading glasses? I seem to have left them on the reading chair, as always.",
+            [
+                {
+                    "frame": "BRINGING",
+                    "theme": "reading_glasses",
+                    "source": "reading_chair",
+                    "beneficiary": "me",
+                }
+            ],
+        ),
+        (
+            "Could you take the atlas from the study bookcase to the dining table? Huiling wanted to see it.",
+            [{"frame": "BRINGING", "theme": "atlas", "source": "study_bookcase", "goal": "dining_table"}],
+        ),
+        (
+            "Where, I ask myself, has Haruka got to? She promised to show me her origami.",
+            [{"frame": "SEARCHING", "theme": "haruka"}],
+        ),
+    ],
+)
+def test_asides_and_remarks_around_a_request(
+    duplex: Vocabulary, text: str, frames: list[dict[str, str]]
+) -> None:
+    """Where the speaker left the thing, hedged ("I seem to have left them on ..."); what someone did,
+    said after the request ("Huiling wanted to ..."); an aside inside a question ("where, I ask myself,
+    has ...")."""
+    assert frames_read(duplex, text, "cornelius") == frames
+
+
+def test_asides_and_remarks_around_a_request_in_the_apartment(vocabulary: Vocabulary) -> None:
+    assert frames_read(vocabulary, "bring me my glasses, I must have left them on the bed") == [
+        {"frame": "BRINGING", "theme": "glasses", "source": "bed", "beneficiary": "me"}
+    ]
+    assert frames_read(vocabulary, "put the apple on the kitchen table. Tracy wanted it for lunch.") == [
+        {"frame": "PLACING", "theme": "apple", "goal": "kitchen_table"}
+    ]
+    assert frames_read(vocabulary, "where, tell me, is the remote?") == [
+        {"frame": "SEARCHING", "theme": "remote"}
     ]
