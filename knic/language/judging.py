@@ -143,19 +143,6 @@ class Judging:
             self._beam, self._asked = self._server.answer(), False
         return self._beam
 
-    def among_beam(self) -> str | None:
-        """The best of Whisper's own transcript and its beam's that the reader reads, by Whisper's score and
-        the command model's fit, without pocketsphinx: for an utterance Whisper is sure of but did not settle
-        for a word no command says ("bramp the juice": its beam holds "grab the juice ..."); None when Whisper
-        cannot answer or nothing fits (judging goes on with :meth:`finish` then)."""
-        beam = self._beam_answer()
-        if not isinstance(beam, list):
-            return None
-        if not self._scored([], [self._heard, *(heard_of(b) for b in beam)], self._fits) or not self._fits:
-            return None
-        best = max(self._fits, key=self._judged)
-        return best if self._fits[best] > TAKE_LOG_PROB else None
-
     def finish(self, first: Transcript, paths: Sequence[str]) -> Transcript | None:
         """The judged transcript, given pocketsphinx's (``first``: ``in_grammar`` when the reader reads it)
         and each acoustic model's best path (``paths``); None when Whisper cannot answer (pocketsphinx's
