@@ -23,6 +23,8 @@
   preposition comes before it ("take it to my boy");
 * a level said as a change ("turn the lamp up by 20 percent", "down by 10"): "a bit", a level meant but not
   said (the reader knows no present level: it asks how far); "halfway between off and full": "halfway";
+* a device asked to be done to in the passive ("have the lounge curtains opened", "get the lights switched
+  off"): the verb said first ("open the lounge curtains"), as a hotel guest speaks to staff;
 * "both" after "them" ("the tongs and the sun cream, bring them both to the kitchen"), "all" there before
   where they go ("put them all on the table"), and "both of them": "them".
 """
@@ -91,9 +93,38 @@ _OUR_DOING = frozenset({"going", "having", "heading", "leaving", "watching", "ea
 _NAMING = frozenset({"a", "an", "the", "my", "your", "this", "that", "in", "on", "at"})
 
 
+#: past participles of what is done to a device, said after it in "have the X opened" -> the verb
+_DONE = {
+    "opened": "open",
+    "closed": "close",
+    "shut": "shut",
+    "drawn": "draw",
+    "dimmed": "dim",
+    "lowered": "lower",
+    "raised": "raise",
+    "switched": "switch",
+    "turned": "turn",
+}
+#: what may come before "have" or "get" that asks for a thing done ("could you have ...")
+_ASKING_DONE = frozenset({"please", "could", "can", "would", "will", "you", "just", "kindly", "pip", "robot"})
+
+
+def had_done(tokens: list[str]) -> list[str]:
+    """A thing asked to be done to a device, in the passive ("have the lounge curtains opened, would you",
+    "could you get the lights switched off"): the verb said first ("open the lounge curtains")."""
+    at = next((i for i, t in enumerate(tokens) if t in ("have", "get")), None)
+    if at is None or any(t not in _ASKING_DONE for t in tokens[:at]):
+        return tokens
+    done = next((i for i in range(at + 2, min(len(tokens), at + 7)) if tokens[i] in _DONE), None)
+    if done is None or tokens[at + 1] not in ("the", "my", "all", "both", "your", "that", "those", "these"):
+        return tokens
+    return [*tokens[:at], _DONE[tokens[done]], *tokens[at + 1 : done], *tokens[done + 1 :]]
+
+
 def contracted(tokens: list[str]) -> list[str]:
     """``tokens`` (one stretch of a command, lower case) with the statements of the module docstring said as
     contractions."""
+    tokens = had_done(tokens)
     out: list[str] = []
     i = 0
     while i < len(tokens):

@@ -77,7 +77,7 @@ def refused(segments: list[list[str]], chunks: Callable[[Sequence[str]], list[Ch
 def told_there(segments: list[list[str]], chunks: Callable[[Sequence[str]], list[Chunk]]) -> str | None:
     """The word for a thing said to be there ("there is a parcel at the door", "there's a spider in the bath")
     that names nothing of the world, when the command then acts on "it" or "them" and names no other thing
-    but places; else None."""
+    but places, or for one said alone before such a request (:func:`_said_alone`); else None."""
     words = [t for segment in segments for t in segment]
     said = chunks(words)
     for i, chunk in enumerate(said[:-2]):
@@ -88,7 +88,19 @@ def told_there(segments: list[list[str]], chunks: Callable[[Sequence[str]], list
         rest = said[at + 2 :]
         if any(c.kind == "pronoun" for c in rest) and not unplaced(said):  # places may be said
             return said[at + 1].text
-    return None
+    return _said_alone(segments, chunks)
+
+
+def _said_alone(segments: list[list[str]], chunks: Callable[[Sequence[str]], list[Chunk]]) -> str | None:
+    """The word for a thing said alone first ("the television, switch it on", "the fan, turn it on") that
+    names nothing of the world, when the next sentence acts on "it" or "them"; else None."""
+    if len(segments) < 2:
+        return None
+    first, then = chunks(segments[0]), chunks(segments[1])
+    if len(first) < 2 or first[0].kind != "det" or any(c.kind != "unknown" for c in first[1:]):
+        return None
+    acts = any(c.kind == "verb" for c in then) and any(c.kind == "pronoun" for c in then)
+    return " ".join(c.text for c in first[1:]) if acts else None
 
 
 #: what takes a request back when said last in a sentence of its own, after words of repair

@@ -18,7 +18,11 @@ apartment as well:
   put it to eighty percent"), a name said again longer ("the lamp. The lamp. The standard lamp"), a device
   named by its kind alone after another in the same room ("desk lamp to fifty, blind half open")
   (``knic.language.restating``); "little brighter", "bit dimmer" without their article ask how far as
-  "a little brighter" does (``commands.yaml``).
+  "a little brighter" does (``commands.yaml``);
+* a device asked to be done to in the passive, as a hotel guest asks staff ("have the lounge curtains opened,
+  would you", "get the hallway light switched off"): done (``knic.language.contracted``);
+* a thing the world lacks said alone before a request about "it" ("the television, switch it on") is refused
+  naming it, as "there is a parcel at the door, can you get it" is (``knic.language.remarks``).
 """
 
 from __future__ import annotations
@@ -27,6 +31,7 @@ from functools import lru_cache
 
 import pytest
 
+from knic.language import understand
 from knic.language.vocabulary import Vocabulary
 
 from .conftest import frames_read, world_of
@@ -263,3 +268,50 @@ def test_all_of_a_kind_stays_all_of_them() -> None:
     """ "close all the blinds" after a device of one room: every blind, not the one in that room."""
     frames = frames_read(world_of(FAMILY), "Turn off the kitchen light and close all the blinds", "priya")
     assert len([f for f in frames if f["frame"] == "OPERATING"]) > 2
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        (
+            "could you have the bedroom blinds closed",
+            [{"frame": "OPERATING", "device": "bedroom_blinds", "state": "closed"}],
+        ),
+        (
+            "Get the hallway light switched off please",
+            [{"frame": "OPERATING", "device": "hallway_light", "state": "off"}],
+        ),
+    ],
+)
+def test_a_device_asked_for_in_the_passive(
+    vocabulary: Vocabulary, text: str, frames: list[dict[str, str]]
+) -> None:
+    assert frames_read(vocabulary, text) == frames
+
+
+def test_the_passive_in_the_guest_house(house: Vocabulary) -> None:
+    assert frames_read(house, "Have the lounge curtains opened, would you", "imogen") == [
+        {"frame": "OPERATING", "device": "lounge_curtains", "state": "open"}
+    ]
+
+
+@pytest.mark.parametrize(
+    ("file", "text", "word"),
+    [
+        ("erl", "The fan, switch it on", "fan"),
+        ("erl", "The radio, turn it off", "radio"),
+        (HOUSE, "The television, switch it on", "television"),
+    ],
+)
+def test_a_thing_said_alone_that_the_world_lacks_is_named(
+    vocabulary: Vocabulary, file: str, text: str, word: str
+) -> None:
+    world = vocabulary if file == "erl" else _house()
+    result = understand(text, world, speaker="annie" if file == "erl" else "cornelius")
+    assert not result.accepted and f"'{word}'" in result.reason
+
+
+def test_a_thing_the_world_has_said_alone_is_acted_on(vocabulary: Vocabulary) -> None:
+    assert frames_read(vocabulary, "The cup, bring it to me") == [
+        {"frame": "BRINGING", "theme": "cup", "beneficiary": "me"}
+    ]
