@@ -65,12 +65,16 @@ def test_the_first_model_is_kept_unless_another_fits_clearly_better() -> None:
 def test_another_engine_s_voice_is_heard_where_the_adaptation_alone_fails(
     auto: NgramRecognizer, vocabulary: Vocabulary
 ) -> None:
-    """festival's kal diphones, "check the kitchen for the lemon": the adaptation alone heard "check the
-    kitchen for the"."""
-    entry = _entry(ENGINES, "engines_dev_053.wav")
-    assert _frames_heard(auto, vocabulary, ENGINES, "engines_dev_053.wav") == entry["frames"]
+    """festival's and flite's voices: the ensemble hears each right, the espeak-ng adaptation alone not all
+    (it has heard "check the kitchen for the" for the lemon, and "at" for "pick up the lemon")."""
+    files = ["engines_dev_053.wav", "engines_dev_010.wav", "engines_dev_001.wav"]
     adapted = NgramRecognizer(vocabulary, acoustic_model="espeak", second_opinion=False)
-    assert _frames_heard(adapted, vocabulary, ENGINES, "engines_dev_053.wav") != entry["frames"]
+    wrong = 0
+    for file in files:
+        entry = _entry(ENGINES, file)
+        assert _frames_heard(auto, vocabulary, ENGINES, file) == entry["frames"], file
+        wrong += _frames_heard(adapted, vocabulary, ENGINES, file) != entry["frames"]
+    assert wrong >= 1
 
 
 def test_espeak_voices_are_still_heard(auto: NgramRecognizer, vocabulary: Vocabulary) -> None:
