@@ -10,6 +10,8 @@
 * "together" (or "at once", "in one go") said last says how, not what: dropped; a sentence then left with a
   verb and "it" or "them" only, after a sentence that named them ("bring me the milk and the butter, could
   you take them together"), asks nothing more (:func:`together_dropped`).
+* Who a thing is for, said last after where it goes, when the world knows no such one ("put the walking map
+  on the coffee table for the guests"): says why, dropped (:func:`_for_unknown_dropped`).
 * A terse sentence of a device and its state beside a sentence of another kind ("travel mug to kitchen,
   landing light off", "bring the mug to the kitchen, landing light off"): the device's is said with "turn",
   and a terse one of things and where they go ("travel mug to kitchen") with "take", so that each is an
@@ -38,7 +40,30 @@ def sentences_read(
     """The sentences with the rules of the module docstring applied."""
     segments = reasons_dropped(together_dropped(segments, chunks), chunks)
     segments = done_dropped(segments, chunks, lambda c: any(is_a(t, "person") for t in c.terms))
-    return verbs_said(segments, chunks, is_a)
+    return verbs_said([_for_unknown_dropped(s, chunks) for s in segments], chunks, is_a)
+
+
+#: where a thing is put or taken, said before who it is for
+_WHERE = frozenset({"on", "in", "into", "onto", "to", "at", "by", "next to", "on top of", "inside"})
+
+
+def _for_unknown_dropped(segment: list[str], chunks: Callable[[Sequence[str]], list[Chunk]]) -> list[str]:
+    """A sentence without who it is for, said last after where the thing goes, when the world knows no such
+    one ("put the walking map on the coffee table for the guests", "... in the fridge for later"): whom the
+    robot cannot hand a thing to says why, not where."""
+    said = chunks(segment)
+    at = next((i for i in range(len(said) - 1, 0, -1) if said[i].text == "for"), None)
+    if at is None or not any(c.kind == "unknown" for c in said[at + 1 :]):
+        return segment
+    if any(c.kind not in ("det", "unknown") for c in said[at + 1 :]):
+        return segment
+    placed = any(
+        c.kind == "prep" and c.text in _WHERE and any(d.kind == "entity" for d in said[i + 1 : at])
+        for i, c in enumerate(said[:at])
+    )
+    if not placed or not any(c.kind == "verb" for c in said[:at]):
+        return segment
+    return segment[: sum(len(c.text.split()) for c in said[:at])]
 
 
 #: how a sentence giving the reason for a request opens ("..., as I wish to inspect the washing line")
@@ -102,11 +127,17 @@ def done_dropped(
     return kept if acts and len(kept) < len(segments) else segments
 
 
+#: pasts that are no "-ed" word, of what happens to someone ("tobias cut his finger", "she hurt her knee")
+_HAPPENED = frozenset({"cut", "hurt", "broke", "fell", "lost", "left", "spilt", "burnt", "bumped", "banged"})
+
+
 def _done(said: list[Chunk], is_person: Callable[[Chunk], bool]) -> bool:
-    """Whether a sentence is a person, a word in "-ed" the tables do not know, and no name after it."""
+    """Whether a sentence is a person, a word in "-ed" the tables do not know (or a past of what happens to
+    someone, :data:`_HAPPENED`), and no name after it."""
     if len(said) < 2 or said[0].kind != "entity" or not is_person(said[0]):
         return False
-    if said[1].kind != "unknown" or not said[1].text.endswith("ed"):
+    past = said[1].kind == "unknown" and said[1].text.endswith("ed")
+    if not past and said[1].text not in _HAPPENED:  # "tobias cut his finger": "cut" is also the robot's verb
         return False
     return not any(c.terms or c.kind in ("verb", "me") for c in said[2:])
 

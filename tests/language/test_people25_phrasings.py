@@ -22,7 +22,10 @@ apartment as well:
 * a device asked to be done to in the passive, as a hotel guest asks staff ("have the lounge curtains opened,
   would you", "get the hallway light switched off"): done (``knic.language.contracted``);
 * a thing the world lacks said alone before a request about "it" ("the television, switch it on") is refused
-  naming it, as "there is a parcel at the door, can you get it" is (``knic.language.remarks``).
+  naming it, as "there is a parcel at the door, can you get it" is (``knic.language.remarks``);
+* what happened to someone, said beside a request with a past that is also a verb of the robot's ("Tobias cut
+  his finger", "Jack hurt his knee"), is talk; who a thing is for, said last after where it goes, when the
+  world knows no such one ("... on the coffee table for the guests"), says why (``knic.language.sentences``).
 """
 
 from __future__ import annotations
@@ -315,3 +318,49 @@ def test_a_thing_the_world_has_said_alone_is_acted_on(vocabulary: Vocabulary) ->
     assert frames_read(vocabulary, "The cup, bring it to me") == [
         {"frame": "BRINGING", "theme": "cup", "beneficiary": "me"}
     ]
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        (
+            "Bring me the tissues, Jack cut his finger",
+            [{"frame": "BRINGING", "theme": "tissues", "beneficiary": "me"}],
+        ),
+        (
+            "put the apple on the kitchen table for the kids",
+            [{"frame": "PLACING", "theme": "apple", "goal": "kitchen_table"}],
+        ),
+        # a person the robot knows is still said; a verb's own object stays
+        ("Jack cut the hallway light", [{"frame": "OPERATING", "device": "hallway_light", "state": "off"}]),
+    ],
+)
+def test_what_happened_and_for_whom(vocabulary: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
+    assert frames_read(vocabulary, text) == frames
+
+
+@pytest.mark.parametrize(
+    ("text", "speaker", "frames"),
+    [
+        (
+            "Weh di first aid kit deh? Tobias cut him finger",
+            "dolores",
+            [{"frame": "SEARCHING", "theme": "first_aid_kit"}],
+        ),
+        (
+            "Put t'walking map on t'coffee table for t'guests",
+            "keith",
+            [{"frame": "PLACING", "theme": "walking_map", "goal": "coffee_table"}],
+        ),
+    ],
+)
+def test_what_happened_and_for_whom_in_the_guest_house(
+    house: Vocabulary, text: str, speaker: str, frames: list[dict[str, str]]
+) -> None:
+    assert frames_read(house, text, speaker) == frames
+
+
+def test_who_a_thing_is_for_stays_when_nothing_says_where(vocabulary: Vocabulary) -> None:
+    """ "bring the towel for the dog": no place said first, so the thing the world lacks is still named."""
+    result = understand("bring me the cup for the tea", vocabulary, speaker="annie")
+    assert not result.accepted and "'tea'" in result.reason
