@@ -9,7 +9,8 @@ Two steps, both general English (no world's names):
     t'study"): "the";
   - a dropped "g" written with an apostrophe ("fixin'", "watchin'", "nothin'"): the "-ing" word; and "gi'"
     (give), "an'" (and), "o'" (of);
-  - a Japanese honorific after a name ("Kit-kun", "Wilf-san", "Haruka-chan", "Tanaka-sama"): left out;
+  - a Japanese honorific after a name ("Kit-kun", "Wilf-san", "Haruka-chan", "Tanaka-sama"), the particles
+    and interjections of Singaporean English ("lah", "lor", "aiyo", "alamak") and "sumimasen": left out;
   - "where" straight before a possessive or an article, its verb left out ("where my handbag?", a learner's
     and Singaporean English): "where is";
   - "on" before "up", "over", "down", "out" or "back" and then "to" ("tote it on up to the guest room",
@@ -50,6 +51,9 @@ _NORTHERN = {"summat": "something", "owt": "anything", "nowt": "nothing"}
 _DROPPED_G = re.compile(r"^([a-z]+)in'$")
 #: Japanese honorifics said after a name
 _HONORIFICS = frozenset({"san", "kun", "chan", "sama"})
+#: particles and interjections of Singaporean English, and the Japanese "excuse me", said around a request
+#: (read in text only: as fillers they would join the speech model's filler loop)
+_PARTICLES = frozenset({"lah", "leh", "lor", "hor", "meh", "aiyo", "aiyah", "alamak", "wah", "sumimasen"})
 #: what "where" stands before when its "is" is left out
 _POSSESSIVES = frozenset({"my", "the", "your", "his", "her", "our", "their", "me"})
 #: what makes "where ... " a question with a verb of its own ("where my pen has got to")
@@ -92,8 +96,8 @@ def regional_words(tokens: list[str]) -> list[str]:
             out += (_CLIPPED.get(token) or _NORTHERN[token]).split()
         elif dropped := _DROPPED_G.match(token):
             out.append(dropped.group(1) + "ing")
-        elif token in _HONORIFICS and out and out[-1] not in _DETERMINERS:
-            continue  # "kit kun": Kit
+        elif (token in _HONORIFICS and out and out[-1] not in _DETERMINERS) or token in _PARTICLES:
+            continue  # "kit kun": Kit; "off the gym light lah"
         elif token == "on" and tokens[i + 1 : i + 2] in ([w] for w in _ON_WHERE) and "to" in tokens[i + 2 :]:
             continue  # "tote it on up to the guest room"
         else:

@@ -21,7 +21,9 @@ got wrong, each tried in the ERL apartment as well, with sentences of other spea
   (``commands.yaml``, ``synonyms.yaml``); "the roof", "the terrace", "the mezzanine", "the gym" name the room
   whose name has them (``room_words``); a colon ends a stretch as a comma does ("one more thing before you
   dash off: ...", not "4:30"; ``knic.language.tidy``); "still" before a place said with a possessive ("is
-  the tablet still on Kit's desk?") is dropped as before "the" (``knic.language.contracted``).
+  the tablet still on Kit's desk?") is dropped as before "the" (``knic.language.contracted``); "shove" puts,
+  "assist X to Y" accompanies, "you seen X?" asks where it is; Singaporean particles ("lah", "lor") and
+  "sumimasen" are left out.
 """
 
 from __future__ import annotations
@@ -397,4 +399,53 @@ def test_asides_and_remarks_around_a_request_in_the_apartment(vocabulary: Vocabu
     ]
     assert frames_read(vocabulary, "where, tell me, is the remote?") == [
         {"frame": "SEARCHING", "theme": "remote"}
+    ]
+
+
+@pytest.mark.parametrize(
+    ("text", "speaker", "frames"),
+    [
+        ("off the gym light lah", "huiling", [{"frame": "OPERATING", "device": "gym_light", "state": "off"}]),
+        (
+            "Alamak, put the rice cooker back on the worktop lor",
+            "huiling",
+            [{"frame": "PLACING", "theme": "rice_cooker", "goal": "worktop"}],
+        ),
+        (
+            "Sumimasen, please bring me umbrella",
+            "haruka",
+            [{"frame": "BRINGING", "theme": "umbrella", "beneficiary": "me"}],
+        ),
+        ("Y'all seen the tv remote?", "darlene", [{"frame": "SEARCHING", "theme": "tv_remote"}]),
+        (
+            "Shove t'thermos on t'bedside cabinet",
+            "wilf",
+            [{"frame": "PLACING", "theme": "thermos", "goal": "bedside_cabinet"}],
+        ),
+        (
+            "Please assist Wilf to the family bathroom",
+            "marisol",
+            [{"frame": "ACCOMPANYING", "theme": "wilf", "goal": "family_bathroom"}],
+        ),
+    ],
+)
+def test_more_words_of_the_six_voices(
+    duplex: Vocabulary, text: str, speaker: str, frames: list[dict[str, str]]
+) -> None:
+    """Singaporean particles ("lah", "lor", "alamak") and "sumimasen" are left out
+    (``knic.language.regional``); "you seen ...?" asks where a thing is; "shove" puts; "assist X to Y"
+    accompanies (``commands.yaml``)."""
+    assert frames_read(duplex, text, speaker) == frames
+
+
+def test_more_words_of_the_six_voices_in_the_apartment(vocabulary: Vocabulary) -> None:
+    assert frames_read(vocabulary, "bring me the apple lah") == [
+        {"frame": "BRINGING", "theme": "apple", "beneficiary": "me"}
+    ]
+    assert frames_read(vocabulary, "anyone seen my glasses?") == [{"frame": "SEARCHING", "theme": "glasses"}]
+    assert frames_read(vocabulary, "shove the cup in the kitchen cabinet") == [
+        {"frame": "PLACING", "theme": "cup", "goal": "kitchen_cabinet"}
+    ]
+    assert frames_read(vocabulary, "assist tracy to the bedroom") == [
+        {"frame": "ACCOMPANYING", "theme": "tracy", "goal": "bedroom"}
     ]
