@@ -32,6 +32,8 @@ Two steps, both general English (no world's names):
     English): "is";
   - "take X come" ("go and take my mug come", Singaporean English: bring it here): "take X to me";
   - "get the light" with no state said ("get the light in the gym, hon", American English): switched off;
+  - what a device is set for, said last in words that name nothing of the world ("reading lamp to forty
+    percent for the assessment"): left out;
   - "step one", "step two" opening a sentence (a nurse's or a manual's numbered steps), and a sentence that
     is only a number ("1. turn on the light. 2. take wilf ...", the "2" read as "to"): left out.
 """
@@ -186,11 +188,27 @@ def regional_said(segments: list[list[str]], vocabulary: Vocabulary) -> list[lis
             continue  # "... to the dining table? huiling wanted to look at malaya": what someone did
         if n == len(segments) - 1 or len(words) <= 3:
             words = _tag_dropped(words, things)
-        words = _come_here(words, things)
+        words = _come_here(_purpose_dropped(words, firsts, people), things)
         words = _light_got(words, lights)
         if words:
             out.append(words)
     return out
+
+
+#: what says a device's state or level ("to forty percent", "on", "halfway")
+_SETTINGS = frozenset({"percent", "on", "off", "open", "closed", "shut", "half", "halfway", "full", "fully"})
+
+
+def _purpose_dropped(words: list[str], names: frozenset[str], people: set[str]) -> list[str]:
+    """ "reading lamp to forty percent for the assessment": what a device is set for, said last with words
+    that name nothing of the world, is left out (not a thing the world lacks)."""
+    if "for" not in words[1:] or not _SETTINGS & set(words):
+        return words
+    at = len(words) - 1 - words[::-1].index("for")
+    said = words[at + 1 :]
+    if said[:1] and said[0] in _DETERMINERS and not any(w in names or w in people for w in said):
+        return words[:at]
+    return words
 
 
 def _aside_in_question(segments: list[list[str]]) -> list[list[str]]:

@@ -23,7 +23,7 @@ got wrong, each tried in the ERL apartment as well, with sentences of other spea
   dash off: ...", not "4:30"; ``knic.language.tidy``); "still" before a place said with a possessive ("is
   the tablet still on Kit's desk?") is dropped as before "the" (``knic.language.contracted``); "shove" puts,
   "assist X to Y" accompanies, "you seen X?" asks where it is; Singaporean particles ("lah", "lor") and
-  "sumimasen" are left out.
+  "sumimasen" are left out; what a device is set for ("... to forty percent for the assessment") is left out.
 """
 
 from __future__ import annotations
@@ -449,3 +449,16 @@ def test_more_words_of_the_six_voices_in_the_apartment(vocabulary: Vocabulary) -
     assert frames_read(vocabulary, "assist tracy to the bedroom") == [
         {"frame": "ACCOMPANYING", "theme": "tracy", "goal": "bedroom"}
     ]
+
+
+def test_what_a_device_is_set_for_is_left_out(duplex: Vocabulary, vocabulary: Vocabulary) -> None:
+    """ "reading lamp to forty percent for the assessment": the purpose names nothing of the world; a thing
+    brought "for the walk" still refuses the walk, and "for" a person stays."""
+    assert frames_read(duplex, "Reading lamp to forty percent for the assessment", "marisol") == [
+        {"frame": "OPERATING", "device": "reading_lamp", "state": "40"}
+    ]
+    assert frames_read(vocabulary, "turn the dimmer to half for the film") == [
+        {"frame": "OPERATING", "device": "living_room_dimmer", "state": "50"}
+    ]
+    result = understand("bring me the cup for the walk", vocabulary, speaker="annie")
+    assert not result.accepted and "walk" in result.reason
