@@ -10,6 +10,8 @@
 * "together" (or "at once", "in one go") said last says how, not what: dropped; a sentence then left with a
   verb and "it" or "them" only, after a sentence that named them ("bring me the milk and the butter, could
   you take them together"), asks nothing more (:func:`together_dropped`).
+* An aside after a request that tells who or what was meant in words the world lacks, naming only a place
+  ("find Imogen for me. Imogen! The young lady from the bluebell room."): dropped (:func:`_asides_dropped`).
 * Who a thing is for, said last after where it goes, when the world knows no such one ("put the walking map
   on the coffee table for the guests"): says why, dropped (:func:`_for_unknown_dropped`).
 * A terse sentence of a device and its state beside a sentence of another kind ("travel mug to kitchen,
@@ -40,9 +42,40 @@ def sentences_read(
     """The sentences with the rules of the module docstring applied."""
     segments = reasons_dropped(together_dropped(segments, chunks), chunks)
     segments = done_dropped(segments, chunks, lambda c: any(is_a(t, "person") for t in c.terms))
+    segments = _asides_dropped(segments, chunks, is_a)
     return verbs_said([_for_unknown_dropped(s, chunks) for s in segments], chunks, is_a)
 
 
+def _asides_dropped(
+    segments: list[list[str]],
+    chunks: Callable[[Sequence[str]], list[Chunk]],
+    is_a: Callable[[Term, str], bool],
+) -> list[list[str]]:
+    """The sentences without an aside after a request that tells who or what was meant in words the world
+    lacks, naming only a place ("find Imogen for me. Imogen! The young lady from the bluebell room."): the
+    request said it already."""
+    out: list[list[str]] = []
+    for segment in segments:
+        said = chunks(segment)
+        named = [c for c in said if c.kind == "entity"]
+        aside = (
+            any(c.kind == "verb" for s in out for c in chunks(s))
+            and not any(c.kind in ("verb", "me", "pronoun", "state", "level", "number") for c in said)
+            and any(c.kind == "unknown" for c in said)
+            and not (_SAYING_WHERE | {"one", "ones"}) & set(segment)  # "..., it's in the office": where it is
+            and named
+            and all(any(is_a(t, "room") or is_a(t, "furniture") for t in c.terms) for c in named)
+        )
+        if not aside:
+            out.append(segment)
+    return out
+
+
+#: what says where a thing or someone is, not who or what is meant ("it's in the office", "i'm in the bedroom")
+_SAYING_WHERE = frozenset(
+    {"it's", "they're", "he's", "she's", "he'll", "she'll", "it'll", "is", "are", "was", "were", "be", "i'm"}
+    | {"i", "we", "we're", "you", "you're", "i'll", "we'll", "am"}
+)
 #: where a thing is put or taken, said before who it is for
 _WHERE = frozenset({"on", "in", "into", "onto", "to", "at", "by", "next to", "on top of", "inside"})
 

@@ -25,7 +25,9 @@ apartment as well:
   naming it, as "there is a parcel at the door, can you get it" is (``knic.language.remarks``);
 * what happened to someone, said beside a request with a past that is also a verb of the robot's ("Tobias cut
   his finger", "Jack hurt his knee"), is talk; who a thing is for, said last after where it goes, when the
-  world knows no such one ("... on the coffee table for the guests"), says why (``knic.language.sentences``).
+  world knows no such one ("... on the coffee table for the guests"), says why; an aside after a request
+  telling who was meant in words the world lacks, naming only a place ("Imogen! The young lady from the
+  bluebell room."), is dropped; "..., it's in the office" still says where (``knic.language.sentences``).
 """
 
 from __future__ import annotations
@@ -364,3 +366,17 @@ def test_who_a_thing_is_for_stays_when_nothing_says_where(vocabulary: Vocabulary
     """ "bring the towel for the dog": no place said first, so the thing the world lacks is still named."""
     result = understand("bring me the cup for the tea", vocabulary, speaker="annie")
     assert not result.accepted and "'tea'" in result.reason
+
+
+def test_an_aside_after_a_request_is_dropped(vocabulary: Vocabulary, house: Vocabulary) -> None:
+    assert frames_read(vocabulary, "Find Tracy. The tall lady from the kitchen.") == [
+        {"frame": "SEARCHING", "theme": "tracy"}
+    ]
+    assert frames_read(
+        house, "Find Imogen for me. Imogen! The young lady from the bluebell room.", "cornelius"
+    ) == [{"frame": "SEARCHING", "theme": "imogen"}]
+
+
+def test_where_a_thing_is_is_no_aside(vocabulary: Vocabulary) -> None:
+    result = understand("bring me the cup, the blue one from the kitchen", vocabulary, speaker="annie")
+    assert not result.accepted and "'blue'" in result.reason
