@@ -71,7 +71,7 @@ def _asides_dropped(
     return out
 
 
-#: what says where a thing or someone is, not who or what is meant ("it's in the office", "i'm in the bedroom")
+#: what says where a thing or someone is, not who or what is meant ("it's in the office", "i'm in bed")
 _SAYING_WHERE = frozenset(
     {"it's", "they're", "he's", "she's", "he'll", "she'll", "it'll", "is", "are", "was", "were", "be", "i'm"}
     | {"i", "we", "we're", "you", "you're", "i'll", "we'll", "am"}
