@@ -8,7 +8,7 @@ Two steps, both general English (no world's names):
   - the Yorkshire and Lancashire article "t'" joined to its noun ("put t'light on", "fetch us t'atlas from
     t'study"): "the";
   - a dropped "g" written with an apostrophe ("fixin'", "watchin'", "nothin'"): the "-ing" word; and "gi'"
-    (give), "an'" (and), "o'" (of);
+    (give), "an'" (and), "o'" (of), "'ere" (here);
   - a Japanese honorific after a name ("Kit-kun", "Wilf-san", "Haruka-chan", "Tanaka-sama"), the particles
     and interjections of Singaporean English ("lah", "lor", "aiyo", "alamak") and "sumimasen": left out;
   - "where" straight before a possessive or an article, its verb left out ("where my handbag?", a learner's
@@ -47,7 +47,7 @@ from knic.language.vocabulary import Vocabulary
 
 #: a Yorkshire "t'" before its noun; "gi'", "an'", "o'"; a dropped "g" ("fixin'")
 _ARTICLE = re.compile(r"^t'([a-z].*)$")
-_CLIPPED = {"gi'": "give", "an'": "and", "o'": "of", "where'd": "where did"}
+_CLIPPED = {"gi'": "give", "an'": "and", "o'": "of", "where'd": "where did", "'ere": "here"}
 #: Northern English words for "something", "anything", "nothing"
 _NORTHERN = {"summat": "something", "owt": "anything", "nowt": "nothing"}
 _DROPPED_G = re.compile(r"^([a-z]+)in'$")

@@ -462,3 +462,9 @@ def test_what_a_device_is_set_for_is_left_out(duplex: Vocabulary, vocabulary: Vo
     ]
     result = understand("bring me the cup for the walk", vocabulary, speaker="annie")
     assert not result.accepted and "walk" in result.reason
+
+
+def test_here_with_its_h_dropped(vocabulary: Vocabulary) -> None:
+    assert frames_read(vocabulary, "bring t'remote over 'ere") == [
+        {"frame": "BRINGING", "theme": "remote", "beneficiary": "me"}
+    ]
