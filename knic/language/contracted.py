@@ -23,8 +23,9 @@
   preposition comes before it ("take it to my boy");
 * a level said as a change ("turn the lamp up by 20 percent", "down by 10"): "a bit", a level meant but not
   said (the reader knows no present level: it asks how far); "halfway between off and full": "halfway";
-* a device asked to be done to in the passive ("have the lounge curtains opened", "get the lights switched
-  off"): the verb said first ("open the lounge curtains"), as a hotel guest speaks to staff;
+* a thing asked to be done in the passive ("have the lounge curtains opened", "could I get the lights
+  switched off", "have the towel sent up to ..."): the verb said first ("open the lounge curtains"), as a
+  hotel guest speaks to staff;
 * "both" after "them" ("the tongs and the sun cream, bring them both to the kitchen"), "all" there before
   where they go ("put them all on the table"), and "both of them": "them".
 """
@@ -93,7 +94,7 @@ _OUR_DOING = frozenset({"going", "having", "heading", "leaving", "watching", "ea
 _NAMING = frozenset({"a", "an", "the", "my", "your", "this", "that", "in", "on", "at"})
 
 
-#: past participles of what is done to a device, said after it in "have the X opened" -> the verb
+#: past participles of what is done to a thing, said after it in "have the X opened" -> the verb
 _DONE = {
     "opened": "open",
     "closed": "close",
@@ -104,20 +105,38 @@ _DONE = {
     "raised": "raise",
     "switched": "switch",
     "turned": "turn",
+    "brought": "bring",
+    "sent": "send",
+    "taken": "take",
+    "carried": "carry",
+    "fetched": "fetch",
+    "delivered": "deliver",
+    "moved": "move",
 }
 #: what may come before "have" or "get" that asks for a thing done ("could you have ...")
-_ASKING_DONE = frozenset({"please", "could", "can", "would", "will", "you", "just", "kindly", "pip", "robot"})
+_ASKING_DONE = frozenset(
+    {"please", "could", "can", "would", "will", "you", "just", "kindly", "pip", "robot", "may", "i", "we"}
+)
 
 
 def had_done(tokens: list[str]) -> list[str]:
-    """A thing asked to be done to a device, in the passive ("have the lounge curtains opened, would you",
-    "could you get the lights switched off"): the verb said first ("open the lounge curtains")."""
+    """A thing asked to be done in the passive ("have the lounge curtains opened, would you", "could I get the
+    lights switched off", "please have the bath towel sent up to the bluebell room"): the verb said first
+    ("open the lounge curtains", "send the bath towel up to ...")."""
     at = next((i for i, t in enumerate(tokens) if t in ("have", "get")), None)
     if at is None or any(t not in _ASKING_DONE for t in tokens[:at]):
         return tokens
+    if tokens[at - 1 : at] in (["i"], ["we"]) and tokens[at - 2 : at - 1] not in (
+        ["could"],
+        ["can"],
+        ["may"],
+    ):
+        return tokens  # "i have the blinds closed already": said of oneself
     done = next((i for i in range(at + 2, min(len(tokens), at + 7)) if tokens[i] in _DONE), None)
-    if done is None or tokens[at + 1] not in ("the", "my", "all", "both", "your", "that", "those", "these"):
+    if done is None or tokens[at + 1] in ("to", "it", "them", "been", "got", "a", "an"):
         return tokens
+    if {"and", "then", "n"} & set(tokens[at:done]):
+        return tokens  # "get the cup and have it brought to me": two actions
     return [*tokens[:at], _DONE[tokens[done]], *tokens[at + 1 : done], *tokens[done + 1 :]]
 
 

@@ -19,8 +19,9 @@ apartment as well:
   named by its kind alone after another in the same room ("desk lamp to fifty, blind half open")
   (``knic.language.restating``); "little brighter", "bit dimmer" without their article ask how far as
   "a little brighter" does (``commands.yaml``);
-* a device asked to be done to in the passive, as a hotel guest asks staff ("have the lounge curtains opened,
-  would you", "get the hallway light switched off"): done (``knic.language.contracted``);
+* a thing asked to be done in the passive, as a hotel guest asks staff ("have the lounge curtains opened,
+  would you", "could I get the hallway light turned off", "have the bath towel sent up to ..."): done
+  (``knic.language.contracted``);
 * a thing the world lacks said alone before a request about "it" ("the television, switch it on") is refused
   naming it, as "there is a parcel at the door, can you get it" is (``knic.language.remarks``);
 * what happened to someone, said beside a request with a past that is also a verb of the robot's ("Tobias cut
@@ -286,17 +287,31 @@ def test_all_of_a_kind_stays_all_of_them() -> None:
             "Get the hallway light switched off please",
             [{"frame": "OPERATING", "device": "hallway_light", "state": "off"}],
         ),
+        (
+            "Could I get the hallway light turned off?",
+            [{"frame": "OPERATING", "device": "hallway_light", "state": "off"}],
+        ),
+        (
+            "Could you have the cup brought to the kitchen?",
+            [{"frame": "BRINGING", "theme": "cup", "goal": "kitchen"}],
+        ),
+        # two actions stay two, and a thing said done of oneself is no passive request
+        (
+            "get the cup and have it brought to me",
+            [{"frame": "BRINGING", "theme": "cup", "beneficiary": "me"}],
+        ),
     ],
 )
-def test_a_device_asked_for_in_the_passive(
-    vocabulary: Vocabulary, text: str, frames: list[dict[str, str]]
-) -> None:
+def test_asked_for_in_the_passive(vocabulary: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
     assert frames_read(vocabulary, text) == frames
 
 
 def test_the_passive_in_the_guest_house(house: Vocabulary) -> None:
     assert frames_read(house, "Have the lounge curtains opened, would you", "imogen") == [
         {"frame": "OPERATING", "device": "lounge_curtains", "state": "open"}
+    ]
+    assert frames_read(house, "Please have the bath towel sent up to the bluebell room", "imogen") == [
+        {"frame": "BRINGING", "theme": "bath_towel", "goal": "bluebell_room"}
     ]
 
 
