@@ -81,6 +81,8 @@ _LEFT = (
 )
 #: what a person said of after a request did: a remark ("huiling wanted to look at malaya")
 _SUBJECTS = frozenset({"he", "she", "they"})
+#: what "got" opening a sentence is said before when it asks for nothing ("got it", "got to go")
+_NOT_GOT = frozenset({"to", "it", "that", "this", "them", "you", "me", "ya", "him", "her"})
 #: a numbered step opening a sentence ("step one: go to the kitchen")
 _STEP = frozenset({"step", "stage"})
 _NUMBERS = frozenset(
@@ -173,7 +175,7 @@ def regional_said(segments: list[list[str]], vocabulary: Vocabulary) -> list[lis
         words = list(segment)
         if words[:1] and words[0] in _STEP and words[1:2] and words[1] in _NUMBERS:
             words = words[2:]  # "step two, take wilf to the bathroom"
-        if n == 0 and words[:1] == ["got"] and words[1:2] != ["to"]:
+        if n == 0 and words[:1] == ["got"] and words[1:2] and words[1] not in _NOT_GOT:
             words = ["is", "there", *words[1:]]  # "got oat milk in the fridge or not"
         if n == 0 and words[:2] == ["is", "it"] and words[2:3] and words[2] in _DETERMINERS:
             words = ["is", *words[2:]]  # "is it the tablet still on kit's desk"

@@ -464,6 +464,12 @@ def test_what_a_device_is_set_for_is_left_out(duplex: Vocabulary, vocabulary: Vo
     assert not result.accepted and "walk" in result.reason
 
 
+def test_got_it_asks_nothing(vocabulary: Vocabulary) -> None:
+    for text in ("got it, thanks", "got it"):
+        result = understand(text, vocabulary, speaker="annie")
+        assert not result.accepted and "action" in result.reason
+
+
 def test_here_with_its_h_dropped(vocabulary: Vocabulary) -> None:
     assert frames_read(vocabulary, "bring t'remote over 'ere") == [
         {"frame": "BRINGING", "theme": "remote", "beneficiary": "me"}
