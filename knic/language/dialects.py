@@ -13,7 +13,8 @@ one plain word, such as Jamaican "di" for "the", are ``spellings`` in ``commands
 * Northern English "tha" for "you" after a verb of asking ("has tha seen ...": "have you seen"); elsewhere
   "tha" is a typed "the" ("turn on tha light"); "it" or "them" with the person straight after, said last
   ("take it him", "give them her"): "to" that person;
-* Tagalog "paki-" (please) before a verb ("pakibring the sheets", "paki-close the curtains"): the verb;
+* Tagalog "paki-" (please) before a verb ("pakibring the sheets", "paki-close the curtains"): the verb; "po"
+  (politeness, "where po is the vacuum?") and Filipino English "for a while" (just a moment): dropped;
 * "wait on me" (American South, Scotland): "wait for me";
 * "come" or "go" before a state after "make" ("mek di bedside lamp come on", "make the lights go off"): the
   device made so;
@@ -76,6 +77,9 @@ def dialect_words(tokens: list[str]) -> list[str]:
                 out[-1:] = ["have" if before == "has" else before, "you"]
             else:
                 out.append("the")
+            continue
+        if token == "po" or (token == "for" and tokens[i : i + 2] == ["a", "while"]):
+            i += 0 if token == "po" else 2  # Tagalog "po", politeness; "for a while": just a moment
             continue
         if token.startswith("paki") and token[4:].isalpha() and len(token) > 5:
             token = token[4:]  # "pakibring"

@@ -8,8 +8,8 @@ apartment as well:
   for "go to", and "go" after the thing carried for "to" ("carry di teapot go a di kitchen")
   (``knic.language.dialects``);
 * Northern English "tha" for "you" after a verb of asking ("has tha seen ..."), and "take it him": to him;
-  Tagalog "paki-" before a verb ("pakibring"); "wait on me"; "make the lamp come on"; "like twenty" for a
-  level; "up the stairs to ..." (``knic.language.dialects``);
+  Tagalog "paki-" before a verb ("pakibring") and "po"; Filipino English "for a while"; "wait on me"; "make
+  the lamp come on"; "like twenty" for a level; "up the stairs to ..." (``knic.language.dialects``);
 * what is waited for after where the robot waits ("wait in the hall for the taxi driver") is dropped, as
   "wait for the postman" is (``knic.language.contracted``);
 * "the ref" (Filipino English) is the fridge, "the CR" (comfort room) a toilet or bathroom, a "ball cap" a
@@ -119,6 +119,12 @@ def test_jamaican_english_in_the_apartment(
         ),
         ("Weh di first aid kit deh?", "dolores", [{"frame": "SEARCHING", "theme": "first_aid_kit"}]),
         ("Has tha seen me car keys?", "keith", [{"frame": "SEARCHING", "theme": "car_keys"}]),
+        ("Where po is the vacuum?", "ligaya", [{"frame": "SEARCHING", "theme": "vacuum_cleaner"}]),
+        (
+            "Can you close the light of the landing for a while",
+            "ligaya",
+            [{"frame": "OPERATING", "device": "landing_light", "state": "off"}],
+        ),
         (
             "Mek di bedside lamp come on likkle bit, like twenty",
             "dolores",
@@ -149,6 +155,8 @@ def test_the_voices_of_the_guest_house(
             [{"frame": "BRINGING", "theme": "tablet", "beneficiary": "jack"}],
         ),
         ("Pakibring the apple to the kitchen", [{"frame": "BRINGING", "theme": "apple", "goal": "kitchen"}]),
+        ("Bring the cup po", [{"frame": "BRINGING", "theme": "cup", "beneficiary": "me"}]),
+        ("wait for a while in the kitchen", [{"frame": "MOTION", "goal": "kitchen"}]),
         (
             "Paki-close the bedroom blinds",
             [{"frame": "OPERATING", "device": "bedroom_blinds", "state": "closed"}],
