@@ -34,6 +34,7 @@ Two steps, both general English (no world's names):
   - "get the light" with no state said ("get the light in the gym, hon", American English): switched off;
   - what a device is set for, said last in words that name nothing of the world ("reading lamp to forty
     percent for the assessment"): left out;
+  - a thing said after a question about "it" or "they" ("where is it, the remote?"): what is asked for;
   - "step one", "step two" opening a sentence (a nurse's or a manual's numbered steps), and a sentence that
     is only a number ("1. turn on the light. 2. take wilf ...", the "2" read as "to"): left out.
 """
@@ -169,7 +170,7 @@ def regional_said(segments: list[list[str]], vocabulary: Vocabulary) -> list[lis
     firsts = firsts | {p.split()[-1] for p in things}
     out: list[list[str]] = []
     segments = [s for s in segments if len(s) > 1 or s[0] not in _NUMBERS | {"to", "for"}] or segments
-    segments = _aside_in_question(segments)
+    segments = _said_after(_aside_in_question(segments), things | firsts)
     people = {t.phrase for t in vocabulary.terms if vocabulary.is_subtype(t.type, "person")}
     for n, segment in enumerate(segments):
         words = list(segment)
@@ -211,6 +212,28 @@ def _purpose_dropped(words: list[str], names: frozenset[str], people: set[str]) 
     if said[:1] and said[0] in _DETERMINERS and not any(w in names or w in people for w in said):
         return words[:at]
     return words
+
+
+#: a question about a thing said before the thing itself ("where is it, the remote?")
+_WHERE_IT = (["where", "is", "it"], ["where's", "it"], ["where", "are", "they"], ["where", "are", "them"])
+
+
+def _said_after(segments: list[list[str]], names: frozenset[str]) -> list[list[str]]:
+    """ "where is it, the remote?", "where are they, my glasses?": the thing said after "it" or "they" is
+    what is asked for."""
+    out: list[list[str]] = []
+    for segment in segments:
+        thing = segment[1:] if segment[:1] and segment[0] in _DETERMINERS else segment
+        if (
+            out
+            and out[-1] in _WHERE_IT
+            and thing
+            and " ".join(thing) in names | {t.split()[-1] for t in names}
+        ):
+            out[-1] = ["where", "is", *segment]
+        else:
+            out.append(list(segment))
+    return out
 
 
 def _aside_in_question(segments: list[list[str]]) -> list[list[str]]:

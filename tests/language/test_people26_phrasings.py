@@ -23,7 +23,8 @@ got wrong, each tried in the ERL apartment as well, with sentences of other spea
   dash off: ...", not "4:30"; ``knic.language.tidy``); "still" before a place said with a possessive ("is
   the tablet still on Kit's desk?") is dropped as before "the" (``knic.language.contracted``); "shove" puts,
   "assist X to Y" accompanies, "you seen X?" asks where it is; Singaporean particles ("lah", "lor") and
-  "sumimasen" are left out; what a device is set for ("... to forty percent for the assessment") is left out.
+  "sumimasen" are left out; what a device is set for ("... to forty percent for the assessment") is left out;
+  "where is it, the remote?" asks for the remote; "position" puts a thing.
 """
 
 from __future__ import annotations
@@ -473,4 +474,16 @@ def test_got_it_asks_nothing(vocabulary: Vocabulary) -> None:
 def test_here_with_its_h_dropped(vocabulary: Vocabulary) -> None:
     assert frames_read(vocabulary, "bring t'remote over 'ere") == [
         {"frame": "BRINGING", "theme": "remote", "beneficiary": "me"}
+    ]
+
+
+def test_the_thing_said_after_it(duplex: Vocabulary, vocabulary: Vocabulary) -> None:
+    """ "where is it, the remote?": the thing said after "it" is what is asked for; "position" puts a thing,
+    "position yourself" goes."""
+    assert frames_read(vocabulary, "where is it, the remote?") == [{"frame": "SEARCHING", "theme": "remote"}]
+    assert frames_read(duplex, "where are they, my reading glasses?", "cornelius") == [
+        {"frame": "SEARCHING", "theme": "reading_glasses"}
+    ]
+    assert frames_read(vocabulary, "position the cup on the kitchen table") == [
+        {"frame": "PLACING", "theme": "cup", "goal": "kitchen_table"}
     ]
