@@ -24,8 +24,9 @@
 * a level said as a change ("turn the lamp up by 20 percent", "down by 10"): "a bit", a level meant but not
   said (the reader knows no present level: it asks how far); "halfway between off and full": "halfway";
 * a thing asked to be done in the passive ("have the lounge curtains opened", "could I get the lights
-  switched off", "have the towel sent up to ..."): the verb said first ("open the lounge curtains"), as a
-  hotel guest speaks to staff;
+  switched off", "have the towel sent up to ...", "I'd be grateful if the suitcase could be taken down to
+  ...", "arrange for the newspaper to be brought to ..."): the verb said first ("open the lounge curtains"),
+  as a hotel guest speaks to staff;
 * "both" after "them" ("the tongs and the sun cream, bring them both to the kitchen"), "all" there before
   where they go ("put them all on the table"), and "both of them": "them".
 """
@@ -123,6 +124,8 @@ def had_done(tokens: list[str]) -> list[str]:
     """A thing asked to be done in the passive ("have the lounge curtains opened, would you", "could I get the
     lights switched off", "please have the bath towel sent up to the bluebell room"): the verb said first
     ("open the lounge curtains", "send the bath towel up to ...")."""
+    if (wished := _wished_done(tokens)) is not None:
+        return wished
     at = next((i for i, t in enumerate(tokens) if t in ("have", "get")), None)
     if at is None or any(t not in _ASKING_DONE for t in tokens[:at]):
         return tokens
@@ -138,6 +141,19 @@ def had_done(tokens: list[str]) -> list[str]:
     if {"and", "then", "n"} & set(tokens[at:done]):
         return tokens  # "get the cup and have it brought to me": two actions
     return [*tokens[:at], _DONE[tokens[done]], *tokens[at + 1 : done], *tokens[done + 1 :]]
+
+
+def _wished_done(tokens: list[str]) -> list[str] | None:
+    """ "I'd be grateful if the suitcase could be taken down to the hall", "please arrange for the newspaper
+    to be brought to the breakfast room": the verb, the thing and the rest ("take the suitcase down to the
+    hall"); None when the command is not said so."""
+    done = next((i for i, t in enumerate(tokens) if t in _DONE and i >= 3 and tokens[i - 1] == "be"), None)
+    if done is None or tokens[done - 2] not in ("could", "would", "can", "will", "to", "might"):
+        return None
+    opens = [i for i in range(done - 2) if tokens[i] in ("if", "for", "that")]
+    if not opens or done - 2 - opens[-1] < 2 or tokens[opens[-1] + 1] in ("you", "i", "we", "it", "they"):
+        return None
+    return [_DONE[tokens[done]], *tokens[opens[-1] + 1 : done - 2], *tokens[done + 1 :]]
 
 
 def contracted(tokens: list[str]) -> list[str]:

@@ -9,15 +9,19 @@ one plain word, such as Jamaican "di" for "the", are ``spellings`` in ``commands
   "him" or after a verb of the past ("give him him comic", "inna him tea", "Tobias cut him finger"); "dem"
   after a thing is its plural said again, dropped ("open di blinds dem"), elsewhere "them"; "where X deh"
   is "where is X"; "go a" is "go to"; "go" said after the thing carried, before where to ("carry di teapot
-  go a di kitchen"), is "to";
+  go a di kitchen"), is "to"; "come" straight after a verb of carrying ("bring come di sugar bowl"), as
+  after the thing, is where to: left out (a thing brought is brought to the speaker);
 * Northern English "tha" for "you" after a verb of asking ("has tha seen ...": "have you seen"); elsewhere
   "tha" is a typed "the" ("turn on tha light"); "it" or "them" with the person straight after, said last
   ("take it him", "give them her"): "to" that person;
 * Tagalog "paki-" (please) before a verb ("pakibring the sheets", "paki-close the curtains"): the verb; "po"
-  (politeness, "where po is the vacuum?") and Filipino English "for a while" (just a moment): dropped;
+  (politeness, "where po is the vacuum?"), Filipino English "for a while" (just a moment) and "already"
+  before the thing acted on ("turn off already the light"): dropped;
 * "wait on me" (American South, Scotland): "wait for me";
 * "come" or "go" before a state after "make" ("mek di bedside lamp come on", "make the lights go off"): the
   device made so;
+* "for me" said between a thing and where it is ("switch on di light fi mi inna di kitchen"): left out, the
+  place says which light;
 * "like" before a number ("likkle bit, like twenty", "to like 40"): "to", a level said roughly;
 * "up the stairs", "down the stairs" before where to ("help me up the stairs to the heather room"): the way
   there, not a place.
@@ -49,6 +53,8 @@ _JOINING = frozenset({"and", "then", "to", "please", "", "n"})
 _NEXT_ACTION = frozenset({"and", "then", "after", "afterwards", "next", "finally", "also", "n"})
 #: what "go a" is "go to" before
 _ARTICLES = frozenset({"the", "my", "your", "his", "her", "our", "me", "mi"})
+#: what "for me" may stand before and be left out ("the light for me in the kitchen")
+_PLACE_AFTER = frozenset({"in", "on", "at", "inside", "by", "near"})
 #: states a device is made to come or go to ("make the lamp come on", "make the lights go off")
 _STATES = frozenset({"on", "off", "out"})
 #: number words a level may be said with after "like" ("like twenty")
@@ -94,6 +100,19 @@ def dialect_words(tokens: list[str]) -> list[str]:
             continue
         if token in ("come", "go") and nxt in _STATES and _making(out):
             continue  # "mek di lamp come on": turn it on
+        if token == "come" and before in _CARRYING and nxt in _ARTICLES | {"a", "some"}:
+            continue  # "bring come di sugar bowl": bring it here
+        if (
+            token == "for"
+            and nxt in ("me", "mi")
+            and tokens[i + 1 : i + 2]
+            and tokens[i + 1] in _PLACE_AFTER
+            and out
+        ):
+            i += 1  # "switch on the light for me in the kitchen": the place narrows the light
+            continue
+        if token == "already" and nxt in _ARTICLES | {"a", "all"}:
+            continue  # "turn off already the light": already said before the thing
         if token == "a" and before == "go" and nxt in _ARTICLES:
             token = "to"
         elif token == "like" and (nxt.isdigit() or nxt in _NUMBERS) and before not in _LIKING:

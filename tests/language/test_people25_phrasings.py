@@ -8,8 +8,10 @@ apartment as well:
   for "go to", and "go" after the thing carried for "to" ("carry di teapot go a di kitchen")
   (``knic.language.dialects``);
 * Northern English "tha" for "you" after a verb of asking ("has tha seen ..."), and "take it him": to him;
-  Tagalog "paki-" before a verb ("pakibring") and "po"; Filipino English "for a while"; "wait on me"; "make
-  the lamp come on"; "like twenty" for a level; "up the stairs to ..." (``knic.language.dialects``);
+  Tagalog "paki-" before a verb ("pakibring") and "po"; Filipino English "for a while" and "turn off already
+  the light"; Jamaican "bring come X"; "for me" before where ("the light for me in the hallway"); "wait on
+  me"; "make the lamp come on"; "like twenty" for a level; "up the stairs to ..."
+  (``knic.language.dialects``);
 * what is waited for after where the robot waits ("wait in the hall for the taxi driver") is dropped, as
   "wait for the postman" is (``knic.language.contracted``);
 * "the ref" (Filipino English) is the fridge, "the CR" (comfort room) a toilet or bathroom, a "ball cap" a
@@ -20,7 +22,8 @@ apartment as well:
   (``knic.language.restating``); "little brighter", "bit dimmer" without their article ask how far as
   "a little brighter" does (``commands.yaml``);
 * a thing asked to be done in the passive, as a hotel guest asks staff ("have the lounge curtains opened,
-  would you", "could I get the hallway light turned off", "have the bath towel sent up to ..."): done
+  would you", "could I get the hallway light turned off", "have the bath towel sent up to ...", "I'd be
+  grateful if the suitcase could be taken down to ...", "arrange for X to be brought to ..."): done
   (``knic.language.contracted``);
 * a thing the world lacks said alone before a request about "it" ("the television, switch it on") is refused
   naming it, as "there is a parcel at the door, can you get it" is (``knic.language.remarks``);
@@ -119,6 +122,16 @@ def test_jamaican_english_in_the_apartment(
         ),
         ("Weh di first aid kit deh?", "dolores", [{"frame": "SEARCHING", "theme": "first_aid_kit"}]),
         ("Has tha seen me car keys?", "keith", [{"frame": "SEARCHING", "theme": "car_keys"}]),
+        (
+            "Switch on di light fi mi inna di kitchen",
+            "dolores",
+            [{"frame": "OPERATING", "device": "kitchen_light", "state": "on"}],
+        ),
+        (
+            "I'd be grateful if the suitcase could be taken down to the entrance hall",
+            "imogen",
+            [{"frame": "BRINGING", "theme": "suitcase", "goal": "entrance_hall"}],
+        ),
         ("Where po is the vacuum?", "ligaya", [{"frame": "SEARCHING", "theme": "vacuum_cleaner"}]),
         (
             "Can you close the light of the landing for a while",
@@ -156,6 +169,15 @@ def test_the_voices_of_the_guest_house(
         ),
         ("Pakibring the apple to the kitchen", [{"frame": "BRINGING", "theme": "apple", "goal": "kitchen"}]),
         ("Bring the cup po", [{"frame": "BRINGING", "theme": "cup", "beneficiary": "me"}]),
+        ("Bring come di cup", [{"frame": "BRINGING", "theme": "cup", "beneficiary": "me"}]),
+        (
+            "switch on the light for me in the hallway",
+            [{"frame": "OPERATING", "device": "hallway_light", "state": "on"}],
+        ),
+        (
+            "Kindly turn off already the light in the hallway",
+            [{"frame": "OPERATING", "device": "hallway_light", "state": "off"}],
+        ),
         ("wait for a while in the kitchen", [{"frame": "MOTION", "goal": "kitchen"}]),
         (
             "Paki-close the bedroom blinds",
@@ -302,6 +324,18 @@ def test_all_of_a_kind_stays_all_of_them() -> None:
         (
             "Could you have the cup brought to the kitchen?",
             [{"frame": "BRINGING", "theme": "cup", "goal": "kitchen"}],
+        ),
+        (
+            "it would be nice if the cup could be brought to the kitchen",
+            [{"frame": "BRINGING", "theme": "cup", "goal": "kitchen"}],
+        ),
+        (
+            "I'd be grateful if the blinds could be opened",
+            [{"frame": "OPERATING", "device": "bedroom_blinds", "state": "open"}],
+        ),
+        (
+            "Please arrange for the tablet to be brought to the bedroom",
+            [{"frame": "BRINGING", "theme": "tablet", "goal": "bedroom"}],
         ),
         # two actions stay two, and a thing said done of oneself is no passive request
         (
