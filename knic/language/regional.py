@@ -8,7 +8,7 @@ Two steps, both general English (no world's names):
   - the Yorkshire and Lancashire article "t'" joined to its noun ("put t'light on", "fetch us t'atlas from
     t'study"): "the";
   - a dropped "g" written with an apostrophe ("fixin'", "watchin'", "nothin'"): the "-ing" word; and "gi'"
-    (give), "an'" (and), "o'" (of), "'ere" (here);
+    (give), "an'" (and), "o'" (of), "'ere" (here), "'alf" (half);
   - a Japanese honorific after a name ("Kit-kun", "Wilf-san", "Haruka-chan", "Tanaka-sama"), the particles
     and interjections of Singaporean English ("lah", "lor", "aiyo", "alamak") and "sumimasen": left out;
   - "where" straight before a possessive or an article, its verb left out ("where my handbag?", a learner's
@@ -35,6 +35,8 @@ Two steps, both general English (no world's names):
   - what a device is set for, said last in words that name nothing of the world ("reading lamp to forty
     percent for the assessment"): left out;
   - a thing said after a question about "it" or "they" ("where is it, the remote?"): what is asked for;
+  - a carry verb with its object left out after a sentence that named a thing ("I forget my sunglasses on
+    the terrace table. Please bring to me", a learner's "forget" for "forgot"): "bring it";
   - "step one", "step two" opening a sentence (a nurse's or a manual's numbered steps), and a sentence that
     is only a number ("1. turn on the light. 2. take wilf ...", the "2" read as "to"): left out.
 """
@@ -48,7 +50,7 @@ from knic.language.vocabulary import Vocabulary
 
 #: a Yorkshire "t'" before its noun; "gi'", "an'", "o'"; a dropped "g" ("fixin'")
 _ARTICLE = re.compile(r"^t'([a-z].*)$")
-_CLIPPED = {"gi'": "give", "an'": "and", "o'": "of", "where'd": "where did", "'ere": "here"}
+_CLIPPED = {"gi'": "give", "an'": "and", "o'": "of", "where'd": "where did", "'ere": "here", "'alf": "half"}
 #: Northern English words for "something", "anything", "nothing"
 _NORTHERN = {"summat": "something", "owt": "anything", "nowt": "nothing"}
 _DROPPED_G = re.compile(r"^([a-z]+)in'$")
@@ -74,6 +76,8 @@ _TAGS = (("can", "or", "not"), ("can", "anot"), ("or", "not"), ("can",))
 _DETERMINERS = frozenset({"the", "a", "an", "my", "your", "this", "that", "his", "her", "our", "their"})
 #: where the speaker says they left a thing, hedged: "i left"
 _LEFT = (
+    ("i", "forget", "my"),  # a learner's present: "i forget my sunglasses on the terrace table"
+    ("i", "forgot", "my"),
     ("i", "seem", "to", "have", "left"),
     ("i", "must", "have", "left"),
     ("i", "think", "i", "left"),
@@ -119,8 +123,8 @@ def regional_words(tokens: list[str]) -> list[str]:
     for said in _LEFT:
         n = len(said)
         at = next((i for i in range(len(out) - n + 1) if tuple(out[i : i + n]) == said), None)
-        if at is not None:
-            out[at : at + n] = ["i", "left"]  # "i seem to have left them on the reading chair"
+        if at is not None:  # "i seem to have left them on the reading chair"
+            out[at : at + n] = ["i", "left", *(["my"] if said[-1] == "my" else [])]
             break
     return _got_to(out)
 
@@ -172,6 +176,7 @@ def regional_said(segments: list[list[str]], vocabulary: Vocabulary) -> list[lis
     segments = [s for s in segments if len(s) > 1 or s[0] not in _NUMBERS | {"to", "for"}] or segments
     segments = _said_after(_aside_in_question(segments), things | firsts)
     people = {t.phrase for t in vocabulary.terms if vocabulary.is_subtype(t.type, "person")}
+    items = frozenset(t.phrase for t in vocabulary.terms if vocabulary.is_subtype(t.type, "item"))
     for n, segment in enumerate(segments):
         words = list(segment)
         if words[:1] and words[0] in _STEP and words[1:2] and words[1] in _NUMBERS:
@@ -192,6 +197,9 @@ def regional_said(segments: list[list[str]], vocabulary: Vocabulary) -> list[lis
         if n == len(segments) - 1 or len(words) <= 3:
             words = _tag_dropped(words, things)
         words = _come_here(_purpose_dropped(words, firsts, people), things)
+        named = sum(bool(_name_at(s, i, items)) for s in segments[:n] for i in range(len(s)))
+        if n and named:  # "the blanket and the teddy, bring to the nursery": them
+            words = _object_said(words, "it" if named == 1 else "them")
         words = _light_got(words, lights)
         if words:
             out.append(words)
@@ -234,6 +242,21 @@ def _said_after(segments: list[list[str]], names: frozenset[str]) -> list[list[s
         else:
             out.append(list(segment))
     return out
+
+
+#: carry verbs a learner says without their object, after a sentence that named the thing
+_CARRIED = frozenset({"bring", "fetch", "take", "give", "carry"})
+#: what may follow such a verb when its object is left out ("please bring to me", "please bring")
+_NO_OBJECT = ("to", "here", "over", "please")
+
+
+def _object_said(words: list[str], pronoun: str) -> list[str]:
+    """ "I forget my sunglass on terrace table. Please bring to me" (a learner leaves the object out, as
+    Japanese does): "bring it to me", the thing the sentence before named."""
+    at = 1 if words[:1] == ["please"] else 0
+    if words[at : at + 1] and words[at] in _CARRIED and (at + 1 == len(words) or words[at + 1] in _NO_OBJECT):
+        return [*words[: at + 1], pronoun, *words[at + 1 :]]
+    return words
 
 
 def _aside_in_question(segments: list[list[str]]) -> list[list[str]]:

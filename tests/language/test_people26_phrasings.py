@@ -24,7 +24,8 @@ got wrong, each tried in the ERL apartment as well, with sentences of other spea
   the tablet still on Kit's desk?") is dropped as before "the" (``knic.language.contracted``); "shove" puts,
   "assist X to Y" accompanies, "you seen X?" asks where it is; Singaporean particles ("lah", "lor") and
   "sumimasen" are left out; what a device is set for ("... to forty percent for the assessment") is left out;
-  "where is it, the remote?" asks for the remote; "position" puts a thing.
+  "where is it, the remote?" asks for the remote; "position" puts a thing; a learner's "bring" with its object
+  left out after the sentence that named it ("I forget my sunglasses on terrace table. Please bring to me").
 """
 
 from __future__ import annotations
@@ -486,4 +487,27 @@ def test_the_thing_said_after_it(duplex: Vocabulary, vocabulary: Vocabulary) -> 
     ]
     assert frames_read(vocabulary, "position the cup on the kitchen table") == [
         {"frame": "PLACING", "theme": "cup", "goal": "kitchen_table"}
+    ]
+
+
+def test_an_object_left_out_after_the_sentence_that_named_it(
+    duplex: Vocabulary, vocabulary: Vocabulary
+) -> None:
+    """ "I forget my sunglasses on terrace table. Please bring to me": a learner's "forget" for "forgot"
+    says where the thing was left, and "bring" with its object left out brings that thing; "'alf" is half."""
+    assert frames_read(duplex, "I forget my sunglasses on terrace table. Please bring to me", "haruka") == [
+        {"frame": "BRINGING", "theme": "sunglasses", "source": "terrace_table", "beneficiary": "me"}
+    ]
+    assert frames_read(vocabulary, "sorry, I forget my glasses in bedroom, please bring") == [
+        {"frame": "BRINGING", "theme": "glasses", "source": "bedroom", "beneficiary": "me"}
+    ]
+    assert frames_read(vocabulary, "the apple is in the kitchen. bring to tracy") == [
+        {"frame": "BRINGING", "theme": "apple", "source": "kitchen", "beneficiary": "tracy"}
+    ]
+    assert frames_read(vocabulary, "put t'dimmer on 'alf") == [
+        {"frame": "OPERATING", "device": "living_room_dimmer", "state": "50"}
+    ]
+    assert frames_read(vocabulary, "the apple and the juice, please bring to tracy") == [
+        {"frame": "BRINGING", "theme": "apple", "beneficiary": "tracy"},
+        {"frame": "BRINGING", "theme": "juice", "beneficiary": "tracy"},
     ]
