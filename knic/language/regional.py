@@ -35,6 +35,7 @@ Two steps, both general English (no world's names):
   - what a device is set for, said last in words that name nothing of the world ("reading lamp to forty
     percent for the assessment"): left out;
   - a thing said after a question about "it" or "they" ("where is it, the remote?"): what is asked for;
+  - a learner's singular of a name that is only plural ("my sunglass"): the name;
   - a carry verb with its object left out after a sentence that named a thing ("I forget my sunglasses on
     the terrace table. Please bring to me", a learner's "forget" for "forgot"): "bring it";
   - "step one", "step two" opening a sentence (a nurse's or a manual's numbered steps), and a sentence that
@@ -185,7 +186,7 @@ def regional_said(segments: list[list[str]], vocabulary: Vocabulary) -> list[lis
             words = ["is", "there", *words[1:]]  # "got oat milk in the fridge or not"
         if n == 0 and words[:2] == ["is", "it"] and words[2:3] and words[2] in _DETERMINERS:
             words = ["is", *words[2:]]  # "is it the tablet still on kit's desk"
-        words = _my_said_me(words, things, firsts)
+        words = _my_said_me(_plural_said(words, items, firsts), things, firsts)
         words = [
             "the" if w == "them" and words[i + 1 : i + 2] and words[i + 1] in firsts else w
             for i, w in enumerate(words)
@@ -248,6 +249,16 @@ def _said_after(segments: list[list[str]], names: frozenset[str]) -> list[list[s
 _CARRIED = frozenset({"bring", "fetch", "take", "give", "carry"})
 #: what may follow such a verb when its object is left out ("please bring to me", "please bring")
 _NO_OBJECT = ("to", "here", "over", "please")
+
+
+def _plural_said(words: list[str], items: frozenset[str], known: frozenset[str]) -> list[str]:
+    """ "my sunglass" (a learner's singular of a name that is only plural, "sunglasses"): the name, where no
+    thing of the world is called by the word itself; "a glass" stays a glass (glasses may be a pair)."""
+    ends = {p.split()[-1] for p in items}
+    return [
+        w + "es" if w.endswith("ss") and w != "glass" and w + "es" in ends and w not in known else w
+        for i, w in enumerate(words)
+    ]
 
 
 def _object_said(words: list[str], pronoun: str) -> list[str]:

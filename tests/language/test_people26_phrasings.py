@@ -25,7 +25,8 @@ got wrong, each tried in the ERL apartment as well, with sentences of other spea
   "assist X to Y" accompanies, "you seen X?" asks where it is; Singaporean particles ("lah", "lor") and
   "sumimasen" are left out; what a device is set for ("... to forty percent for the assessment") is left out;
   "where is it, the remote?" asks for the remote; "position" puts a thing; a learner's "bring" with its object
-  left out after the sentence that named it ("I forget my sunglasses on terrace table. Please bring to me").
+  left out after the sentence that named it ("I forget my sunglasses on terrace table. Please bring to me");
+  a learner's singular of a name that is only plural ("my sunglass").
 """
 
 from __future__ import annotations
@@ -511,3 +512,15 @@ def test_an_object_left_out_after_the_sentence_that_named_it(
         {"frame": "BRINGING", "theme": "apple", "beneficiary": "tracy"},
         {"frame": "BRINGING", "theme": "juice", "beneficiary": "tracy"},
     ]
+
+
+def test_a_learners_singular_of_a_plural_name(duplex: Vocabulary, vocabulary: Vocabulary) -> None:
+    """ "my sunglass" is the sunglasses; "a glass" stays a glass where the world has glasses too."""
+    assert frames_read(duplex, "where is sunglass?", "haruka") == [
+        {"frame": "SEARCHING", "theme": "sunglasses"}
+    ]
+    assert frames_read(vocabulary, "bring me a glass") == [
+        {"frame": "BRINGING", "theme": "glass", "beneficiary": "me"}
+    ]
+    result = understand("bring me a glass", _duplex(), speaker="haruka")
+    assert not result.accepted and "glass" in (result.reason + result.question)
