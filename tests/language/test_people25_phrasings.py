@@ -14,6 +14,8 @@ apartment as well:
   (``knic.language.dialects``);
 * what is waited for after where the robot waits ("wait in the hall for the taxi driver") is dropped, as
   "wait for the postman" is (``knic.language.contracted``);
+* "might I have" asks for a thing, "let me know where" where it is; Jamaican "gi" is "give"
+  (``commands.yaml``);
 * "the ref" (Filipino English) is the fridge, "the CR" (comfort room) a toilet or bathroom, a "ball cap" a
   baseball cap (``synonyms.yaml``);
 * what is said again more exactly in a later stretch: a level said roughly, then exactly ("a bit brighter,
@@ -170,6 +172,9 @@ def test_the_voices_of_the_guest_house(
         ("Pakibring the apple to the kitchen", [{"frame": "BRINGING", "theme": "apple", "goal": "kitchen"}]),
         ("Bring the cup po", [{"frame": "BRINGING", "theme": "cup", "beneficiary": "me"}]),
         ("Bring come di cup", [{"frame": "BRINGING", "theme": "cup", "beneficiary": "me"}]),
+        ("Gi mi di remote", [{"frame": "BRINGING", "theme": "remote", "beneficiary": "me"}]),
+        ("might i have the remote", [{"frame": "BRINGING", "theme": "remote", "beneficiary": "me"}]),
+        ("let me know where the remote is", [{"frame": "SEARCHING", "theme": "remote"}]),
         (
             "switch on the light for me in the hallway",
             [{"frame": "OPERATING", "device": "hallway_light", "state": "on"}],
