@@ -20,6 +20,7 @@ one plain word, such as Jamaican "di" for "the", are ``spellings`` in ``commands
 * "wait on me" (American South, Scotland): "wait for me";
 * "come" or "go" before a state after "make" ("mek di bedside lamp come on", "make the lights go off"): the
   device made so;
+* "me" opening a stretch before "want" or "need" ("me want the apple!", a child's or a learner's): "I";
 * "for me" said between a thing and where it is ("switch on di light fi mi inna di kitchen"): left out, the
   place says which light;
 * "like" before a number ("likkle bit, like twenty", "to like 40"): "to", a level said roughly;
@@ -64,6 +65,8 @@ _NUMBERS = frozenset(
 )
 #: what "like" follows when it is the verb ("i'd like twenty")
 _LIKING = frozenset({"i", "i'd", "would", "you", "we", "they", "he", "she", "don't", "really", "we'd"})
+#: what "me" opening a stretch is the subject of ("me want the apple", "me need my glasses")
+_WISHING = frozenset({"want", "need", "like", "wanna", "needs", "wants"})
 #: the Jamaican plural said after a thing ("di blinds dem")
 _PLURAL_MARK = "dem"
 
@@ -123,6 +126,8 @@ def dialect_words(tokens: list[str]) -> list[str]:
             token = "for"
         elif token == "mi":
             token = _mi(before, nxt, bool(out))
+        elif token == "me" and not out and nxt in _WISHING:
+            token = "i"  # "me want the apple!", a child's or a learner's "I"
         elif token == "him":
             if not out:
                 token = "he"

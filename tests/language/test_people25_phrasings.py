@@ -10,7 +10,7 @@ apartment as well:
 * Northern English "tha" for "you" after a verb of asking ("has tha seen ..."), and "take it him": to him;
   Tagalog "paki-" before a verb ("pakibring") and "po"; Filipino English "for a while" and "turn off already
   the light"; Jamaican "bring come X"; "for me" before where ("the light for me in the hallway"); "wait on
-  me"; "make the lamp come on"; "like twenty" for a level; "up the stairs to ..."
+  me"; "me want the apple"; "make the lamp come on"; "like twenty" for a level; "up the stairs to ..."
   (``knic.language.dialects``);
 * what is waited for after where the robot waits ("wait in the hall for the taxi driver") is dropped, as
   "wait for the postman" is (``knic.language.contracted``);
@@ -173,6 +173,7 @@ def test_the_voices_of_the_guest_house(
         ("Bring the cup po", [{"frame": "BRINGING", "theme": "cup", "beneficiary": "me"}]),
         ("Bring come di cup", [{"frame": "BRINGING", "theme": "cup", "beneficiary": "me"}]),
         ("Gi mi di remote", [{"frame": "BRINGING", "theme": "remote", "beneficiary": "me"}]),
+        ("Robot, me want the apple!", [{"frame": "BRINGING", "theme": "apple", "beneficiary": "me"}]),
         ("might i have the remote", [{"frame": "BRINGING", "theme": "remote", "beneficiary": "me"}]),
         ("let me know where the remote is", [{"frame": "SEARCHING", "theme": "remote"}]),
         (
