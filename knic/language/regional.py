@@ -15,6 +15,7 @@ Two steps, both general English (no world's names):
     and Singaporean English): "where is";
   - "on" before "up", "over", "down", "out" or "back" and then "to" ("tote it on up to the guest room",
     "carry it on over to Huiling", Southern US): left out;
+  - a colour of wine after "a bottle of" or "a glass of" ("bring us a bottle of red"): that wine;
   - "both" said last after two things joined by "and" ("the hall light and the landing light both"):
     left out, the two were named.
 
@@ -55,6 +56,9 @@ _CLIPPED = {"gi'": "give", "an'": "and", "o'": "of", "where'd": "where did", "'e
 #: Northern English words for "something", "anything", "nothing"
 _NORTHERN = {"summat": "something", "owt": "anything", "nowt": "nothing"}
 _DROPPED_G = re.compile(r"^([a-z]+)in'$")
+#: wine said by its colour after what it is poured from or into ("a bottle of red")
+_WINES = frozenset({"red", "white", "rose", "rosé"})
+_POURED = frozenset({"bottle", "glass", "drop", "carafe"})
 #: Japanese honorifics said after a name
 _HONORIFICS = frozenset({"san", "kun", "chan", "sama"})
 #: particles and interjections of Singaporean English, and the Japanese "excuse me", said around a request
@@ -119,6 +123,15 @@ def regional_words(tokens: list[str]) -> list[str]:
             break
     if len(out) > 3 and out[-1] == "both" and "and" in out[:-2]:
         out.pop()  # "the hall light and the landing light both"
+    for i in range(2, len(out)):  # "a bottle of red", "a glass of white": wine
+        if (
+            out[i] in _WINES
+            and out[i - 1] == "of"
+            and out[i - 2] in _POURED
+            and out[i + 1 : i + 2] != ["wine"]
+        ):
+            out.insert(i + 1, "wine")
+            break
     if len(out) > 3 and out[-2:] == ["and", "all"]:
         out = out[:-2]  # "... and the landing light an' all": as well
     for said in _LEFT:

@@ -26,7 +26,7 @@ got wrong, each tried in the ERL apartment as well, with sentences of other spea
   "sumimasen" are left out; what a device is set for ("... to forty percent for the assessment") is left out;
   "where is it, the remote?" asks for the remote; "position" puts a thing; a learner's "bring" with its object
   left out after the sentence that named it ("I forget my sunglasses on terrace table. Please bring to me");
-  a learner's singular of a name that is only plural ("my sunglass").
+  a learner's singular of a name that is only plural ("my sunglass"); "a bottle of red" (wine).
 """
 
 from __future__ import annotations
@@ -524,3 +524,18 @@ def test_a_learners_singular_of_a_plural_name(duplex: Vocabulary, vocabulary: Vo
     ]
     result = understand("bring me a glass", _duplex(), speaker="haruka")
     assert not result.accepted and "glass" in (result.reason + result.question)
+
+
+def test_wine_said_by_its_colour(duplex: Vocabulary, vocabulary: Vocabulary) -> None:
+    """ "a bottle of red" is the red wine; "a bottle of red wine" is said whole already; "a glass of water"
+    stays water."""
+    assert frames_read(vocabulary, "bring me a glass of water") == [
+        {"frame": "BRINGING", "theme": "water", "beneficiary": "me"}
+    ]
+    for text in (
+        "Bring us a bottle of red from t'wine rack",
+        "bring us a bottle of red wine from the wine rack",
+    ):
+        assert frames_read(duplex, text, "wilf") == [
+            {"frame": "BRINGING", "theme": "red_wine", "source": "wine_rack", "beneficiary": "me"}
+        ]
