@@ -32,6 +32,9 @@ from knic.language.tidy import unplaced
 
 #: a past or perfect "be", "have" or "keep" that says what something was or did
 _PAST = (("has", "been"), ("have", "been"), ("had", "been"), ("was",), ("were",), ("kept",), ("used", "to"))
+#: what nearly happened ("the breakfast rush nearly killed me", "I almost forgot"): said of the past, the verb
+#: right after is no request
+_NEARLY = (("nearly",), ("almost",))
 #: words a sentence asking something opens with: no remark
 _ASKING = frozenset({"where", "what", "who", "which", "how", "why", "when", "is", "are", "did", "do", "can"})
 #: what is said right before a past "be" of a thing ("the mug that was ...": the thing is described)
@@ -151,9 +154,11 @@ def _states(segment: list[str], chunks: Callable[[Sequence[str]], list[Chunk]]) 
     if not segment or segment[0] in _ASKING:
         return False
     for at in range(1, len(segment)):
-        marker = next((p for p in _PAST if tuple(segment[at : at + len(p)]) == p), None)
+        marker = next((p for p in _PAST + _NEARLY if tuple(segment[at : at + len(p)]) == p), None)
         if marker is None:
             continue
+        if marker in _NEARLY:
+            marker = (*marker, segment[at + 1] if at + 1 < len(segment) else "")  # and what nearly happened
         before = chunks(segment[:at])
         # a verb with more said after it asks ("bring me the mug that was ..."); one said right before the
         # "be" is a noun ("shift was brutal")

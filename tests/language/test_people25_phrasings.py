@@ -29,6 +29,8 @@ apartment as well:
   (``knic.language.contracted``);
 * a thing the world lacks said alone before a request about "it" ("the television, switch it on") is refused
   naming it, as "there is a parcel at the door, can you get it" is (``knic.language.remarks``);
+* what nearly happened ("the breakfast rush nearly kill me today", "I almost forgot the cup") is a remark: no
+  request (``knic.language.remarks``); "turn the dimmer nearly all the way up" still asks;
 * what happened to someone, said beside a request with a past that is also a verb of the robot's ("Tobias cut
   his finger", "Jack hurt his knee"), is talk; who a thing is for, said last after where it goes, when the
   world knows no such one ("... on the coffee table for the guests"), says why; an aside after a request
@@ -443,3 +445,24 @@ def test_an_aside_after_a_request_is_dropped(vocabulary: Vocabulary, house: Voca
 def test_where_a_thing_is_is_no_aside(vocabulary: Vocabulary) -> None:
     result = understand("bring me the cup, the blue one from the kitchen", vocabulary, speaker="annie")
     assert not result.accepted and "'blue'" in result.reason
+
+
+@pytest.mark.parametrize(
+    ("file", "text", "speaker"),
+    [
+        ("erl", "I almost forgot the cup", "annie"),
+        (HOUSE, "Lawd, di breakfast rush nearly kill mi today", "dolores"),
+    ],
+)
+def test_what_nearly_happened_is_a_remark(vocabulary: Vocabulary, file: str, text: str, speaker: str) -> None:
+    result = understand(text, vocabulary if file == "erl" else _house(), speaker=speaker)
+    assert not result.accepted and "action" in result.reason
+
+
+def test_nearly_inside_a_request_still_asks(vocabulary: Vocabulary) -> None:
+    assert frames_read(vocabulary, "turn the dimmer nearly all the way up") == [
+        {"frame": "OPERATING", "device": "living_room_dimmer", "state": "100"}
+    ]
+    assert frames_read(vocabulary, "bring me the cup, I nearly dropped it") == [
+        {"frame": "BRINGING", "theme": "cup", "beneficiary": "me"}
+    ]
