@@ -16,6 +16,8 @@ Two steps, both general English (no world's names):
   - "on" before "up", "over", "down", "out" or "back" and then "to" ("tote it on up to the guest room",
     "carry it on over to Huiling", Southern US): left out;
   - a colour of wine after "a bottle of" or "a glass of" ("bring us a bottle of red"): that wine;
+  - "on" or "off" said as a verb before "it" or after "help me (to)" ("off it", "help me off it", "please help
+    to off the hallway light", Singaporean and Indian English): "switch it off", "switch off ...";
   - "both" said last after two things joined by "and" ("the hall light and the landing light both"):
     left out, the two were named.
 
@@ -77,7 +79,7 @@ _FOR_WHOM = frozenset(
     | {"excuse", "for", "to", "with", "take", "carry", "gi'", "give", "get", "pass"}
 )
 #: the words of a Singaporean question tag said last ("can?", "can or not?", "or not?")
-_TAGS = (("can", "or", "not"), ("can", "anot"), ("or", "not"), ("can",))
+_TAGS = (("can", "or", "not"), ("can", "anot"), ("or", "not"), ("anot",), ("can",))
 _DETERMINERS = frozenset({"the", "a", "an", "my", "your", "this", "that", "his", "her", "our", "their"})
 #: where the speaker says they left a thing, hedged: "i left"
 _LEFT = (
@@ -123,6 +125,7 @@ def regional_words(tokens: list[str]) -> list[str]:
             break
     if len(out) > 3 and out[-1] == "both" and "and" in out[:-2]:
         out.pop()  # "the hall light and the landing light both"
+    out = _state_said_first(out)
     for i in range(2, len(out)):  # "a bottle of red", "a glass of white": wine
         if (
             out[i] in _WINES
@@ -141,6 +144,27 @@ def regional_words(tokens: list[str]) -> list[str]:
             out[at : at + n] = ["i", "left", *(["my"] if said[-1] == "my" else [])]
             break
     return _got_to(out)
+
+
+#: what may stand before "on"/"off" said as a verb ("help me off it", "you off the light")
+_BEFORE_STATE = (["help", "me", "to"], ["help", "to"], ["help", "me"], ["please"], ["you"])
+
+
+def _state_said_first(words: list[str]) -> list[str]:
+    """ "off it", "help me off it", "please help to off the hallway light" (Singaporean and Indian English
+    say "on" and "off" as verbs): "switch it off", "switch off the hallway light"."""
+    rest = words
+    lead = 1 if words[:1] == ["please"] else 0
+    for before in _BEFORE_STATE:
+        after = lead + len(before)
+        if words[lead:after] == before and words[after : after + 1] in (["on"], ["off"]):
+            rest = words[after:]
+            break
+    if rest[:1] not in (["on"], ["off"]) or len(rest) < 2:
+        return words
+    if rest[1] in ("it", "them"):  # "off it": switch it off
+        return ["switch", rest[1], rest[0], *rest[2:]]
+    return ["switch", *rest] if rest is not words else words
 
 
 def _got_to(words: list[str]) -> list[str]:

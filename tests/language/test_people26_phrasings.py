@@ -26,7 +26,8 @@ got wrong, each tried in the ERL apartment as well, with sentences of other spea
   "sumimasen" are left out; what a device is set for ("... to forty percent for the assessment") is left out;
   "where is it, the remote?" asks for the remote; "position" puts a thing; a learner's "bring" with its object
   left out after the sentence that named it ("I forget my sunglasses on terrace table. Please bring to me");
-  a learner's singular of a name that is only plural ("my sunglass"); "a bottle of red" (wine).
+  a learner's singular of a name that is only plural ("my sunglass"); "a bottle of red" (wine); "off it",
+  "help to off the light", the tag "anot".
 """
 
 from __future__ import annotations
@@ -539,3 +540,25 @@ def test_wine_said_by_its_colour(duplex: Vocabulary, vocabulary: Vocabulary) -> 
         assert frames_read(duplex, text, "wilf") == [
             {"frame": "BRINGING", "theme": "red_wine", "source": "wine_rack", "beneficiary": "me"}
         ]
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        (
+            "please help to off the hallway light",
+            [{"frame": "OPERATING", "device": "hallway_light", "state": "off"}],
+        ),
+        ("the hallway light, off it", [{"frame": "OPERATING", "device": "hallway_light", "state": "off"}]),
+        ("can bring me the glasses anot", [{"frame": "BRINGING", "theme": "glasses", "beneficiary": "me"}]),
+    ],
+)
+def test_on_and_off_before_it(vocabulary: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
+    """ "off it", "help to off the light" (Singaporean and Indian English); the tag "anot"."""
+    assert frames_read(vocabulary, text) == frames
+
+
+def test_on_and_off_before_it_in_the_duplex(duplex: Vocabulary) -> None:
+    assert frames_read(duplex, "Eh, the gym light still on, help me off it", "huiling") == [
+        {"frame": "OPERATING", "device": "gym_light", "state": "off"}
+    ]
