@@ -41,6 +41,8 @@ Two steps, both general English (no world's names):
   - a learner's singular of a name that is only plural ("my sunglass"): the name;
   - a carry verb with its object left out after a sentence that named a thing ("I forget my sunglasses on
     the terrace table. Please bring to me", a learner's "forget" for "forgot"): "bring it";
+  - what the speaker is "fixing to" do, or is "off" to, said beside the request ("fixing to go to bed, get
+    the lights", "..., I'm off to the loo"): left out;
   - "step one", "step two" opening a sentence (a nurse's or a manual's numbered steps), and a sentence that
     is only a number ("1. turn on the light. 2. take wilf ...", the "2" read as "to"): left out.
 """
@@ -95,6 +97,13 @@ _LEFT = (
 _SUBJECTS = frozenset({"he", "she", "they"})
 #: what "got" opening a sentence is said before when it asks for nothing ("got it", "got to go")
 _NOT_GOT = frozenset({"to", "it", "that", "this", "them", "you", "me", "ya", "him", "her"})
+#: what the speaker says they are about to do (Southern US "fixing to"), before or after the request
+_ABOUT_TO = (
+    ["fixing", "to"],
+    ["i'm", "fixing", "to"],
+    ["i", "am", "fixing", "to"],
+    ["we're", "fixing", "to"],
+)
 #: a numbered step opening a sentence ("step one: go to the kitchen")
 _STEP = frozenset({"step", "stage"})
 _NUMBERS = frozenset(
@@ -230,6 +239,8 @@ def regional_said(segments: list[list[str]], vocabulary: Vocabulary) -> list[lis
         ]  # "shut them blinds in the gym"
         if len(segments) > 1 and words[:2] in (["i'm", "off"], ["we're", "off"]) and len(words) > 2:
             continue  # "..., i'm off to the loo": where the speaker is going, no request
+        if len(segments) > 1 and any(words[: len(w)] == w for w in _ABOUT_TO):
+            continue  # "fixing to go to bed, get the lights": what the speaker is about to do
         if n and len(words) > 2 and (words[0] in _SUBJECTS | people) and words[1].endswith("ed"):
             continue  # "... to the dining table? huiling wanted to look at malaya": what someone did
         if n == len(segments) - 1 or len(words) <= 3:

@@ -27,7 +27,7 @@ got wrong, each tried in the ERL apartment as well, with sentences of other spea
   "where is it, the remote?" asks for the remote; "position" puts a thing; a learner's "bring" with its object
   left out after the sentence that named it ("I forget my sunglasses on terrace table. Please bring to me");
   a learner's singular of a name that is only plural ("my sunglass"); "a bottle of red" (wine); "off it",
-  "help to off the light", the tag "anot".
+  "help to off the light", the tag "anot"; what the speaker is "fixing to" do is no request.
 """
 
 from __future__ import annotations
@@ -561,4 +561,14 @@ def test_on_and_off_before_it(vocabulary: Vocabulary, text: str, frames: list[di
 def test_on_and_off_before_it_in_the_duplex(duplex: Vocabulary) -> None:
     assert frames_read(duplex, "Eh, the gym light still on, help me off it", "huiling") == [
         {"frame": "OPERATING", "device": "gym_light", "state": "off"}
+    ]
+
+
+def test_what_the_speaker_is_fixing_to_do(duplex: Vocabulary, vocabulary: Vocabulary) -> None:
+    """ "fixing to go to bed, get the lights" (Southern US): what the speaker is about to do is no request."""
+    assert frames_read(vocabulary, "fixing to go to bed, get the lights") == [
+        {"frame": "OPERATING", "device": "all_lights", "state": "off"}
+    ]
+    assert frames_read(duplex, "I'm fixin' to go to the gym, bring me the sports bottle", "darlene") == [
+        {"frame": "BRINGING", "theme": "sports_bottle", "beneficiary": "me"}
     ]
