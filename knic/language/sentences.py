@@ -12,6 +12,9 @@
   you take them together"), asks nothing more (:func:`together_dropped`).
 * An aside after a request that tells who or what was meant in words the world lacks, naming only a place
   ("find Imogen for me. Imogen! The young lady from the bluebell room."): dropped (:func:`_asides_dropped`).
+* A request that names only a thing the world lacks, with talk beside it ("can you turn on the aircon, it's
+  so hot here in the laundry"): read without the talk, so that what is lacking is named
+  (:func:`_lacking_first`).
 * Who a thing is for, said last after where it goes, when the world knows no such one ("put the walking map
   on the coffee table for the guests"): says why, dropped (:func:`_for_unknown_dropped`).
 * A terse sentence of a device and its state beside a sentence of another kind ("travel mug to kitchen,
@@ -42,8 +45,28 @@ def sentences_read(
     """The sentences with the rules of the module docstring applied."""
     segments = reasons_dropped(together_dropped(segments, chunks), chunks)
     segments = done_dropped(segments, chunks, lambda c: any(is_a(t, "person") for t in c.terms))
-    segments = _asides_dropped(segments, chunks, is_a)
+    segments = _lacking_first(_asides_dropped(segments, chunks, is_a), chunks)
     return verbs_said([_for_unknown_dropped(s, chunks) for s in segments], chunks, is_a)
+
+
+def _lacking_first(
+    segments: list[list[str]], chunks: Callable[[Sequence[str]], list[Chunk]]
+) -> list[list[str]]:
+    """A request that names only a thing the world lacks ("can you turn on the aircon, it's so hot here in the
+    laundry"), read without the sentences of talk beside it that have no verb: its refusal names what is
+    lacking, not "here" or the room the talk names."""
+    said = [chunks(s) for s in segments]
+    lacking = [
+        n
+        for n, c in enumerate(said)
+        if any(x.kind == "verb" and not x.soft for x in c[:1] + c[1:2])  # "it's getting dark": no request
+        and not any(x.kind in ("entity", "me", "pronoun") for x in c)
+        and any(c[i].kind == "det" and c[i + 1].kind == "unknown" for i in range(1, len(c) - 1))
+    ]
+    corrected = any(x.kind == "repair" for c in said for x in c)  # "go to the garage, no wait, the kitchen"
+    if len(lacking) != 1 or len(segments) < 2 or corrected:
+        return segments
+    return [s for n, s in enumerate(segments) if n == lacking[0] or any(x.kind == "verb" for x in said[n])]
 
 
 def _asides_dropped(

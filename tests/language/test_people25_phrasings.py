@@ -35,7 +35,9 @@ apartment as well:
   his finger", "Jack hurt his knee"), is talk; who a thing is for, said last after where it goes, when the
   world knows no such one ("... on the coffee table for the guests"), says why; an aside after a request
   telling who was meant in words the world lacks, naming only a place ("Imogen! The young lady from the
-  bluebell room."), is dropped; "..., it's in the office" still says where (``knic.language.sentences``).
+  bluebell room."), is dropped; "..., it's in the office" still says where; a request naming only a thing
+  the world lacks is refused naming it, not the talk beside it ("turn on the aircon, it's so hot here in the
+  laundry") (``knic.language.sentences``).
 """
 
 from __future__ import annotations
@@ -465,4 +467,24 @@ def test_nearly_inside_a_request_still_asks(vocabulary: Vocabulary) -> None:
     ]
     assert frames_read(vocabulary, "bring me the cup, I nearly dropped it") == [
         {"frame": "BRINGING", "theme": "cup", "beneficiary": "me"}
+    ]
+
+
+@pytest.mark.parametrize(
+    ("file", "text", "speaker", "word"),
+    [
+        ("erl", "switch on the fan, it is very hot in the kitchen", "annie", "fan"),
+        (HOUSE, "Can you turn on the aircon, it's so hot here in the laundry", "ligaya", "aircon"),
+    ],
+)
+def test_what_the_request_lacks_is_named_not_the_talk(
+    vocabulary: Vocabulary, file: str, text: str, speaker: str, word: str
+) -> None:
+    result = understand(text, vocabulary if file == "erl" else _house(), speaker=speaker)
+    assert not result.accepted and f"'{word}'" in result.reason
+
+
+def test_a_dark_room_beside_a_light_still_says_which(vocabulary: Vocabulary) -> None:
+    assert frames_read(vocabulary, "it is dark in the bedroom, turn on the light") == [
+        {"frame": "OPERATING", "device": "bedroom_lights", "state": "on"}
     ]
