@@ -18,8 +18,13 @@ Two steps, both general English (no world's names):
   - a colour of wine after "a bottle of" or "a glass of" ("bring us a bottle of red"): that wine;
   - "on" or "off" said as a verb before "it" or after "help me (to)" ("off it", "help me off it", "please help
     to off the hallway light", Singaporean and Indian English): "switch it off", "switch off ...";
-  - "both" said last after two things joined by "and" ("the hall light and the landing light both"):
-    left out, the two were named.
+  - "both" said last after two things joined by "and" ("the hall light and the landing light both"), and
+    "an' all" said last ("... and the landing light an' all", as well): left out;
+  - the Northern "summat", "owt", "nowt": something, anything, nothing;
+  - where the speaker left a thing, hedged ("I seem to have left them on the reading chair", "I must have
+    left", a learner's "I forget my glasses in bedroom"): "I left";
+  - "where did the biscuit tin get (off) to": where is it; "... where my pen has got to" (a question's order
+    inside another): "where has my pen got to".
 
 * :func:`regional_said`, on the sentences of a command with the world's names, before they are put as the
   world says them (from :func:`knic.language.naming.said_named`):
@@ -37,7 +42,10 @@ Two steps, both general English (no world's names):
   - "get the light" with no state said ("get the light in the gym, hon", American English): switched off;
   - what a device is set for, said last in words that name nothing of the world ("reading lamp to forty
     percent for the assessment"): left out;
-  - a thing said after a question about "it" or "they" ("where is it, the remote?"): what is asked for;
+  - a thing said after a question about "it" or "they" ("where is it, the remote?"): what is asked for; an
+    aside inside a question ("where, I ask myself, has Haruka got to?"): left out;
+  - "them" before a thing's name ("shut them blinds"): "the";
+  - what someone did, said after the request ("... Huiling wanted to look at Malaya"): a remark, left out;
   - a learner's singular of a name that is only plural ("my sunglass"): the name;
   - a carry verb with its object left out after a sentence that named a thing ("I forget my sunglasses on
     the terrace table. Please bring to me", a learner's "forget" for "forgot"): "bring it";
@@ -78,7 +86,7 @@ _ON_WHERE = frozenset({"up", "over", "down", "out", "back"})
 _FOR_WHOM = frozenset(
     {"bring", "fetch", "get", "give", "hand", "pass", "grab", "find", "buy", "chuck", "throw", "toss", "lob"}
     | {"bung", "send", "pour", "make", "fix", "show", "tell", "read", "save", "leave", "order", "help", "let"}
-    | {"excuse", "for", "to", "with", "take", "carry", "gi'", "give", "get", "pass"}
+    | {"excuse", "for", "to", "with", "take", "carry"}
 )
 #: the words of a Singaporean question tag said last ("can?", "can or not?", "or not?")
 _TAGS = (("can", "or", "not"), ("can", "anot"), ("or", "not"), ("anot",), ("can",))
@@ -123,7 +131,7 @@ def regional_words(tokens: list[str]) -> list[str]:
             out.append(dropped.group(1) + "ing")
         elif (token in _HONORIFICS and out and out[-1] not in _DETERMINERS) or token in _PARTICLES:
             continue  # "kit kun": Kit; "off the gym light lah"
-        elif token == "on" and tokens[i + 1 : i + 2] in ([w] for w in _ON_WHERE) and "to" in tokens[i + 2 :]:
+        elif token == "on" and set(tokens[i + 1 : i + 2]) & _ON_WHERE and "to" in tokens[i + 2 :]:
             continue  # "tote it on up to the guest room"
         else:
             out.append(token)
@@ -232,7 +240,7 @@ def regional_said(segments: list[list[str]], vocabulary: Vocabulary) -> list[lis
             words = ["is", "there", *words[1:]]  # "got oat milk in the fridge or not"
         if n == 0 and words[:2] == ["is", "it"] and words[2:3] and words[2] in _DETERMINERS:
             words = ["is", *words[2:]]  # "is it the tablet still on kit's desk"
-        words = _my_said_me(_plural_said(words, items, firsts), things, firsts)
+        words = _my_said_me(_plural_said(words, items, firsts), firsts)
         words = [
             "the" if w == "them" and words[i + 1 : i + 2] and words[i + 1] in firsts else w
             for i, w in enumerate(words)
@@ -305,7 +313,7 @@ def _plural_said(words: list[str], items: frozenset[str], known: frozenset[str])
     ends = {p.split()[-1] for p in items}
     return [
         w + "es" if w.endswith("ss") and w != "glass" and w + "es" in ends and w not in known else w
-        for i, w in enumerate(words)
+        for w in words
     ]
 
 
@@ -339,16 +347,14 @@ def _aside_in_question(segments: list[list[str]]) -> list[list[str]]:
     return out
 
 
-def _my_said_me(words: list[str], things: frozenset[str], firsts: frozenset[str]) -> list[str]:
-    """ "where's me stick", "fetch us me flat cap": "me" before a thing's name, not after a verb that takes
-    whom a thing is for, is "my"."""
+def _my_said_me(words: list[str], firsts: frozenset[str]) -> list[str]:
+    """ "where's me stick", "fetch us me flat cap": "me" before a thing's name (its first or last word), not
+    after a verb that takes whom a thing is for, is "my"."""
     out = list(words)
     for i, word in enumerate(words):
         if word != "me" or not words[i + 1 : i + 2] or words[i + 1] not in firsts:
             continue
-        if i and words[i - 1] in _FOR_WHOM and words[i - 1] != "us":
-            continue
-        if _name_at(words, i + 1, things) or words[i + 1] in firsts:
+        if not (i and words[i - 1] in _FOR_WHOM):
             out[i] = "my"
     return out
 
