@@ -21,13 +21,14 @@ got wrong, each tried in the ERL apartment as well, with sentences of other spea
   (``commands.yaml``, ``synonyms.yaml``); "the roof", "the terrace", "the mezzanine", "the gym" name the room
   whose name has them (``room_words``); a colon ends a stretch as a comma does ("one more thing before you
   dash off: ...", not "4:30"; ``knic.language.tidy``); "still" before a place said with a possessive ("is
-  the tablet still on Kit's desk?") is dropped as before "the" (``knic.language.contracted``); "shove" puts,
-  "assist X to Y" accompanies, "you seen X?" asks where it is; Singaporean particles ("lah", "lor") and
-  "sumimasen" are left out; what a device is set for ("... to forty percent for the assessment") is left out;
-  "where is it, the remote?" asks for the remote; "position" puts a thing; a learner's "bring" with its object
-  left out after the sentence that named it ("I forget my sunglasses on terrace table. Please bring to me");
-  a learner's singular of a name that is only plural ("my sunglass"); "a bottle of red" (wine); "off it",
-  "help to off the light", the tag "anot"; what the speaker is "fixing to" do is no request.
+  the tablet still on Kit's desk?") is dropped as before "the" (``knic.language.contracted``);
+* more of the six voices, probed beyond the set: "shove" puts, "assist X to Y" accompanies, "you seen X?"
+  asks where it is, "position" puts a thing (``commands.yaml``); Singaporean particles ("lah", "lor") and
+  "sumimasen" are left out; what a device is set for ("... to forty percent for the assessment") is left
+  out; "where is it, the remote?" asks for the remote; a learner's "bring" with its object left out after
+  the sentence that named it ("I forget my sunglasses on terrace table. Please bring to me"); a learner's
+  singular of a name that is only plural ("my sunglass"); "a bottle of red" (wine); "off it", "help to off
+  the light", the tag "anot"; what the speaker is "fixing to" do is no request (``knic.language.regional``).
 """
 
 from __future__ import annotations
