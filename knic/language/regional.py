@@ -21,6 +21,8 @@ Two steps, both general English (no world's names):
   - "both" said last after two things joined by "and" ("the hall light and the landing light both"), and
     "an' all" said last ("... and the landing light an' all", as well): left out;
   - the Northern "summat", "owt", "nowt": something, anything, nothing;
+  - where a thing or person is said to be, hedged or contracted ("the atlas should be on the dining table",
+    "check whether she's in the bedroom"): "is";
   - where the speaker left a thing, hedged ("I seem to have left them on the reading chair", "I must have
     left", a learner's "I forget my glasses in bedroom"): "I left";
   - "where did the biscuit tin get (off) to": where is it; "... where my pen has got to" (a question's order
@@ -152,6 +154,7 @@ def regional_words(tokens: list[str]) -> list[str]:
         ):
             out.insert(i + 1, "wine")
             break
+    out = _where_it_is(out)
     if len(out) > 3 and out[-2:] == ["and", "all"]:
         out = out[:-2]  # "... and the landing light an' all": as well
     for said in _LEFT:
@@ -161,6 +164,36 @@ def regional_words(tokens: list[str]) -> list[str]:
             out[at : at + n] = ["i", "left", *(["my"] if said[-1] == "my" else [])]
             break
     return _got_to(out)
+
+
+#: where a thing or person is said to be, hedged ("the atlas should be on the dining table") or contracted
+#: after "whether" or "if" ("whether she's in the bedroom"): "is", before a place said with an article
+_HEDGED_BE = (["should", "be"], ["ought", "to", "be"], ["must", "be"], ["might", "be"], ["may", "be"])
+_CONTRACTED_BE = {"she's": ["she", "is"], "he's": ["he", "is"], "they're": ["they", "are"]}
+_PLACE_WORDS = frozenset({"in", "on", "at", "inside", "under", "upstairs", "downstairs"})
+
+
+def _where_it_is(words: list[str]) -> list[str]:
+    """ "the atlas should be on the dining table", "check whether she's in the bedroom": "is"."""
+    out: list[str] = []
+    i = 0
+    while i < len(words):
+        hedge = next((h for h in _HEDGED_BE if words[i : i + len(h)] == h), None)
+        n = len(hedge) if hedge else 1
+        place = words[i + n : i + n + 1]
+        said = words[i + n + 1 : i + n + 2]
+        if place and place[0] in _PLACE_WORDS and said and said[0] in _DETERMINERS | {"kit's", "our"}:
+            if hedge:
+                out.append("is")
+                i += n
+                continue
+            if words[i] in _CONTRACTED_BE and out[-1:] in (["whether"], ["if"]):
+                out += _CONTRACTED_BE[words[i]]
+                i += 1
+                continue
+        out.append(words[i])
+        i += 1
+    return out
 
 
 #: what may stand before "on"/"off" said as a verb ("help me off it", "you off the light")

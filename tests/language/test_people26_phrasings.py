@@ -28,7 +28,8 @@ got wrong, each tried in the ERL apartment as well, with sentences of other spea
   out; "where is it, the remote?" asks for the remote; a learner's "bring" with its object left out after
   the sentence that named it ("I forget my sunglasses on terrace table. Please bring to me"); a learner's
   singular of a name that is only plural ("my sunglass"); "a bottle of red" (wine); "off it", "help to off
-  the light", the tag "anot"; what the speaker is "fixing to" do is no request (``knic.language.regional``).
+  the light", the tag "anot"; what the speaker is "fixing to" do is no request; "the atlas should be on the
+  dining table", "check whether she's in the bedroom" say where (``knic.language.regional``).
 """
 
 from __future__ import annotations
@@ -572,4 +573,19 @@ def test_what_the_speaker_is_fixing_to_do(duplex: Vocabulary, vocabulary: Vocabu
     ]
     assert frames_read(duplex, "I'm fixin' to go to the gym, bring me the sports bottle", "darlene") == [
         {"frame": "BRINGING", "theme": "sports_bottle", "beneficiary": "me"}
+    ]
+
+
+def test_where_a_thing_is_said_hedged_or_contracted(duplex: Vocabulary, vocabulary: Vocabulary) -> None:
+    """ "the atlas should be on the dining table; bring it here" (where it is, hedged); "check whether she's
+    in the bedroom" (contracted): "is"; "the lamp should be on" is no place."""
+    assert frames_read(
+        duplex, "Now, the atlas should be on the dining table; bring it here, would you?", "cornelius"
+    ) == [{"frame": "BRINGING", "theme": "atlas", "source": "dining_table", "beneficiary": "me"}]
+    assert frames_read(
+        vocabulary,
+        "Tracy was in the kitchen, I believe, but would you check whether she's in the bedroom now?",
+    ) == [{"frame": "SEARCHING", "theme": "tracy", "ground": "bedroom"}]
+    assert frames_read(vocabulary, "the apple should be on the kitchen table; bring it here") == [
+        {"frame": "BRINGING", "theme": "apple", "source": "kitchen_table", "beneficiary": "me"}
     ]
