@@ -4,12 +4,17 @@
 * a level said roughly and then exactly for the same device ("make the breakfast room light a bit brighter,
   put it to eighty percent", "turn the lamp up a little, set it at 60"): the exact level, said where the
   rough one was;
+* a thing whose name starts with a word for the whole home ("the flat cap", "the house keys"): said without
+  its article, so that "the flat" is not read as anywhere in the home;
 * a thing's name said again alone, longer ("turn on the lamp. The lamp. The standard lamp, next to me."; "put
   it on the table, the kitchen table"): the longer name where the shorter was said, and a name said again as
   it was, dropped;
 * a device named by its kind alone ("blind", "blinds", "lamp") after another device was named by its own
   name ("turn the breakfast room light down to ten and shut the blinds", "desk lamp to fifty, blind half
-  open"): the one of that kind in the same room, where there is exactly one (a speaker names the room once).
+  open"): the one of that kind in the same room, where there is exactly one (a speaker names the room once);
+* a piece of furniture named by one word after the robot is sent to a room ("go to the heather room and get
+  my stick from the wardrobe"): the one of the room whose name ends so, where there is exactly one, even
+  where another room's is called by that word alone (the owners' "wardrobe").
 """
 
 from __future__ import annotations
@@ -44,8 +49,23 @@ def restated(segments: list[list[str]], vocabulary: Vocabulary) -> list[list[str
     """The sentences with what is said again more exactly put where it was first said (see the module
     docstring)."""
     segments = _level_restated([list(s) for s in segments])
-    segments = _name_restated(segments, {t.phrase for t in vocabulary.terms})
-    return _kind_in_room(segments, vocabulary)
+    phrases = {t.phrase for t in vocabulary.terms}
+    segments = _name_restated(_home_named(segments, phrases), phrases)
+    return _of_room_gone_to(_kind_in_room(segments, vocabulary), vocabulary)
+
+
+def _home_named(segments: list[list[str]], phrases: set[str]) -> list[list[str]]:
+    home = [p.split() for p in command_language().anywhere if p.startswith("the ") and len(p.split()) == 2]
+    out = []
+    for segment in segments:
+        words = list(segment)
+        for i in range(len(words) - 2, -1, -1):
+            if words[i : i + 2] in home and any(
+                " ".join(words[i + 1 : i + 1 + n]) in phrases for n in range(2, 5) if i + n < len(words) + 1
+            ):
+                del words[i]  # "the flat cap": the cap called flat, not anywhere in the flat
+        out.append(words)
+    return out
 
 
 def _level_restated(segments: list[list[str]]) -> list[list[str]]:
@@ -137,3 +157,59 @@ def _device_at(
         ):
             best = device
     return best
+
+
+#: verbs that send the robot to a room said after them ("go to the heather room")
+_GOING = frozenset({"go", "head", "walk", "nip", "pop", "run", "drive", "come"})
+
+
+@lru_cache(maxsize=16)
+def _rooms_and_furniture(vocabulary: Vocabulary) -> tuple[dict[str, str], dict[str, tuple[str, str]]]:
+    """The world's room phrases (-> symbol) and its furniture phrases (-> symbol, room)."""
+    rooms: dict[str, str] = {}
+    furniture: dict[str, tuple[str, str]] = {}
+    for term in vocabulary.terms:
+        where = vocabulary.locations.get(term.symbol, ())
+        if vocabulary.is_subtype(term.type, "room"):
+            rooms[term.phrase] = term.symbol
+        elif vocabulary.is_subtype(term.type, "furniture") and len(where) == 1:
+            furniture[term.phrase] = (term.symbol, where[0])
+    return rooms, furniture
+
+
+def _of_room_gone_to(segments: list[list[str]], vocabulary: Vocabulary) -> list[list[str]]:
+    rooms, furniture = _rooms_and_furniture(vocabulary)
+    if not furniture:
+        return segments
+    room: str | None = None
+    out: list[list[str]] = []
+    for segment in segments:
+        words = list(segment)
+        for i, word in enumerate(words):
+            if (
+                i >= 2
+                and words[i - 1] == "the"
+                and words[i - 2] in ("to", "into")
+                and _GOING & set(words[:i])
+            ):
+                said = next(
+                    (rooms[p] for p in sorted(rooms, key=len, reverse=True) if _said_at(words, i, p)), None
+                )
+                room = said or room
+                continue
+            if room is None or i == 0 or words[i - 1] != "the" or word not in furniture:
+                continue
+            if i + 1 < len(words) and f"{word} {words[i + 1]}" in " ".join(furniture):
+                continue  # a longer name said on
+            symbol, where = furniture[word]
+            ours = {
+                s for p, (s, r) in furniture.items() if r == room and p.split()[-1] == word and s != symbol
+            }
+            if where != room and len(ours) == 1:
+                words[i] = ours.pop().replace("_", " ")
+        out.append(words)
+    return out
+
+
+def _said_at(words: list[str], at: int, phrase: str) -> bool:
+    return words[at : at + len(phrase.split())] == phrase.split()

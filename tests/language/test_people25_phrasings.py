@@ -20,9 +20,11 @@ apartment as well:
   baseball cap (``synonyms.yaml``);
 * what is said again more exactly in a later stretch: a level said roughly, then exactly ("a bit brighter,
   put it to eighty percent"), a name said again longer ("the lamp. The lamp. The standard lamp"), a device
-  named by its kind alone after another in the same room ("desk lamp to fifty, blind half open")
-  (``knic.language.restating``); "little brighter", "bit dimmer" without their article ask how far as
-  "a little brighter" does (``commands.yaml``);
+  named by its kind alone after another in the same room ("desk lamp to fifty, blind half open"), a piece
+  of furniture named by one word after the robot is sent to a room (the heather room's wardrobe, not the
+  owners' "wardrobe"), "the flat cap" (not "the flat", anywhere in the home, and a cap)
+  (``knic.language.restating``); "little brighter", "bit dimmer" without their article ask how far as "a
+  little brighter" does (``commands.yaml``);
 * a thing asked to be done in the passive, as a hotel guest asks staff ("have the lounge curtains opened,
   would you", "could I get the hallway light turned off", "have the bath towel sent up to ...", "I'd be
   grateful if the suitcase could be taken down to ...", "arrange for X to be brought to ..."): done
@@ -487,4 +489,40 @@ def test_what_the_request_lacks_is_named_not_the_talk(
 def test_a_dark_room_beside_a_light_still_says_which(vocabulary: Vocabulary) -> None:
     assert frames_read(vocabulary, "it is dark in the bedroom, turn on the light") == [
         {"frame": "OPERATING", "device": "bedroom_lights", "state": "on"}
+    ]
+
+
+@pytest.mark.parametrize(
+    ("text", "speaker", "frames"),
+    [
+        (
+            "Go to the heather room and get my walking stick. My stick, from the wardrobe.",
+            "cornelius",
+            [
+                {"frame": "MOTION", "goal": "heather_room"},
+                {
+                    "frame": "BRINGING",
+                    "theme": "walking_stick",
+                    "source": "heather_wardrobe",
+                    "beneficiary": "me",
+                },
+            ],
+        ),
+        ("Where is the flat cap?", "keith", [{"frame": "SEARCHING", "theme": "flat_cap"}]),
+        (
+            "Put the flat cap in the wardrobe",
+            "keith",
+            [{"frame": "PLACING", "theme": "flat_cap", "goal": "wardrobe"}],
+        ),
+    ],
+)
+def test_names_in_the_room_gone_to_and_of_the_home(
+    house: Vocabulary, text: str, speaker: str, frames: list[dict[str, str]]
+) -> None:
+    assert frames_read(house, text, speaker) == frames
+
+
+def test_the_home_is_still_anywhere(vocabulary: Vocabulary) -> None:
+    assert frames_read(vocabulary, "search the flat for the remote") == [
+        {"frame": "SEARCHING", "theme": "remote"}
     ]
