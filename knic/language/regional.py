@@ -21,6 +21,7 @@ Two steps, both general English (no world's names):
   - "both" said last after two things joined by "and" ("the hall light and the landing light both"), and
     "an' all" said last ("... and the landing light an' all", as well): left out;
   - the Northern "summat", "owt", "nowt": something, anything, nothing;
+  - "I want to drink juice", "I'd like to eat an apple" (a learner's): "I want juice", "I'd like an apple";
   - where a thing or person is said to be, hedged or contracted ("the atlas should be on the dining table",
     "check whether she's in the bedroom"): "is";
   - where the speaker left a thing, hedged ("I seem to have left them on the reading chair", "I must have
@@ -155,6 +156,15 @@ def regional_words(tokens: list[str]) -> list[str]:
             out.insert(i + 1, "wine")
             break
     out = _where_it_is(out)
+    for i in range(1, len(out) - 2):  # "i want to drink juice": i want juice
+        kind = out[i + 2] in ("something", "anything")  # "i want to drink something": a kind, asked
+        if (
+            out[i - 1] in ("want", "like", "need")
+            and out[i : i + 2] in (["to", "drink"], ["to", "eat"])
+            and not kind
+        ):
+            out[i : i + 2] = []
+            break
     if len(out) > 3 and out[-2:] == ["and", "all"]:
         out = out[:-2]  # "... and the landing light an' all": as well
     for said in _LEFT:

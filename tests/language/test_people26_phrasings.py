@@ -29,7 +29,8 @@ got wrong, each tried in the ERL apartment as well, with sentences of other spea
   the sentence that named it ("I forget my sunglasses on terrace table. Please bring to me"); a learner's
   singular of a name that is only plural ("my sunglass"); "a bottle of red" (wine); "off it", "help to off
   the light", the tag "anot"; what the speaker is "fixing to" do is no request; "the atlas should be on the
-  dining table", "check whether she's in the bedroom" say where (``knic.language.regional``).
+  dining table", "check whether she's in the bedroom" say where; "I want to drink juice" wants the juice
+  (``knic.language.regional``).
 """
 
 from __future__ import annotations
@@ -588,4 +589,17 @@ def test_where_a_thing_is_said_hedged_or_contracted(duplex: Vocabulary, vocabula
     ) == [{"frame": "SEARCHING", "theme": "tracy", "ground": "bedroom"}]
     assert frames_read(vocabulary, "the apple should be on the kitchen table; bring it here") == [
         {"frame": "BRINGING", "theme": "apple", "source": "kitchen_table", "beneficiary": "me"}
+    ]
+
+
+def test_what_a_learner_wants_to_drink(duplex: Vocabulary, vocabulary: Vocabulary) -> None:
+    """ "I want to drink juice", "I would like to eat an apple": the thing is wanted."""
+    assert frames_read(vocabulary, "excuse me, I want to drink juice. please bring") == [
+        {"frame": "BRINGING", "theme": "juice", "beneficiary": "me"}
+    ]
+    assert frames_read(vocabulary, "I would like to eat an apple") == [
+        {"frame": "BRINGING", "theme": "apple", "beneficiary": "me"}
+    ]
+    assert frames_read(duplex, "I want to drink iced tea, please bring", "haruka") == [
+        {"frame": "BRINGING", "theme": "iced_tea", "beneficiary": "me"}
     ]
