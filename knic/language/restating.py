@@ -6,6 +6,8 @@
   rough one was;
 * a thing whose name starts with a word for the whole home ("the flat cap", "the house keys"): said without
   its article, so that "the flat" is not read as anywhere in the home;
+* a thing said alone after a request about "it" that named nothing ("turn it up. The reading lamp. To
+  seventy."): the thing, where "it" was said;
 * a thing's name said again alone, longer ("turn on the lamp. The lamp. The standard lamp, next to me."; "put
   it on the table, the kitchen table"): the longer name where the shorter was said, and a name said again as
   it was, dropped;
@@ -27,6 +29,8 @@ from knic.language.vocabulary import Vocabulary
 #: verbs a level is said again with, of "it" or "them" ("put it to eighty percent")
 _SETTING = frozenset({"put", "set", "turn", "make", "dim", "bring", "take"})
 _IT = frozenset({"it", "them"})
+#: what a sentence asking something opens with ("what is it called"): its "it" is no thing
+_ASKING = frozenset({"what", "how", "where", "who", "which", "why", "when", "is", "was", "does", "do"})
 _ARTICLES = frozenset({"the", "a", "an", "my", "that", "this", "your", "our"})
 #: what says every thing of a kind is meant ("all the blinds", "both lamps")
 _ALL = frozenset({"all", "both", "every", "each", "of", "two", "three"})
@@ -96,6 +100,10 @@ def _name_restated(segments: list[list[str]], phrases: set[str]) -> list[list[st
         earlier = f" {' '.join(w for s in out for w in s)} "
         if len(segment) > 1 and segment[0] in _ARTICLES and f" {' '.join(segment)} " in earlier:
             continue  # "the lamp. The lamp.": said again as it was
+        spot = _pronoun_before(out, phrases) if name and said in phrases else None
+        if spot is not None:  # "turn it up. The reading lamp.": "it" is the lamp, said after
+            out[spot[0]][spot[1] : spot[1] + 1] = name
+            continue
         if not out or not name or said not in phrases:
             out.append(segment)
             continue
@@ -109,6 +117,21 @@ def _name_restated(segments: list[list[str]], phrases: set[str]) -> list[list[st
         else:
             out.append(segment)
     return out
+
+
+def _pronoun_before(out: list[list[str]], phrases: set[str]) -> tuple[int, int] | None:
+    """Where the last "it" or "them" stands in the sentences said so far, when they name nothing of the world
+    (a thing said only after the request about it); else None."""
+    words = [w for s in out for w in s]
+    if any(" ".join(words[i : i + n]) in phrases for n in range(1, 5) for i in range(len(words))):
+        return None
+    spots = [
+        (n, i)
+        for n, s in enumerate(out)
+        for i, w in enumerate(s)
+        if w in _IT and i in (1, 2) and s[0] not in _ASKING  # "turn it up", not "what is it called"
+    ]
+    return spots[-1] if spots else None
 
 
 def _kind_in_room(segments: list[list[str]], vocabulary: Vocabulary) -> list[list[str]]:

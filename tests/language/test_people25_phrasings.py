@@ -14,8 +14,9 @@ apartment as well:
   (``knic.language.dialects``);
 * what is waited for after where the robot waits ("wait in the hall for the taxi driver") is dropped, as
   "wait for the postman" is (``knic.language.contracted``);
-* "might I have" asks for a thing, "let me know where" where it is; Jamaican "gi" is "give"
-  (``commands.yaml``);
+* "might I have" asks for a thing, "let me know where" where it is, "arrange X on Y" puts it; Jamaican "gi" is
+  "give" (``commands.yaml``); a thing said alone after a request about "it" that named nothing ("turn it up.
+  The reading lamp. To seventy.") is what "it" is (``knic.language.restating``);
 * "the ref" (Filipino English) is the fridge, "the CR" (comfort room) a toilet or bathroom, a "ball cap" a
   baseball cap (``synonyms.yaml``);
 * what is said again more exactly in a later stretch: a level said roughly, then exactly ("a bit brighter,
@@ -525,4 +526,28 @@ def test_names_in_the_room_gone_to_and_of_the_home(
 def test_the_home_is_still_anywhere(vocabulary: Vocabulary) -> None:
     assert frames_read(vocabulary, "search the flat for the remote") == [
         {"frame": "SEARCHING", "theme": "remote"}
+    ]
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        ("Bring it to me. The cup.", [{"frame": "BRINGING", "theme": "cup", "beneficiary": "me"}]),
+        (
+            "Open them. The blinds, I mean.",
+            [{"frame": "OPERATING", "device": "bedroom_blinds", "state": "open"}],
+        ),
+        (
+            "Could you kindly arrange the candle on the dining table",
+            [{"frame": "PLACING", "theme": "candle", "goal": "dining_table"}],
+        ),
+    ],
+)
+def test_it_said_before_the_thing(vocabulary: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
+    assert frames_read(vocabulary, text) == frames
+
+
+def test_it_said_before_the_thing_in_the_family_house() -> None:
+    assert frames_read(world_of(FAMILY), "Turn it up. The reading lamp. To seventy.", "mark") == [
+        {"frame": "OPERATING", "device": "reading_lamp", "state": "70"}
     ]
