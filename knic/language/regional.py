@@ -12,7 +12,7 @@ Two steps, both general English (no world's names):
   - a Japanese honorific after a name ("Kit-kun", "Wilf-san", "Haruka-chan", "Tanaka-sama"), the particles
     and interjections of Singaporean English ("lah", "lor", "aiyo", "alamak") and "sumimasen": left out;
   - "where" straight before a possessive or an article, its verb left out ("where my handbag?", a learner's
-    and Singaporean English): "where is";
+    and Singaporean English), or said last ("the remote where ah?"): "where is";
   - "on" before "up", "over", "down", "out" or "back" and then "to" ("tote it on up to the guest room",
     "carry it on over to Huiling", Southern US): left out;
   - a colour of wine after "a bottle of" or "a glass of" ("bring us a bottle of red"): that wine;
@@ -78,7 +78,9 @@ _POURED = frozenset({"bottle", "glass", "drop", "carafe"})
 _HONORIFICS = frozenset({"san", "kun", "chan", "sama"})
 #: particles and interjections of Singaporean English, and the Japanese "excuse me", said around a request
 #: (read in text only: as fillers they would join the speech model's filler loop)
-_PARTICLES = frozenset({"lah", "leh", "lor", "hor", "meh", "aiyo", "aiyah", "alamak", "wah", "sumimasen"})
+_PARTICLES = frozenset(
+    {"lah", "leh", "lor", "hor", "meh", "ah", "aiyo", "aiyah", "alamak", "wah", "sumimasen"}
+)
 #: what "where" stands before when its "is" is left out
 _POSSESSIVES = frozenset({"my", "the", "your", "his", "her", "our", "their", "me"})
 #: what makes "where ... " a question with a verb of its own ("where my pen has got to")
@@ -143,6 +145,8 @@ def regional_words(tokens: list[str]) -> list[str]:
         if token == "where" and out[i + 1] in _POSSESSIVES and not rest & _VERBS_AFTER:
             out.insert(i + 1, "is")  # "where my handbag": where is my handbag
             break
+    if len(out) > 2 and out[-1] == "where" and out[0] in _POSSESSIVES and "where" not in out[:-1]:
+        out = ["where", "is", *out[:-1]]  # "the remote where ah?": a particle after the question word
     if len(out) > 3 and out[-1] == "both" and "and" in out[:-2]:
         out.pop()  # "the hall light and the landing light both"
     out = _state_said_first(out)

@@ -603,3 +603,14 @@ def test_what_a_learner_wants_to_drink(duplex: Vocabulary, vocabulary: Vocabular
     assert frames_read(duplex, "I want to drink iced tea, please bring", "haruka") == [
         {"frame": "BRINGING", "theme": "iced_tea", "beneficiary": "me"}
     ]
+
+
+def test_a_particle_after_the_question_word(duplex: Vocabulary, vocabulary: Vocabulary) -> None:
+    """ "the remote where ah?" (Singaporean "ah" after "where" said last); "ah, bring me the cup"."""
+    assert frames_read(vocabulary, "the remote where ah?") == [{"frame": "SEARCHING", "theme": "remote"}]
+    assert frames_read(vocabulary, "ah, bring me the cup") == [
+        {"frame": "BRINGING", "theme": "cup", "beneficiary": "me"}
+    ]
+    assert frames_read(duplex, "my handbag where ah?", "huiling") == [
+        {"frame": "SEARCHING", "theme": "handbag"}
+    ]
