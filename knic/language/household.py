@@ -444,9 +444,9 @@ def _restated_before(chunks: list[Chunk], is_a: Callable[[Chunk, str], bool]) ->
 
 def ones_named(segments: list[list[str]], vocabulary: Vocabulary) -> list[list[str]]:
     """ "the right one" said after "the left lamp": "the right lamp", where the world has a thing called so
-    (the last word of a name said before, with the word said before "one"); first, what is said again more
-    exactly is put where it was said (:mod:`knic.language.restating`)."""
-    segments = restated(segments, vocabulary)
+    (the last word of a name said before, with the word said before "one"); then what is said again more
+    exactly is put where it was said (:mod:`knic.language.restating`: "I want the light off. The hallway
+    one.")."""
     names = {t.phrase for t in vocabulary.terms if len(t.phrase.split()) == 2}
     said: list[str] = []
     out: list[list[str]] = []
@@ -458,7 +458,7 @@ def ones_named(segments: list[list[str]], vocabulary: Vocabulary) -> list[list[s
                 kept[i] = heads[-1]
         said += kept
         out.append(kept)
-    return out
+    return restated(out, vocabulary)
 
 
 #: what says a thing is to be taken along ("don't forget the glasses", "do not forget", "remember the keys")

@@ -534,6 +534,10 @@ def test_the_home_is_still_anywhere(vocabulary: Vocabulary) -> None:
     [
         ("Bring it to me. The cup.", [{"frame": "BRINGING", "theme": "cup", "beneficiary": "me"}]),
         (
+            "I want the light off. The hallway one.",
+            [{"frame": "OPERATING", "device": "hallway_light", "state": "off"}],
+        ),
+        (
             "Open them. The blinds, I mean.",
             [{"frame": "OPERATING", "device": "bedroom_blinds", "state": "open"}],
         ),
