@@ -25,6 +25,7 @@ import re
 from functools import lru_cache
 
 from knic.language.frames import CommandFrame
+from knic.language.regional import FOR_WHOM
 from knic.language.shortnames import contains
 from knic.language.vocabulary import Vocabulary
 
@@ -150,6 +151,14 @@ def _owned(vocabulary: Vocabulary) -> tuple[tuple[str, ...], dict[tuple[str, str
     return tuple(people), owned
 
 
+def _me_for_my(words: list[str], i: int, owned: dict[tuple[str, str], str], me: str) -> bool:
+    """Whether "me" at ``i`` is "my" before a thing the speaker owns ("fetch us me mug", Yorkshire and Irish
+    English), not whom a thing is for after a verb ("bring me mug"; :mod:`knic.language.regional`)."""
+    if words[i] != "me" or (i and words[i - 1] in FOR_WHOM):
+        return False
+    return _owned_thing(owned, me, words[i + 1 : i + 3]) is not None
+
+
 def _things_read(text: str, vocabulary: Vocabulary, speaker: str) -> str:
     """``text`` with the owned things of the module docstring said by their names (the rest kept as said)."""
     people, owned = _owned(vocabulary)
@@ -163,7 +172,7 @@ def _things_read(text: str, vocabulary: Vocabulary, speaker: str) -> str:
     i = 0
     while i < len(words):
         owner, end = _owner_at(words, i, people)
-        if owner is None and words[i] in _SPEAKERS:
+        if owner is None and (words[i] in _SPEAKERS or _me_for_my(words, i, owned, me)):
             owner, end = me, i + 1
         elif owner is None and words[i] in _OTHERS and last:
             owner, end = last, i + 1
@@ -177,7 +186,9 @@ def _things_read(text: str, vocabulary: Vocabulary, speaker: str) -> str:
         if thing is not None:
             # the owner stays said: "grab my keys" is still for the speaker, and "fetch maisie's lunchbox and
             # give it to her" names maisie for "her"
-            said = "my" if words[i] in _SPEAKERS else words[i] if words[i] in _OTHERS else f"{owner}'s"
+            said = (
+                "my" if words[i] in (*_SPEAKERS, "me") else words[i] if words[i] in _OTHERS else f"{owner}'s"
+            )
             changes.append((i, end + thing[1], f"{said} {thing[0]}"))
             i = end + thing[1]
             continue

@@ -88,7 +88,7 @@ _VERBS_AFTER = frozenset({"is", "are", "was", "were", "has", "have", "had", "did
 #: particles of direction after "on" in "carry it on up to ..."
 _ON_WHERE = frozenset({"up", "over", "down", "out", "back"})
 #: the verbs after which "me" is whom a thing is for ("bring me cup"), not "my"
-_FOR_WHOM = frozenset(
+FOR_WHOM = frozenset(
     {"bring", "fetch", "get", "give", "hand", "pass", "grab", "find", "buy", "chuck", "throw", "toss", "lob"}
     | {"bung", "send", "pour", "make", "fix", "show", "tell", "read", "save", "leave", "order", "help", "let"}
     | {"excuse", "for", "to", "with", "take", "carry"}
@@ -401,7 +401,7 @@ def _my_said_me(words: list[str], firsts: frozenset[str]) -> list[str]:
     for i, word in enumerate(words):
         if word != "me" or not words[i + 1 : i + 2] or words[i + 1] not in firsts:
             continue
-        if not (i and words[i - 1] in _FOR_WHOM):
+        if not (i and words[i - 1] in FOR_WHOM):
             out[i] = "my"
     return out
 

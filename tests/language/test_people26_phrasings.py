@@ -30,7 +30,8 @@ got wrong, each tried in the ERL apartment as well, with sentences of other spea
   singular of a name that is only plural ("my sunglass"); "a bottle of red" (wine); "off it", "help to off
   the light", the tag "anot"; what the speaker is "fixing to" do is no request; "the atlas should be on the
   dining table", "check whether she's in the bedroom" say where; "I want to drink juice" wants the juice
-  (``knic.language.regional``).
+  (``knic.language.regional``); "me" for "my" before a thing the speaker owns ("fetch us me mug", said by
+  mei: her own mug; ``knic.language.owned``).
 """
 
 from __future__ import annotations
@@ -614,3 +615,14 @@ def test_a_particle_after_the_question_word(duplex: Vocabulary, vocabulary: Voca
     assert frames_read(duplex, "my handbag where ah?", "huiling") == [
         {"frame": "SEARCHING", "theme": "handbag"}
     ]
+
+
+def test_me_for_my_before_a_thing_the_speaker_owns() -> None:
+    """ "fetch us me mug" said by mei is her own mug, as "my mug" is (``knic.language.owned``); "bring me mug"
+    (a learner's "me" without its article) names no owner, so which mug is asked."""
+    students = world_of("tests/fixtures/language/people23/student_house.yaml")
+    assert frames_read(students, "fetch us me mug, love", "mei") == [
+        {"frame": "BRINGING", "theme": "mei_mug", "beneficiary": "me"}
+    ]
+    assert frames_read(students, "where's me mug?", "mei") == [{"frame": "SEARCHING", "theme": "mei_mug"}]
+    assert_asked(students, "bring me mug", "mug", "mei")
