@@ -14,9 +14,9 @@ apartment as well:
   (``knic.language.dialects``);
 * what is waited for after where the robot waits ("wait in the hall for the taxi driver") is dropped, as
   "wait for the postman" is (``knic.language.contracted``);
-* "might I have" asks for a thing, "let me know where" where it is, "arrange X on Y" puts it; Jamaican "gi" is
-  "give" (``commands.yaml``); a thing said alone after a request about "it" that named nothing ("turn it up.
-  The reading lamp. To seventy.") is what "it" is (``knic.language.restating``);
+* "might I have" asks for a thing, "let me know where" and "where you put" where it is, "arrange X on Y" puts
+  it; Jamaican "gi" is "give" (``commands.yaml``); a thing said alone after a request about "it" that named
+  nothing ("turn it up. The reading lamp. To seventy.") is what "it" is (``knic.language.restating``);
 * "the ref" (Filipino English) is the fridge, "the CR" (comfort room) a toilet or bathroom, a "ball cap" a
   baseball cap (``synonyms.yaml``);
 * what is said again more exactly in a later stretch: a level said roughly, then exactly ("a bit brighter,
@@ -183,6 +183,7 @@ def test_the_voices_of_the_guest_house(
         ("Robot, me want the apple!", [{"frame": "BRINGING", "theme": "apple", "beneficiary": "me"}]),
         ("might i have the remote", [{"frame": "BRINGING", "theme": "remote", "beneficiary": "me"}]),
         ("let me know where the remote is", [{"frame": "SEARCHING", "theme": "remote"}]),
+        ("Weh yuh put mi glasses?", [{"frame": "SEARCHING", "theme": "glasses"}]),
         (
             "switch on the light for me in the hallway",
             [{"frame": "OPERATING", "device": "hallway_light", "state": "on"}],
