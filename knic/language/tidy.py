@@ -116,9 +116,13 @@ def digits_read(
     follows is counted ("2 apples", "2 of them") or one of ``units`` ("2 percent", "4 %"), the word before is
     one of ``before_numbers`` ("to 2", "at 4"), or nothing follows; typed signs as their words ("3/4": three
     quarters; :attr:`CommandLanguage.typed_words`); decimals as whole numbers first
-    (:func:`~knic.language.decimals.decimals_read`)."""
+    (:func:`~knic.language.decimals.decimals_read`); a number that numbers a step ("(1) close the blinds
+    (2) turn off the light", "1. go to the kitchen 2. ...") as the end of a stretch, not a level."""
     tokens = decimals_read(plain_typed(text)).split()
     for i, token in enumerate(tokens):
+        if _STEP_NUMBER.fullmatch(token) and (token[0] == "(" or not i or tokens[i - 1][-1] in ".!?:;"):
+            tokens[i] = ","
+            continue
         bare = token.strip(".,;:!?")
         if bare in typed:
             tokens[i] = token.replace(bare, typed[bare])
@@ -130,6 +134,10 @@ def digits_read(
         if not (_counted(after) or after in units or before in before_numbers):
             tokens[i] = digit_words[token]
     return " ".join(tokens)
+
+
+#: a number said as a list's mark: "(1)", "2)", "3." (the dot one only opening a sentence)
+_STEP_NUMBER = re.compile(r"\(\d{1,2}\)|\d{1,2}[.)]")
 
 
 def _counted(word: str) -> bool:

@@ -31,7 +31,8 @@ got wrong, each tried in the ERL apartment as well, with sentences of other spea
   the light", the tag "anot"; what the speaker is "fixing to" do is no request; "the atlas should be on the
   dining table", "check whether she's in the bedroom" say where; "I want to drink juice" wants the juice
   (``knic.language.regional``); "me" for "my" before a thing the speaker owns ("fetch us me mug", said by
-  mei: her own mug; ``knic.language.owned``).
+  mei: her own mug; ``knic.language.owned``); a list's marks ("(1) ... (2) ...", "1) ...") end a stretch,
+  no level (``knic.language.tidy``).
 """
 
 from __future__ import annotations
@@ -626,3 +627,37 @@ def test_me_for_my_before_a_thing_the_speaker_owns() -> None:
     ]
     assert frames_read(students, "where's me mug?", "mei") == [{"frame": "SEARCHING", "theme": "mei_mug"}]
     assert_asked(students, "bring me mug", "mug", "mei")
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        (
+            "(1) close the blinds (2) turn off the hallway light",
+            [
+                {"frame": "OPERATING", "device": "bedroom_blinds", "state": "closed"},
+                {"frame": "OPERATING", "device": "hallway_light", "state": "off"},
+            ],
+        ),
+        (
+            "1) go to the kitchen 2) bring me the juice",
+            [
+                {"frame": "MOTION", "goal": "kitchen"},
+                {"frame": "BRINGING", "theme": "juice", "source": "kitchen", "beneficiary": "me"},
+            ],
+        ),
+        (
+            "set the dimmer to 20. then bring me the cup",
+            [
+                {"frame": "OPERATING", "device": "living_room_dimmer", "state": "20"},
+                {"frame": "BRINGING", "theme": "cup", "beneficiary": "me"},
+            ],
+        ),
+    ],
+)
+def test_a_lists_numbers_are_no_levels(
+    vocabulary: Vocabulary, text: str, frames: list[dict[str, str]]
+) -> None:
+    """ "(1) ... (2) ...", "1) ... 2) ...": a list's marks end a stretch (``knic.language.tidy``); "to 20."
+    stays a level."""
+    assert frames_read(vocabulary, text) == frames
