@@ -32,7 +32,7 @@ got wrong, each tried in the ERL apartment as well, with sentences of other spea
   dining table", "check whether she's in the bedroom" say where; "I want to drink juice" wants the juice
   (``knic.language.regional``); "me" for "my" before a thing the speaker owns ("fetch us me mug", said by
   mei: her own mug; ``knic.language.owned``); a list's marks ("(1) ... (2) ...", "1) ...") end a stretch,
-  no level (``knic.language.tidy``).
+  no level (``knic.language.tidy``); "run to the kitchen" goes, as "nip to" does (``commands.yaml``).
 """
 
 from __future__ import annotations
@@ -661,3 +661,18 @@ def test_a_lists_numbers_are_no_levels(
     """ "(1) ... (2) ...", "1) ... 2) ...": a list's marks end a stretch (``knic.language.tidy``); "to 20."
     stays a level."""
     assert frames_read(vocabulary, text) == frames
+
+
+def test_run_to_a_place(duplex: Vocabulary, vocabulary: Vocabulary) -> None:
+    """ "run to the kitchen and grab me the juice", "run up to the roof terrace": a short trip, as "nip to"
+    (``commands.yaml``); "run the vacuum" is still refused naming the vacuum."""
+    assert frames_read(vocabulary, "can you run to the kitchen and grab me the juice") == [
+        {"frame": "MOTION", "goal": "kitchen"},
+        {"frame": "BRINGING", "theme": "juice", "source": "kitchen", "beneficiary": "me"},
+    ]
+    assert frames_read(duplex, "run up to the roof terrace and fetch the watering can", "darlene") == [
+        {"frame": "MOTION", "goal": "roof_terrace"},
+        {"frame": "BRINGING", "theme": "watering_can", "source": "roof_terrace", "beneficiary": "me"},
+    ]
+    result = understand("run the vacuum in the living area", duplex, speaker="darlene")
+    assert not result.accepted and "vacuum" in result.reason
