@@ -9,8 +9,9 @@ one plain word, such as Jamaican "di" for "the", are ``spellings`` in ``commands
   "him" or after a verb of the past ("give him him comic", "inna him tea", "Tobias cut him finger"); "dem"
   after a thing is its plural said again, dropped ("open di blinds dem"), elsewhere "them"; "where X deh"
   is "where is X"; "go a" is "go to"; "go" said after the thing carried, before where to ("carry di teapot
-  go a di kitchen"), is "to"; "come" straight after a verb of carrying ("bring come di sugar bowl"), as
-  after the thing, is where to: left out (a thing brought is brought to the speaker);
+  go a di kitchen", and in Nigerian English "carry the cup go kitchen"), is "to"; "come" straight after a
+  verb of carrying ("bring come di sugar bowl"), as after the thing, is where to: left out (a thing brought
+  is brought to the speaker);
 * Northern English "tha" for "you" after a verb of asking ("has tha seen ...": "have you seen"); elsewhere
   "tha" is a typed "the" ("turn on tha light"); "it" or "them" with the person straight after, said last
   ("take it him", "give them her"): "to" that person;
@@ -97,9 +98,9 @@ def dialect_words(tokens: list[str]) -> list[str]:
         if token in ("up", "down") and tokens[i : i + 3] in (["the", "stairs", "to"], ["the", "stair", "to"]):
             i += 2  # "help me up the stairs to ...": the way, not a place
             continue
-        if carried and token == "go" and nxt in ("a", "to") and before not in _JOINING:
-            out.append("to")  # "carry di teapot go a di kitchen"
-            i += 1
+        if carried and token == "go" and nxt and before not in _JOINING | _NEXT_ACTION:
+            out.append("to")  # "carry di teapot go a di kitchen", "carry the cup go kitchen"
+            i += nxt in ("a", "to")
             continue
         if token in ("come", "go") and nxt in _STATES and _making(out):
             continue  # "mek di lamp come on": turn it on

@@ -18,7 +18,7 @@ apartment as well:
   it; Jamaican "gi" is "give" (``commands.yaml``); a thing said alone after a request about "it" that named
   nothing ("turn it up. The reading lamp. To seventy.") is what "it" is (``knic.language.restating``);
 * "the ref" (Filipino English) is the fridge, "the CR" (comfort room) a toilet or bathroom, a "ball cap" a
-  baseball cap (``synonyms.yaml``);
+  baseball cap, the "press" (Irish) a cupboard (``synonyms.yaml``);
 * what is said again more exactly in a later stretch: a level said roughly, then exactly ("a bit brighter,
   put it to eighty percent"), a name said again longer ("the lamp. The lamp. The standard lamp"), a device
   named by its kind alone after another in the same room ("desk lamp to fifty, blind half open"), a piece
@@ -89,6 +89,15 @@ def house() -> Vocabulary:
             ],
         ),
         ("Where Tracy deh?", [{"frame": "SEARCHING", "theme": "tracy"}]),
+        ("Oya, carry the cup go kitchen", [{"frame": "BRINGING", "theme": "cup", "goal": "kitchen"}]),
+        (
+            "take the cup then go kitchen",
+            [{"frame": "TAKING", "theme": "cup"}, {"frame": "MOTION", "goal": "kitchen"}],
+        ),
+        (
+            "Put the remote in the press in the kitchen",
+            [{"frame": "PLACING", "theme": "remote", "goal": "kitchen_cabinet"}],
+        ),
         (
             "Close di blinds dem inna di bedroom",
             [{"frame": "OPERATING", "device": "bedroom_blinds", "state": "closed"}],
