@@ -367,6 +367,12 @@ def _motion(reader: Resolver, clause: Clause, previous: Frames, groups: list[Fra
         raise LanguageError(f"{_verb(clause)} {way[0]} to which room? I do not know what is {way[0]} here")
     if not places:
         raise LanguageError(f"{_verb(clause)} where? I heard no room or furniture of this world")
+    carries = clause.verb is not None and {"PLACING", "BRINGING"} & set(clause.verb.frames)
+    if carries and places[0].prep is None and any(a.prep == "goal" for a in places[1:]):
+        # "move the sofa to the bedroom": a thing to move, not where to go ("go down the hall to the study")
+        raise LanguageError(
+            f"I cannot {_verb(clause)} the {places[0].chunk.text}: it is no object I can carry"
+        )
     target = places[-1]
     # "go to tracy": to where a person is (said with a preposition; "come to me" asks which room)
     person = (

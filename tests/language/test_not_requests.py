@@ -89,3 +89,14 @@ def test_words_after_a_joiner_that_are_no_verb_still_read(
     result = understand(text, vocabulary)
     assert result.accepted, result.reason
     assert [str(g) for g in result.goals][: len(goals)] == goals
+
+
+@pytest.mark.parametrize("text", ["move the sofa to the bedroom", "shift the armchair into the kitchen"])
+def test_furniture_to_be_moved_is_refused_not_read_as_where_to_go(vocabulary: Vocabulary, text: str) -> None:
+    result = understand(text, vocabulary)  # was a motion to the room, the sofa dropped
+    assert not result.accepted and not result.goals and "is not an object" in result.reason
+
+
+def test_a_way_said_before_where_to_go_is_still_a_motion(vocabulary: Vocabulary) -> None:
+    result = understand("go down the hallway to the kitchen", vocabulary)
+    assert [str(g) for g in result.goals] == ["(robot_at r2d2 kitchen)"]
