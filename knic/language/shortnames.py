@@ -98,7 +98,8 @@ def english_nearer() -> tuple[frozenset[str], ...]:
 
 @lru_cache(maxsize=1)
 def english_opposites() -> dict[str, frozenset[str]]:
-    """Each word of the ``opposites`` pairs of ``synonyms.yaml`` -> the words opposite it, read once.
+    """Each word of the ``opposites`` groups of ``synonyms.yaml`` -> the words opposite it (every other word
+    of its group), read once.
 
     Raises:
         LanguageError: not a list of pairs of words.
@@ -106,16 +107,17 @@ def english_opposites() -> dict[str, frozenset[str]]:
     data = read_yaml(_FILE, "synonyms", LanguageError) or {}
     raw = data.get("opposites", []) if isinstance(data, dict) else []
     if not isinstance(raw, list) or not all(
-        isinstance(pair, list)
-        and len(pair) == 2
-        and all(isinstance(w, str) and len(w.split()) == 1 for w in pair)
-        for pair in raw
+        isinstance(group, list)
+        and len(group) >= 2
+        and all(isinstance(w, str) and len(w.split()) == 1 for w in group)
+        for group in raw
     ):
-        raise LanguageError(f"{_FILE}: 'opposites' is a list of pairs of words")
+        raise LanguageError(f"{_FILE}: 'opposites' is a list of groups of two words or more")
     out: dict[str, set[str]] = {}
-    for one, other in raw:
-        out.setdefault(one.lower(), set()).add(other.lower())
-        out.setdefault(other.lower(), set()).add(one.lower())
+    for group in raw:
+        words = {w.lower() for w in group}
+        for word in words:
+            out.setdefault(word, set()).update(words - {word})
     return {word: frozenset(others) for word, others in out.items()}
 
 

@@ -1,7 +1,9 @@
 """What the speaker asks about, means to do themselves or does as a habit is no request (commands.yaml
 ``not_requests``): a question about how ("how do you spell kitchen"), the speaker's own plan ("i should water
 the plants later") or habit ("i always keep the soap in the bathroom") is refused, even when misheard into
-words that name the world; a request said that way is still read."""
+words that name the world; a request said that way is still read. So is what the robot cannot do or the world
+lacks: a later action it has no verb for ("... and wash it"), furniture as the thing to move, a colour the
+world's thing has not ("the white wine" beside a red one)."""
 
 from __future__ import annotations
 
@@ -9,6 +11,8 @@ import pytest
 
 from knic.language import understand
 from knic.language.vocabulary import Vocabulary
+
+from .conftest import frames_read, world_of
 
 
 @pytest.mark.parametrize(
@@ -100,3 +104,14 @@ def test_furniture_to_be_moved_is_refused_not_read_as_where_to_go(vocabulary: Vo
 def test_a_way_said_before_where_to_go_is_still_a_motion(vocabulary: Vocabulary) -> None:
     result = understand("go down the hallway to the kitchen", vocabulary)
     assert [str(g) for g in result.goals] == ["(robot_at r2d2 kitchen)"]
+
+
+def test_a_colour_the_worlds_thing_has_not_names_nothing() -> None:
+    """The duplex has a red wine only: "the white wine" is not it (it was taken for the red one)."""
+    duplex = world_of("tests/fixtures/language/people26/city_duplex.yaml")
+    for text in ["bring me the white wine", "bring me a glass of white"]:
+        result = understand(text, duplex, speaker="huiling")
+        assert not result.accepted and "no 'white wine' here" in result.reason, text
+    assert frames_read(duplex, "bring me the red wine", "huiling") == [
+        {"frame": "BRINGING", "theme": "red_wine", "beneficiary": "me"}
+    ]
