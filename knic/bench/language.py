@@ -4,13 +4,14 @@ The sets are ``tests/fixtures/language/dev.yaml`` (tuned on) and ``tests/fixture
 (written afterwards in other words), and ``people2/dev.yaml`` and ``people2/test.yaml`` (100 commands each,
 written blind: the writer saw the apartment's description and the gold format only, not the grammar, the
 reader, the lexicon or the earlier sets; ``people2-test`` is never tuned on). ``--file`` runs a set of one's
-own. ``people3`` to ``people27`` are further blind development sets (``people5`` to ``people15`` span both
+own. ``people3`` to ``people28`` are further blind development sets (``people5`` to ``people15`` span both
 houses; ``people16`` the simulator's test flat and bungalow; ``people18`` a townhouse of its own, a world file
 beside the set; ``people19`` a garden flat, ``people20`` a farmhouse, ``people21`` an accessible flat,
 ``people22`` a terraced family house on two floors, ``people23`` a shared student house, ``people24`` a
 detached family house with a granny annexe and a garden office, ``people25`` a bed-and-breakfast on two
-floors, ``people26`` a city duplex apartment with a mezzanine study and a roof terrace and ``people27`` a
-converted narrowboat moored beside a cottage garden, likewise). Each
+floors, ``people26`` a city duplex apartment with a mezzanine study and a roof terrace, ``people27`` a
+converted narrowboat moored beside a cottage garden and ``people28`` a mews house on three floors with a roof
+garden, likewise). Each
 case is a command with its gold frames and goals, or with a word the refusal (``reject``) or the question back
 (``question``) must contain. Cases run against the ERL apartment or, with ``world: other``, against a
 different house (``tests/fixtures/language/other_world``), to show that the language code knows no world's
@@ -72,6 +73,7 @@ SETS = {
     "people25-dev": FIXTURES / "people25" / "dev.yaml",
     "people26-dev": FIXTURES / "people26" / "dev.yaml",
     "people27-dev": FIXTURES / "people27" / "dev.yaml",
+    "people28-dev": FIXTURES / "people28" / "dev.yaml",
 }
 OTHER_WORLD = FIXTURES / "other_world" / "problem.pddl"
 _MAIN = {"MOTION": ("goal",), "OPERATING": ("device", "state")}
