@@ -97,6 +97,8 @@ _AFTER_A_THING = frozenset(
         "indoors",
         "outdoors",
     }
+    # the way it goes on a boat ("take the tackle box aft to the stern", "bring the rope ashore")
+    | {"aft", "astern", "ashore", "aboard"}
     | {"home", "together", "straight", "right", "quick", "fast", "asap", "later", "down", "up", "out", "in"}
     # whom it is said to ("fetch the mug mate", "bring the cup love to the kitchen")
     | {"mate", "buddy", "pal", "darling", "sweetie", "honey", "dear", "love", "sir", "madam", "robot"}
