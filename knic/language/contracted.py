@@ -28,7 +28,10 @@
   ...", "arrange for the newspaper to be brought to ..."): the verb said first ("open the lounge curtains"),
   as a hotel guest speaks to staff;
 * "both" after "them" ("the tongs and the sun cream, bring them both to the kitchen"), "all" there before
-  where they go ("put them all on the table"), and "both of them": "them".
+  where they go ("put them all on the table"), and "both of them": "them";
+* a request asked as what the robot is about to do ("are you going to switch off the hall light?", "are you
+  gonna bring me the teapot?", "so are you going to put the butter away?"): the verb said first, as "will
+  you" already is; "are you going to be long?", "are you going to the kitchen?" stay questions about it.
 """
 
 from __future__ import annotations
@@ -156,10 +159,48 @@ def _wished_done(tokens: list[str]) -> list[str] | None:
     return [_DONE[tokens[done]], *tokens[opens[-1] + 1 : done - 2], *tokens[done + 1 :]]
 
 
+#: verbs a request opens with, after "are you going to" (not "be", nor a place: "going to the kitchen")
+_ASKED_VERBS = frozenset(
+    {
+        "bring",
+        "take",
+        "get",
+        "fetch",
+        "grab",
+        "put",
+        "place",
+        "switch",
+        "turn",
+        "open",
+        "close",
+        "shut",
+        "dim",
+    }
+    | {"set", "find", "look", "check", "carry", "move", "go", "give", "hand", "pass", "leave", "draw", "pull"}
+)
+
+#: words that make "are you going to ..." a question about the plan itself
+_WONDERING = frozenset({"why", "how", "when", "where", "what", "who", "which", "whether", "if"})
+
+
+def _planned(tokens: list[str]) -> list[str]:
+    """``tokens`` from the verb on where "are you going to" comes before a request's verb (see the module
+    docstring); else as they are."""
+    for i in range(len(tokens) - 4):
+        # "why are you going to open it?" asks why
+        if (
+            tokens[i : i + 4] == ["are", "you", "going", "to"]
+            and tokens[i + 4] in _ASKED_VERBS
+            and _WONDERING.isdisjoint(tokens[:i])
+        ):
+            return tokens[:i] + tokens[i + 4 :]
+    return tokens
+
+
 def contracted(tokens: list[str]) -> list[str]:
     """``tokens`` (one stretch of a command, lower case) with the statements of the module docstring said as
     contractions."""
-    tokens = had_done(tokens)
+    tokens = had_done(_planned(tokens))
     out: list[str] = []
     i = 0
     while i < len(tokens):

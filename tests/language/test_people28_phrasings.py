@@ -1,0 +1,94 @@
+"""Phrasings from the people28 development set (a mews house on three floors with a roof garden the reader was
+never tuned on, ``tests/fixtures/language/people28/mews_house.yaml``) the reader first got wrong, each tried
+in the ERL apartment as well:
+
+* a request asked as what the robot is about to do ("are you going to switch off the hall light?", "are you
+  gonna bring me the teapot?"): the verb said first, as "will you" already is; "are you going to be long?",
+  "are you going to the kitchen?" and "why are you going to ...?" stay questions asking nothing of the robot
+  (``knic.language.contracted``).
+"""
+
+from __future__ import annotations
+
+from functools import lru_cache
+
+import pytest
+
+from knic.language import understand
+from knic.language.vocabulary import Vocabulary
+
+from .conftest import assert_asked, frames_read, world_of
+
+HOUSE = "tests/fixtures/language/people28/mews_house.yaml"
+
+
+@lru_cache(maxsize=1)
+def _house() -> Vocabulary:
+    return world_of(HOUSE)
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        (
+            "Are you going to switch off the hall light?",
+            [{"frame": "OPERATING", "device": "hall_light", "state": "off"}],
+        ),
+        (
+            "are you gonna bring me the teapot?",
+            [{"frame": "BRINGING", "theme": "teapot", "beneficiary": "me"}],
+        ),
+        (
+            "so are you going to put the butter in the fridge, dear?",
+            [{"frame": "PLACING", "theme": "butter", "goal": "fridge"}],
+        ),
+        (
+            "Are you going to go to the study and take the laptop to Winnie?",
+            [
+                {"frame": "MOTION", "goal": "study"},
+                {"frame": "BRINGING", "theme": "laptop", "source": "study", "beneficiary": "winnie"},
+            ],
+        ),
+    ],
+)
+def test_a_request_asked_as_a_plan_is_the_request_in_the_house(
+    text: str, frames: list[dict[str, str]]
+) -> None:
+    assert frames_read(_house(), text, "odette") == frames
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        (
+            "are you going to bring me a coke from the kitchen?",
+            [{"frame": "BRINGING", "theme": "coke_can", "source": "kitchen", "beneficiary": "me"}],
+        ),
+        (
+            "are you going to open the bedroom blinds halfway?",
+            [{"frame": "OPERATING", "device": "bedroom_blinds", "state": "50"}],
+        ),
+    ],
+)
+def test_a_request_asked_as_a_plan_is_the_request_in_the_apartment(
+    vocabulary: Vocabulary, text: str, frames: list[dict[str, str]]
+) -> None:
+    assert frames_read(vocabulary, text) == frames
+
+
+def test_a_plan_asked_of_an_ambiguous_thing_asks_which() -> None:
+    assert_asked(_house(), "Are you going to bring me the milk?", "milk", "odette")
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "are you going to be long?",
+        "are you going to the kitchen?",
+        "why are you going to open the study blind?",
+    ],
+)
+def test_a_question_about_the_plan_itself_asks_nothing(vocabulary: Vocabulary, text: str) -> None:
+    for world in (_house(), vocabulary):
+        result = understand(text, world, speaker="odette" if world is _house() else "annie")
+        assert not result.accepted and "no action" in result.reason, result.reason
