@@ -12,7 +12,9 @@ each tried in the ERL apartment as well:
   tackle box aft to the stern deck") (``knic.language.clauses``);
 * "a minute", "for a minute", "a moment", "a sec" and Cornish "dreckly" (later) are no things ("go and stand
   by the stove a minute"); "wait a minute", "wait a sec" and "hang on" before a new place are a repair, as
-  "no wait" is ("go to the kitchen, wait a minute, the bedroom") (``commands.yaml``).
+  "no wait" is ("go to the kitchen, wait a minute, the bedroom") (``commands.yaml``);
+* a list of jobs read out: an arrow is "to" ("walking stick -> Ambrose", "the remote => jack"), and "it
+  says", "next one says", "the list says" before the job are no part of it (``commands.yaml``).
 """
 
 from __future__ import annotations
@@ -116,3 +118,48 @@ def test_in_the_apartment(vocabulary: Vocabulary, text: str, frames: list[dict[s
 
 def test_a_kettle_of_two_still_asks_whenever_it_is_wanted() -> None:
     assert_asked(_boat(), "Bring us the kettle dreckly", "kettle", "jago")
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        (
+            "walking stick -> Ambrose",
+            [{"frame": "BRINGING", "theme": "walking_stick", "beneficiary": "ambrose"}],
+        ),
+        (
+            "it says watering can to the bow deck",
+            [{"frame": "BRINGING", "theme": "watering_can", "goal": "bow_deck"}],
+        ),
+        (
+            "it says shed light off and then go to the kitchen",
+            [
+                {"frame": "OPERATING", "device": "shed_light", "state": "off"},
+                {"frame": "MOTION", "goal": "kitchen_diner"},
+            ],
+        ),
+        (
+            "next one says garden lights on",
+            [{"frame": "OPERATING", "device": "garden_lights", "state": "on"}],
+        ),
+    ],
+)
+def test_a_list_of_jobs_read_out_on_the_narrowboat(text: str, frames: list[dict[str, str]]) -> None:
+    assert frames_read(_boat(), text, "wren") == frames
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        ("the cup -> kitchen", [{"frame": "BRINGING", "theme": "cup", "goal": "kitchen"}]),
+        ("the remote => jack", [{"frame": "BRINGING", "theme": "remote", "beneficiary": "jack"}]),
+        (
+            "the list says bring the cup to the kitchen",
+            [{"frame": "BRINGING", "theme": "cup", "goal": "kitchen"}],
+        ),
+    ],
+)
+def test_a_list_of_jobs_read_out_in_the_apartment(
+    vocabulary: Vocabulary, text: str, frames: list[dict[str, str]]
+) -> None:
+    assert frames_read(vocabulary, text) == frames
