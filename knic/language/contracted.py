@@ -27,6 +27,8 @@
   switched off", "have the towel sent up to ...", "I'd be grateful if the suitcase could be taken down to
   ...", "arrange for the newspaper to be brought to ..."): the verb said first ("open the lounge curtains"),
   as a hotel guest speaks to staff;
+* "on" after the state "off" or "on" before where ("switch the light off on the landing", "all lights off on
+  the balcony"): "in", the place, not the state said again;
 * "both" after "them" ("the tongs and the sun cream, bring them both to the kitchen"), "all" there before
   where they go ("put them all on the table"), and "both of them": "them";
 * a request asked as what the robot is about to do ("are you going to switch off the hall light?", "are you
@@ -241,6 +243,8 @@ def contracted(tokens: list[str]) -> list[str]:
             out.append("above")
         elif token == "hear" and (not nxt or out[-1:] in _HERE_AFTER):
             out.append("here")
+        elif token == "on" and out[-1:] in (["off"], ["on"]) and nxt in ("the", "my", "our"):
+            out.append("in")  # "switch the light off on the landing": where, not the state again
         elif (
             token == "still"
             and out

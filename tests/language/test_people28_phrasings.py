@@ -5,7 +5,11 @@ in the ERL apartment as well:
 * a request asked as what the robot is about to do ("are you going to switch off the hall light?", "are you
   gonna bring me the teapot?"): the verb said first, as "will you" already is; "are you going to be long?",
   "are you going to the kitchen?" and "why are you going to ...?" stay questions asking nothing of the robot
-  (``knic.language.contracted``).
+  (``knic.language.contracted``);
+* "on" after the state "off" or "on" before where ("switch the light off on the landing", "all lights off on
+  the balcony and the roof garden"): the place, not the state said again (``knic.language.contracted``);
+* a short trip said as "whip down to", "whip round to", "mosey on over to" (British and American English) or
+  "gan" (Geordie and Scots "go"): the robot goes there, as with "nip to" (``commands.yaml``).
 """
 
 from __future__ import annotations
@@ -92,3 +96,55 @@ def test_a_question_about_the_plan_itself_asks_nothing(vocabulary: Vocabulary, t
     for world in (_house(), vocabulary):
         result = understand(text, world, speaker="odette" if world is _house() else "annie")
         assert not result.accepted and "no action" in result.reason, result.reason
+
+
+@pytest.mark.parametrize(
+    ("erl", "text", "frames"),
+    [
+        (
+            False,
+            "switch the light off on the landing",
+            [{"frame": "OPERATING", "device": "landing_light", "state": "off"}],
+        ),
+        (
+            False,
+            "all lights off on the balcony and the roof garden",
+            [
+                {"frame": "OPERATING", "device": "balcony_light", "state": "off"},
+                {"frame": "OPERATING", "device": "roof_garden_lights", "state": "off"},
+            ],
+        ),
+        (
+            True,
+            "switch the lights off on the bedroom",
+            [{"frame": "OPERATING", "device": "bedroom_lights", "state": "off"}],
+        ),
+    ],
+)
+def test_on_after_the_state_says_where(
+    vocabulary: Vocabulary, erl: bool, text: str, frames: list[dict[str, str]]
+) -> None:
+    assert frames_read(vocabulary if erl else _house(), text, "annie" if erl else "dwayne") == frames
+
+
+@pytest.mark.parametrize(
+    ("erl", "text", "frames"),
+    [
+        (
+            False,
+            "Could you whip down to the kitchen and grab us the orange juice",
+            [
+                {"frame": "MOTION", "goal": "kitchen"},
+                {"frame": "BRINGING", "theme": "orange_juice", "source": "kitchen", "beneficiary": "me"},
+            ],
+        ),
+        (False, "Mosey on over to the piano", [{"frame": "MOTION", "goal": "piano"}]),
+        (False, "gan doon to the workshop", [{"frame": "MOTION", "goal": "workshop"}]),
+        (True, "whip round to the kitchen", [{"frame": "MOTION", "goal": "kitchen"}]),
+        (True, "gan to the bedroom", [{"frame": "MOTION", "goal": "bedroom"}]),
+    ],
+)
+def test_a_short_trip_in_other_words_goes_there(
+    vocabulary: Vocabulary, erl: bool, text: str, frames: list[dict[str, str]]
+) -> None:
+    assert frames_read(vocabulary if erl else _house(), text, "annie" if erl else "lenny") == frames
