@@ -14,7 +14,9 @@ each tried in the ERL apartment as well:
   by the stove a minute"); "wait a minute", "wait a sec" and "hang on" before a new place are a repair, as
   "no wait" is ("go to the kitchen, wait a minute, the bedroom") (``commands.yaml``);
 * a list of jobs read out: an arrow is "to" ("walking stick -> Ambrose", "the remote => jack"), and "it
-  says", "next one says", "the list says" before the job are no part of it (``commands.yaml``).
+  says", "next one says", "the list says" before the job are no part of it (``commands.yaml``);
+* "where" opening a command without its verb ("Where... Efua?", "where tablet?", a speaker short of words or
+  a learner) searches, as "where is" does; "where should I put the cup" still asks where (``commands.yaml``).
 """
 
 from __future__ import annotations
@@ -23,6 +25,7 @@ from functools import lru_cache
 
 import pytest
 
+from knic.language import understand
 from knic.language.vocabulary import Vocabulary
 
 from .conftest import assert_asked, frames_read, world_of
@@ -163,3 +166,14 @@ def test_a_list_of_jobs_read_out_in_the_apartment(
     vocabulary: Vocabulary, text: str, frames: list[dict[str, str]]
 ) -> None:
     assert frames_read(vocabulary, text) == frames
+
+
+def test_where_without_its_verb_searches(vocabulary: Vocabulary) -> None:
+    assert frames_read(_boat(), "Where... Efua?", "ambrose") == [{"frame": "SEARCHING", "theme": "efua"}]
+    assert frames_read(_boat(), "where fishing rod", "selin") == [
+        {"frame": "SEARCHING", "theme": "fishing_rod"}
+    ]
+    assert frames_read(vocabulary, "where tablet?") == [{"frame": "SEARCHING", "theme": "tablet"}]
+    assert frames_read(vocabulary, "where... jack?") == [{"frame": "SEARCHING", "theme": "jack"}]
+    result = understand("where should I put the cup", vocabulary, speaker="annie")
+    assert not result.accepted and "where" in result.reason.lower()
