@@ -16,7 +16,9 @@ each tried in the ERL apartment as well:
 * a list of jobs read out: an arrow is "to" ("walking stick -> Ambrose", "the remote => jack"), and "it
   says", "next one says", "the list says" before the job are no part of it (``commands.yaml``);
 * "where" opening a command without its verb ("Where... Efua?", "where tablet?", a speaker short of words or
-  a learner) searches, as "where is" does; "where should I put the cup" still asks where (``commands.yaml``).
+  a learner) searches, as "where is" does; "where should I put the cup" still asks where (``commands.yaml``);
+* "small small" (West African English: a little) and "a small bit" are how far unsaid, as "a bit" is: the
+  robot asks (``commands.yaml``).
 """
 
 from __future__ import annotations
@@ -177,3 +179,18 @@ def test_where_without_its_verb_searches(vocabulary: Vocabulary) -> None:
     assert frames_read(vocabulary, "where... jack?") == [{"frame": "SEARCHING", "theme": "jack"}]
     result = understand("where should I put the cup", vocabulary, speaker="annie")
     assert not result.accepted and "where" in result.reason.lower()
+
+
+@pytest.mark.parametrize(
+    ("world", "text", "device"),
+    [
+        (BOAT, "Please open the galley blind small small", "galley blind"),
+        (BOAT, "dim the saloon light a small bit", "saloon light"),
+        ("", "open the blinds small small", "blinds"),
+        ("", "turn the living room dimmer down a small bit", "dimmer"),
+    ],
+)
+def test_small_small_asks_how_far(vocabulary: Vocabulary, world: str, text: str, device: str) -> None:
+    said_in = _boat() if world else vocabulary
+    assert_asked(said_in, text, device, "efua" if world else "annie")
+    assert_asked(said_in, text, "how far", "efua" if world else "annie")
