@@ -27,6 +27,7 @@
   switched off", "have the towel sent up to ...", "I'd be grateful if the suitcase could be taken down to
   ...", "arrange for the newspaper to be brought to ..."): the verb said first ("open the lounge curtains"),
   as a hotel guest speaks to staff;
+* "where'd ... get to", "where did ... get to" (where a thing has gone): "where is ...";
 * "on" after the state "off" or "on" before where ("switch the light off on the landing", "all lights off on
   the balcony"): "in", the place, not the state said again;
 * "both" after "them" ("the tongs and the sun cream, bring them both to the kitchen"), "all" there before
@@ -199,10 +200,19 @@ def _planned(tokens: list[str]) -> list[str]:
     return tokens
 
 
+def _got_to(tokens: list[str]) -> list[str]:
+    """ "where'd my stetson get to", "where did the keys get to": "where is ...", as "where's ... got to" is
+    read; else ``tokens`` as they are."""
+    opening = 1 if tokens[:1] == ["where'd"] else 2 if tokens[:2] == ["where", "did"] else 0
+    if opening and len(tokens) > opening + 2 and tokens[-2:] == ["get", "to"]:
+        return ["where", "is", *tokens[opening:-2]]
+    return tokens
+
+
 def contracted(tokens: list[str]) -> list[str]:
     """``tokens`` (one stretch of a command, lower case) with the statements of the module docstring said as
     contractions."""
-    tokens = had_done(_planned(tokens))
+    tokens = had_done(_got_to(_planned(tokens)))
     out: list[str] = []
     i = 0
     while i < len(tokens):

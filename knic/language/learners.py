@@ -72,7 +72,7 @@ def source_first(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
 
 
 #: verbs of throwing: a thing thrown to a person is given to them
-_THROWN = frozenset({"throw", "toss", "chuck", "lob", "bung"})
+_THROWN = frozenset({"throw", "toss", "chuck", "lob", "bung", "hoy"})
 
 
 def thrown_to(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:

@@ -9,7 +9,12 @@ in the ERL apartment as well:
 * "on" after the state "off" or "on" before where ("switch the light off on the landing", "all lights off on
   the balcony and the roof garden"): the place, not the state said again (``knic.language.contracted``);
 * a short trip said as "whip down to", "whip round to", "mosey on over to" (British and American English) or
-  "gan" (Geordie and Scots "go"): the robot goes there, as with "nip to" (``commands.yaml``).
+  "gan" (Geordie and Scots "go"): the robot goes there, as with "nip to" (``commands.yaml``);
+* "hoy" (Geordie and Scots "throw"): "hoy us the tape measure" brings it, "hoy the wellies on the shoe rack"
+  puts them there, "hoy the jump leads to Dwayne" gives them (``commands.yaml``, ``knic.language.learners``);
+* "where'd my stetson get to?", "where did Pip get to?": "where is ..." (``knic.language.contracted``);
+* when said after a request ("... this morning", "tonight") and "make it so" (a naval "do it") ask nothing
+  more (``commands.yaml``).
 """
 
 from __future__ import annotations
@@ -148,3 +153,52 @@ def test_a_short_trip_in_other_words_goes_there(
     vocabulary: Vocabulary, erl: bool, text: str, frames: list[dict[str, str]]
 ) -> None:
     assert frames_read(vocabulary if erl else _house(), text, "annie" if erl else "lenny") == frames
+
+
+@pytest.mark.parametrize(
+    ("erl", "text", "frames"),
+    [
+        (
+            False,
+            "Howay man, hoy us the tape measure",
+            [{"frame": "BRINGING", "theme": "tape_measure", "beneficiary": "me"}],
+        ),
+        (
+            False,
+            "Hoy the wellies on the shoe rack",
+            [{"frame": "PLACING", "theme": "wellies", "goal": "shoe_rack"}],
+        ),
+        (
+            False,
+            "hoy the jump leads to Dwayne",
+            [{"frame": "BRINGING", "theme": "jump_leads", "beneficiary": "dwayne"}],
+        ),
+        (True, "hoy us the coke", [{"frame": "BRINGING", "theme": "coke_can", "beneficiary": "me"}]),
+        (False, "where did Pip get to?", [{"frame": "SEARCHING", "theme": "pip"}]),
+        (True, "where'd my glasses get to?", [{"frame": "SEARCHING", "theme": "glasses"}]),
+        (
+            False,
+            "Living room light to forty percent. Make it so.",
+            [{"frame": "OPERATING", "device": "living_room_light", "state": "40"}],
+        ),
+        (
+            False,
+            "Are you going to open the bedroom curtains halfway this morning?",
+            [{"frame": "OPERATING", "device": "bedroom_curtains", "state": "50"}],
+        ),
+        (
+            True,
+            "close the blinds tonight",
+            [{"frame": "OPERATING", "device": "bedroom_blinds", "state": "closed"}],
+        ),
+    ],
+)
+def test_regional_words_and_what_asks_nothing_more(
+    vocabulary: Vocabulary, erl: bool, text: str, frames: list[dict[str, str]]
+) -> None:
+    assert frames_read(vocabulary if erl else _house(), text, "annie" if erl else "lenny") == frames
+
+
+def test_a_lost_thing_the_world_lacks_is_named() -> None:
+    result = understand("Where'd my stetson get to?", _house(), speaker="dwayne")
+    assert not result.accepted and "no 'stetson'" in result.reason, result.reason
