@@ -27,6 +27,8 @@
   switched off", "have the towel sent up to ...", "I'd be grateful if the suitcase could be taken down to
   ...", "arrange for the newspaper to be brought to ..."): the verb said first ("open the lounge curtains"),
   as a hotel guest speaks to staff;
+* "is" after a verb of giving and before a thing ("fetch is the hammer off the workbench", "bring is the
+  teapot", Geordie and Scots): "me";
 * "where'd ... get to", "where did ... get to" (where a thing has gone): "where is ...";
 * "on" after the state "off" or "on" before where ("switch the light off on the landing", "all lights off on
   the balcony"): "in", the place, not the state said again;
@@ -162,6 +164,8 @@ def _wished_done(tokens: list[str]) -> list[str] | None:
     return [_DONE[tokens[done]], *tokens[opens[-1] + 1 : done - 2], *tokens[done + 1 :]]
 
 
+#: verbs after which "is" before a thing is the north of England's and Scotland's "me" ("fetch is the hammer")
+_GIVING = frozenset({"bring", "fetch", "get", "give", "hand", "pass", "grab", "chuck", "throw", "hoy"})
 #: verbs a request opens with, after "are you going to" (not "be", nor a place: "going to the kitchen")
 _ASKED_VERBS = frozenset(
     {
@@ -253,6 +257,8 @@ def contracted(tokens: list[str]) -> list[str]:
             out.append("above")
         elif token == "hear" and (not nxt or out[-1:] in _HERE_AFTER):
             out.append("here")
+        elif token == "is" and out[-1:] and out[-1] in _GIVING and nxt in _NAMING:
+            out.append("me")  # "fetch is the hammer", "bring is a cuppa" (Geordie, Scots): "me"
         elif token == "on" and out[-1:] in (["off"], ["on"]) and nxt in ("the", "my", "our"):
             out.append("in")  # "switch the light off on the landing": where, not the state again
         elif (

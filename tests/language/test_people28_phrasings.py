@@ -13,6 +13,8 @@ in the ERL apartment as well:
 * "hoy" (Geordie and Scots "throw"): "hoy us the tape measure" brings it, "hoy the wellies on the shoe rack"
   puts them there, "hoy the jump leads to Dwayne" gives them (``commands.yaml``, ``knic.language.learners``);
 * "where'd my stetson get to?", "where did Pip get to?": "where is ..." (``knic.language.contracted``);
+* "is" after a verb of giving and before a thing ("fetch is the hammer off the workbench", "bring is the
+  teapot", Geordie and Scots): "me"; "where is the coke" stays (``knic.language.contracted``);
 * when said after a request ("... this morning", "tonight") and "make it so" (a naval "do it") ask nothing
   more (``commands.yaml``).
 """
@@ -202,3 +204,26 @@ def test_regional_words_and_what_asks_nothing_more(
 def test_a_lost_thing_the_world_lacks_is_named() -> None:
     result = understand("Where'd my stetson get to?", _house(), speaker="dwayne")
     assert not result.accepted and "no 'stetson'" in result.reason, result.reason
+
+
+@pytest.mark.parametrize(
+    ("erl", "text", "frames"),
+    [
+        (
+            False,
+            "Fetch is the hammer off the workbench, pet",
+            [{"frame": "BRINGING", "theme": "hammer", "source": "workbench", "beneficiary": "me"}],
+        ),
+        (
+            False,
+            "Am clamming for a cuppa, bring is the teapot",
+            [{"frame": "BRINGING", "theme": "teapot", "beneficiary": "me"}],
+        ),
+        (True, "get is the coke", [{"frame": "BRINGING", "theme": "coke_can", "beneficiary": "me"}]),
+        (True, "where is the coke", [{"frame": "SEARCHING", "theme": "coke_can"}]),
+    ],
+)
+def test_is_after_a_verb_of_giving_is_me(
+    vocabulary: Vocabulary, erl: bool, text: str, frames: list[dict[str, str]]
+) -> None:
+    assert frames_read(vocabulary if erl else _house(), text, "annie" if erl else "lenny") == frames
