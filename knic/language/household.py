@@ -35,6 +35,8 @@ from dataclasses import replace
 from knic.language.chunks import Chunk, Chunker, past_determiners, singulars
 from knic.language.contracted import contracted
 from knic.language.dialects import dialect_words
+from knic.language.gathered import gathered
+from knic.language.gathered import gathered_up as gathered_up  # for the reader, whose module is full
 from knic.language.regional import regional_words
 from knic.language.restating import restated
 from knic.language.vocabulary import Vocabulary
@@ -146,7 +148,7 @@ def words_tidied(tokens: list[str]) -> list[str]:
     Ireland). A hesitation between a thing said after an article and the same article said again ("get me a
     cup of tea er a cup") is the speaker correcting the thing: it is read as "i mean"."""
     out: list[str] = []
-    tokens = binned(gone_asked(contracted(dialect_words(regional_words(tokens)))))
+    tokens = gathered(binned(gone_asked(contracted(dialect_words(regional_words(tokens))))))
     for i, token in enumerate(tokens):
         if token in HESITATIONS:
             nxt = tokens[i + 1] if i + 1 < len(tokens) else ""

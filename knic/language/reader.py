@@ -38,7 +38,7 @@ from knic.language.chunks import Chunk, Chunker
 from knic.language.clauses import Arg, Clause, split_clauses
 from knic.language.commands import CommandLanguage, command_language
 from knic.language.frames import KIND_NAMES, KIND_PLURALS, SPEAKER, CommandFrame
-from knic.language.household import ones_named, other_one, said_around, where_last, words_tidied
+from knic.language.household import gathered_up, ones_named, other_one, said_around, where_last, words_tidied
 from knic.language.learners import learners_read
 from knic.language.naming import names_device, places_before, said_named, synonym_only
 from knic.language.owned import own_pairs
@@ -133,7 +133,7 @@ class Reader(Places):
             plain_words(words_tidied(spelled(normalize(part).split(), self.language.spellings)))
             for part in SEGMENT_END.split(text)
         ]
-        segments = [segment for segment in segments if segment]
+        segments = gathered_up(segments)  # the empty ones dropped
         if not segments:
             raise LanguageError("nothing to understand: the command is empty")
         opening = not_request(

@@ -18,7 +18,10 @@ each tried in the ERL apartment as well:
 * "where" opening a command without its verb ("Where... Efua?", "where tablet?", a speaker short of words or
   a learner) searches, as "where is" does; "where should I put the cup" still asks where (``commands.yaml``);
 * "small small" (West African English: a little) and "a small bit" are how far unsaid, as "a bit" is: the
-  robot asks (``commands.yaml``).
+  robot asks (``commands.yaml``);
+* things said in a list and gathered up by "all" or "both" before where they go ("fruit bowl and laptop,
+  both to the sitting room", "bread, butter, clotted cream: all to the dining table") are the list; after a
+  verb or a pronoun ("bring all to the kitchen") "all" still asks which (``knic.language.gathered``).
 """
 
 from __future__ import annotations
@@ -194,3 +197,32 @@ def test_small_small_asks_how_far(vocabulary: Vocabulary, world: str, text: str,
     said_in = _boat() if world else vocabulary
     assert_asked(said_in, text, device, "efua" if world else "annie")
     assert_asked(said_in, text, "how far", "efua" if world else "annie")
+
+
+@pytest.mark.parametrize(
+    ("text", "themes", "goal"),
+    [
+        ("Fruit bowl and laptop, both to the sitting room", ["fruit_bowl", "laptop"], "sitting_room"),
+        (
+            "bread, butter, clotted cream: all to the dining table",
+            ["bread", "butter", "clotted_cream"],
+            "dining_table",
+        ),
+        ("the windlass and the tackle box both to the stern deck", ["windlass", "tackle_box"], "stern_deck"),
+    ],
+)
+def test_a_list_gathered_up_on_the_narrowboat(text: str, themes: list[str], goal: str) -> None:
+    assert frames_read(_boat(), text, "wren") == [
+        {"frame": "BRINGING", "theme": t, "goal": goal} for t in themes
+    ]
+
+
+def test_a_list_gathered_up_in_the_apartment(vocabulary: Vocabulary) -> None:
+    assert frames_read(vocabulary, "the apple and the lemon, both to the kitchen") == [
+        {"frame": "BRINGING", "theme": "apple", "goal": "kitchen"},
+        {"frame": "BRINGING", "theme": "lemon", "goal": "kitchen"},
+    ]
+    assert frames_read(vocabulary, "apple, lemon, tissues: all to the dining table") == [
+        {"frame": "BRINGING", "theme": t, "goal": "dining_table"} for t in ("apple", "lemon", "tissues")
+    ]
+    assert_asked(vocabulary, "bring all to the kitchen", "all")
