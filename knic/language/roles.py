@@ -454,6 +454,8 @@ def _operating(reader: Resolver, clause: Clause, previous: Frames, groups: list[
         lit or reader.vocabulary.is_subtype(k, "dimmer") for lit, k in zip(is_light, kinds, strict=True)
     )
     lit = lights or (any(is_light) and dimmed)
+    if state == "closed" and dimmed:  # a dimmer alone: "close the desk lamp" (Hong Kong English) is off
+        state = "off"  # ("turn the dimmer right up" stays full, not on)
     if state in _LIGHT_STATES and lit:
         state = _LIGHT_STATES[state]  # "open the left light", "close all the lights" (dimmers too): on, off
     if state in _BLINDS_STATES and _all_are(reader.vocabulary, members, "blinds"):

@@ -15,6 +15,8 @@ in the ERL apartment as well:
 * "where'd my stetson get to?", "where did Pip get to?": "where is ..." (``knic.language.contracted``);
 * "is" after a verb of giving and before a thing ("fetch is the hammer off the workbench", "bring is the
   teapot", Geordie and Scots): "me"; "where is the coke" stays (``knic.language.contracted``);
+* a dimmer said alone "closed" ("close the desk lamp first, then open the study blind", Hong Kong English, as
+  "close the light" is for a light): off; "turn the dimmer right up" stays full (``knic.language.roles``);
 * when said after a request ("... this morning", "tonight") and "make it so" (a naval "do it") ask nothing
   more (``commands.yaml``).
 """
@@ -227,3 +229,24 @@ def test_is_after_a_verb_of_giving_is_me(
     vocabulary: Vocabulary, erl: bool, text: str, frames: list[dict[str, str]]
 ) -> None:
     assert frames_read(vocabulary if erl else _house(), text, "annie" if erl else "lenny") == frames
+
+
+@pytest.mark.parametrize(
+    ("erl", "text", "frames"),
+    [
+        (
+            False,
+            "Close the desk lamp first, then open the study blind",
+            [
+                {"frame": "OPERATING", "device": "desk_lamp", "state": "off"},
+                {"frame": "OPERATING", "device": "study_blind", "state": "open"},
+            ],
+        ),
+        (False, "close the floor lamp", [{"frame": "OPERATING", "device": "floor_lamp", "state": "off"}]),
+        (True, "close the dimmer", [{"frame": "OPERATING", "device": "living_room_dimmer", "state": "off"}]),
+    ],
+)
+def test_a_dimmer_closed_is_off(
+    vocabulary: Vocabulary, erl: bool, text: str, frames: list[dict[str, str]]
+) -> None:
+    assert frames_read(vocabulary if erl else _house(), text, "annie" if erl else "winnie") == frames
