@@ -40,6 +40,17 @@ def _house() -> Vocabulary:
     return world_of(HOUSE)
 
 
+#: what each case of the tests below says: in the ERL apartment or not, the words, the frames they are read as
+_SAID = ("erl", "text", "frames")
+Frames = list[dict[str, str]]
+
+
+def _said(erl_vocabulary: Vocabulary, erl: bool, text: str, speaker: str) -> Frames:
+    """The frames ``text`` is read as in the ERL apartment (said by annie) or in the mews house (by
+    ``speaker``)."""
+    return frames_read(erl_vocabulary if erl else _house(), text, "annie" if erl else speaker)
+
+
 @pytest.mark.parametrize(
     ("text", "frames"),
     [
@@ -108,7 +119,7 @@ def test_a_question_about_the_plan_itself_asks_nothing(vocabulary: Vocabulary, t
 
 
 @pytest.mark.parametrize(
-    ("erl", "text", "frames"),
+    _SAID,
     [
         (
             False,
@@ -130,14 +141,12 @@ def test_a_question_about_the_plan_itself_asks_nothing(vocabulary: Vocabulary, t
         ),
     ],
 )
-def test_on_after_the_state_says_where(
-    vocabulary: Vocabulary, erl: bool, text: str, frames: list[dict[str, str]]
-) -> None:
-    assert frames_read(vocabulary if erl else _house(), text, "annie" if erl else "dwayne") == frames
+def test_on_after_the_state_says_where(vocabulary: Vocabulary, erl: bool, text: str, frames: Frames) -> None:
+    assert _said(vocabulary, erl, text, "dwayne") == frames
 
 
 @pytest.mark.parametrize(
-    ("erl", "text", "frames"),
+    _SAID,
     [
         (
             False,
@@ -154,13 +163,13 @@ def test_on_after_the_state_says_where(
     ],
 )
 def test_a_short_trip_in_other_words_goes_there(
-    vocabulary: Vocabulary, erl: bool, text: str, frames: list[dict[str, str]]
+    vocabulary: Vocabulary, erl: bool, text: str, frames: Frames
 ) -> None:
-    assert frames_read(vocabulary if erl else _house(), text, "annie" if erl else "lenny") == frames
+    assert _said(vocabulary, erl, text, "lenny") == frames
 
 
 @pytest.mark.parametrize(
-    ("erl", "text", "frames"),
+    _SAID,
     [
         (
             False,
@@ -198,9 +207,9 @@ def test_a_short_trip_in_other_words_goes_there(
     ],
 )
 def test_regional_words_and_what_asks_nothing_more(
-    vocabulary: Vocabulary, erl: bool, text: str, frames: list[dict[str, str]]
+    vocabulary: Vocabulary, erl: bool, text: str, frames: Frames
 ) -> None:
-    assert frames_read(vocabulary if erl else _house(), text, "annie" if erl else "lenny") == frames
+    assert _said(vocabulary, erl, text, "lenny") == frames
 
 
 def test_a_lost_thing_the_world_lacks_is_named() -> None:
@@ -209,7 +218,7 @@ def test_a_lost_thing_the_world_lacks_is_named() -> None:
 
 
 @pytest.mark.parametrize(
-    ("erl", "text", "frames"),
+    _SAID,
     [
         (
             False,
@@ -226,13 +235,13 @@ def test_a_lost_thing_the_world_lacks_is_named() -> None:
     ],
 )
 def test_is_after_a_verb_of_giving_is_me(
-    vocabulary: Vocabulary, erl: bool, text: str, frames: list[dict[str, str]]
+    vocabulary: Vocabulary, erl: bool, text: str, frames: Frames
 ) -> None:
-    assert frames_read(vocabulary if erl else _house(), text, "annie" if erl else "lenny") == frames
+    assert _said(vocabulary, erl, text, "lenny") == frames
 
 
 @pytest.mark.parametrize(
-    ("erl", "text", "frames"),
+    _SAID,
     [
         (
             False,
@@ -246,7 +255,5 @@ def test_is_after_a_verb_of_giving_is_me(
         (True, "close the dimmer", [{"frame": "OPERATING", "device": "living_room_dimmer", "state": "off"}]),
     ],
 )
-def test_a_dimmer_closed_is_off(
-    vocabulary: Vocabulary, erl: bool, text: str, frames: list[dict[str, str]]
-) -> None:
-    assert frames_read(vocabulary if erl else _house(), text, "annie" if erl else "winnie") == frames
+def test_a_dimmer_closed_is_off(vocabulary: Vocabulary, erl: bool, text: str, frames: Frames) -> None:
+    assert _said(vocabulary, erl, text, "winnie") == frames
