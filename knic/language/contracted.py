@@ -29,6 +29,7 @@
   as a hotel guest speaks to staff;
 * "is" after a verb of giving and before a thing ("fetch is the hammer off the workbench", "bring is the
   teapot", Geordie and Scots): "me";
+* "all the light", "all the lamp", "all the blind" (a learner's singular after "all"): the plural, every one;
 * "where'd ... get to", "where did ... get to" (where a thing has gone): "where is ...";
 * "on" after the state "off" or "on" before where ("switch the light off on the landing", "all lights off on
   the balcony"): "in", the place, not the state said again;
@@ -257,6 +258,8 @@ def contracted(tokens: list[str]) -> list[str]:
             out.append("above")
         elif token == "hear" and (not nxt or out[-1:] in _HERE_AFTER):
             out.append("here")
+        elif token in ("light", "lamp", "blind") and out[-2:] in (["all", "the"], ["all", "my"]):
+            out.append(token + "s")  # "close all the light in the study" (a learner's singular): every one
         elif token == "is" and out[-1:] and out[-1] in _GIVING and nxt in _NAMING:
             out.append("me")  # "fetch is the hammer", "bring is a cuppa" (Geordie, Scots): "me"
         elif token == "on" and out[-1:] in (["off"], ["on"]) and nxt in ("the", "my", "our"):

@@ -17,6 +17,9 @@ in the ERL apartment as well:
   teapot", Geordie and Scots): "me"; "where is the coke" stays (``knic.language.contracted``);
 * a dimmer said alone "closed" ("close the desk lamp first, then open the study blind", Hong Kong English, as
   "close the light" is for a light): off; "turn the dimmer right up" stays full (``knic.language.roles``);
+* "all the light", "all the lamp", "all the blind" (a learner's singular after "all"): every one, as "all the
+  lights" is ("close all the light in the study": the study light and the desk lamp;
+  ``knic.language.contracted``);
 * when said after a request ("... this morning", "tonight") and "make it so" (a naval "do it") ask nothing
   more (``commands.yaml``).
 """
@@ -256,4 +259,28 @@ def test_is_after_a_verb_of_giving_is_me(
     ],
 )
 def test_a_dimmer_closed_is_off(vocabulary: Vocabulary, erl: bool, text: str, frames: Frames) -> None:
+    assert _said(vocabulary, erl, text, "winnie") == frames
+
+
+@pytest.mark.parametrize(
+    _SAID,
+    [
+        (
+            False,
+            "Close all the light in the study",
+            [
+                {"frame": "OPERATING", "device": "study_light", "state": "off"},
+                {"frame": "OPERATING", "device": "desk_lamp", "state": "off"},
+            ],
+        ),
+        (
+            True,
+            "switch off all the light in the bedroom",
+            [{"frame": "OPERATING", "device": "bedroom_lights", "state": "off"}],
+        ),
+    ],
+)
+def test_all_before_a_singular_is_every_one(
+    vocabulary: Vocabulary, erl: bool, text: str, frames: Frames
+) -> None:
     assert _said(vocabulary, erl, text, "winnie") == frames
