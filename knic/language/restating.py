@@ -49,16 +49,22 @@ def _devices(vocabulary: Vocabulary) -> tuple[tuple[str, str, str], ...]:
     return tuple(out)
 
 
+@lru_cache(maxsize=16)
+def _phrases(vocabulary: Vocabulary) -> frozenset[str]:
+    """The world's phrases, read once per vocabulary (not at every command)."""
+    return frozenset(t.phrase for t in vocabulary.terms)
+
+
 def restated(segments: list[list[str]], vocabulary: Vocabulary) -> list[list[str]]:
     """The sentences with what is said again more exactly put where it was first said (see the module
     docstring)."""
     segments = _level_restated([list(s) for s in segments])
-    phrases = {t.phrase for t in vocabulary.terms}
+    phrases = _phrases(vocabulary)
     segments = _name_restated(_home_named(segments, phrases), phrases)
     return _of_room_gone_to(_kind_in_room(segments, vocabulary), vocabulary)
 
 
-def _home_named(segments: list[list[str]], phrases: set[str]) -> list[list[str]]:
+def _home_named(segments: list[list[str]], phrases: frozenset[str]) -> list[list[str]]:
     home = [p.split() for p in command_language().anywhere if p.startswith("the ") and len(p.split()) == 2]
     out = []
     for segment in segments:
@@ -92,7 +98,7 @@ def _level_restated(segments: list[list[str]]) -> list[list[str]]:
     return [s for s in segments if s]
 
 
-def _name_restated(segments: list[list[str]], phrases: set[str]) -> list[list[str]]:
+def _name_restated(segments: list[list[str]], phrases: frozenset[str]) -> list[list[str]]:
     out: list[list[str]] = []
     for segment in segments:
         name = segment[1:] if segment[:1] and segment[0] in _ARTICLES else segment
@@ -119,7 +125,7 @@ def _name_restated(segments: list[list[str]], phrases: set[str]) -> list[list[st
     return out
 
 
-def _pronoun_before(out: list[list[str]], phrases: set[str]) -> tuple[int, int] | None:
+def _pronoun_before(out: list[list[str]], phrases: frozenset[str]) -> tuple[int, int] | None:
     """Where the last "it" or "them" stands in the sentences said so far, when they name nothing of the world
     (a thing said only after the request about it); else None."""
     words = [w for s in out for w in s]
