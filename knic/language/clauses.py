@@ -33,6 +33,7 @@ class Arg:
     joined: bool = False  # "and" before it: the same role as the previous argument
     consumed: bool = False  # used to narrow down the previous argument
     quantity: str | None = None  # "all" or "both" said before it
+    plural: bool = False  # its "all" is a plural said alone ("open the blinds"), not "all" said
     modifiers: tuple[str, ...] = ()  # unknown words before it ("the bedroom light" where there is none)
 
 
@@ -457,6 +458,7 @@ def _fill(
     add_to_clause(clause, chunk, nxt, filling.prep, filling.joined, filling.expecting)
     if quantity is not None:
         clause.args[-1].quantity = quantity
+        clause.args[-1].plural = filling.quantity is None
     filling.expecting = chunk.kind in ("det", "prep") or (filling.expecting and chunk.kind == "unknown")
     if chunk.kind == "prep":
         filling.prep = chunk

@@ -1,8 +1,7 @@
 """Reading commands as people say them: chunks, clauses, roles and frames from normalised text.
 
-The reader is driven by the phrase tables of :mod:`knic.language.commands` (general English) and by a
-world's :class:`~knic.language.vocabulary.Vocabulary` (its names). It is deliberately more forgiving than the
-template grammar the speech decoder searches, and understands every sentence the templates admit.
+Driven by the phrase tables of :mod:`knic.language.commands` (general English) and a world's :class:`~knic.
+language.vocabulary.Vocabulary` (its names), it is more forgiving than the templates and reads all they admit.
 
 Steps for one command:
 
@@ -43,6 +42,7 @@ from knic.language.learners import learners_read
 from knic.language.naming import names_device, places_before, said_named, synonym_only
 from knic.language.owned import own_pairs
 from knic.language.places import Places
+from knic.language.quantified import every_one
 from knic.language.remarks import NoSuchAction, plain_words, refused, tagged, unknown_action
 from knic.language.roles import INTERPRETERS
 from knic.language.segments import (
@@ -476,7 +476,7 @@ class Reader(Places):
             )
         if arg.quantity == "all" and not ({"room", "furniture"} & set(categories)):
             group = self.vocabulary.group_of(symbols) if len(symbols) > 1 else None
-            return [group] if group is not None else symbols
+            return [group] if group is not None else every_one(arg, symbols, self.vocabulary)
         if arg.quantity == "both":
             return self._both(chunk, symbols)
         # "I fancy a sherry, bring me the bottle": of several things, the one said earlier in the command

@@ -36,6 +36,7 @@ from collections.abc import Sequence
 
 from knic.language.chains import AmbiguityError
 from knic.language.frames import CommandFrame
+from knic.language.quantified import all_of_them
 from knic.language.shortnames import containers
 from knic.language.vocabulary import Term, Vocabulary
 
@@ -115,8 +116,7 @@ def described(segments: list[list[str]], vocabulary: Vocabulary) -> list[list[st
     heads = {p.split()[-1] for p in phrases}  # the last words of the names ("lamp", "table")
     out: list[list[str]] = []
     for segment in segments:
-        before = out[-1][-1] if out and out[-1] else ""
-        words = _all_of_them(_said_again(segment, len(segments) > 1), before, heads)
+        words = all_of_them(_said_again(segment, len(segments) > 1), out[-1] if out else [], heads)
         words = [
             "one" if w == "ones" and i and words[i - 1] in _DETERMINERS | {"these", "those"} else w
             for i, w in enumerate(words)
@@ -385,34 +385,7 @@ def came_from(previous: Sequence[CommandFrame], theme: str) -> str | None:
     return None
 
 
-#: a quantifier said after the things it counts ("the lights, all of them"; "the lamps both off")
-_AFTER_THINGS = (
-    ("all", "of", "them"),
-    ("both", "of", "them"),
-    ("each", "of", "them"),
-    ("every", "one", "of", "them"),
-)
 _LANDMARKS = (("next", "to"), ("close", "to"), ("by",), ("near",), ("beside",))
-
-
-def _plural_name(word: str, heads: set[str]) -> bool:
-    """Whether a word is a plural of the names whose last words are ``heads`` ("lights", "lamps")."""
-    if not word.endswith("s"):
-        return False
-    return word in heads or word[:-1] in heads
-
-
-def _all_of_them(words: list[str], before: str, heads: set[str]) -> list[str]:
-    """Without "all of them" (or "both", "all" alone before a state) said right after plural names."""
-    for i in range(len(words)):
-        last = words[i - 1] if i else before
-        if not _plural_name(last, heads):
-            continue
-        said = next((len(q) for q in _AFTER_THINGS if tuple(words[i : i + len(q)]) == q), 0)
-        floating = words[i] in ("all", "both") and (i + 1 == len(words) or words[i + 1] in ("on", "off"))
-        if said or floating:
-            return [*words[:i], *words[i + (said or 1) :]]
-    return words
 
 
 def _landmark_unknown(words: list[str], phrases: dict[str, Term], heads: set[str]) -> list[str]:
