@@ -12,8 +12,9 @@ detached family house with a granny annexe and a garden office, ``people25`` a b
 floors, ``people26`` a city duplex apartment with a mezzanine study and a roof terrace, ``people27`` a
 converted narrowboat moored beside a cottage garden and ``people28`` a mews house on three floors with a roof
 garden, likewise; ``people29`` a ground-floor flat adapted for a wheelchair user, with a wet room, a ceiling
-hoist and a courtyard garden; ``people31`` the commands of robot competitions (RoboCup@Home's GPSR, the ERL)
-in an arena set up as a small flat and in the ERL apartment, likewise). Each
+hoist and a courtyard garden; ``people30`` a semi-detached suburban house with a conservatory, a garage
+converted to a workshop and a loft room up a ladder; ``people31`` the commands of robot competitions
+(RoboCup@Home's GPSR, the ERL) in an arena set up as a small flat and in the ERL apartment, likewise). Each
 case is a command with its gold frames and goals, or with a word the refusal (``reject``) or the question back
 (``question``) must contain. Cases run against the ERL apartment or, with ``world: other``, against a
 different house (``tests/fixtures/language/other_world``), to show that the language code knows no world's
@@ -77,6 +78,7 @@ SETS = {
     "people27-dev": FIXTURES / "people27" / "dev.yaml",
     "people28-dev": FIXTURES / "people28" / "dev.yaml",
     "people29-dev": FIXTURES / "people29" / "dev.yaml",
+    "people30-dev": FIXTURES / "people30" / "dev.yaml",
     "people31-dev": FIXTURES / "people31" / "dev.yaml",
 }
 OTHER_WORLD = FIXTURES / "other_world" / "problem.pddl"

@@ -58,6 +58,7 @@ def test_bench_language_prints_dev_and_test(capsys: pytest.CaptureFixture[str]) 
         "people27-dev",
         "people28-dev",
         "people29-dev",
+        "people30-dev",
         "people31-dev",
     }
     for figures in data.values():
