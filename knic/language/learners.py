@@ -376,7 +376,8 @@ def own_doing_dropped(chunks: list[Chunk]) -> list[Chunk]:
 def own_going_dropped(chunks: list[Chunk]) -> list[Chunk]:
     """Drop where the speaker says they are going before asking something ("i go to bed now, switch off the
     lamp", "i'm going to the garden, close the blinds"): "i" or "we" and a verb of going only, up to the next
-    action; said alone ("i go kitchen") it stays, as the request it may be."""
+    action; said alone ("i go kitchen") it stays, as the request it may be, unless said as what the speaker
+    is doing ("i'm going to bed": no request, nothing left to read)."""
     said = [c.text if c.kind == "unknown" else "" for c in chunks[:2]]
     size = next(
         (len(s) for s in sorted(_SPEAKER_SUBJECTS, key=len, reverse=True) if said[: len(s)] == list(s)), 0
@@ -390,7 +391,7 @@ def own_going_dropped(chunks: list[Chunk]) -> list[Chunk]:
         return chunks
     nxt = next((i for i in range(size + 1, len(chunks)) if chunks[i].kind in ("verb", "join")), None)
     if nxt is None:
-        return chunks
+        return [] if size > 1 or said[0] in ("i'm", "im", "we're") else chunks
     while nxt < len(chunks) and (chunks[nxt].kind == "join" or chunks[nxt].text == "you"):
         nxt += 1
     return chunks[nxt:] if nxt < len(chunks) and chunks[nxt].kind == "verb" else chunks

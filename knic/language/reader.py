@@ -140,10 +140,8 @@ class Reader(Places):
             tagged(segments, self.chunks), language.not_requests, language.not_requests_unless
         )
         if opening:
-            raise LanguageError(
-                f"'{opening} ...' asks about something or says what you do or will do: no request, no action"
-                " for me"
-            )
+            what = "asks about something or says what you do or will do: no request, no action for me"
+            raise LanguageError(f"'{opening} ...' {what}")
         if refusal := refused(segments, self.chunks):  # "the landing light has been flickering all week"
             raise LanguageError(refusal)
         segments = said_named(segments, self.vocabulary, self.chunker.language_words)  # naming.py
@@ -203,8 +201,9 @@ class Reader(Places):
                 with contextlib.suppress(LanguageError):
                     return self._read_tokens(self._fluent([t for segment in wider for t in segment]))
             acts = any(chunk.kind == "verb" for segment in kept for chunk in self.chunks(segment))
-            # a question about what the request names beats a complaint about the talk ("light on please,
-            # I can't see": which light?)
+            # a question beats a complaint ("light on please, I can't see": which light?; "i'm going to bed,
+            # turn everything off": which devices?, not the talk's "no action")
+            acts = acts and not isinstance(whole, AmbiguityError)
             raise (exc if acts or isinstance(exc, AmbiguityError) else whole) from None
 
     def _fluent(self, tokens: list[str]) -> list[str]:
