@@ -416,7 +416,9 @@ def _operating(reader: Resolver, clause: Clause, previous: Frames, groups: list[
                 devices += again
                 continue
             # "dim the lounge to 40": the room's only dimmer; "dim the lounge": how far is then asked
-            stateless = not clause.states and (clause.verb is None or clause.verb.state is None)
+            # (not by a verb that places things first: "tidy the living room" is no setting of its dimmer)
+            operates = clause.verb is None or clause.verb.frames[:1] == ("OPERATING",)
+            stateless = not clause.states and operates and (clause.verb is None or clause.verb.state is None)
             own = reader.levelled_in(rooms) if clause.levels or clause.vague or stateless else []
             said = clause.states[-1] if clause.states else clause.verb.state if clause.verb else None
             own = own or room_lights(reader.vocabulary, rooms, said)  # "turn the hallway off"
