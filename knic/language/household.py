@@ -37,6 +37,7 @@ from knic.language.contracted import contracted
 from knic.language.dialects import dialect_words
 from knic.language.gathered import gathered
 from knic.language.gathered import gathered_up as gathered_up  # for the reader, whose module is full
+from knic.language.plainorder import asked_plainly
 from knic.language.regional import regional_words
 from knic.language.restating import restated
 from knic.language.vocabulary import Vocabulary
@@ -90,7 +91,9 @@ _WHERE_LAST = re.compile(r"^\s*(?P<thing>[a-z' ]+?)\s*[,.]?\s+where\s*\??\s*$")
 
 def where_last(text: str) -> str:
     """ "chopsticks, where?", "my keys where": a thing said, then "where" alone (said by learners and tired
-    people): where the thing is ("where is my keys"); else ``text``."""
+    people): where the thing is ("where is my keys"); else ``text``, with questions said in another order put
+    back (:mod:`knic.language.plainorder`)."""
+    text = asked_plainly(text)
     match = _WHERE_LAST.match(text.lower())
     words = match.group("thing").split() if match else []
     if not words or len(words) > 4 or "where" in words or _NOT_A_THING & set(words):

@@ -293,10 +293,21 @@ _CUT_OFF = re.compile(r"(?<![\w'-])[\w']+-(?=\s+\S)")
 
 def cut_off_dropped(text: str) -> str:
     """Drop words the speaker broke off to say again ("go to the kit- the kitchen", "bring me the m- the
-    mug"): the determiner said twice is then one (:func:`fluent`); and, said last, a tag urging the request
-    on ("bring me the mug, go on"; :data:`_TAG`) or a pain giving the reason ("my tummy hurts";
-    :data:`_ACHE`)."""
-    return _CUT_OFF.sub("", _ACHE.sub("", _TAG.sub("", text)))
+    mug"): the determiner said twice is then one (:func:`fluent`); a stammer's starts of a word written
+    before it ("I-is Ellis in the k-kitchen?", "sw-sw-switch", "th-thirty": the word; "x-ray", "t-shirt"
+    stay); and, said last, a tag urging the request on ("bring me the mug, go on"; :data:`_TAG`) or a pain
+    giving the reason ("my tummy hurts"; :data:`_ACHE`)."""
+    return _CUT_OFF.sub("", _ACHE.sub("", _TAG.sub("", _STAMMER.sub(_stammer_dropped, text))))
+
+
+#: starts of a word said over before the word ("c-c-can", "I-is"), hyphened as a stammer is written
+_STAMMER = re.compile(r"(?<![\w'-])((?:[a-z]{1,4}-)+)([a-z]+)", re.IGNORECASE)
+
+
+def _stammer_dropped(match: re.Match[str]) -> str:
+    word = match.group(2)
+    starts = match.group(1).lower().split("-")[:-1]
+    return word if all(word.lower().startswith(s) for s in starts) else match.group(0)
 
 
 #: a pain said last, after a request ("bring me the calpol my tummy hurts", "... my back is killing me"): why

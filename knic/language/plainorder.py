@@ -1,0 +1,85 @@
+"""Questions said in another order than the usual English one, put back before a command is read (used by
+:func:`knic.language.household.where_last`, on the whole text with its punctuation). General English and
+learners' English only, no world's names:
+
+* the thing said first, then asked about as "it", "she", "he" or "they" ("our Ellis, is she at the dining
+  table?", "the hoist remote, is it on the bedside cabinet?"): "is our Ellis at the dining table?";
+* a statement asked with a question mark, its verb left where a statement has it ("the charger of the
+  wheelchair is on the charging point?", "Ottavia is in the conservatory?", learners and casual speech),
+  said last: "is the charger of the wheelchair on the charging point?" (with more said after it, "hand cream
+  is on the bedside table? look please", it says where the thing is for what follows, as it did);
+* a thing or person, "where?", then a place alone, asked again ("Theo where? Courtyard?", in the word
+  order of British Sign Language, or a tired speaker): "is Theo in the courtyard?";
+* "where she is", "where he is" said as a learner's question ("Merline, where she is now?"): "where is
+  she" (the order of a question inside another, "do you know where she is", stays);
+* Caribbean English "it have" for "there is", and "ent it have" (isn't there) or "it have" opening a question
+  ("ent it have sorrel in the fridge?", "it have milk in the fridge?"): "is there".
+"""
+
+from __future__ import annotations
+
+import re
+
+#: prepositions that say where a thing or person is asked to be
+_WHERE = r"(?:in|on|at|inside|under|by|near|next to|still in|still on|still at)"
+#: the thing said first, then asked about as a pronoun ("the remote, is it on the table?")
+_TOPIC = re.compile(
+    rf"(?P<topic>[^,.?!;:]+?)\s*[,-]+\s*(?P<aux>is|are)\s+(?:it|she|he|they)\s+(?P<where>{_WHERE}\s[^?.!]*\?)",
+    re.IGNORECASE,
+)
+#: what a statement asked as a question may not open with: it is then a question already, or no thing's name
+_NOT_SAID = frozenset(
+    {"where", "what", "which", "who", "why", "how", "when", "is", "are", "it", "she", "he", "they", "there"}
+    | {"this", "that", "i", "you", "we", "nobody", "no", "nothing", "everything", "all", "if", "and", "but"}
+)
+#: a statement asked with a question mark: "<the thing> is <where>?"
+_STATEMENT = re.compile(
+    rf"(?:^|(?<=[.!?;,]\s))(?P<thing>[a-z][\w' ]*?)\s+(?P<aux>is|are)\s+(?P<where>{_WHERE}\s[^?.!,]*\?)\s*$",
+    re.IGNORECASE,
+)
+#: "<the thing> where? <a place>?"
+_WHERE_AGAIN = re.compile(
+    r"^\s*(?P<thing>[a-z][\w' ]*?)\s+where\s*\?\s*(?P<place>[a-z][\w' ]*?)\s*\?\s*$", re.IGNORECASE
+)
+#: the determiners a place said alone may already have
+_DETERMINED = frozenset({"the", "my", "his", "her", "their", "our", "your", "a"})
+#: a learner's question "where she is" said as the request, not inside another question
+_WHERE_SHE = re.compile(
+    r"(?<![\w'])(?<!know )(?<!knows )(?<!tell me )(?<!see )where (she|he) is\b(?!\s+(?:the|a|my))",
+    re.IGNORECASE,
+)
+#: Caribbean "it have" (there is), "ent it have" (isn't there)
+_IT_HAVE = re.compile(r"\b(?:ent|eh|isn't|is) it have\b", re.IGNORECASE)
+_IT_HAVE_ASKED = re.compile(r"(?:^|(?<=[.!?;,]\s))it have\b(?=[^.!?]*\?)", re.IGNORECASE)
+_THERE_IS = re.compile(r"(?<![\w'])(?<!does )(?<!would )(?<!will )it have\b(?!\s+(?:to|got|been|a look))")
+
+
+def asked_plainly(text: str) -> str:
+    """``text`` with the questions of the module docstring put in the usual English order."""
+    text = _IT_HAVE.sub("is there", text)
+    text = _IT_HAVE_ASKED.sub("is there", text)
+    text = _THERE_IS.sub("there is", text)
+    text = _WHERE_SHE.sub(lambda m: f"where is {m.group(1)}", text)
+    again = _WHERE_AGAIN.match(text)
+    if again and len(again.group("place").split()) <= 3:
+        place = again.group("place")
+        article = "" if place.split()[0].lower() in _DETERMINED else "the "
+        return f"is {again.group('thing')} in {article}{place}?"
+    text = _TOPIC.sub(_topic_asked, text)
+    return _STATEMENT.sub(_statement_asked, text)
+
+
+def _topic_asked(match: re.Match[str]) -> str:
+    said = match.group("topic")
+    topic = said.strip()
+    if topic.split()[-1].lower() in _NOT_SAID:
+        return match.group(0)
+    lead = said[: len(said) - len(said.lstrip())]
+    return f"{lead}{match.group('aux')} {topic} {match.group('where')}"
+
+
+def _statement_asked(match: re.Match[str]) -> str:
+    thing = match.group("thing").strip()
+    if thing.split()[0].lower() in _NOT_SAID or len(thing.split()) > 6:
+        return match.group(0)
+    return f"{match.group('aux')} {thing} {match.group('where')}"
