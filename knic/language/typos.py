@@ -300,7 +300,7 @@ class Speller:
     def _homophone(self, before: Sequence[str], word: str, after: Sequence[str]) -> str | None:
         """The word meant for a homophone, where it fits (see the module docstring), else None."""
         meant = self._homophones.get(word)
-        if meant is None:
+        if meant is None or (before and (before[-1], word) in self._pairs):  # "bench lamp two": a name's
             return None
         kind = self._kind_of(meant)
         nxt = after[0] if after else ""

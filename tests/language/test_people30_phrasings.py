@@ -5,7 +5,11 @@ apartment as well:
 
 * "report the location of", "tell me the location of" (an engineer's, a log's words) search; "teleport to"
   (a child's word from games) goes; a learner's "wait me there" is "wait for me there" (``commands.yaml``);
-* "loft" is a word for a kind of room, so a "loft room" is also "the loft" (``synonyms.yaml``).
+* "loft" is a word for a kind of room, so a "loft room" is also "the loft" (``synonyms.yaml``);
+* a digit before a word "to" or "for" never comes before ("to", "at", "on", "off", "in", "up", "and", ...)
+  numbers a thing: "bench lamp 2 to 35 percent", "blind 2 in the conservatory", "lamp 2 on at 60%"
+  (``knic.language.tidy``); "two" ending a name said with the word before it ("bench lamp two: 100%") is the
+  name's, not a homophone of "to" (``knic.language.typos``).
 """
 
 from __future__ import annotations
@@ -67,3 +71,48 @@ def test_words_for_search_go_and_wait(vocabulary: Vocabulary, erl: bool, text: s
 )
 def test_the_loft_is_the_loft_room(text: str, frames: Frames) -> None:
     assert frames_read(_house(), text, "philippa") == frames
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        ("Bench lamp 2 to 35 percent", [{"frame": "OPERATING", "device": "bench_lamp_2", "state": "35"}]),
+        ("Bench lamp two: 100%", [{"frame": "OPERATING", "device": "bench_lamp_2", "state": "100"}]),
+        ("bench lamp two 100%", [{"frame": "OPERATING", "device": "bench_lamp_2", "state": "100"}]),
+        (
+            "Blind 2 in the conservatory to 40%",
+            [{"frame": "OPERATING", "device": "conservatory_blind_2", "state": "40"}],
+        ),
+        (
+            "Lamp 1 off, lamp 2 on at 60%",
+            [
+                {"frame": "OPERATING", "device": "bench_lamp_1", "state": "off"},
+                {"frame": "OPERATING", "device": "bench_lamp_2", "state": "60"},
+            ],
+        ),
+        (
+            "conservatory blind 2 up",
+            [{"frame": "OPERATING", "device": "conservatory_blind_2", "state": "open"}],
+        ),
+        # a digit for "to" stays so where a place, a thing or a level follows
+        ("take the drill 2 the kitchen", [{"frame": "BRINGING", "theme": "drill", "goal": "kitchen"}]),
+        ("turn the floor lamp 2 60%", [{"frame": "OPERATING", "device": "floor_lamp", "state": "60"}]),
+    ],
+)
+def test_a_number_that_numbers_a_device(text: str, frames: Frames) -> None:
+    assert frames_read(_house(), text, "ottavia") == frames
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        ("bring the mug 2 the kitchen", [{"frame": "BRINGING", "theme": "mug", "goal": "kitchen"}]),
+        (
+            "turn the living room dimmer 2 60%",
+            [{"frame": "OPERATING", "device": "living_room_dimmer", "state": "60"}],
+        ),
+        ("find the remote 4 me", [{"frame": "SEARCHING", "theme": "remote"}]),
+    ],
+)
+def test_a_digit_said_for_to_or_for_stays_so(vocabulary: Vocabulary, text: str, frames: Frames) -> None:
+    assert frames_read(vocabulary, text) == frames
