@@ -139,7 +139,7 @@ def digits_read(
 
 
 #: words after a digit that show it numbers a thing ("lamp 2 to 35", "blind 1 up"), as none follows a "to"
-_NUMBERED_BY = frozenset(("to", "at", "on", "off", "in", "into", "up", "down", "and", "or", "open", "closed"))
+_NUMBERED_BY = frozenset(("to", "at", "on", "off", "in", "into", "up", "down", "and", "or"))
 #: a number said as a list's mark: "(1)", "2)", "3." (the dot one only opening a sentence)
 _STEP_NUMBER = re.compile(r"\(\d{1,2}\)|\d{1,2}[.)]")
 
