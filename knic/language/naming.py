@@ -207,6 +207,7 @@ def _turned_round(words: list[str], phrases: Collection[str], canon: dict[str, s
                     (m, name)
                     for m in range(min(3, len(out) - after), 0, -1)
                     if " ".join(out[i - n : after + m]) not in phrases
+                    and not _named_on(out[after:], m, phrases, canon)
                     for said in _the_other_way(list(kept), out[after : after + m], head)
                     if (name := said if said in phrases else canon.get(_canonical(said.split()), ""))
                 ),
@@ -216,6 +217,13 @@ def _turned_round(words: list[str], phrases: Collection[str], canon: dict[str, s
                 out[i - n : after + found[0]] = found[1].split()
                 break
     return out
+
+
+def _named_on(words: list[str], m: int, phrases: Collection[str], canon: dict[str, str]) -> bool:
+    """Whether the first ``m`` words begin a longer name said on ("the tv bench for the tv clicker": "tv" is
+    the start of "tv clicker", so "bench for the tv" is no "tv bench")."""
+    longer = (" ".join(words[:k]) for k in range(m + 1, min(4, len(words)) + 1))
+    return any(said in phrases or _canonical(said.split()) in canon for said in longer)
 
 
 def _the_other_way(kept: list[str], other: list[str], head: list[str]) -> list[str]:

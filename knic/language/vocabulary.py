@@ -183,14 +183,14 @@ class Lexicon:
         rooms, back = list(rooms), [room for room in back if room not in rooms]
         plain = ("door",) if back and len(rooms) == 1 else ()
         for room in rooms:
-            names[room] = (*(names.get(room) or (normalize(room),)), FRONT_DOOR, *plain)
+            names[room] = (*(names.get(room) or (normalize(room),)), *FRONT_DOOR, *plain)
         for room in back:
             names[room] = (*(names.get(room) or (normalize(room),)), BACK_DOOR)
         return Lexicon(names=names, groups=self.groups)
 
 
-#: what the room a door to the outside opens into is also called (:meth:`Lexicon.with_entrances`)
-FRONT_DOOR = "front door"
+#: what the room a door to the outside opens into is also called: "guide her to the exit" (with_entrances)
+FRONT_DOOR = ("front door", "exit")
 #: what the room of another door to the outside is also called (:meth:`Lexicon.with_entrances`)
 BACK_DOOR = "back door"
 SYNONYMS_FILE = Path(__file__).with_name("synonyms.yaml")
