@@ -117,9 +117,9 @@ def digits_read(
     one of ``before_numbers`` ("to 2", "at 4"), or nothing follows; typed signs as their words ("3/4": three
     quarters; :attr:`CommandLanguage.typed_words`); decimals as whole numbers first
     (:func:`~knic.language.decimals.decimals_read`); a number that numbers a step ("(1) close the blinds
-    (2) turn off the light", "1. go to the kitchen 2. ...") as the end of a stretch, not a level. A digit before a
-    word "to" or "for" never comes before (:data:`_NUMBERED_BY`) numbers a thing: "bench lamp 2 to 35 percent",
-    "blind 2 in the conservatory", "lamp 2 on"."""
+    (2) turn off the light", "1. go to the kitchen 2. ...") as the end of a stretch, not a level. A digit
+    before a word "to" or "for" never comes before (:data:`_NUMBERED_BY`) numbers a thing: "bench lamp 2 to
+    35 percent", "blind 2 in the conservatory", "lamp 2 on"."""
     tokens = decimals_read(plain_typed(text)).split()
     for i, token in enumerate(tokens):
         if _STEP_NUMBER.fullmatch(token) and (token[0] == "(" or not i or tokens[i - 1][-1] in ".!?:;"):
