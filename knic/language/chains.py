@@ -171,6 +171,11 @@ def chain(
             if nxt.kind in ("SEARCHING", "TAKING", "BRINGING") and said and theme and place:
                 out[at] = CommandFrame(nxt.kind, {**nxt.args, role: frame["goal"]})
                 waypoints.add(index)
+                # "go to the kitchen and bring the milk and the coke to the table": each thing of that action
+                for j in range(at + 1, len(out)):
+                    if (out[j].kind, _but_theme(out[j])) != (nxt.kind, _but_theme(nxt)):
+                        break
+                    out[j] = CommandFrame(nxt.kind, {**out[j].args, role: frame["goal"]})
             elif any(f.kind == "MOTION" for f in later):
                 # "go to the garage, then come back", "go to the lounge, switch the dimmer off, then come to
                 # the study": only the last place can be kept
@@ -222,3 +227,8 @@ def chain(
         out = [out[i] for i in kept]
         waypoints = {kept.index(i) for i in waypoints if i in kept}
     return Reading(out, waypoints)
+
+
+def _but_theme(frame: CommandFrame) -> dict[str, str]:
+    """A frame's arguments but its theme (one action on several things: "bring the milk and the coke")."""
+    return {k: v for k, v in frame.args.items() if k != "theme"}

@@ -10,6 +10,7 @@ said first ("from the kitchen island the fruit bowl bring to my room") and a thi
 from __future__ import annotations
 
 from knic.language.chunks import Chunk, past_determiners
+from knic.language.stepwise import steps_read
 from knic.language.tidy import unplaced
 from knic.language.vocabulary import Vocabulary
 
@@ -20,7 +21,7 @@ def learners_read(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
     said = subject_dropped(appositions_dropped(helped_to(said), vocabulary))
     said = gapped_given(out_the(carried_in(said, vocabulary), vocabulary), vocabulary)
     said = verb_last_moved(own_going_dropped(own_doing_dropped(room_told(it_me(said), vocabulary))))
-    return object_first(place_first(said, vocabulary), vocabulary)
+    return steps_read(object_first(place_first(said, vocabulary), vocabulary), vocabulary)  # stepwise.py
 
 
 def state_as_verb(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:

@@ -9,7 +9,12 @@ each tried in the family house of people24 or the ERL apartment as well:
 * a name said the other way round ("the clicker for the telly", the tv remote) is not made of a word that
   begins the next name: "search the tv bench for the tv clicker" searches the tv bench for the remote, not
   a "tv bench" made of "bench for the tv" (``knic.language.naming``; met by the grammar's samples once the
-  ERL lexicon said "exit").
+  ERL lexicon said "exit");
+* a room or a piece of furniture said after "then" with no verb of its own, once the robot was sent to a
+  place, is a second going ("go to the bedroom, then the kitchen", "navigate to the living room, then, um, to
+  the dining room, and grab the candle"); "no, the kitchen" still corrects (``knic.language.stepwise``);
+* the place gone to is the source of each thing of the next action, not only the first ("go to the kitchen
+  and bring the milk and the coke to the dining table"; ``knic.language.chains``).
 """
 
 from __future__ import annotations
@@ -73,3 +78,80 @@ def test_a_name_turned_round_takes_no_word_of_the_next_name(
     vocabulary: Vocabulary, text: str, frames: list[dict[str, str]]
 ) -> None:
     assert frames_read(vocabulary, text) == frames
+
+
+@pytest.mark.parametrize(
+    ("file", "text", "frames"),
+    [
+        (
+            ARENA,
+            "Go to the bedroom, then the kitchen, then come back to the living room",
+            [
+                {"frame": "MOTION", "goal": "bedroom"},
+                {"frame": "MOTION", "goal": "kitchen"},
+                {"frame": "MOTION", "goal": "living_room"},
+            ],
+        ),
+        (
+            HOUSE,
+            "go to the garage then to the kitchen and get the butter",
+            [
+                {"frame": "MOTION", "goal": "garage"},
+                {"frame": "MOTION", "goal": "kitchen"},
+                {"frame": "BRINGING", "theme": "butter", "source": "kitchen", "beneficiary": "me"},
+            ],
+        ),
+        (
+            HOUSE,
+            "head to the landing, then the family bathroom",
+            [{"frame": "MOTION", "goal": "landing"}, {"frame": "MOTION", "goal": "family_bathroom"}],
+        ),
+        (ARENA, "go to the bedroom, no, the kitchen", [{"frame": "MOTION", "goal": "kitchen"}]),
+    ],
+)
+def test_a_place_said_after_then_is_another_going(file: str, text: str, frames: list[dict[str, str]]) -> None:
+    assert _read(file, text) == frames
+
+
+def test_a_going_then_several_things_erl(vocabulary: Vocabulary) -> None:
+    assert frames_read(
+        vocabulary, "navigate to the living room, then, um, to the dining room, and grab the candle"
+    ) == [
+        {"frame": "MOTION", "goal": "living_room"},
+        {"frame": "MOTION", "goal": "dining_room"},
+        {"frame": "TAKING", "theme": "candle", "source": "dining_room"},
+    ]
+    assert frames_read(vocabulary, "go to the kitchen and bring the apple and the lemon to tracy") == [
+        {"frame": "MOTION", "goal": "kitchen"},
+        {"frame": "BRINGING", "theme": "apple", "source": "kitchen", "beneficiary": "tracy"},
+        {"frame": "BRINGING", "theme": "lemon", "source": "kitchen", "beneficiary": "tracy"},
+    ]
+
+
+@pytest.mark.parametrize(
+    ("file", "text", "frames"),
+    [
+        (
+            HOUSE,
+            "go to the pantry and bring me the biscuits and the rice",
+            [
+                {"frame": "MOTION", "goal": "pantry"},
+                {"frame": "BRINGING", "theme": "biscuits", "source": "pantry", "beneficiary": "me"},
+                {"frame": "BRINGING", "theme": "rice", "source": "pantry", "beneficiary": "me"},
+            ],
+        ),
+        (
+            HOUSE,
+            "go to the utility room and take the torch and the detergent to the garage",
+            [
+                {"frame": "MOTION", "goal": "utility_room"},
+                {"frame": "BRINGING", "theme": "torch", "source": "utility_room", "goal": "garage"},
+                {"frame": "BRINGING", "theme": "detergent", "source": "utility_room", "goal": "garage"},
+            ],
+        ),
+    ],
+)
+def test_the_place_gone_to_is_where_each_thing_is_from(
+    file: str, text: str, frames: list[dict[str, str]]
+) -> None:
+    assert _read(file, text) == frames
