@@ -22,6 +22,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import replace
 from itertools import pairwise
 
+from knic.language.apologies import adds, late_marker_placed, or_dropped
 from knic.language.chunks import Chunk
 
 #: words a speaker addresses the robot with; a sentence ends or starts next to them
@@ -172,20 +173,26 @@ def sorry_repairs(
     """The segments with a bare "sorry" read as the repair "sorry i meant" when it stands between an
     action and what corrects it ("bring me the cup sorry the mug"): after a verb, and followed by a name, a
     level or a state before any word the tables do not know. "sorry, can you ..." and "sorry to bother you"
-    stay politeness."""
+    stay politeness, and so does "sorry" in a list that goes on ("the kitchen light and, sorry, the lights
+    under the cabinets too"); "or" and a late "i mean" around the correction are read with it
+    (:mod:`knic.language.apologies`)."""
     words = [t for segment in segments for t in segment]
     out: list[list[str]] = []
     at = 0
     for segment in segments:
         kept: list[str] = []
         for token in segment:
-            if token == "sorry" and _corrects(words[:at], words[at + 1 :], chunks):
+            if (
+                token == "sorry"
+                and not adds(words[:at], words[at + 1 :])
+                and _corrects(words[:at], words[at + 1 :], chunks)
+            ):
                 kept += [token, "i", "meant"]
             else:
                 kept.append(token)
             at += 1
         out.append(kept)
-    return out
+    return late_marker_placed(or_dropped(out, chunks), chunks)
 
 
 #: what a speaker says alone between an action and what corrects it ("..., wait, the box room")
@@ -234,9 +241,13 @@ def _corrects(before: list[str], after: list[str], chunks: Callable[[Sequence[st
     for chunk in chunks(after):
         if chunk.kind in ("entity", "me", "number", "level", "state"):
             return True
-        if chunk.kind not in ("det", "prep"):
-            return False
+        if chunk.kind not in ("det", "prep") and not (chunk.kind == "pronoun" and chunk.text in _OWNERS):
+            return False  # "..., sorry, her bed": "her" says whose, as "the" would
     return False
+
+
+#: pronouns that say whose a thing is, read before a name as a determiner would be
+_OWNERS = frozenset({"her", "his", "their"})
 
 
 #: a subject with "be" before an "-ing" verb: what someone is doing, not what the robot is asked to do

@@ -6,6 +6,7 @@ from __future__ import annotations
 import re
 from collections.abc import Callable, Collection, Mapping
 
+from knic.language.apologies import after_same_preposition
 from knic.language.chunks import Chunk
 from knic.language.decimals import decimals_read, plain_typed
 
@@ -185,7 +186,9 @@ def repaired(chunks: list[Chunk], kind_of: Callable[[Chunk], str]) -> list[Chunk
                 first -= 1
             replacement = replacement[first : named[0] + 1] + replacement[named[0] + 1 :]
         kind = kind_of(next((c for c in replacement if c.kind not in ("det", "prep")), words[0]))
-        target = next((i for i in range(len(before) - 1, -1, -1) if kind_of(before[i]) == kind), None)
+        target = after_same_preposition(before, replacement)  # "to ottavia? or, no, to the bathroom"
+        if target is None:
+            target = next((i for i in range(len(before) - 1, -1, -1) if kind_of(before[i]) == kind), None)
         span = (target, target) if target is not None else None
         if target is None or kind == "unknown":
             # what the world lacks, corrected to what it has (or lacks as well): the run in the position

@@ -11,6 +11,13 @@ apartment as well:
   numbers a thing: "bench lamp 2 to 35 percent", "blind 2 in the conservatory", "lamp 2 on at 60%"
   (``knic.language.tidy``); "two" ending a name said with the word before it ("bench lamp two: 100%") is the
   name's, not a homophone of "to" (``knic.language.typos``).
+* corrections said with apologies (``knic.language.apologies``): "or" opening a correction ("..., or, sorry,
+  the hallway light", "or, no, to the bathroom") is dropped; a late "I mean" said alone after the correction
+  ("..., the hallway light, I mean") opens it, or is dropped where a repair already does; "sorry" before a
+  name whose owner a pronoun says ("sorry, her bed") corrects, as before "the bed"; "sorry" in a list that
+  goes on ("the kitchen light and, sorry, the under-cabinet lights too") adds, it corrects nothing; a
+  correction opening with a preposition replaces what followed the same preposition ("to Ottavia? Or, no, to
+  the bathroom": the bathroom, and no longer for Ottavia; ``knic.language.tidy``).
 """
 
 from __future__ import annotations
@@ -124,3 +131,77 @@ def test_a_number_that_numbers_a_device(text: str, frames: Frames) -> None:
 )
 def test_a_digit_said_for_to_or_for_stays_so(vocabulary: Vocabulary, text: str, frames: Frames) -> None:
     assert frames_read(vocabulary, text) == frames
+
+
+@pytest.mark.parametrize(
+    ("erl", "text", "frames"),
+    [
+        (
+            False,
+            "I'm so sorry, could you turn the landing light off? Or, sorry, the hallway light, I mean",
+            [{"frame": "OPERATING", "device": "hallway_light", "state": "off"}],
+        ),
+        (
+            False,
+            "could you turn the landing light off? the hallway light, I mean",
+            [{"frame": "OPERATING", "device": "hallway_light", "state": "off"}],
+        ),
+        (
+            False,
+            "Could you put the violin on Marnie's desk, sorry, her bed, I mean her bed",
+            [{"frame": "PLACING", "theme": "violin", "goal": "marnie_bed"}],
+        ),
+        (
+            False,
+            "would you bring the dressing gown from the wardrobe to Ottavia? Or, no, to the bathroom, sorry",
+            [
+                {
+                    "frame": "BRINGING",
+                    "theme": "dressing_gown",
+                    "source": "wardrobe",
+                    "goal": "family_bathroom",
+                }
+            ],
+        ),
+        (
+            False,
+            "Would you mind turning off the kitchen light and, sorry, the under-cabinet lights too",
+            [
+                {"frame": "OPERATING", "device": "kitchen_light", "state": "off"},
+                {"frame": "OPERATING", "device": "under_cabinet_lights", "state": "off"},
+            ],
+        ),
+        (
+            True,
+            "could you switch on the hallway light? or, sorry, the living room dimmer, I mean",
+            [{"frame": "OPERATING", "device": "living_room_dimmer", "state": "on"}],
+        ),
+        (
+            True,
+            "bring the apple to tracy, or no, to the living room",
+            [{"frame": "BRINGING", "theme": "apple", "goal": "living_room"}],
+        ),
+        (
+            True,
+            "take the mug to the kitchen, no wait, to the bedroom",
+            [{"frame": "BRINGING", "theme": "mug", "goal": "bedroom"}],
+        ),
+        (
+            True,
+            "put the cup on the table, sorry, in the kitchen cabinet",
+            [{"frame": "PLACING", "theme": "cup", "goal": "kitchen_cabinet"}],
+        ),
+        (
+            True,
+            "bring me the apple and, sorry, the lemon as well",
+            [
+                {"frame": "BRINGING", "theme": "apple", "beneficiary": "me"},
+                {"frame": "BRINGING", "theme": "lemon", "beneficiary": "me"},
+            ],
+        ),
+    ],
+)
+def test_corrections_said_with_apologies(
+    vocabulary: Vocabulary, erl: bool, text: str, frames: Frames
+) -> None:
+    assert _said(vocabulary, erl, text, "philippa") == frames

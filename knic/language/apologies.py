@@ -1,0 +1,95 @@
+"""Corrections said by a speaker who apologises and hedges as she goes: the words around the correction.
+
+:func:`knic.language.segments.sorry_repairs` reads a bare "sorry" between an action and what corrects it as
+"sorry i meant"; around it people also say:
+
+* "or" opening the correction ("turn the landing light off? Or, sorry, the hallway light"; "... to Ottavia?
+  Or, no, to the bathroom"; "or rather the kitchen"): the "or" is dropped, so that the repair is read as
+  said (:func:`or_dropped`);
+* the late marker said alone after the correction ("Or, sorry, the hallway light, I mean"; "sorry, her bed, I
+  mean her bed" says it twice): said after a stretch a repair already opens, it adds nothing and is dropped;
+  said after a stretch that only names things, after an action, it opens that stretch ("..., the hallway
+  light, I mean" is "i mean the hallway light"; :func:`late_marker_placed`);
+* "and, sorry, the under-cabinet lights too": an apology inside a list adds the thing, it corrects nothing
+  (:func:`adds`).
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+
+from knic.language.chunks import Chunk
+
+Chunks = Callable[[Sequence[str]], list[Chunk]]
+#: what a speaker says after the thing that corrects what they said (as knic.language.segments reads them)
+_MARKERS = (["i", "mean"], ["i", "meant"], ["actually"], ["rather"])
+#: words that end an addition ("..., and, sorry, the under-cabinet lights too")
+_ADDING = (["too"], ["as", "well"], ["also"])
+
+
+def _opens_repair(segment: Sequence[str], chunks: Chunks) -> bool:
+    said = chunks(segment)
+    return bool(said) and said[0].kind == "repair"
+
+
+def or_dropped(segments: list[list[str]], chunks: Chunks) -> list[list[str]]:
+    """The segments without an "or" that opens a correction: said alone before a stretch a repair opens
+    ("..., or, sorry, the hallway light"), or first in such a stretch ("or no, the bathroom")."""
+    out: list[list[str]] = []
+    for at, segment in enumerate(segments):
+        after = segments[at + 1] if at + 1 < len(segments) else []
+        if segment == ["or"] and out and after and (_opens_repair(after, chunks) or after == ["sorry"]):
+            continue
+        if len(segment) > 1 and segment[0] == "or" and out and _opens_repair(segment[1:], chunks):
+            segment = segment[1:]
+        out.append(segment)
+    return out
+
+
+def late_marker_placed(segments: list[list[str]], chunks: Chunks) -> list[list[str]]:
+    """The segments with a late marker said alone ("..., the hallway light, I mean") dropped after a
+    stretch a repair opens, or put first in the stretch before it where that stretch only names things
+    and an action was said before it."""
+    out: list[list[str]] = []
+    for segment in segments:
+        if segment not in _MARKERS or len(out) < 2:
+            out.append(segment)
+            continue
+        last = chunks(out[-1])
+        if _opens_repair(out[-1], chunks) or (
+            len(out) > 1 and [c.kind for c in chunks(out[-2])] == ["repair"]
+        ):
+            continue  # "sorry, the hallway light, i mean": said already
+        named = any(c.kind in ("entity", "me", "number", "level", "state") for c in last)
+        acted = any(c.kind == "verb" for s in out[:-1] for c in chunks(s))
+        if named and acted and not any(c.kind in ("verb", "repair") for c in last):
+            out[-1] = [*segment, *out[-1]]
+            continue
+        out.append(segment)
+    return out
+
+
+def adds(before: Sequence[str], after: Sequence[str]) -> bool:
+    """Whether an apology between ``before`` and ``after`` stands inside a list that goes on: after "and"
+    ("the kitchen light and, sorry, the under-cabinet lights"), or before words that end with "too", "as
+    well" or "also"."""
+    if before and before[-1] == "and":
+        return True
+    return any(len(after) >= len(end) and list(after[-len(end) :]) == end for end in _ADDING)
+
+
+def after_same_preposition(before: Sequence[Chunk], replacement: Sequence[Chunk]) -> int | None:
+    """Where the name a correction opening with a preposition replaces is, when an earlier stretch opens
+    with the same preposition: the name after it, whatever it names ("bring the dressing gown to Ottavia?
+    Or, no, to the bathroom": the bathroom, not Ottavia's place, is where it goes); else None."""
+    if not replacement or replacement[0].kind != "prep":
+        return None
+    for at in range(len(before) - 1, -1, -1):
+        if before[at].kind == "prep" and before[at].text == replacement[0].text:
+            nxt = at + 1
+            while nxt < len(before) and before[nxt].kind == "det":
+                nxt += 1
+            if nxt < len(before) and before[nxt].kind in ("entity", "me"):
+                return nxt
+            return None
+    return None
