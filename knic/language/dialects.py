@@ -26,10 +26,15 @@ one plain word, such as Jamaican "di" for "the", are ``spellings`` in ``commands
   place says which light;
 * "like" before a number ("likkle bit, like twenty", "to like 40"): "to", a level said roughly;
 * "up the stairs", "down the stairs" before where to ("help me up the stairs to the heather room"): the way
-  there, not a place.
+  there, not a place;
+* "by" for where to after "carry", "take" or "bring" with no one and nowhere else said (Caribbean English
+  "carry dis mug by de sink", "carry de bible by Kieran": to the sink, to Kieran); "bring me the cup by the
+  sink" stays the cup that is by the sink.
 """
 
 from __future__ import annotations
+
+import itertools
 
 #: verbs of asking after which "tha" is "you" ("has tha seen", "can tha fetch")
 _ASKING = frozenset({"has", "have", "can", "could", "will", "would", "did", "do", "wilt", "hast"})
@@ -68,6 +73,9 @@ _NUMBERS = frozenset(
 _LIKING = frozenset({"i", "i'd", "would", "you", "we", "they", "he", "she", "don't", "really", "we'd"})
 #: what "me" opening a stretch is the subject of ("me want the apple", "me need my glasses")
 _WISHING = frozenset({"want", "need", "like", "wanna", "needs", "wants"})
+#: verbs of carrying after which Caribbean "by" says where to; and what says whom or where to already
+_CARRY_BY = frozenset({"carry", "take", "bring"})
+_TO_SAID = frozenset({"me", "us", "here", "to", "into", "onto", "for", "him", "her", "them"})
 #: the Jamaican plural said after a thing ("di blinds dem")
 _PLURAL_MARK = "dem"
 
@@ -138,6 +146,8 @@ def dialect_words(tokens: list[str]) -> list[str]:
             if before and before not in _CARRYING | _NOT_A_THING | _JOINING:
                 continue  # "di blinds dem": the plural said again
             token = "them"
+        if token == "by" and _carried_to(out, tokens[i:]):
+            token = "to"  # "carry dis mug by de sink"
         if token in _GIVEN and before in ("it", "them") and nxt in ("", "and", "then", "please"):
             out.append("to")  # "take it him"
         listed = token == "and" and nxt in _ARTICLES | {"a", "an", "some"}  # "the cornflakes and the jam"
@@ -165,4 +175,19 @@ def _making(said: list[str]) -> bool:
             return False
         if word == "make":
             return True
+    return False
+
+
+def _carried_to(said: list[str], rest: list[str]) -> bool:
+    """Whether the latest action said so far carries a thing ("carry", "take", "bring") and says, before or
+    after, no one and nowhere it goes to ("bring me", "take it to", "for tracy"); "and" before an article
+    lists things ("the bible and the book by the recliner")."""
+    ahead = list(itertools.takewhile(lambda w: w not in ("and", "then"), rest))
+    for i in range(len(said) - 1, -1, -1):
+        if said[i] in _CARRY_BY:
+            return not _TO_SAID & set(said[i + 1 :] + ahead)
+        if said[i] == "then" or (
+            said[i] == "and" and said[i + 1 : i + 2] and said[i + 1] not in _ARTICLES | {"a"}
+        ):
+            return False
     return False

@@ -13,6 +13,7 @@ from knic.language.chunks import Chunk, Chunker
 from knic.language.clauses import Arg
 from knic.language.commands import CommandLanguage
 from knic.language.naming import called_so
+from knic.language.placenames import beside_named, named_in_part
 from knic.language.shortnames import contains
 from knic.language.vocabulary import Term, Vocabulary
 
@@ -55,12 +56,14 @@ class Places:
             kept = tuple(t for t in candidates if any(self._within(t, r) for r in rooms))
             if not kept and place.prep is not None and place.prep_text not in self.language.containment:
                 kept = self._near(candidates, rooms)  # "the bedside table next to the bed"
+                kept = beside_named(kept, rooms, self.vocabulary)  # "the lamp by the bed": the bedside lamp
             if (
                 not kept
                 and all(self.is_a(t, "device") for t in candidates)
                 and all(self.is_a(t, "furniture") for t in rooms)
             ):  # "the lamp on my desk": a device is in a room, not on furniture; the one in the desk's room
                 kept = self._near(candidates, self._in_next_room(rooms, args, index))
+                kept = beside_named(kept, rooms, self.vocabulary)
             if not kept and all(self.is_a(t, "light") for t in candidates):
                 kept = self._dimmers_in(rooms)  # "the living room light" where a dimmer is the room's light
             elif grouped and self._all_said(head) and all(self.is_a(t, "light") for t in candidates):
@@ -74,6 +77,7 @@ class Places:
                 plural = grouped or head.chunk.role == "plural"
                 there = "there are no" if plural else "there is no"  # "there are no lights in the nursery"
                 raise LanguageError(f"{there} {head.chunk.text} in the {where} in this world")
+            kept = named_in_part(kept, head.chunk.text, place.chunk.text, rooms, self.vocabulary)  # open plan
             kept = called_so(kept, head.chunk.text, self.vocabulary)  # "the light in the attic": its light
             head.chunk = Chunk("entity", head.chunk.text, kept, role=head.chunk.role)
             if swapped:  # "to the hallway table": the table, where the preposition before the room says

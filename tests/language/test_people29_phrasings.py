@@ -9,7 +9,13 @@ tried in the ERL apartment as well, with sentences of the test's own:
   said last ("the charger of the wheelchair is on the charging point?"); "X where? Y?" (British Sign
   Language order); a learner's "where she is"; Caribbean "it have" and "ent it have" (is there);
 * a stammer's starts of a word written before it ("I-is", "c-c-can", "sw-sw-switch") are the word
-  (``knic.language.tidy``).
+  (``knic.language.tidy``);
+* in an open-plan room ("kitchen living room"), "the light in the kitchen" and "the blinds in the living
+  room" are the devices named so, not every light or blind of the room; a thing said by a piece of
+  furniture whose own name is "<its noun>side" is that one ("the lamp by the bed": the bedside lamp)
+  (``knic.language.placenames``);
+* Caribbean "by" for where to after "carry", "take" or "bring" with no one and nowhere else said ("carry
+  de bible by Kieran") (``knic.language.dialects``).
 """
 
 from __future__ import annotations
@@ -162,3 +168,95 @@ def test_a_stammer(vocabulary: Vocabulary, world: str, text: str, frames: list[d
 def test_a_hyphened_word_is_no_stammer(vocabulary: Vocabulary) -> None:
     result = understand("bring me the x-ray", vocabulary)
     assert not result.accepted and "x ray" in result.reason
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        ("Out de light in de kitchen", [{"frame": "OPERATING", "device": "kitchen_light", "state": "off"}]),
+        (
+            "Put the blinds down in the living room",
+            [{"frame": "OPERATING", "device": "living_room_blinds", "state": "0"}],
+        ),
+        (
+            "close the blind in the living room",
+            [{"frame": "OPERATING", "device": "living_room_blinds", "state": "0"}],
+        ),
+        (
+            "turn off the lights in the kitchen",
+            [
+                {"frame": "OPERATING", "device": "kitchen_light", "state": "off"},
+                {"frame": "OPERATING", "device": "under_cabinet_lights", "state": "off"},
+            ],
+        ),
+    ],
+)
+def test_a_part_of_an_open_plan_room(flat: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
+    got = frames_read(flat, text, "kieran")
+    assert [{**f, "state": {"closed": "0"}.get(f["state"], f["state"])} for f in got] == frames
+
+
+def test_the_lights_of_a_room_said_whole_are_all_of_them(vocabulary: Vocabulary) -> None:
+    assert frames_read(vocabulary, "turn off the lights in the bedroom") == [
+        {"frame": "OPERATING", "device": "bedroom_lights", "state": "off"}
+    ]
+
+
+@pytest.mark.parametrize(
+    "text", ["Turn on de lamp by de bed", "Turn on the lamp of the bed", "switch on the lamp next to the bed"]
+)
+def test_a_lamp_by_the_bed_is_the_bedside_lamp(flat: Vocabulary, text: str) -> None:
+    assert frames_read(flat, text, "merline") == [
+        {"frame": "OPERATING", "device": "bedside_lamp", "state": "on"}
+    ]
+
+
+def test_a_table_next_to_the_bed(vocabulary: Vocabulary) -> None:
+    assert frames_read(vocabulary, "bring me the glasses from the table next to the bed") == [
+        {"frame": "BRINGING", "theme": "glasses", "source": "bedside_table", "beneficiary": "me"}
+    ]
+
+
+@pytest.mark.parametrize(
+    ("world", "text", "frames"),
+    [
+        (
+            "flat",
+            "Carry dis spotty mug by de sink",
+            [{"frame": "BRINGING", "theme": "spotty_mug", "goal": "sink"}],
+        ),
+        (
+            "flat",
+            "Carry de bible by Kieran",
+            [{"frame": "BRINGING", "theme": "bible", "beneficiary": "kieran"}],
+        ),
+        (
+            "erl",
+            "bring the apple and the cup by the sofa",
+            [
+                {"frame": "BRINGING", "theme": "apple", "goal": "sofa"},
+                {"frame": "BRINGING", "theme": "cup", "goal": "sofa"},
+            ],
+        ),
+        ("erl", "carry the mug by Tracy", [{"frame": "BRINGING", "theme": "mug", "beneficiary": "tracy"}]),
+        (
+            "erl",
+            "take the cup by the sofa to the kitchen",
+            [{"frame": "BRINGING", "theme": "cup", "source": "sofa", "goal": "kitchen"}],
+        ),
+        (
+            "erl",
+            "bring me the cup by the sofa",
+            [{"frame": "BRINGING", "theme": "cup", "source": "sofa", "beneficiary": "me"}],
+        ),
+    ],
+)
+def test_carried_by_a_place_or_a_person(
+    vocabulary: Vocabulary, world: str, text: str, frames: list[dict[str, str]]
+) -> None:
+    assert (
+        frames_read(
+            _flat() if world == "flat" else vocabulary, text, "merline" if world == "flat" else "annie"
+        )
+        == frames
+    )
