@@ -2,10 +2,11 @@
 :meth:`knic.language.places.Places.narrow`).
 
 * A device said with a part of a room's name, in a home whose rooms run into each other
-  (:func:`named_in_part`). An open-plan "kitchen living room" is called "the kitchen" at one end and "the living room" at the other.
-"The light in the kitchen" and "the blinds in the living room" then name the device whose own name is the
-part said and the noun ("kitchen light", "living room blinds"), not every light or blind of the whole room;
-"the lights in the kitchen" where the room is called just "kitchen" stay all of its lights, as before.
+  (:func:`named_in_part`). An open-plan "kitchen living room" is called "the kitchen" at one end and "the
+  living room" at the other. "The light in the kitchen" and "the blinds in the living room" then name the
+  device whose own name is the part said and the noun ("kitchen light", "living room blinds"), not every
+  light or blind of the whole room; "the lights in the kitchen" where the room is called just "kitchen"
+  stay all of its lights, as before; "the lamp on the desk" is said with no room and stays as it was.
 * A thing said beside a piece of furniture whose own name says so ("the lamp by the bed", "the lamp next to
   the bed", a learner's "the lamp of the bed": the bedside lamp, not the desk lamp in the room of another
   bed; likewise "fireside", "poolside"): English compounds in "-side" name what is beside their first word
