@@ -12,6 +12,10 @@
   light, I mean" is "i mean the hallway light"; :func:`late_marker_placed`);
 * "and, sorry, the under-cabinet lights too": an apology inside a list adds the thing, it corrects nothing
   (:func:`adds`).
+* the thing said again more exactly, alone after the request ("could you bring me the glasses? The
+  sunglasses, sorry"; "close the curtains? The bedroom ones"): in the request's place (:func:`narrowed`);
+* a correction that opens with a preposition ("... to Ottavia? Or, no, to the bathroom") replaces what
+  followed the same preposition (:func:`after_same_preposition`, for :func:`knic.language.tidy.repaired`).
 """
 
 from __future__ import annotations
@@ -93,3 +97,41 @@ def after_same_preposition(before: Sequence[Chunk], replacement: Sequence[Chunk]
                 return nxt
             return None
     return None
+
+
+#: words said around a thing said again that tell nothing of it ("the sunglasses, sorry")
+_ASIDE = frozenset({"sorry", "please", "thanks", "i", "mean", "meant"})
+
+
+def narrowed(segments: list[list[str]], chunks: Chunks) -> list[list[str]]:
+    """The segments with a thing said again more exactly, alone after the request that named it, put in
+    its place: "could you bring me the glasses? The sunglasses, sorry" is "... bring me the sunglasses",
+    "would you close the curtains? The bedroom ones" is "... close the bedroom curtains" ("ones" and "one"
+    stand for the word said before). The new words must end as the thing's did ("sunglasses" ends as
+    "glasses" does, "bedroom curtains" as "curtains"), so a list ("the mug, the plate") is left alone."""
+    out: list[list[str]] = []
+    for segment in segments:
+        words = [w for w in segment if w not in _ASIDE]
+        said = chunks(words)
+        if out and words and said and said[0].kind == "det":
+            words, said = words[1:], said[1:]
+        before = chunks(out[-1]) if out else []
+        acted = any(c.kind == "verb" for s in out for c in chunks(s))
+        last = before[-1] if before and before[-1].kind == "entity" else None
+        if (
+            last is None
+            or not acted
+            or not said
+            or said[-1].kind != "entity"
+            or any(c.kind not in ("entity", "unknown") for c in said)
+            or out[-1][-len(last.text.split()) :] != last.text.split()
+        ):
+            out.append(segment)
+            continue
+        head = last.text.split()[-1]
+        again = [*words[:-1], head] if words[-1] in ("ones", "one") else words
+        if again == last.text.split() or not again[-1].endswith(head):
+            out.append(segment)
+            continue
+        out[-1] = [*out[-1][: -len(last.text.split())], *again]
+    return out

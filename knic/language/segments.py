@@ -22,7 +22,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import replace
 from itertools import pairwise
 
-from knic.language.apologies import adds, late_marker_placed, or_dropped
+from knic.language.apologies import adds, late_marker_placed, narrowed, or_dropped
 from knic.language.chunks import Chunk
 
 #: words a speaker addresses the robot with; a sentence ends or starts next to them
@@ -192,7 +192,7 @@ def sorry_repairs(
                 kept.append(token)
             at += 1
         out.append(kept)
-    return late_marker_placed(or_dropped(out, chunks), chunks)
+    return narrowed(late_marker_placed(or_dropped(out, chunks), chunks), chunks)
 
 
 #: what a speaker says alone between an action and what corrects it ("..., wait, the box room")

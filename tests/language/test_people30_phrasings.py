@@ -18,6 +18,10 @@ apartment as well:
   goes on ("the kitchen light and, sorry, the under-cabinet lights too") adds, it corrects nothing; a
   correction opening with a preposition replaces what followed the same preposition ("to Ottavia? Or, no, to
   the bathroom": the bathroom, and no longer for Ottavia; ``knic.language.tidy``).
+* a thing said again more exactly, alone after the request ("could you bring me the glasses? The sunglasses,
+  sorry", "close the curtains? The bedroom ones"), takes the place of what the request said, where its words
+  end as that thing's did ("ones" standing for them); a list of other things ("the tablet, the cushion") is
+  left alone (``knic.language.apologies``).
 """
 
 from __future__ import annotations
@@ -202,6 +206,53 @@ def test_a_digit_said_for_to_or_for_stays_so(vocabulary: Vocabulary, text: str, 
     ],
 )
 def test_corrections_said_with_apologies(
+    vocabulary: Vocabulary, erl: bool, text: str, frames: Frames
+) -> None:
+    assert _said(vocabulary, erl, text, "philippa") == frames
+
+
+@pytest.mark.parametrize(
+    ("erl", "text", "frames"),
+    [
+        (
+            False,
+            "Sorry, could you bring me the glasses? The sunglasses, sorry, not the reading ones",
+            [{"frame": "BRINGING", "theme": "sunglasses", "beneficiary": "me"}],
+        ),
+        (
+            False,
+            "Sorry, would you close the curtains? The bedroom ones, sorry",
+            [{"frame": "OPERATING", "device": "bedroom_curtains", "state": "closed"}],
+        ),
+        (
+            False,
+            "bring me the tablet, the cushion",
+            [
+                {"frame": "BRINGING", "theme": "tablet", "beneficiary": "me"},
+                {"frame": "BRINGING", "theme": "cushion", "beneficiary": "me"},
+            ],
+        ),
+        (
+            True,
+            "could you switch on the light? the bedroom left light, sorry",
+            [{"frame": "OPERATING", "device": "bedroom_left_light", "state": "on"}],
+        ),
+        (
+            True,
+            "open the blinds? the bedroom blinds, please",
+            [{"frame": "OPERATING", "device": "bedroom_blinds", "state": "open"}],
+        ),
+        (
+            True,
+            "bring me the mug, the cup",
+            [
+                {"frame": "BRINGING", "theme": "mug", "beneficiary": "me"},
+                {"frame": "BRINGING", "theme": "cup", "beneficiary": "me"},
+            ],
+        ),
+    ],
+)
+def test_a_thing_said_again_more_exactly(
     vocabulary: Vocabulary, erl: bool, text: str, frames: Frames
 ) -> None:
     assert _said(vocabulary, erl, text, "philippa") == frames
