@@ -1,6 +1,7 @@
-"""Steps said one after another with less than a whole sentence each, as people give a robot a route or a
-list of jobs ("go to the bedroom, then the kitchen", "navigate to the living room, then, um, to the dining
-room, and grab the candle").
+"""Steps said one after another, as people give a robot a route or a list of jobs: with less than a whole
+sentence each ("go to the bedroom, then the kitchen", "navigate to the living room, then, um, to the dining
+room, and grab the candle"), out of order ("bring me the coke, but first switch on the light"), or joined by
+a learner's words ("take the apple, and after you bring it to Sven", "you go to search Hugo").
 
 Called from :func:`knic.language.learners.learners_read` on the chunks of a command.
 """
@@ -12,8 +13,70 @@ from knic.language.vocabulary import Vocabulary
 
 
 def steps_read(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
-    """The chunks with the steps of this module said whole."""
-    return goings_repeated(chunks, vocabulary)
+    """The chunks with the steps of this module said whole, in the order they are to be done."""
+    said = first_put_first(after_you_in_order(gone_to_do(chunks)))
+    return goings_repeated(said, vocabulary)
+
+
+def first_put_first(chunks: list[Chunk]) -> list[Chunk]:
+    """ "bring me the coke, but first switch on the kitchen light", "go to the living room, and, er, wait,
+    first switch on the floor lamp": an action said after another with "first" before its verb is done
+    first; what stood between the two ("but", "and", a hesitating "wait") goes with the first said."""
+    for i in range(1, len(chunks) - 1):
+        said = any(c.kind == "verb" for c in chunks[:i])
+        if (
+            not said
+            or chunks[i].kind != "unknown"
+            or chunks[i].text != "first"
+            or chunks[i + 1].kind != "verb"
+        ):
+            continue
+        end = next(
+            (
+                j
+                for j in range(i + 2, len(chunks) - 1)
+                if chunks[j].kind == "join" and chunks[j + 1].kind == "verb"
+            ),
+            len(chunks),
+        )
+        before = list(chunks[:i])
+        while before and (before[-1].kind == "join" or before[-1].text == "but"):
+            before.pop()
+        return [*chunks[i + 1 : end], Chunk("join", "and"), *before, *chunks[end:]]
+    return chunks
+
+
+def after_you_in_order(chunks: list[Chunk]) -> list[Chunk]:
+    """ "take the apple, and after you bring it to Sven" (a learner's "after": then): "after you" right after
+    "and" goes on in order, where "bring me the tea after you switch on the light" puts the light first
+    (:func:`knic.language.tidy.after_moved`)."""
+    out: list[Chunk] = []
+    i = 0
+    while i < len(chunks):
+        chunk = chunks[i]
+        after = chunk.kind == "unknown" and chunk.text == "after" and out and out[-1].kind == "join"
+        if after and i + 2 < len(chunks) and chunks[i + 1].text == "you" and chunks[i + 2].kind == "verb":
+            i += 2  # the verb follows the "and" said before
+            continue
+        out.append(chunk)
+        i += 1
+    return out
+
+
+def gone_to_do(chunks: list[Chunk]) -> list[Chunk]:
+    """ "you go to search Hugo in the kitchen", "come to get the apple": going "to" do a thing is going and
+    doing it ("go and search Hugo"), not going to a place."""
+    out = list(chunks)
+    for i in range(len(out) - 2):
+        going, to, verb = out[i : i + 3]
+        if (
+            going.kind == "verb"
+            and going.frames[:1] == ("MOTION",)
+            and to.text == "to"
+            and verb.kind == "verb"
+        ):
+            out[i + 1] = Chunk("join", "and")
+    return out
 
 
 def goings_repeated(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:

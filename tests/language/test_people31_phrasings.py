@@ -14,7 +14,15 @@ each tried in the family house of people24 or the ERL apartment as well:
   place, is a second going ("go to the bedroom, then the kitchen", "navigate to the living room, then, um, to
   the dining room, and grab the candle"); "no, the kitchen" still corrects (``knic.language.stepwise``);
 * the place gone to is the source of each thing of the next action, not only the first ("go to the kitchen
-  and bring the milk and the coke to the dining table"; ``knic.language.chains``).
+  and bring the milk and the coke to the dining table"; ``knic.language.chains``);
+* an action said after another with "first" before its verb is done first ("bring me the coke, but first
+  switch on the kitchen light", "go to the living room, and, er, wait, first switch on the floor lamp");
+  a learner's "and after you" goes on in order ("take the apple, and after you bring it to Sven"), where
+  "bring me the apple after you switch on the light" still puts the light first; going "to" do a thing is
+  going and doing it ("you go to search Hugo in the kitchen", "come to get the remote")
+  (``knic.language.stepwise``);
+* a learner's "where stays the tv remote?" (Italian "dove sta", Spanish "dónde está") asks where it is
+  (``commands.yaml``).
 """
 
 from __future__ import annotations
@@ -155,3 +163,74 @@ def test_the_place_gone_to_is_where_each_thing_is_from(
     file: str, text: str, frames: list[dict[str, str]]
 ) -> None:
     assert _read(file, text) == frames
+
+
+@pytest.mark.parametrize(
+    ("file", "text", "frames"),
+    [
+        (
+            HOUSE,
+            "bring me a beer, but first turn on the garden lights",
+            [
+                {"frame": "OPERATING", "device": "garden_lights", "state": "on"},
+                {"frame": "BRINGING", "theme": "beer", "beneficiary": "me"},
+            ],
+        ),
+        (
+            ARENA,
+            "Okay so, go to the living room, and, er, wait, first switch on the floor lamp",
+            [
+                {"frame": "OPERATING", "device": "floor_lamp", "state": "on"},
+                {"frame": "MOTION", "goal": "living_room"},
+            ],
+        ),
+        (
+            HOUSE,
+            "take the drill and after you bring it to Mark",
+            [
+                {"frame": "TAKING", "theme": "drill"},
+                {"frame": "BRINGING", "theme": "drill", "beneficiary": "mark"},
+            ],
+        ),
+        (
+            ARENA,
+            "Please, you go to search Hugo in the kitchen",
+            [{"frame": "SEARCHING", "theme": "hugo", "ground": "kitchen"}],
+        ),
+        (
+            HOUSE,
+            "go to fetch the tiffin box",
+            [{"frame": "BRINGING", "theme": "tiffin_box", "beneficiary": "me"}],
+        ),
+        (ARENA, "Where stays the tv remote?", [{"frame": "SEARCHING", "theme": "tv_remote"}]),
+    ],
+)
+def test_steps_said_out_of_order_or_in_a_learners_words(
+    file: str, text: str, frames: list[dict[str, str]]
+) -> None:
+    assert _read(file, text) == frames
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        (
+            "bring me the juice but first open the blinds",
+            [
+                {"frame": "OPERATING", "device": "bedroom_blinds", "state": "open"},
+                {"frame": "BRINGING", "theme": "juice", "beneficiary": "me"},
+            ],
+        ),
+        (
+            "bring me the apple after you switch on the hallway light",
+            [
+                {"frame": "OPERATING", "device": "hallway_light", "state": "on"},
+                {"frame": "BRINGING", "theme": "apple", "beneficiary": "me"},
+            ],
+        ),
+        ("come to get the remote", [{"frame": "BRINGING", "theme": "remote", "beneficiary": "me"}]),
+        ("where stays the tablet", [{"frame": "SEARCHING", "theme": "tablet"}]),
+    ],
+)
+def test_steps_in_the_erl_apartment(vocabulary: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
+    assert frames_read(vocabulary, text) == frames
