@@ -1,6 +1,8 @@
 """What the sentences of a command say of each other, read before its words are (used by
 :class:`knic.language.reader.Reader` on the command's stretches between stops and commas):
 
+* A sentence after a request that says something the world has no device for is on or off ("shut the porch
+  light off, the Sox game's on"): a remark, dropped (:func:`_on_said_of_others`).
 * A sentence after a request that gives its reason ("..., as I wish to inspect the washing line",
   "..., because I'm cold"), or a reason said on in the request's sentence ("take me to the lounge so that I
   can watch tv"), asks nothing more: dropped (:func:`reasons_dropped`).
@@ -44,6 +46,7 @@ def sentences_read(
 ) -> list[list[str]]:
     """The sentences with the rules of the module docstring applied."""
     segments = reasons_dropped(together_dropped(segments, chunks), chunks)
+    segments = _on_said_of_others(segments, chunks, lambda c: any(is_a(t, "device") for t in c.terms))
     segments = done_dropped(segments, chunks, lambda c: any(is_a(t, "person") for t in c.terms))
     segments = _lacking_first(_asides_dropped(segments, chunks, is_a), chunks)
     return verbs_said([_for_unknown_dropped(s, chunks) for s in segments], chunks, is_a)
@@ -146,6 +149,25 @@ _REASONS = (
 
 #: a reason said on in the sentence of the request, with no stop before it
 _SAID_ON = (["because"], ["cos"], ["coz"], ["so", "that"], ["so", "i", "can"], ["so", "we", "can"])
+
+
+def _on_said_of_others(
+    segments: list[list[str]],
+    chunks: Callable[[Sequence[str]], list[Chunk]],
+    is_device: Callable[[Chunk], bool],
+) -> list[list[str]]:
+    """The sentences without those after a request that say something the world has no device for is on or
+    off ("shut the porch light off, the Sox game's on", "..., the kettle is on", "..., the telly's off"): a
+    remark, not the state the request asks for."""
+    out: list[list[str]] = []
+    for segment in segments:
+        acted = any(c.kind == "verb" for s in out for c in chunks(s))
+        said = len(segment) > 2 and segment[-1] in ("on", "off") and segment[0] not in ("and", "then")
+        be = said and (segment[-2].endswith("'s") or segment[-2] in ("is", "are", "was"))
+        if acted and be and not any(c.kind == "verb" or is_device(c) for c in chunks(segment)):
+            continue
+        out.append(segment)
+    return out
 
 
 def reasons_dropped(

@@ -22,6 +22,9 @@ apartment as well:
   sorry", "close the curtains? The bedroom ones"), takes the place of what the request said, where its words
   end as that thing's did ("ones" standing for them); a list of other things ("the tablet, the cushion") is
   left alone (``knic.language.apologies``).
+* a sentence after a request that says something the world has no device for is on or off ("shut the porch
+  light off, the Sox game's on", "..., the kettle's on") is a remark, not the state asked for
+  (``knic.language.sentences``).
 """
 
 from __future__ import annotations
@@ -256,3 +259,34 @@ def test_a_thing_said_again_more_exactly(
     vocabulary: Vocabulary, erl: bool, text: str, frames: Frames
 ) -> None:
     assert _said(vocabulary, erl, text, "philippa") == frames
+
+
+@pytest.mark.parametrize(
+    ("erl", "text", "frames"),
+    [
+        (
+            False,
+            "Shut the porch light off, the Sox game's on",
+            [{"frame": "OPERATING", "device": "porch_light", "state": "off"}],
+        ),
+        (
+            False,
+            "turn the porch light off, the kettle's on",
+            [{"frame": "OPERATING", "device": "porch_light", "state": "off"}],
+        ),
+        (
+            True,
+            "switch off the hallway light, the news is on",
+            [{"frame": "OPERATING", "device": "hallway_light", "state": "off"}],
+        ),
+        (
+            True,
+            "turn the hallway light on, the telly's off",
+            [{"frame": "OPERATING", "device": "hallway_light", "state": "on"}],
+        ),
+    ],
+)
+def test_on_or_off_said_of_something_else(
+    vocabulary: Vocabulary, erl: bool, text: str, frames: Frames
+) -> None:
+    assert _said(vocabulary, erl, text, "brendan") == frames
