@@ -12,6 +12,10 @@ learners' English only, no world's names:
   order of British Sign Language, or a tired speaker): "is Theo in the courtyard?";
 * "where she is", "where he is" said as a learner's question ("Merline, where she is now?"): "where is
   she" (the order of a question inside another, "do you know where she is", stays);
+* "'s" after a person or thing and before a past participle ("our Theo's cut his knee", "the milk's gone
+  off", "Nan's dropped her glasses"): "has", a remark about what happened, not a thing of theirs;
+* "our" before a name written with its capital ("our Theo's cut his knee", "take it to our Ellis",
+  Northern English and Scouse for one of the family): the name alone;
 * Caribbean English "it have" for "there is", and "ent it have" (isn't there) or "it have" opening a question
   ("ent it have sorrel in the fridge?", "it have milk in the fridge?"): "is there".
 """
@@ -54,8 +58,19 @@ _IT_HAVE_ASKED = re.compile(r"(?:^|(?<=[.!?;,]\s))it have\b(?=[^.!?]*\?)", re.IG
 _THERE_IS = re.compile(r"(?<![\w'])(?<!does )(?<!would )(?<!will )it have\b(?!\s+(?:to|got|been|a look))")
 
 
+#: past participles said after "'s" (has), not things someone owns
+_DONE = (
+    "cut|hurt|broken|broke|lost|gone|fallen|fell|burnt|burned|left|dropped|spilled|spilt|done|got|finished"
+    "|taken|eaten|forgotten|forgot|bumped|banged|grazed|scraped|twisted|sprained|knocked|tripped|been"
+)
+#: "our" before a capitalised name ("our Theo")
+_FAMILY = re.compile(r"(?<![\w'])[Oo]ur (?=[A-Z][a-z])")
+_HAS_DONE = re.compile(rf"\b([a-z]+)'s ({_DONE})\b(?!\s+(?:and|or)\b)", re.IGNORECASE)
+
+
 def asked_plainly(text: str) -> str:
     """``text`` with the questions of the module docstring put in the usual English order."""
+    text = _HAS_DONE.sub(lambda m: f"{m.group(1)} has {m.group(2)}", _FAMILY.sub("", text))
     text = _IT_HAVE.sub("is there", text)
     text = _IT_HAVE_ASKED.sub("is there", text)
     text = _THERE_IS.sub("there is", text)

@@ -15,7 +15,10 @@ tried in the ERL apartment as well, with sentences of the test's own:
   furniture whose own name is "<its noun>side" is that one ("the lamp by the bed": the bedside lamp)
   (``knic.language.placenames``);
 * Caribbean "by" for where to after "carry", "take" or "bring" with no one and nowhere else said ("carry
-  de bible by Kieran") (``knic.language.dialects``).
+  de bible by Kieran") (``knic.language.dialects``);
+* "'s" before a past participle is "has" ("our Theo's cut his knee": a reason, no thing of Theo's), and
+  "our" before a capitalised name is the name (``knic.language.plainorder``); "leg it" runs
+  (``commands.yaml``).
 """
 
 from __future__ import annotations
@@ -257,6 +260,36 @@ def test_carried_by_a_place_or_a_person(
     assert (
         frames_read(
             _flat() if world == "flat" else vocabulary, text, "merline" if world == "flat" else "annie"
+        )
+        == frames
+    )
+
+
+@pytest.mark.parametrize(
+    ("world", "text", "frames"),
+    [
+        (
+            "flat",
+            "Bring the plasters from the wet room, our Theo's cut his knee",
+            [{"frame": "BRINGING", "theme": "plasters", "source": "wet_room", "beneficiary": "me"}],
+        ),
+        ("erl", "take the cup to our Tracy", [{"frame": "BRINGING", "theme": "cup", "beneficiary": "tracy"}]),
+        (
+            "erl",
+            "bring me the juice, the milk's gone off",
+            [{"frame": "BRINGING", "theme": "juice", "beneficiary": "me"}],
+        ),
+        ("erl", "bring me tracy's cup", [{"frame": "BRINGING", "theme": "cup", "beneficiary": "me"}]),
+        ("flat", "Leg it to the bistro table and wait there", [{"frame": "MOTION", "goal": "bistro_table"}]),
+        ("erl", "leg it over to the kitchen", [{"frame": "MOTION", "goal": "kitchen"}]),
+    ],
+)
+def test_family_and_what_has_happened(
+    vocabulary: Vocabulary, world: str, text: str, frames: list[dict[str, str]]
+) -> None:
+    assert (
+        frames_read(
+            _flat() if world == "flat" else vocabulary, text, "kieran" if world == "flat" else "annie"
         )
         == frames
     )
