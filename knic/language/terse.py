@@ -170,12 +170,17 @@ def reported(
     i = past_determiners(chunks, i)
     if quoted and i < len(chunks) and chunks[i].kind == "verb":  # "oscar says bring me the bottle": oscar
         return [chunks[0], *chunks[i:]], asker
+    to = i + 1 < len(chunks) and chunks[i].kind == "prep" and chunks[i].text == "to"
     if (
-        i + 1 < len(chunks)
-        and chunks[i].kind == "prep"
-        and chunks[i].text == "to"
-        and chunks[i + 1].kind == "verb"
+        to
+        and chunks[i + 1].kind in ("verb", "unknown")
+        and chunks[i + 2 : i + 3]
+        and chunks[i + 2].kind == "verb"
     ):
+        # "hugo wants to leave, guide him to the exit", "annie wants to sleep, close the blinds": what the
+        # person will do, said as the reason for the request (the person stays said, for "him" or "her")
+        return [chunks[0], *chunks[i + 2 :]], None
+    if to and chunks[i + 1].kind == "verb":
         return [chunks[0], *chunks[i + 1 :]], asker
     return chunks, None
 

@@ -22,7 +22,10 @@ each tried in the family house of people24 or the ERL apartment as well:
   going and doing it ("you go to search Hugo in the kitchen", "come to get the remote")
   (``knic.language.stepwise``);
 * a learner's "where stays the tv remote?" (Italian "dove sta", Spanish "dónde está") asks where it is
-  (``commands.yaml``).
+  (``commands.yaml``);
+* what a person wants to do, said with no object before the request, is its reason ("Hugo wants to leave,
+  guide him to the exit", "annie wants to sleep, close the blinds"), not a request told of them (as "tracy
+  wants to fetch her glasses" still is); the person stays said for "him" or "her" (``knic.language.terse``).
 """
 
 from __future__ import annotations
@@ -234,3 +237,18 @@ def test_steps_said_out_of_order_or_in_a_learners_words(
 )
 def test_steps_in_the_erl_apartment(vocabulary: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
     assert frames_read(vocabulary, text) == frames
+
+
+def test_what_a_person_wants_to_do_is_the_reason_for_the_request(vocabulary: Vocabulary) -> None:
+    assert _read(ARENA, "Hugo wants to leave, guide him to the exit") == [
+        {"frame": "ACCOMPANYING", "theme": "hugo", "goal": "entrance"}
+    ]
+    assert _read(HOUSE, "Joy wants to rest, close the annexe curtains") == [
+        {"frame": "OPERATING", "device": "annexe_curtains", "state": "closed"}
+    ]
+    assert frames_read(vocabulary, "annie wants to read, bring her the glasses", "tracy") == [
+        {"frame": "BRINGING", "theme": "glasses", "beneficiary": "annie"}
+    ]
+    assert frames_read(vocabulary, "tracy wants to fetch her glasses", "annie") == [
+        {"frame": "BRINGING", "theme": "glasses", "beneficiary": "tracy"}
+    ]
