@@ -12,7 +12,7 @@ appears in a chain whose later action carries the object on ("take the cups and 
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass
 from typing import Any
 
@@ -30,6 +30,7 @@ KIND_NAMES = {
     "device": "a device",
     "light": "a light",
 }
+
 KIND_PLURALS = {
     "item": "objects",
     "person": "people",
@@ -37,6 +38,17 @@ KIND_PLURALS = {
     "furniture": "furniture",
     "device": "devices",
 }
+
+
+def not_of_kinds(said: str, categories: Sequence[str], device: bool) -> str:
+    """The reply to a thing said where an action needs one of ``categories`` ("'bin' is not an object"); a
+    device said so (``device``) is said to be one ("is the hallway light on?", "bring me the dimmer")."""
+    if device and "device" not in categories:
+        if said.endswith("s") and not said.endswith("ss"):
+            are = "are devices: I can switch or set them, not find or carry them or say how they are"
+            return f"the {said} {are}"
+        return f"the {said} is a device: I can switch or set it, not find or carry it or say how it is"
+    return f"'{said}' is not " + " or ".join(KIND_NAMES.get(c, c) for c in categories)
 
 
 @dataclass(frozen=True)

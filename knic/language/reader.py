@@ -36,7 +36,7 @@ from knic.language.chains import AmbiguityError, Reading, chain, referent, settl
 from knic.language.chunks import Chunk, Chunker
 from knic.language.clauses import Arg, Clause, split_clauses
 from knic.language.commands import CommandLanguage, command_language
-from knic.language.frames import KIND_NAMES, KIND_PLURALS, SPEAKER, CommandFrame
+from knic.language.frames import KIND_PLURALS, SPEAKER, CommandFrame, not_of_kinds
 from knic.language.household import gathered_up, ones_named, other_one, said_around, where_last, words_tidied
 from knic.language.learners import learners_read
 from knic.language.naming import names_device, places_before, said_named, synonym_only
@@ -466,8 +466,8 @@ class Reader(Places):
         if terms:
             synonym_only(arg, self.vocabulary)  # "my hearing aid" is no "band aid" (naming.py)
         if not terms:
-            kinds = " or ".join(KIND_NAMES.get(c, c) for c in categories)
-            raise LanguageError(f"'{chunk.text}' is not {kinds}")
+            device = any(self.is_a(t, "device") for t in chunk.terms)  # "is the hallway light on?"
+            raise LanguageError(not_of_kinds(chunk.text, categories, device))
         symbols = list(dict.fromkeys(t.symbol for t in terms))
         if arg.modifiers and (arg.quantity == "all" or any(t.is_group for t in terms)):  # "the garden lights"
             raise LanguageError(
