@@ -16,6 +16,9 @@
   sunglasses, sorry"; "close the curtains? The bedroom ones"): in the request's place (:func:`narrowed`);
 * a correction that opens with a preposition ("... to Ottavia? Or, no, to the bathroom") replaces what
   followed the same preposition (:func:`after_same_preposition`, for :func:`knic.language.tidy.repaired`).
+* a hedged question about where a thing is ("I don't suppose the ice cream is in the chest freezer, is
+  it?", "I wonder if the keys are on the hall table", "the ice cream isn't in the freezer, is it?"): asked
+  plainly, "is the ice cream in the chest freezer" (:func:`hedged_asked`).
 """
 
 from __future__ import annotations
@@ -135,3 +138,41 @@ def narrowed(segments: list[list[str]], chunks: Chunks) -> list[list[str]]:
             continue
         out[-1] = [*out[-1][: -len(last.text.split())], *again]
     return out
+
+
+#: openings that hedge a question about where a thing is ("I don't suppose the ice cream is in the freezer?")
+_HEDGES = (
+    ["i", "don't", "suppose"],
+    ["i", "do", "not", "suppose"],
+    ["i", "wonder", "if"],
+    ["i", "wonder", "whether"],
+)
+#: a question tag after a statement ("..., is it?", "..., aren't they?")
+_TAGS = frozenset(
+    {"is it", "isn't it", "are they", "aren't they", "is he", "is she", "isn't he", "isn't she"}
+)
+#: where a thing is said to be after "is" ("... is in the freezer", "... is on the table")
+_WHERE = frozenset({"in", "on", "at", "inside", "under", "by", "near", "still"})
+
+
+def hedged_asked(segments: list[list[str]]) -> list[list[str]]:
+    """The segments with a hedged question about where a thing is asked plainly: "I don't suppose the ice
+    cream is in the chest freezer, is it?", "I wonder if the keys are on the hall table", "the ice cream
+    isn't in the freezer, is it?" are "is the ice cream in the chest freezer" (a search there); the tag said
+    after it is dropped. A statement without a hedge or a tag ("the ice cream is in the freezer") is left."""
+    out: list[list[str]] = []
+    for at, segment in enumerate(segments):
+        if " ".join(segment) in _TAGS and out and out[-1][:1] in (["is"], ["are"]):
+            continue  # the tag of the question just put plainly
+        tagged = at + 1 < len(segments) and " ".join(segments[at + 1]) in _TAGS
+        hedge = next((h for h in _HEDGES if segment[: len(h)] == h), None)
+        start = len(hedge) if hedge else 0
+        be = next((i for i in range(start + 1, len(segment) - 1) if segment[i] in _BE), None)
+        if (hedge or tagged) and be is not None and segment[be + 1] in _WHERE:
+            segment = [_BE[segment[be]], *segment[start:be], *segment[be + 1 :]]
+        out.append(segment)
+    return out
+
+
+#: "be" as said in the statement, and as it opens the question
+_BE = {"is": "is", "are": "are", "isn't": "is", "aren't": "are"}

@@ -25,6 +25,9 @@ apartment as well:
 * a sentence after a request that says something the world has no device for is on or off ("shut the porch
   light off, the Sox game's on", "..., the kettle's on") is a remark, not the state asked for
   (``knic.language.sentences``).
+* a hedged question about where a thing is ("I don't suppose the ice cream is in the chest freezer, is it?",
+  "I wonder if ... is ...", a statement with a question tag) asks where it is, plainly
+  (``knic.language.apologies``); the statement alone is still no request.
 """
 
 from __future__ import annotations
@@ -33,6 +36,7 @@ from functools import lru_cache
 
 import pytest
 
+from knic.language import understand
 from knic.language.vocabulary import Vocabulary
 
 from .conftest import frames_read, world_of
@@ -290,3 +294,39 @@ def test_on_or_off_said_of_something_else(
     vocabulary: Vocabulary, erl: bool, text: str, frames: Frames
 ) -> None:
     assert _said(vocabulary, erl, text, "brendan") == frames
+
+
+@pytest.mark.parametrize(
+    ("erl", "text", "frames"),
+    [
+        (
+            False,
+            "Sorry, I don't suppose the ice cream is in the chest freezer, is it?",
+            [{"frame": "SEARCHING", "theme": "ice_cream", "ground": "chest_freezer"}],
+        ),
+        (
+            False,
+            "I wonder if the car keys are on the hall table",
+            [{"frame": "SEARCHING", "theme": "car_keys", "ground": "hall_table"}],
+        ),
+        (
+            True,
+            "the remote isn't on the coffee table, is it?",
+            [{"frame": "SEARCHING", "theme": "remote", "ground": "coffee_table"}],
+        ),
+        (
+            True,
+            "I wonder whether the apple is in the kitchen cabinet",
+            [{"frame": "SEARCHING", "theme": "apple", "ground": "kitchen_cabinet"}],
+        ),
+    ],
+)
+def test_a_hedged_question_of_where_a_thing_is(
+    vocabulary: Vocabulary, erl: bool, text: str, frames: Frames
+) -> None:
+    assert _said(vocabulary, erl, text, "philippa") == frames
+
+
+def test_a_statement_of_where_a_thing_is_stays_no_request(vocabulary: Vocabulary) -> None:
+    result = understand("the remote is on the coffee table", vocabulary, speaker="annie")
+    assert not result.accepted
