@@ -31,6 +31,7 @@ from knic.language.frames import CommandFrame
 from knic.language.goals import room_of
 from knic.language.regional import regional_said
 from knic.language.shortnames import containers, contains, english_opposites
+from knic.language.signorder import signed_read
 from knic.language.vocabulary import Term, Vocabulary, english_synonyms
 
 #: words said between a thing's name and the word its name starts with, and what the name keeps of them
@@ -60,7 +61,7 @@ def said_named(segments: list[list[str]], vocabulary: Vocabulary, known: Collect
         _synonyms_said(_contents(_turned_round(s, phrases, canon), phrases), phrases, canon) for s in segments
     ]
     out = [_asked_for(_first_names(s, people, phrases, known), people) for s in out]
-    return _persons_rooms(out, people, rooms)
+    return signed_read(_persons_rooms(out, people, rooms), vocabulary)  # "freezer take" (signorder.py)
 
 
 @lru_cache(maxsize=16)

@@ -19,8 +19,8 @@ NAMING = frozenset({"verb", "prep", "me", "owner", "entity", "pronoun", "join"})
 #: words the world has no name for that name no thing either
 NOT_NAMES = COPULAS | {"not"}
 #: where a stretch of a typed command ends (sentences, commas and a colon: "one more thing: the lamp ...", not
-#: "4:30"); recognised speech has none
-SEGMENT_END = re.compile(r"[.?!;,]+|:(?!\d)|\s-\s")
+#: "4:30"; a dash, typed " - " or as a long dash, "ice pack — freezer take"); recognised speech has none
+SEGMENT_END = re.compile(r"[.?!;,]+|:(?!\d)|\s-\s|\s*[—–]\s*")
 
 
 def unplaced(chunks: list[Chunk]) -> list[Chunk]:

@@ -18,7 +18,11 @@ tried in the ERL apartment as well, with sentences of the test's own:
   de bible by Kieran") (``knic.language.dialects``);
 * "'s" before a past participle is "has" ("our Theo's cut his knee": a reason, no thing of Theo's), and
   "our" before a capitalised name is the name (``knic.language.plainorder``); "leg it" runs
-  (``commands.yaml``).
+  (``commands.yaml``);
+* British Sign Language order typed in English, the topic first and the verb last with no prepositions
+  ("Ice pack — freezer take — Ottavio give", "Cushion, sofa take, garden bench put", "Sofa — go there",
+  "Headphones Theo — sofa. Theo give"): the prepositions each verb asks for put in, and a long dash sets a
+  stretch apart as " - " does (``knic.language.signorder``, ``knic.language.tidy``).
 """
 
 from __future__ import annotations
@@ -293,3 +297,73 @@ def test_family_and_what_has_happened(
         )
         == frames
     )
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        (
+            "Cup, kitchen table take, bedside table put",
+            [
+                {"frame": "TAKING", "theme": "cup", "source": "kitchen_table"},
+                {"frame": "PLACING", "theme": "cup", "goal": "bedside_table"},
+            ],
+        ),
+        ("Kitchen — go there", [{"frame": "MOTION", "goal": "kitchen"}]),
+        ("Bedroom — go, wait", [{"frame": "MOTION", "goal": "bedroom"}]),
+        (
+            "Remote — sofa — Tracy give",
+            [{"frame": "BRINGING", "theme": "remote", "source": "sofa", "beneficiary": "tracy"}],
+        ),
+        (
+            "Glasses Annie — bedside table. Annie give",
+            [{"frame": "BRINGING", "theme": "glasses", "source": "bedside_table", "beneficiary": "annie"}],
+        ),
+        (
+            "go to the kitchen, take the cup and put it on the sofa",
+            [
+                {"frame": "MOTION", "goal": "kitchen"},
+                {"frame": "TAKING", "theme": "cup", "source": "kitchen"},
+                {"frame": "PLACING", "theme": "cup", "goal": "sofa"},
+            ],
+        ),
+    ],
+)
+def test_sign_language_order(vocabulary: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
+    assert frames_read(vocabulary, text) == frames
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        (
+            "Ice pack — freezer take — Ottavio give",
+            [
+                {"frame": "TAKING", "theme": "ice_pack", "source": "fridge_freezer"},
+                {
+                    "frame": "BRINGING",
+                    "theme": "ice_pack",
+                    "source": "fridge_freezer",
+                    "beneficiary": "ottavio",
+                },
+            ],
+        ),
+        (
+            "Courtyard light on, courtyard go, wait",
+            [
+                {"frame": "OPERATING", "device": "courtyard_light", "state": "on"},
+                {"frame": "MOTION", "goal": "courtyard"},
+            ],
+        ),
+        (
+            "Watering can — planter — put back",
+            [{"frame": "PLACING", "theme": "watering_can", "goal": "raised_planter"}],
+        ),
+        (
+            "Headphones Theo — sofa. Theo give",
+            [{"frame": "BRINGING", "theme": "headphones", "source": "sofa", "beneficiary": "theo"}],
+        ),
+    ],
+)
+def test_sign_language_order_in_the_flat(flat: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
+    assert frames_read(flat, text, "ellis") == frames

@@ -1,0 +1,153 @@
+"""Requests typed in the order of a sign language, or of a learner whose language puts the verb last and says
+no prepositions, put as English says them (used by :func:`knic.language.naming.said_named`, on the sentences
+of a command with the world's names). British Sign Language, like Turkish, Japanese or Korean, gives the
+topic first and the verb last, and a deaf person typing English often keeps that order and leaves out "to",
+"from" and "on", setting the parts apart with commas or dashes:
+
+* a place or person said straight before a verb said last takes the preposition the verb asks for ("Ice
+  pack — freezer take — Ottavio give": from the freezer, to Ottavio; "sofa take, garden bench put": from the
+  sofa, on the garden bench; "courtyard go": to the courtyard), and an action after another is joined to it
+  by "and", so that the verb is put first as for other speakers
+  (:func:`knic.language.learners.verb_last_moved`);
+* a place said alone between the thing and the verb ("Plasters, cabinet wet room — Theo bring", "Watering
+  can — planter — put back") is where from for a verb that carries and where to for one that puts or goes;
+  "back" after it is then left out (the place is said);
+* a place said alone before "go there" ("Sofa — go there"): go to that place.
+
+Nothing changes in a sentence with a preposition or a verb before the names, or with no world name.
+"""
+
+from __future__ import annotations
+
+from functools import lru_cache
+
+from knic.language.vocabulary import Vocabulary
+
+#: verbs said last, and the preposition each asks of a place said before it (a person is given "to")
+_PLACE_PREP = {
+    "take": "from",
+    "grab": "from",
+    "fetch": "from",
+    "bring": "from",
+    "give": "from",
+    "put": "on",
+    "place": "on",
+    "go": "to",
+    "come": "to",
+    "wait": "at",
+}
+#: verbs after which a person said before is who the thing goes to
+_TO_PERSON = frozenset({"give", "bring", "take", "fetch"})
+#: words said after a verb said last, with it
+_AFTER_VERB = frozenset({"back", "please", "there", "now"})
+#: words that show a sentence is said in English order already
+_PREPOSITIONS = frozenset(
+    {"to", "from", "on", "in", "into", "onto", "off", "at", "out", "by", "near", "under", "for", "with", "of"}
+)
+_PLACES = frozenset({"room", "furniture"})
+#: verbs of going, which take a place said alone before them as where to
+_GOING = frozenset({"go", "come", "wait"})
+#: words that make a stretch an action of its own, before which a later one is joined with "and"
+_VERBS = frozenset(_PLACE_PREP) | {"on", "off", "open", "close", "turn", "switch", "where", "check"}
+
+
+def signed_read(segments: list[list[str]], vocabulary: Vocabulary) -> list[list[str]]:
+    """``segments`` (the sentences and stretches of one command) with the orders of the module docstring put
+    as English says them; else as they are."""
+    names = _names(vocabulary)
+    out = [_owner_after(list(s), names) for s in segments]
+    said = [list(s) for s in out]  # as said, before a preposition is put in
+    for i, words in enumerate(out):
+        verb = _last_verb(words)
+        if verb is None:
+            continue
+        at, verb_said = verb
+        before = words[:at]
+        placed = i and _places(out[i - 1], names)
+        if _PREPOSITIONS & set(before):
+            continue
+        kind, size = _name_before(before, names)
+        if kind == "person" and verb_said in _TO_PERSON:
+            before = [*before[: len(before) - size], "to", *before[len(before) - size :]]
+        elif kind in _PLACES and verb_said in _PLACE_PREP:
+            before = [*before[: len(before) - size], _PLACE_PREP[verb_said], *before[len(before) - size :]]
+        elif before or not placed or verb_said not in _PLACE_PREP:
+            continue
+        elif verb_said in _GOING:  # "sofa — go there": go to the sofa
+            out[i] = [verb_said, _PLACE_PREP[verb_said], *out[i - 1]]
+            out[i - 1] = []
+            continue
+        if placed and i > 1 and verb_said in _PLACE_PREP:
+            # "plasters, cabinet wet room — theo bring": the place said alone is where from or to
+            out[i - 1] = [_PLACE_PREP[verb_said], *out[i - 1]]
+        words = [w for w in [*before, *words[at:]] if w not in ("back", "there")]
+        if any(_VERBS & set(s) for s in said[:i]) and words[:1] != ["and"]:
+            words = ["and", *words]  # an action after another ("courtyard light on, courtyard go, wait")
+        out[i] = words
+    return [s for s in out if s]
+
+
+@lru_cache(maxsize=16)
+def _names(vocabulary: Vocabulary) -> dict[tuple[str, ...], str]:
+    """The world's phrases as word tuples, with what each names: person, room, furniture or thing."""
+    found: dict[tuple[str, ...], str] = {}
+    last: dict[tuple[str, ...], set[str]] = {}
+    for term in vocabulary.terms:
+        for kind in ("person", "room", "furniture", "item", "device"):
+            if vocabulary.is_subtype(term.type, kind):
+                words = tuple(term.phrase.split())
+                found.setdefault(words, kind)
+                last.setdefault(words[-1:], set()).add(kind)  # "freezer" of the "fridge freezer"
+                break
+    for word, kinds in last.items():
+        if len(kinds) == 1 and word:
+            found.setdefault(word, next(iter(kinds)))
+    return found
+
+
+def _last_verb(words: list[str]) -> tuple[int, str] | None:
+    """Where the verb said last is and which it is ("freezer take", "put back"), else None."""
+    end = len(words)
+    while end and words[end - 1] in _AFTER_VERB:
+        end -= 1
+    if end and words[end - 1] in _PLACE_PREP and (end > 1 or len(words) > end):
+        return end - 1, words[end - 1]
+    if end == 1 and words[0] in _PLACE_PREP:
+        return 0, words[0]
+    return None
+
+
+def _name_before(before: list[str], names: dict[tuple[str, ...], str]) -> tuple[str | None, int]:
+    """What the name said last in ``before`` names, and its length in words (the longest that fits)."""
+    for size in range(min(4, len(before)), 0, -1):
+        kind = names.get(tuple(before[-size:]))
+        if kind is not None:
+            return kind, size
+    return None, 0
+
+
+def _places(words: list[str], names: dict[tuple[str, ...], str]) -> bool:
+    """Whether ``words`` are only names of places ("sofa"; "cabinet wet room": the cabinet in the room)."""
+    said = words[1:] if words[:1] and words[0] in ("the", "my", "your", "his", "her", "our") else words
+    while said:
+        size = next((n for n in range(min(4, len(said)), 0, -1) if names.get(tuple(said[:n])) in _PLACES), 0)
+        if not size:
+            return False
+        said = said[size:]
+    return bool(words)
+
+
+def _owner_after(words: list[str], names: dict[tuple[str, ...], str]) -> list[str]:
+    """A thing's name and then a person's, opening a stretch with no verb ("headphones theo", "laptop
+    wanjiru", a signer's order for whose thing it is): "theo's headphones"."""
+    for size in range(min(4, len(words) - 1), 0, -1):
+        if names.get(tuple(words[:size])) != "item":
+            continue
+        rest = words[size:]
+        person = next(
+            (n for n in range(min(3, len(rest)), 0, -1) if names.get(tuple(rest[:n])) == "person"), 0
+        )
+        if person and not _VERBS & set(words):
+            return [*rest[: person - 1], rest[person - 1] + "'s", *words[:size], *rest[person:]]
+        break
+    return words
