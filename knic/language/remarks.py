@@ -96,13 +96,17 @@ def told_there(segments: list[list[str]], chunks: Callable[[Sequence[str]], list
 
 def _said_alone(segments: list[list[str]], chunks: Callable[[Sequence[str]], list[Chunk]]) -> str | None:
     """The word for a thing said alone first ("the television, switch it on", "the fan, turn it on") that
-    names nothing of the world, when the next sentence acts on "it" or "them"; else None."""
+    names nothing of the world, when the next sentence acts on "it" or "them" before it names a thing of the
+    world ("your mission: find Ines and guide her to the exit": "her" is Ines, the mission only a label);
+    else None."""
     if len(segments) < 2:
         return None
     first, then = chunks(segments[0]), chunks(segments[1])
     if len(first) < 2 or first[0].kind != "det" or any(c.kind != "unknown" for c in first[1:]):
         return None
-    acts = any(c.kind == "verb" for c in then) and any(c.kind == "pronoun" for c in then)
+    pronoun = next((k for k, c in enumerate(then) if c.kind == "pronoun"), None)
+    named = next((k for k, c in enumerate(then) if c.kind == "entity" and c.terms), len(then))
+    acts = any(c.kind == "verb" for c in then) and pronoun is not None and pronoun < named
     return " ".join(c.text for c in first[1:]) if acts else None
 
 

@@ -26,6 +26,14 @@ each tried in the family house of people24 or the ERL apartment as well:
 * what a person wants to do, said with no object before the request, is its reason ("Hugo wants to leave,
   guide him to the exit", "annie wants to sleep, close the blinds"), not a request told of them (as "tracy
   wants to fetch her glasses" still is); the person stays said for "him" or "her" (``knic.language.terse``).
+
+Found by probing the voices beyond the set:
+
+* a label said first ("your mission: find Ines and guide her to the exit", "the job, ...") is no thing the
+  world lacks when the request's "her" or "it" follows a thing it names; "the fan, turn it on" is still
+  refused naming the fan (``knic.language.remarks``);
+* "where can I find the cleanser?" asks where it is; "ask Ines to follow you to the kitchen", "... to come
+  with you to ..." is taken there, as "ask Ines to come to the kitchen" is (``commands.yaml``).
 """
 
 from __future__ import annotations
@@ -34,6 +42,7 @@ from functools import lru_cache
 
 import pytest
 
+from knic.language import understand
 from knic.language.vocabulary import Vocabulary
 
 from .conftest import frames_read, world_of
@@ -251,4 +260,46 @@ def test_what_a_person_wants_to_do_is_the_reason_for_the_request(vocabulary: Voc
     ]
     assert frames_read(vocabulary, "tracy wants to fetch her glasses", "annie") == [
         {"frame": "BRINGING", "theme": "glasses", "beneficiary": "tracy"}
+    ]
+
+
+def test_a_label_said_first_is_no_thing_the_world_lacks(vocabulary: Vocabulary) -> None:
+    assert _read(ARENA, "Your mission: find Ines and guide her to the exit") == [
+        {"frame": "SEARCHING", "theme": "ines"},
+        {"frame": "ACCOMPANYING", "theme": "ines", "goal": "entrance"},
+    ]
+    assert _read(HOUSE, "the job, find Rosa and give her the detergent") == [
+        {"frame": "SEARCHING", "theme": "rosa"},
+        {"frame": "BRINGING", "theme": "detergent", "beneficiary": "rosa"},
+    ]
+    result = understand("the fan, turn it on", _world(HOUSE), speaker="mark")
+    assert not result.accepted and "fan" in result.reason
+    result = understand("the television, switch it on", vocabulary)
+    assert not result.accepted and "television" in result.reason
+
+
+@pytest.mark.parametrize(
+    ("file", "text", "frames"),
+    [
+        (ARENA, "Where can I find the cleanser?", [{"frame": "SEARCHING", "theme": "cleanser"}]),
+        (HOUSE, "where can we find the torch", [{"frame": "SEARCHING", "theme": "torch"}]),
+        (
+            ARENA,
+            "Tell Sven to follow you to the kitchen",
+            [{"frame": "ACCOMPANYING", "theme": "sven", "goal": "kitchen"}],
+        ),
+        (
+            HOUSE,
+            "ask Joy to come with you to the kitchenette",
+            [{"frame": "ACCOMPANYING", "theme": "joy", "goal": "kitchenette"}],
+        ),
+    ],
+)
+def test_where_to_find_and_asked_to_follow(file: str, text: str, frames: list[dict[str, str]]) -> None:
+    assert _read(file, text) == frames
+
+
+def test_asked_to_follow_in_the_erl_apartment(vocabulary: Vocabulary) -> None:
+    assert frames_read(vocabulary, "ask jack to follow you to the living room") == [
+        {"frame": "ACCOMPANYING", "theme": "jack", "goal": "living_room"}
     ]
