@@ -90,12 +90,13 @@ class Places:
         """Of the several devices one name fits, keep those that can do what is asked and are where the
         command went: with a level asked for, the dimmers and blinds ("turn the lamp up to half"); then those
         in the room of the latest place said before ("go to the living room and switch on the lamp"), where
-        a dimmer may be the room's light. Nothing changes when no device fits these."""
+        a dimmer may be the room's light. Nothing changes when no device fits these. A plural said alone ("go
+        to the bedroom and close the blinds") is narrowed by the room only: those of the room gone to."""
         chunk = arg.chunk
         terms = tuple(t for t in chunk.terms if self.is_a(t, "device"))
-        if chunk.kind != "entity" or arg.quantity or len({t.symbol for t in terms}) < 2:
+        if chunk.kind != "entity" or (arg.quantity and not arg.plural) or len({t.symbol for t in terms}) < 2:
             return
-        if wants_level:
+        if wants_level and not arg.plural:
             levelled = tuple(t for t in terms if self.is_a(t, "dimmer") or self.is_a(t, "blinds"))
             if not levelled and all(self.is_a(t, "light") for t in terms):
                 levelled = self._dimmers_in(tuple(t for t in self.vocabulary.terms if self.is_a(t, "room")))

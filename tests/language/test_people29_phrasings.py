@@ -22,7 +22,9 @@ tried in the ERL apartment as well, with sentences of the test's own:
 * British Sign Language order typed in English, the topic first and the verb last with no prepositions
   ("Ice pack — freezer take — Ottavio give", "Cushion, sofa take, garden bench put", "Sofa — go there",
   "Headphones Theo — sofa. Theo give"): the prepositions each verb asks for put in, and a long dash sets a
-  stretch apart as " - " does (``knic.language.signorder``, ``knic.language.tidy``).
+  stretch apart as " - " does (``knic.language.signorder``, ``knic.language.tidy``);
+* a plural said alone after going to a room ("..., then go to the bedroom and close the blinds") is that
+  room's, as a singular already was; said with no room it still asks which (``knic.language.places``).
 """
 
 from __future__ import annotations
@@ -367,3 +369,14 @@ def test_sign_language_order(vocabulary: Vocabulary, text: str, frames: list[dic
 )
 def test_sign_language_order_in_the_flat(flat: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
     assert frames_read(flat, text, "ellis") == frames
+
+
+def test_a_plural_said_alone_after_going_to_a_room_is_that_rooms(flat: Vocabulary) -> None:
+    assert frames_read(
+        flat, "Turn off the kitchen light, then go to the bedroom and close the blinds", "wanjiru"
+    ) == [
+        {"frame": "OPERATING", "device": "kitchen_light", "state": "off"},
+        {"frame": "MOTION", "goal": "main_bedroom"},
+        {"frame": "OPERATING", "device": "bedroom_blinds", "state": "closed"},
+    ]
+    assert "all of them" in understand("close the blinds", flat, speaker="wanjiru").question
