@@ -56,20 +56,29 @@ def _lacking_first(
     segments: list[list[str]], chunks: Callable[[Sequence[str]], list[Chunk]]
 ) -> list[list[str]]:
     """A request that names only a thing the world lacks ("can you turn on the aircon, it's so hot here in the
-    laundry"), read without the sentences of talk beside it that have no verb: its refusal names what is
-    lacking, not "here" or the room the talk names."""
+    laundry"; "bring me my knitting, it is in my bag"; a learner's "bring me bread, I make soup"), read
+    without the sentences of talk beside it that have no verb or open with the speaker ("i make soup"): its
+    refusal names what is lacking, not "here", "it" or the room the talk names."""
     said = [chunks(s) for s in segments]
     lacking = [
         n
         for n, c in enumerate(said)
         if any(x.kind == "verb" and not x.soft for x in c[:1] + c[1:2])  # "it's getting dark": no request
-        and not any(x.kind in ("entity", "me", "pronoun") for x in c)
-        and any(c[i].kind == "det" and c[i + 1].kind == "unknown" for i in range(1, len(c) - 1))
+        and not any(x.kind in ("entity", "pronoun") for x in c)
+        and any(c[i].kind in ("det", "me") and c[i + 1].kind == "unknown" for i in range(1, len(c) - 1))
     ]
     corrected = any(x.kind == "repair" for c in said for x in c)  # "go to the garage, no wait, the kitchen"
     if len(lacking) != 1 or len(segments) < 2 or corrected:
         return segments
-    return [s for n, s in enumerate(segments) if n == lacking[0] or any(x.kind == "verb" for x in said[n])]
+    told = [
+        n == lacking[0] or (any(x.kind == "verb" for x in c) and s[:1] not in _SPEAKER)
+        for n, (s, c) in enumerate(zip(segments, said, strict=True))
+    ]
+    return [s for n, s in enumerate(segments) if told[n]]
+
+
+#: what opens a sentence the speaker says of themselves ("i make soup", "we're eating")
+_SPEAKER = (["i"], ["i'm"], ["we"], ["we're"])
 
 
 def _asides_dropped(

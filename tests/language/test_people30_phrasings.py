@@ -28,6 +28,10 @@ apartment as well:
 * a hedged question about where a thing is ("I don't suppose the ice cream is in the chest freezer, is it?",
   "I wonder if ... is ...", a statement with a question tag) asks where it is, plainly
   (``knic.language.apologies``); the statement alone is still no request.
+* a request for a thing the world lacks, with talk beside it that has no verb ("bring me my knitting, it is
+  in my bag") or that the speaker says of themselves ("bring me bread, I make soup"), is refused naming the
+  thing, not "it" or the soup; a learner's request with no article ("bring me bread") counts
+  (``knic.language.sentences``).
 """
 
 from __future__ import annotations
@@ -330,3 +334,25 @@ def test_a_hedged_question_of_where_a_thing_is(
 def test_a_statement_of_where_a_thing_is_stays_no_request(vocabulary: Vocabulary) -> None:
     result = understand("the remote is on the coffee table", vocabulary, speaker="annie")
     assert not result.accepted
+
+
+@pytest.mark.parametrize(
+    ("erl", "text", "word"),
+    [
+        (False, "Bring me my knitting, it is in my bag", "knitting"),
+        (False, "Bring me bread, I make soup", "bread"),
+        (True, "bring me my knitting, it is in my bag", "knitting"),
+        (True, "bring me bread, I'm making soup", "bread"),
+    ],
+)
+def test_a_lacking_thing_with_talk_beside_it_is_named(
+    vocabulary: Vocabulary, erl: bool, text: str, word: str
+) -> None:
+    result = understand(text, vocabulary if erl else _house(), speaker="annie" if erl else "lyudmila")
+    assert not result.accepted and word in result.reason
+
+
+def test_a_thing_the_world_has_with_talk_beside_it_is_brought(vocabulary: Vocabulary) -> None:
+    assert frames_read(vocabulary, "bring me the apple, it is on the kitchen table") == [
+        {"frame": "BRINGING", "theme": "apple", "source": "kitchen_table", "beneficiary": "me"}
+    ]
