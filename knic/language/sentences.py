@@ -5,7 +5,8 @@
   light off, the Sox game's on"): a remark, dropped (:func:`_on_said_of_others`).
 * A sentence after a request that gives its reason ("..., as I wish to inspect the washing line",
   "..., because I'm cold"), or a reason said on in the request's sentence ("take me to the lounge so that I
-  can watch tv"), asks nothing more: dropped (:func:`reasons_dropped`).
+  can watch tv"), or says what someone else means to do ("where did the jigsaw go? Colby wants to finish
+  it"), asks nothing more: dropped (:func:`reasons_dropped`).
 * What someone did with a thing said before ("do you happen to know where the headphones are? jas borrowed
   them"): a sentence of a person, a past verb the command language lacks and no thing named, said beside a
   request, is talk (:func:`done_dropped`): jas is no one to look for.
@@ -156,6 +157,22 @@ _REASONS = (
 )
 
 
+#: what someone else means to do, said after a request ("where did the jigsaw go? Colby wants to finish it")
+_MEANS_TO = (["wants", "to"], ["needs", "to"], ["has", "to"], ["is", "going", "to"])
+
+
+def _wish_of_another(segment: list[str], chunks: Callable[[Sequence[str]], list[Chunk]]) -> bool:
+    """Whether a sentence says what someone else means to do, with a verb that is no action of the robot's
+    ("Colby wants to finish it", "she needs to practise"; not "Colby wants to go to the kitchen"): a
+    reason."""
+    for at in (1, 2, 3):
+        said = next((m for m in _MEANS_TO if segment[at : at + len(m)] == m), None)
+        if said is not None:
+            then = chunks(segment[at + len(said) : at + len(said) + 1])
+            return bool(then) and then[0].kind != "verb"
+    return False
+
+
 #: a reason said on in the sentence of the request, with no stop before it
 _SAID_ON = (["because"], ["cos"], ["coz"], ["so", "that"], ["so", "i", "can"], ["so", "we", "can"])
 
@@ -187,7 +204,7 @@ def reasons_dropped(
     out: list[list[str]] = []
     for segment in segments:
         acted = any(c.kind == "verb" for s in out for c in chunks(s))
-        if acted and any(segment[: len(r)] == r for r in _REASONS):
+        if acted and (any(segment[: len(r)] == r for r in _REASONS) or _wish_of_another(segment, chunks)):
             continue
         # said on in the same sentence ("take me to the lounge so that I can watch tv"): cut there
         at = next(

@@ -24,6 +24,8 @@ apartment as well:
   left alone (``knic.language.apologies``).
 * a sentence after a request that says something the world has no device for is on or off ("shut the porch
   light off, the Sox game's on", "..., the kettle's on") is a remark, not the state asked for
+  (``knic.language.sentences``); so is what someone else means to do with a verb that is no action of the
+  robot's ("where did the jigsaw go? Colby wants to finish it", "..., she needs to practise"): a reason
   (``knic.language.sentences``).
 * a hedged question about where a thing is ("I don't suppose the ice cream is in the chest freezer, is it?",
   "I wonder if ... is ...", a statement with a question tag) asks where it is, plainly
@@ -356,3 +358,22 @@ def test_a_thing_the_world_has_with_talk_beside_it_is_brought(vocabulary: Vocabu
     assert frames_read(vocabulary, "bring me the apple, it is on the kitchen table") == [
         {"frame": "BRINGING", "theme": "apple", "source": "kitchen_table", "beneficiary": "me"}
     ]
+
+
+@pytest.mark.parametrize(
+    ("erl", "text", "frames"),
+    [
+        (
+            False,
+            "Sorry, where did the jigsaw go? Colby wants to finish it",
+            [{"frame": "SEARCHING", "theme": "jigsaw_box"}],
+        ),
+        (False, "find the football, Colby wants to play", [{"frame": "SEARCHING", "theme": "football"}]),
+        (True, "find the remote, tracy wants to watch the news", [{"frame": "SEARCHING", "theme": "remote"}]),
+        (True, "where is the tablet? jack needs to read it", [{"frame": "SEARCHING", "theme": "tablet"}]),
+    ],
+)
+def test_what_someone_else_means_to_do_is_a_reason(
+    vocabulary: Vocabulary, erl: bool, text: str, frames: Frames
+) -> None:
+    assert _said(vocabulary, erl, text, "philippa") == frames
