@@ -14,35 +14,30 @@ from knic.language.vocabulary import Vocabulary
 
 def steps_read(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
     """The chunks with the steps of this module said whole, in the order they are to be done."""
-    said = first_put_first(after_you_in_order(gone_to_do(chunks)))
-    return goings_repeated(said, vocabulary)
+    said = first_put_first(after_you_in_order(gone_to_do(before_to(chunks))))
+    return each_given(goings_repeated(said, vocabulary), vocabulary)
 
 
 def first_put_first(chunks: list[Chunk]) -> list[Chunk]:
     """ "bring me the coke, but first switch on the kitchen light", "go to the living room, and, er, wait,
-    first switch on the floor lamp": an action said after another with "first" before its verb is done
-    first; what stood between the two ("but", "and", a hesitating "wait") goes with the first said."""
+    first switch on the floor lamp", "go to the kitchen, but before that switch on the light": an action
+    said after another with "first" or "before that" before its verb is done first; what stood between the
+    two ("but", "and", a hesitating "wait") goes with the first said."""
     for i in range(1, len(chunks) - 1):
-        said = any(c.kind == "verb" for c in chunks[:i])
-        if (
-            not said
-            or chunks[i].kind != "unknown"
-            or chunks[i].text != "first"
-            or chunks[i + 1].kind != "verb"
-        ):
+        if not any(c.kind == "verb" for c in chunks[:i]) or chunks[i].kind != "unknown":
             continue
+        that = chunks[i].text == "before" and chunks[i + 1].text in ("that", "this")
+        at = i + 1 if chunks[i].text == "first" else i + 2 if that else len(chunks)
+        if at >= len(chunks) or chunks[at].kind != "verb":
+            continue
+        verbs = range(at + 1, len(chunks) - 1)
         end = next(
-            (
-                j
-                for j in range(i + 2, len(chunks) - 1)
-                if chunks[j].kind == "join" and chunks[j + 1].kind == "verb"
-            ),
-            len(chunks),
+            (j for j in verbs if chunks[j].kind == "join" and chunks[j + 1].kind == "verb"), len(chunks)
         )
         before = list(chunks[:i])
         while before and (before[-1].kind == "join" or before[-1].text == "but"):
             before.pop()
-        return [*chunks[i + 1 : end], Chunk("join", "and"), *before, *chunks[end:]]
+        return [*chunks[at:end], Chunk("join", "and"), *before, *chunks[end:]]
     return chunks
 
 
@@ -79,6 +74,36 @@ def gone_to_do(chunks: list[Chunk]) -> list[Chunk]:
     return out
 
 
+def before_to(chunks: list[Chunk]) -> list[Chunk]:
+    """ "before to go to the kitchen, switch on the light" (a learner's "before going": Italian "prima di",
+    French "avant de"): "to" between "before" and a verb is dropped, so that the action still comes after
+    (:func:`knic.language.tidy.before_moved`)."""
+    for i in range(len(chunks) - 2):
+        before, to, verb = chunks[i : i + 3]
+        if before.kind == "unknown" and before.text == "before" and to.text == "to" and verb.kind == "verb":
+            return [*chunks[: i + 1], *chunks[i + 2 :]]
+    return chunks
+
+
+def each_given(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
+    """ "bring the banana to Amara and the pear to Ines": a thing and whom or where it goes, then "and" with
+    another thing and whom or where it goes, is the verb said again for the second (each to its own)."""
+    verb: Chunk | None = None
+    sent = False  # the verb's thing was said to go to someone or somewhere
+    for i, chunk in enumerate(chunks):
+        if chunk.kind == "verb":
+            verb, sent = (chunk if {"BRINGING", "TAKING"} & set(chunk.frames) else None), False
+        elif verb is not None and chunk.kind == "prep" and chunk.role == "goal":
+            sent = True
+        elif verb is not None and sent and chunk.kind == "join" and chunk.text == "and":
+            at = i + 1 + (i + 1 < len(chunks) and chunks[i + 1].kind == "det")
+            thing = at < len(chunks) and _names(chunks[at], vocabulary, ("item",))
+            to = at + 1 < len(chunks) and chunks[at + 1].kind == "prep" and chunks[at + 1].role == "goal"
+            if thing and to:
+                return [*chunks[: i + 1], verb, *each_given(chunks[i + 1 :], vocabulary)]
+    return chunks
+
+
 def goings_repeated(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
     """ "go to the bedroom, then the kitchen", "go to the hallway then to the study": a room or a piece of
     furniture said after "then" with no verb of its own, once the robot was sent to a place, is a second
@@ -104,8 +129,13 @@ def goings_repeated(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
 
 def _place(chunk: Chunk, vocabulary: Vocabulary) -> bool:
     """Whether a chunk names only rooms and pieces of furniture."""
+    return _names(chunk, vocabulary, ("room", "furniture"))
+
+
+def _names(chunk: Chunk, vocabulary: Vocabulary, kinds: tuple[str, ...]) -> bool:
+    """Whether a chunk names only things of ``kinds``."""
     return (
         chunk.kind == "entity"
         and bool(chunk.terms)
-        and all(any(vocabulary.is_subtype(t.type, k) for k in ("room", "furniture")) for t in chunk.terms)
+        and all(any(vocabulary.is_subtype(t.type, k) for k in kinds) for t in chunk.terms)
     )

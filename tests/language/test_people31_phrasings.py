@@ -33,7 +33,10 @@ Found by probing the voices beyond the set:
   world lacks when the request's "her" or "it" follows a thing it names; "the fan, turn it on" is still
   refused naming the fan (``knic.language.remarks``);
 * "where can I find the cleanser?" asks where it is; "ask Ines to follow you to the kitchen", "... to come
-  with you to ..." is taken there, as "ask Ines to come to the kitchen" is (``commands.yaml``).
+  with you to ..." is taken there, as "ask Ines to come to the kitchen" is (``commands.yaml``);
+* "bring the banana to Amara and the pear to Ines": each thing goes to its own person, not both to the last
+  said; "go to the kitchen, but before that switch on the light" switches first; a learner's "before to go
+  to the kitchen, ..." is "before going" (``knic.language.stepwise``).
 """
 
 from __future__ import annotations
@@ -302,4 +305,52 @@ def test_where_to_find_and_asked_to_follow(file: str, text: str, frames: list[di
 def test_asked_to_follow_in_the_erl_apartment(vocabulary: Vocabulary) -> None:
     assert frames_read(vocabulary, "ask jack to follow you to the living room") == [
         {"frame": "ACCOMPANYING", "theme": "jack", "goal": "living_room"}
+    ]
+
+
+@pytest.mark.parametrize(
+    ("file", "text", "frames"),
+    [
+        (
+            ARENA,
+            "Bring the banana to Amara and the pear to Ines",
+            [
+                {"frame": "BRINGING", "theme": "banana", "beneficiary": "amara"},
+                {"frame": "BRINGING", "theme": "pear", "beneficiary": "ines"},
+            ],
+        ),
+        (
+            HOUSE,
+            "Take the beer to Mark and the yoghurt to Priya",
+            [
+                {"frame": "BRINGING", "theme": "beer", "beneficiary": "mark"},
+                {"frame": "BRINGING", "theme": "yoghurt", "beneficiary": "priya"},
+            ],
+        ),
+        (
+            ARENA,
+            "Go to the kitchen, but before that switch on the corridor light",
+            [
+                {"frame": "OPERATING", "device": "corridor_light", "state": "on"},
+                {"frame": "MOTION", "goal": "kitchen"},
+            ],
+        ),
+        (
+            HOUSE,
+            "Before to go to the garage, switch on the garage light",
+            [
+                {"frame": "OPERATING", "device": "garage_light", "state": "on"},
+                {"frame": "MOTION", "goal": "garage"},
+            ],
+        ),
+    ],
+)
+def test_each_thing_to_its_own_and_before_that(file: str, text: str, frames: list[dict[str, str]]) -> None:
+    assert _read(file, text) == frames
+
+
+def test_each_thing_to_its_own_in_the_erl_apartment(vocabulary: Vocabulary) -> None:
+    assert frames_read(vocabulary, "bring the glasses to annie and the juice to tracy") == [
+        {"frame": "BRINGING", "theme": "glasses", "beneficiary": "annie"},
+        {"frame": "BRINGING", "theme": "juice", "beneficiary": "tracy"},
     ]
