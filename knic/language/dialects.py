@@ -27,6 +27,7 @@ one plain word, such as Jamaican "di" for "the", are ``spellings`` in ``commands
 * "like" before a number ("likkle bit, like twenty", "to like 40"): "to", a level said roughly;
 * "up the stairs", "down the stairs" before where to ("help me up the stairs to the heather room"): the way
   there, not a place;
+* Caribbean "she" after a preposition ("Wanjiru in she room?", "give it to she"): "her";
 * "by" for where to after "carry", "take" or "bring" with no one and nowhere else said (Caribbean English
   "carry dis mug by de sink", "carry de bible by Kieran": to the sink, to Kieran); "bring me the cup by the
   sink" stays the cup that is by the sink.
@@ -146,6 +147,8 @@ def dialect_words(tokens: list[str]) -> list[str]:
             if before and before not in _CARRYING | _NOT_A_THING | _JOINING:
                 continue  # "di blinds dem": the plural said again
             token = "them"
+        if token == "she" and before in _PREPOSITIONS | {"into", "by", "inna"}:
+            token = "her"  # "in she room"
         if token == "by" and _carried_to(out, tokens[i:]):
             token = "to"  # "carry dis mug by de sink"
         if token in _GIVEN and before in ("it", "them") and nxt in ("", "and", "then", "please"):

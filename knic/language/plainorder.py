@@ -16,6 +16,13 @@ learners' English only, no world's names:
   off", "Nan's dropped her glasses"): "has", a remark about what happened, not a thing of theirs;
 * "our" before a name written with its capital ("our Theo's cut his knee", "take it to our Ellis",
   Northern English and Scouse for one of the family): the name alone;
+* a verb "be" left out (Caribbean English, African American English, learners): "this chair giving me
+  trouble" ("this chair is giving ...", a remark), "I hungry", "I cold" ("I'm hungry", a reason after a
+  request);
+* what a thing is for said as someone's meal after a request ("bring my mug for my tea", "... for lunch"):
+  left out, the meal is no thing to bring ("bring me the cup for the tea" still names the tea, a thing);
+* Caribbean "nah" said straight after a request ("pass me de remote nah", "bring me a roti nah, I
+  hungry"): urging, left out ("nah" set apart, "..., nah, the cup", stays "no", a correction);
 * Caribbean English "it have" for "there is", and "ent it have" (isn't there) or "it have" opening a question
   ("ent it have sorrel in the fridge?", "it have milk in the fridge?"): "is there".
 """
@@ -68,8 +75,34 @@ _FAMILY = re.compile(r"(?<![\w'])[Oo]ur (?=[A-Z][a-z])")
 _HAS_DONE = re.compile(rf"\b([a-z]+)'s ({_DONE})\b(?!\s+(?:and|or)\b)", re.IGNORECASE)
 
 
+#: "this" or "that", a noun and a verb in "-ing" with "is" left out ("dis chair giving me trouble")
+_THIS_DOING = re.compile(
+    r"\b(this|that|dis|dat) ([a-z]+) ([a-z]{2,}ing)\b(?! (?:is|are|was)\b)", re.IGNORECASE
+)
+#: words in "-ing" that are no verb's
+_NOT_DOING = frozenset(
+    {"thing", "ring", "king", "ceiling", "building", "evening", "morning", "string", "bring", "sling", "wing"}
+    | {"something", "nothing", "anything", "everything", "swing", "spring", "pudding", "icing", "stuffing"}
+)
+#: how the speaker feels, said with "I" and "be" left out ("I hungry")
+_FEELING = re.compile(
+    r"(?:^|(?<=[,.;!?]\s))I (hungry|thirsty|tired|cold|hot|sleepy|busy|sick|ill|late|bored|starving|freezing"
+    r"|cold now|hungry now|tired now|ready|done)\b",
+)
+#: Caribbean "nah" straight after a request's last word, urging it on
+_URGING_NAH = re.compile(r"(?<=[a-z]) nah(?=\s*(?:[,.!?]|$))", re.IGNORECASE)
+#: a meal said as what a thing is for ("for my tea", "for lunch")
+_FOR_MEAL = re.compile(
+    r"\s+for (?:my |your |his |her |our |meh )?(?:tea|breakfast|lunch|dinner|supper|snack|elevenses)"
+    r"(?=\s*(?:[.,!?]|$))",
+    re.IGNORECASE,
+)
+
+
 def asked_plainly(text: str) -> str:
     """``text`` with the questions of the module docstring put in the usual English order."""
+    text = _THIS_DOING.sub(lambda m: _doing(m), _FEELING.sub(lambda m: f"I'm {m.group(1)}", text))
+    text = _URGING_NAH.sub("", _FOR_MEAL.sub("", text))
     text = _HAS_DONE.sub(lambda m: f"{m.group(1)} has {m.group(2)}", _FAMILY.sub("", text))
     text = _IT_HAVE.sub("is there", text)
     text = _IT_HAVE_ASKED.sub("is there", text)
@@ -98,3 +131,9 @@ def _statement_asked(match: re.Match[str]) -> str:
     if thing.split()[0].lower() in _NOT_SAID or len(thing.split()) > 6:
         return match.group(0)
     return f"{match.group('aux')} {thing} {match.group('where')}"
+
+
+def _doing(match: re.Match[str]) -> str:
+    if match.group(3).lower() in _NOT_DOING or match.group(2).lower() in ("is", "was", "are", "one"):
+        return match.group(0)
+    return f"{match.group(1)} {match.group(2)} is {match.group(3)}"

@@ -12,7 +12,9 @@ topic first and the verb last, and a deaf person typing English often keeps that
 * a place said alone between the thing and the verb ("Plasters, cabinet wet room — Theo bring", "Watering
   can — planter — put back") is where from for a verb that carries and where to for one that puts or goes;
   "back" after it is then left out (the place is said);
-* a place said alone before "go there" ("Sofa — go there"): go to that place.
+* a place said alone before "go there" ("Sofa — go there"): go to that place;
+* a person said with where they are and nothing else ("Wanjiru in her room?", a signer's or a Caribbean
+  speaker's question with "is" left out): whether they are there.
 
 Nothing changes in a sentence with a preposition or a verb before the names, or with no world name.
 """
@@ -60,6 +62,7 @@ def signed_read(segments: list[list[str]], vocabulary: Vocabulary) -> list[list[
     for i, words in enumerate(out):
         verb = _last_verb(words)
         if verb is None:
+            out[i] = _be_asked(words, names)  # "wanjiru in her room?"
             continue
         at, verb_said = verb
         before = words[:at]
@@ -151,3 +154,15 @@ def _owner_after(words: list[str], names: dict[tuple[str, ...], str]) -> list[st
             return [*rest[: person - 1], rest[person - 1] + "'s", *words[:size], *rest[person:]]
         break
     return words
+
+
+def _be_asked(words: list[str], names: dict[tuple[str, ...], str]) -> list[str]:
+    """A person's name, then "in", "on" or "at" and a place, nothing else: "is" before it."""
+    size = next((n for n in range(min(3, len(words)), 0, -1) if names.get(tuple(words[:n])) == "person"), 0)
+    rest = words[size:]
+    if not size or rest[:1] not in (["in"], ["on"], ["at"]) or _VERBS & set(rest[1:]):
+        return words
+    place = rest[1:]
+    while place[:1] and place[0] in ("the", "my", "his", "her", "their", "our", "your"):
+        place = place[1:]
+    return ["is", *words] if names.get(tuple(place)) in _PLACES or place[-1:] == ["room"] else words

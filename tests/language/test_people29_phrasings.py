@@ -24,7 +24,10 @@ tried in the ERL apartment as well, with sentences of the test's own:
   "Headphones Theo — sofa. Theo give"): the prepositions each verb asks for put in, and a long dash sets a
   stretch apart as " - " does (``knic.language.signorder``, ``knic.language.tidy``);
 * a plural said alone after going to a room ("..., then go to the bedroom and close the blinds") is that
-  room's, as a singular already was; said with no room it still asks which (``knic.language.places``).
+  room's, as a singular already was; said with no room it still asks which (``knic.language.places``);
+* "be" left out ("dis chair giving me trouble", "I hungry", "Wanjiru in she room?"), a meal said as what a
+  thing is for ("for meh tea"), Caribbean "nah" urging a request and "she" after a preposition (her)
+  (``knic.language.plainorder``, ``knic.language.signorder``, ``knic.language.dialects``).
 """
 
 from __future__ import annotations
@@ -380,3 +383,33 @@ def test_a_plural_said_alone_after_going_to_a_room_is_that_rooms(flat: Vocabular
         {"frame": "OPERATING", "device": "bedroom_blinds", "state": "closed"},
     ]
     assert "all of them" in understand("close the blinds", flat, speaker="wanjiru").question
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        ("Tracy in her room?", [{"frame": "SEARCHING", "theme": "tracy", "ground": "bedroom"}]),
+        ("bring the cup for my tea", [{"frame": "BRINGING", "theme": "cup", "beneficiary": "me"}]),
+        ("bring me the apple, I hungry", [{"frame": "BRINGING", "theme": "apple", "beneficiary": "me"}]),
+        ("pass me de remote nah", [{"frame": "BRINGING", "theme": "remote", "beneficiary": "me"}]),
+        ("bring me the mug, nah, the cup", [{"frame": "BRINGING", "theme": "cup", "beneficiary": "me"}]),
+    ],
+)
+def test_be_left_out_and_what_is_said_around(
+    vocabulary: Vocabulary, text: str, frames: list[dict[str, str]]
+) -> None:
+    assert frames_read(vocabulary, text) == frames
+
+
+def test_a_remark_with_be_left_out_is_no_request(vocabulary: Vocabulary) -> None:
+    result = understand("Steups, dis remote giving me trouble whole day", vocabulary)
+    assert not result.accepted and "no request" in result.reason
+
+
+def test_be_left_out_in_the_flat(flat: Vocabulary) -> None:
+    assert frames_read(flat, "Wanjiru in she room?", "merline") == [
+        {"frame": "SEARCHING", "theme": "wanjiru", "ground": "wanjiru_room"}
+    ]
+    result = understand("Bring me a roti nah, I hungry", flat, speaker="merline")
+    assert not result.accepted and "roti" in result.reason
+    assert "mug" in understand("Bring meh mug for meh tea", flat, speaker="merline").question
