@@ -19,6 +19,8 @@
 * a hedged question about where a thing is ("I don't suppose the ice cream is in the chest freezer, is
   it?", "I wonder if the keys are on the hall table", "the ice cream isn't in the freezer, is it?"): asked
   plainly, "is the ice cream in the chest freezer" (:func:`hedged_asked`).
+* a guess at where, a place said alone after a question of where a thing or person is ("where'd I leave my
+  sunglasses, the conservatory?"): where to look (:func:`guessed_where`).
 """
 
 from __future__ import annotations
@@ -176,3 +178,27 @@ def hedged_asked(segments: list[list[str]]) -> list[list[str]]:
 
 #: "be" as said in the statement, and as it opens the question
 _BE = {"is": "is", "are": "are", "isn't": "is", "aren't": "are"}
+
+
+def guessed_where(segments: list[list[str]], chunks: Chunks) -> list[list[str]]:
+    """The segments with a place said alone after a question of where a thing or person is ("where'd I
+    leave my sunglasses, the conservatory?", "where's Colby, his room?") read as where to look: "... my
+    sunglasses in the conservatory"."""
+    out: list[list[str]] = []
+    for segment in segments:
+        said = [c for c in chunks(segment) if c.kind != "det"]
+        place = len(said) == 1 and said[0].kind == "entity" and bool(said[0].terms)
+        place = place and all(t.type in ("room", "furniture") for t in said[0].terms)
+        before = chunks(out[-1]) if out else []
+        asked = any(w.startswith("where") for w in out[-1]) if out else False
+        last = before[-1] if before else None
+        thing = (
+            last is not None
+            and last.kind == "entity"
+            and any(t.type in ("item", "person") for t in last.terms)
+        )
+        if place and asked and thing:
+            out[-1] = [*out[-1], "in", *segment]
+            continue
+        out.append(segment)
+    return out

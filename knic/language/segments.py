@@ -22,7 +22,14 @@ from collections.abc import Callable, Sequence
 from dataclasses import replace
 from itertools import pairwise
 
-from knic.language.apologies import adds, hedged_asked, late_marker_placed, narrowed, or_dropped
+from knic.language.apologies import (
+    adds,
+    guessed_where,
+    hedged_asked,
+    late_marker_placed,
+    narrowed,
+    or_dropped,
+)
 from knic.language.chunks import Chunk
 
 #: words a speaker addresses the robot with; a sentence ends or starts next to them
@@ -176,7 +183,8 @@ def sorry_repairs(
     stay politeness, and so does "sorry" in a list that goes on ("the kitchen light and, sorry, the lights
     under the cabinets too"); "or" and a late "i mean" around the correction are read with it
     (:mod:`knic.language.apologies`)."""
-    segments = hedged_asked(segments)  # "i don't suppose the ice cream is in the freezer, is it?"
+    # "i don't suppose the ice cream is in the freezer, is it?", "where'd i leave my keys, the kitchen?"
+    segments = guessed_where(hedged_asked(segments), chunks)
     words = [t for segment in segments for t in segment]
     out: list[list[str]] = []
     at = 0

@@ -30,6 +30,8 @@ apartment as well:
 * a hedged question about where a thing is ("I don't suppose the ice cream is in the chest freezer, is it?",
   "I wonder if ... is ...", a statement with a question tag) asks where it is, plainly
   (``knic.language.apologies``); the statement alone is still no request.
+* a place said alone after a question of where a thing or person is ("where'd I leave my sunglasses, the
+  conservatory?", "where's tracy, the kitchen?") is where to look (``knic.language.apologies``).
 * a request for a thing the world lacks, with talk beside it that has no verb ("bring me my knitting, it is
   in my bag") or that the speaker says of themselves ("bring me bread, I make soup"), is refused naming the
   thing, not "it" or the soup; a learner's request with no article ("bring me bread") counts
@@ -377,3 +379,32 @@ def test_what_someone_else_means_to_do_is_a_reason(
     vocabulary: Vocabulary, erl: bool, text: str, frames: Frames
 ) -> None:
     assert _said(vocabulary, erl, text, "philippa") == frames
+
+
+@pytest.mark.parametrize(
+    ("erl", "text", "frames"),
+    [
+        (
+            False,
+            "Where'd I leave my sunglasses, the conservatory?",
+            [{"frame": "SEARCHING", "theme": "sunglasses", "ground": "conservatory"}],
+        ),
+        (
+            False,
+            "where is the drill, the workbench?",
+            [{"frame": "SEARCHING", "theme": "drill", "ground": "workbench"}],
+        ),
+        (
+            True,
+            "where did I leave my glasses, the bedroom?",
+            [{"frame": "SEARCHING", "theme": "glasses", "ground": "bedroom"}],
+        ),
+        (
+            True,
+            "where's tracy, the kitchen?",
+            [{"frame": "SEARCHING", "theme": "tracy", "ground": "kitchen"}],
+        ),
+    ],
+)
+def test_a_place_guessed_after_where(vocabulary: Vocabulary, erl: bool, text: str, frames: Frames) -> None:
+    assert _said(vocabulary, erl, text, "brendan") == frames
