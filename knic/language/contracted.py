@@ -37,7 +37,9 @@
   where they go ("put them all on the table"), and "both of them": "them";
 * a request asked as what the robot is about to do ("are you going to switch off the hall light?", "are you
   gonna bring me the teapot?", "so are you going to put the butter away?"): the verb said first, as "will
-  you" already is; "are you going to be long?", "are you going to the kitchen?" stay questions about it.
+  you" already is; "are you going to be long?", "are you going to the kitchen?" stay questions about it;
+* where someone is, said out or guessed in a stretch of its own ("find Hugo, he is in the kitchen", "she
+  should be in the bedroom", "he is probably in the study"): "he's in ...", as said short.
 """
 
 from __future__ import annotations
@@ -217,7 +219,7 @@ def _got_to(tokens: list[str]) -> list[str]:
 def contracted(tokens: list[str]) -> list[str]:
     """``tokens`` (one stretch of a command, lower case) with the statements of the module docstring said as
     contractions."""
-    tokens = had_done(_got_to(_planned(tokens)))
+    tokens = had_done(_got_to(_planned(_where_said(tokens))))
     out: list[str] = []
     i = 0
     while i < len(tokens):
@@ -282,6 +284,30 @@ def contracted(tokens: list[str]) -> list[str]:
             out.append(token)
         i += 1
     return _unaddressed(out)
+
+
+#: what may stand between "he", "she" or "they" and where they are ("he should be in the kitchen", "she is
+#: probably in the bedroom"), and what says where
+_MAYBE = frozenset({"should", "must", "might", "may", "could", "will", "be", "probably", "maybe", "perhaps"})
+_LIKELY = frozenset({"probably", "maybe", "perhaps", "likely", "still"})
+_AT = frozenset({"in", "at", "on", "by", "near", "next"})
+
+
+def _where_said(tokens: list[str]) -> list[str]:
+    """ "find Hugo, he is in the kitchen", "she should be in the bedroom", "he is probably in the study": a
+    stretch opening with where someone is, said out or with a guess, is "he's in the kitchen", as "he's in the
+    den" already says where he is."""
+    if len(tokens) < 3 or tokens[0] not in ("he", "she", "they"):
+        return tokens
+    at = 1
+    while at < len(tokens) and (tokens[at] in _MAYBE or (at == 1 and tokens[at] in ("is", "are"))):
+        at += 1
+    said = tokens[1:at]
+    sure = said[:1] in (["is"], ["are"]) and all(w in _LIKELY for w in said[1:])
+    guessed = len(said) >= 2 and said[-1] == "be" and said[0] in _MAYBE
+    if at == 1 or at >= len(tokens) or tokens[at] not in _AT or not (sure or guessed):
+        return tokens
+    return ["they're" if tokens[0] == "they" else tokens[0] + "'s", *tokens[at:]]
 
 
 def _unaddressed(tokens: list[str]) -> list[str]:

@@ -36,7 +36,10 @@ Found by probing the voices beyond the set:
   with you to ..." is taken there, as "ask Ines to come to the kitchen" is (``commands.yaml``);
 * "bring the banana to Amara and the pear to Ines": each thing goes to its own person, not both to the last
   said; "go to the kitchen, but before that switch on the light" switches first; a learner's "before to go
-  to the kitchen, ..." is "before going" (``knic.language.stepwise``).
+  to the kitchen, ..." is "before going" (``knic.language.stepwise``);
+* where someone is, said out or guessed after a search ("find Hugo, he is in the kitchen", "she should be in
+  the bedroom", "he is probably in the study") is where to look, as "he's in the den" was
+  (``knic.language.contracted``).
 """
 
 from __future__ import annotations
@@ -353,4 +356,34 @@ def test_each_thing_to_its_own_in_the_erl_apartment(vocabulary: Vocabulary) -> N
     assert frames_read(vocabulary, "bring the glasses to annie and the juice to tracy") == [
         {"frame": "BRINGING", "theme": "glasses", "beneficiary": "annie"},
         {"frame": "BRINGING", "theme": "juice", "beneficiary": "tracy"},
+    ]
+
+
+@pytest.mark.parametrize(
+    ("file", "text", "frames"),
+    [
+        (
+            ARENA,
+            "Find Hugo, he is in the kitchen",
+            [{"frame": "SEARCHING", "theme": "hugo", "ground": "kitchen"}],
+        ),
+        (
+            ARENA,
+            "Find Ines, she might be in the bedroom",
+            [{"frame": "SEARCHING", "theme": "ines", "ground": "bedroom"}],
+        ),
+        (
+            HOUSE,
+            "find Arjun, he should be in the living room",
+            [{"frame": "SEARCHING", "theme": "arjun", "ground": "living_room"}],
+        ),
+    ],
+)
+def test_where_someone_is_said_after_a_search(file: str, text: str, frames: list[dict[str, str]]) -> None:
+    assert _read(file, text) == frames
+
+
+def test_where_someone_is_said_after_a_search_erl(vocabulary: Vocabulary) -> None:
+    assert frames_read(vocabulary, "find tracy, she is probably in the kitchen") == [
+        {"frame": "SEARCHING", "theme": "tracy", "ground": "kitchen"}
     ]
