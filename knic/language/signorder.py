@@ -13,6 +13,10 @@ topic first and the verb last, and a deaf person typing English often keeps that
   can — planter — put back") is where from for a verb that carries and where to for one that puts or goes;
   "back" after it is then left out (the place is said);
 * a place said alone before "go there" ("Sofa — go there"): go to that place;
+* where a thing said before is, said as a place and "there" or whose ("Glasses Nan's — recliner there. Bring
+  me", "Laptop Wanjiru — desk her. Bring me"): on that place ("on her desk"); a thing and "there" after a
+  place said alone ("Fridge — milk there? Check"): whether the thing is in the place, "check" said after it
+  being that question;
 * a person said with where they are and nothing else ("Wanjiru in her room?", a signer's or a Caribbean
   speaker's question with "is" left out): whether they are there.
 
@@ -60,6 +64,8 @@ def signed_read(segments: list[list[str]], vocabulary: Vocabulary) -> list[list[
     out = [_owner_after(list(s), names) for s in segments]
     said = [list(s) for s in out]  # as said, before a preposition is put in
     for i, words in enumerate(out):
+        if i and _there_said(out, i, names):  # "glasses nan's — recliner there", "fridge — milk there?"
+            continue
         verb = _last_verb(words)
         if verb is None:
             out[i] = _be_asked(words, names)  # "wanjiru in her room?"
@@ -166,3 +172,31 @@ def _be_asked(words: list[str], names: dict[tuple[str, ...], str]) -> list[str]:
     while place[:1] and place[0] in ("the", "my", "his", "her", "their", "our", "your"):
         place = place[1:]
     return ["is", *words] if names.get(tuple(place)) in _PLACES or place[-1:] == ["room"] else words
+
+
+#: words said after a place for where a thing is ("recliner there") or whose it is ("desk her", BSL order)
+_WHOSE = {"there": "", "her": "her", "his": "his", "mine": "my", "their": "their", "theirs": "their"}
+
+
+def _there_said(out: list[list[str]], i: int, names: dict[tuple[str, ...], str]) -> bool:
+    """Put where a thing said before is as English says it (see the module docstring), in place; whether
+    the stretch at ``i`` was one of these."""
+    words, before = out[i], out[i - 1]
+    if len(words) < 2 or words[-1] not in _WHOSE or _VERBS & set(before):
+        return False
+    said = words[:-1]
+    whose = [_WHOSE[words[-1]]] if _WHOSE[words[-1]] else []
+    if names.get(tuple(said)) in _PLACES and any(
+        names.get(tuple(before[n:m])) == "item"
+        for n in range(len(before))
+        for m in range(n + 1, len(before) + 1)
+    ):
+        out[i] = ["on", *whose, *said]  # "glasses nan's — recliner there": on the recliner
+        return True
+    if words[-1] == "there" and names.get(tuple(said)) == "item" and _places(before, names):
+        out[i] = ["is", *said, "in", *before]  # "fridge — milk there?": is the milk in the fridge
+        out[i - 1] = []
+        if i + 1 < len(out) and out[i + 1] and set(out[i + 1]) <= {"check", "look", "please"}:
+            out[i + 1] = []  # "..., check": that question
+        return True
+    return False

@@ -22,7 +22,8 @@ tried in the ERL apartment as well, with sentences of the test's own:
 * British Sign Language order typed in English, the topic first and the verb last with no prepositions
   ("Ice pack — freezer take — Ottavio give", "Cushion, sofa take, garden bench put", "Sofa — go there",
   "Headphones Theo — sofa. Theo give"): the prepositions each verb asks for put in, and a long dash sets a
-  stretch apart as " - " does (``knic.language.signorder``, ``knic.language.tidy``);
+  stretch apart as " - " does (``knic.language.signorder``, ``knic.language.tidy``); where a thing is said
+  as "recliner there" or "desk her", and "Fridge — milk there? Check" (``knic.language.signorder``);
 * a plural said alone after going to a room ("..., then go to the bedroom and close the blinds") is that
   room's, as a singular already was; said with no room it still asks which (``knic.language.places``);
 * "be" left out ("dis chair giving me trouble", "I hungry", "Wanjiru in she room?"), a meal said as what a
@@ -413,3 +414,32 @@ def test_be_left_out_in_the_flat(flat: Vocabulary) -> None:
     result = understand("Bring me a roti nah, I hungry", flat, speaker="merline")
     assert not result.accepted and "roti" in result.reason
     assert "mug" in understand("Bring meh mug for meh tea", flat, speaker="merline").question
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        (
+            "Glasses — bedside table there. Bring me",
+            [{"frame": "BRINGING", "theme": "glasses", "source": "bedside_table", "beneficiary": "me"}],
+        ),
+        (
+            "Remote Tracy — sofa her. Bring me",
+            [{"frame": "BRINGING", "theme": "remote", "source": "sofa", "beneficiary": "me"}],
+        ),
+        ("Kitchen — juice there? Check", [{"frame": "SEARCHING", "theme": "juice", "ground": "kitchen"}]),
+    ],
+)
+def test_where_a_thing_is_in_sign_language_order(
+    vocabulary: Vocabulary, text: str, frames: list[dict[str, str]]
+) -> None:
+    assert frames_read(vocabulary, text) == frames
+
+
+def test_where_a_thing_is_in_sign_language_order_in_the_flat(flat: Vocabulary) -> None:
+    assert frames_read(flat, "Fridge — milk there? Check", "ellis") == [
+        {"frame": "SEARCHING", "theme": "milk", "ground": "fridge_freezer"}
+    ]
+    assert frames_read(flat, "Laptop Wanjiru — desk her. Bring me", "ellis") == [
+        {"frame": "BRINGING", "theme": "laptop", "source": "desk", "beneficiary": "me"}
+    ]
