@@ -372,8 +372,22 @@ _DOERS = frozenset({"i", "you", "we", "they", "he", "she"})
 def relative_dropped(chunks: list[Chunk]) -> list[Chunk]:
     """Drop "that i left", "which you put" between a thing and where it is ("find the glasses that i left in
     the living room", "bring me the mug that you put on the table"): the place says where the thing is. "what"
-    said for "that" is the same ("the mug what i left on the table", "the cup what is on the counter")."""
+    said for "that" is the same ("the mug what i left on the table", "the cup what is on the counter"). A
+    learner's pronoun for the thing again after the clause's verb ("the biscotti which Lyudmila made them",
+    Arabic and Persian speakers) is dropped first."""
     out = list(chunks)
+    for i in range(1, len(out) - 3):
+        that, doer, doing, again = out[i : i + 4]
+        if (
+            out[i - 1].kind == "entity"
+            and that.text in ("that", "which")
+            and doer.kind in ("entity", "unknown", "pronoun")
+            and doing.kind in ("unknown", "verb")
+            and again.kind == "pronoun"
+            and again.text in ("it", "them")
+        ):
+            out = out[: i + 3] + out[i + 4 :]
+            break
     for i in range(1, len(out) - 2):
         what, copula, where = out[i : i + 3]
         if (

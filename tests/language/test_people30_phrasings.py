@@ -32,6 +32,9 @@ apartment as well:
   (``knic.language.apologies``); the statement alone is still no request.
 * a place said alone after a question of where a thing or person is ("where'd I leave my sunglasses, the
   conservatory?", "where's tracy, the kitchen?") is where to look (``knic.language.apologies``).
+* a learner's pronoun for the thing again after a relative clause's verb ("the biscotti which Lyudmila made
+  them from the larder", "the glasses which I left them on the bedside table") is dropped, and the clause
+  with it (``knic.language.tidy``).
 * a request for a thing the world lacks, with talk beside it that has no verb ("bring me my knitting, it is
   in my bag") or that the speaker says of themselves ("bring me bread, I make soup"), is refused naming the
   thing, not "it" or the soup; a learner's request with no article ("bring me bread") counts
@@ -408,3 +411,34 @@ def test_what_someone_else_means_to_do_is_a_reason(
 )
 def test_a_place_guessed_after_where(vocabulary: Vocabulary, erl: bool, text: str, frames: Frames) -> None:
     assert _said(vocabulary, erl, text, "brendan") == frames
+
+
+@pytest.mark.parametrize(
+    ("erl", "text", "frames"),
+    [
+        (
+            False,
+            "Bring the biscotti which Lyudmila made them from the larder",
+            [{"frame": "BRINGING", "theme": "biscotti", "source": "larder", "beneficiary": "me"}],
+        ),
+        (
+            True,
+            "bring me the apple which tracy bought it from the kitchen cabinet",
+            [{"frame": "BRINGING", "theme": "apple", "source": "kitchen_cabinet", "beneficiary": "me"}],
+        ),
+        (
+            True,
+            "bring me the glasses which i left them on the bedside table",
+            [{"frame": "BRINGING", "theme": "glasses", "source": "bedside_table", "beneficiary": "me"}],
+        ),
+        (
+            True,
+            "find the tablet that jack used it in the living room",
+            [{"frame": "SEARCHING", "theme": "tablet", "ground": "living_room"}],
+        ),
+    ],
+)
+def test_a_learners_pronoun_after_a_relative_clause(
+    vocabulary: Vocabulary, erl: bool, text: str, frames: Frames
+) -> None:
+    assert _said(vocabulary, erl, text, "hazem") == frames
