@@ -39,7 +39,8 @@ Found by probing the voices beyond the set:
   to the kitchen, ..." is "before going" (``knic.language.stepwise``);
 * where someone is, said out or guessed after a search ("find Hugo, he is in the kitchen", "she should be in
   the bedroom", "he is probably in the study") is where to look, as "he's in the den" was
-  (``knic.language.contracted``).
+  (``knic.language.contracted``);
+* "approach the dining table", "enter the kitchen", "visit the kitchen": a going there (``commands.yaml``).
 """
 
 from __future__ import annotations
@@ -387,3 +388,16 @@ def test_where_someone_is_said_after_a_search_erl(vocabulary: Vocabulary) -> Non
     assert frames_read(vocabulary, "find tracy, she is probably in the kitchen") == [
         {"frame": "SEARCHING", "theme": "tracy", "ground": "kitchen"}
     ]
+
+
+@pytest.mark.parametrize(
+    ("file", "text", "goal"),
+    [
+        (ARENA, "approach the dining table", "dining_table"),
+        (ARENA, "Enter the kitchen", "kitchen"),
+        (HOUSE, "visit the garden office", "home_office"),
+        (HOUSE, "approach the barbecue", "barbecue"),
+    ],
+)
+def test_approach_enter_and_visit_go_there(file: str, text: str, goal: str) -> None:
+    assert _read(file, text) == [{"frame": "MOTION", "goal": goal}]
