@@ -17,6 +17,11 @@ topic first and the verb last, and a deaf person typing English often keeps that
   me", "Laptop Wanjiru — desk her. Bring me"): on that place ("on her desk"); a thing and "there" after a
   place said alone ("Fridge — milk there? Check"): whether the thing is in the place, "check" said after it
   being that question;
+* a verb said before a place with no preposition ("toolbox bring kitchen", "bring dining table"): the
+  preposition the verb asks for ("to", "on"), the thing said before the verb put after it; a piece of
+  furniture said straight before a room ("cabinet wet room"): "in" the room;
+* a two-word name said the other way round, its describing word last ("mug spotty", as BSL, French or
+  Italian put it): the name;
 * a person said with where they are and nothing else ("Wanjiru in her room?", a signer's or a Caribbean
   speaker's question with "is" left out): whether they are there.
 
@@ -61,14 +66,18 @@ def signed_read(segments: list[list[str]], vocabulary: Vocabulary) -> list[list[
     """``segments`` (the sentences and stretches of one command) with the orders of the module docstring put
     as English says them; else as they are."""
     names = _names(vocabulary)
-    out = [_owner_after(list(s), names) for s in segments]
+    out = [_owner_after(_described_after(list(s), names), names) for s in segments]
     said = [list(s) for s in out]  # as said, before a preposition is put in
     for i, words in enumerate(out):
         if i and _there_said(out, i, names):  # "glasses nan's — recliner there", "fridge — milk there?"
             continue
         verb = _last_verb(words)
         if verb is None:
-            out[i] = _be_asked(words, names)  # "wanjiru in her room?"
+            out[i] = _to_place(_be_asked(words, names), names)  # "wanjiru in her room?", "bring kitchen"
+            if out[i] != words and i > 1 and _places(out[i - 1], names) and out[i][0] in _TO_PERSON:
+                out[i - 1] = ["from", *_room_after(out[i - 1], names)]  # "biscuit tin, sideboard — bring ..."
+            if out[i] != words and any(_VERBS & set(s) for s in said[:i]) and out[i][:1] != ["and"]:
+                out[i] = ["and", *out[i]]  # "storage room, go. toolbox bring kitchen"
             continue
         at, verb_said = verb
         before = words[:at]
@@ -88,7 +97,7 @@ def signed_read(segments: list[list[str]], vocabulary: Vocabulary) -> list[list[
             continue
         if placed and i > 1 and verb_said in _PLACE_PREP:
             # "plasters, cabinet wet room — theo bring": the place said alone is where from or to
-            out[i - 1] = [_PLACE_PREP[verb_said], *out[i - 1]]
+            out[i - 1] = [_PLACE_PREP[verb_said], *_room_after(out[i - 1], names)]
         words = [w for w in [*before, *words[at:]] if w not in ("back", "there")]
         if any(_VERBS & set(s) for s in said[:i]) and words[:1] != ["and"]:
             words = ["and", *words]  # an action after another ("courtyard light on, courtyard go, wait")
@@ -200,3 +209,36 @@ def _there_said(out: list[list[str]], i: int, names: dict[tuple[str, ...], str])
             out[i + 1] = []  # "..., check": that question
         return True
     return False
+
+
+def _to_place(words: list[str], names: dict[tuple[str, ...], str]) -> list[str]:
+    """ "toolbox bring kitchen", "bring dining table": a verb, then a place last with no preposition, in a
+    stretch with none: the verb first, the thing, then "to" or "on" and the place."""
+    verb = next((i for i, w in enumerate(words) if w in _PLACE_PREP and w not in _GOING), None)
+    if verb is None or _PREPOSITIONS & set(words) or _VERBS & set(words[:verb]):
+        return words
+    place = words[verb + 1 :]
+    if names.get(tuple(place)) not in _PLACES or (
+        words[:verb] and _name_before(words[:verb], names)[0] != "item"
+    ):
+        return words
+    prep = "on" if _PLACE_PREP[words[verb]] == "on" else "to"
+    return [words[verb], *words[:verb], prep, *place]
+
+
+def _room_after(words: list[str], names: dict[tuple[str, ...], str]) -> list[str]:
+    """ "cabinet wet room": a piece of furniture and then a room, "in" between."""
+    for n in range(1, len(words)):
+        if names.get(tuple(words[:n])) == "furniture" and names.get(tuple(words[n:])) == "room":
+            return [*words[:n], "in", *words[n:]]
+    return words
+
+
+def _described_after(words: list[str], names: dict[tuple[str, ...], str]) -> list[str]:
+    """Two words whose other order is a world name and theirs is none ("mug spotty"): that name."""
+    out = list(words)
+    for i in range(len(out) - 1):
+        pair = (out[i], out[i + 1])
+        if pair not in names and (pair[1], pair[0]) in names and names[(pair[1], pair[0])] == "item":
+            out[i], out[i + 1] = pair[1], pair[0]
+    return out

@@ -23,7 +23,9 @@ tried in the ERL apartment as well, with sentences of the test's own:
   ("Ice pack — freezer take — Ottavio give", "Cushion, sofa take, garden bench put", "Sofa — go there",
   "Headphones Theo — sofa. Theo give"): the prepositions each verb asks for put in, and a long dash sets a
   stretch apart as " - " does (``knic.language.signorder``, ``knic.language.tidy``); where a thing is said
-  as "recliner there" or "desk her", and "Fridge — milk there? Check" (``knic.language.signorder``);
+  as "recliner there" or "desk her", and "Fridge — milk there? Check"; a verb before a place with no
+  preposition ("toolbox bring kitchen"); furniture said before its room ("cabinet wet room"); a two-word
+  name with its describing word last ("mug spotty") (``knic.language.signorder``);
 * a plural said alone after going to a room ("..., then go to the bedroom and close the blinds") is that
   room's, as a singular already was; said with no room it still asks which (``knic.language.places``);
 * "be" left out ("dis chair giving me trouble", "I hungry", "Wanjiru in she room?"), a meal said as what a
@@ -442,4 +444,37 @@ def test_where_a_thing_is_in_sign_language_order_in_the_flat(flat: Vocabulary) -
     ]
     assert frames_read(flat, "Laptop Wanjiru — desk her. Bring me", "ellis") == [
         {"frame": "BRINGING", "theme": "laptop", "source": "desk", "beneficiary": "me"}
+    ]
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        (
+            "Apple, kitchen table — bring bedroom",
+            [{"frame": "BRINGING", "theme": "apple", "source": "kitchen_table", "goal": "bedroom"}],
+        ),
+        ("Cup — bring kitchen", [{"frame": "BRINGING", "theme": "cup", "goal": "kitchen"}]),
+        (
+            "Kitchen, go. Cup bring bedroom",
+            [
+                {"frame": "MOTION", "goal": "kitchen"},
+                {"frame": "BRINGING", "theme": "cup", "source": "kitchen", "goal": "bedroom"},
+            ],
+        ),
+        ("Box cardboard — bin put", [{"frame": "PLACING", "theme": "cardboard_box", "goal": "bin"}]),
+    ],
+)
+def test_a_verb_before_a_place_with_no_preposition(
+    vocabulary: Vocabulary, text: str, frames: list[dict[str, str]]
+) -> None:
+    assert frames_read(vocabulary, text) == frames
+
+
+def test_furniture_said_before_its_room_in_sign_language_order(flat: Vocabulary) -> None:
+    assert frames_read(flat, "Plasters, cabinet wet room — Theo bring", "ellis") == [
+        {"frame": "BRINGING", "theme": "plasters", "source": "mirror_cabinet", "beneficiary": "theo"}
+    ]
+    assert frames_read(flat, "Tea finish. Mug spotty — sink put", "ellis") == [
+        {"frame": "PLACING", "theme": "spotty_mug", "goal": "sink"}
     ]
