@@ -120,9 +120,14 @@ def digits_read(
     (:func:`~knic.language.decimals.decimals_read`); a number that numbers a step ("(1) close the blinds
     (2) turn off the light", "1. go to the kitchen 2. ...") as the end of a stretch, not a level. A digit
     before a word "to" or "for" never comes before (:data:`_NUMBERED_BY`) numbers a thing: "bench lamp 2 to
-    35 percent", "blind 2 in the conservatory", "lamp 2 on"."""
+    35 percent", "blind 2 in the conservatory", "lamp 2 on". A form's label typed with its colon opening a
+    sentence (:data:`_LABELS`: "Item: tablet. Source: cane sofa. Destination: me") is the preposition it
+    stands for, or nothing."""
     tokens = decimals_read(plain_typed(text)).split()
     for i, token in enumerate(tokens):
+        if token[-1:] == ":" and token[:-1].lower() in _LABELS and (not i or tokens[i - 1][-1] in ".!?;"):
+            tokens[i] = _LABELS[token[:-1].lower()]
+            continue
         if _STEP_NUMBER.fullmatch(token) and (token[0] == "(" or not i or tokens[i - 1][-1] in ".!?:;"):
             tokens[i] = ","
             continue
@@ -139,6 +144,8 @@ def digits_read(
     return " ".join(tokens)
 
 
+#: a form's labels typed with a colon ("Item: tablet. Source: cane sofa. Destination: me"): what each says
+_LABELS = {"item": "", "object": "", "thing": "", "source": "from", "origin": "from", "destination": "to"}
 #: words after a digit that show it numbers a thing ("lamp 2 to 35", "blind 1 up"), as none follows a "to"
 _NUMBERED_BY = frozenset(("to", "at", "on", "off", "in", "into", "up", "down", "and", "or"))
 #: a number said as a list's mark: "(1)", "2)", "3." (the dot one only opening a sentence)

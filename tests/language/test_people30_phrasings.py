@@ -35,6 +35,8 @@ apartment as well:
 * a learner's pronoun for the thing again after a relative clause's verb ("the biscotti which Lyudmila made
   them from the larder", "the glasses which I left them on the bedside table") is dropped, and the clause
   with it (``knic.language.tidy``).
+* a form's labels typed with a colon ("Item: tablet. Source: cane sofa. Destination: me") are the
+  prepositions they stand for, or nothing (``knic.language.tidy``).
 * a request for a thing the world lacks, with talk beside it that has no verb ("bring me my knitting, it is
   in my bag") or that the speaker says of themselves ("bring me bread, I make soup"), is refused naming the
   thing, not "it" or the soup; a learner's request with no article ("bring me bread") counts
@@ -442,3 +444,32 @@ def test_a_learners_pronoun_after_a_relative_clause(
     vocabulary: Vocabulary, erl: bool, text: str, frames: Frames
 ) -> None:
     assert _said(vocabulary, erl, text, "hazem") == frames
+
+
+@pytest.mark.parametrize(
+    ("erl", "text", "frames"),
+    [
+        (
+            False,
+            "Item: tablet. Source: cane sofa. Destination: me",
+            [{"frame": "BRINGING", "theme": "tablet", "source": "cane_sofa", "beneficiary": "me"}],
+        ),
+        (
+            False,
+            "Item: drill. Destination: conservatory",
+            [{"frame": "BRINGING", "theme": "drill", "goal": "conservatory"}],
+        ),
+        (
+            True,
+            "Item: apple. Source: kitchen cabinet. Destination: dining table",
+            [{"frame": "BRINGING", "theme": "apple", "source": "kitchen_cabinet", "goal": "dining_table"}],
+        ),
+        (
+            True,
+            "Object: remote. Destination: me",
+            [{"frame": "BRINGING", "theme": "remote", "beneficiary": "me"}],
+        ),
+    ],
+)
+def test_a_forms_labels(vocabulary: Vocabulary, erl: bool, text: str, frames: Frames) -> None:
+    assert _said(vocabulary, erl, text, "ottavia") == frames
