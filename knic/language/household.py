@@ -90,15 +90,17 @@ _WHERE_LAST = re.compile(r"^\s*(?P<thing>[a-z' ]+?)\s*[,.]?\s+where\s*\??\s*$")
 
 
 def where_last(text: str) -> str:
-    """ "chopsticks, where?", "my keys where": a thing said, then "where" alone (said by learners and tired
-    people): where the thing is ("where is my keys"); else ``text``, with questions said in another order put
-    back (:mod:`knic.language.plainorder`)."""
+    """ "chopsticks, where?", "my keys where", "annie is where?": a thing said, then "where" alone (said by
+    learners and tired people, or asked back): where the thing is ("where is my keys"); else ``text``, with
+    questions said in another order put back (:mod:`knic.language.plainorder`)."""
     text = asked_plainly(text)
     match = _WHERE_LAST.match(text.lower())
     words = match.group("thing").split() if match else []
+    if len(words) > 1 and words[-1] in ("is", "are"):  # "annie is where?", "the keys are where?": asked back
+        words = words[:-1]
     if not words or len(words) > 4 or "where" in words or _NOT_A_THING & set(words):
         return text
-    return f"where is {match.group('thing') if match else ''}"
+    return f"where is {' '.join(words)}"
 
 
 #: who may be asked where they put a thing, as the command language says it ("where did you put")

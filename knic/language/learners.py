@@ -21,7 +21,27 @@ def learners_read(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
     said = subject_dropped(appositions_dropped(helped_to(said), vocabulary))
     said = gapped_given(out_the(carried_in(said, vocabulary), vocabulary), vocabulary)
     said = verb_last_moved(own_going_dropped(own_doing_dropped(room_told(it_me(said), vocabulary))))
-    return steps_read(object_first(place_first(said, vocabulary), vocabulary), vocabulary)  # stepwise.py
+    said = at_person(object_first(place_first(said, vocabulary), vocabulary), vocabulary)
+    return steps_read(said, vocabulary)  # stepwise.py
+
+
+def at_person(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
+    """ "bring the apple at Annie", "bring at me the glasses" (a learner's "at" for "to": Spanish and Italian
+    "a", French "à"): "at" after a verb that gives or takes, right before a person or "me", is "to"; a thing
+    is never at a person ("the coke at the kitchen table" stays where it is)."""
+    out = list(chunks)
+    giving = False
+    for i, chunk in enumerate(out[:-1]):
+        if chunk.kind == "verb":
+            giving = bool({"BRINGING", "TAKING"} & set(chunk.frames))
+        elif giving and chunk.kind == "prep" and chunk.text == "at" and _given_to(out[i + 1], vocabulary):
+            out[i] = Chunk("prep", "to", role="goal")
+    return out
+
+
+def _given_to(chunk: Chunk, vocabulary: Vocabulary) -> bool:
+    """Whether a chunk is "me" or names only people."""
+    return chunk.kind == "me" or _is(chunk, vocabulary, "person")
 
 
 def state_as_verb(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:

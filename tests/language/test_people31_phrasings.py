@@ -40,7 +40,10 @@ Found by probing the voices beyond the set:
 * where someone is, said out or guessed after a search ("find Hugo, he is in the kitchen", "she should be in
   the bedroom", "he is probably in the study") is where to look, as "he's in the den" was
   (``knic.language.contracted``);
-* "approach the dining table", "enter the kitchen", "visit the kitchen": a going there (``commands.yaml``).
+* "approach the dining table", "enter the kitchen", "visit the kitchen": a going there (``commands.yaml``);
+* a learner's "bring the apple at Annie", "bring at me the glasses" ("a", "à"): "to" before a person
+  (``knic.language.learners``); "Annie is where?", "the glasses are where" (asked back): where she or they
+  are (``knic.language.household``).
 """
 
 from __future__ import annotations
@@ -401,3 +404,20 @@ def test_where_someone_is_said_after_a_search_erl(vocabulary: Vocabulary) -> Non
 )
 def test_approach_enter_and_visit_go_there(file: str, text: str, goal: str) -> None:
     assert _read(file, text) == [{"frame": "MOTION", "goal": goal}]
+
+
+def test_at_a_person_and_asked_back_where(vocabulary: Vocabulary) -> None:
+    assert frames_read(vocabulary, "Bring the apple at Annie", "tracy") == [
+        {"frame": "BRINGING", "theme": "apple", "beneficiary": "annie"}
+    ]
+    assert frames_read(vocabulary, "Bring at me the glasses") == [
+        {"frame": "BRINGING", "theme": "glasses", "beneficiary": "me"}
+    ]
+    assert frames_read(vocabulary, "bring the coke at the kitchen table") == [
+        {"frame": "BRINGING", "theme": "coke_can", "source": "kitchen_table", "beneficiary": "me"}
+    ]
+    assert _read(ARENA, "Give the crisps at Sven") == [
+        {"frame": "BRINGING", "theme": "crisps", "beneficiary": "sven"}
+    ]
+    assert frames_read(vocabulary, "Annie is where?", "tracy") == [{"frame": "SEARCHING", "theme": "annie"}]
+    assert _read(HOUSE, "the car keys are where?") == [{"frame": "SEARCHING", "theme": "car_keys"}]
