@@ -76,7 +76,7 @@ _LIKING = frozenset({"i", "i'd", "would", "you", "we", "they", "he", "she", "don
 _WISHING = frozenset({"want", "need", "like", "wanna", "needs", "wants"})
 #: verbs of carrying after which Caribbean "by" says where to; and what says whom or where to already
 _CARRY_BY = frozenset({"carry", "take", "bring"})
-_TO_SAID = frozenset({"me", "us", "here", "to", "into", "onto", "for", "him", "her", "them"})
+_TO_SAID = frozenset({"me", "us", "here", "to", "into", "onto", "for", "him", "her"})
 #: the Jamaican plural said after a thing ("di blinds dem")
 _PLURAL_MARK = "dem"
 

@@ -19,6 +19,8 @@ learners' English only, no world's names:
 * a verb "be" left out (Caribbean English, African American English, learners): "this chair giving me
   trouble" ("this chair is giving ...", a remark), "I hungry", "I cold" ("I'm hungry", a reason after a
   request);
+* "they", "he", "she" or "it" opening a stretch straight before where ("bring meh slippers, dey on de
+  profiling bed"): "they're", "he's", "she's", "it's", where the thing or person is;
 * what a thing is for said as someone's meal after a request ("bring my mug for my tea", "... for lunch"):
   left out, the meal is no thing to bring ("bring me the cup for the tea" still names the tea, a thing);
 * Caribbean "nah" said straight after a request ("pass me de remote nah", "bring me a roti nah, I
@@ -89,6 +91,13 @@ _FEELING = re.compile(
     r"(?:^|(?<=[,.;!?]\s))I (hungry|thirsty|tired|cold|hot|sleepy|busy|sick|ill|late|bored|starving|freezing"
     r"|cold now|hungry now|tired now|ready|done)\b",
 )
+#: "they", "he", "she", "it" and "be" left out opening a stretch before where ("dey on de bed")
+_BEING_WHERE = re.compile(
+    r"(?:^|(?<=[,.;!?]\s))(they|dey|he|she|it)"
+    r"(?= (?:on|in|at|under|inside|by|near) (?:the|de|my|meh|his|her|your)\b)",
+    re.IGNORECASE,
+)
+_BEING = {"they": "they're", "dey": "they're", "he": "he's", "she": "she's", "it": "it's"}
 #: Caribbean "nah" straight after a request's last word, urging it on
 _URGING_NAH = re.compile(r"(?<=[a-z]) nah(?=\s*(?:[,.!?]|$))", re.IGNORECASE)
 #: a meal said as what a thing is for ("for my tea", "for lunch")
@@ -103,6 +112,7 @@ def asked_plainly(text: str) -> str:
     """``text`` with the questions of the module docstring put in the usual English order."""
     text = _THIS_DOING.sub(lambda m: _doing(m), _FEELING.sub(lambda m: f"I'm {m.group(1)}", text))
     text = _URGING_NAH.sub("", _FOR_MEAL.sub("", text))
+    text = _BEING_WHERE.sub(lambda m: _BEING[m.group(1).lower()], text)
     text = _HAS_DONE.sub(lambda m: f"{m.group(1)} has {m.group(2)}", _FAMILY.sub("", text))
     text = _IT_HAVE.sub("is there", text)
     text = _IT_HAVE_ASKED.sub("is there", text)

@@ -213,11 +213,18 @@ def _there_said(out: list[list[str]], i: int, names: dict[tuple[str, ...], str])
 
 def _to_place(words: list[str], names: dict[tuple[str, ...], str]) -> list[str]:
     """ "toolbox bring kitchen", "bring dining table": a verb, then a place last with no preposition, in a
-    stretch with none: the verb first, the thing, then "to" or "on" and the place."""
+    stretch with none: the verb first, the thing, then "to" or "on" and the place; "umbrella bring me": the
+    verb, "me", the thing."""
     verb = next((i for i, w in enumerate(words) if w in _PLACE_PREP and w not in _GOING), None)
     if verb is None or _PREPOSITIONS & set(words) or _VERBS & set(words[:verb]):
         return words
     place = words[verb + 1 :]
+    if (
+        place in (["me"], ["us"])
+        and words[verb] in _TO_PERSON
+        and _name_before(words[:verb], names)[0] == "item"
+    ):
+        return [words[verb], "me", *words[:verb]]  # "umbrella bring me"
     if names.get(tuple(place)) not in _PLACES or (
         words[:verb] and _name_before(words[:verb], names)[0] != "item"
     ):

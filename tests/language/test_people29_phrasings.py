@@ -29,8 +29,9 @@ tried in the ERL apartment as well, with sentences of the test's own:
 * a plural said alone after going to a room ("..., then go to the bedroom and close the blinds") is that
   room's, as a singular already was; said with no room it still asks which (``knic.language.places``);
 * "be" left out ("dis chair giving me trouble", "I hungry", "Wanjiru in she room?"), a meal said as what a
-  thing is for ("for meh tea"), Caribbean "nah" urging a request and "she" after a preposition (her)
-  (``knic.language.plainorder``, ``knic.language.signorder``, ``knic.language.dialects``).
+  thing is for ("for meh tea"), Caribbean "nah" urging a request and "she" after a preposition (her),
+  "dey on de profiling bed" (they're), "umbrella bring me" (``knic.language.plainorder``,
+  ``knic.language.signorder``, ``knic.language.dialects``).
 """
 
 from __future__ import annotations
@@ -478,3 +479,43 @@ def test_furniture_said_before_its_room_in_sign_language_order(flat: Vocabulary)
     assert frames_read(flat, "Tea finish. Mug spotty — sink put", "ellis") == [
         {"frame": "PLACING", "theme": "spotty_mug", "goal": "sink"}
     ]
+
+
+@pytest.mark.parametrize(
+    ("world", "text", "frames"),
+    [
+        (
+            "erl",
+            "bring me my glasses, they on the bedside table",
+            [{"frame": "BRINGING", "theme": "glasses", "source": "bedside_table", "beneficiary": "me"}],
+        ),
+        (
+            "flat",
+            "Bring meh slippers, dey on de profiling bed",
+            [{"frame": "BRINGING", "theme": "slippers", "source": "profiling_bed", "beneficiary": "me"}],
+        ),
+        (
+            "flat",
+            "The slippers, bring them by Merline",
+            [{"frame": "BRINGING", "theme": "slippers", "beneficiary": "merline"}],
+        ),
+        (
+            "flat",
+            "Hallway, go. Umbrella bring me",
+            [
+                {"frame": "MOTION", "goal": "hallway"},
+                {"frame": "BRINGING", "theme": "umbrella", "source": "hallway", "beneficiary": "me"},
+            ],
+        ),
+        ("erl", "Apple bring me", [{"frame": "BRINGING", "theme": "apple", "beneficiary": "me"}]),
+    ],
+)
+def test_where_it_is_said_with_be_left_out_and_bring_me_said_last(
+    vocabulary: Vocabulary, world: str, text: str, frames: list[dict[str, str]]
+) -> None:
+    assert (
+        frames_read(
+            _flat() if world == "flat" else vocabulary, text, "merline" if world == "flat" else "annie"
+        )
+        == frames
+    )
