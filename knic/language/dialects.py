@@ -21,7 +21,8 @@ one plain word, such as Jamaican "di" for "the", are ``spellings`` in ``commands
 * "wait on me" (American South, Scotland): "wait for me";
 * "come" or "go" before a state after "make" ("mek di bedside lamp come on", "make the lights go off"): the
   device made so;
-* "me" opening a stretch before "want" or "need" ("me want the apple!", a child's or a learner's): "I";
+* "me" opening a stretch before "want", "need" or "go" ("me want the apple!", a child's or a learner's; "me
+  go wet room", a signer's): "I"; "dem" after a verb that acts on things ("close dem"): "them";
 * "for me" said between a thing and where it is ("switch on di light fi mi inna di kitchen"): left out, the
   place says which light;
 * "like" before a number ("likkle bit, like twenty", "to like 40"): "to", a level said roughly;
@@ -77,6 +78,10 @@ _WISHING = frozenset({"want", "need", "like", "wanna", "needs", "wants"})
 #: verbs of carrying after which Caribbean "by" says where to; and what says whom or where to already
 _CARRY_BY = frozenset({"carry", "take", "bring"})
 _TO_SAID = frozenset({"me", "us", "here", "to", "into", "onto", "for", "him", "her"})
+#: verbs after which "dem" is "them", the thing acted on ("close dem"), not a plural said again
+_ACTING = frozenset(
+    {"close", "open", "shut", "switch", "turn", "leave", "find", "check", "move", "get", "pass"}
+)
 #: the Jamaican plural said after a thing ("di blinds dem")
 _PLURAL_MARK = "dem"
 
@@ -136,15 +141,15 @@ def dialect_words(tokens: list[str]) -> list[str]:
             token = "for"
         elif token == "mi":
             token = _mi(before, nxt, bool(out))
-        elif token == "me" and not out and nxt in _WISHING:
-            token = "i"  # "me want the apple!", a child's or a learner's "I"
+        elif token == "me" and not out and (nxt in _WISHING or nxt in ("go", "going")):
+            token = "i"  # "me want the apple!", "me go wet room" (a child's, a learner's or a signer's "I")
         elif token == "him":
             if not out:
                 token = "he"
             elif nxt not in _NOT_A_THING and (before in _PREPOSITIONS | _PAST or before == "him"):
                 token = "his"
         elif token == _PLURAL_MARK:
-            if before and before not in _CARRYING | _NOT_A_THING | _JOINING:
+            if before and before not in _CARRYING | _NOT_A_THING | _JOINING | _ACTING:
                 continue  # "di blinds dem": the plural said again
             token = "them"
         if token == "she" and before in _PREPOSITIONS | {"into", "by", "inna"}:

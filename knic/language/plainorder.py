@@ -10,6 +10,8 @@ learners' English only, no world's names:
   is on the bedside table? look please", it says where the thing is for what follows, as it did);
 * a thing or person, "where?", then a place alone, asked again ("Theo where? Courtyard?", in the word
   order of British Sign Language, or a tired speaker): "is Theo in the courtyard?";
+* a thing and then "where?" said last, after another sentence ("Me go wet room. Towel where?"): "where is
+  the towel?", as it already was said alone;
 * "where she is", "where he is" said as a learner's question ("Merline, where she is now?"): "where is
   she" (the order of a question inside another, "do you know where she is", stays);
 * "'s" after a person or thing and before a past participle ("our Theo's cut his knee", "the milk's gone
@@ -54,6 +56,8 @@ _STATEMENT = re.compile(
 _WHERE_AGAIN = re.compile(
     r"^\s*(?P<thing>[a-z][\w' ]*?)\s+where\s*\?\s*(?P<place>[a-z][\w' ]*?)\s*\?\s*$", re.IGNORECASE
 )
+#: a thing and "where?" said last after another sentence ("... Towel where?")
+_WHERE_ENDING = re.compile(r"(?<=[.!?;]\s)([a-z][\w' ]{0,30}?)\s+where\s*\?\s*$", re.IGNORECASE)
 #: the determiners a place said alone may already have
 _DETERMINED = frozenset({"the", "my", "his", "her", "their", "our", "your", "a"})
 #: a learner's question "where she is" said as the request, not inside another question
@@ -118,6 +122,7 @@ def asked_plainly(text: str) -> str:
     text = _IT_HAVE_ASKED.sub("is there", text)
     text = _THERE_IS.sub("there is", text)
     text = _WHERE_SHE.sub(lambda m: f"where is {m.group(1)}", text)
+    text = _WHERE_ENDING.sub(lambda m: f"where is {m.group(1)}?", text)
     again = _WHERE_AGAIN.match(text)
     if again and len(again.group("place").split()) <= 3:
         place = again.group("place")

@@ -22,6 +22,8 @@ topic first and the verb last, and a deaf person typing English often keeps that
   furniture said straight before a room ("cabinet wet room"): "in" the room;
 * a two-word name said the other way round, its describing word last ("mug spotty", as BSL, French or
   Italian put it): the name;
+* a person said alone, then a place alone, then "check" ("Tracy — kitchen? Check"): whether the person is
+  there;
 * a person said with where they are and nothing else ("Wanjiru in her room?", a signer's or a Caribbean
   speaker's question with "is" left out): whether they are there.
 
@@ -69,6 +71,9 @@ def signed_read(segments: list[list[str]], vocabulary: Vocabulary) -> list[list[
     out = [_owner_after(_described_after(list(s), names), names) for s in segments]
     said = [list(s) for s in out]  # as said, before a preposition is put in
     for i, words in enumerate(out):
+        checked = i + 2 == len(out) and set(out[i + 1]) <= {"check", "look", "please"}
+        if i and checked and _only_names(out[i - 1], names) == "person" and _places(words, names):
+            return [*out[: i - 1], ["is", *out[i - 1], "in", *words]]  # "tracy — kitchen? check"
         if i and _there_said(out, i, names):  # "glasses nan's — recliner there", "fridge — milk there?"
             continue
         verb = _last_verb(words)
@@ -249,3 +254,8 @@ def _described_after(words: list[str], names: dict[tuple[str, ...], str]) -> lis
         if pair not in names and (pair[1], pair[0]) in names and names[(pair[1], pair[0])] == "item":
             out[i], out[i + 1] = pair[1], pair[0]
     return out
+
+
+def _only_names(words: list[str], names: dict[tuple[str, ...], str]) -> str | None:
+    """What ``words`` name, when they are one name only."""
+    return names.get(tuple(words))

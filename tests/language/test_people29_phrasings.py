@@ -30,7 +30,8 @@ tried in the ERL apartment as well, with sentences of the test's own:
   room's, as a singular already was; said with no room it still asks which (``knic.language.places``);
 * "be" left out ("dis chair giving me trouble", "I hungry", "Wanjiru in she room?"), a meal said as what a
   thing is for ("for meh tea"), Caribbean "nah" urging a request and "she" after a preposition (her),
-  "dey on de profiling bed" (they're), "umbrella bring me" (``knic.language.plainorder``,
+  "dey on de profiling bed" (they're), "umbrella bring me", "me go wet room. towel where?", "Tracy —
+  kitchen? Check", "close dem" (``knic.language.plainorder``,
   ``knic.language.signorder``, ``knic.language.dialects``).
 """
 
@@ -519,3 +520,22 @@ def test_where_it_is_said_with_be_left_out_and_bring_me_said_last(
         )
         == frames
     )
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        ("Me go bedroom. Glasses where?", [{"frame": "SEARCHING", "theme": "glasses"}]),
+        ("Tracy — kitchen? Check", [{"frame": "SEARCHING", "theme": "tracy", "ground": "kitchen"}]),
+        ("open di blinds dem", [{"frame": "OPERATING", "device": "bedroom_blinds", "state": "open"}]),
+        ("de blinds, close dem", [{"frame": "OPERATING", "device": "bedroom_blinds", "state": "closed"}]),
+    ],
+)
+def test_signed_and_caribbean_shortcuts(
+    vocabulary: Vocabulary, text: str, frames: list[dict[str, str]]
+) -> None:
+    assert frames_read(vocabulary, text) == frames
+
+
+def test_a_person_and_a_place_said_alone_is_no_question(vocabulary: Vocabulary) -> None:
+    assert not understand("Tracy, kitchen", vocabulary).accepted  # unclear without "check"
