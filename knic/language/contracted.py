@@ -39,7 +39,9 @@
   gonna bring me the teapot?", "so are you going to put the butter away?"): the verb said first, as "will
   you" already is; "are you going to be long?", "are you going to the kitchen?" stay questions about it;
 * where someone is, said out or guessed in a stretch of its own ("find Hugo, he is in the kitchen", "she
-  should be in the bedroom", "he is probably in the study"): "he's in ...", as said short.
+  should be in the bedroom", "he is probably in the study"): "he's in ...", as said short;
+* "like" said as a filler between a preposition and a thing's name ("put the fork on like the table",
+  "bring it to Yuki at like the entrance"): dropped.
 """
 
 from __future__ import annotations
@@ -230,6 +232,9 @@ def contracted(tokens: list[str]) -> list[str]:
             out.append("it's")
             i += 2
             continue
+        if token == "like" and out[-1:] and out[-1] in _LIKE_AFTER and nxt in _NAMING:
+            i += 1  # "put it on like the table", "bring it to like the kitchen": a filler, not a liking
+            continue
         if token == "for" and _waiting(out) and nxt not in ("me", "us"):
             while i < len(tokens) and tokens[i] not in ("and", "then", "there"):
                 i += 1
@@ -286,6 +291,8 @@ def contracted(tokens: list[str]) -> list[str]:
     return _unaddressed(out)
 
 
+#: words after which "like" before a thing's name is a filler ("put it on like the table")
+_LIKE_AFTER = frozenset({"on", "in", "at", "to", "into", "onto", "from", "near", "by", "under", "off", "of"})
 #: what may stand between "he", "she" or "they" and where they are ("he should be in the kitchen", "she is
 #: probably in the bedroom"), and what says where
 _MAYBE = frozenset({"should", "must", "might", "may", "could", "will", "be", "probably", "maybe", "perhaps"})

@@ -38,7 +38,8 @@ Found by probing the voices beyond the set:
   said; "go to the kitchen, but before that switch on the light" switches first; a learner's "before to go
   to the kitchen, ..." is "before going" (``knic.language.stepwise``);
 * where someone is, said out or guessed after a search ("find Hugo, he is in the kitchen", "she should be in
-  the bedroom", "he is probably in the study") is where to look, as "he's in the den" was
+  the bedroom", "he is probably in the study") is where to look, as "he's in the den" was; "like" said as a
+  filler between a preposition and a name ("bring it to Yuki at like the entrance") is dropped
   (``knic.language.contracted``);
 * "approach the dining table", "enter the kitchen", "visit the kitchen": a going there (``commands.yaml``);
 * a learner's "bring the apple at Annie", "bring at me the glasses" ("a", "à"): "to" before a person
@@ -421,3 +422,15 @@ def test_at_a_person_and_asked_back_where(vocabulary: Vocabulary) -> None:
     ]
     assert frames_read(vocabulary, "Annie is where?", "tracy") == [{"frame": "SEARCHING", "theme": "annie"}]
     assert _read(HOUSE, "the car keys are where?") == [{"frame": "SEARCHING", "theme": "car_keys"}]
+
+
+def test_like_said_as_a_filler_before_a_name(vocabulary: Vocabulary) -> None:
+    assert _read(ARENA, "The umbrella, bring it to Yuki at like the entrance") == [
+        {"frame": "BRINGING", "theme": "umbrella", "goal": "entrance", "beneficiary": "yuki"}
+    ]
+    assert _read(HOUSE, "put the frozen peas back in like the chest freezer") == [
+        {"frame": "PLACING", "theme": "frozen_peas", "goal": "chest_freezer"}
+    ]
+    assert frames_read(vocabulary, "I would like the juice") == [
+        {"frame": "BRINGING", "theme": "juice", "beneficiary": "me"}
+    ]
