@@ -71,9 +71,10 @@ _IT_HAVE_ASKED = re.compile(r"(?:^|(?<=[.!?;,]\s))it have\b(?=[^.!?]*\?)", re.IG
 _THERE_IS = re.compile(r"(?<![\w'])(?<!does )(?<!would )(?<!will )it have\b(?!\s+(?:to|got|been|a look))")
 
 
-#: past participles said after "'s" (has), not things someone owns
+#: past participles said after "'s" (has), not things someone owns (no "left", "broken": "the bedroom's left
+#: light", "jack's broken glasses")
 _DONE = (
-    "cut|hurt|broken|broke|lost|gone|fallen|fell|burnt|burned|left|dropped|spilled|spilt|done|got|finished"
+    "cut|hurt|lost|gone|fallen|fell|burned|dropped|spilled|spilt|done|got|finished"
     "|taken|eaten|forgotten|forgot|bumped|banged|grazed|scraped|twisted|sprained|knocked|tripped|been"
 )
 #: "our" before a capitalised name ("our Theo")
@@ -81,9 +82,10 @@ _FAMILY = re.compile(r"(?<![\w'])[Oo]ur (?=[A-Z][a-z])")
 _HAS_DONE = re.compile(rf"\b([a-z]+)'s ({_DONE})\b(?!\s+(?:and|or)\b)", re.IGNORECASE)
 
 
-#: "this" or "that", a noun and a verb in "-ing" with "is" left out ("dis chair giving me trouble")
+#: "this" or "that", a noun and a verb in "-ing" with "is" left out, opening a stretch ("dis chair giving me
+#: trouble"; "bring me that mug sitting on the table" stays)
 _THIS_DOING = re.compile(
-    r"\b(this|that|dis|dat) ([a-z]+) ([a-z]{2,}ing)\b(?! (?:is|are|was)\b)", re.IGNORECASE
+    r"(?:^|(?<=[,.;!?]\s))(this|that|dis|dat) ([a-z]+) ([a-z]{2,}ing)\b(?! (?:is|are|was)\b)", re.IGNORECASE
 )
 #: words in "-ing" that are no verb's
 _NOT_DOING = frozenset(

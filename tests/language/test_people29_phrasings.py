@@ -539,3 +539,10 @@ def test_signed_and_caribbean_shortcuts(
 
 def test_a_person_and_a_place_said_alone_is_no_question(vocabulary: Vocabulary) -> None:
     assert not understand("Tracy, kitchen", vocabulary).accepted  # unclear without "check"
+
+
+def test_what_looks_like_be_left_out_inside_a_request_stays(vocabulary: Vocabulary) -> None:
+    assert frames_read(vocabulary, "turn off the bedroom's left light") == [
+        {"frame": "OPERATING", "device": "bedroom_left_light", "state": "off"}
+    ]
+    assert "table" in understand("bring me that mug sitting on the table", vocabulary).question
