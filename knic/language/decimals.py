@@ -1,6 +1,8 @@
 """Typed text as the reader reads it: typographic marks a phone or a word processor puts in ("annie’s",
 "I’d", "café", "wait… no") as plain ones, and decimal numbers ("dim it to 0.5", "the blinds at 62.5%") read
-before a full stop would split them into two numbers ("zero", "five"): levels are whole percentages.
+before a full stop would split them into two numbers ("zero", "five"): levels are whole percentages. Digits
+ending a word are set apart, as said ("cup1": "cup 1", a PDDL problem's name; "the 2nd lamp": "the
+second lamp"), so that numbered things are named and asked about as the others ("the cup": which cup?).
 """
 
 from __future__ import annotations
@@ -21,6 +23,23 @@ _PLAIN = str.maketrans(
         **dict.fromkeys("\u00a0\u2009\u202f\u200b", " "),
     }
 )
+
+
+#: an ordinal written with digits ("2nd", "3rd", "10th") and the words for those up to the twelfth
+_ORDINAL = re.compile(r"\b(\d{1,2})(st|nd|rd|th)\b", re.IGNORECASE)
+_ORDINALS = (
+    *("zeroth", "first", "second", "third", "fourth", "fifth", "sixth"),
+    *("seventh", "eighth", "ninth", "tenth", "eleventh", "twelfth"),
+)
+#: a word of letters ending in digits ("cup1", "sofa2"; not a name with digits inside it: "r2d2")
+_RUN = re.compile(r"\b([A-Za-z]+)(\d+)\b")
+
+
+def digits_apart(text: str) -> str:
+    """``text`` with ordinals written in digits as words ("the 2nd lamp": "the second lamp") and the digits
+    ending a word set apart ("cup1": "cup 1", "bring me cup2": "bring me cup 2"; "r2d2" stays one word)."""
+    text = _ORDINAL.sub(lambda m: _ORDINALS[int(m[1])] if int(m[1]) < len(_ORDINALS) else m[0], text)
+    return _RUN.sub(r"\1 \2", text)
 
 
 def plain_typed(text: str) -> str:

@@ -455,7 +455,7 @@ class Reader(Places):
             if "person" not in categories and "room" in categories:  # "come to me"
                 raise AmbiguityError("where are you: in which room?")
             if "person" not in categories:
-                raise LanguageError("'me' cannot be that")
+                raise LanguageError(not_of_kinds("me", categories, False))  # "grab me a pop": no object
             return [SPEAKER]
         if chunk.kind == "pronoun":
             return referent(chunk, categories, groups, self.vocabulary)

@@ -20,7 +20,7 @@ from typing import Any, Protocol
 
 from core.errors import LanguageError
 from core.inputs import read_yaml
-from knic.language.decimals import decimals_read, plain_typed
+from knic.language.decimals import decimals_read, digits_apart, plain_typed
 from knic.language.shortnames import contains, english_nearer, own_phrases, short_names
 
 #: Number words for 0..100, enough for percent levels.
@@ -76,7 +76,7 @@ def normalize(text: str) -> str:
     into spaces, drops other punctuation (commas and full stops separate nothing the grammar needs), and
     collapses whitespace: ``normalize("Half-open the blinds, please!") == "half open the blinds please"``.
     """
-    text = decimals_read(plain_typed(text)).lower().replace("%", " percent ").replace("-", " ")
+    text = digits_apart(decimals_read(plain_typed(text))).lower().replace("%", " percent ").replace("-", " ")
     text = text.replace("_", " ")
     text = re.sub(
         r"\d+", lambda m: number_words(int(m.group())) if int(m.group()) <= 100 else m.group(), text

@@ -9,11 +9,12 @@ their names).
 from __future__ import annotations
 
 import re
+from dataclasses import replace
 from pathlib import Path
 from typing import Any
 
 from core.errors import LanguageError
-from knic.language.vocabulary import LOCATION_PREDICATES, Lexicon, Vocabulary
+from knic.language.vocabulary import LOCATION_PREDICATES, Lexicon, Vocabulary, normalize
 
 WORLDS = Path(__file__).resolve().parents[2] / "worlds"
 DEFAULT_DOMAIN = WORLDS / "erl_home" / "domain.pddl"
@@ -50,7 +51,28 @@ def load_world(
     kb = KnowledgeBase.from_pddl(str(domain), str(problem) if problem is not None else None)
     lexicon_path = Path(lexicon) if lexicon is not None else find_lexicon(domain, problem)
     lexicon_data = Lexicon.load(lexicon_path) if lexicon_path is not None else None
-    return kb, Vocabulary.from_knowledge_base(kb, lexicon_data)
+    return kb, Vocabulary.from_knowledge_base(kb, camel_cased(problem, lexicon_data))
+
+
+def camel_cased(problem: str | Path | None, lexicon: Lexicon | None) -> Lexicon | None:
+    """``lexicon`` with spoken names for the symbols the problem file writes in CamelCase, which PDDL reads
+    in lower case: "LivingRoom" is "living room" (and "livingroom" as typed), "BlueBottle" "blue bottle"; a
+    symbol the lexicon names keeps its names. Nothing is added for a problem without such symbols."""
+    if problem is None:
+        return lexicon
+    try:
+        text = re.sub(r";[^\n]*", " ", Path(problem).read_text(encoding="utf-8"))
+    except (OSError, UnicodeDecodeError):
+        return lexicon  # the PDDL reader says what is wrong with the file
+    spoken: dict[str, tuple[str, ...]] = {}
+    for token in set(re.findall(r"[A-Za-z][A-Za-z0-9_-]*", text)):
+        apart = re.sub(r"(?<=[a-z0-9])(?=[A-Z])", " ", token)
+        if apart != token:
+            spoken[token.lower()] = (normalize(apart), normalize(token))
+    if not spoken:
+        return lexicon
+    lexicon = lexicon or Lexicon()
+    return replace(lexicon, names={**spoken, **lexicon.names})
 
 
 def read_vocabulary(
@@ -95,7 +117,7 @@ def read_vocabulary(
                     if isinstance(atom, list) and len(atom) == 3 and atom[0] in LOCATION_PREDICATES:
                         locations.setdefault(str(atom[1]), []).append(str(atom[2]))
     lexicon_path = Path(lexicon) if lexicon is not None else find_lexicon(domain, problem)
-    lexicon_data = Lexicon.load(lexicon_path) if lexicon_path is not None else None
+    lexicon_data = camel_cased(problem, Lexicon.load(lexicon_path) if lexicon_path is not None else None)
     vocabulary = Vocabulary.from_instances(instances, types, lexicon_data, predicates, locations)
     _check_named_types(Path(domain), vocabulary)
     return vocabulary
