@@ -54,6 +54,11 @@ def _flat() -> Vocabulary:
     return world_of(FLAT)
 
 
+def _said(vocabulary: Vocabulary, world: str, text: str, speaker: str) -> list[dict[str, str]]:
+    """The frames of ``text`` said by ``speaker`` in the flat, or by annie in the ERL apartment."""
+    return frames_read(_flat(), text, speaker) if world == "flat" else frames_read(vocabulary, text)
+
+
 @pytest.fixture(scope="module")
 def flat() -> Vocabulary:
     """The adapted flat's vocabulary."""
@@ -176,10 +181,7 @@ def test_a_question_inside_another_keeps_its_order(vocabulary: Vocabulary) -> No
     ],
 )
 def test_a_stammer(vocabulary: Vocabulary, world: str, text: str, frames: list[dict[str, str]]) -> None:
-    assert (
-        frames_read(_flat() if world == "flat" else vocabulary, text, "theo" if world == "flat" else "annie")
-        == frames
-    )
+    assert _said(vocabulary, world, text, "theo") == frames
 
 
 def test_a_hyphened_word_is_no_stammer(vocabulary: Vocabulary) -> None:
@@ -271,12 +273,7 @@ def test_a_table_next_to_the_bed(vocabulary: Vocabulary) -> None:
 def test_carried_by_a_place_or_a_person(
     vocabulary: Vocabulary, world: str, text: str, frames: list[dict[str, str]]
 ) -> None:
-    assert (
-        frames_read(
-            _flat() if world == "flat" else vocabulary, text, "merline" if world == "flat" else "annie"
-        )
-        == frames
-    )
+    assert _said(vocabulary, world, text, "merline") == frames
 
 
 @pytest.mark.parametrize(
@@ -301,12 +298,7 @@ def test_carried_by_a_place_or_a_person(
 def test_family_and_what_has_happened(
     vocabulary: Vocabulary, world: str, text: str, frames: list[dict[str, str]]
 ) -> None:
-    assert (
-        frames_read(
-            _flat() if world == "flat" else vocabulary, text, "kieran" if world == "flat" else "annie"
-        )
-        == frames
-    )
+    assert _said(vocabulary, world, text, "kieran") == frames
 
 
 @pytest.mark.parametrize(
@@ -514,12 +506,7 @@ def test_furniture_said_before_its_room_in_sign_language_order(flat: Vocabulary)
 def test_where_it_is_said_with_be_left_out_and_bring_me_said_last(
     vocabulary: Vocabulary, world: str, text: str, frames: list[dict[str, str]]
 ) -> None:
-    assert (
-        frames_read(
-            _flat() if world == "flat" else vocabulary, text, "merline" if world == "flat" else "annie"
-        )
-        == frames
-    )
+    assert _said(vocabulary, world, text, "merline") == frames
 
 
 @pytest.mark.parametrize(
