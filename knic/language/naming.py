@@ -325,10 +325,11 @@ def _possessive(words: list[str], i: int, person: str) -> bool:
     return words[end - 1] in (said[-1] + "'s", said[-1] + "'")
 
 
-def called_so(terms: Sequence[Term], said: str, vocabulary: Vocabulary) -> tuple[Term, ...]:
+def called_so(terms: Sequence[Term], said: str, vocabulary: Vocabulary, place: str = "") -> tuple[Term, ...]:
     """Of several devices ``said`` names, those whose own name (not one only given) ends in its last word
     (said as one: in it as one); all of them where none or all do, or where the word is a plural ("the lights
-    in the study": its light and its desk lamp)."""
+    in the study": its light and its desk lamp); of those, the one named by the ``place`` it was said in and
+    the word ("the light in the hallway": the hallway light, not the porch light that hangs there too)."""
     word = said.split()[-1] if said.split() else ""
     devices = {t.symbol for t in terms if vocabulary.is_subtype(t.type, "device")}
     if word.endswith("s") and not word.endswith("ss"):  # "the lights in the study": all of them
@@ -345,6 +346,8 @@ def called_so(terms: Sequence[Term], said: str, vocabulary: Vocabulary) -> tuple
         t.symbol for t in vocabulary.terms if t.symbol in own and not t.given and t.phrase.split()[-1] == word
     }
     own = one if not word.endswith("s") and one else own
+    named = {t.symbol for t in vocabulary.terms if t.symbol in own and t.phrase == f"{place} {word}"}
+    own = named if place and len(own) > 1 and len(named) == 1 and not word.endswith("s") else own
     return tuple(t for t in terms if t.symbol in own) if own and own != devices else tuple(terms)
 
 

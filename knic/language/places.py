@@ -78,7 +78,8 @@ class Places:
                 there = "there are no" if plural else "there is no"  # "there are no lights in the nursery"
                 raise LanguageError(f"{there} {head.chunk.text} in the {where} in this world")
             kept = named_in_part(kept, head.chunk.text, place.chunk.text, rooms, self.vocabulary)  # open plan
-            kept = called_so(kept, head.chunk.text, self.vocabulary)  # "the light in the attic": its light
+            said_in = place.chunk.text if all(self.is_a(r, "room") for r in rooms) else ""  # not on a desk
+            kept = called_so(kept, head.chunk.text, self.vocabulary, said_in)  # "the light in the attic"
             head.chunk = Chunk("entity", head.chunk.text, kept, role=head.chunk.role)
             if swapped:  # "to the hallway table": the table, where the preposition before the room says
                 head.prep, head.prep_text = place.prep, place.prep_text

@@ -37,6 +37,9 @@ apartment as well:
   with it (``knic.language.tidy``).
 * a form's labels typed with a colon ("Item: tablet. Source: cane sofa. Destination: me") are the
   prepositions they stand for, or nothing (``knic.language.tidy``).
+* "the light in the hallway" where the porch light hangs in the hallway too is the one named by the place
+  and the word, the hallway light (or its synonym's: "light in corridor"); "the lights in the hallway" stay
+  both, and a room with no light named after it still asks (``knic.language.naming``).
 * a request for a thing the world lacks, with talk beside it that has no verb ("bring me my knitting, it is
   in my bag") or that the speaker says of themselves ("bring me bread, I make soup"), is refused naming the
   thing, not "it" or the soup; a learner's request with no article ("bring me bread") counts
@@ -52,7 +55,7 @@ import pytest
 from knic.language import understand
 from knic.language.vocabulary import Vocabulary
 
-from .conftest import frames_read, world_of
+from .conftest import assert_asked, frames_read, world_of
 
 HOUSE = "tests/fixtures/language/people30/semi_house.yaml"
 Frames = list[dict[str, str]]
@@ -473,3 +476,21 @@ def test_a_learners_pronoun_after_a_relative_clause(
 )
 def test_a_forms_labels(vocabulary: Vocabulary, erl: bool, text: str, frames: Frames) -> None:
     assert _said(vocabulary, erl, text, "ottavia") == frames
+
+
+@pytest.mark.parametrize(
+    ("text", "devices"),
+    [
+        ("switch on the light in the hallway", ["hallway_light"]),
+        ("Switch on light in corridor", ["hallway_light"]),
+        ("switch on the lights in the hallway", ["hallway_light", "porch_light"]),
+    ],
+)
+def test_the_light_in_a_room_is_the_one_named_after_it(text: str, devices: list[str]) -> None:
+    assert frames_read(_house(), text, "lyudmila") == [
+        {"frame": "OPERATING", "device": device, "state": "on"} for device in devices
+    ]
+
+
+def test_a_room_with_no_light_named_after_it_still_asks(vocabulary: Vocabulary) -> None:
+    assert_asked(vocabulary, "turn on the light in the bedroom", "light")
