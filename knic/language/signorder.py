@@ -17,6 +17,8 @@ topic first and the verb last, and a deaf person typing English often keeps that
   me", "Laptop Wanjiru — desk her. Bring me"): on that place ("on her desk"); a thing and "there" after a
   place said alone ("Fridge — milk there? Check"): whether the thing is in the place, "check" said after it
   being that question;
+* a thing said first, perhaps where it is, then a verb of carrying and a person alone ("Car keys, hook —
+  take Kieran"): the thing taken from there to the person, not the person taken along;
 * a verb said before a place with no preposition ("toolbox bring kitchen", "bring dining table"): the
   preposition the verb asks for ("to", "on"), the thing said before the verb put after it; a piece of
   furniture said straight before a room ("cabinet wet room"): "in" the room;
@@ -75,6 +77,8 @@ def signed_read(segments: list[list[str]], vocabulary: Vocabulary) -> list[list[
         if i and checked and _only_names(out[i - 1], names) == "person" and _places(words, names):
             return [*out[: i - 1], ["is", *out[i - 1], "in", *words]]  # "tracy — kitchen? check"
         if i and _there_said(out, i, names):  # "glasses nan's — recliner there", "fridge — milk there?"
+            continue
+        if i and _given_after(out, i, names):  # "car keys, hook — take kieran"
             continue
         verb = _last_verb(words)
         if verb is None:
@@ -259,3 +263,18 @@ def _described_after(words: list[str], names: dict[tuple[str, ...], str]) -> lis
 def _only_names(words: list[str], names: dict[tuple[str, ...], str]) -> str | None:
     """What ``words`` name, when they are one name only."""
     return names.get(tuple(words))
+
+
+def _given_after(out: list[list[str]], i: int, names: dict[tuple[str, ...], str]) -> bool:
+    """ "car keys, hook — take kieran": put as "car keys from hook and take to kieran", in place; whether the
+    stretch at ``i`` was so."""
+    words = out[i]
+    if len(words) < 2 or words[0] not in _TO_PERSON or names.get(tuple(words[1:])) != "person":
+        return False
+    kinds = [_only_names(s, names) or ("place" if _places(s, names) else None) for s in out[:i]]
+    if "item" not in kinds or any(k not in ("item", "place", "room", "furniture") for k in kinds):
+        return False
+    if kinds[-1] != "item":
+        out[i - 1] = ["from", *_room_after(out[i - 1], names)]
+    out[i] = ["and", words[0], "to", *words[1:]]
+    return True

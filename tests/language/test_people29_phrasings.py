@@ -25,7 +25,8 @@ tried in the ERL apartment as well, with sentences of the test's own:
   stretch apart as " - " does (``knic.language.signorder``, ``knic.language.tidy``); where a thing is said
   as "recliner there" or "desk her", and "Fridge — milk there? Check"; a verb before a place with no
   preposition ("toolbox bring kitchen"); furniture said before its room ("cabinet wet room"); a two-word
-  name with its describing word last ("mug spotty") (``knic.language.signorder``);
+  name with its describing word last ("mug spotty"); a thing said first and then "take Kieran" (taken to
+  him) (``knic.language.signorder``);
 * a plural said alone after going to a room ("..., then go to the bedroom and close the blinds") is that
   room's, as a singular already was; said with no room it still asks which (``knic.language.places``);
 * "be" left out ("dis chair giving me trouble", "I hungry", "Wanjiru in she room?"), a meal said as what a
@@ -533,3 +534,23 @@ def test_what_looks_like_be_left_out_inside_a_request_stays(vocabulary: Vocabula
         {"frame": "OPERATING", "device": "bedroom_left_light", "state": "off"}
     ]
     assert "table" in understand("bring me that mug sitting on the table", vocabulary).question
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        (
+            "Glasses, bedside table — take Tracy",
+            [{"frame": "BRINGING", "theme": "glasses", "source": "bedside_table", "beneficiary": "tracy"}],
+        ),
+        ("Glasses — give Jack", [{"frame": "BRINGING", "theme": "glasses", "beneficiary": "jack"}]),
+    ],
+)
+def test_a_thing_said_first_then_taken_to_a_person(
+    vocabulary: Vocabulary, text: str, frames: list[dict[str, str]]
+) -> None:
+    assert frames_read(vocabulary, text) == frames
+
+
+def test_a_place_said_first_then_take_a_person_still_asks_where(vocabulary: Vocabulary) -> None:
+    assert "which room" in understand("the kitchen, take Tracy", vocabulary).question
