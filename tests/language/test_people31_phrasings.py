@@ -42,6 +42,8 @@ Found by probing the voices beyond the set:
   filler between a preposition and a name ("bring it to Yuki at like the entrance") is dropped
   (``knic.language.contracted``);
 * "approach the dining table", "enter the kitchen", "visit the kitchen": a going there (``commands.yaml``);
+* "crank it up to full", "whack it up to full", "bump it up to 60", "knock it down to twenty" (informal
+  English for turning) set that level; "carry on to the study" goes there (``commands.yaml``);
 * a learner's "bring the apple at Annie", "bring at me the glasses" ("a", "à"): "to" before a person
   (``knic.language.learners``); "Annie is where?", "the glasses are where" (asked back): where she or they
   are (``knic.language.household``).
@@ -434,3 +436,28 @@ def test_like_said_as_a_filler_before_a_name(vocabulary: Vocabulary) -> None:
     assert frames_read(vocabulary, "I would like the juice") == [
         {"frame": "BRINGING", "theme": "juice", "beneficiary": "me"}
     ]
+
+
+@pytest.mark.parametrize(
+    ("file", "text", "frames"),
+    [
+        (
+            ARENA,
+            "crank the floor lamp up to full",
+            [{"frame": "OPERATING", "device": "floor_lamp", "state": "100"}],
+        ),
+        (
+            ARENA,
+            "the dining room light, bump it up to 60",
+            [{"frame": "OPERATING", "device": "dining_room_light", "state": "60"}],
+        ),
+        (
+            HOUSE,
+            "knock the reading lamp down to twenty",
+            [{"frame": "OPERATING", "device": "reading_lamp", "state": "20"}],
+        ),
+        (HOUSE, "carry on through to the kitchen", [{"frame": "MOTION", "goal": "kitchen"}]),
+    ],
+)
+def test_informal_verbs_of_turning_and_going_on(file: str, text: str, frames: list[dict[str, str]]) -> None:
+    assert _read(file, text) == frames
