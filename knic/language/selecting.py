@@ -76,6 +76,8 @@ _KINDS = {
         | {"yoghurt", "popcorn", "eggs", "egg", "crisps", "nuts", "jam", "cereal", "soup", "noodles", "pizza"}
     ),
 }
+#: words before a kind that mean every thing of it ("all the fruit", "every drink")
+_EVERY = frozenset({"all", "every", "each"})
 _KIND_WORDS = {
     "drink": "drink",
     "drinks": "drink",
@@ -336,7 +338,7 @@ def _kind(words: list[str], vocabulary: Vocabulary) -> list[str]:
                 words[start - 1] in _SAID_OF_KIND or words[start - 1] in _DETERMINERS | {"some"}
             ):
                 start -= 1
-            if start == i or word == "eat":
+            if (start == i and words[i - 1] not in _EVERY) or word == "eat":
                 continue  # "drink" said as a verb
         things = {
             t.symbol: t
@@ -345,8 +347,12 @@ def _kind(words: list[str], vocabulary: Vocabulary) -> list[str]:
         }
         if not things:
             return words
+        names = [vocabulary.phrase_of(s) for s in sorted(things)]
+        every = (bool(start) and words[start - 1] in _EVERY) or words[start - 2 : start] == ["all", "of"]
+        if len(things) > 1 and every:  # "bring me all the fruit": each of them, one after the other
+            said = " and ".join(f"the {n}" for n in names).split()
+            return [*words[: start - 1 - (words[start - 1] == "of")], *said, *words[i + 1 :]]
         if len(things) > 1:
-            names = [vocabulary.phrase_of(s) for s in sorted(things)]
             listed = ", ".join(f"the {n}" for n in names[:-1]) + f" or the {names[-1]}"
             raise AmbiguityError(f"{_ASK.get(kind, f'which {kind} do you mean')}: {listed}?")
         symbol = next(iter(things))

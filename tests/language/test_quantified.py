@@ -86,3 +86,25 @@ def test_a_plural_the_world_groups_is_the_group(vocabulary: Vocabulary, duplex: 
     assert frames_read(vocabulary, "close the blinds") == [
         {"frame": "OPERATING", "device": "bedroom_blinds", "state": "closed"}
     ]
+
+
+@pytest.mark.parametrize(
+    "text", ["bring me all the drinks", "bring me every drink", "bring me all of the drinks"]
+)
+def test_every_thing_of_a_kind_is_each_of_them(vocabulary: Vocabulary, text: str) -> None:
+    # the ERL apartment's drinks: the coke can, the juice and the water (knic.language.selecting)
+    frames = frames_read(vocabulary, text)
+    assert sorted(f["theme"] for f in frames) == ["coke_can", "juice", "water"]
+    assert {f["frame"] for f in frames} == {"BRINGING"}
+
+
+def test_every_thing_of_a_kind_is_placed(vocabulary: Vocabulary) -> None:
+    assert frames_read(vocabulary, "put all the fruit on the kitchen table") == [
+        {"frame": "PLACING", "theme": "apple", "goal": "kitchen_table"},
+        {"frame": "PLACING", "theme": "lemon", "goal": "kitchen_table"},
+    ]
+
+
+def test_one_thing_of_a_kind_still_asks_which(vocabulary: Vocabulary) -> None:
+    result = understand("bring me a drink", vocabulary, speaker="annie")
+    assert not result.accepted and "coke can" in result.question and "juice" in result.question
