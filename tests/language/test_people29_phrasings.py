@@ -17,8 +17,8 @@ tried in the ERL apartment as well, with sentences of the test's own:
 * Caribbean "by" for where to after "carry", "take" or "bring" with no one and nowhere else said ("carry
   de bible by Kieran") (``knic.language.dialects``);
 * "'s" before a past participle is "has" ("our Theo's cut his knee": a reason, no thing of Theo's), and
-  "our" before a capitalised name is the name (``knic.language.plainorder``); "leg it" runs
-  (``commands.yaml``);
+  "our" before a capitalised name is the name (``knic.language.plainorder``); "leg it" runs, "I have need
+  of" wants (``commands.yaml``);
 * British Sign Language order typed in English, the topic first and the verb last with no prepositions
   ("Ice pack — freezer take — Ottavio give", "Cushion, sofa take, garden bench put", "Sofa — go there",
   "Headphones Theo — sofa. Theo give"): the prepositions each verb asks for put in, and a long dash sets a
@@ -554,3 +554,9 @@ def test_a_thing_said_first_then_taken_to_a_person(
 
 def test_a_place_said_first_then_take_a_person_still_asks_where(vocabulary: Vocabulary) -> None:
     assert "which room" in understand("the kitchen, take Tracy", vocabulary).question
+
+
+def test_i_have_need_of(vocabulary: Vocabulary) -> None:
+    assert frames_read(vocabulary, "I have need of the tissues") == [
+        {"frame": "BRINGING", "theme": "tissues", "beneficiary": "me"}
+    ]
