@@ -48,6 +48,7 @@ def sentences_read(
     """The sentences with the rules of the module docstring applied."""
     segments = reasons_dropped(together_dropped(segments, chunks), chunks)
     segments = _on_said_of_others(segments, chunks, lambda c: any(is_a(t, "device") for t in c.terms))
+    segments = _how_someone_is(segments, chunks, lambda c: any(is_a(t, "person") for t in c.terms))
     segments = done_dropped(segments, chunks, lambda c: any(is_a(t, "person") for t in c.terms))
     segments = _lacking_first(_asides_dropped(segments, chunks, is_a), chunks)
     return verbs_said([_for_unknown_dropped(s, chunks) for s in segments], chunks, is_a)
@@ -191,6 +192,32 @@ def _on_said_of_others(
         said = len(segment) > 2 and segment[-1] in ("on", "off") and segment[0] not in ("and", "then")
         be = said and (segment[-2].endswith("'s") or segment[-2] in ("is", "are", "was"))
         if acted and be and not any(c.kind == "verb" or is_device(c) for c in chunks(segment)):
+            continue
+        out.append(segment)
+    return out
+
+
+def _how_someone_is(
+    segments: list[list[str]],
+    chunks: Callable[[Sequence[str]], list[Chunk]],
+    is_person: Callable[[Chunk], bool],
+) -> list[list[str]]:
+    """The sentences without those after a request that say how someone is, in words that name nothing of
+    the world ("turn off the fairy lights? Marnie's asleep", "..., Brendan is still asleep", "..., Tracy's
+    a bit tired"): a remark, not a person to operate or to look for."""
+    out: list[list[str]] = []
+    for segment in segments:
+        acted = any(c.kind == "verb" for s in out for c in chunks(s))
+        said = chunks(segment)
+        person = len(said) > 2 and said[0].kind == "entity" and is_person(said[0])
+        rest = said[2:]
+        if (
+            acted
+            and person
+            and said[1].text in ("is", "was")
+            and all(c.kind in ("unknown", "vague", "det") for c in rest)
+            and any(c.kind == "unknown" for c in rest)
+        ):
             continue
         out.append(segment)
     return out

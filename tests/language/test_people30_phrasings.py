@@ -40,6 +40,9 @@ apartment as well:
 * "the light in the hallway" where the porch light hangs in the hallway too is the one named by the place
   and the word, the hallway light (or its synonym's: "light in corridor"); "the lights in the hallway" stay
   both, and a room with no light named after it still asks (``knic.language.naming``).
+* a sentence after a request that says how someone is in words that name nothing of the world ("turn off
+  the fairy lights? Marnie's asleep", "..., Brendan's still asleep") is a remark, not a person to operate
+  (``knic.language.sentences``); "blease" (an Arabic speaker's "b" for "p") is "please" (``commands.yaml``).
 * a request for a thing the world lacks, with talk beside it that has no verb ("bring me my knitting, it is
   in my bag") or that the speaker says of themselves ("bring me bread, I make soup"), is refused naming the
   thing, not "it" or the soup; a learner's request with no article ("bring me bread") counts
@@ -494,3 +497,40 @@ def test_the_light_in_a_room_is_the_one_named_after_it(text: str, devices: list[
 
 def test_a_room_with_no_light_named_after_it_still_asks(vocabulary: Vocabulary) -> None:
     assert_asked(vocabulary, "turn on the light in the bedroom", "light")
+
+
+@pytest.mark.parametrize(
+    ("erl", "text", "frames"),
+    [
+        (
+            False,
+            "I'm so sorry, could you possibly turn off the fairy lights? Marnie's asleep",
+            [{"frame": "OPERATING", "device": "fairy_lights", "state": "off"}],
+        ),
+        (
+            False,
+            "close the kitchen blind, Brendan's still asleep",
+            [{"frame": "OPERATING", "device": "kitchen_blind", "state": "closed"}],
+        ),
+        (
+            False,
+            "Bring for me the laptop charger blease",
+            [{"frame": "BRINGING", "theme": "laptop_charger", "beneficiary": "me"}],
+        ),
+        (
+            True,
+            "turn off the hallway light, tracy's asleep",
+            [{"frame": "OPERATING", "device": "hallway_light", "state": "off"}],
+        ),
+        (
+            True,
+            "close the blinds, annie is a bit tired",
+            [{"frame": "OPERATING", "device": "bedroom_blinds", "state": "closed"}],
+        ),
+        (True, "blease bring me the tablet", [{"frame": "BRINGING", "theme": "tablet", "beneficiary": "me"}]),
+    ],
+)
+def test_how_someone_is_said_after_a_request(
+    vocabulary: Vocabulary, erl: bool, text: str, frames: Frames
+) -> None:
+    assert _said(vocabulary, erl, text, "philippa") == frames
