@@ -40,6 +40,8 @@
   you" already is; "are you going to be long?", "are you going to the kitchen?" stay questions about it;
 * where someone is, said out or guessed in a stretch of its own ("find Hugo, he is in the kitchen", "she
   should be in the bedroom", "he is probably in the study"): "he's in ...", as said short;
+* "is he in the workshop?" after a question or a request ("where is Lenny? is he in the workshop?"): "check
+  if he is in the workshop", a search there;
 * "like" said as a filler between a preposition and a thing's name ("put the fork on like the table",
   "bring it to Yuki at like the entrance"): dropped.
 """
@@ -221,7 +223,7 @@ def _got_to(tokens: list[str]) -> list[str]:
 def contracted(tokens: list[str]) -> list[str]:
     """``tokens`` (one stretch of a command, lower case) with the statements of the module docstring said as
     contractions."""
-    tokens = had_done(_got_to(_planned(_where_said(tokens))))
+    tokens = had_done(_got_to(_planned(_where_said(_asked_if_there(tokens)))))
     out: list[str] = []
     i = 0
     while i < len(tokens):
@@ -298,6 +300,16 @@ _LIKE_AFTER = frozenset({"on", "in", "at", "to", "into", "onto", "from", "near",
 _MAYBE = frozenset({"should", "must", "might", "may", "could", "will", "be", "probably", "maybe", "perhaps"})
 _LIKELY = frozenset({"probably", "maybe", "perhaps", "likely", "still"})
 _AT = frozenset({"in", "at", "on", "by", "near", "next"})
+
+
+def _asked_if_there(tokens: list[str]) -> list[str]:
+    """ "where is Lenny? is he in the workshop?", "find the drill. is it in the garage?": a stretch asking
+    whether he, she, it or they are somewhere is "check if he is in the workshop", a search there for the one
+    said before (a question opening a later sentence opens no command of its own)."""
+    asked = len(tokens) > 3 and tokens[0] in ("is", "are") and tokens[1] in ("he", "she", "it", "they")
+    if asked and tokens[2] in _AT and tokens[2] != "next":
+        return ["check", "if", tokens[1], tokens[0], *tokens[2:]]
+    return tokens
 
 
 def _where_said(tokens: list[str]) -> list[str]:

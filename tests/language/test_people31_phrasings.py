@@ -39,7 +39,8 @@ Found by probing the voices beyond the set:
   to the kitchen, ..." is "before going" (``knic.language.stepwise``);
 * where someone is, said out or guessed after a search ("find Hugo, he is in the kitchen", "she should be in
   the bedroom", "he is probably in the study") is where to look, as "he's in the den" was; "like" said as a
-  filler between a preposition and a name ("bring it to Yuki at like the entrance") is dropped
+  filler between a preposition and a name ("bring it to Yuki at like the entrance") is dropped; "is he in the
+  kitchen?" after a question or a request ("Find Hugo. Is he in the kitchen?") searches there
   (``knic.language.contracted``);
 * "approach the dining table", "enter the kitchen", "visit the kitchen": a going there (``commands.yaml``);
 * "crank it up to full", "whack it up to full", "bump it up to 60", "knock it down to twenty" (informal
@@ -461,3 +462,15 @@ def test_like_said_as_a_filler_before_a_name(vocabulary: Vocabulary) -> None:
 )
 def test_informal_verbs_of_turning_and_going_on(file: str, text: str, frames: list[dict[str, str]]) -> None:
     assert _read(file, text) == frames
+
+
+def test_is_he_there_asked_after_a_search(vocabulary: Vocabulary) -> None:
+    assert _read(ARENA, "Find Hugo. Is he in the kitchen?") == [
+        {"frame": "SEARCHING", "theme": "hugo", "ground": "kitchen"}
+    ]
+    assert _read(HOUSE, "where is the drill? is it in the garage?") == [
+        {"frame": "SEARCHING", "theme": "drill", "ground": "garage"}
+    ]
+    assert frames_read(vocabulary, "where is tracy? is she in the kitchen?") == [
+        {"frame": "SEARCHING", "theme": "tracy", "ground": "kitchen"}
+    ]
