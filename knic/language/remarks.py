@@ -287,7 +287,10 @@ def unknown_action(chunks: Sequence[Chunk], kind_of: Callable[[Chunk], str]) -> 
             continue
         after = chunks[at + 2 : at + 4]
         # "wash it", "wash them in the sink"; not "..., they are in the shed" (the subject of what follows)
-        pronoun = [c.kind for c in after[:1]] == ["pronoun"] and after[0].role != "person"
+        # and "follow her", "thank him" (a person said as the object, not "they" said as a subject)
+        pronoun = [c.kind for c in after[:1]] == ["pronoun"] and (
+            after[0].role != "person" or after[0].text in ("her", "him")
+        )
         acted_on = kind_of(after[1]) if [c.kind for c in after] == ["det", "entity"] else ""
         if word.kind == "entity":  # an object's name before what it is done to: "water the plant"
             if kind_of(word) == "object" and acted_on not in ("", "person"):

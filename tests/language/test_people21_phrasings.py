@@ -471,7 +471,13 @@ def test_a_thing_that_would_be_lovely_is_asked_for(text: str, theme: str) -> Non
 def test_a_borrowed_lexicon_word_that_ends_other_names_is_not_one_things(flat: Vocabulary) -> None:
     # the plural said alone of blinds in five rooms asks which, offering all (knic.language.quantified)
     asked = understand("close the blinds", flat, speaker="dawn").question
-    for blind in ("bedroom blinds", "conservatory blinds", "kitchen blind", "living room blinds", "study blind"):
+    for blind in (
+        "bedroom blinds",
+        "conservatory blinds",
+        "kitchen blind",
+        "living room blinds",
+        "study blind",
+    ):
         assert f"the {blind}" in asked
     assert "all of them" in asked
     devices = [f["device"] for f in frames_read(flat, "close all the blinds", "dawn")]
