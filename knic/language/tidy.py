@@ -147,7 +147,7 @@ def digits_read(
 #: a form's labels typed with a colon ("Item: tablet. Source: cane sofa. Destination: me"): what each says
 _LABELS = {"item": "", "object": "", "thing": "", "source": "from", "origin": "from", "destination": "to"}
 #: words after a digit that show it numbers a thing ("lamp 2 to 35", "blind 1 up"), as none follows a "to"
-_NUMBERED_BY = frozenset(("to", "at", "on", "off", "in", "into", "up", "down", "and", "or"))
+_NUMBERED_BY = frozenset(("to", "at", "on", "off", "in", "into", "up", "down", "and", "or", "fully"))
 #: a number said as a list's mark: "(1)", "2)", "3." (the dot one only opening a sentence)
 _STEP_NUMBER = re.compile(r"\(\d{1,2}\)|\d{1,2}[.)]")
 

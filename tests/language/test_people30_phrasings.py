@@ -6,7 +6,7 @@ apartment as well:
 * "report the location of", "tell me the location of" (an engineer's, a log's words) search; "teleport to"
   (a child's word from games) goes; a learner's "wait me there" is "wait for me there" (``commands.yaml``);
 * "loft" is a word for a kind of room, so a "loft room" is also "the loft" (``synonyms.yaml``);
-* a digit before a word "to" or "for" never comes before ("to", "at", "on", "off", "in", "up", "and", ...;
+* a digit before a word "to" or "for" never comes before ("to", "at", "on", "off", "in", "up", "and", "fully";
   not "closed": "blinds 1 and 2 closed" stays as read before)
   numbers a thing: "bench lamp 2 to 35 percent", "blind 2 in the conservatory", "lamp 2 on at 60%"
   (``knic.language.tidy``); "two" ending a name said with the word before it ("bench lamp two: 100%") is the
@@ -138,6 +138,10 @@ def test_the_loft_is_the_loft_room(text: str, frames: Frames) -> None:
                 {"frame": "OPERATING", "device": "conservatory_blind_1", "state": "closed"},
                 {"frame": "OPERATING", "device": "conservatory_blind_2", "state": "closed"},
             ],
+        ),
+        (
+            "Conservatory blind 2 fully down",
+            [{"frame": "OPERATING", "device": "conservatory_blind_2", "state": "0"}],
         ),
         # a digit for "to" stays so where a place, a thing or a level follows
         ("take the drill 2 the kitchen", [{"frame": "BRINGING", "theme": "drill", "goal": "kitchen"}]),
