@@ -68,7 +68,7 @@ def referent(
                 ):
                     found.append(value)
         if found:
-            return found if chunk.text == "them" else found[-1:]
+            return found if chunk.text in ("them", "em") else found[-1:]  # "em": them, said short
     said = [f.get(r) for g in groups for f in g for r in _REFERRED_ROLES]
     people = any(s and vocabulary.is_subtype(vocabulary.type_of(s) or "", "person") for s in said)
     if wanted == "person" and "item" in categories and not people:  # "my teddy's on the sofa, put him ..."

@@ -43,6 +43,8 @@ apartment as well:
 * a sentence after a request that says how someone is in words that name nothing of the world ("turn off
   the fairy lights? Marnie's asleep", "..., Brendan's still asleep") is a remark, not a person to operate
   (``knic.language.sentences``); "blease" (an Arabic speaker's "b" for "p") is "please" (``commands.yaml``).
+* "em" said after several things ("grab the drill and the tape measure and bring em to the conservatory") is
+  all of them, as "them" is (``knic.language.chains``).
 * a request for a thing the world lacks, with talk beside it that has no verb ("bring me my knitting, it is
   in my bag") or that the speaker says of themselves ("bring me bread, I make soup"), is refused naming the
   thing, not "it" or the soup; a learner's request with no article ("bring me bread") counts
@@ -538,3 +540,27 @@ def test_how_someone_is_said_after_a_request(
     vocabulary: Vocabulary, erl: bool, text: str, frames: Frames
 ) -> None:
     assert _said(vocabulary, erl, text, "philippa") == frames
+
+
+@pytest.mark.parametrize(
+    ("erl", "text", "themes", "goal"),
+    [
+        (
+            False,
+            "grab the drill and the tape measure and bring em to the conservatory",
+            ["drill", "tape_measure"],
+            "conservatory",
+        ),
+        (
+            True,
+            "get the apple and the lemon and bring em to the dining table",
+            ["apple", "lemon"],
+            "dining_table",
+        ),
+    ],
+)
+def test_em_after_several_things_is_all_of_them(
+    vocabulary: Vocabulary, erl: bool, text: str, themes: list[str], goal: str
+) -> None:
+    frames = _said(vocabulary, erl, text, "brendan")
+    assert [f["theme"] for f in frames if f["frame"] == "BRINGING" and f.get("goal") == goal] == themes
