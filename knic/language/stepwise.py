@@ -1,7 +1,8 @@
 """Steps said one after another, as people give a robot a route or a list of jobs: with less than a whole
 sentence each ("go to the bedroom, then the kitchen", "navigate to the living room, then, um, to the dining
-room, and grab the candle"), out of order ("bring me the coke, but first switch on the light"), or joined by
-a learner's words ("take the apple, and after you bring it to Sven", "you go to search Hugo").
+room, and grab the candle"), out of order ("bring me the coke, but first switch on the light", "in the
+kitchen, find the lemon"), or joined by a learner's words ("take the apple, and after you bring it to Sven",
+"you go to search Hugo").
 
 Called from :func:`knic.language.learners.learners_read` on the chunks of a command.
 """
@@ -14,8 +15,24 @@ from knic.language.vocabulary import Vocabulary
 
 def steps_read(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
     """The chunks with the steps of this module said whole, in the order they are to be done."""
-    said = first_put_first(after_you_in_order(gone_to_do(before_to(chunks))))
+    said = first_put_first(after_you_in_order(gone_to_do(before_to(place_said_first(chunks, vocabulary)))))
     return each_given(goings_repeated(said, vocabulary), vocabulary)
+
+
+def place_said_first(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
+    """ "In the kitchen, find the lemon", "in the bedroom turn on the light", "from the fridge bring me the
+    milk", "on the dining table put the apple": a room or a piece of furniture said first, with its
+    preposition, before the verb, is said after the first action ("find the lemon in the kitchen"), where it
+    says where that action is done."""
+    at = 1 + (len(chunks) > 2 and chunks[1].kind == "det")
+    opens = (
+        len(chunks) > at + 1 and chunks[0].kind == "prep" and chunks[0].role in ("place", "source", "goal")
+    )
+    if not opens or not _place(chunks[at], vocabulary) or chunks[at + 1].kind != "verb":
+        return chunks
+    rest = range(at + 2, len(chunks) - 1)
+    end = next((j for j in rest if chunks[j].kind == "join" and chunks[j + 1].kind == "verb"), len(chunks))
+    return [*chunks[at + 1 : end], *chunks[: at + 1], *chunks[end:]]
 
 
 def first_put_first(chunks: list[Chunk]) -> list[Chunk]:

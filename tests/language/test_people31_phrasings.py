@@ -36,7 +36,9 @@ Found by probing the voices beyond the set:
   with you to ..." is taken there, as "ask Ines to come to the kitchen" is (``commands.yaml``);
 * "bring the banana to Amara and the pear to Ines": each thing goes to its own person, not both to the last
   said; "go to the kitchen, but before that switch on the light" switches first; a learner's "before to go
-  to the kitchen, ..." is "before going" (``knic.language.stepwise``);
+  to the kitchen, ..." is "before going"; a place said first with its preposition ("In the kitchen, find the
+  lemon", "in the bedroom turn on the light", "from the fridge bring me the milk") is where the first action
+  is done (``knic.language.stepwise``);
 * where someone is, said out or guessed after a search ("find Hugo, he is in the kitchen", "she should be in
   the bedroom", "he is probably in the study") is where to look, as "he's in the den" was; "like" said as a
   filler between a preposition and a name ("bring it to Yuki at like the entrance") is dropped; "is he in the
@@ -473,4 +475,39 @@ def test_is_he_there_asked_after_a_search(vocabulary: Vocabulary) -> None:
     ]
     assert frames_read(vocabulary, "where is tracy? is she in the kitchen?") == [
         {"frame": "SEARCHING", "theme": "tracy", "ground": "kitchen"}
+    ]
+
+
+@pytest.mark.parametrize(
+    ("file", "text", "frames"),
+    [
+        (
+            ARENA,
+            "In the kitchen, find the lemon",
+            [{"frame": "SEARCHING", "theme": "lemon", "ground": "kitchen"}],
+        ),
+        (
+            ARENA,
+            "In the bedroom turn on the light",
+            [{"frame": "OPERATING", "device": "bedroom_light", "state": "on"}],
+        ),
+        (
+            HOUSE,
+            "from the fridge bring me the butter",
+            [{"frame": "BRINGING", "theme": "butter", "source": "fridge", "beneficiary": "me"}],
+        ),
+        (
+            HOUSE,
+            "on the coffee table put the newspaper",
+            [{"frame": "PLACING", "theme": "newspaper", "goal": "coffee_table"}],
+        ),
+    ],
+)
+def test_a_place_said_before_the_verb(file: str, text: str, frames: list[dict[str, str]]) -> None:
+    assert _read(file, text) == frames
+
+
+def test_a_place_said_before_the_verb_erl(vocabulary: Vocabulary) -> None:
+    assert frames_read(vocabulary, "in the living room, look for the remote") == [
+        {"frame": "SEARCHING", "theme": "remote", "ground": "living_room"}
     ]
