@@ -14,7 +14,9 @@ converted narrowboat moored beside a cottage garden and ``people28`` a mews hous
 garden, likewise; ``people29`` a ground-floor flat adapted for a wheelchair user, with a wet room, a ceiling
 hoist and a courtyard garden; ``people30`` a semi-detached suburban house with a conservatory, a garage
 converted to a workshop and a loft room up a ladder; ``people31`` the commands of robot competitions
-(RoboCup@Home's GPSR, the ERL) in an arena set up as a small flat and in the ERL apartment, likewise). Each
+(RoboCup@Home's GPSR, the ERL) in an arena set up as a small flat and in the ERL apartment; ``people32``
+ordinary native speakers in a two-storey family house, weighted to relative places, chains and levels,
+likewise). Each
 case is a command with its gold frames and goals, or with a word the refusal (``reject``) or the question back
 (``question``) must contain. Cases run against the ERL apartment or, with ``world: other``, against a
 different house (``tests/fixtures/language/other_world``), to show that the language code knows no world's
@@ -80,6 +82,7 @@ SETS = {
     "people29-dev": FIXTURES / "people29" / "dev.yaml",
     "people30-dev": FIXTURES / "people30" / "dev.yaml",
     "people31-dev": FIXTURES / "people31" / "dev.yaml",
+    "people32-dev": FIXTURES / "people32" / "dev.yaml",
 }
 OTHER_WORLD = FIXTURES / "other_world" / "problem.pddl"
 _MAIN = {"MOTION": ("goal",), "OPERATING": ("device", "state")}
