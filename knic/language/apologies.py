@@ -19,6 +19,8 @@
 * a hedged question about where a thing is ("I don't suppose the ice cream is in the chest freezer, is
   it?", "I wonder if the keys are on the hall table", "the ice cream isn't in the freezer, is it?"): asked
   plainly, "is the ice cream in the chest freezer" (:func:`hedged_asked`).
+* a learner's "why you don't bring me the thermos?" is the suggestion "why don't you ...", not "you don't"
+  that says not to (:func:`suggested`);
 * a guess at where, a place said alone after a question of where a thing or person is ("where'd I leave my
   sunglasses, the conservatory?"): where to look (:func:`guessed_where`).
 """
@@ -201,4 +203,19 @@ def guessed_where(segments: list[list[str]], chunks: Chunks) -> list[list[str]]:
             out[-1] = [*out[-1], "in", *segment]
             continue
         out.append(segment)
+    return out
+
+
+#: a learner's order of a suggestion ("why you don't bring me the thermos?"): "why don't you"
+_WHY_YOU = (["why", "you", "don't"], ["why", "you", "do", "not"], ["why", "you", "not"])
+
+
+def suggested(segments: list[list[str]]) -> list[list[str]]:
+    """The segments with a learner's "why you don't ..." (Arabic, Persian and other speakers keep the
+    statement's order in a question) said as "why don't you ...", a suggestion that asks for what follows,
+    not "you don't" that says not to."""
+    out = []
+    for segment in segments:
+        said = next((w for w in _WHY_YOU if segment[: len(w)] == w), None)
+        out.append(["why", "don't", "you", *segment[len(said) :]] if said else segment)
     return out

@@ -99,6 +99,13 @@ def settled(reading: Reading, vocabulary: Vocabulary) -> Reading:
         if frame.kind == "BRINGING"
         and any(f.kind == "BRINGING" and frame.args.items() <= f.args.items() for f in frames[i + 1 :])
     }
+    # "i need the charger, it is on my desk, bring it please": the bringing said again with less is the same
+    drop |= {
+        i
+        for i, frame in enumerate(frames)
+        if frame.kind == "BRINGING"
+        and any(f.kind == "BRINGING" and frame.args.items() < f.args.items() for f in frames[:i])
+    }
     if not drop:
         return reading
     kept = [i for i in range(len(frames)) if i not in drop]

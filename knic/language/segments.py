@@ -29,6 +29,7 @@ from knic.language.apologies import (
     late_marker_placed,
     narrowed,
     or_dropped,
+    suggested,
 )
 from knic.language.chunks import Chunk
 
@@ -184,7 +185,7 @@ def sorry_repairs(
     under the cabinets too"); "or" and a late "i mean" around the correction are read with it
     (:mod:`knic.language.apologies`)."""
     # "i don't suppose the ice cream is in the freezer, is it?", "where'd i leave my keys, the kitchen?"
-    segments = guessed_where(hedged_asked(segments), chunks)
+    segments = guessed_where(hedged_asked(suggested(segments)), chunks)  # "why you don't ..." too
     words = [t for segment in segments for t in segment]
     out: list[list[str]] = []
     at = 0

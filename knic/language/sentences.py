@@ -165,7 +165,10 @@ _MEANS_TO = (["wants", "to"], ["needs", "to"], ["has", "to"], ["is", "going", "t
 def _wish_of_another(segment: list[str], chunks: Callable[[Sequence[str]], list[Chunk]]) -> bool:
     """Whether a sentence says what someone else means to do, with a verb that is no action of the robot's
     ("Colby wants to finish it", "she needs to practise"; not "Colby wants to go to the kitchen"): a
-    reason."""
+    reason; so is the speaker's own "i want read newspaper" (a learner's, with no "to")."""
+    if segment[:2] in (["i", "want"], ["i", "need"]) and len(segment) > 3:
+        then = chunks(segment[2:3])
+        return bool(then) and then[0].kind == "unknown"
     for at in (1, 2, 3):
         said = next((m for m in _MEANS_TO if segment[at : at + len(m)] == m), None)
         if said is not None:

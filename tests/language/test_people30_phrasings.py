@@ -45,6 +45,10 @@ apartment as well:
   (``knic.language.sentences``); "blease" (an Arabic speaker's "b" for "p") is "please" (``commands.yaml``).
 * "em" said after several things ("grab the drill and the tape measure and bring em to the conservatory") is
   all of them, as "them" is (``knic.language.chains``).
+* a bringing said again with less ("I need the laptop charger, it is on my desk, bring it please") is the
+  same one, kept once with where it is (``knic.language.chains``); the speaker's own "I want read newspaper"
+  (a learner's, with no "to") after a request is a reason (``knic.language.sentences``); a learner's "why
+  you don't bring me ...?" is "why don't you ..." (``knic.language.apologies``).
 * a request for a thing the world lacks, with talk beside it that has no verb ("bring me my knitting, it is
   in my bag") or that the speaker says of themselves ("bring me bread, I make soup"), is refused naming the
   thing, not "it" or the soup; a learner's request with no article ("bring me bread") counts
@@ -564,3 +568,50 @@ def test_em_after_several_things_is_all_of_them(
 ) -> None:
     frames = _said(vocabulary, erl, text, "brendan")
     assert [f["theme"] for f in frames if f["frame"] == "BRINGING" and f.get("goal") == goal] == themes
+
+
+@pytest.mark.parametrize(
+    ("erl", "speaker", "text", "frames"),
+    [
+        (
+            False,
+            "hazem",
+            "I need the laptop charger, it is on my desk, bring it please",
+            [{"frame": "BRINGING", "theme": "laptop_charger", "source": "hazem_desk", "beneficiary": "me"}],
+        ),
+        (
+            False,
+            "lyudmila",
+            "Bring me glasses, I want read newspaper",
+            [{"frame": "BRINGING", "theme": "reading_glasses", "beneficiary": "me"}],
+        ),
+        (
+            False,
+            "hazem",
+            "why you don't bring me the thermos?",
+            [{"frame": "BRINGING", "theme": "thermos", "beneficiary": "me"}],
+        ),
+        (
+            True,
+            "annie",
+            "I need the tissues, they are on the bedside table, bring them please",
+            [{"frame": "BRINGING", "theme": "tissues", "source": "bedside_table", "beneficiary": "me"}],
+        ),
+        (
+            True,
+            "annie",
+            "Bring me the tablet, I want watch film",
+            [{"frame": "BRINGING", "theme": "tablet", "beneficiary": "me"}],
+        ),
+        (
+            True,
+            "annie",
+            "why you don't open the blinds?",
+            [{"frame": "OPERATING", "device": "bedroom_blinds", "state": "open"}],
+        ),
+    ],
+)
+def test_learners_wishes_and_suggestions(
+    vocabulary: Vocabulary, erl: bool, speaker: str, text: str, frames: Frames
+) -> None:
+    assert _said(vocabulary, erl, text, speaker) == frames
