@@ -435,3 +435,14 @@ def test_looking_into_a_place_searches_there(vocabulary: Vocabulary, text: str, 
     result = understand(text, vocabulary)
     assert result.accepted, result.reason
     assert [f.to_dict() for f in result.frames] == [{"frame": "SEARCHING", "theme": "mug", "ground": ground}]
+
+
+def test_a_command_too_long_to_read_is_refused_saying_so(vocabulary: Vocabulary) -> None:
+    from knic.language.understanding import MAX_WORDS
+
+    pasted = "bring me the mug " * 2000  # 8,000 words: the reader would take minutes
+    result = understand(pasted, vocabulary)
+    assert not result.accepted and not result.frames and not result.goals
+    assert result.reason == f"the command is 8000 words long: I read at most {MAX_WORDS}; say it in parts"
+    rambling = "well, you know, " * 35 + "bring me the mug"  # 144 words: still read
+    assert understand(rambling, vocabulary).accepted
