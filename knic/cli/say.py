@@ -137,10 +137,10 @@ def _audio(args: argparse.Namespace) -> bytes:
     """
     from core.errors import AudioError
     from core.inputs import check_input_file
-    from knic.language.audio import load_pcm
+    from knic.language.audio import command_pcm
 
     check_input_file(args.wav, MAX_AUDIO_BYTES, "audio file", AudioError)  # never read /dev/zero
-    return load_pcm(args.wav)
+    return command_pcm(args.wav)
 
 
 def _asked(args: argparse.Namespace) -> dict[str, Any] | None:

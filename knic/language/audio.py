@@ -178,6 +178,26 @@ def load_audio(path: str | Path) -> npt.NDArray[np.int16]:
     return np.frombuffer(load_pcm(path), dtype="<i2").astype(np.int16)
 
 
+#: the longest recording ``knic say`` takes as one spoken command; a 36 s recording took 18 s to hear
+MAX_COMMAND_S = 30.0
+
+
+def command_pcm(path: str | Path) -> bytes:
+    """A WAV file of one spoken command as :func:`load_pcm` returns it.
+
+    Raises:
+        AudioError: as :func:`read_wav`; the recording is longer than :data:`MAX_COMMAND_S`.
+    """
+    pcm = load_pcm(path)
+    seconds = len(pcm) / 2 / MODEL_RATE
+    if seconds > MAX_COMMAND_S:
+        raise AudioError(
+            f"{path}: {seconds:.1f} s of audio, and one spoken command is at most {MAX_COMMAND_S:.0f} s"
+            " (knic listen --wav cuts a longer recording into utterances)"
+        )
+    return pcm
+
+
 def load_pcm(path: str | Path) -> bytes:
     """A WAV file as the decoders' raw audio: 16 kHz mono 16-bit little-endian PCM bytes (no padding).
 

@@ -282,10 +282,10 @@ def start_passes(
     def samples() -> bytes:
         from core.errors import AudioError
         from core.inputs import check_input_file
-        from knic.language.audio import load_pcm
+        from knic.language.audio import command_pcm
 
         check_input_file(wav, MAX_AUDIO_BYTES, "audio file", AudioError)  # never read /dev/zero
-        return load_pcm(wav)
+        return command_pcm(wav)
 
     def ngram(member: str | Path) -> Callable[[], Decoded | None]:
         def job() -> Decoded | None:

@@ -95,3 +95,22 @@ def test_missing_empty_and_unsupported_wavs_are_refused(tmp_path: Path) -> None:
     truncated.write_bytes(b"RIFF\x10\x00\x00\x00WAVEfmt ")
     with pytest.raises(AudioError, match="without a 'fmt ' or 'data' chunk"):
         load_audio(truncated)
+
+
+def test_a_recording_too_long_for_one_command_is_refused_saying_so(tmp_path: Path) -> None:
+    from knic.language.audio import MAX_COMMAND_S, command_pcm
+
+    fits = command_pcm(write_wav(tmp_path / "fits.wav", tone(16000, seconds=MAX_COMMAND_S - 1), 16000))
+    assert len(fits) == 2 * int(16000 * (MAX_COMMAND_S - 1))
+    with pytest.raises(AudioError, match=r"40\.0 s of audio, and one spoken command is at most 30 s"):
+        command_pcm(write_wav(tmp_path / "long.wav", tone(16000, seconds=40), 16000))
+
+
+def test_knic_say_refuses_a_recording_too_long_for_one_command(
+    tmp_path: Path, capsys: pytest.CaptureFixture[str]
+) -> None:
+    from knic.cli import main
+
+    long = write_wav(tmp_path / "long.wav", tone(16000, seconds=40), 16000)
+    assert main(["say", str(long)]) == 2
+    assert "40.0 s of audio, and one spoken command is at most 30 s" in capsys.readouterr().err
