@@ -21,6 +21,9 @@
   plainly, "is the ice cream in the chest freezer" (:func:`hedged_asked`).
 * a learner's "why you don't bring me the thermos?" is the suggestion "why don't you ...", not "you don't"
   that says not to (:func:`suggested`);
+* the way there said as directions: "down cellar", "up attic" (no article before a kind of room) are "down
+  to the cellar", so that the room is named where the home has none; "take a left into the kitchen" is "go
+  into the kitchen"; a turn said alone is dropped (:func:`directions_read`);
 * a guess at where, a place said alone after a question of where a thing or person is ("where'd I leave my
   sunglasses, the conservatory?"): where to look (:func:`guessed_where`).
 """
@@ -30,6 +33,7 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 
 from knic.language.chunks import Chunk
+from knic.language.shortnames import room_words
 
 Chunks = Callable[[Sequence[str]], list[Chunk]]
 #: what a speaker says after the thing that corrects what they said (as knic.language.segments reads them)
@@ -218,4 +222,39 @@ def suggested(segments: list[list[str]]) -> list[list[str]]:
     for segment in segments:
         said = next((w for w in _WHY_YOU if segment[: len(w)] == w), None)
         out.append(["why", "don't", "you", *segment[len(said) :]] if said else segment)
+    return out
+
+
+#: where "down" or "up" goes to a kind of room said with no article ("go down cellar", "up attic")
+_UP_DOWN = frozenset({"down", "up"})
+#: a driver's turn said on the way ("take a left into the kitchen", "bang a u-ey"): how, not where
+_TURNS = frozenset({"left", "right", "uey", "uie"})
+_TURNING = frozenset({"take", "bang", "hang", "hook", "make", "do", "pull"})
+_INTO = frozenset({"into", "in", "to", "through", "onto"})
+
+
+def directions_read(segments: list[list[str]]) -> list[list[str]]:
+    """The segments with the way there said as people give directions: "down cellar" and "up attic" (New
+    England, and elsewhere, with no article before a kind of room) are "down to the cellar", "up to the
+    attic", so that the room is named even where the home has none; "take a left into the kitchen", "bang a
+    left into ..." (American) are "go into ..."; a turn said alone ("bang a u-ey and go back ...") is dropped.
+    """
+    rooms = room_words()
+    out = []
+    for segment in segments:
+        words: list[str] = []
+        i = 0
+        while i < len(segment):
+            token = segment[i]
+            turn = segment[i : i + 3]
+            if len(turn) == 3 and turn[0] in _TURNING and turn[1] == "a" and turn[2] in _TURNS:
+                nxt = segment[i + 3] if i + 3 < len(segment) else ""
+                words += ["go"] if nxt in _INTO else []
+                i += 3
+                continue
+            words.append(token)
+            if token in _UP_DOWN and i + 1 < len(segment) and segment[i + 1] in rooms:
+                words += ["to", "the"]
+            i += 1
+        out.append(words)
     return out

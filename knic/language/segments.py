@@ -24,6 +24,7 @@ from itertools import pairwise
 
 from knic.language.apologies import (
     adds,
+    directions_read,
     guessed_where,
     hedged_asked,
     late_marker_placed,
@@ -185,7 +186,7 @@ def sorry_repairs(
     under the cabinets too"); "or" and a late "i mean" around the correction are read with it
     (:mod:`knic.language.apologies`)."""
     # "i don't suppose the ice cream is in the freezer, is it?", "where'd i leave my keys, the kitchen?"
-    segments = guessed_where(hedged_asked(suggested(segments)), chunks)  # "why you don't ..." too
+    segments = guessed_where(hedged_asked(suggested(directions_read(segments))), chunks)  # "why you don't"
     words = [t for segment in segments for t in segment]
     out: list[list[str]] = []
     at = 0

@@ -80,6 +80,11 @@ def _word_lists() -> tuple[frozenset[str], tuple[str, ...], frozenset[str]]:
     return frozenset(lists[0]), tuple(sorted(lists[1], key=len, reverse=True)), frozenset(lists[2])
 
 
+def room_words() -> frozenset[str]:
+    """The words that alone name a kind of room (``room_words`` of ``synonyms.yaml``: "cellar", "attic")."""
+    return _word_lists()[0]
+
+
 @lru_cache(maxsize=1)
 def english_nearer() -> tuple[frozenset[str], ...]:
     """The nearer subsets of ``synonyms.yaml`` (``nearer``: the bathroom's words, the toilet's), read once.

@@ -49,6 +49,9 @@ apartment as well:
   same one, kept once with where it is (``knic.language.chains``); the speaker's own "I want read newspaper"
   (a learner's, with no "to") after a request is a reason (``knic.language.sentences``); a learner's "why
   you don't bring me ...?" is "why don't you ..." (``knic.language.apologies``).
+* the way there said as directions: "go down cellar", "up attic" name the room (refused where the home has
+  none, as "down the cellar" is); "take a left into the kitchen", "bang a left into ..." go into it
+  (``knic.language.apologies``; the kinds of room from ``knic.language.shortnames``).
 * a request for a thing the world lacks, with talk beside it that has no verb ("bring me my knitting, it is
   in my bag") or that the speaker says of themselves ("bring me bread, I make soup"), is refused naming the
   thing, not "it" or the soup; a learner's request with no article ("bring me bread") counts
@@ -615,3 +618,36 @@ def test_learners_wishes_and_suggestions(
     vocabulary: Vocabulary, erl: bool, speaker: str, text: str, frames: Frames
 ) -> None:
     assert _said(vocabulary, erl, text, speaker) == frames
+
+
+@pytest.mark.parametrize(
+    ("erl", "text", "word"),
+    [
+        (False, "Go down cellar and grab the extension lead", "cellar"),
+        (False, "Run down cellar and grab the torch", "cellar"),
+        (True, "go down cellar and bring me the apple", "cellar"),
+        (True, "go up attic", "attic"),
+    ],
+)
+def test_down_cellar_names_the_cellar(vocabulary: Vocabulary, erl: bool, text: str, word: str) -> None:
+    result = understand(text, vocabulary if erl else _house(), speaker="annie" if erl else "brendan")
+    assert not result.accepted and word in result.reason
+
+
+@pytest.mark.parametrize(
+    ("erl", "text", "frames"),
+    [
+        (
+            False,
+            "Bang a left into the kitchen and grab me the orange juice from the fridge",
+            [
+                {"frame": "MOTION", "goal": "kitchen"},
+                {"frame": "BRINGING", "theme": "orange_juice", "source": "fridge", "beneficiary": "me"},
+            ],
+        ),
+        (False, "Take a left into the kitchen and wait there", [{"frame": "MOTION", "goal": "kitchen"}]),
+        (True, "hang a right into the bedroom and wait there", [{"frame": "MOTION", "goal": "bedroom"}]),
+    ],
+)
+def test_a_turn_into_a_room_goes_there(vocabulary: Vocabulary, erl: bool, text: str, frames: Frames) -> None:
+    assert _said(vocabulary, erl, text, "brendan") == frames
