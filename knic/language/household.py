@@ -140,11 +140,18 @@ def gone_asked(tokens: list[str]) -> list[str]:
 
 def binned(tokens: list[str]) -> list[str]:
     """ "bin the pizza box": "bin" said as a verb, right before a determiner and after none, throws the thing
-    away."""
+    away; so do "dispose of", "get rid of" and "throw out" before one ("dispose of the cardboard box")."""
     for i, token in enumerate(tokens[:-1]):
         if token == "bin" and tokens[i + 1] in _ARTICLES and (i == 0 or tokens[i - 1] not in _NOT_BINNED):
             return [*tokens[:i], "toss", "away", *tokens[i + 1 :]]
+        said = next((n for n in (2, 3) if tokens[i : i + n] in _RID), 0)
+        if said and tokens[i + said : i + said + 1] and tokens[i + said] in _ARTICLES:
+            return [*tokens[:i], "toss", "away", *tokens[i + said :]]
     return tokens
+
+
+#: what throws a thing away, said before it ("get rid of the tissues")
+_RID = (["dispose", "of"], ["get", "rid", "of"], ["throw", "out"])
 
 
 def words_tidied(tokens: list[str]) -> list[str]:

@@ -45,6 +45,8 @@ Found by probing the voices beyond the set:
   kitchen?" after a question or a request ("Find Hugo. Is he in the kitchen?") searches there
   (``knic.language.contracted``);
 * "approach the dining table", "enter the kitchen", "visit the kitchen": a going there (``commands.yaml``);
+* "dispose of the cardboard box", "get rid of the tissues", "throw out the cloth": into the world's one bin,
+  as "throw away" and "bin the ..." are; a place said after still wins (``knic.language.household``);
 * "crank it up to full", "whack it up to full", "bump it up to 60", "knock it down to twenty" (informal
   English for turning) set that level; "carry on to the study" goes there (``commands.yaml``);
 * a learner's "bring the apple at Annie", "bring at me the glasses" ("a", "à"): "to" before a person
@@ -510,4 +512,19 @@ def test_a_place_said_before_the_verb(file: str, text: str, frames: list[dict[st
 def test_a_place_said_before_the_verb_erl(vocabulary: Vocabulary) -> None:
     assert frames_read(vocabulary, "in the living room, look for the remote") == [
         {"frame": "SEARCHING", "theme": "remote", "ground": "living_room"}
+    ]
+
+
+def test_disposed_of_into_the_one_bin(vocabulary: Vocabulary) -> None:
+    assert frames_read(vocabulary, "Dispose of the cardboard box") == [
+        {"frame": "PLACING", "theme": "cardboard_box", "goal": "bin"}
+    ]
+    assert frames_read(vocabulary, "get rid of the tissues") == [
+        {"frame": "PLACING", "theme": "tissues", "goal": "bin"}
+    ]
+    assert _read(ARENA, "throw out the cloth") == [
+        {"frame": "PLACING", "theme": "cloth", "goal": "trash_bin"}
+    ]
+    assert _read(ARENA, "get rid of the cloth in the sink") == [
+        {"frame": "PLACING", "theme": "cloth", "goal": "sink"}
     ]
