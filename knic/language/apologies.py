@@ -24,6 +24,9 @@
 * the way there said as directions: "down cellar", "up attic" (no article before a kind of room) are "down
   to the cellar", so that the room is named where the home has none; "take a left into the kitchen" is "go
   into the kitchen"; a turn said alone is dropped (:func:`directions_read`);
+* where the thing asked for is, said after the request ("give the football to Colby, I found it on the
+  landing", "..., it is on the landing"): where to take it from, not where the person given it is
+  (:func:`where_it_is`);
 * a guess at where, a place said alone after a question of where a thing or person is ("where'd I leave my
   sunglasses, the conservatory?"): where to look (:func:`guessed_where`).
 """
@@ -257,4 +260,38 @@ def directions_read(segments: list[list[str]]) -> list[list[str]]:
                 words += ["to", "the"]
             i += 1
         out.append(words)
+    return out
+
+
+#: what opens a sentence saying where the thing just asked for is ("it is on the landing", "I found it ...")
+_IT_IS = (
+    *([s, b] for s in ("it", "they") for b in ("is", "are", "was", "were", "'s")),
+    *(["i", v, o] for v in ("found", "left", "saw", "put", "dropped") for o in ("it", "them")),
+)
+_ON = frozenset({"on", "in", "at", "under", "by", "inside", "near"})
+
+
+def where_it_is(segments: list[list[str]], chunks: Chunks) -> list[list[str]]:
+    """The segments with a sentence after a request that says where its thing is ("give the football to Colby,
+    I found it on the landing", "..., it is on the landing") said as where to take it from ("... from the
+    landing"): so it is not taken for where the person given it is."""
+    out: list[list[str]] = []
+    for segment in segments:
+        opening = next((o for o in _IT_IS if segment[: len(o)] == o), None)
+        acted = any(c.kind == "verb" for s in out for c in chunks(s))
+        if (
+            opening is None
+            or not acted
+            or len(segment) <= len(opening) + 1
+            or segment[len(opening)] not in _ON
+        ):
+            out.append(segment)
+            continue
+        place = segment[len(opening) + 1 :]
+        said = [c for c in chunks(place) if c.kind != "det"]
+        placed = len(said) == 1 and said[0].kind == "entity" and bool(said[0].terms)
+        if not placed or not all(t.type in ("room", "furniture") for t in said[0].terms) or "from" in out[-1]:
+            out.append(segment)
+            continue
+        out[-1] = [*out[-1], "from", *place]
     return out

@@ -31,6 +31,7 @@ from knic.language.apologies import (
     narrowed,
     or_dropped,
     suggested,
+    where_it_is,
 )
 from knic.language.chunks import Chunk
 
@@ -187,6 +188,7 @@ def sorry_repairs(
     (:mod:`knic.language.apologies`)."""
     # "i don't suppose the ice cream is in the freezer, is it?", "where'd i leave my keys, the kitchen?"
     segments = guessed_where(hedged_asked(suggested(directions_read(segments))), chunks)  # "why you don't"
+    segments = where_it_is(segments, chunks)  # "give the football to colby, i found it on the landing"
     words = [t for segment in segments for t in segment]
     out: list[list[str]] = []
     at = 0

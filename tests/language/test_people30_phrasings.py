@@ -52,6 +52,9 @@ apartment as well:
 * the way there said as directions: "go down cellar", "up attic" name the room (refused where the home has
   none, as "down the cellar" is); "take a left into the kitchen", "bang a left into ..." go into it
   (``knic.language.apologies``; the kinds of room from ``knic.language.shortnames``).
+* where the thing is, said after a request to give it to someone ("give the football to Colby, I found it
+  on the landing", "take it to Colby. It is on the landing.") is where to take it from
+  (``knic.language.apologies``).
 * a request for a thing the world lacks, with talk beside it that has no verb ("bring me my knitting, it is
   in my bag") or that the speaker says of themselves ("bring me bread, I make soup"), is refused naming the
   thing, not "it" or the soup; a learner's request with no article ("bring me bread") counts
@@ -651,3 +654,34 @@ def test_down_cellar_names_the_cellar(vocabulary: Vocabulary, erl: bool, text: s
 )
 def test_a_turn_into_a_room_goes_there(vocabulary: Vocabulary, erl: bool, text: str, frames: Frames) -> None:
     assert _said(vocabulary, erl, text, "brendan") == frames
+
+
+@pytest.mark.parametrize(
+    ("erl", "text", "frames"),
+    [
+        (
+            False,
+            "Give the football to Colby, I found it on the landing",
+            [{"frame": "BRINGING", "theme": "football", "source": "landing", "beneficiary": "colby"}],
+        ),
+        (
+            False,
+            "bring the drill to the conservatory, I left it on the workbench",
+            [{"frame": "BRINGING", "theme": "drill", "source": "workbench", "goal": "conservatory"}],
+        ),
+        (
+            True,
+            "take the tablet to tracy. It is on the side table.",
+            [{"frame": "BRINGING", "theme": "tablet", "source": "side_table", "beneficiary": "tracy"}],
+        ),
+        (
+            True,
+            "give the remote to annie, I saw it on the coffee table",
+            [{"frame": "BRINGING", "theme": "remote", "source": "coffee_table", "beneficiary": "annie"}],
+        ),
+    ],
+)
+def test_where_the_thing_is_said_after_giving_it(
+    vocabulary: Vocabulary, erl: bool, text: str, frames: Frames
+) -> None:
+    assert _said(vocabulary, erl, text, "hazem") == frames
