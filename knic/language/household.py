@@ -37,6 +37,7 @@ from knic.language.contracted import contracted
 from knic.language.dialects import dialect_words
 from knic.language.gathered import gathered
 from knic.language.gathered import gathered_up as gathered_up  # for the reader, whose module is full
+from knic.language.ordinary import ordinary_read
 from knic.language.plainorder import asked_plainly
 from knic.language.regional import regional_words
 from knic.language.restating import restated
@@ -93,7 +94,7 @@ def where_last(text: str) -> str:
     """ "chopsticks, where?", "my keys where", "annie is where?": a thing said, then "where" alone (said by
     learners and tired people, or asked back): where the thing is ("where is my keys"); else ``text``, with
     questions said in another order put back (:mod:`knic.language.plainorder`)."""
-    text = asked_plainly(text)
+    text = asked_plainly(ordinary_read(text))  # "ah go on, ...", "off the floor" (ordinary.py)
     match = _WHERE_LAST.match(text.lower())
     words = match.group("thing").split() if match else []
     if len(words) > 1 and words[-1] in ("is", "are"):  # "annie is where?", "the keys are where?": asked back
@@ -117,11 +118,11 @@ def gone_asked(tokens: list[str]) -> list[str]:
             if tokens[i - 1] in _WH and tokens[i : i + len(said)] == said:
                 tokens = [*tokens[:i], *tokens[i + len(said) :]]
     for i, token in enumerate(tokens[:-2]):
-        if token not in ("where", "where'd") or (
+        if token not in ("where", "where'd", "where's") or (
             token == "where" and tokens[i + 1] not in ("did", "has", "have")
         ):
             continue
-        start = i + 1 if token == "where'd" else i + 2
+        start = i + 1 if token in ("where'd", "where's") else i + 2  # "where's the remote gone?"
         if tokens[start] not in _ASKERS and tokens[start + 1 : start + 2] and tokens[start + 1] in _PUT_AWAY:
             # "where did emeka put the calpol", "where has tyler left my keys": where the thing is
             return [*tokens[:i], "where", "is", *tokens[start + 2 :]]
@@ -390,7 +391,7 @@ def other_one(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
         if at >= len(chunks) or chunks[at].text != "other":
             continue
         end = at + 1
-        if end < len(chunks) and (chunks[end].text == "one" or chunks[end].kind == "entity"):
+        if end < len(chunks) and (chunks[end].text in ("one", "ones") or chunks[end].kind == "entity"):
             end += 1
         said = next((c for c in reversed(chunks[:i]) if c.kind == "entity" and len(c.terms) == 1), None)
         if said is None:
@@ -405,6 +406,9 @@ def other_one(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
             others = list(
                 {t.symbol for t in vocabulary.terms if not t.is_group and t.type == kind} - {symbol}
             )
+        if len(others) > 1:  # "the kitchen blinds, no, the other ones": of those called blinds too
+            kind_word = said.terms[0].phrase.split()[-1]
+            others = [o for o in others if vocabulary.phrase_of(o).split()[-1] == kind_word]
         terms = tuple(t for t in vocabulary.terms if others and t.symbol == others[0])[:1]
         if len(others) != 1 or not terms:
             continue

@@ -1,0 +1,160 @@
+"""Phrasings from the people32 development set (ordinary native speakers in a two-storey family house the
+reader was never tuned on, ``tests/fixtures/language/people32/family_home.yaml``) the reader first got wrong,
+each tried in the ERL apartment as well:
+
+* "where's X gone?", "where's X gone to?" ask where X is, as "where has X gone?" did
+  (``knic.language.household``);
+* "go on" said alone before a request, as encouragement ("ah go on, put the heating on there"), is no going: a
+  thing the house lacks in the request is named, not "go where?"; "go on to the kitchen" still goes
+  (``knic.language.ordinary``);
+* a wish to go somewhere and then "take me" with no place ("I'd like to go to the kitchen, would you take
+  me") takes the speaker there, one action (``knic.language.ordinary``);
+* "off the floor", "from the floor", "off the ground" name no place: the taking has no source
+  (``knic.language.ordinary``);
+* "no wait, the other ones" corrects a thing of a plural name as "the other one" does, and where the world has
+  several others of its kind, the other is the one called by the same last word ("the kitchen blinds, no, the
+  other ones": the study blinds, not the curtains) (``knic.language.household``).
+"""
+
+from __future__ import annotations
+
+from functools import lru_cache
+
+import pytest
+
+from knic.language import understand
+from knic.language.vocabulary import Vocabulary
+
+from .conftest import frames_read, world_of
+
+HOME = "tests/fixtures/language/people32/family_home.yaml"
+
+
+@lru_cache(maxsize=1)
+def _home() -> Vocabulary:
+    return world_of(HOME)
+
+
+@pytest.fixture(scope="module")
+def home() -> Vocabulary:
+    """The family home's vocabulary."""
+    return _home()
+
+
+@pytest.mark.parametrize(
+    ("world", "text", "theme"),
+    [
+        ("home", "Where's the dog lead gone?", "dog_lead"),
+        ("home", "where's Peggy gone", "peggy"),
+        ("erl", "where's the tablet gone?", "tablet"),
+        ("erl", "where's my glasses gone to", "glasses"),
+    ],
+)
+def test_wheres_x_gone_asks_where_it_is(vocabulary: Vocabulary, world: str, text: str, theme: str) -> None:
+    said = _home() if world == "home" else vocabulary
+    assert frames_read(said, text, "graham" if world == "home" else "annie") == [
+        {"frame": "SEARCHING", "theme": theme}
+    ]
+
+
+@pytest.mark.parametrize(
+    ("world", "text", "word"),
+    [
+        ("home", "Ah go on, put the heating on there", "heating"),
+        ("erl", "ah go on, bring me a beer", "beer"),
+    ],
+)
+def test_go_on_before_a_request_names_what_the_home_lacks(
+    vocabulary: Vocabulary, world: str, text: str, word: str
+) -> None:
+    said = _home() if world == "home" else vocabulary
+    result = understand(text, said, speaker="fiona" if world == "home" else "annie")
+    assert not result.accepted and f"'{word}'" in result.reason
+
+
+def test_go_on_is_encouragement_only_before_a_request(vocabulary: Vocabulary) -> None:
+    assert frames_read(vocabulary, "go on then, bring me the remote") == [
+        {"frame": "BRINGING", "theme": "remote", "beneficiary": "me"}
+    ]
+    assert frames_read(vocabulary, "go on to the kitchen") == [{"frame": "MOTION", "goal": "kitchen"}]
+
+
+@pytest.mark.parametrize(
+    ("world", "text", "goal"),
+    [
+        ("home", "I'd like to go to the kitchen, would you take me", "kitchen_diner"),
+        ("home", "I want to go up to my room, can you take me there", "chloe_room"),
+        ("erl", "I need to go to the bathroom, can you take me?", "bathroom"),
+        ("erl", "I'd like to go into the bedroom. Would you take me there, please?", "bedroom"),
+    ],
+)
+def test_a_wish_to_go_then_take_me_takes_the_speaker_there(
+    vocabulary: Vocabulary, world: str, text: str, goal: str
+) -> None:
+    said, speaker = (_home(), "chloe") if world == "home" else (vocabulary, "annie")
+    assert frames_read(said, text, speaker) == [{"frame": "ACCOMPANYING", "theme": "me", "goal": goal}]
+
+
+def test_a_wish_to_go_alone_is_still_a_going(vocabulary: Vocabulary) -> None:
+    assert frames_read(vocabulary, "I want to go to the kitchen") == [{"frame": "MOTION", "goal": "kitchen"}]
+
+
+@pytest.mark.parametrize(
+    ("world", "text", "frames"),
+    [
+        (
+            "erl",
+            "pick the sponge up off the floor and put it in the bin",
+            [
+                {"frame": "TAKING", "theme": "sponge"},
+                {"frame": "PLACING", "theme": "sponge", "goal": "bin"},
+            ],
+        ),
+        (
+            "home",
+            "pick up the cushion off the floor and put it back on the armchair",
+            [
+                {"frame": "TAKING", "theme": "cushion"},
+                {"frame": "PLACING", "theme": "cushion", "goal": "armchair"},
+            ],
+        ),
+        (
+            "home",
+            "grab the tennis ball off the floor and give it to Chloe",
+            [
+                {"frame": "TAKING", "theme": "tennis_ball"},
+                {"frame": "BRINGING", "theme": "tennis_ball", "beneficiary": "chloe"},
+            ],
+        ),
+    ],
+)
+def test_the_floor_is_no_source(
+    vocabulary: Vocabulary, world: str, text: str, frames: list[dict[str, str]]
+) -> None:
+    said = _home() if world == "home" else vocabulary
+    assert frames_read(said, text, "graham" if world == "home" else "annie") == frames
+
+
+def test_the_floor_as_a_goal_is_still_refused(vocabulary: Vocabulary) -> None:
+    result = understand("put the cup on the floor", vocabulary, speaker="annie")
+    assert not result.accepted and "floor" in result.reason
+
+
+@pytest.mark.parametrize(
+    ("text", "device", "state"),
+    [
+        ("open the kitchen blinds. no wait, the other ones", "study_blinds", "open"),
+        ("close the study blinds, no sorry, the other ones", "kitchen_blinds", "closed"),
+        ("open the living room curtains, no, the other ones", "bedroom_curtains", "open"),
+    ],
+)
+def test_the_other_ones_are_those_of_the_same_name(
+    home: Vocabulary, text: str, device: str, state: str
+) -> None:
+    assert frames_read(home, text, "chloe") == [{"frame": "OPERATING", "device": device, "state": state}]
+
+
+def test_the_other_one_of_a_pair_is_unchanged(vocabulary: Vocabulary) -> None:
+    assert frames_read(vocabulary, "switch on the left light, no wait, the other one") == [
+        {"frame": "OPERATING", "device": "bedroom_right_light", "state": "on"}
+    ]
