@@ -436,6 +436,9 @@ def _operating(reader: Resolver, clause: Clause, previous: Frames, groups: list[
         named = arg.chunk.text
     if not devices:
         devices = _implicit(clause, groups, reader.vocabulary, "device", "light, dimmer or blinds")
+    way = [w for w in (*clause.unknown, *clause.missing) if w in _FLOORS]
+    if way and len({m for d in devices for m in reader.vocabulary.members(d)}) > 1:  # "the lights downstairs"
+        raise AmbiguityError(f"which rooms are {way[0]}? This world does not say: name the rooms, please")
     if clause.vague and not clause.levels:
         _ask_level(reader.vocabulary, list(dict.fromkeys(devices)))
     state = clause.verb.state if clause.verb is not None else None

@@ -108,3 +108,19 @@ def test_every_thing_of_a_kind_is_placed(vocabulary: Vocabulary) -> None:
 def test_one_thing_of_a_kind_still_asks_which(vocabulary: Vocabulary) -> None:
     result = understand("bring me a drink", vocabulary, speaker="annie")
     assert not result.accepted and "coke can" in result.question and "juice" in result.question
+
+
+TERRACE = "tests/fixtures/language/people22/terraced_house.yaml"
+
+
+@pytest.mark.parametrize("text", ["turn off the lights downstairs", "switch off all the lights upstairs"])
+def test_devices_of_a_floor_the_world_does_not_know_ask_which_rooms(text: str) -> None:
+    # a world file says no floors: every light is not the lights downstairs (knic.language.roles)
+    result = understand(text, world_of(TERRACE), speaker="kerry")
+    assert not result.accepted and not result.frames and "which rooms are" in result.question.lower()
+
+
+def test_a_device_named_with_its_floor_is_still_that_one() -> None:
+    assert frames_read(world_of(TERRACE), "turn on light in toilet downstairs", "kerry") == [
+        {"frame": "OPERATING", "device": "toilet_light", "state": "on"}
+    ]
