@@ -351,6 +351,17 @@ def called_so(terms: Sequence[Term], said: str, vocabulary: Vocabulary, place: s
     return tuple(t for t in terms if t.symbol in own) if own and own != devices else tuple(terms)
 
 
+def named_after(terms: Sequence[Term], landmarks: Sequence[Term], vocabulary: Vocabulary) -> tuple[Term, ...]:
+    """Of ``terms`` said near ``landmarks``, the one whose own name opens with the first word of a landmark's
+    name of two words or more ("the light over the dining table": the dining light, not the lounge light of
+    the same room); else ``terms``."""
+    rooms = {w for t in vocabulary.terms if vocabulary.is_subtype(t.type, "room") for w in t.phrase.split()}
+    firsts = {w[0] for w in (vocabulary.phrase_of(t.symbol).split() for t in landmarks) if len(w) > 1}
+    firsts -= rooms  # "the kitchen island" says the room, not which light of it
+    kept = tuple(t for t in terms if vocabulary.phrase_of(t.symbol).split()[0] in firsts)
+    return kept if len({t.symbol for t in kept}) == 1 else tuple(terms)
+
+
 def places_before(previous: Sequence[CommandFrame], args: Sequence[Arg], vocabulary: Vocabulary) -> list[str]:
     """The places the earlier actions named, latest first (their goal, ground or source), as the rooms they
     are in when ``args`` name a device."""

@@ -12,7 +12,7 @@ from core.errors import LanguageError
 from knic.language.chunks import Chunk, Chunker
 from knic.language.clauses import Arg
 from knic.language.commands import CommandLanguage
-from knic.language.naming import called_so
+from knic.language.naming import called_so, named_after
 from knic.language.placenames import beside_named, named_in_part
 from knic.language.shortnames import contains
 from knic.language.vocabulary import Term, Vocabulary
@@ -57,6 +57,7 @@ class Places:
             if not kept and place.prep is not None and place.prep_text not in self.language.containment:
                 kept = self._near(candidates, rooms)  # "the bedside table next to the bed"
                 kept = beside_named(kept, rooms, self.vocabulary)  # "the lamp by the bed": the bedside lamp
+                kept = named_after(kept, rooms, self.vocabulary)  # "the light over the dining table"
             if (
                 not kept
                 and all(self.is_a(t, "device") for t in candidates)

@@ -55,6 +55,9 @@ apartment as well:
 * where the thing is, said after a request to give it to someone ("give the football to Colby, I found it
   on the landing", "take it to Colby. It is on the landing.") is where to take it from
   (``knic.language.apologies``).
+* a device said near a piece of furniture whose name it opens with ("the light over the dining table": the
+  dining light, not the lounge light of the same room) is that one; a first word that names a room ("the
+  kitchen island") tells nothing (``knic.language.naming``).
 * a request for a thing the world lacks, with talk beside it that has no verb ("bring me my knitting, it is
   in my bag") or that the speaker says of themselves ("bring me bread, I make soup"), is refused naming the
   thing, not "it" or the soup; a learner's request with no article ("bring me bread") counts
@@ -685,3 +688,20 @@ def test_where_the_thing_is_said_after_giving_it(
     vocabulary: Vocabulary, erl: bool, text: str, frames: Frames
 ) -> None:
     assert _said(vocabulary, erl, text, "hazem") == frames
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        (
+            "turn on the light over the dining table",
+            [{"frame": "OPERATING", "device": "dining_light", "state": "on"}],
+        ),
+        (
+            "Light over the dining table, make on thirty percent",
+            [{"frame": "OPERATING", "device": "dining_light", "state": "30"}],
+        ),
+    ],
+)
+def test_a_device_named_after_the_furniture_it_is_near(text: str, frames: Frames) -> None:
+    assert frames_read(_house(), text, "lyudmila") == frames
