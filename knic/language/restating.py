@@ -10,7 +10,8 @@
   seventy."): the thing, where "it" was said;
 * a thing's name said again alone, longer ("turn on the lamp. The lamp. The standard lamp, next to me."; "put
   it on the table, the kitchen table"): the longer name where the shorter was said, and a name said again as
-  it was, dropped;
+  it was, dropped; not right after a correction ("bring me the coke, no, the juice, no wait, the coke"), which
+  the reader applies;
 * a device named by its kind alone ("blind", "blinds", "lamp") after another device was named by its own
   name ("turn the breakfast room light down to ten and shut the blinds", "desk lamp to fifty, blind half
   open"): the one of that kind in the same room, where there is exactly one (a speaker names the room once);
@@ -100,7 +101,11 @@ def _level_restated(segments: list[list[str]]) -> list[list[str]]:
 
 def _name_restated(segments: list[list[str]], phrases: frozenset[str]) -> list[list[str]]:
     out: list[list[str]] = []
+    repairs = {tuple(r.split()) for r in command_language().repairs}
     for segment in segments:
+        if out and tuple(out[-1]) in repairs:  # "the coke, no, the juice, no wait, the coke": corrected back
+            out.append(segment)
+            continue
         name = segment[1:] if segment[:1] and segment[0] in _ARTICLES else segment
         said = " ".join(name)
         earlier = f" {' '.join(w for s in out for w in s)} "

@@ -8,6 +8,8 @@ import pytest
 from knic.language import understand
 from knic.language.vocabulary import Vocabulary
 
+from .conftest import frames_read
+
 READ = [
     # corrections: what follows replaces the last thing of its kind, or the last action
     ("bring me the apple, sorry, I meant the lemon", ["(has annie lemon)"]),
@@ -226,3 +228,24 @@ def test_the_type_word_names_every_thing_of_the_type() -> None:
     assert [f.to_dict() for f in lamp.frames] == [
         {"frame": "OPERATING", "device": "desk_lamp", "state": "off"}
     ]
+
+
+@pytest.mark.parametrize(
+    ("text", "frame"),
+    [
+        (
+            "bring me the coke, no, the juice, no wait, the coke",
+            {"frame": "BRINGING", "theme": "coke_can", "beneficiary": "me"},
+        ),
+        ("go to the kitchen, no, the bedroom, no wait, the kitchen", {"frame": "MOTION", "goal": "kitchen"}),
+        (
+            "bring me the coke, no, the juice, no wait, the water",
+            {"frame": "BRINGING", "theme": "water", "beneficiary": "me"},
+        ),
+    ],
+)
+def test_a_correction_corrected_back_is_the_last_said(
+    vocabulary: Vocabulary, text: str, frame: dict[str, str]
+) -> None:
+    # the thing said again after a correction is no restating to drop (knic.language.restating)
+    assert frames_read(vocabulary, text) == [frame]
