@@ -380,10 +380,15 @@ def _should_go(chunks: list[Chunk], is_a: Callable[[Chunk, str], bool], put: Chu
     return [*chunks[:start], put, *chunks[start : thing + 1], *chunks[go + 1 :]]
 
 
+#: the other side, for "the other one" said of a thing named by its side
+_SIDE_SWAPPED = {"left": "right", "right": "left"}
+
+
 def other_one(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
     """ "The other one" (or "the other light") in a correction: the other of the pair the thing said before
-    belongs to ("switch on the left lamp, no wait, the other one": the right lamp), or the one other thing
-    of its type; left as said when there is no such one."""
+    belongs to ("switch on the left lamp, no wait, the other one": the right lamp), or the thing named by
+    the other side ("the left shelf": the right shelf), or the one other thing of its type; of several
+    others, those named by the same last word, asked about when more than one; left as said when none."""
     for i, chunk in enumerate(chunks[:-2]):
         if chunk.kind != "repair":
             continue
@@ -401,18 +406,25 @@ def other_one(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
             t.members for t in vocabulary.terms if t.is_group and len(t.members) == 2 and symbol in t.members
         ]
         others = [m for m in pairs[0] if m != symbol] if pairs else []
+        words = said.terms[0].phrase.split()  # "the left shelf, no, the other one": the right shelf
+        sided = (
+            [" ".join(_SIDE_SWAPPED.get(w, w) for w in words)] if _SIDE_SWAPPED.keys() & set(words) else []
+        )
+        others = others or sorted({t.symbol for t in vocabulary.terms if t.phrase in sided} - {symbol})
         if not others:
             kind = vocabulary.type_of(symbol)
             others = list(
                 {t.symbol for t in vocabulary.terms if not t.is_group and t.type == kind} - {symbol}
             )
+        kind_word = words[-1]
         if len(others) > 1:  # "the kitchen blinds, no, the other ones": of those called blinds too
-            kind_word = said.terms[0].phrase.split()[-1]
-            others = [o for o in others if vocabulary.phrase_of(o).split()[-1] == kind_word]
-        terms = tuple(t for t in vocabulary.terms if others and t.symbol == others[0])[:1]
-        if len(others) != 1 or not terms:
+            others = sorted(o for o in others if vocabulary.phrase_of(o).split()[-1] == kind_word)
+        # of several others, which is asked ("the blue cup, no, the other one": the pink or the white cup?)
+        terms = tuple(next(t for t in vocabulary.terms if t.symbol == o) for o in others)
+        if not terms:
             continue
-        return [*chunks[: i + 1], Chunk("entity", terms[0].phrase, terms), *chunks[end:]]
+        text = terms[0].phrase if len(terms) == 1 else kind_word
+        return [*chunks[: i + 1], Chunk("entity", text, terms), *chunks[end:]]
     return chunks
 
 

@@ -98,14 +98,15 @@ _THROWN = frozenset({"throw", "toss", "chuck", "lob", "bung", "hoy"})
 
 def thrown_to(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
     """ "chuck the football back to arjun", "toss the keys to mark": a thing thrown "to" a person (not to a
-    place) is given to them, as "chuck me the remote" is to the speaker."""
+    place) is given to them, as "chuck me the remote" is to the speaker, and so is one thrown "over here"
+    ("chuck the cushion over here", where the robot asked where to)."""
     out = list(chunks)
     for i, chunk in enumerate(chunks):
         if chunk.kind != "verb" or chunk.text not in _THROWN:
             continue
         end = next((k for k in range(i + 1, len(chunks)) if chunks[k].kind in ("verb", "join")), len(chunks))
         to = [k for k in range(i + 1, end - 1) if chunks[k].kind == "prep" and chunks[k].text == "to"]
-        if to and _is(chunks[to[-1] + 1], vocabulary, "person"):
+        if (to and _is(chunks[to[-1] + 1], vocabulary, "person")) or chunks[end - 1].kind == "me":
             out[i] = Chunk("verb", "give", frames=("BRINGING",))
     return out
 

@@ -9,7 +9,15 @@ house where British, Irish, American and Australian speakers of fifteen to eight
   not the robot going there alone;
 * "off the floor", "from the floor", "off the ground": where a thing lies that is no place of the world
   ("pick up the cushion off the floor and put it on the armchair"): the taking has no source, where the
-  reader would refuse the floor.
+  reader would refuse the floor;
+* "left-hand", "right hand" before a noun are "left", "right" ("the right-hand shelf", "the left hand lamp",
+  "on the left-hand side of the bed"), where "hand" was an unknown word and "right-hand light" was read as
+  any light;
+* a correction to "the other one" said in a stretch of its own ("bring me the blue cup. no wait, the other
+  one") is read with the request it corrects, so that of several others the robot asks which, where the
+  stretch naming nothing was dropped as talk and the first thing done;
+* "do we have any X?", "have we got any X?" (said of the household) ask as "is there any X?" does: a search
+  for X, where "we have" was read as talk.
 
 Each works on the text as said, before it is split into stretches (:func:`ordinary_read`).
 """
@@ -34,18 +42,37 @@ _TAKE_ME_ALONG = re.compile(
     re.IGNORECASE,
 )
 
+#: "left-hand", "right hand" said before a noun: the side alone ("the right-hand shelf")
+_HANDED = re.compile(r"\b(left|right)(?:-|\s+)?hand(?:ed)?(?=\s+[a-z])", re.IGNORECASE)
+
+#: whether the household has a thing, asked ("do we have any milk?", "have we still got some batteries?")
+_HAVE_WE = re.compile(
+    r"(^|[.,;!?]\s*)(?:do\s+we\s+(?:still\s+)?have|have\s+we\s+(?:still\s+)?got)\s+(any|some|a|an)\b",
+    re.IGNORECASE,
+)
+
+#: the stops before a correction to "the other one" ("..., no wait, the other one"), and within it
+_OTHER_ONE = re.compile(
+    r"[.,;!?]+\s*(?P<words>(?:(?:no|nope|sorry|wait|actually|oh|hang on|i mean|i meant)\b[\s,.!;]*)+)"
+    r"(?=the\s+other\s+ones?\b)",
+    re.IGNORECASE,
+)
+
 #: where a thing lies that is no place of any world: the floor, the ground
 _OFF_THE_FLOOR = re.compile(r"\s+(?:off\s+of|off|from)\s+the\s+(?:floor|ground)\b", re.IGNORECASE)
 
 
 def ordinary_read(text: str) -> str:
     """``text`` with the turns of phrase of this module put plainly: "go on, " before a request dropped, a
-    wish to go and "take me" said as "take me to ...", "off the floor" dropped."""
+    wish to go and "take me" said as "take me to ...", "off the floor" dropped, "right-hand" said "right",
+    "do we have any" said "is there any"."""
     if (encouraged := _ENCOURAGED.match(text)) is not None:
         text = text[encouraged.end() :]
     if (wish := _TAKE_ME_ALONG.match(text)) is not None:
         text = f"{wish.group('before')}take me {wish.group('way')}"
-    return _OFF_THE_FLOOR.sub("", text)
+    text = _OTHER_ONE.sub(lambda said: " " + re.sub(r"[\s,.!;]+", " ", said.group("words")), text)
+    text = _HAVE_WE.sub(lambda said: f"{said.group(1)}is there {said.group(2)}", text)
+    return _HANDED.sub(lambda said: said.group(1), _OFF_THE_FLOOR.sub("", text))
 
 
 __all__ = ["ordinary_read"]

@@ -13,7 +13,20 @@ each tried in the ERL apartment as well:
   (``knic.language.ordinary``);
 * "no wait, the other ones" corrects a thing of a plural name as "the other one" does, and where the world has
   several others of its kind, the other is the one called by the same last word ("the kitchen blinds, no, the
-  other ones": the study blinds, not the curtains) (``knic.language.household``).
+  other ones": the study blinds, not the curtains) (``knic.language.household``);
+
+and, from probing the six voices beyond the set:
+
+* "the other one" of a thing named by its side is the other side's ("the left shelf, no, the other one": the
+  right shelf), and of several others it asks which ("the blue cup, no, the other one": the pink or the white
+  cup?), said after a full stop as well as a comma (``knic.language.household``, ``knic.language.ordinary``);
+* "left-hand", "right hand" before a noun are "left", "right" ("the right-hand light", "the left hand shelf")
+  (``knic.language.ordinary``);
+* a thing thrown "over here" or "here" is given to the speaker ("chuck the cushion over here"), as one thrown
+  to a person is given to them (``knic.language.learners``);
+* "scoot over to", "zip over to" go there (``commands.yaml``);
+* "do we have any X?", "have we got any X?" search for X, as "is there any X?" does
+  (``knic.language.ordinary``).
 """
 
 from __future__ import annotations
@@ -25,7 +38,7 @@ import pytest
 from knic.language import understand
 from knic.language.vocabulary import Vocabulary
 
-from .conftest import frames_read, world_of
+from .conftest import assert_asked, frames_read, world_of
 
 HOME = "tests/fixtures/language/people32/family_home.yaml"
 
@@ -158,3 +171,81 @@ def test_the_other_one_of_a_pair_is_unchanged(vocabulary: Vocabulary) -> None:
     assert frames_read(vocabulary, "switch on the left light, no wait, the other one") == [
         {"frame": "OPERATING", "device": "bedroom_right_light", "state": "on"}
     ]
+
+
+@pytest.mark.parametrize(
+    ("world", "text", "frames"),
+    [
+        (
+            "home",
+            "put the magazine on the left shelf, no, the other one",
+            [{"frame": "PLACING", "theme": "magazine", "goal": "right_shelf"}],
+        ),
+        (
+            "erl",
+            "turn on the right lamp. no, the other one",
+            [{"frame": "OPERATING", "device": "bedroom_left_light", "state": "on"}],
+        ),
+        (
+            "erl",
+            "switch on the right-hand light",
+            [{"frame": "OPERATING", "device": "bedroom_right_light", "state": "on"}],
+        ),
+        (
+            "erl",
+            "turn on the left hand lamp",
+            [{"frame": "OPERATING", "device": "bedroom_left_light", "state": "on"}],
+        ),
+        (
+            "home",
+            "put the board game on the right hand shelf",
+            [{"frame": "PLACING", "theme": "board_game", "goal": "right_shelf"}],
+        ),
+        (
+            "home",
+            "chuck the cushion over here",
+            [{"frame": "BRINGING", "theme": "cushion", "beneficiary": "me"}],
+        ),
+        (
+            "erl",
+            "throw the remote over here and put the cup in the bin",
+            [
+                {"frame": "BRINGING", "theme": "remote", "beneficiary": "me"},
+                {"frame": "PLACING", "theme": "cup", "goal": "bin"},
+            ],
+        ),
+        ("erl", "chuck the remote in the bin", [{"frame": "PLACING", "theme": "remote", "goal": "bin"}]),
+        ("home", "scoot over to the couch", [{"frame": "MOTION", "goal": "sofa"}]),
+        ("erl", "zip over to the kitchen and wait", [{"frame": "MOTION", "goal": "kitchen"}]),
+        ("home", "do we have any cheese?", [{"frame": "SEARCHING", "theme": "cheese"}]),
+        (
+            "home",
+            "Do we still have any batteries in the kitchen drawer?",
+            [{"frame": "SEARCHING", "theme": "batteries", "ground": "kitchen_drawer"}],
+        ),
+        ("erl", "have we got any juice?", [{"frame": "SEARCHING", "theme": "juice"}]),
+    ],
+)
+def test_more_of_the_six_voices(
+    vocabulary: Vocabulary, world: str, text: str, frames: list[dict[str, str]]
+) -> None:
+    said = _home() if world == "home" else vocabulary
+    assert frames_read(said, text, "lachlan" if world == "home" else "annie") == frames
+
+
+@pytest.mark.parametrize(
+    ("text", "options"),
+    [
+        ("bring me the blue cup, no, the other one", ("pink cup", "white cup")),
+        ("bring me the blue cup. No wait, the other one.", ("pink cup", "white cup")),
+        ("turn on the floor lamp. no wait, the other one", ("bedside lamp", "desk lamp")),
+    ],
+)
+def test_the_other_one_of_several_asks_which(home: Vocabulary, text: str, options: tuple[str, str]) -> None:
+    for option in options:
+        assert_asked(home, text, option, "peggy")
+
+
+def test_do_we_have_a_thing_the_home_lacks_names_it() -> None:
+    result = understand("do we have any coke?", _home(), speaker="chloe")
+    assert not result.accepted and "'coke'" in result.reason
