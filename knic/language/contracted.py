@@ -96,6 +96,10 @@ _ADDRESSED = frozenset({"boy", "girl", "dear", "darling", "friend", "lovely", "l
 _ADDRESSED_ALONE = frozenset({"boet", "bru", "china", "mate", "mein", "lad", "lass", "doll"})
 #: what may come before someone spoken of, not to ("take it to my boy")
 _SPOKEN_OF = frozenset({"to", "for", "with", "from", "by", "of", "near", "give", "find", "and", "is", "are"})
+#: the devices that hang over a thing, said before "over" ("light over dining table": above it)
+_HUNG = frozenset({"light", "lights", "lamp", "lamps", "blind", "blinds"})
+#: what "over" after such a device comes before that is no place ("the light over there", "over lights")
+_NOT_A_PLACE = frozenset({"there", "here", "and", "then", "lights", "light", "lamps", "blinds"})
 #: what "here" follows that "hear" does not ("over here", "back here")
 _HERE_AFTER = (["over"], ["in"], ["back"], ["up"], ["down"], ["right"])
 #: where things go, after "them all"
@@ -265,6 +269,8 @@ def contracted(tokens: list[str]) -> list[str]:
             out.append("see")
         elif token == "over" and out and out[-1] not in _MOVED_OVER and nxt == "the":
             out.append("above")
+        elif token == "over" and out[-1:] and out[-1] in _HUNG and nxt and nxt not in _NOT_A_PLACE:
+            out.append("above")  # a learner's "light over dining table": where it hangs, with no article
         elif token == "hear" and (not nxt or out[-1:] in _HERE_AFTER):
             out.append("here")
         elif token in ("light", "lamp", "blind") and out[-2:] in (["all", "the"], ["all", "my"]):

@@ -58,6 +58,8 @@ apartment as well:
 * a device said near a piece of furniture whose name it opens with ("the light over the dining table": the
   dining light, not the lounge light of the same room) is that one; a first word that names a room ("the
   kitchen island") tells nothing (``knic.language.naming``).
+* a learner's "over" with no article after a light, lamp or blind ("light over dining table") is "above"
+  (``knic.language.contracted``); "turn on over lights" stays unknown.
 * a request for a thing the world lacks, with talk beside it that has no verb ("bring me my knitting, it is
   in my bag") or that the speaker says of themselves ("bring me bread, I make soup"), is refused naming the
   thing, not "it" or the soup; a learner's request with no article ("bring me bread") counts
@@ -655,6 +657,18 @@ _READ = [
     ),
     ("annie", True, "find the remote 4 me", [{"frame": "SEARCHING", "theme": "remote"}]),
     # a device named after the furniture it is near
+    (
+        "annie",
+        True,
+        "open the blinds over bed",
+        [{"frame": "OPERATING", "device": "bedroom_blinds", "state": "open"}],
+    ),
+    (
+        "lyudmila",
+        False,
+        "Light over dining table, make on thirty percent",
+        [{"frame": "OPERATING", "device": "dining_light", "state": "30"}],
+    ),
     (
         "lyudmila",
         False,
