@@ -136,7 +136,7 @@ def narrowed(segments: list[list[str]], chunks: Chunks) -> list[list[str]]:
             last is None
             or not acted
             or not said
-            or said[-1].kind != "entity"
+            or (said[-1].kind != "entity" and words[-1] not in ("ones", "one"))
             or any(c.kind not in ("entity", "unknown") for c in said)
             or out[-1][-len(last.text.split()) :] != last.text.split()
         ):

@@ -239,6 +239,12 @@ _READ = [
     # a thing said again more exactly
     (
         "philippa",
+        True,
+        "could you switch on the light? The left one, please",
+        [{"frame": "OPERATING", "device": "bedroom_left_light", "state": "on"}],
+    ),
+    (
+        "philippa",
         False,
         "Sorry, could you bring me the glasses? The sunglasses, sorry, not the reading ones",
         [{"frame": "BRINGING", "theme": "sunglasses", "beneficiary": "me"}],
