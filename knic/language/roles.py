@@ -320,6 +320,11 @@ def _names_items(reader: Resolver, arg: Arg) -> bool:
     return arg.chunk.kind == "entity" and bool(terms) and all(reader.is_a(t, "item") for t in terms)
 
 
+def _names_people(reader: Resolver, arg: Arg) -> bool:
+    terms = arg.chunk.terms
+    return arg.chunk.kind == "entity" and bool(terms) and all(reader.is_a(t, "person") for t in terms)
+
+
 def _names_only_places(reader: Resolver, arg: Arg) -> bool:
     terms = arg.chunk.terms
     return bool(terms) and all(reader.is_a(t, "room") or reader.is_a(t, "furniture") for t in terms)
@@ -338,6 +343,10 @@ def _accompanying(reader: Resolver, clause: Clause, previous: Frames, groups: li
         elif arg.prep in ("goal", "place", "level") and arg.chunk.kind == "me":
             who = reader.vocabulary.phrase_of(people[0]) if people else "them"
             raise AmbiguityError(f"where should I take {who}? Say the room: I do not know where you are")
+        elif arg.prep in ("goal", "place", "level") and _names_people(reader, arg):  # "take tracy to annie"
+            who = reader.vocabulary.phrase_of(people[0]) if people else "them"
+            to = arg.chunk.text
+            raise AmbiguityError(f"where should I take {who}? Say the room: I do not know where {to} is")
         elif arg.prep in ("goal", "place", "level"):
             goal = reader.resolve(arg, ("room", "furniture"), previous, groups)[0]
     if not people:
@@ -411,6 +420,8 @@ def _operating(reader: Resolver, clause: Clause, previous: Frames, groups: list[
         more = arg.joined or (arg.prep == "place" and index > 0 and args[index - 1].consumed)
         if arg.chunk.kind == "entity" and not any(reader.is_a(t, "device") for t in arg.chunk.terms):
             rooms = [t for t in arg.chunk.terms if reader.is_a(t, "room")]
+            # "switch on the study and the landing lights": "on" is the state, and the study's lights meant
+            stated = arg.prep is None or (index == 0 and bool(rooms) and arg.prep_text in clause.states)
             again = devices_named_in(reader.vocabulary, rooms, named) if more and devices else []
             if again:  # "close the curtains in the bedroom and the back room": the back room's too
                 devices += again
@@ -422,7 +433,10 @@ def _operating(reader: Resolver, clause: Clause, previous: Frames, groups: list[
             own = reader.levelled_in(rooms) if clause.levels or clause.vague or stateless else []
             said = clause.states[-1] if clause.states else clause.verb.state if clause.verb else None
             own = own or room_lights(reader.vocabulary, rooms, said)  # "turn the hallway off"
-            if (arg.prep is None and len(own) == 1) or (more and devices and own):
+            after = args[index + 1] if index + 1 < len(args) else None  # "the study and landing lights"
+            lights = after is not None and after.joined and after.chunk.text.endswith("lights")
+            take = (arg.prep is None and len(own) == 1) or (stated and lights and bool(own))
+            if take or (more and devices and own):
                 devices += own
             elif arg.prep is None:
                 raise LanguageError(f"'{arg.chunk.text}' is not a device I can operate")

@@ -43,3 +43,11 @@ def test_a_known_action_on_a_person_after_a_joiner_still_reads(vocabulary: Vocab
         {"frame": "SEARCHING", "theme": "tracy"},
         {"frame": "ACCOMPANYING", "theme": "tracy", "goal": "kitchen"},
     ]
+
+
+@pytest.mark.parametrize("text", ["take tracy to annie", "lead tracy to annie", "bring jack to annie"])
+def test_taking_someone_to_a_person_asks_the_room(vocabulary: Vocabulary, text: str) -> None:
+    # where another person is, the reader does not know (the robot finds out): the room is asked
+    result = understand(text, vocabulary, speaker="annie")
+    assert not result.accepted and not result.frames
+    assert "I do not know where annie is" in result.question
