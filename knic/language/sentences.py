@@ -2,7 +2,8 @@
 :class:`knic.language.reader.Reader` on the command's stretches between stops and commas):
 
 * A sentence after a request that says something the world has no device for is on or off ("shut the porch
-  light off, the Sox game's on"): a remark, dropped (:func:`_on_said_of_others`).
+  light off, the Sox game's on") or how someone is ("Marnie's asleep"): a remark, dropped
+  (:func:`_remarks_dropped`).
 * A sentence after a request that gives its reason ("..., as I wish to inspect the washing line",
   "..., because I'm cold"), or a reason said on in the request's sentence ("take me to the lounge so that I
   can watch tv"), or says what someone else means to do ("where did the jigsaw go? Colby wants to finish
@@ -47,8 +48,7 @@ def sentences_read(
 ) -> list[list[str]]:
     """The sentences with the rules of the module docstring applied."""
     segments = reasons_dropped(together_dropped(segments, chunks), chunks)
-    segments = _on_said_of_others(segments, chunks, lambda c: any(is_a(t, "device") for t in c.terms))
-    segments = _how_someone_is(segments, chunks, lambda c: any(is_a(t, "person") for t in c.terms))
+    segments = _remarks_dropped(segments, chunks, is_a)  # "..., the Sox game's on", "..., Marnie's asleep"
     segments = done_dropped(segments, chunks, lambda c: any(is_a(t, "person") for t in c.terms))
     segments = _lacking_first(_asides_dropped(segments, chunks, is_a), chunks)
     return verbs_said([_for_unknown_dropped(s, chunks) for s in segments], chunks, is_a)
@@ -181,49 +181,41 @@ def _wish_of_another(segment: list[str], chunks: Callable[[Sequence[str]], list[
 _SAID_ON = (["because"], ["cos"], ["coz"], ["so", "that"], ["so", "i", "can"], ["so", "we", "can"])
 
 
-def _on_said_of_others(
+def _remarks_dropped(
     segments: list[list[str]],
     chunks: Callable[[Sequence[str]], list[Chunk]],
-    is_device: Callable[[Chunk], bool],
+    is_a: Callable[[Term, str], bool],
 ) -> list[list[str]]:
-    """The sentences without those after a request that say something the world has no device for is on or
-    off ("shut the porch light off, the Sox game's on", "..., the kettle is on", "..., the telly's off"): a
-    remark, not the state the request asks for."""
-    out: list[list[str]] = []
-    for segment in segments:
-        acted = any(c.kind == "verb" for s in out for c in chunks(s))
-        said = len(segment) > 2 and segment[-1] in ("on", "off") and segment[0] not in ("and", "then")
-        be = said and (segment[-2].endswith("'s") or segment[-2] in ("is", "are", "was"))
-        if acted and be and not any(c.kind == "verb" or is_device(c) for c in chunks(segment)):
-            continue
-        out.append(segment)
-    return out
-
-
-def _how_someone_is(
-    segments: list[list[str]],
-    chunks: Callable[[Sequence[str]], list[Chunk]],
-    is_person: Callable[[Chunk], bool],
-) -> list[list[str]]:
-    """The sentences without those after a request that say how someone is, in words that name nothing of
-    the world ("turn off the fairy lights? Marnie's asleep", "..., Brendan is still asleep", "..., Tracy's
-    a bit tired"): a remark, not a person to operate or to look for."""
+    """The sentences without the remarks after a request: that something the world has no device for is on
+    or off ("shut the porch light off, the Sox game's on", "..., the kettle is on", "..., the telly's off"),
+    not the state the request asks for; how someone is, in words that name nothing of the world ("turn off
+    the fairy lights? Marnie's asleep", "..., Brendan is still asleep", "..., Tracy's a bit tired"), not a
+    person to operate or to look for."""
     out: list[list[str]] = []
     for segment in segments:
         acted = any(c.kind == "verb" for s in out for c in chunks(s))
         said = chunks(segment)
-        person = len(said) > 2 and said[0].kind == "entity" and is_person(said[0])
-        rest = said[2:]
-        if (
-            acted
-            and person
-            and said[1].text in ("is", "was")
-            and all(c.kind in ("unknown", "vague", "det") for c in rest)
-            and any(c.kind == "unknown" for c in rest)
-        ):
+        if acted and (_on_said_of_others(segment, said, is_a) or _how_someone_is(said, is_a)):
             continue
         out.append(segment)
     return out
+
+
+def _on_said_of_others(segment: list[str], said: list[Chunk], is_a: Callable[[Term, str], bool]) -> bool:
+    on = len(segment) > 2 and segment[-1] in ("on", "off") and segment[0] not in ("and", "then")
+    be = on and (segment[-2].endswith("'s") or segment[-2] in ("is", "are", "was"))
+    return be and not any(c.kind == "verb" or any(is_a(t, "device") for t in c.terms) for c in said)
+
+
+def _how_someone_is(said: list[Chunk], is_a: Callable[[Term, str], bool]) -> bool:
+    person = len(said) > 2 and said[0].kind == "entity" and any(is_a(t, "person") for t in said[0].terms)
+    rest = said[2:]
+    return (
+        person
+        and said[1].text in ("is", "was")
+        and all(c.kind in ("unknown", "vague", "det") for c in rest)
+        and any(c.kind == "unknown" for c in rest)
+    )
 
 
 def reasons_dropped(
