@@ -26,7 +26,10 @@ and, from probing the six voices beyond the set:
   to a person is given to them (``knic.language.learners``);
 * "scoot over to", "zip over to" go there (``commands.yaml``);
 * "do we have any X?", "have we got any X?" search for X, as "is there any X?" does
-  (``knic.language.ordinary``).
+  (``knic.language.ordinary``);
+* "turn off the kitchen and hallway lights", "switch on the study and the landing lights": the first room's
+  lights too, where "off"/"on" right after the verb was taken as "off the kitchen" (a source) and the room
+  dropped without a word (``knic.language.roles``).
 """
 
 from __future__ import annotations
@@ -249,3 +252,30 @@ def test_the_other_one_of_several_asks_which(home: Vocabulary, text: str, option
 def test_do_we_have_a_thing_the_home_lacks_names_it() -> None:
     result = understand("do we have any coke?", _home(), speaker="chloe")
     assert not result.accepted and "'coke'" in result.reason
+
+
+@pytest.mark.parametrize(
+    ("world", "text", "devices", "state"),
+    [
+        (
+            "home",
+            "turn off the kitchen and hallway lights",
+            ["kitchen_light", "hallway_light", "porch_light"],
+            "off",
+        ),
+        (
+            "home",
+            "switch on the study and the landing lights",
+            ["desk_lamp", "study_light", "landing_light"],
+            "on",
+        ),
+        ("erl", "turn off the bedroom and hallway lights", ["bedroom_lights", "hallway_light"], "off"),
+    ],
+)
+def test_a_room_and_another_rooms_lights(
+    vocabulary: Vocabulary, world: str, text: str, devices: list[str], state: str
+) -> None:
+    said = _home() if world == "home" else vocabulary
+    assert frames_read(said, text, "graham" if world == "home" else "annie") == [
+        {"frame": "OPERATING", "device": device, "state": state} for device in devices
+    ]
