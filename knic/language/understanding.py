@@ -8,6 +8,7 @@ confirmation when the robot's role asks for one (:mod:`knic.language.dialogue`).
 
 from __future__ import annotations
 
+import re
 from collections.abc import Callable
 from dataclasses import dataclass, field
 from functools import lru_cache
@@ -31,6 +32,13 @@ DEFAULT_SPEAKER = "annie"
 #: the most words of one command that are read: the longest of the text dev sets' 4,900 commands has 44, and a
 #: command of thousands of words (pasted text, a runaway recogniser) would take the reader minutes
 MAX_WORDS = 150
+#: a number said below zero ("set the dimmer to -10", "minus twenty"): no level, and its digits alone would
+#: be read as one (10); a dash with a space after it is a dash ("bench lamp 2 - 35%")
+NEGATIVE = re.compile(
+    r"(?:(?<![\w.-])-(?=\d)|\b(?:minus|negative)\s+)(\d+|one|two|three|four|five|six|seven|eight|nine|ten|"
+    r"eleven|twelve|fifteen|twenty|thirty|forty|fifty|sixty|seventy|eighty|ninety|hundred)\b",
+    re.IGNORECASE,
+)
 
 
 @dataclass(frozen=True)
@@ -143,6 +151,9 @@ def understand(
     del grammar
     if len(text.split()) > MAX_WORDS:
         reason = f"the command is {len(text.split())} words long: I read at most {MAX_WORDS}; say it in parts"
+        return Understanding(text, reason=reason, speaker=speaker)
+    if negative := NEGATIVE.search(text):
+        reason = f"'{negative.group(0)}' is below zero: a level goes from 0 to 100 percent"
         return Understanding(text, reason=reason, speaker=speaker)
     try:
         # "it's dark in the study": its lights; "hoodie from my bed": the bed in the speaker's own room

@@ -446,3 +446,20 @@ def test_a_command_too_long_to_read_is_refused_saying_so(vocabulary: Vocabulary)
     assert result.reason == f"the command is 8000 words long: I read at most {MAX_WORDS}; say it in parts"
     rambling = "well, you know, " * 35 + "bring me the mug"  # 144 words: still read
     assert understand(rambling, vocabulary).accepted
+
+
+@pytest.mark.parametrize(
+    ("text", "said"),
+    [("set the dimmer to -10", "'-10'"), ("dim the living room to minus twenty percent", "'minus twenty'")],
+)
+def test_a_level_below_zero_is_refused_not_read_as_its_digits(
+    vocabulary: Vocabulary, text: str, said: str
+) -> None:
+    result = understand(text, vocabulary)
+    assert not result.accepted and not result.frames and not result.goals
+    assert result.reason == f"{said} is below zero: a level goes from 0 to 100 percent"
+
+
+def test_a_dash_before_a_number_is_no_minus(vocabulary: Vocabulary) -> None:
+    assert understand("dimmer --> 50", vocabulary).accepted
+    assert understand("the dimmer - 50 percent please", vocabulary).accepted
