@@ -421,7 +421,7 @@ def _operating(reader: Resolver, clause: Clause, previous: Frames, groups: list[
         if arg.chunk.kind == "entity" and not any(reader.is_a(t, "device") for t in arg.chunk.terms):
             rooms = [t for t in arg.chunk.terms if reader.is_a(t, "room")]
             # "switch on the study and the landing lights": "on" is the state, and the study's lights meant
-            stated = arg.prep is None or (index == 0 and bool(rooms) and arg.prep_text in clause.states)
+            stated = arg.prep is None or (index == 0 and arg.prep_text in clause.states)
             again = devices_named_in(reader.vocabulary, rooms, named) if more and devices else []
             if again:  # "close the curtains in the bedroom and the back room": the back room's too
                 devices += again
@@ -438,7 +438,7 @@ def _operating(reader: Resolver, clause: Clause, previous: Frames, groups: list[
             take = (arg.prep is None and len(own) == 1) or (stated and lights and bool(own))
             if take or (more and devices and own):
                 devices += own
-            elif arg.prep is None:
+            elif stated and (arg.prep is None or not arg.modifiers):  # "switch off the telly": named
                 raise LanguageError(f"'{arg.chunk.text}' is not a device I can operate")
             continue
         places = [f.get(r) or "" for f in reversed(previous) for r in ("goal", "ground") if f.get(r)]

@@ -29,7 +29,8 @@ and, from probing the six voices beyond the set:
   (``knic.language.ordinary``);
 * "turn off the kitchen and hallway lights", "switch on the study and the landing lights": the first room's
   lights too, where "off"/"on" right after the verb was taken as "off the kitchen" (a source) and the room
-  dropped without a word (``knic.language.roles``).
+  dropped without a word; "switch off the telly", where the television is furniture, is refused naming it,
+  not "switch what?", as "turn the telly off" was (``knic.language.roles``).
 """
 
 from __future__ import annotations
@@ -279,3 +280,16 @@ def test_a_room_and_another_rooms_lights(
     assert frames_read(said, text, "graham" if world == "home" else "annie") == [
         {"frame": "OPERATING", "device": device, "state": state} for device in devices
     ]
+
+
+@pytest.mark.parametrize(
+    ("world", "text", "word"),
+    [
+        ("home", "switch off the telly", "'telly'"),
+        ("home", "turn on the television", "'television'"),
+        ("erl", "switch off the couch", "'couch'"),
+    ],
+)
+def test_furniture_switched_is_named(vocabulary: Vocabulary, world: str, text: str, word: str) -> None:
+    result = understand(text, _home() if world == "home" else vocabulary, speaker="annie")
+    assert not result.accepted and word in result.reason
