@@ -16,6 +16,8 @@ house where British, Irish, American and Australian speakers of fifteen to eight
 * a correction to "the other one" said in a stretch of its own ("bring me the blue cup. no wait, the other
   one") is read with the request it corrects, so that of several others the robot asks which, where the
   stretch naming nothing was dropped as talk and the first thing done;
+* a part of a piece of furniture said with "of" ("the top shelf of the fridge", "the bottom drawer of the
+  chest of drawers"): the furniture, where "shelf" alone asked which of the home's shelves was meant;
 * "do we have any X?", "have we got any X?" (said of the household) ask as "is there any X?" does: a search
   for X, where "we have" was read as talk.
 
@@ -58,6 +60,13 @@ _OTHER_ONE = re.compile(
     re.IGNORECASE,
 )
 
+#: a part of a piece of furniture said before it with "of" ("the top shelf of the fridge")
+_PART_OF = re.compile(
+    r"\bthe\s+(?:(?:top|bottom|middle|lower|upper|front|back|first|second|third)\s+)+"
+    r"(?:shelf|drawer|rack|compartment|section)\s+of\s+(?=the\s)",
+    re.IGNORECASE,
+)
+
 #: where a thing lies that is no place of any world: the floor, the ground
 _OFF_THE_FLOOR = re.compile(r"\s+(?:off\s+of|off|from)\s+the\s+(?:floor|ground)\b", re.IGNORECASE)
 
@@ -65,12 +74,13 @@ _OFF_THE_FLOOR = re.compile(r"\s+(?:off\s+of|off|from)\s+the\s+(?:floor|ground)\
 def ordinary_read(text: str) -> str:
     """``text`` with the turns of phrase of this module put plainly: "go on, " before a request dropped, a
     wish to go and "take me" said as "take me to ...", "off the floor" dropped, "right-hand" said "right",
-    "do we have any" said "is there any"."""
+    "do we have any" said "is there any", "the top shelf of the fridge" said "the fridge"."""
     if (encouraged := _ENCOURAGED.match(text)) is not None:
         text = text[encouraged.end() :]
     if (wish := _TAKE_ME_ALONG.match(text)) is not None:
         text = f"{wish.group('before')}take me {wish.group('way')}"
     text = _OTHER_ONE.sub(lambda said: " " + re.sub(r"[\s,.!;]+", " ", said.group("words")), text)
+    text = _PART_OF.sub("", text)
     text = _HAVE_WE.sub(lambda said: f"{said.group(1)}is there {said.group(2)}", text)
     return _HANDED.sub(lambda said: said.group(1), _OFF_THE_FLOOR.sub("", text))
 

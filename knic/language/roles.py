@@ -288,8 +288,8 @@ def _sought_just_before(groups: list[Frames]) -> list[str]:
 
 
 def _landmarks_passed(reader: Resolver, args: list[Arg], *, beside: bool) -> None:
-    """Objects said only to show where, before the place they stand on ("put the stapler beside the laptop on
-    the desk", "the keys behind the laptop on the desk"): the place said after them is meant. With ``beside``,
+    """Objects said only to show where, before or after the place they stand on ("put the stapler beside the
+    laptop on the desk", "on the desk beside the laptop"): the place said with them is meant. With ``beside``,
     an object said only beside another with no place after ("the crossword next to the magnifying glass") says
     no place (not where a thing is put: "put the stapler beside the laptop" is still refused)."""
     for index, arg in enumerate(args):
@@ -302,7 +302,7 @@ def _landmarks_passed(reader: Resolver, args: list[Arg], *, beside: bool) -> Non
             and (
                 any(
                     a.prep in ("place", "goal", "source") and _names_only_places(reader, a)
-                    for a in args[index + 1 :]
+                    for a in args  # before or after it ("put the magazine on the table next to the remote")
                 )
                 or (
                     beside

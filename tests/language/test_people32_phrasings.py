@@ -30,7 +30,11 @@ and, from probing the six voices beyond the set:
 * "turn off the kitchen and hallway lights", "switch on the study and the landing lights": the first room's
   lights too, where "off"/"on" right after the verb was taken as "off the kitchen" (a source) and the room
   dropped without a word; "switch off the telly", where the television is furniture, is refused naming it,
-  not "switch what?", as "turn the telly off" was (``knic.language.roles``).
+  not "switch what?", as "turn the telly off" was (``knic.language.roles``);
+* a part of a piece of furniture said with "of" ("the top shelf of the fridge", "the top drawer of the bedside
+  table") is the furniture (``knic.language.ordinary``);
+* a thing said beside another after the place it goes ("put the magazine on the coffee table, next to the
+  remote") only says where on it, as it did said before the place (``knic.language.roles``).
 """
 
 from __future__ import annotations
@@ -293,3 +297,45 @@ def test_a_room_and_another_rooms_lights(
 def test_furniture_switched_is_named(vocabulary: Vocabulary, world: str, text: str, word: str) -> None:
     result = understand(text, _home() if world == "home" else vocabulary, speaker="annie")
     assert not result.accepted and word in result.reason
+
+
+@pytest.mark.parametrize(
+    ("world", "text", "frames"),
+    [
+        (
+            "home",
+            "put the cheese on the top shelf of the fridge",
+            [{"frame": "PLACING", "theme": "cheese", "goal": "fridge"}],
+        ),
+        (
+            "home",
+            "put the cap in the second drawer of the chest of drawers",
+            [{"frame": "PLACING", "theme": "cap", "goal": "chest_of_drawers"}],
+        ),
+        (
+            "erl",
+            "put the glasses in the top drawer of the bedside table",
+            [{"frame": "PLACING", "theme": "glasses", "goal": "bedside_table"}],
+        ),
+        (
+            "home",
+            "put the magazine on the coffee table, next to the remote",
+            [{"frame": "PLACING", "theme": "magazine", "goal": "coffee_table"}],
+        ),
+        (
+            "home",
+            "put the cheese in the fridge next to the milk",
+            [{"frame": "PLACING", "theme": "cheese", "goal": "fridge"}],
+        ),
+    ],
+)
+def test_where_on_a_piece_of_furniture(
+    vocabulary: Vocabulary, world: str, text: str, frames: list[dict[str, str]]
+) -> None:
+    said = _home() if world == "home" else vocabulary
+    assert frames_read(said, text, "fiona" if world == "home" else "annie") == frames
+
+
+def test_a_thing_put_beside_another_alone_is_still_refused(home: Vocabulary) -> None:
+    result = understand("put the magazine next to the remote", home, speaker="fiona")
+    assert not result.accepted and "remote" in result.reason
