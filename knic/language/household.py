@@ -37,7 +37,7 @@ from knic.language.contracted import contracted
 from knic.language.dialects import dialect_words
 from knic.language.gathered import gathered
 from knic.language.gathered import gathered_up as gathered_up  # for the reader, whose module is full
-from knic.language.ordinary import ordinary_read
+from knic.language.ordinary import ordinary_read, side_ones
 from knic.language.plainorder import asked_plainly
 from knic.language.regional import regional_words
 from knic.language.restating import restated
@@ -478,10 +478,11 @@ def ones_named(segments: list[list[str]], vocabulary: Vocabulary) -> list[list[s
     exactly is put where it was said (:mod:`knic.language.restating`: "I want the light off. The hallway
     one.")."""
     names = {t.phrase for t in vocabulary.terms if len(t.phrase.split()) == 2}
+    sided = {t.phrase: t.symbol for t in vocabulary.terms if t.phrase in names and not t.is_group}
     said: list[str] = []
     out: list[list[str]] = []
     for segment in segments:
-        kept = list(segment)
+        kept = side_ones(list(segment), said, sided)  # "the shelf, the one on the left" (ordinary.py)
         for i in range(1, len(kept)):
             heads = [w for w in said + kept[:i] if f"{kept[i - 1]} {w}" in names]
             if kept[i] == "one" and heads:

@@ -18,10 +18,14 @@ house where British, Irish, American and Australian speakers of fifteen to eight
   stretch naming nothing was dropped as talk and the first thing done;
 * a part of a piece of furniture said with "of" ("the top shelf of the fridge", "the bottom drawer of the
   chest of drawers"): the furniture, where "shelf" alone asked which of the home's shelves was meant;
+* "the one on the left", "the right one" said without a name, or after the name alone ("put the magazine on
+  the shelf, the one on the left", "turn on the left one"): the thing the world names by that side and the
+  name said before, or the one thing it names by that side (:func:`side_ones`, for
+  :func:`knic.language.household.ones_named`);
 * "do we have any X?", "have we got any X?" (said of the household) ask as "is there any X?" does: a search
   for X, where "we have" was read as talk.
 
-Each works on the text as said, before it is split into stretches (:func:`ordinary_read`).
+Each but the sides works on the text as said, before it is split into stretches (:func:`ordinary_read`).
 """
 
 from __future__ import annotations
@@ -85,4 +89,26 @@ def ordinary_read(text: str) -> str:
     return _HANDED.sub(lambda said: said.group(1), _OFF_THE_FLOOR.sub("", text))
 
 
-__all__ = ["ordinary_read"]
+def side_ones(words: list[str], said: list[str], names: dict[str, str]) -> list[str]:
+    """``words`` with "one on the left" or "left one" put as "left X": X the last word said before (in
+    ``said`` or ``words``) that ``names`` (two-word names of the world, to their things) has after the side,
+    else the one thing named with that side ("turn on the left one": the left light); else as said."""
+    for i, side in enumerate(words):
+        if side not in ("left", "right"):
+            continue
+        if i >= 3 and words[i - 3 : i] in (["one", "on", "the"], ["one", "to", "the"]):
+            start, end = i - 3, i + 1
+        elif words[i + 1 : i + 2] == ["one"]:
+            start, end = i, i + 2
+        else:
+            continue
+        heads = [w for w in said + words[:start] if f"{side} {w}" in names]
+        named = {thing for phrase, thing in names.items() if phrase.split()[0] == side}
+        if not heads and len(named) == 1:
+            heads = [next(p for p, t in names.items() if p.split()[0] == side).split()[1]]
+        if heads:
+            return [*words[:start], side, heads[-1], *words[end:]]
+    return words
+
+
+__all__ = ["ordinary_read", "side_ones"]

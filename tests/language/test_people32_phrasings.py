@@ -34,7 +34,10 @@ and, from probing the six voices beyond the set:
 * a part of a piece of furniture said with "of" ("the top shelf of the fridge", "the top drawer of the bedside
   table") is the furniture (``knic.language.ordinary``);
 * a thing said beside another after the place it goes ("put the magazine on the coffee table, next to the
-  remote") only says where on it, as it did said before the place (``knic.language.roles``).
+  remote") only says where on it, as it did said before the place (``knic.language.roles``);
+* "the one on the left", "the right one" after a name said alone ("put the magazine on the shelf, the one on
+  the left") or with none, where the world names one thing by that side ("turn on the left one"): that side's
+  thing (``knic.language.ordinary``, ``knic.language.household``).
 """
 
 from __future__ import annotations
@@ -339,3 +342,35 @@ def test_where_on_a_piece_of_furniture(
 def test_a_thing_put_beside_another_alone_is_still_refused(home: Vocabulary) -> None:
     result = understand("put the magazine next to the remote", home, speaker="fiona")
     assert not result.accepted and "remote" in result.reason
+
+
+@pytest.mark.parametrize(
+    ("world", "text", "frames"),
+    [
+        (
+            "home",
+            "put the magazine on the shelf, the one on the left",
+            [{"frame": "PLACING", "theme": "magazine", "goal": "left_shelf"}],
+        ),
+        (
+            "home",
+            "put the photo album on the right-hand one",
+            [{"frame": "PLACING", "theme": "photo_album", "goal": "right_shelf"}],
+        ),
+        (
+            "erl",
+            "turn on the one on the left",
+            [{"frame": "OPERATING", "device": "bedroom_left_light", "state": "on"}],
+        ),
+        (
+            "erl",
+            "switch on the lamp, the one on the right",
+            [{"frame": "OPERATING", "device": "bedroom_right_light", "state": "on"}],
+        ),
+    ],
+)
+def test_the_one_on_the_left(
+    vocabulary: Vocabulary, world: str, text: str, frames: list[dict[str, str]]
+) -> None:
+    said = _home() if world == "home" else vocabulary
+    assert frames_read(said, text, "stanley" if world == "home" else "annie") == frames
