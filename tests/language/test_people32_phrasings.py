@@ -59,6 +59,11 @@ def _home() -> Vocabulary:
     return world_of(HOME)
 
 
+def _read(world: str, erl: Vocabulary, text: str, speaker: str) -> list[dict[str, str]]:
+    """The frames ``text`` is read as in the family home (said by ``speaker``) or in the ERL apartment."""
+    return frames_read(_home(), text, speaker) if world == "home" else frames_read(erl, text)
+
+
 @pytest.fixture(scope="module")
 def home() -> Vocabulary:
     """The family home's vocabulary."""
@@ -75,10 +80,7 @@ def home() -> Vocabulary:
     ],
 )
 def test_wheres_x_gone_asks_where_it_is(vocabulary: Vocabulary, world: str, text: str, theme: str) -> None:
-    said = _home() if world == "home" else vocabulary
-    assert frames_read(said, text, "graham" if world == "home" else "annie") == [
-        {"frame": "SEARCHING", "theme": theme}
-    ]
+    assert _read(world, vocabulary, text, "graham") == [{"frame": "SEARCHING", "theme": theme}]
 
 
 @pytest.mark.parametrize(
@@ -155,8 +157,7 @@ def test_a_wish_to_go_alone_is_still_a_going(vocabulary: Vocabulary) -> None:
 def test_the_floor_is_no_source(
     vocabulary: Vocabulary, world: str, text: str, frames: list[dict[str, str]]
 ) -> None:
-    said = _home() if world == "home" else vocabulary
-    assert frames_read(said, text, "graham" if world == "home" else "annie") == frames
+    assert _read(world, vocabulary, text, "graham") == frames
 
 
 def test_the_floor_as_a_goal_is_still_refused(vocabulary: Vocabulary) -> None:
@@ -240,8 +241,7 @@ def test_the_other_one_of_a_pair_is_unchanged(vocabulary: Vocabulary) -> None:
 def test_more_of_the_six_voices(
     vocabulary: Vocabulary, world: str, text: str, frames: list[dict[str, str]]
 ) -> None:
-    said = _home() if world == "home" else vocabulary
-    assert frames_read(said, text, "lachlan" if world == "home" else "annie") == frames
+    assert _read(world, vocabulary, text, "lachlan") == frames
 
 
 @pytest.mark.parametrize(
@@ -283,8 +283,7 @@ def test_do_we_have_a_thing_the_home_lacks_names_it() -> None:
 def test_a_room_and_another_rooms_lights(
     vocabulary: Vocabulary, world: str, text: str, devices: list[str], state: str
 ) -> None:
-    said = _home() if world == "home" else vocabulary
-    assert frames_read(said, text, "graham" if world == "home" else "annie") == [
+    assert _read(world, vocabulary, text, "graham") == [
         {"frame": "OPERATING", "device": device, "state": state} for device in devices
     ]
 
@@ -330,23 +329,6 @@ def test_furniture_switched_is_named(vocabulary: Vocabulary, world: str, text: s
             "put the cheese in the fridge next to the milk",
             [{"frame": "PLACING", "theme": "cheese", "goal": "fridge"}],
         ),
-    ],
-)
-def test_where_on_a_piece_of_furniture(
-    vocabulary: Vocabulary, world: str, text: str, frames: list[dict[str, str]]
-) -> None:
-    said = _home() if world == "home" else vocabulary
-    assert frames_read(said, text, "fiona" if world == "home" else "annie") == frames
-
-
-def test_a_thing_put_beside_another_alone_is_still_refused(home: Vocabulary) -> None:
-    result = understand("put the magazine next to the remote", home, speaker="fiona")
-    assert not result.accepted and "remote" in result.reason
-
-
-@pytest.mark.parametrize(
-    ("world", "text", "frames"),
-    [
         (
             "home",
             "put the magazine on the shelf, the one on the left",
@@ -369,8 +351,12 @@ def test_a_thing_put_beside_another_alone_is_still_refused(home: Vocabulary) -> 
         ),
     ],
 )
-def test_the_one_on_the_left(
+def test_where_on_furniture_and_on_which_side(
     vocabulary: Vocabulary, world: str, text: str, frames: list[dict[str, str]]
 ) -> None:
-    said = _home() if world == "home" else vocabulary
-    assert frames_read(said, text, "stanley" if world == "home" else "annie") == frames
+    assert _read(world, vocabulary, text, "fiona") == frames
+
+
+def test_a_thing_put_beside_another_alone_is_still_refused(home: Vocabulary) -> None:
+    result = understand("put the magazine next to the remote", home, speaker="fiona")
+    assert not result.accepted and "remote" in result.reason
