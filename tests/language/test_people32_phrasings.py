@@ -37,7 +37,9 @@ and, from probing the six voices beyond the set:
   remote") only says where on it, as it did said before the place (``knic.language.roles``);
 * "the one on the left", "the right one" after a name said alone ("put the magazine on the shelf, the one on
   the left") or with none, where the world names one thing by that side ("turn on the left one"): that side's
-  thing (``knic.language.ordinary``, ``knic.language.household``).
+  thing (``knic.language.ordinary``, ``knic.language.household``);
+* a setting named and not a level ("put the floor lamp on low", "turn it down low", "on dim") asks how far, as
+  "a bit" does, where "low" was refused as a thing the home lacks (``commands.yaml``).
 """
 
 from __future__ import annotations
@@ -360,3 +362,17 @@ def test_where_on_furniture_and_on_which_side(
 def test_a_thing_put_beside_another_alone_is_still_refused(home: Vocabulary) -> None:
     result = understand("put the magazine next to the remote", home, speaker="fiona")
     assert not result.accepted and "remote" in result.reason
+
+
+@pytest.mark.parametrize(
+    ("world", "text"),
+    [
+        ("home", "put the floor lamp on low"),
+        ("home", "turn the desk lamp on dim"),
+        ("erl", "turn the dimmer down low"),
+    ],
+)
+def test_a_setting_named_asks_how_far(vocabulary: Vocabulary, world: str, text: str) -> None:
+    assert_asked(
+        _home() if world == "home" else vocabulary, text, "how far", "graham" if world == "home" else "annie"
+    )
