@@ -38,6 +38,7 @@ from knic.language.dialects import dialect_words
 from knic.language.gathered import gathered
 from knic.language.gathered import gathered_up as gathered_up  # for the reader, whose module is full
 from knic.language.ordinary import ordinary_read, side_ones
+from knic.language.placedones import ones_placed
 from knic.language.plainorder import asked_plainly
 from knic.language.regional import regional_words
 from knic.language.restating import restated
@@ -483,6 +484,7 @@ def ones_named(segments: list[list[str]], vocabulary: Vocabulary) -> list[list[s
     out: list[list[str]] = []
     for segment in segments:
         kept = side_ones(list(segment), said, sided)  # "the shelf, the one on the left" (ordinary.py)
+        kept = ones_placed(kept, said, vocabulary)  # "the one on the coffee table" (placedones.py)
         for i in range(1, len(kept)):
             heads = [w for w in said + kept[:i] if f"{kept[i - 1]} {w}" in names]
             if kept[i] == "one" and heads:
