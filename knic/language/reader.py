@@ -214,6 +214,7 @@ class Reader(Places):
         ``it``, also whether it asks for an action on "it" or "them" ("open them please"; not "i need it")."""
         kinds = ("item", "room", "furniture", "device", "person")
         said = self.chunks(tokens)
+        said = said[next((i for i, c in enumerate(said) if c.kind != "join"), 0) :]  # "then open them"
         acts = it and said[:1] and said[0].kind == "verb" and said[0].beneficiary is None
         if acts and any(c.kind == "pronoun" and c.role != "person" for c in said):
             return True

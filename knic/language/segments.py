@@ -149,6 +149,7 @@ def operates_it(segment: Sequence[str], chunks: Callable[[Sequence[str]], list[C
     """Whether a stretch of a command switches or sets "it" or "them" ("turn it off", "open them"): a verb
     that only operates devices, first, and a pronoun; such a stretch is the request, never talk around it."""
     said = chunks(segment)
+    said = said[next((i for i, c in enumerate(said) if c.kind != "join"), len(said)) :]  # "then close it"
     operates = bool(said) and said[0].kind == "verb" and said[0].frames == ("OPERATING",)
     return operates and any(c.kind == "pronoun" for c in said)
 
