@@ -299,4 +299,6 @@ def unknown_action(chunks: Sequence[Chunk], kind_of: Callable[[Chunk], str]) -> 
             continue
         elif (pronoun or acted_on == "object") and not word.text.endswith("ly"):
             return word.text
+        elif after[:1] and after[0].kind == "entity" and kind_of(after[0]) == "person":
+            return word.text  # "... and tell tracy dinner is ready": no going to tracy
     return None

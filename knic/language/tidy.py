@@ -480,8 +480,10 @@ def asked_to_come(chunks: list[Chunk], lead: Chunk, is_person: Callable[[Chunk],
         asking, person, to, come = chunks[i : i + 4]
         if (
             asking.text in _ASKING
-            and person.kind == "entity"
-            and is_person(person)
+            and (
+                (person.kind == "entity" and is_person(person))
+                or (person.kind == "pronoun" and person.text in ("her", "him", "them"))  # "ask her to come"
+            )
             and to.text == "to"
             and come.kind == "verb"
             and come.frames == ("MOTION",)

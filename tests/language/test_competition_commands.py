@@ -51,3 +51,20 @@ def test_taking_someone_to_a_person_asks_the_room(vocabulary: Vocabulary, text: 
     result = understand(text, vocabulary, speaker="annie")
     assert not result.accepted and not result.frames
     assert "I do not know where annie is" in result.question
+
+
+def test_an_unknown_action_on_a_named_person_is_refused_by_name(vocabulary: Vocabulary) -> None:
+    # it was a second place to go to: "Go where? the tracy is not a room or furniture"
+    result = understand("go to the kitchen and tell tracy dinner is ready", vocabulary, speaker="annie")
+    assert not result.accepted and "I cannot tell" in result.reason
+
+
+@pytest.mark.parametrize(
+    "text",
+    ["find tracy and ask her to follow you to the kitchen", "find tracy and tell her to go to the kitchen"],
+)
+def test_someone_asked_to_come_by_pronoun_is_taken_there(vocabulary: Vocabulary, text: str) -> None:
+    assert frames_read(vocabulary, text) == [
+        {"frame": "SEARCHING", "theme": "tracy"},
+        {"frame": "ACCOMPANYING", "theme": "tracy", "goal": "kitchen"},
+    ]
