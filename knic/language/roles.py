@@ -123,7 +123,7 @@ def _carry(
             roles["goal"] = reader.resolve(arg, ("room", "furniture"), previous, groups)[0]
             for theme in themes:
                 goals.setdefault(theme, roles["goal"])
-        elif arg.prep is None or (arg.prep == "companion" and themes and _names_items(reader, arg)):
+        elif arg.prep is None or (arg.prep == "companion" and themes and _names_only(reader, arg, "item")):
             # "bring me the stamps along with the envelopes": one more thing
             themes += reader.resolve(arg, ("item",), previous, groups)
         elif arg.prep == "beneficiary" and kind == "BRINGING" and themes and _names_only_places(reader, arg):
@@ -314,15 +314,10 @@ def _landmarks_passed(reader: Resolver, args: list[Arg], *, beside: bool) -> Non
             arg.consumed = True
 
 
-def _names_items(reader: Resolver, arg: Arg) -> bool:
-    """Whether an argument names things to carry (and nothing else)."""
+def _names_only(reader: Resolver, arg: Arg, kind: str) -> bool:
+    """Whether an argument names things of one kind ("item": things to carry, "person") and nothing else."""
     terms = arg.chunk.terms
-    return arg.chunk.kind == "entity" and bool(terms) and all(reader.is_a(t, "item") for t in terms)
-
-
-def _names_people(reader: Resolver, arg: Arg) -> bool:
-    terms = arg.chunk.terms
-    return arg.chunk.kind == "entity" and bool(terms) and all(reader.is_a(t, "person") for t in terms)
+    return arg.chunk.kind == "entity" and bool(terms) and all(reader.is_a(t, kind) for t in terms)
 
 
 def _names_only_places(reader: Resolver, arg: Arg) -> bool:
@@ -340,13 +335,12 @@ def _accompanying(reader: Resolver, clause: Clause, previous: Frames, groups: li
             continue
         if arg.prep is None:
             people += reader.resolve(arg, ("person",), previous, groups)
-        elif arg.prep in ("goal", "place", "level") and arg.chunk.kind == "me":
+        elif arg.prep in ("goal", "place", "level") and (
+            arg.chunk.kind == "me" or _names_only(reader, arg, "person")  # "take tracy to me", "... to annie"
+        ):
             who = reader.vocabulary.phrase_of(people[0]) if people else "them"
-            raise AmbiguityError(f"where should I take {who}? Say the room: I do not know where you are")
-        elif arg.prep in ("goal", "place", "level") and _names_people(reader, arg):  # "take tracy to annie"
-            who = reader.vocabulary.phrase_of(people[0]) if people else "them"
-            to = arg.chunk.text
-            raise AmbiguityError(f"where should I take {who}? Say the room: I do not know where {to} is")
+            whose = "you are" if arg.chunk.kind == "me" else f"{arg.chunk.text} is"
+            raise AmbiguityError(f"where should I take {who}? Say the room: I do not know where {whose}")
         elif arg.prep in ("goal", "place", "level"):
             goal = reader.resolve(arg, ("room", "furniture"), previous, groups)[0]
     if not people:
