@@ -142,6 +142,10 @@ def ros_attached(args: argparse.Namespace, system: Any) -> Iterator[Any]:
             if linger > 0:  # DDS serves what is kept to subscribers that join now, in its own threads
                 print(f"knic: run over; the ROS 2 node stays up {linger:g} s", file=sys.stderr)
                 with contextlib.suppress(KeyboardInterrupt):
-                    time.sleep(linger)
+                    end = time.monotonic() + linger
+                    while (left := end - time.monotonic()) > 0:
+                        time.sleep(min(0.5, left))
+                        # octomaps go only to those who listen: one who joins now gets them too
+                        node.publish_octomaps(node.last_tick)
             node.close()
             link.close()

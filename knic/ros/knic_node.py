@@ -188,6 +188,8 @@ class KnicNode:
         self._next_snapshot = 0.0
         self._path_key: tuple[int, int] | None = None
         self._octomap_digest: dict[str, int] = {}
+        #: the simulated time of the latest tick (the stamp of what is published while the run lingers)
+        self.last_tick = 0.0
         self._unsubscribe: list[Callable[[], None]] = [
             kb.subscribe(self._on_change),
             trace.subscribe(self._on_trace),
@@ -264,6 +266,7 @@ class KnicNode:
 
     def tick(self, now: float) -> None:
         """The bridge's periodic work at simulated time ``now`` (see :class:`KnicBridge`)."""
+        self.last_tick = now
         self.link.drain()
         self.handle_inbox()
         self.publish_pose(self.robot)
