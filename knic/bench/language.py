@@ -15,7 +15,8 @@ garden, likewise; ``people29`` a ground-floor flat adapted for a wheelchair user
 hoist and a courtyard garden; ``people30`` a semi-detached suburban house with a conservatory, a garage
 converted to a workshop and a loft room up a ladder; ``people31`` the commands of robot competitions
 (RoboCup@Home's GPSR, the ERL) in an arena set up as a small flat and in the ERL apartment; ``people32``
-ordinary native speakers in a two-storey family house, weighted to relative places, chains and levels,
+ordinary native speakers in a two-storey family house, weighted to relative places, chains and levels;
+``people33`` a top-floor city apartment with a roof terrace, a home office and a smart-home setup,
 likewise). Each
 case is a command with its gold frames and goals, or with a word the refusal (``reject``) or the question back
 (``question``) must contain. Cases run against the ERL apartment or, with ``world: other``, against a
@@ -83,6 +84,7 @@ SETS = {
     "people30-dev": FIXTURES / "people30" / "dev.yaml",
     "people31-dev": FIXTURES / "people31" / "dev.yaml",
     "people32-dev": FIXTURES / "people32" / "dev.yaml",
+    "people33-dev": FIXTURES / "people33" / "dev.yaml",
 }
 OTHER_WORLD = FIXTURES / "other_world" / "problem.pddl"
 _MAIN = {"MOTION": ("goal",), "OPERATING": ("device", "state")}
