@@ -62,6 +62,7 @@ def test_bench_language_prints_dev_and_test(capsys: pytest.CaptureFixture[str]) 
         "people31-dev",
         "people32-dev",
         "people33-dev",
+        "people34-dev",
     }
     for figures in data.values():
         assert 0.0 <= figures["accuracy"] <= 1.0 and figures["cases"] >= 40
