@@ -40,6 +40,7 @@ from knic.language.gathered import gathered_up as gathered_up  # for the reader,
 from knic.language.ordinary import ordinary_read, side_ones
 from knic.language.placedones import ones_placed
 from knic.language.plainorder import asked_plainly
+from knic.language.procedure import procedure_read
 from knic.language.regional import regional_words
 from knic.language.restating import restated
 from knic.language.vocabulary import Vocabulary
@@ -95,7 +96,8 @@ def where_last(text: str) -> str:
     """ "chopsticks, where?", "my keys where", "annie is where?": a thing said, then "where" alone (said by
     learners and tired people, or asked back): where the thing is ("where is my keys"); else ``text``, with
     questions said in another order put back (:mod:`knic.language.plainorder`)."""
-    text = asked_plainly(ordinary_read(text))  # "ah go on, ...", "off the floor" (ordinary.py)
+    # "ah go on, ...", "off the floor" (ordinary.py); "to my location", "is to be brought" (procedure.py)
+    text = asked_plainly(ordinary_read(procedure_read(text)))
     match = _WHERE_LAST.match(text.lower())
     words = match.group("thing").split() if match else []
     if len(words) > 1 and words[-1] in ("is", "are"):  # "annie is where?", "the keys are where?": asked back

@@ -5,8 +5,9 @@ house where British, Irish, American and Australian speakers of fifteen to eight
   bring me a biscuit"): no going; the request is what is asked (a thing the house lacks in it is named, not
   "go where?"). "Go on to the kitchen", "go on and fetch it" keep their words;
 * a wish to go somewhere and then "take me" with no place ("I'd like to go to the kitchen, would you take
-  me", "I need to go to the bathroom, can you take me there?"): the speaker is taken there, one action,
-  not the robot going there alone;
+  me", "I need to go to the bathroom, can you take me there?"; people33: "I wish to go up to the roof
+  terrace; kindly accompany me", "escort me", "walk me"): the speaker is taken there, one action, not the
+  robot going there alone;
 * "off the floor", "from the floor", "off the ground": where a thing lies that is no place of the world
   ("pick up the cushion off the floor and put it on the armchair"): the taking has no source, where the
   reader would refuse the floor;
@@ -41,9 +42,10 @@ _ENCOURAGED = re.compile(
 #: a wish of the speaker's to go somewhere ("i'd like to go to the kitchen"), then "take me" with no place
 _TAKE_ME_ALONG = re.compile(
     r"^\s*(?P<before>(?:\w+\s*,?\s+)??)"
-    r"i(?:'d|\s+would)?\s+(?:like|want|need|wanna|have)(?:\s+to)?\s+(?:go|get)\s+"
+    r"i(?:'d|\s+would)?\s+(?:like|want|need|wanna|have|wish)(?:\s+to)?\s+(?:go|get)\s+"
     r"(?P<way>(?:(?:up|down|over|back|through|across)\s+)?(?:to|into|in\s+to)\s+[^.,;!?]+?)\s*[.,;!?]+\s*"
-    r"(?:(?:so|and|then)\s+)?(?:(?:would|could|can|will)\s+you\s+)?(?:please\s+)?take\s+me"
+    r"(?:(?:so|and|then)\s+)?(?:(?:would|could|can|will)\s+you\s+)?(?:(?:please|kindly)\s+)?"
+    r"(?:take|accompany|escort|walk)\s+me"
     r"(?:[\s,]+there)?(?:[\s,]+please)?\s*[.?!]*\s*$",
     re.IGNORECASE,
 )

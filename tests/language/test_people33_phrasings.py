@@ -1,0 +1,211 @@
+"""Phrasings from the people33 development set (a top-floor city apartment with a roof terrace and a smart
+home the reader was never tuned on, ``tests/fixtures/language/people33/rooftop_flat.yaml``) the reader first
+got wrong, each tried in the ERL apartment as well:
+
+* radio procedure (``knic.language.procedure``): numbers said digit by digit where a level goes ("six zero
+  percent", "to four five", "one zero zero"); "my location" for the speaker; "confirm location of", "report
+  the location of" for where; "task one, ...", "step two: ..." as the marks of a list; a radio check asks
+  for no action;
+* a request said in the passive ("my laptop is to be brought to me forthwith", "the desk lamp should be
+  switched off", "the letters need to be taken to the office desk"); "the same" for the thing just named
+  ("... and convey the same to the terrace table"); a claim of where a thing is, then "kindly confirm" or
+  "can you check?": a search there (``knic.language.procedure``);
+* "Otis his dummy" (a Dutch or German speaker's possessive) is Otis's dummy, but "give Tom his keys" still
+  gives; "Femke where? Otis need bath": where Femke is (``knic.language.procedure``);
+* a wish to go somewhere, then "kindly accompany me", "escort me" or "walk me" takes the speaker there
+  (``knic.language.ordinary``); "by one half" asks how far as "by half" does, "for the half" is half
+  (``commands.yaml``).
+"""
+
+from __future__ import annotations
+
+from functools import lru_cache
+
+import pytest
+
+from knic.language import understand
+from knic.language.vocabulary import Vocabulary
+
+from .conftest import assert_asked, frames_read, world_of
+
+FLAT = "tests/fixtures/language/people33/rooftop_flat.yaml"
+
+
+@lru_cache(maxsize=1)
+def _flat() -> Vocabulary:
+    return world_of(FLAT)
+
+
+def _read(world: str, erl: Vocabulary, text: str, speaker: str) -> list[dict[str, str]]:
+    """The frames ``text`` is read as in the rooftop flat (said by ``speaker``) or in the ERL apartment."""
+    return frames_read(_flat(), text, speaker) if world == "flat" else frames_read(erl, text)
+
+
+@pytest.mark.parametrize(
+    ("world", "text", "device", "state"),
+    [
+        ("flat", "Roger. Set the desk lamp to six zero percent, over.", "desk_lamp", "60"),
+        ("flat", "Terrace lights to four five percent, over.", "terrace_lights", "45"),
+        ("flat", "Dim the nursery light to one zero, over.", "nursery_light", "10"),
+        ("flat", "Dim the nursery light to one zero zero percent", "nursery_light", "100"),
+        ("erl", "Set the dimmer to six zero percent, over", "living_room_dimmer", "60"),
+        ("erl", "Dimmer to two five, over", "living_room_dimmer", "25"),
+    ],
+)
+def test_digits_said_one_by_one_are_the_level(
+    vocabulary: Vocabulary, world: str, text: str, device: str, state: str
+) -> None:
+    assert _read(world, vocabulary, text, "idris") == [
+        {"frame": "OPERATING", "device": device, "state": state}
+    ]
+
+
+def test_a_digit_alone_or_a_count_stays_as_it_was(vocabulary: Vocabulary) -> None:
+    assert frames_read(vocabulary, "Set the dimmer to two and close the blinds")[0]["state"] == "2"
+    assert frames_read(vocabulary, "Bring me two apples") == [
+        {"frame": "BRINGING", "theme": "apple", "beneficiary": "me"}
+    ]
+
+
+@pytest.mark.parametrize(
+    ("world", "text", "frames"),
+    [
+        (
+            "flat",
+            "Nova, Idris. Request you bring my headphones from the office desk to my location, over.",
+            [{"frame": "BRINGING", "theme": "headphones", "source": "office_desk", "beneficiary": "me"}],
+        ),
+        ("flat", "Confirm location of the car keys, over.", [{"frame": "SEARCHING", "theme": "car_keys"}]),
+        ("flat", "Report location of Femke, over.", [{"frame": "SEARCHING", "theme": "femke"}]),
+        (
+            "erl",
+            "Bring the glasses to my position, over",
+            [{"frame": "BRINGING", "theme": "glasses", "beneficiary": "me"}],
+        ),
+        ("erl", "Report the location of the remote", [{"frame": "SEARCHING", "theme": "remote"}]),
+        (
+            "erl",
+            "Task one, go to the kitchen. Task two, bring me an apple. Over.",
+            [
+                {"frame": "MOTION", "goal": "kitchen"},
+                {"frame": "BRINGING", "theme": "apple", "source": "kitchen", "beneficiary": "me"},
+            ],
+        ),
+        (
+            "flat",
+            "Nova, task one, turn on the corridor light. Task two, proceed to the guest room. Over.",
+            [
+                {"frame": "OPERATING", "device": "corridor_light", "state": "on"},
+                {"frame": "MOTION", "goal": "guest_room"},
+            ],
+        ),
+    ],
+)
+def test_radio_procedure(vocabulary: Vocabulary, world: str, text: str, frames: list[dict[str, str]]) -> None:
+    assert _read(world, vocabulary, text, "idris") == frames
+
+
+@pytest.mark.parametrize(
+    "text", ["Radio check, how do you read?", "Do you copy?", "Radio check, Nova, how do you read, over?"]
+)
+def test_a_radio_check_asks_for_no_action(vocabulary: Vocabulary, text: str) -> None:
+    for said, speaker in ((vocabulary, "annie"), (_flat(), "idris")):
+        result = understand(text, said, speaker=speaker)
+        assert not result.accepted and "action" in result.reason
+
+
+@pytest.mark.parametrize(
+    ("world", "text", "frames"),
+    [
+        (
+            "flat",
+            "My laptop is to be brought to me forthwith",
+            [{"frame": "BRINGING", "theme": "lucian_laptop", "beneficiary": "me"}],
+        ),
+        (
+            "flat",
+            "The desk lamp should be switched off",
+            [{"frame": "OPERATING", "device": "desk_lamp", "state": "off"}],
+        ),
+        (
+            "flat",
+            "The letters need to be taken to the office desk",
+            [{"frame": "BRINGING", "theme": "letters", "goal": "office_desk"}],
+        ),
+        (
+            "erl",
+            "The glasses are to be brought to me",
+            [{"frame": "BRINGING", "theme": "glasses", "beneficiary": "me"}],
+        ),
+        (
+            "erl",
+            "Take the apple from the kitchen table and convey the same to the coffee table",
+            [
+                {"frame": "TAKING", "theme": "apple", "source": "kitchen_table"},
+                {"frame": "BRINGING", "theme": "apple", "source": "kitchen_table", "goal": "coffee_table"},
+            ],
+        ),
+        (
+            "flat",
+            "I put it to you that the car keys are on the coat rack. Kindly confirm.",
+            [{"frame": "SEARCHING", "theme": "car_keys", "ground": "coat_rack"}],
+        ),
+        (
+            "erl",
+            "I think the remote is on the coffee table, can you check?",
+            [{"frame": "SEARCHING", "theme": "remote", "ground": "coffee_table"}],
+        ),
+    ],
+)
+def test_formal_requests(vocabulary: Vocabulary, world: str, text: str, frames: list[dict[str, str]]) -> None:
+    assert _read(world, vocabulary, text, "lucian") == frames
+
+
+@pytest.mark.parametrize(
+    ("world", "text", "frames"),
+    [
+        ("flat", "Where is Otis his dummy?", [{"frame": "SEARCHING", "theme": "dummy"}]),
+        (
+            "flat",
+            "Is Otis his dummy in the cot?",
+            [{"frame": "SEARCHING", "theme": "dummy", "ground": "cot"}],
+        ),
+        (
+            "erl",
+            "Is Tracy her mug in the kitchen?",
+            [{"frame": "SEARCHING", "theme": "mug", "ground": "kitchen"}],
+        ),
+        (
+            "erl",
+            "Give Tracy her glasses",
+            [{"frame": "BRINGING", "theme": "glasses", "beneficiary": "tracy"}],
+        ),
+        ("flat", "Femke where? Otis need bath", [{"frame": "SEARCHING", "theme": "femke"}]),
+        ("erl", "Tracy where? I need her", [{"frame": "SEARCHING", "theme": "tracy"}]),
+    ],
+)
+def test_learners_possessive_and_where(
+    vocabulary: Vocabulary, world: str, text: str, frames: list[dict[str, str]]
+) -> None:
+    assert _read(world, vocabulary, text, "femke") == frames
+
+
+@pytest.mark.parametrize(
+    ("world", "text", "goal"),
+    [
+        ("flat", "I wish to go up to the roof terrace; kindly accompany me", "roof_terrace"),
+        ("erl", "I'd like to go to the bedroom, would you walk me there?", "bedroom"),
+        ("erl", "I need to go to the kitchen, please escort me", "kitchen"),
+    ],
+)
+def test_a_wish_to_go_then_accompany_me(vocabulary: Vocabulary, world: str, text: str, goal: str) -> None:
+    assert _read(world, vocabulary, text, "lucian") == [
+        {"frame": "ACCOMPANYING", "theme": "me", "goal": goal}
+    ]
+
+
+def test_by_one_half_asks_how_far_and_for_the_half_is_half(vocabulary: Vocabulary) -> None:
+    assert_asked(_flat(), "dim the desk lamp by one half", "how far", speaker="lucian")
+    assert frames_read(vocabulary, "open the blinds for half") == [
+        {"frame": "OPERATING", "device": "bedroom_blinds", "state": "50"}
+    ]
