@@ -215,7 +215,11 @@ class Reader(Places):
         kinds = ("item", "room", "furniture", "device", "person")
         said = self.chunks(tokens)
         said = said[next((i for i, c in enumerate(said) if c.kind != "join"), 0) :]  # "then open them"
-        acts = it and said[:1] and said[0].kind == "verb" and said[0].beneficiary is None
+        verb = said[0] if said[:1] and said[0].kind == "verb" else None
+        back = any(c.kind == "me" for c in said) or (verb is not None and verb.text.endswith(" back"))
+        if verb is not None and "MOTION" in verb.frames and back:  # "..., then come back (to me)": no talk
+            return True
+        acts = it and verb is not None and verb.beneficiary is None
         if acts and any(c.kind == "pronoun" and c.role != "person" for c in said):
             return True
         return any(self.is_a(t, k) for c in said for t in c.terms for k in kinds)
@@ -264,13 +268,8 @@ class Reader(Places):
                 if unsettled and "does not refer" in str(exc):  # "it" is a thing said of several
                     raise AmbiguityError(unsettled) from None
                 talk = clause.verb is not None and (clause.verb.soft or clause.names_nothing())
-                if (
-                    talk
-                    and len(clauses) == 1
-                    and clause.verb is not None
-                    and clause.verb.soft
-                    and not clause.args
-                ):
+                lone = len(clauses) == 1 and clause.verb is not None and clause.verb.soft
+                if talk and lone and not clause.args:
                     # "what's the weather going to be like": "going" asks nothing of the robot
                     raise LanguageError(
                         f"I do not know what to do: no action I know in '{' '.join(tokens)}'"

@@ -16,7 +16,21 @@ from knic.language.vocabulary import Vocabulary
 def steps_read(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
     """The chunks with the steps of this module said whole, in the order they are to be done."""
     said = first_put_first(after_you_in_order(gone_to_do(before_to(place_said_first(chunks, vocabulary)))))
-    return each_given(goings_repeated(said, vocabulary), vocabulary)
+    return came_back(each_given(goings_repeated(said, vocabulary), vocabulary))
+
+
+def came_back(chunks: list[Chunk]) -> list[Chunk]:
+    """ "go to the kitchen and come back", "take the mug to the study, then go back": coming back, no place
+    said, after the robot was sent somewhere, is coming back to the speaker (who then may be asked where they
+    are); it was left out as talk, and the robot stayed where it was sent. Not after the robot was already
+    sent to the speaker ("bring me the mug, then come back": nowhere else to come back to)."""
+    for i, chunk in enumerate(chunks):
+        back = chunk.kind == "verb" and "MOTION" in chunk.frames and chunk.text.split()[-1] == "back"
+        after = chunks[i + 1].kind if i + 1 < len(chunks) else "join"
+        sent = any(c.kind == "verb" for c in chunks[:i]) and not any(c.kind == "me" for c in chunks[:i])
+        if back and sent and after in ("join", "verb"):
+            return [*chunks[: i + 1], Chunk("prep", "to", role="goal"), Chunk("me", "me"), *chunks[i + 1 :]]
+    return chunks
 
 
 def place_said_first(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:

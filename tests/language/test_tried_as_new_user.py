@@ -1,0 +1,96 @@
+"""Steps found trying the reader as a new user. Coming back to the speaker as the last step of a chain is a
+step, not talk: "..., come back to me" said after commas asks where the speaker is (without the commas it
+did; with them the step was dropped as talk naming nothing), and "come back" with no place said after the
+robot was sent somewhere is coming back to the speaker (``knic.language.stepwise.came_back``), where it was
+left out. A door bell is heard, not worked ("ring the bell" asked how far to set it). "Every room" is the
+whole home (it was the one room whose name ends in "room")."""
+
+from __future__ import annotations
+
+import pytest
+
+from knic.language import understand
+from knic.language.vocabulary import Vocabulary
+
+from .conftest import frames_read
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "go to the bedroom, go to the bathroom, come to me",
+        "go to the bedroom, then go to the bathroom, then come back to me",
+        "switch on the left light, then go to the bathroom, then come to me",
+        "go to the kitchen and come back",
+        "take the mug to the kitchen and come back",
+        "put the mug on the kitchen counter, then go back",
+        "go to the bathroom, then head back and switch off the hallway light",
+    ],
+)
+def test_coming_back_to_the_speaker_asks_where_they_are(vocabulary: Vocabulary, text: str) -> None:
+    result = understand(text, vocabulary, speaker="annie")
+    assert not result.accepted and not result.frames
+    assert "where are you" in result.question.lower()
+
+
+def test_a_place_said_after_coming_back_is_where_it_goes(vocabulary: Vocabulary) -> None:
+    assert frames_read(vocabulary, "go to the kitchen, then come back to the bedroom") == [
+        {"frame": "MOTION", "goal": "kitchen"},
+        {"frame": "MOTION", "goal": "bedroom"},
+    ]
+    assert frames_read(vocabulary, "go to the bedroom, go to the bathroom, come back to the kitchen") == [
+        {"frame": "MOTION", "goal": "bedroom"},
+        {"frame": "MOTION", "goal": "bathroom"},
+        {"frame": "MOTION", "goal": "kitchen"},
+    ]
+
+
+def test_coming_back_after_a_bringing_to_the_speaker_adds_nothing(vocabulary: Vocabulary) -> None:
+    assert frames_read(vocabulary, "bring me the mug, then come back") == [
+        {"frame": "BRINGING", "theme": "mug", "beneficiary": "me"}
+    ]
+
+
+def test_talk_said_with_me_is_still_talk(vocabulary: Vocabulary) -> None:
+    assert frames_read(vocabulary, "excuse me, bring me the mug") == [
+        {"frame": "BRINGING", "theme": "mug", "beneficiary": "me"}
+    ]
+    assert frames_read(vocabulary, "bring me the mug, trust me, it's the blue one") == [
+        {"frame": "BRINGING", "theme": "mug", "beneficiary": "me"}
+    ]
+
+
+def test_coming_back_said_alone_still_asks_where(vocabulary: Vocabulary) -> None:
+    result = understand("come back", vocabulary, speaker="annie")
+    assert not result.accepted and "where" in result.reason.lower()
+
+
+@pytest.mark.parametrize(
+    "text", ["ring the door bell", "turn the door bell on", "switch on the left light and ring the bell"]
+)
+def test_a_bell_is_heard_not_worked(vocabulary: Vocabulary, text: str) -> None:
+    result = understand(text, vocabulary, speaker="annie")
+    assert not result.accepted and not result.question and not result.frames
+    assert "door bell" in result.reason
+
+
+def test_a_bell_of_another_home_is_named() -> None:
+    from .conftest import world_of
+
+    result = understand(
+        "ring the bell", world_of("worlds/test_bungalow/test_bungalow.yaml"), speaker="walter"
+    )
+    assert not result.accepted and "porch bell" in result.reason
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "could you turn the lights off in every room",
+        "turn off the lights in all the rooms",
+        "switch the lights off in each room",
+        "turn off the lights in all rooms, please",
+    ],
+)
+def test_every_room_is_the_whole_home(vocabulary: Vocabulary, text: str) -> None:
+    assert frames_read(vocabulary, text) == [{"frame": "OPERATING", "device": "all_lights", "state": "off"}]
