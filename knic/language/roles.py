@@ -444,8 +444,8 @@ def _operating(reader: Resolver, clause: Clause, previous: Frames, groups: list[
         named = arg.chunk.text
     if not devices:
         devices = _implicit(clause, groups, reader.vocabulary, "device", "light, dimmer or blinds")
-    if bells := [d for d in devices if _all_are(reader.vocabulary, reader.vocabulary.members(d), "bell")]:
-        # "ring the bell": a door bell is heard, not worked (no action of the domain sets it)
+    bells = [d for d in devices if _all_are(reader.vocabulary, list(reader.vocabulary.members(d)), "bell")]
+    if bells:  # "ring the bell": a door bell is heard, not worked (no action of the domain sets it)
         raise LanguageError(f"I cannot work the {reader.vocabulary.phrase_of(bells[0])}: I can only hear it")
     way = [w for w in (*clause.unknown, *clause.missing) if w in _FLOORS]
     if way and len({m for d in devices for m in reader.vocabulary.members(d)}) > 1:  # "the lights downstairs"
