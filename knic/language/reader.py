@@ -265,7 +265,7 @@ class Reader(Places):
             except AmbiguityError:
                 raise
             except LanguageError as exc:
-                if unsettled and "does not refer" in str(exc):  # "it" is a thing said of several
+                if unsettled and ("does not refer" in str(exc) or " what? " in str(exc)):  # "milk bring me"
                     raise AmbiguityError(unsettled) from None
                 talk = clause.verb is not None and (clause.verb.soft or clause.names_nothing())
                 lone = len(clauses) == 1 and clause.verb is not None and clause.verb.soft
@@ -397,13 +397,12 @@ class Reader(Places):
             place = any(self.is_a(t, "room") or self.is_a(t, "furniture") for t in arg.chunk.terms)
             if arg.prep == "place" and not place and last is not None:
                 continue  # "the toaster near the kettle, bring it ...": the kettle only says where
-            if arg.prep is None or not place:  # "i seem to have misplaced my glasses": said, whatever before
+            if not place or (arg.prep is None and last is None):  # "i seem to have misplaced my glasses"
                 mentioned.append(CommandFrame("SEARCHING", {"theme": symbol}))
                 last = symbol
-            elif (
-                arg.prep in ("place", "source") and last is not None
-            ):  # "care folder from the desk, bring it"
-                located.setdefault(last, symbol)
+            elif last is not None and arg.prep in ("place", "source", None):  # "care folder from the desk"
+                # where all said before is: "calpol, bathroom cabinet, ...", "kimchi and milk, from fridge"
+                located.update({f.args["theme"]: symbol for f in mentioned if f.args["theme"] not in located})
         return mentioned, located, unsettled
 
     @staticmethod

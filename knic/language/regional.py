@@ -21,6 +21,8 @@ Two steps, both general English (no world's names):
   - "both" said last after two things joined by "and" ("the hall light and the landing light both"), and
     "an' all" said last ("... and the landing light an' all", as well): left out;
   - the Northern "summat", "owt", "nowt": something, anything, nothing;
+  - slang for a look after "have a" ("have a butcher's for me gloves", Cockney rhyming slang; "have a
+    gander", "a shufti", "a dekko", Australian "a squiz"): "have a look";
   - "I want to drink juice", "I'd like to eat an apple" (a learner's): "I want juice", "I'd like an apple";
   - where a thing or person is said to be, hedged or contracted ("the atlas should be on the dining table",
     "check whether she's in the bedroom"): "is";
@@ -68,6 +70,8 @@ from knic.language.vocabulary import Vocabulary
 #: a Yorkshire "t'" before its noun; "gi'", "an'", "o'"; a dropped "g" ("fixin'")
 _ARTICLE = re.compile(r"^t'([a-z].*)$")
 _CLIPPED = {"gi'": "give", "an'": "and", "o'": "of", "where'd": "where did", "'ere": "here", "'alf": "half"}
+#: slang for a look, said after "have a" ("have a butcher's for", "have a gander for", "have a squiz for")
+_A_LOOK = frozenset({"butcher's", "butchers", "gander", "shufti", "squiz", "dekko", "butcher", "look-see"})
 #: Northern English words for "something", "anything", "nothing"
 _NORTHERN = {"summat": "something", "owt": "anything", "nowt": "nothing"}
 _DROPPED_G = re.compile(r"^([a-z]+)in'$")
@@ -138,6 +142,8 @@ def regional_words(tokens: list[str]) -> list[str]:
             continue  # "kit kun": Kit; "off the gym light lah"
         elif token == "on" and set(tokens[i + 1 : i + 2]) & _ON_WHERE and "to" in tokens[i + 2 :]:
             continue  # "tote it on up to the guest room"
+        elif token in _A_LOOK and out[-2:] == ["have", "a"]:
+            out.append("look")  # "have a butcher's for me gloves" (Cockney), "have a squiz for" (Australian)
         else:
             out.append(token)
     for i, token in enumerate(out[:-1]):
@@ -316,11 +322,14 @@ _SETTINGS = frozenset({"percent", "on", "off", "open", "closed", "shut", "half",
 
 def _purpose_dropped(words: list[str], names: frozenset[str], people: set[str]) -> list[str]:
     """ "reading lamp to forty percent for the assessment": what a device is set for, said last with words
-    that name nothing of the world, is left out (not a thing the world lacks)."""
+    that name nothing of the world, is left out (not a thing the world lacks); "for the half" (a Dutch
+    speaker's "voor de helft") is the setting itself, no purpose."""
     if "for" not in words[1:] or not _SETTINGS & set(words):
         return words
     at = len(words) - 1 - words[::-1].index("for")
     said = words[at + 1 :]
+    if {"half", "halfway", "full", "fully", "percent"} & set(said):
+        return words
     if said[:1] and said[0] in _DETERMINERS and not any(w in names or w in people for w in said):
         return words[:at]
     return words

@@ -333,7 +333,9 @@ def _accompanying(reader: Resolver, clause: Clause, previous: Frames, groups: li
     for arg in args:
         if arg.consumed:
             continue
-        if arg.prep is None:
+        if arg.prep is None and people == [SPEAKER] and _names_only(reader, arg, "room"):  # "take me roof":
+            goal = reader.resolve(arg, ("room",), previous, groups)[0]  # a learner's "to" left out
+        elif arg.prep is None:
             people += reader.resolve(arg, ("person",), previous, groups)
         elif arg.prep in ("goal", "place", "level") and (
             arg.chunk.kind == "me" or _names_only(reader, arg, "person")  # "take tracy to me", "... to annie"

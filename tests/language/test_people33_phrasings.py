@@ -14,7 +14,15 @@ got wrong, each tried in the ERL apartment as well:
   gives; "Femke where? Otis need bath": where Femke is (``knic.language.procedure``);
 * a wish to go somewhere, then "kindly accompany me", "escort me" or "walk me" takes the speaker there
   (``knic.language.ordinary``); "by one half" asks how far as "by half" does, "for the half" is half
-  (``commands.yaml``).
+  (``commands.yaml``), not a purpose said last (``knic.language.regional``);
+* "have a butcher's for" (Cockney rhyming slang), "have a gander for", "have a squiz for" search, as "have a
+  look for" does (``knic.language.regional``);
+* "take me roof", a learner's "take me" before a room with "to" left out, takes the speaker there
+  (``knic.language.roles``); "take me the apple" still brings it;
+* a place said bare after a thing before the verb ("Calpol, bathroom cabinet, bring to Hana") is where the
+  thing is, and a place said after several things ("kimchi and whole milk, from refrigerator bring ...") is
+  where each of them is; a thing of several said before a verb that then names none ("milk bring me
+  please") is asked about, not "bring what?" (``knic.language.reader``).
 """
 
 from __future__ import annotations
@@ -208,4 +216,64 @@ def test_by_one_half_asks_how_far_and_for_the_half_is_half(vocabulary: Vocabular
     assert_asked(_flat(), "dim the desk lamp by one half", "how far", speaker="lucian")
     assert frames_read(vocabulary, "open the blinds for half") == [
         {"frame": "OPERATING", "device": "bedroom_blinds", "state": "50"}
+    ]
+
+
+@pytest.mark.parametrize(
+    ("world", "text", "frames"),
+    [
+        (
+            "flat",
+            "Open the curtains in the living room for the half",
+            [{"frame": "OPERATING", "device": "living_room_curtains", "state": "50"}],
+        ),
+        (
+            "erl",
+            "close the blinds for the half",
+            [{"frame": "OPERATING", "device": "bedroom_blinds", "state": "50"}],
+        ),
+        (
+            "flat",
+            "Have a butcher's for me rubber gloves, would ya?",
+            [{"frame": "SEARCHING", "theme": "rubber_gloves"}],
+        ),
+        ("erl", "have a gander for my glasses", [{"frame": "SEARCHING", "theme": "glasses"}]),
+        ("erl", "have a squiz for the remote, mate", [{"frame": "SEARCHING", "theme": "remote"}]),
+        (
+            "flat",
+            "Take me roof, I want sun",
+            [{"frame": "ACCOMPANYING", "theme": "me", "goal": "roof_terrace"}],
+        ),
+        ("erl", "take me kitchen please", [{"frame": "ACCOMPANYING", "theme": "me", "goal": "kitchen"}]),
+        ("erl", "take me the apple", [{"frame": "BRINGING", "theme": "apple", "beneficiary": "me"}]),
+        (
+            "flat",
+            "Calpol, bathroom cabinet, bring to Hana",
+            [{"frame": "BRINGING", "theme": "calpol", "source": "bathroom_cabinet", "beneficiary": "hana"}],
+        ),
+        (
+            "flat",
+            "Kimchi and whole milk, from refrigerator bring to dining table",
+            [
+                {"frame": "BRINGING", "theme": "kimchi", "source": "fridge", "goal": "dining_table"},
+                {"frame": "BRINGING", "theme": "whole_milk", "source": "fridge", "goal": "dining_table"},
+            ],
+        ),
+        (
+            "erl",
+            "the mug, the kitchen, bring it to me",
+            [{"frame": "BRINGING", "theme": "mug", "source": "kitchen", "beneficiary": "me"}],
+        ),
+    ],
+)
+def test_learners_and_londoners(
+    vocabulary: Vocabulary, world: str, text: str, frames: list[dict[str, str]]
+) -> None:
+    assert _read(world, vocabulary, text, "soonja") == frames
+
+
+def test_a_thing_of_several_said_before_its_verb_is_asked_about(vocabulary: Vocabulary) -> None:
+    assert_asked(_flat(), "Milk bring me please", "milk", speaker="soonja")
+    assert frames_read(vocabulary, "apple bring me please") == [
+        {"frame": "BRINGING", "theme": "apple", "beneficiary": "me"}
     ]
