@@ -21,6 +21,9 @@ from knic.language.shortnames import containers
 _NOUNS = ("entity", "me", "pronoun", "everything", "there")
 #: words that end a noun phrase the world has no name for ("the front door is open")
 _LINKING = ("is", "are", "was", "were", "be")
+#: words of a level said in words that say which way too ("all the way down", "as low as it goes"): a closing
+#: verb does not turn them round, as it does "fully" ("close the blinds fully": closed)
+_WAYS = frozenset(("up", "down", "low", "lowest", "high", "highest", "bright", "dim", "minimum", "maximum"))
 
 
 @dataclass
@@ -486,7 +489,8 @@ def add_to_clause(
         clause.states.append(chunk.state or "")
     elif chunk.kind in ("level", "number"):
         clause.levels.append(chunk.value or 0)
-        clause.level_in_words = chunk.kind == "level" and prep is None  # "to a quarter": where
+        # "to a quarter": where; "all the way down", "as low as it goes": which way is said too
+        clause.level_in_words = chunk.kind == "level" and prep is None and not _WAYS & set(chunk.text.split())
     elif chunk.kind == "unknown":
         # a determiner after it starts the next noun phrase once an action is said ("bring my husband his
         # glasses": 'husband' is no one the world knows)

@@ -21,6 +21,7 @@ from knic.language.frames import CommandFrame
 from knic.language.goals import frames_to_goals, hints
 from knic.language.grammar import Grammar
 from knic.language.owned import owned_read
+from knic.language.plainspoken import plainly_said
 from knic.language.reader import AmbiguityError, Reader
 from knic.language.vocabulary import Vocabulary
 from knowledge_base import Fact
@@ -156,8 +157,11 @@ def understand(
         reason = f"'{negative.group(0)}' is below zero: a level goes from 0 to 100 percent"
         return Understanding(text, reason=reason, speaker=speaker)
     try:
-        # "it's dark in the study": its lights; "hoodie from my bed": the bed in the speaker's own room
-        reading = reader_for(vocabulary).read(dark_read(owned_read(text, vocabulary, speaker)))
+        # "it's dark in the study": its lights; "hoodie from my bed": the bed in the speaker's own room;
+        # "three zero percent", "do the light out": said plainly (plainspoken.py)
+        reader = reader_for(vocabulary)
+        said = plainly_said(text, vocabulary, lambda word: reader.chunks([word])[0].kind == "unknown")
+        reading = reader.read(dark_read(owned_read(said, vocabulary, speaker)))
     except AmbiguityError as exc:
         question = str(exc)[:1].upper() + str(exc)[1:]
         return Understanding(text, reason=f"ambiguous: {exc}", speaker=speaker, question=question)
