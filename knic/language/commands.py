@@ -97,6 +97,7 @@ class CommandLanguage:
     here: tuple[str, ...] = ()
     containment: tuple[str, ...] = ()
     anywhere: tuple[str, ...] = ()
+    except_words: tuple[str, ...] = ()
     discard_verbs: tuple[str, ...] = ()
     discard_places: tuple[str, ...] = ()
     past_forms: dict[str, str] = field(default_factory=dict)
@@ -247,6 +248,7 @@ def load_language(path: str | Path = DEFAULT_PATH) -> CommandLanguage:
         here=_phrases(data, "here", source),
         containment=_phrases(data, "containment", source),
         anywhere=_phrases(data, "anywhere", source),
+        except_words=_phrases(data, "except_words", source),
         discard_verbs=_phrases(data, "discard_verbs", source),
         discard_places=_phrases(data, "discard_places", source),
         bare_request=bare,

@@ -3,8 +3,10 @@ understand` (people34's voices first, each rule as general as the English it rea
 
 * "out" before where someone or something is ("is he out in the garage?", "the counter out in the casita"):
   where, not a state, unless a light or a switch is said before it ("turn the light out in the hall");
-* a question said without its "is" ("He in the den?", "Wes in the garage?") and "where X at?" ("where my
-  cooler at?", said in the American South);
+* a question said without its "is" ("He in the den?", "Wes in the garage?"), "where X at?" ("where my
+  cooler at?", said in the American South) and a learner's "where he go?";
+* what another person named does or did, said after the request ("..., Wes forgot it again", "..., Clyde
+  goes in bath"), is said of them: no request (what they want or need still is: "..., tracy wants it");
 * a person said first in a sentence and "his" or "her" after ("Clyde, his glasses, where?"; Dutch and
   Afrikaans speakers' "Clyde his pill organizer stands on ...") is that person's thing: "clyde's glasses"
   (said after another word, :mod:`knic.language.procedure` reads it);
@@ -52,6 +54,11 @@ _BOTH = re.compile(
     r"(?=\s*(?:[,.!?;]|$|(?:to|into|in|on|onto|over|here|up|down|for|please)\b))",
     re.IGNORECASE,
 )
+#: a person's doing said in the third person or the past ("goes", "forgot", "left"), not what they want
+_DOES = (
+    r"(?!(?:wants|needs|asks|likes|loves|would)\b)(?:[a-z]+(?:[^s']s|ed)|forgot|went|left|took|got|did|had|was"
+    r"|came|broke|made|knows)\b"
+)
 #: "light up the shop light" (as a fire is lit): on; "turn the light up to 80" is no such verb
 _LIGHT_UP = re.compile(rf"\blight\s+up(?=\s+(?:{_DET}|all)\b)", re.IGNORECASE)
 _DEVICE_NOUN = r"(?:blinds?|shades?|curtains?|lights?|lamps?)"
@@ -69,6 +76,9 @@ def plainly_said(text: str, vocabulary: Vocabulary, unknown: Callable[[str], boo
         kept = [s for s in said if not _OWN_PLANS.match(s)]
         sentences = kept or said
     text = " ".join(s.strip() for s in sentences) if sentences else text
+    if people:  # "..., Wes forgot it again": what another person does or did is said of them, not asked
+        names = "|".join(re.escape(p) for p in sorted(people, key=len, reverse=True))
+        text = re.sub(rf"[,.;!]\s*(?:{names})\s+{_DOES}[^,.;!?]*", "", text, flags=re.IGNORECASE)
     text = _LIGHT_UP.sub("switch on", text)
     text = _BOTH.sub(lambda m: f"{m.group(1)}{m.group(2) or ''} them", text)
     if rooms:
@@ -93,6 +103,7 @@ def _sentence(sentence: str, people: list[str], devices: set[str], unknown: Call
     sentence = re.sub(
         r"\bwhere\s+(?!is\b|are\b)(.+?)\s+at(?=\s*[?.!]*\s*$)", r"where is \1", sentence, flags=re.I
     )
+    sentence = re.sub(rf"\bwhere\s+({who})\s+(?:go|gone|goes|went)\b", r"where is \1", sentence, flags=re.I)
     if names:
         sentence = re.sub(rf"^(\s*)({names}),?\s+(?:his|her)\s+", r"\1\2's ", sentence, flags=re.IGNORECASE)
     sentence = _STANDS.sub("is ", sentence)

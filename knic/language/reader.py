@@ -36,6 +36,7 @@ from knic.language.chains import AmbiguityError, Reading, chain, referent, settl
 from knic.language.chunks import Chunk, Chunker
 from knic.language.clauses import Arg, Clause, split_clauses
 from knic.language.commands import CommandLanguage, command_language
+from knic.language.excepting import excepted, without
 from knic.language.frames import KIND_PLURALS, SPEAKER, CommandFrame, not_of_kinds
 from knic.language.household import gathered_up, ones_named, other_one, said_around, where_last, words_tidied
 from knic.language.learners import learners_read
@@ -101,8 +102,7 @@ class Reader(Places):
         return self.chunker.chunks(tokens)
 
     def clauses(self, chunks: list[Chunk], context: list[Arg] | None = None) -> list[Clause]:
-        """Split chunks into clauses at verbs (see :mod:`knic.language.clauses`); ``context`` receives the
-        noun phrases said before the first verb that make no clause."""
+        """Chunks split at verbs (:mod:`knic.language.clauses`); ``context``: noun phrases before the 1st."""
         return split_clauses(
             chunks,
             lambda chunk: any(self.is_a(t, "device") for t in chunk.terms),
@@ -122,6 +122,8 @@ class Reader(Places):
             LanguageError: the command is not understood (the message says what is missing or unknown).
         """
         language = self.language
+        if split := excepted(text, language, self._verb_of):  # "all the lights but the hallway one"
+            return without(self.read(split[0]), split[1], self.vocabulary, self.chunks)
         text = digits_read(
             where_last(cut_off_dropped(text)),
             language.digit_words,

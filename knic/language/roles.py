@@ -474,6 +474,8 @@ def _operating(reader: Resolver, clause: Clause, previous: Frames, groups: list[
     lit = lights or (any(is_light) and dimmed)
     if state == "closed" and dimmed:  # a dimmer alone: "close the desk lamp" (Hong Kong English) is off
         state = "off"  # ("turn the dimmer right up" stays full, not on)
+    if state == "open" and dimmed and clause.verb is not None and clause.verb.text.startswith("open"):
+        state = "on"  # "open the desk lamp", as "open the light": on
     if state in _LIGHT_STATES and lit:
         state = _LIGHT_STATES[state]  # "open the left light", "close all the lights" (dimmers too): on, off
     if state in _BLINDS_STATES and _all_are(reader.vocabulary, members, "blinds"):

@@ -392,6 +392,8 @@ def came_from(previous: Sequence[CommandFrame], theme: str) -> str | None:
 
 
 _LANDMARKS = (("next", "to"), ("close", "to"), ("by",), ("near",), ("beside",))
+#: words after a landmark that end its name: the state said last ("turn the lamp near the recliner on")
+_AFTER_LANDMARK = frozenset({"on", "off", "out", "up", "down", "open", "shut", "closed", "please", "now"})
 
 
 def _landmark_unknown(words: list[str], phrases: dict[str, Term], heads: set[str]) -> list[str]:
@@ -407,6 +409,8 @@ def _landmark_unknown(words: list[str], phrases: dict[str, Term], heads: set[str
         while at < len(words) and words[at] in _DETERMINERS:
             at += 1
         said = words[at:]
+        while said and said[-1] in _AFTER_LANDMARK:
+            said = said[:-1]
         if len(fitting) < 2 or not said or len(said) > 2 or " ".join(said) in phrases:
             continue
         if said[-1] in heads or said[-1][:-1] in heads:

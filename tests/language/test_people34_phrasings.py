@@ -16,6 +16,11 @@ apartment as well:
 * the speaker's own plans in a sentence of their own ("I go to the market now.") are talk; "bring me both"
   after two things is "them"; a room said first ("my room, blinds down to ten percent") is where the device
   said next is; "in the mudroom by the boot bench" is by the boot bench (``plainspoken``);
+* a learner's "where he go?"; what another person named does or did, said after the request ("..., Wes
+  forgot it again", "..., Clyde goes in bath"), asks nothing, while what they want still does
+  (``plainspoken``);
+* a state said after a lamp and its landmark ("turn the lamp near the recliner on") no longer drops the
+  landmark (``knic.language.selecting``); a dimmer opened, as a light is, is on (``knic.language.roles``);
 * a level said in words that says which way ("all the way down", "as low as it goes") is not turned round by
   a closing verb, as "fully" is ("close the blinds fully": closed; ``knic.language.clauses``).
 """
@@ -258,3 +263,63 @@ def test_plans_both_rooms_said_first_and_levels_with_a_way(
     vocabulary: Vocabulary, world: str, text: str, frames: list[dict[str, str]]
 ) -> None:
     assert _read(world, vocabulary, text, "wes") == frames
+
+
+@pytest.mark.parametrize(
+    ("world", "text", "frames"),
+    [
+        ("ranch", "Clyde, where he go?", [{"frame": "SEARCHING", "theme": "clyde"}]),
+        ("erl", "Tracy, where she go?", [{"frame": "SEARCHING", "theme": "tracy"}]),
+        (
+            "ranch",
+            "Do the garage light out, Wes forgot it again.",
+            [_operating("garage_light", "off")],
+        ),
+        (
+            "ranch",
+            "Bring the bath towel and the shampoo to the master bathroom, Clyde goes in bath.",
+            [
+                {"frame": "BRINGING", "theme": "bath_towel", "goal": "master_bathroom"},
+                {"frame": "BRINGING", "theme": "shampoo", "goal": "master_bathroom"},
+            ],
+        ),
+        (
+            "erl",
+            "put the apple on the kitchen table, Jack forgot it in the bedroom",
+            [{"frame": "PLACING", "theme": "apple", "goal": "kitchen_table"}],
+        ),
+        (
+            "erl",
+            "bring me the cup, tracy wants it",
+            [
+                {"frame": "BRINGING", "theme": "cup", "beneficiary": "me"},
+                {"frame": "BRINGING", "theme": "cup", "beneficiary": "tracy"},
+            ],
+        ),
+    ],
+)
+def test_what_another_person_does_is_said_of_them(
+    vocabulary: Vocabulary, world: str, text: str, frames: list[dict[str, str]]
+) -> None:
+    assert _read(world, vocabulary, text, "femke") == frames
+
+
+@pytest.mark.parametrize(
+    ("world", "text", "frames"),
+    [
+        ("ranch", "turn the lamp near the recliner on", [_operating("floor_lamp", "on")]),
+        ("erl", "turn the living room dimmer near the sofa on", [_operating("living_room_dimmer", "on")]),
+        (
+            "ranch",
+            "Too dark in the den. The lamp near the recliner, you open it.",
+            [_operating("floor_lamp", "on")],
+        ),
+        ("erl", "open the living room dimmer", [_operating("living_room_dimmer", "on")]),
+        ("erl", "open the living room dimmer to 40", [_operating("living_room_dimmer", "40")]),
+        ("erl", "turn the living room dimmer up", [_operating("living_room_dimmer", "open")]),
+    ],
+)
+def test_a_lamp_by_a_landmark_then_its_state_and_a_dimmer_opened(
+    vocabulary: Vocabulary, world: str, text: str, frames: list[dict[str, str]]
+) -> None:
+    assert _read(world, vocabulary, text) == frames
