@@ -43,6 +43,7 @@ from knic.language.plainorder import asked_plainly
 from knic.language.procedure import procedure_read
 from knic.language.regional import regional_words
 from knic.language.restating import restated
+from knic.language.trailing import restarts_read
 from knic.language.vocabulary import Vocabulary
 
 #: hesitations, dropped even inside a phrase (they are fillers wherever they stand)
@@ -96,8 +97,9 @@ def where_last(text: str) -> str:
     """ "chopsticks, where?", "my keys where", "annie is where?": a thing said, then "where" alone (said by
     learners and tired people, or asked back): where the thing is ("where is my keys"); else ``text``, with
     questions said in another order put back (:mod:`knic.language.plainorder`)."""
-    # "ah go on, ...", "off the floor" (ordinary.py); "to my location", "is to be brought" (procedure.py)
-    text = asked_plainly(ordinary_read(procedure_read(text)))
+    # "ah go on, ...", "off the floor" (ordinary.py); "to my location", "is to be brought" (procedure.py);
+    # "in here... in the nursery", "... no, leave it. ..." (trailing.py)
+    text = asked_plainly(ordinary_read(procedure_read(restarts_read(text))))
     match = _WHERE_LAST.match(text.lower())
     words = match.group("thing").split() if match else []
     if len(words) > 1 and words[-1] in ("is", "are"):  # "annie is where?", "the keys are where?": asked back

@@ -336,7 +336,8 @@ def verb_last_moved(chunks: list[Chunk]) -> list[Chunk]:
         if verb is None or verb == start or out[verb].beneficiary == "subject":
             continue
         before = out[start:verb]
-        if any(c.kind not in _BEFORE_LAST_VERB for c in before) or not any(
+        # how a device is set may come first too ("living room light little bit darker make")
+        if any(c.kind not in _BEFORE_LAST_VERB | _SETTINGS for c in before) or not any(
             c.kind == "entity" for c in before
         ):
             continue

@@ -394,6 +394,8 @@ def came_from(previous: Sequence[CommandFrame], theme: str) -> str | None:
 _LANDMARKS = (("next", "to"), ("close", "to"), ("by",), ("near",), ("beside",))
 #: words after a landmark that end its name: the state said last ("turn the lamp near the recliner on")
 _AFTER_LANDMARK = frozenset({"on", "off", "out", "up", "down", "open", "shut", "closed", "please", "now"})
+#: what "by" says of a change rather than of a place ("by half", "by a third", "by one quarter")
+_BY_HOW_MUCH = frozenset({"half", "third", "thirds", "quarter", "quarters", "percent", "much", "notch"})
 
 
 def _landmark_unknown(words: list[str], phrases: dict[str, Term], heads: set[str]) -> list[str]:
@@ -413,6 +415,8 @@ def _landmark_unknown(words: list[str], phrases: dict[str, Term], heads: set[str
             said = said[:-1]
         if len(fitting) < 2 or not said or len(said) > 2 or " ".join(said) in phrases:
             continue
+        if landmark == ("by",) and (set(said) & _BY_HOW_MUCH or said[0].isdigit()):
+            continue  # "close the blind by half", "dim it by 20 percent": how much, no landmark
         if said[-1] in heads or said[-1][:-1] in heads:
             continue
         return words[:i]

@@ -22,7 +22,14 @@ got wrong, each tried in the ERL apartment as well:
 * a place said bare after a thing before the verb ("Calpol, bathroom cabinet, bring to Hana") is where the
   thing is, and a place said after several things ("kimchi and whole milk, from refrigerator bring ...") is
   where each of them is; a thing of several said before a verb that then names none ("milk bring me
-  please") is asked about, not "bring what?" (``knic.language.reader``).
+  please") is asked about, not "bring what?" (``knic.language.reader``);
+* what a tired speaker trails off from and says again (``knic.language.trailing``): a request called off
+  in a sentence of its own ("... no, leave it. Turn the nursery light off."); "in here... in the nursery",
+  "the lights in here... the nursery light"; "the thing... the teething ring";
+* "by half", "by a third" after "close", "lower" or "open" ask how far, not read as a landmark "by" the
+  world lacks (``knic.language.selecting``); a learner's setting said before the verb said last ("living
+  room light little bit dark make", ``knic.language.learners``), and "little bit dark", "more bright" for
+  the comparative (``commands.yaml``), ask how far too.
 """
 
 from __future__ import annotations
@@ -277,3 +284,79 @@ def test_a_thing_of_several_said_before_its_verb_is_asked_about(vocabulary: Voca
     assert frames_read(vocabulary, "apple bring me please") == [
         {"frame": "BRINGING", "theme": "apple", "beneficiary": "me"}
     ]
+
+
+@pytest.mark.parametrize(
+    ("world", "text", "frames"),
+    [
+        (
+            "flat",
+            "Turn the night light... no, leave it. Turn the nursery light off.",
+            [{"frame": "OPERATING", "device": "nursery_light", "state": "off"}],
+        ),
+        (
+            "erl",
+            "Bring me the apple. Forget it. Bring me the lemon.",
+            [{"frame": "BRINGING", "theme": "lemon", "beneficiary": "me"}],
+        ),
+        (
+            "flat",
+            "Turn the big light off in here... in the nursery",
+            [{"frame": "OPERATING", "device": "nursery_light", "state": "off"}],
+        ),
+        (
+            "flat",
+            "Dim the lights in here... the nursery light, to like fifteen percent",
+            [{"frame": "OPERATING", "device": "nursery_light", "state": "15"}],
+        ),
+        (
+            "erl",
+            "switch on the light out here, I mean in the corridor",
+            [{"frame": "OPERATING", "device": "hallway_light", "state": "on"}],
+        ),
+        (
+            "flat",
+            "Can you find the, the thing... the teething ring",
+            [{"frame": "SEARCHING", "theme": "teething_ring"}],
+        ),
+        (
+            "erl",
+            "bring me the whatsit, the remote",
+            [{"frame": "BRINGING", "theme": "remote", "beneficiary": "me"}],
+        ),
+    ],
+)
+def test_what_a_tired_speaker_says_again(
+    vocabulary: Vocabulary, world: str, text: str, frames: list[dict[str, str]]
+) -> None:
+    assert _read(world, vocabulary, text, "hana") == frames
+
+
+def test_leave_it_before_a_place_still_places(vocabulary: Vocabulary) -> None:
+    assert frames_read(vocabulary, "take the apple and leave it on the coffee table")[-1] == {
+        "frame": "PLACING",
+        "theme": "apple",
+        "goal": "coffee_table",
+    }
+
+
+@pytest.mark.parametrize(
+    ("world", "text"),
+    [
+        ("flat", "The office blind is to be lowered by one half"),
+        ("flat", "close the office blind by half"),
+        ("flat", "Living room light little bit dark make"),
+        ("flat", "Living room light a bit dimmer make"),
+        ("erl", "open the blinds by half"),
+        ("erl", "make the dimmer more bright"),
+    ],
+)
+def test_a_change_said_from_the_present_level_asks_how_far(
+    vocabulary: Vocabulary, world: str, text: str
+) -> None:
+    said, speaker = (_flat(), "soonja") if world == "flat" else (vocabulary, "annie")
+    assert_asked(said, text, "how far", speaker=speaker)
+
+
+def test_a_landmark_by_a_device_is_still_left_out_when_unknown(vocabulary: Vocabulary) -> None:
+    assert_asked(vocabulary, "turn on the light by the door", "which light")
