@@ -16,6 +16,7 @@ from knic.language.vocabulary import Vocabulary
 def steps_read(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
     """The chunks with the steps of this module said whole, in the order they are to be done."""
     said = first_put_first(after_you_in_order(gone_to_do(before_to(place_said_first(chunks, vocabulary)))))
+    said = before_next(said)
     return came_back(each_given(goings_repeated(said, vocabulary), vocabulary))
 
 
@@ -87,6 +88,24 @@ def after_you_in_order(chunks: list[Chunk]) -> list[Chunk]:
         out.append(chunk)
         i += 1
     return out
+
+
+def before_next(chunks: list[Chunk]) -> list[Chunk]:
+    """ "switch the lights off before you close the blinds", "close the blinds before going to the kitchen":
+    "before" between two actions says the first is done first, as "then" does ("before you" was read as a
+    thing the world lacks). Said before the first action, it puts that one last
+    (:func:`knic.language.tidy.before_moved`)."""
+    for i in range(1, len(chunks) - 1):
+        if chunks[i].kind != "unknown" or chunks[i].text != "before":
+            continue
+        at = i + 1 + (chunks[i + 1].text in _YOU and i + 2 < len(chunks))
+        if chunks[at].kind == "verb" and any(c.kind == "verb" for c in chunks[:i]):
+            return [*chunks[:i], Chunk("join", "then"), *before_next(chunks[at:])]
+    return chunks
+
+
+#: the robot said as the one who does the action after "before" ("before you close the blinds")
+_YOU = frozenset({"you", "you've", "you're", "u"})
 
 
 def gone_to_do(chunks: list[Chunk]) -> list[Chunk]:

@@ -3,7 +3,8 @@ step, not talk: "..., come back to me" said after commas asks where the speaker 
 did; with them the step was dropped as talk naming nothing), and "come back" with no place said after the
 robot was sent somewhere is coming back to the speaker (``knic.language.stepwise.came_back``), where it was
 left out. A door bell is heard, not worked ("ring the bell" asked how far to set it). "Every room" is the
-whole home (it was the one room whose name ends in "room")."""
+whole home (it was the one room whose name ends in "room"). "Before" between two actions keeps their order
+("switch the lights off before you close the blinds": "before you" was a thing the world lacks)."""
 
 from __future__ import annotations
 
@@ -94,3 +95,19 @@ def test_a_bell_of_another_home_is_named() -> None:
 )
 def test_every_room_is_the_whole_home(vocabulary: Vocabulary, text: str) -> None:
     assert frames_read(vocabulary, text) == [{"frame": "OPERATING", "device": "all_lights", "state": "off"}]
+
+
+def test_before_between_two_actions_keeps_their_order(vocabulary: Vocabulary) -> None:
+    assert frames_read(vocabulary, "switch the lights off before you close the blinds") == [
+        {"frame": "OPERATING", "device": "all_lights", "state": "off"},
+        {"frame": "OPERATING", "device": "bedroom_blinds", "state": "closed"},
+    ]
+    assert frames_read(vocabulary, "open the blinds before bringing me the juice") == [
+        {"frame": "OPERATING", "device": "bedroom_blinds", "state": "open"},
+        {"frame": "BRINGING", "theme": "juice", "beneficiary": "me"},
+    ]
+    # said first, "before" still puts its action last
+    assert frames_read(vocabulary, "before you go to the bedroom, turn off the hallway light") == [
+        {"frame": "OPERATING", "device": "hallway_light", "state": "off"},
+        {"frame": "MOTION", "goal": "bedroom"},
+    ]
