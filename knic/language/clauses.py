@@ -17,6 +17,7 @@ from dataclasses import dataclass, field, replace
 
 from knic.language.chunks import Chunk
 from knic.language.shortnames import containers
+from knic.language.vocabulary import Term
 
 _NOUNS = ("entity", "me", "pronoun", "everything", "there")
 #: words that end a noun phrase the world has no name for ("the front door is open")
@@ -525,3 +526,12 @@ def add_to_clause(
 def _frames(clause: Clause) -> tuple[str, ...]:
     """The frame kinds the clause's verb may start (none without a verb)."""
     return clause.verb.frames if clause.verb is not None else ()
+
+
+def names_of(arg: Arg, kind: str, is_a: Callable[[Term, str], bool]) -> bool:
+    """Whether an argument names a thing of ``kind`` ("item": "the glasses", "it", "them"; "person":
+    "tracy", "him")."""
+    said = arg.chunk
+    if said.kind == "pronoun":
+        return said.role in (kind, "any") if kind == "item" else said.role == kind
+    return any(is_a(t, kind) for t in said.terms)

@@ -103,7 +103,10 @@ def _sentence(sentence: str, people: list[str], devices: set[str], unknown: Call
     sentence = re.sub(
         r"\bwhere\s+(?!is\b|are\b)(.+?)\s+at(?=\s*[?.!]*\s*$)", r"where is \1", sentence, flags=re.I
     )
-    sentence = re.sub(rf"\bwhere\s+({who})\s+(?:go|gone|goes|went)\b", r"where is \1", sentence, flags=re.I)
+    if sentence.rstrip().endswith("?"):  # "Clyde, where he go?"; "put it where it goes" is no question
+        sentence = re.sub(
+            rf"(^|,)(\s*)where\s+({who})\s+(?:go|gone|went)\b", r"\1\2where is \3", sentence, flags=re.I
+        )
     if names:
         sentence = re.sub(rf"^(\s*)({names}),?\s+(?:his|her)\s+", r"\1\2's ", sentence, flags=re.IGNORECASE)
     sentence = _STANDS.sub("is ", sentence)

@@ -17,7 +17,7 @@ from typing import Protocol
 from core.errors import LanguageError
 from knic.language.chains import AmbiguityError, referent
 from knic.language.chunks import Chunk
-from knic.language.clauses import Arg, Clause
+from knic.language.clauses import Arg, Clause, names_of
 from knic.language.commands import CommandLanguage
 from knic.language.frames import SPEAKER, CommandFrame
 from knic.language.selecting import came_from
@@ -248,8 +248,10 @@ def _searching(reader: Resolver, clause: Clause, previous: Frames, groups: list[
     ground: str | None = None
     # "check the kitchen for the lemon": the thing looked for after "for", the place said bare
     sought = any(a.prep == "beneficiary" and a.chunk.kind != "me" for a in args)
+    bare = [a for a in args if a.prep is None]  # "find the glasses for tracy", "find for him": for whom
+    found = all(names_of(a, "item", reader.is_a) for a in bare) if bare else _sought_just_before(groups)
     for index, arg in enumerate(args):
-        if arg.consumed:
+        if arg.consumed or (arg.prep == "beneficiary" and found and names_of(arg, "person", reader.is_a)):
             continue
         if arg.chunk.kind == "me" and arg.prep is None and any(a.prep is None for a in args[index + 1 :]):
             continue  # "find me the stapler": for the speaker, not the speaker sought

@@ -21,6 +21,9 @@ apartment as well:
   (``plainspoken``);
 * a state said after a lamp and its landmark ("turn the lamp near the recliner on") no longer drops the
   landmark (``knic.language.selecting``); a dimmer opened, as a light is, is on (``knic.language.roles``);
+* a thing found for someone ("find the glasses for tracy", "..., his glasses, where? Find for him"): the
+  person is whom it is found for, not sought too (``knic.language.roles``); "put it back where it goes" is no
+  question where it is (``plainspoken``);
 * a level said in words that says which way ("all the way down", "as low as it goes") is not turned round by
   a closing verb, as "fully" is ("close the blinds fully": closed; ``knic.language.clauses``).
 """
@@ -323,3 +326,42 @@ def test_a_lamp_by_a_landmark_then_its_state_and_a_dimmer_opened(
     vocabulary: Vocabulary, world: str, text: str, frames: list[dict[str, str]]
 ) -> None:
     assert _read(world, vocabulary, text) == frames
+
+
+@pytest.mark.parametrize(
+    ("world", "text", "frames"),
+    [
+        (
+            "ranch",
+            "Clyde, his glasses, where? Find for him.",
+            [{"frame": "SEARCHING", "theme": "reading_glasses"}],
+        ),
+        ("erl", "find the glasses for tracy", [{"frame": "SEARCHING", "theme": "glasses"}]),
+        (
+            "erl",
+            "where are tracy's glasses? find them for her.",
+            [{"frame": "SEARCHING", "theme": "glasses"}],
+        ),
+        ("erl", "look for tracy", [{"frame": "SEARCHING", "theme": "tracy"}]),
+        (
+            "erl",
+            "check the kitchen for tracy",
+            [{"frame": "SEARCHING", "theme": "tracy", "ground": "kitchen"}],
+        ),
+        ("erl", "Where's Jack, I've got the apple for him", [{"frame": "SEARCHING", "theme": "jack"}]),
+        (
+            "ranch",
+            "Put the wedding photo back on the mantel. On the mantel, where it goes.",
+            [{"frame": "PLACING", "theme": "wedding_photo", "goal": "mantel"}],
+        ),
+        (
+            "erl",
+            "put the cup back on the kitchen table, where it goes",
+            [{"frame": "PLACING", "theme": "cup", "goal": "kitchen_table"}],
+        ),
+    ],
+)
+def test_found_for_someone_and_where_it_goes(
+    vocabulary: Vocabulary, world: str, text: str, frames: list[dict[str, str]]
+) -> None:
+    assert _read(world, vocabulary, text, "huong") == frames
