@@ -315,8 +315,9 @@ def _is_room(vocabulary: Vocabulary, symbol: str) -> bool:
     return any(t.symbol == symbol and vocabulary.is_subtype(t.type, "room") for t in vocabulary.terms)
 
 
-#: what may stand before a verb said last ("to the bathroom go", "the candle on the dining table put it")
-_BEFORE_LAST_VERB = frozenset({"det", "entity", "prep", "me", "quant", "owner"})
+#: what may stand before a verb said last ("to the bathroom go", "the candle on the dining table put it",
+#: "barley tea and rice cooker, kitchen island put")
+_BEFORE_LAST_VERB = frozenset({"det", "entity", "prep", "me", "quant", "owner", "join"})
 #: what may follow a verb said last, with it: how a device is set ("the blinds open halfway")
 _SETTINGS = frozenset({"state", "level", "number", "percent", "vague"})
 

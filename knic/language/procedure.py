@@ -7,10 +7,13 @@ whose radio-trained owner, barrister brother-in-law, Korean grandmother and Dutc
   5; "my location", "my position" are the speaker ("bring the binoculars to my location"); "confirm location
   of", "report the location of" ask where a thing or person is; "task one, ...", "step two: ..." number the
   steps of a list, as "1." and "(2)" do, where "one" was read as a level; a radio check ("radio check, how do
-  you read?", "do you copy?") asks for no action and is refused so, where "check" asked "check what?";
+  you read?", "do you copy?") asks for no action and is refused so, where "check" asked "check what?"; "out"
+  or "over" said last after a stop ("Switch on the hallway light. Out.") signs off, where "out" was read as
+  the state off; "confirm (that) the cup is on the table" asks whether it is;
 * a request said in the passive, as in court, in an office or in a notice ("my laptop is to be brought to me
   forthwith", "the office blind is to be lowered by one half", "the lamp should be switched off", "the
-  letters need to be taken to the office"): the verb said first ("bring my laptop to me ...");
+  letters need to be taken to the office", "I should be grateful if the briefcase were brought to the sofa
+  bed"): the verb said first ("bring my laptop to me ...", "if you bring the briefcase ...");
 * "the same" for the thing just named ("take the jigsaw ... and convey the same to the terrace table"), as
   formal and legal English says it: "it", where "same" was looked for in the world;
 * a claim of where a thing is, then a request to confirm or check it ("I put it to you that the car keys are
@@ -112,6 +115,15 @@ _PASSIVE = re.compile(
     re.IGNORECASE,
 )
 
+#: a wish said in the passive after "if" ("I should be grateful if the briefcase were brought to the sofa
+#: bed"): as "if you bring the briefcase ..." is read
+_IF_PASSIVE = re.compile(
+    r"\bif\s+(?P<thing>(?:the|my|your|his|her|our|their|this|that|these|those)\s[a-z' -]+?)\s+"
+    r"(?:were|was|could\s+be|would\s+be|might\s+be)\s+"
+    rf"(?P<part>{'|'.join(_PARTICIPLES)})\b",
+    re.IGNORECASE,
+)
+
 #: "the same" standing for the thing just named: followed by where it goes or the end of the clause
 _THE_SAME = re.compile(
     r"\bthe\s+same\b(?=\s*(?:$|[,.;!?]|(?:to|into|onto|on|in|at|back|from|and|then|over|up|down)\b))",
@@ -129,10 +141,23 @@ _CLAIM_CHECKED = re.compile(
     re.IGNORECASE,
 )
 
+#: "confirm (that) X is on Y": whether it is, as "check whether" asks
+_CONFIRM = re.compile(
+    r"(?:^|(?<=[.;!?,]\s))(?:(?:please|kindly)\s+)?confirm\s+(?:that\s+|whether\s+|if\s+)?"
+    r"(?=(?:(?:the|my|your|his|her|our)\s[a-z' ]+?|[a-z]+)\s(?:is|are)\s)",
+    re.IGNORECASE,
+)
+
+#: the operator's "over" or "out" said last after a stop ("Switch on the hallway light. Out."): no state
+_SIGN_OFF = re.compile(
+    r"(?:(?<=[.;!?])\s*(?:over\s+and\s+out|roger\s+out|over|out)|,\s*(?:over\s+and\s+out|over))\s*[.!]*\s*$",
+    re.IGNORECASE,
+)
+
 #: a person's thing said with "his" or "her" after the person's name ("where is Otis his dummy"), where a
 #: word before the name shows it is no one given a thing ("give Tom his keys", "bring to Mia her coat")
 _HIS_GENITIVE = re.compile(
-    r"\b(?P<before>(?i:is|are|where's|wheres|of|on|in|into|onto|from|under|by|near|with))\s+"
+    r"\b(?P<before>(?i:is|are|where's|wheres|of|on|in|into|onto|from|under|by|near|with|if|whether|where))\s+"
     r"(?P<person>[A-Z][a-z]+)\s+(?:his|her)\s+(?=[a-z])"
 )
 
@@ -156,9 +181,13 @@ def procedure_read(text: str) -> str:
     text = _PASSIVE.sub(
         lambda m: f"{m.group('start')}{_PARTICIPLES[m.group('part').lower()]} {m.group('thing')}", text
     )
+    text = _IF_PASSIVE.sub(
+        lambda m: f"if you {_PARTICIPLES[m.group('part').lower()]} {m.group('thing')}", text
+    )
     text = _THE_SAME.sub("it", text)
     if (claim := _CLAIM_CHECKED.match(text)) is not None:
         text = f"check whether {claim.group('claim')}"
+    text = _SIGN_OFF.sub("", _CONFIRM.sub("check whether ", text))
     text = _HIS_GENITIVE.sub(lambda m: f"{m.group('before')} {m.group('person')}'s ", text)
     if (where := _WHERE_FIRST.match(text)) is not None and where.group("thing").lower().split()[-1] not in (
         "is",

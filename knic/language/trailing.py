@@ -3,8 +3,11 @@ who breaks off, loses the word and starts over):
 
 * a request broken off and then called off in a sentence of its own ("Turn the night light... no, leave
   it. Turn the nursery light off.", "Bring me the muslin. Forget it. Pass me the dummy."): what was called
-  off is left out, and the request after it stands; "leave it" before a place ("leave it on the table")
+  off is left out, and the request after it stands, an "it" or "them" in it being what was called off
+  ("Open the blinds... no, leave it. Close them."); "leave it" before a place ("leave it on the table")
   stays a placing;
+* a request broken off and started again with its verb and "it" ("dim the nursery light... dim it to
+  twenty"): one request, where the first asked how far;
 * a vague "here" said and then the place itself after trailing off or a repair ("turn the big light off in
   here... in the nursery", "dim the lights in here... the nursery light", "in here, I mean in the
   nursery"): the place or the thing said again, where "here" was read as the speaker;
@@ -52,10 +55,29 @@ _PLACEHOLDER = re.compile(
 )
 
 
+#: the thing a request called off named, for an "it" or "them" of the request said after it
+_NAMED = re.compile(
+    r"\b(?:the|my|your|our|his|her)\s+[a-z' ]+?"
+    r"(?=\s*(?:\.{2,}|…|[.,;!?]|\s(?:to|on|in|off|up|down|at|from|into)\b|$))",
+    re.IGNORECASE,
+)
+_IT = re.compile(r"\b(?:it|them)\b", re.IGNORECASE)
+
+#: a request broken off and started again with its verb and "it" ("dim the nursery light... dim it to twenty")
+_SAME_VERB_AGAIN = re.compile(
+    r"(?P<start>^|(?<=[.!?;])\s*)(?P<verb>[a-z]+)\s+(?P<thing>(?:the|my|your|our|his|her)\s[^.…,;!?]+?)\s*"
+    r"(?:\.{2,}|…)\s*(?P=verb)\s+(?:it|them)\b",
+    re.IGNORECASE,
+)
+
+
 def restarts_read(text: str) -> str:
     """``text`` with what the speaker trailed off from and said again left out (see the module docstring)."""
     if (called_off := _CALLED_OFF.match(text)) is not None:
-        text = text[called_off.end() :]
+        named, text = _NAMED.search(text[: called_off.end()]), text[called_off.end() :]
+        if named is not None:  # "open the blinds... no, leave it. Close them.": the blinds
+            text = _IT.sub(named.group(0), text, count=1)
+    text = _SAME_VERB_AGAIN.sub(lambda m: f"{m.group('start')}{m.group('verb')} {m.group('thing')}", text)
     text = _HERE_THEN_THING.sub("", _HERE_THEN_PLACE.sub("", text))
     return _PLACEHOLDER.sub("", text)
 

@@ -29,7 +29,14 @@ got wrong, each tried in the ERL apartment as well:
 * "by half", "by a third" after "close", "lower" or "open" ask how far, not read as a landmark "by" the
   world lacks (``knic.language.selecting``); a learner's setting said before the verb said last ("living
   room light little bit dark make", ``knic.language.learners``), and "little bit dark", "more bright" for
-  the comparative (``commands.yaml``), ask how far too.
+  the comparative (``commands.yaml``), ask how far too;
+
+and, from probing the six voices beyond the set: "Out." or ", over and out" said last signs off, not the
+state off; "confirm (that) X is on Y", "confirm whether Tracy is in the kitchen"; "if Otis his blanket is
+..."; a wish in the passive after "if" ("if the briefcase were brought to the sofa bed"); "it" or "them"
+after a request called off is what it named; "dim the nursery light... dim it to twenty"; several things
+before a verb said last ("barley tea and rice cooker, kitchen island put", ``knic.language.learners``);
+"pull 'em down halfway" (``commands.yaml``).
 """
 
 from __future__ import annotations
@@ -360,3 +367,85 @@ def test_a_change_said_from_the_present_level_asks_how_far(
 
 def test_a_landmark_by_a_device_is_still_left_out_when_unknown(vocabulary: Vocabulary) -> None:
     assert_asked(vocabulary, "turn on the light by the door", "which light")
+
+
+@pytest.mark.parametrize(
+    ("world", "text", "frames"),
+    [
+        (
+            "flat",
+            "Affirm. Switch on the hallway light. Out.",
+            [{"frame": "OPERATING", "device": "hallway_light", "state": "on"}],
+        ),
+        (
+            "erl",
+            "Switch on the hall light, over and out",
+            [{"frame": "OPERATING", "device": "hallway_light", "state": "on"}],
+        ),
+        (
+            "erl",
+            "Confirm the cup is on the kitchen table, over",
+            [{"frame": "SEARCHING", "theme": "cup", "ground": "kitchen_table"}],
+        ),
+        (
+            "erl",
+            "Kindly confirm whether Tracy is in the kitchen",
+            [{"frame": "SEARCHING", "theme": "tracy", "ground": "kitchen"}],
+        ),
+        (
+            "flat",
+            "Can you even check if Otis his blanket is in the cot?",
+            [{"frame": "SEARCHING", "theme": "baby_blanket", "ground": "cot"}],
+        ),
+        (
+            "flat",
+            "I should be grateful if the briefcase were brought to the sofa bed",
+            [{"frame": "BRINGING", "theme": "briefcase", "goal": "sofa_bed"}],
+        ),
+        (
+            "erl",
+            "I should be obliged if the dimmer were set to thirty per cent",
+            [{"frame": "OPERATING", "device": "living_room_dimmer", "state": "30"}],
+        ),
+        (
+            "erl",
+            "Open the blinds... no, leave it. Close them.",
+            [{"frame": "OPERATING", "device": "bedroom_blinds", "state": "closed"}],
+        ),
+        (
+            "flat",
+            "Dim the nursery light... dim it to twenty",
+            [{"frame": "OPERATING", "device": "nursery_light", "state": "20"}],
+        ),
+        (
+            "flat",
+            "Please, barley tea and rice cooker, kitchen island put",
+            [
+                {"frame": "PLACING", "theme": "barley_tea", "goal": "kitchen_island"},
+                {"frame": "PLACING", "theme": "rice_cooker", "goal": "kitchen_island"},
+            ],
+        ),
+        (
+            "erl",
+            "the apple and the lemon, kitchen table put",
+            [
+                {"frame": "PLACING", "theme": "apple", "goal": "kitchen_table"},
+                {"frame": "PLACING", "theme": "lemon", "goal": "kitchen_table"},
+            ],
+        ),
+        (
+            "flat",
+            "Them blinds in the office, pull 'em down halfway",
+            [{"frame": "OPERATING", "device": "office_blind", "state": "50"}],
+        ),
+        (
+            "erl",
+            "the blinds, pull them down",
+            [{"frame": "OPERATING", "device": "bedroom_blinds", "state": "closed"}],
+        ),
+    ],
+)
+def test_the_six_voices_beyond_the_set(
+    vocabulary: Vocabulary, world: str, text: str, frames: list[dict[str, str]]
+) -> None:
+    assert _read(world, vocabulary, text, "lucian") == frames
