@@ -24,11 +24,15 @@ def came_back(chunks: list[Chunk]) -> list[Chunk]:
     """ "go to the kitchen and come back", "take the mug to the study, then go back": coming back, no place
     said, after the robot was sent somewhere, is coming back to the speaker (who then may be asked where they
     are); it was left out as talk, and the robot stayed where it was sent. Not after the robot was already
-    sent to the speaker ("bring me the mug, then come back": nowhere else to come back to)."""
+    sent to the speaker ("bring me the mug, then come back": nowhere else to come back to), nor after a thing
+    fetched with no place to take it ("go to the kitchen, get the juice, come back": it is brought back)."""
     for i, chunk in enumerate(chunks):
         back = chunk.kind == "verb" and "MOTION" in chunk.frames and chunk.text.split()[-1] == "back"
         after = chunks[i + 1].kind if i + 1 < len(chunks) else "join"
         sent = any(c.kind == "verb" for c in chunks[:i]) and not any(c.kind == "me" for c in chunks[:i])
+        last = next((j for j in range(i - 1, -1, -1) if chunks[j].kind == "verb"), None)
+        if last is not None and {"BRINGING", "TAKING"} & set(chunks[last].frames):  # "get the juice, come
+            sent = sent and any(c.kind == "prep" and c.role == "goal" for c in chunks[last:i])  # back": to me
         if back and sent and after in ("join", "verb"):
             return [*chunks[: i + 1], Chunk("prep", "to", role="goal"), Chunk("me", "me"), *chunks[i + 1 :]]
     return chunks
