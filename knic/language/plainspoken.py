@@ -5,6 +5,8 @@ understand` (people34's voices first, each rule as general as the English it rea
   where, not a state, unless a light or a switch is said before it ("turn the light out in the hall");
 * a question said without its "is" ("He in the den?", "Wes in the garage?"), "where X at?" ("where my
   cooler at?", said in the American South) and a learner's "where he go?";
+* what is said after the request of a thing of someone's the world has no name for ("..., my plant need
+  sun") is a remark;
 * what another person named does or did, said after the request ("..., Wes forgot it again", "..., Clyde
   goes in bath"), is said of them: no request (what they want or need still is: "..., tracy wants it");
 * a person said first in a sentence and "his" or "her" after ("Clyde, his glasses, where?"; Dutch and
@@ -59,6 +61,12 @@ _DOES = (
     r"(?!(?:wants|needs|asks|likes|loves|would)\b)(?:[a-z]+(?:[^s']s|ed)|forgot|went|left|took|got|did|had|was"
     r"|came|broke|made|knows)\b"
 )
+#: a remark after the request on something of the speaker's or another's ("..., my plant needs sun")
+_THEIRS = re.compile(
+    r"[,.;!]\s*(?:my|our|his|her|their)\s+([a-z]+)\s+(?:needs?|wants?|is|are|was|were|has|have|gets?|likes?)\b"
+    r"[^,.;!?]*",
+    re.IGNORECASE,
+)
 #: "light up the shop light" (as a fire is lit): on; "turn the light up to 80" is no such verb
 _LIGHT_UP = re.compile(rf"\blight\s+up(?=\s+(?:{_DET}|all)\b)", re.IGNORECASE)
 _DEVICE_NOUN = r"(?:blinds?|shades?|curtains?|lights?|lamps?)"
@@ -76,6 +84,9 @@ def plainly_said(text: str, vocabulary: Vocabulary, unknown: Callable[[str], boo
         kept = [s for s in said if not _OWN_PLANS.match(s)]
         sentences = kept or said
     text = " ".join(s.strip() for s in sentences) if sentences else text
+    for said in list(_THEIRS.finditer(text))[::-1]:  # "..., my plant need sun": of a thing the world lacks
+        if unknown(said.group(1).lower()):
+            text = text[: said.start()] + text[said.end() :]
     if people:  # "..., Wes forgot it again": what another person does or did is said of them, not asked
         names = "|".join(re.escape(p) for p in sorted(people, key=len, reverse=True))
         text = re.sub(rf"[,.;!]\s*(?:{names})\s+{_DOES}[^,.;!?]*", "", text, flags=re.IGNORECASE)

@@ -21,6 +21,8 @@ apartment as well:
   (``plainspoken``);
 * a state said after a lamp and its landmark ("turn the lamp near the recliner on") no longer drops the
   landmark (``knic.language.selecting``); a dimmer opened, as a light is, is on (``knic.language.roles``);
+* a remark after the request on a thing of someone's the world has no name for ("..., my plant need sun")
+  asks nothing (``plainspoken``);
 * a thing found for someone ("find the glasses for tracy", "..., his glasses, where? Find for him"): the
   person is whom it is found for, not sought too (``knic.language.roles``); "put it back where it goes" is no
   question where it is (``plainspoken``);
@@ -365,3 +367,25 @@ def test_found_for_someone_and_where_it_goes(
     vocabulary: Vocabulary, world: str, text: str, frames: list[dict[str, str]]
 ) -> None:
     assert _read(world, vocabulary, text, "huong") == frames
+
+
+@pytest.mark.parametrize(
+    ("world", "text", "frames"),
+    [
+        (
+            "ranch",
+            "Bedroom curtains, open half way, my plant need sun.",
+            [_operating("bedroom_curtains", "50")],
+        ),
+        (
+            "erl",
+            "bring me the cup, my tea is getting cold",
+            [{"frame": "BRINGING", "theme": "cup", "beneficiary": "me"}],
+        ),
+        ("erl", "open the blinds halfway, my cat likes the sun", [_operating("bedroom_blinds", "50")]),
+    ],
+)
+def test_a_remark_on_a_thing_the_world_lacks(
+    vocabulary: Vocabulary, world: str, text: str, frames: list[dict[str, str]]
+) -> None:
+    assert _read(world, vocabulary, text) == frames
