@@ -84,9 +84,9 @@ def plainly_said(text: str, vocabulary: Vocabulary, unknown: Callable[[str], boo
         kept = [s for s in said if not _OWN_PLANS.match(s)]
         sentences = kept or said
     text = " ".join(s.strip() for s in sentences) if sentences else text
-    for said in list(_THEIRS.finditer(text))[::-1]:  # "..., my plant need sun": of a thing the world lacks
-        if unknown(said.group(1).lower()):
-            text = text[: said.start()] + text[said.end() :]
+    for remark in list(_THEIRS.finditer(text))[::-1]:  # "..., my plant need sun": of a thing the world lacks
+        if unknown(remark.group(1).lower()):
+            text = text[: remark.start()] + text[remark.end() :]
     if people:  # "..., Wes forgot it again": what another person does or did is said of them, not asked
         names = "|".join(re.escape(p) for p in sorted(people, key=len, reverse=True))
         text = re.sub(rf"[,.;!]\s*(?:{names})\s+{_DOES}[^,.;!?]*", "", text, flags=re.IGNORECASE)
