@@ -106,22 +106,19 @@ _PARTICIPLES = {
 
 #: a request in the passive: the thing, a "to be" that asks ("is to be", "should be", "needs to be"), the
 #: participle and the rest of the sentence
+_THING = r"(?P<thing>(?:the|my|your|his|her|our|their|this|that|these|those)\s[a-z' -]+?)\s+"
+_PARTICIPLE = rf"\s+(?P<part>{'|'.join(_PARTICIPLES)})\b"
 _PASSIVE = re.compile(
-    r"(?P<start>^|(?<=[.;:!?])\s*)"
-    r"(?P<thing>(?:the|my|your|his|her|our|their|this|that|these|those)\s[a-z' -]+?)\s+"
+    rf"(?P<start>^|(?<=[.;:!?])\s*){_THING}"
     r"(?:is\s+to\s+be|are\s+to\s+be|should\s+be|must\s+be|needs?\s+to\s+be|has\s+to\s+be|have\s+to\s+be|"
-    r"ought\s+to\s+be|wants?\s+to\s+be)\s+"
-    rf"(?P<part>{'|'.join(_PARTICIPLES)})\b",
+    rf"ought\s+to\s+be|wants?\s+to\s+be){_PARTICIPLE}",
     re.IGNORECASE,
 )
 
 #: a wish said in the passive after "if" ("I should be grateful if the briefcase were brought to the sofa
 #: bed"): as "if you bring the briefcase ..." is read
 _IF_PASSIVE = re.compile(
-    r"\bif\s+(?P<thing>(?:the|my|your|his|her|our|their|this|that|these|those)\s[a-z' -]+?)\s+"
-    r"(?:were|was|could\s+be|would\s+be|might\s+be)\s+"
-    rf"(?P<part>{'|'.join(_PARTICIPLES)})\b",
-    re.IGNORECASE,
+    rf"\bif\s+{_THING}(?:were|was|could\s+be|would\s+be|might\s+be){_PARTICIPLE}", re.IGNORECASE
 )
 
 #: "the same" standing for the thing just named: followed by where it goes or the end of the clause
@@ -172,18 +169,19 @@ def _spelled(match: re.Match[str]) -> str:
     return str(int("".join(_DIGITS[w.lower()] for w in said.split())))
 
 
+def _active(said: re.Match[str]) -> str:
+    """A request said in the passive, its verb first: "bring my laptop" for "my laptop ... brought"."""
+    return f"{_PARTICIPLES[said.group('part').lower()]} {said.group('thing')}"
+
+
 def procedure_read(text: str) -> str:
     """``text`` with the turns of phrase of this module put plainly (see the module docstring)."""
     text = _SPELLED_NUMBER.sub(_spelled, text)
     text = _LOCATION_OF.sub("where is", _MY_LOCATION.sub("me", text))
     text = _STEP_LABEL.sub(" , ", text)
     text = _RADIO_CHECK.sub("over", text)  # the operator's word alone: no action, as "wilco, out" is none
-    text = _PASSIVE.sub(
-        lambda m: f"{m.group('start')}{_PARTICIPLES[m.group('part').lower()]} {m.group('thing')}", text
-    )
-    text = _IF_PASSIVE.sub(
-        lambda m: f"if you {_PARTICIPLES[m.group('part').lower()]} {m.group('thing')}", text
-    )
+    text = _PASSIVE.sub(lambda m: f"{m.group('start')}{_active(m)}", text)
+    text = _IF_PASSIVE.sub(lambda m: f"if you {_active(m)}", text)
     text = _THE_SAME.sub("it", text)
     if (claim := _CLAIM_CHECKED.match(text)) is not None:
         text = f"check whether {claim.group('claim')}"
