@@ -6,7 +6,8 @@ whole command is read as "turn on the lights in the study" (the room's light, it
 question which). A complaint
 about "here" or "there" is left as said (where that is is not known), and so is one said beside a request
 ("it's dark in the bedroom, turn on the left lamp": the request says what to do, the complaint is talk),
-unless the request names no light of its own ("it's dark in the study, turn on the light"): the study's.
+unless the request names no light of its own ("it's dark in the study, turn on the light", "the casita's dark,
+could you turn on the light in here?"): the study's; a sigh said first ("uff da, ...") is left out.
 
 A complaint that one cannot see, said beside a device said to be off ("i can't see a thing in here, the
 reading lamp is off"), asks for that device on; one that it is too bright beside a device said to be on or
@@ -46,9 +47,10 @@ _DARK_IN = re.compile(
 )
 #: a request for the light that says no room ("turn on light", "the lights on please")
 _LIGHT_ON = re.compile(
-    r"^(?:please\s+)?(?:(?:turn|switch|put)\s+on\s+(?:the\s+)?(?:light|lights|lamp)"
+    r"^(?:please\s+)?(?:(?:could|can|would|will)\s+(?:you|ya)\s+)?(?:please\s+)?"
+    r"(?:(?:turn|switch|put)\s+on\s+(?:the\s+)?(?:light|lights|lamp)"
     r"|(?:turn|switch|put)\s+(?:the\s+)?(?:light|lights|lamp)\s+on|(?:the\s+)?(?:light|lights)\s+on)"
-    r"(?:\s+please)?$"
+    r"(?:\s+(?:in\s+)?here)?(?:\s+please)?$"  # "... in here": where the complaint said it is dark
 )
 #: a stop or comma inside the text: more was said than the complaint
 _INNER_BREAK = re.compile(r"[,;:.!?]\s*\S")
@@ -85,6 +87,8 @@ def _dark_in(text: str) -> re.Match[str] | None:
 def _said_beside(text: str) -> str:
     """A complaint and a device said to be off (or on): the device's other state asked for; else ``text``."""
     sentences = [normalize(s) for s in _SENTENCES.split(text) if normalize(s)]
+    while len(sentences) > 2 and len(sentences[0].split()) <= 2:  # "uff da, the den's dark, ...": a sigh
+        sentences = sentences[1:]
     if len(sentences) != 2:
         return text
     complaint, said = sentences

@@ -13,7 +13,9 @@ understand` (people34's voices first, each rule as general as the English it rea
   Afrikaans speakers' "Clyde his pill organizer stands on ...") is that person's thing: "clyde's glasses"
   (said after another word, :mod:`knic.language.procedure` reads it);
 * a thing that "stands", "lies" or "sits" somewhere (as German and Dutch say it) "is" there;
-* "not the X, the Y" said first: the Y;
+* "not the X, the Y" said first: the Y; "is that the porch light?" before a request: the porch light;
+* "go see is Huong in the kitchen" (Irish and Southern English): "see if Huong is in the kitchen"; "make the
+  chandelier go to forty": "make the chandelier to forty";
 * "too" after a state said last ("put the string lights on too") is "also", not "to";
 * "is the aspirin in it?" after a place said alone is "in there";
 * what a thing is put somewhere for, said last ("put it on the counter to thaw"), is a reason;
@@ -61,6 +63,12 @@ _DOES = (
     r"(?!(?:wants|needs|asks|likes|loves|would)\b)(?:[a-z]+(?:[^s']s|ed)|forgot|went|left|took|got|did|had|was"
     r"|came|broke|made|knows)\b"
 )
+#: "is that the porch light?" before a request: the thing pointed at, not asked about
+_POINTED = re.compile(rf"^(\s*)is\s+(?:that|this)\s+({_DET}\s[^?]+\?)\s*$", re.IGNORECASE)
+_SEE_IS = re.compile(r"\b(see|check|ask|find out)\s+(is|are)\s+(.+?)\s+(?=(?:still\s+)?(?:in|on|at)\b)", re.I)
+_GO_TO_LEVEL = re.compile(
+    r"\s+go\s+(?=(?:up\s+|down\s+)?to\s+(?:\d|[a-z]+\s*(?:percent|per cent|%)|[a-z]+ty\b))", re.I
+)
 #: a remark after the request on something of the speaker's or another's ("..., my plant needs sun")
 _THEIRS = re.compile(
     r"[,.;!]\s*(?:my|our|his|her|their)\s+([a-z]+)\s+(?:needs?|wants?|is|are|was|were|has|have|gets?|likes?)\b"
@@ -80,9 +88,9 @@ def plainly_said(text: str, vocabulary: Vocabulary, unknown: Callable[[str], boo
     devices = {t.phrase.split()[-1] for t in vocabulary.terms if vocabulary.is_subtype(t.type, "device")}
     sentences = [_sentence(s, people, devices, unknown) for s in _SENTENCE.findall(text)]
     said = [s for s in sentences if s.strip()]
-    if len(said) > 1:  # the speaker's own plans beside a request
+    if len(said) > 1:  # the speaker's own plans beside a request; "is that the porch light? turn it off"
         kept = [s for s in said if not _OWN_PLANS.match(s)]
-        sentences = kept or said
+        sentences = [_POINTED.sub(r"\1\2", s) for s in kept[:-1]] + kept[-1:] if kept else said
     text = " ".join(s.strip() for s in sentences) if sentences else text
     for remark in list(_THEIRS.finditer(text))[::-1]:  # "..., my plant need sun": of a thing the world lacks
         if unknown(remark.group(1).lower()):
@@ -121,6 +129,9 @@ def _sentence(sentence: str, people: list[str], devices: set[str], unknown: Call
     if names:
         sentence = re.sub(rf"^(\s*)({names}),?\s+(?:his|her)\s+", r"\1\2's ", sentence, flags=re.IGNORECASE)
     sentence = _STANDS.sub("is ", sentence)
+    sentence = _SEE_IS.sub(r"\1 if \3 \2 ", sentence)  # "go see is Huong in the kitchen" (Irish, Southern)
+    if _names_in(sentence.split(" go ")[0], devices):  # "make the chandelier go to forty": set it to forty
+        sentence = _GO_TO_LEVEL.sub(" ", sentence)
     sentence = _NOT_FIRST.sub("", sentence)
     sentence = _TOO.sub(r"\1", sentence)
     sentence = _IN_IT.sub(r"\1 there\2", sentence)

@@ -26,6 +26,10 @@ apartment as well:
 * a thing found for someone ("find the glasses for tracy", "..., his glasses, where? Find for him"): the
   person is whom it is found for, not sought too (``knic.language.roles``); "put it back where it goes" is no
   question where it is (``plainspoken``);
+* the six voices probed beyond the set: a dark room said with "'s" beside "could ya turn on the light in
+  here?" and a sigh said first ("uff da, ...") asks for that room's lights (``knic.language.complaints``);
+  "is that the porch light?" before a request points at it; "go see is Huong in the kitchen" (Irish and
+  Southern English) asks whether she is there; "make the chandelier go to forty" sets it (``plainspoken``);
 * a level said in words that says which way ("all the way down", "as low as it goes") is not turned round by
   a closing verb, as "fully" is ("close the blinds fully": closed; ``knic.language.clauses``).
 """
@@ -389,3 +393,55 @@ def test_a_remark_on_a_thing_the_world_lacks(
     vocabulary: Vocabulary, world: str, text: str, frames: list[dict[str, str]]
 ) -> None:
     assert _read(world, vocabulary, text) == frames
+
+
+@pytest.mark.parametrize(
+    ("world", "text", "speaker", "frames"),
+    [
+        (
+            "ranch",
+            "Uff da, the casita's dark, could ya turn on the light in here?",
+            "kirsten",
+            [_operating("casita_light", "on"), _operating("reading_lamp", "on")],
+        ),
+        (
+            "erl",
+            "the hallway is too dark, could you turn on the light in here?",
+            "annie",
+            [_operating("hallway_light", "on")],
+        ),
+        (
+            "erl",
+            "oh dear, it's dark in the hallway, turn on the light",
+            "annie",
+            [_operating("hallway_light", "on")],
+        ),
+        (
+            "ranch",
+            "Is that the porch light? Turn it off. The porch light, off.",
+            "clyde",
+            [_operating("porch_light", "off")],
+        ),
+        ("erl", "is that the hallway light? switch it off", "annie", [_operating("hallway_light", "off")]),
+        ("erl", "is that the remote?", "annie", [{"frame": "SEARCHING", "theme": "remote"}]),
+        (
+            "ranch",
+            "Go see is Huong in the kitchen",
+            "remy",
+            [{"frame": "SEARCHING", "theme": "huong", "ground": "kitchen"}],
+        ),
+        (
+            "erl",
+            "go and see is tracy in the bedroom",
+            "annie",
+            [{"frame": "SEARCHING", "theme": "tracy", "ground": "bedroom"}],
+        ),
+        ("ranch", "Make the chandelier go to forty, yeah", "remy", [_operating("chandelier", "40")]),
+        ("erl", "make the living room dimmer go to 30", "annie", [_operating("living_room_dimmer", "30")]),
+    ],
+)
+def test_voices_probed_beyond_the_set(
+    vocabulary: Vocabulary, world: str, text: str, speaker: str, frames: list[dict[str, str]]
+) -> None:
+    home = _ranch() if world == "ranch" else vocabulary
+    assert frames_read(home, text, speaker) == frames
