@@ -14,7 +14,7 @@ from dataclasses import dataclass, field, replace
 
 from core.errors import LanguageError
 from knic.language.chunks import Chunk
-from knic.language.frames import SPEAKER, CommandFrame
+from knic.language.frames import KIND_NAMES, SPEAKER, CommandFrame, not_of_kinds
 from knic.language.vocabulary import Vocabulary
 
 
@@ -75,7 +75,22 @@ def referent(
         with contextlib.suppress(LanguageError):
             return referent(replace(chunk, role="item"), categories, groups, vocabulary)
     thing = "an object" if wanted == "item" else "a person" if wanted == "person" else "anything"
-    raise LanguageError(f"'{chunk.text}' does not refer to {thing} named earlier in the command")
+    unsaid = f"'{chunk.text}' does not refer to {thing} named earlier in the command"
+    # "bring me the mug and switch it on": what it would be (the last action's first thing) is said too
+    last = [f.get(r) for f in (groups[-1] if groups else []) for r in _REFERRED_ROLES if f.get(r) != SPEAKER]
+    other = next((s for s in last if s and (wanted != "person" or _is(vocabulary, s, "person"))), None)
+    if other is not None:
+        what, device = vocabulary.phrase_of(other), _is(vocabulary, other, "device")
+        kinds = " or ".join(KIND_NAMES.get(c, c) for c in categories)
+        the = "" if _is(vocabulary, other, "person") else "the "
+        unsaid = f"'{chunk.text}' does not refer to {kinds} named earlier in the command: " + (
+            not_of_kinds(what, categories, True) if device else f"{the}{what} is not one"
+        )
+    raise LanguageError(unsaid)
+
+
+def _is(vocabulary: Vocabulary, symbol: str, kind: str) -> bool:
+    return vocabulary.is_subtype(vocabulary.type_of(symbol) or "", kind)
 
 
 def settled(reading: Reading, vocabulary: Vocabulary) -> Reading:

@@ -50,6 +50,10 @@ def test_coming_back_after_a_bringing_to_the_speaker_adds_nothing(vocabulary: Vo
     assert frames_read(vocabulary, "bring me the mug, then come back") == [
         {"frame": "BRINGING", "theme": "mug", "beneficiary": "me"}
     ]
+    assert frames_read(vocabulary, "go to the kitchen, get the juice and come back") == [
+        {"frame": "MOTION", "goal": "kitchen"},
+        {"frame": "BRINGING", "theme": "juice", "source": "kitchen", "beneficiary": "me"},
+    ]
 
 
 def test_talk_said_with_me_is_still_talk(vocabulary: Vocabulary) -> None:
@@ -111,3 +115,19 @@ def test_before_between_two_actions_keeps_their_order(vocabulary: Vocabulary) ->
         {"frame": "OPERATING", "device": "hallway_light", "state": "off"},
         {"frame": "MOTION", "goal": "bedroom"},
     ]
+
+
+@pytest.mark.parametrize(
+    ("text", "said"),
+    [
+        ("bring me the mug and switch it on", "the mug is not one"),
+        ("put the mug on the kitchen table, then close it", "the mug is not one"),
+        ("switch on the hallway light and bring it to me", "the hallway light is a device"),
+        ("find tracy and switch her on", "tracy is not one"),
+    ],
+)
+def test_a_pronoun_of_the_wrong_kind_says_what_it_would_be(
+    vocabulary: Vocabulary, text: str, said: str
+) -> None:
+    result = understand(text, vocabulary, speaker="annie")
+    assert not result.accepted and not result.frames and said in result.reason
