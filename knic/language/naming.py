@@ -26,6 +26,7 @@ from functools import lru_cache
 
 from core.errors import LanguageError
 from knic.language.chains import AmbiguityError
+from knic.language.chunks import Chunk
 from knic.language.clauses import Arg
 from knic.language.frames import CommandFrame
 from knic.language.goals import room_of
@@ -362,10 +363,14 @@ def named_after(terms: Sequence[Term], landmarks: Sequence[Term], vocabulary: Vo
     return kept if len({t.symbol for t in kept}) == 1 else tuple(terms)
 
 
-def places_before(previous: Sequence[CommandFrame], args: Sequence[Arg], vocabulary: Vocabulary) -> list[str]:
+def places_before(
+    previous: Sequence[CommandFrame], args: Sequence[Arg], vocabulary: Vocabulary, verb: Chunk | None = None
+) -> list[str]:
     """The places the earlier actions named, latest first (their goal, ground or source), as the rooms they
-    are in when ``args`` name a device."""
+    are in when ``args`` name a device; a "there" after ``verb`` that carries to it is made where to
+    (:func:`carried_there`)."""
     places = [f.get(r) or "" for f in reversed(previous) for r in ("goal", "ground", "source") if f.get(r)]
+    carried_there(verb.text if verb is not None else "", args, previous, places)
     if not names_device(args, vocabulary):
         return places
     rooms = []
@@ -375,6 +380,20 @@ def places_before(previous: Sequence[CommandFrame], args: Sequence[Arg], vocabul
         except LanguageError:
             rooms.append(place)
     return rooms
+
+
+def carried_there(
+    verb: str, args: Sequence[Arg], previous: Sequence[CommandFrame], places: Sequence[str]
+) -> None:
+    """ "bring the bucket to the kitchen, then take the mop there": "there" after "take" or "carry", where the
+    action before carried a thing to that place, is where this thing goes too, not where it is taken from
+    ("go to the kitchen and take the mop there" still takes it from the kitchen)."""
+    carried = previous[-1:] and previous[-1].kind in ("BRINGING", "PLACING") and previous[-1].get("goal")
+    if verb not in ("take", "carry") or not carried or not places or places[0] != previous[-1].get("goal"):
+        return
+    for arg in args:
+        if arg.chunk.kind == "there" and arg.prep == "place" and arg.prep_text == "in":
+            arg.prep, arg.prep_text = "goal", "to"
 
 
 def names_device(args: Sequence[Arg], vocabulary: Vocabulary) -> bool:

@@ -423,7 +423,7 @@ class Reader(Places):
     def _there(self, clause: Clause, previous: list[CommandFrame]) -> None:
         """'there': the place the latest earlier action named (its goal, ground or source). With no place
         named before, "there" points at what the robot cannot see ("the cup over there") and is left out."""
-        places = places_before(previous, clause.args, self.vocabulary)  # a device's: the room (naming.py)
+        places = places_before(previous, clause.args, self.vocabulary, clause.verb)  # naming.py
         for arg in list(clause.args):
             if arg.chunk.kind != "there":
                 continue

@@ -36,7 +36,9 @@ state off; "confirm (that) X is on Y", "confirm whether Tracy is in the kitchen"
 ..."; a wish in the passive after "if" ("if the briefcase were brought to the sofa bed"); "it" or "them"
 after a request called off is what it named; "dim the nursery light... dim it to twenty"; several things
 before a verb said last ("barley tea and rice cooker, kitchen island put", ``knic.language.learners``);
-"pull 'em down halfway" (``commands.yaml``).
+"pull 'em down halfway" (``commands.yaml``); "take the mop there" after carrying a thing there is where
+the mop goes too, "go to the kitchen and take the mop there" still takes it from there
+(``knic.language.naming``).
 """
 
 from __future__ import annotations
@@ -449,3 +451,38 @@ def test_the_six_voices_beyond_the_set(
     vocabulary: Vocabulary, world: str, text: str, frames: list[dict[str, str]]
 ) -> None:
     assert _read(world, vocabulary, text, "lucian") == frames
+
+
+@pytest.mark.parametrize(
+    ("world", "text", "frames"),
+    [
+        (
+            "flat",
+            "Bring the bucket to the kitchen, then take the mop there an' all",
+            [
+                {"frame": "BRINGING", "theme": "bucket", "goal": "kitchen"},
+                {"frame": "BRINGING", "theme": "mop", "goal": "kitchen"},
+            ],
+        ),
+        (
+            "erl",
+            "take the cup to the kitchen and carry the apple there as well",
+            [
+                {"frame": "BRINGING", "theme": "cup", "goal": "kitchen"},
+                {"frame": "BRINGING", "theme": "apple", "goal": "kitchen"},
+            ],
+        ),
+        (
+            "flat",
+            "Go to the kitchen and take the mop there",
+            [
+                {"frame": "MOTION", "goal": "kitchen"},
+                {"frame": "TAKING", "theme": "mop", "source": "kitchen"},
+            ],
+        ),
+    ],
+)
+def test_take_it_there_after_carrying_something_there(
+    vocabulary: Vocabulary, world: str, text: str, frames: list[dict[str, str]]
+) -> None:
+    assert _read(world, vocabulary, text, "bev") == frames
