@@ -126,6 +126,8 @@ _STEP = frozenset({"step", "stage"})
 _NUMBERS = frozenset(
     {"one", "two", "three", "four", "five", "six", "seven", "eight", "nine", "ten", "1", "2", "3", "4"}
 )
+#: words after which a number said alone is a level, not a list's number ("down to, like, five")
+_LEVEL_BEFORE = frozenset({"to", "at", "like", "about", "around", "roughly", "maybe", "say"})
 
 
 def regional_words(tokens: list[str]) -> list[str]:
@@ -281,7 +283,16 @@ def regional_said(segments: list[list[str]], vocabulary: Vocabulary) -> list[lis
     things, firsts, lights = _names(vocabulary)
     firsts = firsts | {p.split()[-1] for p in things}
     out: list[list[str]] = []
-    segments = [s for s in segments if len(s) > 1 or s[0] not in _NUMBERS | {"to", "for"}] or segments
+    segments = (
+        [  # a list's number said alone; not a level said after "to" ("down to, like, five")
+            s
+            for n, s in enumerate(segments)
+            if len(s) > 1
+            or s[0] not in _NUMBERS | {"to", "for"}
+            or (n and set(segments[n - 1][-1:]) & _LEVEL_BEFORE)
+        ]
+        or segments
+    )
     segments = _said_after(_aside_in_question(segments), things | firsts)
     people = {t.phrase for t in vocabulary.terms if vocabulary.is_subtype(t.type, "person")}
     items = frozenset(t.phrase for t in vocabulary.terms if vocabulary.is_subtype(t.type, "item"))

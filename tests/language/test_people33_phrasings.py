@@ -38,7 +38,8 @@ after a request called off is what it named; "dim the nursery light... dim it to
 before a verb said last ("barley tea and rice cooker, kitchen island put", ``knic.language.learners``);
 "pull 'em down halfway" (``commands.yaml``); "take the mop there" after carrying a thing there is where
 the mop goes too, "go to the kitchen and take the mop there" still takes it from there
-(``knic.language.naming``).
+(``knic.language.naming``); a number said alone after "to" ("down to, like, five") is the level, not a
+list's number left out (``knic.language.regional``).
 """
 
 from __future__ import annotations
@@ -486,3 +487,23 @@ def test_take_it_there_after_carrying_something_there(
     vocabulary: Vocabulary, world: str, text: str, frames: list[dict[str, str]]
 ) -> None:
     assert _read(world, vocabulary, text, "bev") == frames
+
+
+@pytest.mark.parametrize(
+    ("world", "text", "state"),
+    [
+        ("flat", "turn the night light down, down to, like, five?", "5"),
+        ("erl", "set the dimmer to, um, five", "5"),
+    ],
+)
+def test_a_level_said_alone_after_to_is_the_level(
+    vocabulary: Vocabulary, world: str, text: str, state: str
+) -> None:
+    assert _read(world, vocabulary, text, "hana")[0]["state"] == state
+
+
+def test_a_lists_numbers_said_alone_are_still_left_out(vocabulary: Vocabulary) -> None:
+    assert [f["frame"] for f in frames_read(vocabulary, "1. open the blinds. 2. bring me the cup")] == [
+        "OPERATING",
+        "BRINGING",
+    ]
