@@ -5,6 +5,7 @@ understand` (people34's voices first, each rule as general as the English it rea
   where, not a state, unless a light or a switch is said before it ("turn the light out in the hall");
 * a question said without its "is" ("He in the den?", "Wes in the garage?"), "where X at?" ("where my
   cooler at?", said in the American South) and a learner's "where he go?";
+* why, said last as a sigh ("..., too bright", "..., so hot"), asks nothing;
 * what is said after the request of a thing of someone's the world has no name for ("..., my plant need
   sun") is a remark;
 * what another person named does or did, said after the request ("..., Wes forgot it again", "..., Clyde
@@ -69,6 +70,12 @@ _SEE_IS = re.compile(r"\b(see|check|ask|find out)\s+(is|are)\s+(.+?)\s+(?=(?:sti
 _GO_TO_LEVEL = re.compile(
     r"\s+go\s+(?=(?:up\s+|down\s+)?to\s+(?:\d|[a-z]+\s*(?:percent|per cent|%)|[a-z]+ty\b))", re.I
 )
+#: why, said last ("the blinds, close for me, too bright", "..., so hot", a learner's "hot too much")
+_TOO_MUCH = re.compile(
+    r"[,;!]\s*(?:it's\s+|it\s+is\s+)?(?:(?:too|so|very|really)\s+(?:much\s+)?[a-z]+|[a-z]+\s+too\s+much)"
+    r"\s*[.!?]*\s*$",
+    re.IGNORECASE,
+)
 #: a remark after the request on something of the speaker's or another's ("..., my plant needs sun")
 _THEIRS = re.compile(
     r"[,.;!]\s*(?:my|our|his|her|their)\s+([a-z]+)\s+(?:needs?|wants?|is|are|was|were|has|have|gets?|likes?)\b"
@@ -92,6 +99,7 @@ def plainly_said(text: str, vocabulary: Vocabulary, unknown: Callable[[str], boo
         kept = [s for s in said if not _OWN_PLANS.match(s)]
         sentences = [_POINTED.sub(r"\1\2", s) for s in kept[:-1]] + kept[-1:] if kept else said
     text = " ".join(s.strip() for s in sentences) if sentences else text
+    text = _TOO_MUCH.sub("", text)
     for remark in list(_THEIRS.finditer(text))[::-1]:  # "..., my plant need sun": of a thing the world lacks
         if unknown(remark.group(1).lower()):
             text = text[: remark.start()] + text[remark.end() :]

@@ -29,7 +29,8 @@ apartment as well:
 * the six voices probed beyond the set: a dark room said with "'s" beside "could ya turn on the light in
   here?" and a sigh said first ("uff da, ...") asks for that room's lights (``knic.language.complaints``);
   "is that the porch light?" before a request points at it; "go see is Huong in the kitchen" (Irish and
-  Southern English) asks whether she is there; "make the chandelier go to forty" sets it (``plainspoken``);
+  Southern English) asks whether she is there; "make the chandelier go to forty" sets it; why, said last as a
+  sigh ("..., too bright", a learner's "..., hot too much"), asks nothing (``plainspoken``);
 * a level said in words that says which way ("all the way down", "as low as it goes") is not turned round by
   a closing verb, as "fully" is ("close the blinds fully": closed; ``knic.language.clauses``).
 """
@@ -445,3 +446,17 @@ def test_voices_probed_beyond_the_set(
 ) -> None:
     home = _ranch() if world == "ranch" else vocabulary
     assert frames_read(home, text, speaker) == frames
+
+
+@pytest.mark.parametrize(
+    ("world", "text", "frames"),
+    [
+        ("erl", "The blinds, close for me, too bright.", [_operating("bedroom_blinds", "closed")]),
+        ("ranch", "Porch shades, close half, hot too much.", [_operating("porch_shades", "50")]),
+        ("ranch", "Den blinds, close, so hot.", [_operating("den_blinds", "closed")]),
+    ],
+)
+def test_why_said_last_as_a_sigh(
+    vocabulary: Vocabulary, world: str, text: str, frames: list[dict[str, str]]
+) -> None:
+    assert _read(world, vocabulary, text) == frames
