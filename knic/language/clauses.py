@@ -79,7 +79,7 @@ class _Filling:
     quantity: Chunk | None = None
     after_prep: bool = False  # the chunk just before was a preposition
     article: str = ""  # the determiner just said, before a noun phrase
-    indefinite: bool = False  # the latest noun phrase was said with "a" or "an" ("a cup")
+    indefinite: bool = False  # the latest noun phrase was said with "a", "an" or "one" ("one bottle")
     thing: str = ""  # the determiner of an object named by the chunk just before ("the" in "the candle")
 
 
@@ -412,7 +412,7 @@ def _fill(
     if chunk.kind == "det":
         filling.article = chunk.text
     elif chunk.kind in _NOUNS:
-        filling.indefinite, filling.article = filling.article in ("a", "an"), ""
+        filling.indefinite, filling.article = filling.article in ("a", "an", "one", "another"), ""
     if chunk.kind == "join":
         filling.joined = nxt is not None and nxt.kind in (*_NOUNS, "det", "unknown", "quant")
         last = clause.args[-1] if clause.args else None

@@ -39,7 +39,8 @@ before a verb said last ("barley tea and rice cooker, kitchen island put", ``kni
 "pull 'em down halfway" (``commands.yaml``); "take the mop there" after carrying a thing there is where
 the mop goes too, "go to the kitchen and take the mop there" still takes it from there
 (``knic.language.naming``); a number said alone after "to" ("down to, like, five") is the level, not a
-list's number left out (``knic.language.regional``).
+list's number left out (``knic.language.regional``); "one bottle of soju", "one glass of wine" name what
+the home lacks, as "a glass of wine" does, not the bottle or the glass (``knic.language.clauses``).
 """
 
 from __future__ import annotations
@@ -506,4 +507,22 @@ def test_a_lists_numbers_said_alone_are_still_left_out(vocabulary: Vocabulary) -
     assert [f["frame"] for f in frames_read(vocabulary, "1. open the blinds. 2. bring me the cup")] == [
         "OPERATING",
         "BRINGING",
+    ]
+
+
+@pytest.mark.parametrize(
+    ("world", "text", "word"),
+    [("flat", "bring me one bottle of soju", "soju"), ("erl", "bring me one glass of wine", "wine")],
+)
+def test_one_container_of_a_thing_the_home_lacks_names_it(
+    vocabulary: Vocabulary, world: str, text: str, word: str
+) -> None:
+    said, speaker = (_flat(), "soonja") if world == "flat" else (vocabulary, "annie")
+    result = understand(text, said, speaker=speaker)
+    assert not result.accepted and f"'{word}'" in result.reason
+
+
+def test_one_glass_of_water_is_the_water(vocabulary: Vocabulary) -> None:
+    assert frames_read(vocabulary, "bring me one glass of water") == [
+        {"frame": "BRINGING", "theme": "water", "beneficiary": "me"}
     ]
