@@ -342,7 +342,9 @@ def _accompanying(reader: Resolver, clause: Clause, previous: Frames, groups: li
         elif arg.prep in ("goal", "place", "level") and (
             arg.chunk.kind == "me" or _names_only(reader, arg, "person")  # "take tracy to me", "... to annie"
         ):
-            who = reader.vocabulary.phrase_of(people[0]) if people else "them"
+            if not people:  # "take this to tracy", "bring that to me": what is not said
+                raise LanguageError(f"{_verb(clause)} what? I heard no object or person of this world")
+            who = reader.vocabulary.phrase_of(people[0])
             whose = "you are" if arg.chunk.kind == "me" else f"{arg.chunk.text} is"
             raise AmbiguityError(f"where should I take {who}? Say the room: I do not know where {whose}")
         elif arg.prep in ("goal", "place", "level"):

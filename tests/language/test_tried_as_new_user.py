@@ -131,3 +131,16 @@ def test_a_pronoun_of_the_wrong_kind_says_what_it_would_be(
 ) -> None:
     result = understand(text, vocabulary, speaker="annie")
     assert not result.accepted and not result.frames and said in result.reason
+
+
+def test_medium_is_half(vocabulary: Vocabulary) -> None:
+    assert frames_read(vocabulary, "set the dimmer to medium") == [
+        {"frame": "OPERATING", "device": "living_room_dimmer", "state": "50"}
+    ]
+
+
+@pytest.mark.parametrize("text", ["take this to tracy", "bring that to me", "give this to tracy"])
+def test_a_thing_pointed_at_and_not_named_is_asked_for(vocabulary: Vocabulary, text: str) -> None:
+    result = understand(text, vocabulary, speaker="annie")
+    assert not result.accepted and not result.question and not result.frames
+    assert "what?" in result.reason
