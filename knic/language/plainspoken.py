@@ -25,7 +25,10 @@ understand` (people34's voices first, each rule as general as the English it rea
 * "I go to the market now." (the speaker's own plans, in a sentence of its own beside a request) is talk;
 * "bring me both" after two things are named is "them";
 * a room said first ("my room, blinds down to ten percent") is where the device said next is;
-* "in the mudroom by the boot bench": by the boot bench, when it stands in that room.
+* "in the mudroom by the boot bench": by the boot bench, when it stands in that room;
+* "turn that lamp on. The one by the recliner. That one.": "turn on the lamp. the one by the recliner."; "the
+  big one in the kitchen": "the one in the kitchen" (the place tells which); "the remote, for the TV": "the
+  remote for the TV".
 """
 
 from __future__ import annotations
@@ -33,6 +36,7 @@ from __future__ import annotations
 import re
 from collections.abc import Callable
 
+from knic.language.selecting import SIZES
 from knic.language.vocabulary import Vocabulary
 
 _SENTENCE = re.compile(r"(?:[^.?!]|\.(?=\d))+[.?!]*")  # a decimal's point ends none
@@ -84,6 +88,14 @@ _THEIRS = re.compile(
 )
 #: "light up the shop light" (as a fire is lit): on; "turn the light up to 80" is no such verb
 _LIGHT_UP = re.compile(rf"\blight\s+up(?=\s+(?:{_DET}|all)\b)", re.IGNORECASE)
+#: "the one" and where, said after a thing ("..., the one by the recliner")
+_THE_ONE = re.compile(r"[,.]\s*the\s+ones?\s+(?=(?:by|near|beside|next to|in|on|at|over|under|from)\b)", re.I)
+_STATE_BEFORE = re.compile(
+    r"\b(turn|switch|put|flip|flick)\s+(the\s+(?:[a-z]+\s+){0,2}?[a-z]+)\s+(on|off)\s*$", re.I
+)
+_THAT_ONE_AGAIN = re.compile(r"(?<=[.!?])\s*(?:that|this)\s+one\s*[.!]*\s*$", re.IGNORECASE)
+_WORD_ONE = re.compile(r"\bthe\s+([a-z]+)\s+(ones?)\s+(?=(?:in|on|inside|from|at|by|near|beside)\b)", re.I)
+_FOR_THE = re.compile(r",\s*for\s+the\b", re.IGNORECASE)
 _DEVICE_NOUN = r"(?:blinds?|shades?|curtains?|lights?|lamps?)"
 
 
@@ -106,6 +118,7 @@ def plainly_said(text: str, vocabulary: Vocabulary, unknown: Callable[[str], boo
     if people:  # "..., Wes forgot it again": what another person does or did is said of them, not asked
         names = "|".join(re.escape(p) for p in sorted(people, key=len, reverse=True))
         text = re.sub(rf"[,.;!]\s*(?:{names})\s+{_DOES}[^,.;!?]*", "", text, flags=re.IGNORECASE)
+    text = _the_one(text)
     text = _LIGHT_UP.sub("switch on", text)
     text = _BOTH.sub(lambda m: f"{m.group(1)}{m.group(2) or ''} them", text)
     if rooms:
@@ -150,6 +163,23 @@ def _sentence(sentence: str, people: list[str], devices: set[str], unknown: Call
     if purpose and unknown(purpose[-1].group(1).lower()) and _PLACED.search(sentence[: purpose[-1].start()]):
         sentence = sentence[: purpose[-1].start()] + sentence[purpose[-1].end() :]
     return sentence
+
+
+def _the_one(text: str) -> str:
+    """ "turn that lamp on. The one by the recliner. That one.": "turn on the lamp. the one by the recliner."
+    (a state said before "the one ..." and "that one" said again kept apart from it); "the big one in the
+    kitchen": "the one in the kitchen" (a size before "one" left out: the place tells which; a colour the
+    world does not name is still refused); "the remote, for the TV": "the remote for the TV"."""
+    text = _FOR_THE.sub(" for the", text)
+    text = _WORD_ONE.sub(lambda m: f"the {m.group(2)} " if m.group(1).lower() in SIZES else m.group(0), text)
+    said = _THE_ONE.search(text)
+    if said is None:
+        return text
+    before, after = text[: said.start()], text[said.start() :]
+    before = _STATE_BEFORE.sub(
+        r"\1 \3 \2", re.sub(r"\b(?:that|this)\s+(?=[a-z]+\s+(?:on|off)?\s*$)", "the ", before)
+    )
+    return before + _THAT_ONE_AGAIN.sub("", after)
 
 
 def _names_in(phrase: str, last_words: set[str]) -> bool:

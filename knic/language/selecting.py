@@ -138,6 +138,8 @@ def described(segments: list[list[str]], vocabulary: Vocabulary) -> list[list[st
 _SMALL = frozenset({"small", "little", "mini", "tiny", "compact", "smaller"})
 #: words that say a thing is the big one of its kind
 _BIG = frozenset({"big", "large", "bigger", "larger", "main"})
+#: the words of size ("the big one in the kitchen": plainspoken.py)
+SIZES = _SMALL | _BIG
 #: words of the world's names that say a thing is the big one of its kind ("double bed", "master bedroom")
 _BIG_NAMES = frozenset({"big", "large", "double", "king", "master", "main"})
 

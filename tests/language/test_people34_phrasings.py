@@ -31,6 +31,9 @@ apartment as well:
   "is that the porch light?" before a request points at it; "go see is Huong in the kitchen" (Irish and
   Southern English) asks whether she is there; "make the chandelier go to forty" sets it; why, said last as a
   sigh ("..., too bright", a learner's "..., hot too much"), asks nothing (``plainspoken``);
+* a state said before "the one by ..." ("turn that lamp on. The one by the recliner. That one."), "that one"
+  said again, a size before "one" ("the big one in the kitchen": the place tells which; a colour the world
+  does not name is still refused) and "the remote, for the TV" (``plainspoken``);
 * a level said in words that says which way ("all the way down", "as low as it goes") is not turned round by
   a closing verb, as "fully" is ("close the blinds fully": closed; ``knic.language.clauses``).
 """
@@ -311,6 +314,33 @@ CASES = [
     ),
     ("ranch", "remy", "Go see is Huong in the kitchen", ["SEARCHING theme=huong ground=kitchen"]),
     ("ranch", "remy", "Make the chandelier go to forty, yeah", ["OPERATING device=chandelier state=40"]),
+    # a state said before "the one ...", "that one" again, "the big one in ...", ", for the ..."
+    (
+        "ranch",
+        "clyde",
+        "Turn that lamp on. The one by the recliner. That one.",
+        ["OPERATING device=floor_lamp state=on"],
+    ),
+    (
+        "erl",
+        "annie",
+        "switch the light off, the one in the hallway",
+        ["OPERATING device=hallway_light state=off"],
+    ),
+    ("erl", "annie", "bring me that cup. that one.", ["BRINGING theme=cup beneficiary=me"]),
+    (
+        "ranch",
+        "kirsten",
+        "Put the casserole dish in the fridge, the big one in the kitchen.",
+        ["PLACING theme=casserole_dish goal=fridge"],
+    ),
+    (
+        "ranch",
+        "clyde",
+        "Bring me the TV remote. The remote, for the TV.",
+        ["BRINGING theme=tv_remote beneficiary=me"],
+    ),
+    ("erl", "annie", "bring me the cup, for tracy", ["BRINGING theme=cup beneficiary=tracy"]),
     # why said last as a sigh
     (
         "erl",
@@ -336,6 +366,10 @@ def test_read_as_meant(
     assert frames_read(home, text, speaker) == [frame_spec(f) for f in frames]
 
 
-def test_a_place_nothing_knows_is_still_refused(vocabulary: Vocabulary) -> None:
-    result = understand("take the cup to the attic", vocabulary)
-    assert not result.accepted and "attic" in result.reason
+@pytest.mark.parametrize(
+    ("text", "word"),
+    [("take the cup to the attic", "attic"), ("bring me the cup, the blue one on the kitchen table", "blue")],
+)
+def test_what_the_world_lacks_is_still_refused(vocabulary: Vocabulary, text: str, word: str) -> None:
+    result = understand(text, vocabulary)
+    assert not result.accepted and word in result.reason
