@@ -18,7 +18,8 @@ converted to a workshop and a loft room up a ladder; ``people31`` the commands o
 ordinary native speakers in a two-storey family house, weighted to relative places, chains and levels;
 ``people33`` a top-floor city apartment with a roof terrace, a home office and a smart-home setup;
 ``people34`` a single-storey Texas ranch house with a walk-in pantry, a screened porch, a garage workshop
-and a guest casita, likewise). Each
+and a guest casita; ``people35`` a semi-detached Toronto house with a finished basement, a mudroom, a
+sunroom and an attic office, likewise). Each
 case is a command with its gold frames and goals, or with a word the refusal (``reject``) or the question back
 (``question``) must contain. Cases run against the ERL apartment or, with ``world: other``, against a
 different house (``tests/fixtures/language/other_world``), to show that the language code knows no world's
@@ -87,6 +88,7 @@ SETS = {
     "people32-dev": FIXTURES / "people32" / "dev.yaml",
     "people33-dev": FIXTURES / "people33" / "dev.yaml",
     "people34-dev": FIXTURES / "people34" / "dev.yaml",
+    "people35-dev": FIXTURES / "people35" / "dev.yaml",
 }
 OTHER_WORLD = FIXTURES / "other_world" / "problem.pddl"
 _MAIN = {"MOTION": ("goal",), "OPERATING": ("device", "state")}
