@@ -5,7 +5,8 @@ by what is in it ("go to the room where is the bed"), "give it me", "you" before
 ("toolbox you take from shelf"), a place said before the thing there ("on my desk is calculator") and a thing
 said before the verb that puts it ("the dumbbells put on the weights bench and the boots on the rack"), and
 "on" or "off" said as a verb after "and" ("switch off the office light and on the desk lamp"), where from
-said first ("from the kitchen island the fruit bowl bring to my room") and a thing thrown to a person."""
+said first ("from the kitchen island the fruit bowl bring to my room"), a thing thrown to a person and a
+thing said first with a count of its container after ("soju bring me one bottle")."""
 
 from __future__ import annotations
 
@@ -22,7 +23,29 @@ def learners_read(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
     said = gapped_given(out_the(carried_in(said, vocabulary), vocabulary), vocabulary)
     said = verb_last_moved(own_going_dropped(own_doing_dropped(room_told(it_me(said), vocabulary))))
     said = at_person(object_first(place_first(said, vocabulary), vocabulary), vocabulary)
-    return steps_read(said, vocabulary)  # stepwise.py
+    return steps_read(topic_measured(said, vocabulary), vocabulary)  # stepwise.py
+
+
+#: what a thing is counted in ("one bottle", "a glass"), said after the thing itself by a speaker who says the
+#: topic first
+_MEASURES = frozenset(
+    {"bottle", "glass", "cup", "can", "bowl", "box", "packet", "piece", "slice", "plate", "mug", "jar", "tin"}
+)
+
+
+def topic_measured(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
+    """ "soju bring me one bottle", "water, bring me a glass" (the topic said first, as Korean, Japanese and
+    Chinese speakers say it): a thing said alone before a verb that carries to the speaker, then "one" or "a"
+    and a container said last, is what the container holds: "bring me one bottle of soju" (a thing the world
+    lacks is named, not the bottles asked about). A person said first is whom the speaker addresses."""
+    kinds = [c.kind for c in chunks]
+    if kinds[1:4] != ["verb", "me", "det"] or len(chunks) != 5 or chunks[3].text not in ("a", "an", "one"):
+        return chunks
+    topic, verb, _, _, container = chunks
+    thing = topic.kind == "unknown" or _is(topic, vocabulary, "item")
+    if not thing or "BRINGING" not in verb.frames or container.text.split()[-1] not in _MEASURES:
+        return chunks
+    return [*chunks[1:], Chunk("partitive", "of"), topic]
 
 
 def at_person(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:

@@ -40,7 +40,8 @@ before a verb said last ("barley tea and rice cooker, kitchen island put", ``kni
 the mop goes too, "go to the kitchen and take the mop there" still takes it from there
 (``knic.language.naming``); a number said alone after "to" ("down to, like, five") is the level, not a
 list's number left out (``knic.language.regional``); "one bottle of soju", "one glass of wine" name what
-the home lacks, as "a glass of wine" does, not the bottle or the glass (``knic.language.clauses``).
+the home lacks, as "a glass of wine" does, not the bottle or the glass (``knic.language.clauses``); and
+"soju bring me one bottle", "water, bring me one glass" said topic first (``knic.language.learners``).
 """
 
 from __future__ import annotations
@@ -525,4 +526,15 @@ def test_one_container_of_a_thing_the_home_lacks_names_it(
 def test_one_glass_of_water_is_the_water(vocabulary: Vocabulary) -> None:
     assert frames_read(vocabulary, "bring me one glass of water") == [
         {"frame": "BRINGING", "theme": "water", "beneficiary": "me"}
+    ]
+
+
+def test_a_topic_said_first_with_a_count_of_its_container(vocabulary: Vocabulary) -> None:
+    result = understand("Soju bring me one bottle", _flat(), speaker="soonja")
+    assert not result.accepted and "'soju'" in result.reason
+    assert frames_read(vocabulary, "Water, bring me one glass") == [
+        {"frame": "BRINGING", "theme": "water", "beneficiary": "me"}
+    ]
+    assert frames_read(vocabulary, "Tracy, bring me a cup") == [
+        {"frame": "BRINGING", "theme": "cup", "beneficiary": "me"}
     ]
