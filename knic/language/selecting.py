@@ -39,6 +39,7 @@ from knic.language.frames import CommandFrame
 from knic.language.quantified import all_of_them
 from knic.language.shortnames import containers
 from knic.language.vocabulary import Term, Vocabulary
+from knic.language.wherefromto import onto_joined
 
 #: what says a request is said again ("i said the bedroom", "like i said, the hallway light")
 _SAID_AGAIN = (
@@ -117,7 +118,7 @@ def described(segments: list[list[str]], vocabulary: Vocabulary) -> list[list[st
     phrases = {t.phrase: t for t in vocabulary.terms if t.type != "level"}
     heads = {p.split()[-1] for p in phrases}  # the last words of the names ("lamp", "table")
     out: list[list[str]] = []
-    for segment in segments:
+    for segment in onto_joined(segments):  # "oats from larder, on island put"
         words = all_of_them(_said_again(segment, len(segments) > 1), out[-1] if out else [], heads)
         words = [
             "one" if w == "ones" and i and words[i - 1] in _DETERMINERS | {"these", "those"} else w

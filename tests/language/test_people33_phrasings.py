@@ -41,7 +41,9 @@ the mop goes too, "go to the kitchen and take the mop there" still takes it from
 (``knic.language.naming``); a number said alone after "to" ("down to, like, five") is the level, not a
 list's number left out (``knic.language.regional``); "one bottle of soju", "one glass of wine" name what
 the home lacks, as "a glass of wine" does, not the bottle or the glass (``knic.language.clauses``); and
-"soju bring me one bottle", "water, bring me one glass" said topic first (``knic.language.learners``).
+"soju bring me one bottle", "water, bring me one glass" said topic first (``knic.language.learners``);
+where from and where to said in two stretches before a verb said last ("porridge oats from larder, on
+kitchen island put", ``knic.language.wherefromto``).
 """
 
 from __future__ import annotations
@@ -538,3 +540,24 @@ def test_a_topic_said_first_with_a_count_of_its_container(vocabulary: Vocabulary
     assert frames_read(vocabulary, "Tracy, bring me a cup") == [
         {"frame": "BRINGING", "theme": "cup", "beneficiary": "me"}
     ]
+
+
+@pytest.mark.parametrize(
+    ("world", "text", "frames"),
+    [
+        (
+            "flat",
+            "Porridge oats from larder, on kitchen island put",
+            [{"frame": "PLACING", "theme": "porridge_oats", "source": "larder", "goal": "kitchen_island"}],
+        ),
+        (
+            "erl",
+            "apple from kitchen table, on coffee table put",
+            [{"frame": "PLACING", "theme": "apple", "source": "kitchen_table", "goal": "coffee_table"}],
+        ),
+    ],
+)
+def test_where_from_and_where_to_before_a_verb_said_last(
+    vocabulary: Vocabulary, world: str, text: str, frames: list[dict[str, str]]
+) -> None:
+    assert _read(world, vocabulary, text, "soonja") == frames
