@@ -28,7 +28,8 @@ understand` (people34's voices first, each rule as general as the English it rea
 * "in the mudroom by the boot bench": by the boot bench, when it stands in that room;
 * "turn that lamp on. The one by the recliner. That one.": "turn on the lamp. the one by the recliner."; "the
   big one in the kitchen": "the one in the kitchen" (the place tells which); "the remote, for the TV": "the
-  remote for the TV".
+  remote for the TV"; "in here" before the thing said again by its name ("close them blinds in here. The den
+  blinds.") is left out: the name says which.
 """
 
 from __future__ import annotations
@@ -95,6 +96,8 @@ _STATE_BEFORE = re.compile(
 )
 _THAT_ONE_AGAIN = re.compile(r"(?<=[.!?])\s*(?:that|this)\s+one\s*[.!]*\s*$", re.IGNORECASE)
 _WORD_ONE = re.compile(r"\bthe\s+([a-z]+)\s+(ones?)\s+(?=(?:in|on|inside|from|at|by|near|beside)\b)", re.I)
+#: "close the blinds in here. The den blinds.": where the speaker is, said again by the thing's name
+_HERE_THEN_NAMED = re.compile(r"\s+(?:in|out)\s+here(?=\s*[.,]\s*the\s)", re.IGNORECASE)
 _FOR_THE = re.compile(r",\s*for\s+the\b", re.IGNORECASE)
 _DEVICE_NOUN = r"(?:blinds?|shades?|curtains?|lights?|lamps?)"
 
@@ -169,8 +172,9 @@ def _the_one(text: str) -> str:
     """ "turn that lamp on. The one by the recliner. That one.": "turn on the lamp. the one by the recliner."
     (a state said before "the one ..." and "that one" said again kept apart from it); "the big one in the
     kitchen": "the one in the kitchen" (a size before "one" left out: the place tells which; a colour the
-    world does not name is still refused); "the remote, for the TV": "the remote for the TV"."""
-    text = _FOR_THE.sub(" for the", text)
+    world does not name is still refused); "the remote, for the TV": "the remote for the TV"; "the blinds in
+    here. The den blinds.": "the blinds. The den blinds." (the name says which)."""
+    text = _FOR_THE.sub(" for the", _HERE_THEN_NAMED.sub("", text))
     text = _WORD_ONE.sub(lambda m: f"the {m.group(2)} " if m.group(1).lower() in SIZES else m.group(0), text)
     said = _THE_ONE.search(text)
     if said is None:

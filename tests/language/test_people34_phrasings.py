@@ -33,7 +33,8 @@ apartment as well:
   sigh ("..., too bright", a learner's "..., hot too much"), asks nothing (``plainspoken``);
 * a state said before "the one by ..." ("turn that lamp on. The one by the recliner. That one."), "that one"
   said again, a size before "one" ("the big one in the kitchen": the place tells which; a colour the world
-  does not name is still refused) and "the remote, for the TV" (``plainspoken``);
+  does not name is still refused), "the remote, for the TV" and "in here" before the thing said again by its
+  name ("close them blinds in here. The den blinds.") (``plainspoken``);
 * a level said in words that says which way ("all the way down", "as low as it goes") is not turned round by
   a closing verb, as "fully" is ("close the blinds fully": closed; ``knic.language.clauses``).
 """
@@ -341,6 +342,18 @@ CASES = [
         ["BRINGING theme=tv_remote beneficiary=me"],
     ),
     ("erl", "annie", "bring me the cup, for tracy", ["BRINGING theme=cup beneficiary=tracy"]),
+    (
+        "ranch",
+        "clyde",
+        "Close them blinds in here. The den blinds. Close 'em.",
+        ["OPERATING device=den_blinds state=closed"],
+    ),
+    (
+        "erl",
+        "annie",
+        "switch off the light in here. the hallway light.",
+        ["OPERATING device=hallway_light state=off"],
+    ),
     # why said last as a sigh
     (
         "erl",
