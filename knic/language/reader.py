@@ -36,7 +36,7 @@ from knic.language.chains import AmbiguityError, Reading, chain, referent, settl
 from knic.language.chunks import Chunk, Chunker
 from knic.language.clauses import Arg, Clause, split_clauses
 from knic.language.commands import CommandLanguage, command_language
-from knic.language.excepting import excepted, without
+from knic.language.excepting import read_excepting
 from knic.language.frames import KIND_PLURALS, SPEAKER, CommandFrame, not_of_kinds
 from knic.language.household import gathered_up, ones_named, other_one, said_around, where_last, words_tidied
 from knic.language.learners import learners_read
@@ -122,8 +122,8 @@ class Reader(Places):
             LanguageError: the command is not understood (the message says what is missing or unknown).
         """
         language = self.language
-        if split := excepted(text, language, self._verb_of):  # "all the lights but the hallway one"
-            return without(self.read(split[0]), split[1], self.vocabulary, self.chunks)
+        if (excepting := read_excepting(text, self, self._verb_of)) is not None:  # "all the lights but ..."
+            return excepting
         text = digits_read(
             where_last(cut_off_dropped(text)),
             language.digit_words,

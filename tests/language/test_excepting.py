@@ -83,3 +83,18 @@ def test_but_without_all_is_no_exception(vocabulary: Vocabulary) -> None:
     assert frames_read(vocabulary, "bring me the mug but not the apple") == [
         {"frame": "BRINGING", "theme": "mug", "beneficiary": "me"}
     ]
+
+
+def test_a_name_leaves_out_that_thing_only_and_each_exception_its_own_action() -> None:
+    home = world_of(FAMILY_HOME)
+    text = (
+        "turn off all the lights except the hallway light, then close all the blinds except the kitchen ones"
+    )
+    frames = frames_read(home, text, speaker="graham")
+    lights = {f["device"] for f in frames if f["state"] == "off"}
+    assert "hallway_light" not in lights and {"porch_light", "kitchen_light"} <= lights  # the porch light too
+    assert [f for f in frames if f["state"] == "closed"] == [
+        {"frame": "OPERATING", "device": "study_blinds", "state": "closed"}
+    ]
+    frames = frames_read(home, "turn off all the lights except the ones in the hallway", speaker="graham")
+    assert not {"hallway_light", "porch_light"} & {f["device"] for f in frames}
