@@ -174,7 +174,7 @@ def understand(
         # "it's dark in the study": its lights; "hoodie from my bed": the bed in the speaker's own room;
         # "three zero percent", "do the light out": said plainly (plainspoken.py)
         reader = reader_for(vocabulary)
-        said = plainly_said(text, vocabulary, lambda word: reader.chunks([word])[0].kind == "unknown")
+        said = plainly_said(text, vocabulary, lambda w: [c.kind for c in reader.chunks([w])] == ["unknown"])
         reading = reader.read(dark_read(owned_read(said, vocabulary, speaker)))
     except AmbiguityError as exc:
         question = str(exc)[:1].upper() + str(exc)[1:]
