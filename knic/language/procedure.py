@@ -22,6 +22,8 @@ whose radio-trained owner, barrister brother-in-law, Korean grandmother and Dutc
 * a person and "his" or "her" before a thing ("Otis his dummy", "Mia her coat"), as Dutch, German,
   Afrikaans and Scandinavian speakers say the possessive: the person's thing ("Otis's dummy"), where the
   person was searched for as well;
+* "I go" or "we go" with a time to come ("I go with Otis to the park later", a learner's present for the
+  future): what the speaker will do, no request, as "I'm going ..." is;
 * a thing, then "where?" in a sentence of its own before more is said ("Femke where? Otis need bath"): where
   the thing or person is, as the same said alone is (:func:`knic.language.household.where_last`).
 
@@ -158,6 +160,14 @@ _HIS_GENITIVE = re.compile(
     r"(?P<person>[A-Z][a-z]+)\s+(?:his|her)\s+(?=[a-z])"
 )
 
+#: a learner's present for what the speaker will do ("I go with Otis to the park later"): "I'm going"
+_GO_LATER = re.compile(
+    r"^\s*(?P<who>i|we)\s+go\b(?=[^.;!?]*\b(?:later|tomorrow|tonight|soon|next\s+week|"
+    r"this\s+(?:morning|afternoon|evening|weekend)|after\s+(?:lunch|dinner|work|school|breakfast)|"
+    r"in\s+an?\s+(?:hour|minute|bit|while))\b)",
+    re.IGNORECASE,
+)
+
 #: a thing, then "where?" in a sentence of its own, before more is said
 _WHERE_FIRST = re.compile(
     r"^\s*(?P<thing>[a-z'-]+(?:\s+[a-z'-]+){0,3}?)\s*,?\s+where\s*\?\s*(?=\S)", re.IGNORECASE
@@ -187,6 +197,7 @@ def procedure_read(text: str) -> str:
         text = f"check whether {claim.group('claim')}"
     text = _SIGN_OFF.sub("", _CONFIRM.sub("check whether ", text))
     text = _HIS_GENITIVE.sub(lambda m: f"{m.group('before')} {m.group('person')}'s ", text)
+    text = _GO_LATER.sub(lambda m: "I'm going" if m.group("who").lower() == "i" else "we're going", text)
     if (where := _WHERE_FIRST.match(text)) is not None and where.group("thing").lower().split()[-1] not in (
         "is",
         "are",

@@ -43,7 +43,8 @@ list's number left out (``knic.language.regional``); "one bottle of soju", "one 
 the home lacks, as "a glass of wine" does, not the bottle or the glass (``knic.language.clauses``); and
 "soju bring me one bottle", "water, bring me one glass" said topic first (``knic.language.learners``);
 where from and where to said in two stretches before a verb said last ("porridge oats from larder, on
-kitchen island put", ``knic.language.wherefromto``).
+kitchen island put", ``knic.language.wherefromto``); "I go ... later" (a learner's present for what the
+speaker will do) asks for no action, as "I'm going ..." does (``knic.language.procedure``).
 """
 
 from __future__ import annotations
@@ -561,3 +562,20 @@ def test_where_from_and_where_to_before_a_verb_said_last(
     vocabulary: Vocabulary, world: str, text: str, frames: list[dict[str, str]]
 ) -> None:
     assert _read(world, vocabulary, text, "soonja") == frames
+
+
+@pytest.mark.parametrize(
+    ("world", "text"),
+    [
+        ("flat", "I go with Otis to the park later, I hope it stays dry"),
+        ("erl", "we go to the shops after lunch"),
+    ],
+)
+def test_i_go_with_a_time_to_come_asks_for_no_action(vocabulary: Vocabulary, world: str, text: str) -> None:
+    said, speaker = (_flat(), "femke") if world == "flat" else (vocabulary, "annie")
+    result = understand(text, said, speaker=speaker)
+    assert not result.accepted and "action" in result.reason
+
+
+def test_i_go_to_a_room_now_is_still_a_going(vocabulary: Vocabulary) -> None:
+    assert frames_read(vocabulary, "I go to the kitchen") == [{"frame": "MOTION", "goal": "kitchen"}]
