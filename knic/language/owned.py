@@ -4,8 +4,9 @@
   world has several beds and one of them is there ("hoodie from my bed": rhys's single bed, not the double bed
   or the camp bed). A person's room is the usual sign of whose a piece of furniture is. So too for a device
   ("open my blind", "my room light off": the one in that room; "my big light": the big light there), and "my
-  room" or "my bedroom" is that room; with no room named after them, the room of the furniture named after
-  them ("joy_bed": "my bedroom" said by joy is the room her bed stands in). "His desk", "her room" are so of
+  room" or "my bedroom" (or "me room", as said in Newfoundland, Ireland and the north of England) is that
+  room; with no room named after them, the room of the furniture named after them ("joy_bed": "my bedroom"
+  said by joy is the room her bed stands in). "His desk", "her room" are so of
   the person named last before them ("is finn's laptop on his desk": finn's desk), and "mei's lamp", "sol's
   blind" of the person named; "go to finn's" is to finn's room.
 * Where a thing's or a piece of furniture's name holds a person's name ("kerry_keys", "maisie_lunchbox",
@@ -64,7 +65,7 @@ def owned_read(text: str, vocabulary: Vocabulary, speaker: str) -> str:
     """``text`` with a person's own things said by their names, and "my <furniture>" said as "the
     <furniture> in <the speaker's room>" where that tells one of several pieces of furniture of that name (see
     the module docstring); "his" or "her" likewise of the person named last before it; else ``text``."""
-    text = _things_read(text, vocabulary, speaker)
+    text = _ME_ROOM.sub(_my_room, _things_read(text, vocabulary, speaker))
     people = {t.phrase: t.symbol for t in vocabulary.terms if vocabulary.is_subtype(t.type, "person")}
 
     def owner(match: re.Match[str]) -> str | None:
@@ -114,6 +115,19 @@ def owned_read(text: str, vocabulary: Vocabulary, speaker: str) -> str:
     text = re.sub(rf"\b(?:{_TITLES}\s+)?({names})'s(?={_SAID_ALONE})", theirs, text, flags=re.IGNORECASE)
     owner_then = rf"\b(?:{_TITLES}\s+)?((?:{names})(?:'s|'))\s+([a-z]+(?: [a-z]+)?)\b"
     return re.sub(owner_then, mine, text, flags=re.IGNORECASE)
+
+
+#: "me" before "room" (Newfoundland, Irish and Northern English "the light in me room"), with the word before
+_ME_ROOM = re.compile(r"(?:\b([a-z']+)\s+)?\bme (?=(?:room|bedroom)\b)", re.IGNORECASE)
+
+
+def _my_room(match: re.Match[str]) -> str:
+    """ "in me room", "to me room" -> "in my room", "to my room"; not after a verb that takes whom for ("show
+    me room 4" stays)."""
+    before = match.group(1) or ""
+    if before.lower() in FOR_WHOM - {"to", "for", "with"}:
+        return match.group(0)
+    return f"{before} my " if before else "my "
 
 
 def _placed_named(vocabulary: Vocabulary, said: str) -> list[str]:

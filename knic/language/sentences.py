@@ -32,6 +32,7 @@ from __future__ import annotations
 
 from collections.abc import Callable, Sequence
 
+from knic.language.besides import besides_read
 from knic.language.chunks import Chunk
 from knic.language.vocabulary import Term
 
@@ -46,8 +47,8 @@ def sentences_read(
     chunks: Callable[[Sequence[str]], list[Chunk]],
     is_a: Callable[[Term, str], bool],
 ) -> list[list[str]]:
-    """The sentences with the rules of the module docstring applied."""
-    segments = reasons_dropped(together_dropped(segments, chunks), chunks)
+    """The sentences with the rules of the module docstring applied (and of :mod:`knic.language.besides`)."""
+    segments = reasons_dropped(together_dropped(besides_read(segments, chunks, is_a), chunks), chunks)
     segments = _remarks_dropped(segments, chunks, is_a)  # "..., the Sox game's on", "..., Marnie's asleep"
     segments = done_dropped(segments, chunks, lambda c: any(is_a(t, "person") for t in c.terms))
     segments = _lacking_first(_asides_dropped(segments, chunks, is_a), chunks)

@@ -12,7 +12,9 @@ common English synonyms. People in the house also say less:
   chair", "hairbrush" "the brush";
 * a container of a drink or food by what it holds: "water_bottle" is "some water", "milk_carton" "the milk";
 * a piece of furniture made of several of a thing by them: "drawer_unit" and "chest_of_drawers" are each "the
-  drawers" (both in one home: the reader asks which).
+  drawers" (both in one home: the reader asks which);
+* a cupboard, closet or cabinet named after a kind of room by that word alone where no room has the word in
+  its name: "pantry_cupboard" is "the pantry" ("bring me the olive oil from the pantry").
 
 The kinds of room, the nouns, the containers and the units are general English, kept in ``synonyms.yaml``
 (``room_words``, ``heads``, ``containers``, ``units``). A
@@ -154,6 +156,17 @@ def _made_of(words: list[str], units: dict[str, str]) -> list[str]:
     return []
 
 
+#: a cupboard called after the room it stands in for ("pantry cupboard", "utility cupboard")
+_STORES = frozenset({"cupboard", "closet", "cabinet"})
+
+
+def _store(words: list[str], room_words: frozenset[str], rooms: frozenset[str]) -> list[str]:
+    """The kind of room a cupboard is named after ("pantry cupboard" -> "pantry"), unless a room of the world
+    is called so ("bathroom cabinet" where there is a family bathroom: "the bathroom" is the room)."""
+    named = len(words) == 2 and words[0] in room_words and words[1] in _STORES and words[0] not in rooms
+    return [words[0]] if named else []
+
+
 def contains(words: Sequence[str], part: Sequence[str]) -> bool:
     """Whether ``part`` is a run of whole words of ``words``."""
     return any(list(words[i : i + len(part)]) == list(part) for i in range(len(words) - len(part) + 1))
@@ -208,6 +221,7 @@ def short_names(
     room_words, heads, containers = _word_lists()
     units = _units()
     taken = {t.phrase for t in terms}
+    said = frozenset(w for t in terms if is_room(t.type) for w in t.phrase.split())  # rooms' words
     out: list[tuple[str, N]] = []
     seen: set[tuple[str, str]] = set()
     for term in terms:
@@ -218,7 +232,7 @@ def short_names(
         if is_room(term.type):
             phrases += _room_kinds(words, room_words)
         else:
-            phrases += _content(words, containers) + _made_of(words, units)
+            phrases += _content(words, containers) + _made_of(words, units) + _store(words, room_words, said)
         for phrase in phrases:
             key = (phrase, term.phrase)
             if phrase not in taken and key not in seen:

@@ -34,10 +34,12 @@ DEFAULT_SPEAKER = "annie"
 #: command of thousands of words (pasted text, a runaway recogniser) would take the reader minutes
 MAX_WORDS = 150
 #: a number said below zero ("set the dimmer to -10", "minus twenty"): no level, and its digits alone would
-#: be read as one (10); a dash with a space after it is a dash ("bench lamp 2 - 35%")
+#: be read as one (10); a dash with a space after it is a dash ("bench lamp 2 - 35%"); the weather said
+#: beside a request ("..., it's minus twenty out", "-5 degrees outside") is no level
 NEGATIVE = re.compile(
     r"(?:(?<![\w.-])-(?=\d)|\b(?:minus|negative)\s+)(\d+|one|two|three|four|five|six|seven|eight|nine|ten|"
-    r"eleven|twelve|fifteen|twenty|thirty|forty|fifty|sixty|seventy|eighty|ninety|hundred)\b",
+    r"eleven|twelve|fifteen|twenty|thirty|forty|fifty|sixty|seventy|eighty|ninety|hundred)\b"
+    r"(?!\s+(?:degrees|out|outside|today|tonight|this\s+morning|with\s+the\s+wind\s+chill)\b)",
     re.IGNORECASE,
 )
 
