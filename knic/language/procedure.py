@@ -13,7 +13,8 @@ whose radio-trained owner, barrister brother-in-law, Korean grandmother and Dutc
 * a request said in the passive, as in court, in an office or in a notice ("my laptop is to be brought to me
   forthwith", "the office blind is to be lowered by one half", "the lamp should be switched off", "the
   letters need to be taken to the office", "I should be grateful if the briefcase were brought to the sofa
-  bed"): the verb said first ("bring my laptop to me ...", "if you bring the briefcase ...");
+  bed"): the verb said first ("bring my laptop to me ...", "if you bring the briefcase ..."); "forthwith",
+  "without delay", "at your earliest convenience" say no more than "now";
 * "the same" for the thing just named ("take the jigsaw ... and convey the same to the terrace table"), as
   formal and legal English says it: "it", where "same" was looked for in the world;
 * a claim of where a thing is, then a request to confirm or check it ("I put it to you that the car keys are
@@ -123,6 +124,13 @@ _IF_PASSIVE = re.compile(
     rf"\bif\s+{_THING}(?:were|was|could\s+be|would\s+be|might\s+be){_PARTICIPLE}", re.IGNORECASE
 )
 
+#: when, said as in court or in an office ("forthwith", "without delay", "at your earliest convenience"): no
+#: more than "now"
+_FORMAL_WHEN = re.compile(
+    r"\s*,?\s*\b(?:forthwith|without\s+(?:further\s+)?delay|at\s+your\s+(?:earliest\s+)?convenience|promptly)\b",
+    re.IGNORECASE,
+)
+
 #: "the same" standing for the thing just named: followed by where it goes or the end of the clause
 _THE_SAME = re.compile(
     r"\bthe\s+same\b(?=\s*(?:$|[,.;!?]|(?:to|into|onto|on|in|at|back|from|and|then|over|up|down)\b))",
@@ -133,7 +141,7 @@ _THE_SAME = re.compile(
 _CLAIM_CHECKED = re.compile(
     r"^\s*(?:(?:i\s+put\s+it\s+to\s+you|i\s+(?:think|believe|reckon|suspect)|i'm\s+(?:pretty\s+)?sure|"
     r"i\s+am\s+(?:pretty\s+)?sure)\s+(?:that\s+)?)?"
-    r"(?P<claim>(?:the|my|your|his|her|our)\s[a-z' ]+?\s(?:is|are)\s(?:still\s)?"
+    r"(?P<claim>(?:(?:the|my|your|his|her|our)\s[a-z' ]+?|[a-z]+)\s(?:is|are)\s(?:still\s)?"
     r"(?:on|in|at|under|inside|by|beside|behind|next\s+to)\s[a-z' ]+?)\s*[.;,!]\s*"
     r"(?:(?:so\s+)?(?:kindly|please|can\s+you|could\s+you|would\s+you|will\s+you|would\s+you\s+kindly)\s+)*"
     r"(?:confirm|check|verify)(?:\s+(?:that|it|this|please|for\s+me|whether\s+that\s+is\s+so))*\s*[.?!]*\s*$",
@@ -192,7 +200,7 @@ def procedure_read(text: str) -> str:
     text = _RADIO_CHECK.sub("over", text)  # the operator's word alone: no action, as "wilco, out" is none
     text = _PASSIVE.sub(lambda m: f"{m.group('start')}{_active(m)}", text)
     text = _IF_PASSIVE.sub(lambda m: f"if you {_active(m)}", text)
-    text = _THE_SAME.sub("it", text)
+    text = _THE_SAME.sub("it", _FORMAL_WHEN.sub("", text))
     if (claim := _CLAIM_CHECKED.match(text)) is not None:
         text = f"check whether {claim.group('claim')}"
     text = _SIGN_OFF.sub("", _CONFIRM.sub("check whether ", text))

@@ -44,7 +44,9 @@ the home lacks, as "a glass of wine" does, not the bottle or the glass (``knic.l
 "soju bring me one bottle", "water, bring me one glass" said topic first (``knic.language.learners``);
 where from and where to said in two stretches before a verb said last ("porridge oats from larder, on
 kitchen island put", ``knic.language.wherefromto``); "I go ... later" (a learner's present for what the
-speaker will do) asks for no action, as "I'm going ..." does (``knic.language.procedure``).
+speaker will do) asks for no action, as "I'm going ..." does (``knic.language.procedure``); "forthwith",
+"without delay", "at your earliest convenience" say no more than now; a claim then "Confirm." of a person
+("I put it to you that Tracy is in the kitchen").
 """
 
 from __future__ import annotations
@@ -579,3 +581,23 @@ def test_i_go_with_a_time_to_come_asks_for_no_action(vocabulary: Vocabulary, wor
 
 def test_i_go_to_a_room_now_is_still_a_going(vocabulary: Vocabulary) -> None:
     assert frames_read(vocabulary, "I go to the kitchen") == [{"frame": "MOTION", "goal": "kitchen"}]
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        ("The tablet is to be found forthwith", [{"frame": "SEARCHING", "theme": "tablet"}]),
+        (
+            "close the blinds at your earliest convenience",
+            [{"frame": "OPERATING", "device": "bedroom_blinds", "state": "closed"}],
+        ),
+        (
+            "I put it to you that Tracy is in the kitchen. Confirm.",
+            [{"frame": "SEARCHING", "theme": "tracy", "ground": "kitchen"}],
+        ),
+    ],
+)
+def test_a_barristers_words_in_the_erl_apartment(
+    vocabulary: Vocabulary, text: str, frames: list[dict[str, str]]
+) -> None:
+    assert frames_read(vocabulary, text) == frames
