@@ -205,3 +205,19 @@ def _by_furniture(text: str, vocabulary: Vocabulary) -> str:
             pattern = rf"\bin\s+the\s+{re.escape(said)}\s+({near}\s+the\s+{re.escape(term.phrase)})\b"
             text = re.sub(pattern, r"\1", text, flags=re.IGNORECASE)
     return text
+
+
+#: a word after "a", "an" or "some" ("bring me a pop"), or first as the topic before "you" ("pho, you make")
+_A_WORD = re.compile(r"\b(?:a|an|some)\s+([a-z]+)\b", re.IGNORECASE)
+_TOPIC = re.compile(r"^\s*([a-z]+),\s*you\b", re.IGNORECASE)
+
+
+def lacked(text: str, kind_of: Callable[[str], str]) -> str | None:
+    """The word a request's thing was said by, where the reader found no thing in it ("bring what?"): after
+    "a", "an" or "some" a word it reads as a verb or not at all ("could ya bring me a pop": 'pop'), or a word
+    it does not know said first as the topic before "you" ("Pho, you make for me?": 'pho'); else None."""
+    topic = _TOPIC.match(text)
+    if topic is not None and kind_of(topic.group(1).lower()) == "unknown":
+        return topic.group(1).lower()
+    said = [m.group(1).lower() for m in _A_WORD.finditer(text)]
+    return next((w for w in said if kind_of(w) in ("verb", "unknown")), None)

@@ -21,7 +21,7 @@ from knic.language.frames import CommandFrame
 from knic.language.goals import frames_to_goals, hints
 from knic.language.grammar import Grammar
 from knic.language.owned import owned_read
-from knic.language.plainspoken import plainly_said
+from knic.language.plainspoken import lacked, plainly_said
 from knic.language.reader import AmbiguityError, Reader
 from knic.language.vocabulary import Vocabulary
 from knowledge_base import Fact
@@ -172,16 +172,20 @@ def understand(
     if negative := NEGATIVE.search(text):
         reason = f"'{negative.group(0)}' is below zero: a level goes from 0 to 100 percent"
         return Understanding(text, reason=reason, speaker=speaker)
+    reader = reader_for(vocabulary)
     try:
         # "it's dark in the study": its lights; "hoodie from my bed": the bed in the speaker's own room;
         # "three zero percent", "do the light out": said plainly (plainspoken.py)
-        reader = reader_for(vocabulary)
         said = plainly_said(text, vocabulary, lambda w: [c.kind for c in reader.chunks([w])] == ["unknown"])
         reading = reader.read(dark_read(owned_read(said, vocabulary, speaker)))
     except AmbiguityError as exc:
         question = str(exc)[:1].upper() + str(exc)[1:]
         return Understanding(text, reason=f"ambiguous: {exc}", speaker=speaker, question=question)
     except LanguageError as exc:
+        word = lacked(text, lambda w: next((c.kind for c in reader.chunks([w])), ""))
+        if word is not None and " what? I heard no " in str(exc):  # "bring me a pop": 'pop' is no thing here
+            reason = f"there is no '{word}' here: this world has nothing called that"
+            return Understanding(text, reason=reason, speaker=speaker)
         return Understanding(text, reason=str(exc), speaker=speaker)
     frames = tuple(reading.frames)
     notes: list[str] = [
