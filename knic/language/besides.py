@@ -16,8 +16,12 @@ mean them (used by :func:`knic.language.sentences.sentences_read` on a command's
   there"): "go to my desk", as a room said so already is.
 * "have it at" (or "them") a level ("the sunroom blinds, we'll have them at seventy percent"): "set it to"
   that level, as "have the blinds at seventy" already is; "have them on" (or off): "turn them on".
-* "we need", "we'll need", "we're going to need" opening a command: "i need" (a nurse's or a parent's "we";
-  "we're going to need the towels from the linen closet in the bathroom").
+* "we need", "we'll need", "we're going to need" (or "want") opening a command: "i need" (a nurse's or a
+  parent's "we"; "we're going to need the towels from the linen closet", "we'll want the bedsheets").
+* "is" opening a sentence before "too", "so", "very" or "much" (a learner's dropped "it", as Greek, Spanish,
+  Italian and Persian speakers leave it out: "is too much light, close the blinds of the sunroom"): "it's".
+* "do a sweep (or pass, search, scan, check) of (or through, around) the rec room for the controller":
+  "search the rec room for the controller".
 """
 
 from __future__ import annotations
@@ -45,13 +49,31 @@ _WANTS = frozenset({"wants", "needs", "would like", "likes"})
 _SOME = frozenset({"some", "it", "them", "em", "one", "a bit", "a piece", "too", "as well"})
 _STATES = frozenset({"on", "off", "out", "open", "closed", "shut"})
 #: the speaker's "we" wishing for a thing
-_WE_NEED = (
-    ["we're", "going", "to", "need"],
-    ["we", "are", "going", "to", "need"],
-    ["we'll", "need"],
-    ["we", "will", "need"],
-    ["we", "need"],
+_WE_NEED = tuple(
+    [*we, wish]
+    for wish in ("need", "want")
+    for we in (["we're", "going", "to"], ["we", "are", "going", "to"], ["we'll"], ["we", "will"], ["we"])
 )
+#: what a learner's "is" without its "it" comes before ("is too much light")
+_HOW_MUCH = frozenset({"too", "so", "very", "much", "really", "quite"})
+#: a going-over of a place said as a noun ("do a quick sweep of the basement")
+_SWEEPS = frozenset({"sweep", "pass", "search", "scan", "check", "recce"})
+_OVER = frozenset({"of", "through", "around", "round", "in"})
+
+
+def _swept(words: list[str]) -> list[str]:
+    """ "do a pass through the rec room for the controller" -> "search the rec room for the controller"."""
+    for i in range(len(words) - 3):
+        if words[i] in ("do", "have", "make") and words[i + 1] in ("a", "an"):
+            at = i + 3 if words[i + 2] in ("quick", "fast", "proper", "good") else i + 2
+            if (
+                at + 1 < len(words)
+                and words[at] in _SWEEPS
+                and words[at + 1] in _OVER
+                and "for" in words[at:]
+            ):
+                return [*words[:i], "search", *words[at + 2 :]]
+    return words
 
 
 def _had_at(words: list[str]) -> list[str]:
@@ -72,7 +94,8 @@ def besides_read(
     is_a: Callable[[Term, str], bool],
 ) -> list[list[str]]:
     """The sentences with the rules of the module docstring applied."""
-    segments = [_had_at(_anything_seen(s)) for s in segments]
+    segments = [_swept(_had_at(_anything_seen(s))) for s in segments]
+    segments = [["it's", *s[1:]] if s[:1] == ["is"] and s[1:2] and s[1] in _HOW_MUCH else s for s in segments]
     for we in _WE_NEED:
         if segments and segments[0][: len(we)] == we:
             segments = [["i", "need", *segments[0][len(we) :]], *segments[1:]]

@@ -5,10 +5,10 @@
   or the camp bed). A person's room is the usual sign of whose a piece of furniture is. So too for a device
   ("open my blind", "my room light off": the one in that room; "my big light": the big light there), and "my
   room" or "my bedroom" (or "me room", as said in Newfoundland, Ireland and the north of England) is that
-  room; with no room named after them, the room of the furniture named after them ("joy_bed": "my bedroom"
-  said by joy is the room her bed stands in). "His desk", "her room" are so of
-  the person named last before them ("is finn's laptop on his desk": finn's desk), and "mei's lamp", "sol's
-  blind" of the person named; "go to finn's" is to finn's room.
+  room; "the laptop of me" (a learner's "of" for whose) is "my laptop"; with no room named after them, the
+  room of the furniture named after them ("joy_bed": "my bedroom" said by joy is the room her bed stands
+  in). "His desk", "her room" are so of the person named last before them ("is finn's laptop on his desk":
+  finn's desk), and "mei's lamp", "sol's blind" of the person named; "go to finn's" is to finn's room.
 * Where a thing's or a piece of furniture's name holds a person's name ("kerry_keys", "maisie_lunchbox",
   "joy_bed"), "my keys" (or "my bed") said by kerry, "kerry's keys", "kerrys keys" (typed without the
   apostrophe) and "her keys" once kerry was named are that thing: the world names its owner. Said by someone
@@ -65,7 +65,7 @@ def owned_read(text: str, vocabulary: Vocabulary, speaker: str) -> str:
     """``text`` with a person's own things said by their names, and "my <furniture>" said as "the
     <furniture> in <the speaker's room>" where that tells one of several pieces of furniture of that name (see
     the module docstring); "his" or "her" likewise of the person named last before it; else ``text``."""
-    text = _ME_ROOM.sub(_my_room, _things_read(text, vocabulary, speaker))
+    text = _ME_ROOM.sub(_my_room, _things_read(_OF_ME.sub(r"my \1", text), vocabulary, speaker))
     people = {t.phrase: t.symbol for t in vocabulary.terms if vocabulary.is_subtype(t.type, "person")}
 
     def owner(match: re.Match[str]) -> str | None:
@@ -117,6 +117,8 @@ def owned_read(text: str, vocabulary: Vocabulary, speaker: str) -> str:
     return re.sub(owner_then, mine, text, flags=re.IGNORECASE)
 
 
+#: a learner's "the laptop of me" (Persian, Greek and Romance "of" for whose): "my laptop"
+_OF_ME = re.compile(r"\bthe ((?:[a-z]+ ){0,2}[a-z]+) of (?:me|mine)\b", re.IGNORECASE)
 #: "me" before "room" (Newfoundland, Irish and Northern English "the light in me room"), with the word before
 _ME_ROOM = re.compile(r"(?:\b([a-z']+)\s+)?\bme (?=(?:room|bedroom)\b)", re.IGNORECASE)
 

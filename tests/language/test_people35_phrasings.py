@@ -17,7 +17,9 @@ apartment as well:
   play cards there", "Eleni and I play cards there" said after a request are talk; "Eleni wants some" after a
   request that says where the thing goes is a reason; "put off both" said last is "them"; "my desk, please
   go there" goes there; "we'll have them at seventy percent" sets them; a nurse's "we'll need", "we're going
-  to need" is "I need" (``knic.language.besides``).
+  to need" is "I need"; a learner's "is too much light" is "it's too much light"; "do a pass through the rec
+  room for the controller" searches the rec room for it (``knic.language.besides``);
+* a learner's "the laptop of me" is "my laptop" (``knic.language.owned``).
 """
 
 from __future__ import annotations
@@ -226,6 +228,47 @@ CASES = [
     # the speaker's "we need"
     ("erl", "annie", "we're going to need the soap", ["BRINGING theme=soap beneficiary=me"]),
     ("semi", "shannon", "we'll need the ibuprofen", ["BRINGING theme=ibuprofen beneficiary=me"]),
+    (
+        "semi",
+        "shannon",
+        "We'll want the bedsheets from the linen closet",
+        ["BRINGING theme=bedsheets source=linen_closet beneficiary=me"],
+    ),
+    # a learner's "the laptop of me"
+    (
+        "semi",
+        "dariush",
+        "Take the laptop of me to the kitchen table",
+        ["BRINGING theme=dariush_laptop goal=kitchen_table"],
+    ),
+    ("erl", "annie", "bring the glasses of me to the kitchen", ["BRINGING theme=glasses goal=kitchen"]),
+    # a learner's "is" without its "it"
+    (
+        "semi",
+        "eleni",
+        "Is too much light, close the blinds of the sunroom",
+        ["OPERATING device=sunroom_blinds state=closed"],
+    ),
+    ("erl", "annie", "is so dark, turn on the hallway light", ["OPERATING device=hallway_light state=on"]),
+    (
+        "semi",
+        "eleni",
+        "Is the prayer rope on the icon shelf?",
+        ["SEARCHING theme=prayer_rope ground=icon_shelf"],
+    ),
+    # a sweep of a place for a thing
+    (
+        "semi",
+        "nikos",
+        "Do a pass through the rec room for the game controller",
+        ["SEARCHING theme=game_controller ground=rec_room"],
+    ),
+    (
+        "erl",
+        "tracy",
+        "have a quick scan of the kitchen for the apple",
+        ["SEARCHING theme=apple ground=kitchen"],
+    ),
 ]
 
 
