@@ -355,10 +355,13 @@ def called_so(terms: Sequence[Term], said: str, vocabulary: Vocabulary, place: s
 def named_after(terms: Sequence[Term], landmarks: Sequence[Term], vocabulary: Vocabulary) -> tuple[Term, ...]:
     """Of ``terms`` said near ``landmarks``, the one whose own name opens with the first word of a landmark's
     name of two words or more ("the light over the dining table": the dining light, not the lounge light of
-    the same room); else ``terms``."""
+    the same room), or with its last after a room's ("the kitchen island": the island lights); else
+    ``terms``."""
     rooms = {w for t in vocabulary.terms if vocabulary.is_subtype(t.type, "room") for w in t.phrase.split()}
-    firsts = {w[0] for w in (vocabulary.phrase_of(t.symbol).split() for t in landmarks) if len(w) > 1}
-    firsts -= rooms  # "the kitchen island" says the room, not which light of it
+    named = [vocabulary.phrase_of(t.symbol).split() for t in landmarks]
+    # "the kitchen island" says the room, not which light of it, unless a light is named after the island
+    firsts = {w[0] for w in named if len(w) > 1} - rooms
+    firsts |= {w[-1] for w in named if len(w) == 2 and w[0] in rooms}
     kept = tuple(t for t in terms if vocabulary.phrase_of(t.symbol).split()[0] in firsts)
     return kept if len({t.symbol for t in kept}) == 1 else tuple(terms)
 

@@ -58,6 +58,13 @@ class Places:
                 kept = self._near(candidates, rooms)  # "the bedside table next to the bed"
                 kept = beside_named(kept, rooms, self.vocabulary)  # "the lamp by the bed": the bedside lamp
                 kept = named_after(kept, rooms, self.vocabulary)  # "the light over the dining table"
+                if all(self.is_a(t, "light") for t in candidates):
+                    # "the light above the island": the island lights, a dimmer of its room named after it
+                    around = {p for r in rooms for p in self.vocabulary.locations.get(r.symbol, ())}
+                    located = self.vocabulary.locations
+                    dimmers = [t for t in self._dimmers_in(()) if around & set(located.get(t.symbol, ()))]
+                    named = named_after((*kept, *dimmers), rooms, self.vocabulary)
+                    kept = named if len(named) == 1 and dimmers else kept
             if (
                 not kept
                 and all(self.is_a(t, "device") for t in candidates)
@@ -130,9 +137,9 @@ class Places:
         )
 
     def _dimmers_in(self, rooms: Sequence[Term]) -> tuple[Term, ...]:
-        """The dimmers (dimmable lights) in the rooms, one term each."""
+        """The dimmers (dimmable lights) in the rooms, one term each; with no rooms, all of them."""
         found = {t.symbol: t for t in self.vocabulary.terms if self.is_a(t, "dimmer") and not t.is_group}
-        return tuple(t for t in found.values() if any(self._within(t, r) for r in rooms))
+        return tuple(t for t in found.values() if not rooms or any(self._within(t, r) for r in rooms))
 
     def _room_first(self, room: Arg, place: Arg) -> bool:
         """ "put the soap in the downstairs toilet on the basin": a room said with "in" right before a piece

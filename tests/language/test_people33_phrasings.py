@@ -46,7 +46,8 @@ where from and where to said in two stretches before a verb said last ("porridge
 kitchen island put", ``knic.language.wherefromto``); "I go ... later" (a learner's present for what the
 speaker will do) asks for no action, as "I'm going ..." does (``knic.language.procedure``); "forthwith",
 "without delay", "at your earliest convenience" say no more than now; a claim then "Confirm." of a person
-("I put it to you that Tracy is in the kitchen").
+("I put it to you that Tracy is in the kitchen"); "the light above the island" is the island lights, a
+dimmer named after the island, not the kitchen's plain light (``knic.language.places``, ``naming``).
 """
 
 from __future__ import annotations
@@ -601,3 +602,22 @@ def test_a_barristers_words_in_the_erl_apartment(
     vocabulary: Vocabulary, text: str, frames: list[dict[str, str]]
 ) -> None:
     assert frames_read(vocabulary, text) == frames
+
+
+@pytest.mark.parametrize(
+    ("text", "state"),
+    [
+        ("dim the light above the island to twenty", "20"),
+        ("turn off the light over the kitchen island", "off"),
+    ],
+)
+def test_the_light_above_a_thing_is_the_dimmer_named_after_it(text: str, state: str) -> None:
+    assert frames_read(_flat(), text, "idris") == [
+        {"frame": "OPERATING", "device": "island_lights", "state": state}
+    ]
+
+
+def test_the_light_above_the_dining_table_is_still_the_rooms(vocabulary: Vocabulary) -> None:
+    assert frames_read(_flat(), "turn on the light above the dining table", "idris") == [
+        {"frame": "OPERATING", "device": "living_room_light", "state": "on"}
+    ]
