@@ -22,6 +22,12 @@ mean them (used by :func:`knic.language.sentences.sentences_read` on a command's
   Italian and Persian speakers leave it out: "is too much light, close the blinds of the sunroom"): "it's".
 * "do a sweep (or pass, search, scan, check) of (or through, around) the rec room for the controller":
   "search the rec room for the controller".
+* A sentence after a request saying where a thing is not ("where is the knitting bag? It's not on the rocking
+  chair", "..., they're not on the hall bench", a learner's "is not on the rocking chair"): dropped; it is
+  looked for everywhere, not there.
+* "put" or "get" before devices each with its own level ("can we get the bedroom blinds halfway and the
+  bedroom light at ten", "put the floor lamp on ten and the living room light on eighty"): "set", so that
+  each keeps its level, as after "set" or "turn" (the last level was read for both).
 """
 
 from __future__ import annotations
@@ -59,6 +65,12 @@ _HOW_MUCH = frozenset({"too", "so", "very", "much", "really", "quite"})
 #: a going-over of a place said as a noun ("do a quick sweep of the basement")
 _SWEEPS = frozenset({"sweep", "pass", "search", "scan", "check", "recce"})
 _OVER = frozenset({"of", "through", "around", "round", "in"})
+#: what a thing's sentence opens with, and its "not", before where it is not
+_IT = frozenset({"it", "they", "he", "she", "it's", "its", "they're", "he's", "she's", "that's"})
+_NOT = frozenset({"not", "isn't", "aren't", "wasn't", "weren't", "ain't"})
+_WHERE = frozenset({"on", "in", "at", "under", "inside", "by", "near", "behind", "there", "here"})
+#: verbs that put a thing somewhere, said of devices and their levels
+_PUT = frozenset({"put", "get", "pop", "stick"})
 
 
 def _swept(words: list[str]) -> list[str]:
@@ -74,6 +86,24 @@ def _swept(words: list[str]) -> list[str]:
             ):
                 return [*words[:i], "search", *words[at + 2 :]]
     return words
+
+
+def _set_said(
+    words: list[str], chunks: Callable[[Sequence[str]], list[Chunk]], is_a: Callable[[Term, str], bool]
+) -> list[str]:
+    """ "get the blinds halfway and the light at ten" -> "set the blinds halfway and the light at ten"."""
+    said = chunks(words)
+    verb = next((i for i, c in enumerate(said) if c.kind == "verb"), None)
+    if verb is None or said[verb].text not in _PUT or said[verb].text not in words:
+        return words
+    rest = said[verb + 1 :]
+    things = [i for i, c in enumerate(rest) if c.kind == "entity"]
+    devices = [i for i in things if all(is_a(t, "device") for t in rest[i].terms)]
+    leveled = [i for i in devices if any(c.kind in ("level", "number") for c in rest[i + 1 : i + 3])]
+    if len(things) < 2 or len(leveled) != len(things):
+        return words
+    at = words.index(said[verb].text)
+    return [*words[:at], "set", *words[at + 1 :]]
 
 
 def _had_at(words: list[str]) -> list[str]:
@@ -94,7 +124,7 @@ def besides_read(
     is_a: Callable[[Term, str], bool],
 ) -> list[list[str]]:
     """The sentences with the rules of the module docstring applied."""
-    segments = [_swept(_had_at(_anything_seen(s))) for s in segments]
+    segments = [_set_said(_swept(_had_at(_anything_seen(s))), chunks, is_a) for s in segments]
     segments = [["it's", *s[1:]] if s[:1] == ["is"] and s[1:2] and s[1] in _HOW_MUCH else s for s in segments]
     for we in _WE_NEED:
         if segments and segments[0][: len(we)] == we:
@@ -108,7 +138,10 @@ def besides_read(
     kept = [segments[0]]
     for segment in segments[1:]:
         if not (
-            _after_done(segment) or _we_do(segment, chunks, is_a) or _wanted(segment, kept, chunks, is_a)
+            _after_done(segment)
+            or _not_there(segment)
+            or _we_do(segment, chunks, is_a)
+            or _wanted(segment, kept, chunks, is_a)
         ):
             kept.append(segment)
     return kept
@@ -119,6 +152,14 @@ def _anything_seen(words: list[str]) -> list[str]:
     return [
         "anything" if w == "nothing" and i and words[i - 1] in _PERCEIVING else w for i, w in enumerate(words)
     ]
+
+
+def _not_there(words: list[str]) -> bool:
+    """Whether a sentence says where a thing is not ("it's not on the rocking chair", "isn't in there")."""
+    at = 1 if words[:1] and words[0] in _IT else 0
+    at += 1 if words[at : at + 1] and words[at] in _BE else 0
+    at += 1 if words[at : at + 1] and words[at] in _NOT else 0
+    return 0 < at < len(words) and words[at - 1] in _NOT and words[at] in _WHERE
 
 
 def _after_done(words: list[str]) -> bool:

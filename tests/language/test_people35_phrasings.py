@@ -19,6 +19,10 @@ apartment as well:
   go there" goes there; "we'll have them at seventy percent" sets them; a nurse's "we'll need", "we're going
   to need" is "I need"; a learner's "is too much light" is "it's too much light"; "do a pass through the rec
   room for the controller" searches the rec room for it (``knic.language.besides``);
+* "get" or "put" before devices each with its own level ("can we get the bedroom blinds halfway and the
+  bedroom light at ten") sets each to its own (``knic.language.besides``);
+* where a thing is not, said after the request ("where is the knitting bag? Is not on the rocking chair"), is
+  no place to look (``knic.language.besides``);
 * a learner's "the laptop of me" is "my laptop" (``knic.language.owned``).
 """
 
@@ -269,6 +273,29 @@ CASES = [
         "have a quick scan of the kitchen for the apple",
         ["SEARCHING theme=apple ground=kitchen"],
     ),
+    # "get" or "put" before devices each with its level
+    (
+        "semi",
+        "shannon",
+        "Can we get the bedroom blinds halfway and the bedroom light at ten",
+        ["OPERATING device=bedroom_blinds state=50", "OPERATING device=bedroom_light state=10"],
+    ),
+    (
+        "erl",
+        "annie",
+        "put the bedroom blinds halfway and the living room dimmer at twenty",
+        ["OPERATING device=bedroom_blinds state=50", "OPERATING device=living_room_dimmer state=20"],
+    ),
+    ("erl", "annie", "get the living room dimmer to ten", ["OPERATING device=living_room_dimmer state=10"]),
+    # where a thing is not
+    (
+        "semi",
+        "eleni",
+        "Where is the knitting bag? Is not on the rocking chair",
+        ["SEARCHING theme=knitting_bag"],
+    ),
+    ("erl", "annie", "where is the remote? it isn't on the sofa", ["SEARCHING theme=remote"]),
+    ("erl", "annie", "where is the remote? it's on the sofa", ["SEARCHING theme=remote ground=sofa"]),
 ]
 
 
