@@ -38,6 +38,8 @@ apartment as well:
 * a thing the world lacks said where the reader finds a verb ("could ya bring me a pop") or as a topic
   before "you" ("Pho, you make for me?") is refused by its name, not as "bring what?"
   (``plainspoken.lacked``, ``knic.language.understanding``);
+* "what's the twenty on Remy?" (CB and fire radio's ten-code for where someone is) looks for him
+  (``commands.yaml``);
 * a level said in words that says which way ("all the way down", "as low as it goes") is not turned round by
   a closing verb, as "fully" is ("close the blinds fully": closed; ``knic.language.clauses``).
 """
@@ -359,6 +361,15 @@ CASES = [
     ),
     # a word the reader drops (a filler) where a purpose's verb or a remark's thing goes: no word to look up
     ("erl", "annie", "put the cup on the kitchen table to please", ["PLACING theme=cup goal=kitchen_table"]),
+    # radio's "twenty" for where someone is
+    ("ranch", "wes", "What's the twenty on Remy?", ["SEARCHING theme=remy"]),
+    ("erl", "annie", "what's the twenty on tracy, over", ["SEARCHING theme=tracy"]),
+    (
+        "erl",
+        "annie",
+        "set the living room dimmer to twenty",
+        ["OPERATING device=living_room_dimmer state=20"],
+    ),
     # why said last as a sigh
     (
         "erl",
