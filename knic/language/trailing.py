@@ -4,8 +4,8 @@ who breaks off, loses the word and starts over):
 * a request broken off and then called off in a sentence of its own ("Turn the night light... no, leave
   it. Turn the nursery light off.", "Bring me the muslin. Forget it. Pass me the dummy."): what was called
   off is left out, and the request after it stands, an "it" or "them" in it being what was called off
-  ("Open the blinds... no, leave it. Close them."); "leave it" before a place ("leave it on the table")
-  stays a placing;
+  ("Open the blinds... no, leave it. Close them."); "leave it" is a calling off only after "no" ("put
+  the cup on the table, leave it. ..." and "leave it on the table" stay as said);
 * a request broken off and started again with its verb and "it" ("dim the nursery light... dim it to
   twenty"): one request, where the first asked how far;
 * a vague "here" said and then the place itself after trailing off or a repair ("turn the big light off in
@@ -29,8 +29,8 @@ _SAID_AGAIN = r"(?:\.{2,}|…|,)\s*(?:(?:no|sorry|i\s+mean|i\s+meant)[\s,]+)*"
 #: a request called off in a sentence of its own, with another said after it
 _CALLED_OFF = re.compile(
     rf"^.*?{_BREAK}\s*(?:(?:no|oh|wait|actually|um|erm)[\s,]+)*"
-    r"(?:leave\s+it|forget\s+it|never\s*mind|don't\s+bother|do\s+not\s+bother|scratch\s+that|forget\s+that|"
-    rf"cancel\s+that)\s*{_BREAK}\s*(?=\S)",
+    r"(?:(?<=no\s)leave\s+it|(?<=no,\s)leave\s+it|forget\s+it|never\s*mind|don't\s+bother|do\s+not\s+bother|"
+    rf"scratch\s+that|forget\s+that|cancel\s+that)\s*{_BREAK}\s*(?=\S)",
     re.IGNORECASE,
 )
 

@@ -621,3 +621,12 @@ def test_the_light_above_the_dining_table_is_still_the_rooms(vocabulary: Vocabul
     assert frames_read(_flat(), "turn on the light above the dining table", "idris") == [
         {"frame": "OPERATING", "device": "living_room_light", "state": "on"}
     ]
+
+
+def test_leave_it_without_no_is_no_calling_off(vocabulary: Vocabulary) -> None:
+    assert frames_read(
+        vocabulary, "Put the cup on the kitchen table, leave it. Then bring me the apple."
+    ) == [
+        {"frame": "PLACING", "theme": "cup", "goal": "kitchen_table"},
+        {"frame": "BRINGING", "theme": "apple", "beneficiary": "me"},
+    ]
