@@ -1,19 +1,24 @@
 """Things left out of "all" ("turn off all the lights except the hallway one", "close every blind but the
 bedroom ones", "bring me all the drinks apart from the juice").
 
-The reader did not know "except": "close all the blinds except the ones in the study" closed only the
-study's, "bring me all the drinks except the juice" brought the juice too. Now the command is read without
-the exception, and what it names is taken out of what "all" named: the things left, as the group the world
-names them by, else each alone. A thing is described when the words name it (a name of the world, or a
-group of such), or when every word said of it ("hallway", "left", "bedroom") is a word of its name or of the
-room the world places it in ("the one in the hallway": "hallway" names the room of the light); a name of
-one of them leaves out that one only ("the hallway light", not the porch light in the hallway as well).
-Words that describe none of them are refused, naming them: the robot does not guess which to leave. An
-exception belongs to the action it is said in ("turn off all the lights except the hallway light, then
-close all the blinds except the kitchen ones").
+The reader did not know "except" after "all" in many cases: "close all the blinds except the ones in the
+study" closed only the study's, "bring me all the drinks except the juice" brought the juice too. Now the
+command is read without the exception, and what it names is taken out of what "all" named: the things left,
+as the group the world names them by, else each alone. A thing is described when the words name it (a name
+of the world, or a group of such), or when every word said of it ("hallway", "left", "bedroom") is a word of
+its name or of the room the world places it in ("the one in the hallway": "hallway" names the room of the
+light); a name of one of them leaves out that one only ("the hallway light", not the porch light in the
+hallway as well). A thing of the world that is none of them leaves them all ("all the lights except the
+blinds": the blinds are no light); words that describe nothing are refused, naming them: the robot does not
+guess which to leave. An exception belongs to the action it is said in ("turn off all the lights except the
+hallway light, then close all the blinds except the kitchen ones").
 
-Called from :meth:`knic.language.reader.Reader.read` on a command's text; the words that mark an
-exception are the command language's ``except_words`` (``commands.yaml``).
+Called from :meth:`knic.language.reader.Reader.read` on a command's text, before anything else reads it;
+the words that mark an exception are the command language's ``except_words`` (``commands.yaml``). "But"
+leaves out only after "all" ("bring me the mug but first ...", "take the apple but not the lemon to
+tracy"); the others also after a group said without it ("lights off except for the left lamp": the lights
+are every light). This module replaced two older leave-outs that read among the words and chunks (of
+groups of devices only).
 """
 
 from __future__ import annotations
@@ -45,24 +50,24 @@ def excepted(
     text: str, language: CommandLanguage, is_verb: Callable[[str], object]
 ) -> tuple[str, list[str], str, str] | None:
     """The command without its exception, the excepted words, what was said before them and before the
-    action they belong to ("and" or "then" before it), when an exception word follows a quantified phrase
-    ("all the lights", "every blind") and a thing is said after it ("the", "my", or a name) before the next
-    verb or "and"/"then"; None otherwise ("bring me the mug but first switch on the light" has no "all"
-    before its "but", "all the lights, but first go to the kitchen" says no thing after it)."""
+    action they belong to ("and" or "then" before it), when an exception word is said before more words, up
+    to the next verb or "and"/"then"; a bare "but" only after a quantified phrase ("all the lights", "every
+    blind") and before a thing ("the", "my"). None otherwise ("bring me the mug but first switch on the
+    light" has no "all" before its "but", "all the lights, but first go to the kitchen" no thing after it)."""
     said = text.split()
     words = [normalize(w) for w in said]
     quantified = {q.split()[0] for q in language.quantifiers.get("all", ())}
     phrases = sorted((e.split() for e in language.except_words), key=len, reverse=True)
     for at in range(1, len(words)):
         found = next((p for p in phrases if words[at : at + len(p)] == p), None)
-        if found is None or not quantified & set(words[:at]):
-            continue
+        if found is None or (found[0] == "but" and not quantified & set(words[:at])):
+            continue  # "bring me the mug but first ...", "... but not the lemon": "but" only after "all"
         end = at + len(found)
         stop = next((i for i in range(end, len(words)) if words[i] in _REST or is_verb(words[i])), len(words))
-        if stop == end or words[end] not in _THINGS:
+        if stop == end or (found == ["but"] and words[end] not in _THINGS):
             return None
         head = " ".join([*said[:at], *said[stop:]])
-        quantifier = max(i for i in range(at) if words[i] in quantified)
+        quantifier = max((i for i in range(at) if words[i] in quantified), default=at)
         lead = max((i for i in range(quantifier) if words[i] in _REST), default=0)
         return head, " ".join(words[end:stop]).split(), " ".join(said[:at]), " ".join(said[:lead])
     return None
@@ -147,6 +152,8 @@ def without(
         for member in [group] if group else kept:
             frames.append(CommandFrame(frame.kind, {**frame.args, role: member}))
     phrase = " ".join(words)
+    if not left_out and names:  # "all the lights except the blinds": the blinds are none of them anyway
+        return reading
     if not left_out:
         raise LanguageError(f"'{phrase}' is none of the things you asked for: which should I leave out?")
     if not acted:

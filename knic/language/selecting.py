@@ -7,8 +7,6 @@ before they are cut into chunks (by :class:`knic.language.reader.Reader`, after
 * a side said of a thing ("the lamp on the left side of the bed", "the light to the right"): the thing of
   that side, where the world has one called so ("left lamp");
 * two sides said of one noun ("the left and the right lamp"): both names said whole;
-* all of a kind but "the ... one(s)" ("all the lights except the hallway one", "every lamp but the one in
-  the study"): the ones left out by their names (knic.language.terse then reads the others);
 * a kind of thing said for its use ("something to drink", "something to eat", "a cold drink", "a piece of
   fruit", "a snack"): the one thing of the world of that kind, or a question which of them (none: the word
   is refused as unknown);
@@ -54,17 +52,6 @@ _SAID_AGAIN = (
 _SIDES = frozenset({"left", "right"})
 _SIDE_PREPS = frozenset({"on", "to", "at"})
 _DETERMINERS = frozenset({"the", "a", "an", "my", "your", "his", "her", "our", "their", "this", "that"})
-#: words that leave some out of all of a kind ("all the lights except the hallway one")
-_EXCEPT = (
-    ("except", "for"),
-    ("apart", "from"),
-    ("other", "than"),
-    ("but", "not"),
-    ("except",),
-    ("excluding",),
-    ("but",),
-)
-_ALL = frozenset({"all", "every", "each"})
 #: what things of a kind are called, for a kind said by its use ("something to drink")
 _KINDS = {
     "drink": frozenset(
@@ -125,7 +112,6 @@ def described(segments: list[list[str]], vocabulary: Vocabulary) -> list[list[st
             for i, w in enumerate(words)
         ]
         words = _sides(_two_sides(words, phrases), phrases)
-        words = _all_but(words, vocabulary, phrases)
         words = _kind(words, vocabulary)
         words = _room_first(_landmark_unknown(words, phrases, heads), vocabulary, phrases)
         words = _sized(_from_onto(words, vocabulary, phrases), phrases)
@@ -240,79 +226,6 @@ def _sides(words: list[str], phrases: dict[str, Term]) -> list[str]:
                 end = stop
         return [*words[: i - 3], side, noun, *words[end:]]
     return words
-
-
-def _all_but(words: list[str], vocabulary: Vocabulary, phrases: dict[str, Term]) -> list[str]:
-    """ "all the lights except the hallway one", "... but the ones in the bedroom": the ones left out said
-    by their names, which :func:`knic.language.terse.told_read` then leaves out of the group."""
-    for k in range(len(words)):
-        said = next((e for e in _EXCEPT if tuple(words[k : k + len(e)]) == e), None)
-        if said is None:
-            continue
-        start = next((j for j in range(k - 1, -1, -1) if words[j] in _ALL), None)
-        if start is None:
-            continue
-        head = [w for w in words[start + 1 : k] if w not in ("the", "of")]
-        kind = _all_of(head, vocabulary, phrases)
-        if not kind:
-            continue
-        end = k + len(said)
-        while end < len(words) and words[end] not in ("and", "then"):
-            end += 1
-        described = words[k + len(said) : end]
-        left_out = sorted(_left_out(described, kind, head, vocabulary, phrases))
-        if not left_out or len(left_out) == len(kind):
-            continue
-        except_ = ["except"] if said == ("but",) else list(said)  # "but" may also start a correction
-        if not {"one", "ones"} & set(described):  # named: knic.language.terse leaves them out
-            if said != ("but",):
-                continue
-            return [*words[:k], *except_, *words[k + 1 :]]
-        group = vocabulary.group_of(left_out) if len(left_out) > 1 else None
-        said_as: list[str] = []
-        for symbol in [group] if group is not None else left_out:
-            said_as += [*(["and"] if said_as else []), "the", *vocabulary.phrase_of(symbol).split()]
-        return [*words[:k], *except_, *said_as, *words[end:]]
-    return words
-
-
-def _all_of(head: list[str], vocabulary: Vocabulary, phrases: dict[str, Term]) -> list[str]:
-    """The things "all the <head>" names: a group's members, or every thing whose name or type ends so."""
-    if not head:
-        return []
-    said = " ".join(head)
-    noun = head[-1][:-1] if head[-1].endswith("s") else head[-1]
-    for name in (said, " ".join([*head[:-1], noun])):
-        term = phrases.get(name)
-        if term is not None:
-            return sorted(set(term.members)) if term.is_group else []
-    if len(head) > 1:
-        return []
-    found = {
-        t.symbol
-        for t in vocabulary.terms
-        if not t.is_group and t.type != "level" and (t.phrase.split()[-1] == noun or t.type == noun)
-    }
-    return sorted(found) if len(found) > 1 else []
-
-
-def _left_out(
-    words: Sequence[str], kind: list[str], head: list[str], vocabulary: Vocabulary, phrases: dict[str, Term]
-) -> set[str]:
-    """Which of ``kind`` the words after "except" name: a name ("the desk lamp", "the hallway one"), or
-    the ones in a place ("the one in the hallway", "the bedroom ones")."""
-    noun = head[-1][:-1] if head[-1].endswith("s") else head[-1]
-    said = [w for w in words if w not in _DETERMINERS and w not in ("not", "for")]
-    said = [noun if w in ("one", "ones") else w for w in said]
-    if said and said[0] == noun and len(said) > 2 and said[1] in ("in", "on", "at"):
-        said = said[2:]  # "the one in the hallway": the place
-    name = " ".join(said)
-    term = phrases.get(name) or phrases.get(f"{name} {noun}") or phrases.get(" ".join(said[:-1]))
-    if term is None:
-        return set()
-    if vocabulary.is_subtype(term.type, "room"):
-        return {s for s in kind if term.symbol in s or term.symbol in vocabulary.locations.get(s, ())}
-    return set(term.members) & set(kind)
 
 
 def _heads(phrase: str) -> set[str]:

@@ -10,7 +10,6 @@ the third person (used by :class:`knic.language.reader.Reader` and :mod:`knic.la
 * a request told of someone ("tracy asks the robot to fetch her glasses", "annie asks for the tablet"): that
   action, for her where it would be for the speaker;
 * verbs said of the robot in the third person ("the robot goes to the bedroom, then it finds the glasses");
-* things left out of a group ("all the lights except the hallway light"): the others;
 * a person described before what they want ("annie, who is sitting on the sofa, wants the remote"): for her;
 * a request quoted ("oscar says bring me the bottle"): "me" is the one quoted;
 * the robot called by its name ("tiago, lounge dimmer to 30"): address.
@@ -264,57 +263,12 @@ def switched_only(vocabulary: Vocabulary, arg: Arg, args: list[Arg], levelled: b
         )
 
 
-#: words that leave things out of a group said before them ("all the lights except the hallway light")
-_EXCEPT = (
-    ("except", "for"),
-    ("except",),
-    ("apart", "from"),
-    ("but", "not"),
-    ("other", "than"),
-    ("excluding",),
-)
-
-
-def all_but(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
-    """A group, or every thing a name fits, said with some left out ("turn off all the lights except the
-    hallway light", "lights off apart from the right lamp", "switch on every light but not the left lamp"):
-    the others (their group when the world has one). Anything else stays as said."""
-    for i, chunk in enumerate(chunks):
-        every = i > 0 and chunks[i - 1].kind == "quant" and chunks[i - 1].role == "all"
-        if chunk.kind != "entity" or not (every or any(t.is_group for t in chunk.terms)):
-            continue
-        j = i + 1
-        while j < len(chunks) and (
-            chunks[j].kind == "state" or (chunks[j].kind == "prep" and chunks[j].state)
-        ):
-            j += 1
-        said = [c.text for c in chunks[j : j + 2]]
-        size = next((len(p) for p in _EXCEPT if said[: len(p)] == list(p)), 0)
-        k = past_determiners(chunks, j + size)
-        if not size or k >= len(chunks) or chunks[k].kind != "entity":
-            continue
-        members = list(dict.fromkeys(m for t in chunk.terms for m in t.members))
-        left_out = {m for t in chunks[k].terms for m in t.members}
-        kept = [m for m in members if m not in left_out]
-        if not kept:
-            continue
-        if len(kept) == len(members):  # "the lights except the dimmer": the dimmer is none of them anyway
-            return [*chunks[:j], *chunks[k + 1 :]]
-        group = vocabulary.group_of(kept) if len(kept) > 1 else None
-        wanted = [group] if group is not None else kept
-        firsts = {t.symbol: t for t in reversed(vocabulary.terms) if t.symbol in wanted}
-        others = Chunk("entity", chunk.text, tuple(firsts[s] for s in wanted if s in firsts), role=chunk.role)
-        every_one = [] if every or len(wanted) == 1 else [Chunk("quant", "all", role="all")]
-        return [*chunks[:i], *every_one, others, *chunks[i + 1 : j], *chunks[k + 1 :]]
-    return chunks
-
-
 def told_read(tokens: list[str], chunker: Chunker, vocabulary: Vocabulary) -> tuple[list[Chunk], str | None]:
     """The chunks of a command with the readings of this module that come before all others (verbs in the
-    third person, the robot's name as address, things left out of a group, a person described before what
+    third person, the robot's name as address, a person described before what
     they want, a request told of someone), and who asked (else None)."""
     chunks = chunker.chunks(third_person_read(tokens, chunker))
-    chunks = all_but(robot_unnamed(chunks, vocabulary), vocabulary)
+    chunks = robot_unnamed(chunks, vocabulary)
     return reported(described_subject(chunks, vocabulary), vocabulary, chunker.bare_verb)
 
 

@@ -64,7 +64,7 @@ def test_a_room_said_of_the_things_left_out_is_where_the_world_places_them() -> 
 @pytest.mark.parametrize(
     ("text", "said"),
     [
-        ("turn off all the lights except the blinds", "none of the things"),
+        ("turn off all the lights except the telly", "none of the things"),
         ("close all the blinds except the bedroom ones", "leaves nothing"),
     ],
 )
@@ -73,6 +73,12 @@ def test_an_exception_that_leaves_out_nothing_or_everything_is_refused(
 ) -> None:
     result = understand(text, vocabulary, speaker="annie")
     assert not result.accepted and not result.frames and said in result.reason
+
+
+def test_a_thing_that_is_none_of_them_leaves_them_all(vocabulary: Vocabulary) -> None:
+    assert frames_read(vocabulary, "turn off all the lights except the blinds") == [
+        {"frame": "OPERATING", "device": "all_lights", "state": "off"}
+    ]
 
 
 def test_but_without_all_is_no_exception(vocabulary: Vocabulary) -> None:
