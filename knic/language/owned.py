@@ -12,7 +12,9 @@
 * Where a thing's or a piece of furniture's name holds a person's name ("kerry_keys", "maisie_lunchbox",
   "joy_bed"), "my keys" (or "my bed") said by kerry, "kerry's keys", "kerrys keys" (typed without the
   apostrophe) and "her keys" once kerry was named are that thing: the world names its owner. Said by someone
-  who owns none of them, "my keys" still asks which.
+  who owns none of them, "my keys" still asks which. Where the words after the owner are the whole name of
+  another thing ("dariush's laptop charger" beside "dariush_laptop" and "laptop_charger"), they name that
+  thing, not the owner's laptop and then a charger.
 * A person's name with an "s" and no apostrophe before a word ("get tylers basketball") is said as the
   owner ("tyler's"), not as the one to give it to.
 * Things given to several people ("give tyler and maisie the lunchboxes", "... their lunchboxes") where each
@@ -199,6 +201,11 @@ def _things_read(text: str, vocabulary: Vocabulary, speaker: str) -> str:
         if words[i] not in _SPEAKERS + _OTHERS:
             last = owner
         thing = _owned_thing(owned, owner, words[end : end + 2])
+        if thing is not None and thing[1] == 1 and _named_whole(vocabulary, words[end : end + 2]):
+            # "dariush's laptop charger": the laptop charger, not dariush's laptop and a charger
+            changes.append((i, end, "my" if words[i] in (*_SPEAKERS, "me") else "the"))
+            i = end
+            continue
         if thing is not None:
             # the owner stays said: "grab my keys" is still for the speaker, and "fetch maisie's lunchbox and
             # give it to her" names maisie for "her"
@@ -228,6 +235,20 @@ def _owner_at(words: list[str], i: int, people: tuple[str, ...]) -> tuple[str | 
         if words[end - 1] in forms and end < len(words):
             return person, end
     return None, i
+
+
+@lru_cache(maxsize=16)
+def _phrases(vocabulary: Vocabulary) -> frozenset[str]:
+    """The world's phrases of things and furniture (read once per vocabulary)."""
+    kinds = ("item", "furniture")
+    return frozenset(
+        t.phrase for t in vocabulary.terms if any(vocabulary.is_subtype(t.type, k) for k in kinds)
+    )
+
+
+def _named_whole(vocabulary: Vocabulary, after: list[str]) -> bool:
+    """Whether two words said after an owner are a thing's whole name ("laptop charger")."""
+    return len(after) == 2 and " ".join(after) in _phrases(vocabulary)
 
 
 def _owned_thing(owned: dict[tuple[str, str], str], owner: str, after: list[str]) -> tuple[str, int] | None:

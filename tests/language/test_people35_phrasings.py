@@ -23,7 +23,8 @@ apartment as well:
   bedroom light at ten") sets each to its own (``knic.language.besides``);
 * where a thing is not, said after the request ("where is the knitting bag? Is not on the rocking chair"), is
   no place to look (``knic.language.besides``);
-* a learner's "the laptop of me" is "my laptop" (``knic.language.owned``).
+* a learner's "the laptop of me" is "my laptop"; "Dariush's laptop charger" is the laptop charger where
+  "dariush_laptop" is a thing too (``knic.language.owned``).
 """
 
 from __future__ import annotations
@@ -40,6 +41,7 @@ from .conftest import assert_asked, frames_read, world_of
 
 SEMI = "tests/fixtures/language/people35/toronto_semi.yaml"
 FAMILY = "tests/fixtures/language/people30/semi_house.yaml"
+ANNEXE = "tests/fixtures/language/people24/family_house.yaml"
 
 #: (world, speaker, text, frames as the bench writes them) by rule, in the Toronto house or the ERL apartment
 CASES = [
@@ -296,10 +298,25 @@ CASES = [
     ),
     ("erl", "annie", "where is the remote? it isn't on the sofa", ["SEARCHING theme=remote"]),
     ("erl", "annie", "where is the remote? it's on the sofa", ["SEARCHING theme=remote ground=sofa"]),
+    # a whole name after an owner
+    (
+        "semi",
+        "wade",
+        "Go up to the attic, get Dariush's laptop charger and bring it down to the kitchen",
+        [
+            "MOTION goal=attic_office",
+            "TAKING theme=laptop_charger source=attic_office",
+            "BRINGING theme=laptop_charger source=attic_office goal=kitchen",
+        ],
+    ),
+    ("semi", "dariush", "bring me my laptop charger", ["BRINGING theme=laptop_charger beneficiary=me"]),
+    ("semi", "wade", "bring me Dariush's laptop", ["BRINGING theme=dariush_laptop beneficiary=me"]),
+    ("annexe", "mark", "bring me jonas's laptop charger", ["BRINGING theme=laptop_charger beneficiary=me"]),
+    ("annexe", "mark", "bring me jonas's laptop", ["BRINGING theme=jonas_laptop beneficiary=me"]),
 ]
 
 
-@lru_cache(maxsize=2)
+@lru_cache(maxsize=3)
 def _world(file: str) -> Vocabulary:
     return world_of(file)
 
@@ -308,7 +325,7 @@ def _world(file: str) -> Vocabulary:
 def test_read_as_meant(
     vocabulary: Vocabulary, world: str, speaker: str, text: str, frames: list[str]
 ) -> None:
-    home = {"semi": SEMI, "family": FAMILY}.get(world)
+    home = {"semi": SEMI, "family": FAMILY, "annexe": ANNEXE}.get(world)
     assert frames_read(_world(home) if home else vocabulary, text, speaker) == [frame_spec(f) for f in frames]
 
 
