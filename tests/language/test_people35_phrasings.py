@@ -6,7 +6,8 @@ apartment as well:
 * "'en" and "'un" (Newfoundland and West Country "him" for a thing) are "it" ("turn 'en down to thirty");
   "puffer" is an inhaler, "roof window" a skylight (``synonyms.yaml``); "ship" and "cop" bring ("ship my
   laptop up to the attic office", "cop me the chips"); "ahlie", "styll", "wallahi" and "quick ask" said
-  around a request ask nothing; "until the middle" is halfway (``commands.yaml``);
+  around a request ask nothing; "until the middle" is halfway; "fourty" and "ninty", misspelt as said, are
+  forty and ninety (``commands.yaml``);
 * a cupboard named after a kind of room ("pantry_cupboard") is "the pantry" where no room has that word in its
   name (``knic.language.shortnames``);
 * "me room" (Newfoundland, Irish, Northern English) is the speaker's own room, as "my room" is
@@ -313,6 +314,9 @@ CASES = [
     ("semi", "wade", "bring me Dariush's laptop", ["BRINGING theme=dariush_laptop beneficiary=me"]),
     ("annexe", "mark", "bring me jonas's laptop charger", ["BRINGING theme=laptop_charger beneficiary=me"]),
     ("annexe", "mark", "bring me jonas's laptop", ["BRINGING theme=jonas_laptop beneficiary=me"]),
+    # a number misspelt as it is said
+    ("semi", "nikos", "the pot lights to fourty percent", ["OPERATING device=pot_lights state=40"]),
+    ("erl", "annie", "dim the living room dimmer to ninty", ["OPERATING device=living_room_dimmer state=90"]),
 ]
 
 
