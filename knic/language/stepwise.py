@@ -33,6 +33,10 @@ def came_back(chunks: list[Chunk]) -> list[Chunk]:
         last = next((j for j in range(i - 1, -1, -1) if chunks[j].kind == "verb"), None)
         if last is not None and {"BRINGING", "TAKING"} & set(chunks[last].frames):  # "get the juice, come
             sent = sent and any(c.kind == "prep" and c.role == "goal" for c in chunks[last:i])  # back": to me
+        # an action said whole before it ("go get back and ...", a mishearing of "go get jack", is none)
+        sent = (
+            sent and last is not None and any(c.kind in ("entity", "pronoun", "me") for c in chunks[last:i])
+        )
         if back and sent and after in ("join", "verb"):
             return [*chunks[: i + 1], Chunk("prep", "to", role="goal"), Chunk("me", "me"), *chunks[i + 1 :]]
     return chunks

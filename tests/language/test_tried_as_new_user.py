@@ -144,3 +144,9 @@ def test_a_thing_pointed_at_and_not_named_is_asked_for(vocabulary: Vocabulary, t
     result = understand(text, vocabulary, speaker="annie")
     assert not result.accepted and not result.question and not result.frames
     assert "what?" in result.reason
+
+
+def test_coming_back_needs_an_action_said_whole_before_it(vocabulary: Vocabulary) -> None:
+    # "go get back and take him ...", a mishearing of "go get jack and take him ...": no coming back to me
+    result = understand("go get back and take him to the kitchen", vocabulary, speaker="annie")
+    assert not result.accepted and not result.question
