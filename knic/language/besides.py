@@ -25,9 +25,9 @@ mean them (used by :func:`knic.language.sentences.sentences_read` on a command's
 * A sentence after a request saying where a thing is not ("where is the knitting bag? It's not on the rocking
   chair", "..., they're not on the hall bench", a learner's "is not on the rocking chair"): dropped; it is
   looked for everywhere, not there.
-* "put" or "get" before devices each with its own level ("can we get the bedroom blinds halfway and the
-  bedroom light at ten", "put the floor lamp on ten and the living room light on eighty"): "set", so that
-  each keeps its level, as after "set" or "turn" (the last level was read for both).
+* "put" or "get" before devices each with its own level or state ("can we get the bedroom blinds halfway and
+  the bedroom light at ten", "get the desk lamp to twenty and the office light off"): "set", so that each
+  keeps its own, as after "set" or "turn" (the last level was read for both).
 """
 
 from __future__ import annotations
@@ -100,7 +100,8 @@ def _set_said(
     things = [i for i, c in enumerate(rest) if c.kind == "entity"]
     devices = [i for i in things if all(is_a(t, "device") for t in rest[i].terms)]
     leveled = [i for i in devices if any(c.kind in ("level", "number") for c in rest[i + 1 : i + 3])]
-    if len(things) < 2 or len(leveled) != len(things):
+    stated = [i for i in devices if any(c.kind == "state" or c.text in _STATES for c in rest[i + 1 : i + 2])]
+    if len(things) < 2 or not leveled or len(set(leveled) | set(stated)) != len(things):
         return words
     at = words.index(said[verb].text)
     return [*words[:at], "set", *words[at + 1 :]]

@@ -20,8 +20,9 @@ apartment as well:
   go there" goes there; "we'll have them at seventy percent" sets them; a nurse's "we'll need", "we're going
   to need" is "I need"; a learner's "is too much light" is "it's too much light"; "do a pass through the rec
   room for the controller" searches the rec room for it (``knic.language.besides``);
-* "get" or "put" before devices each with its own level ("can we get the bedroom blinds halfway and the
-  bedroom light at ten") sets each to its own (``knic.language.besides``);
+* "get" or "put" before devices each with its own level or state ("can we get the bedroom blinds halfway and
+  the bedroom light at ten", "... and the hallway light off") sets each to its own
+  (``knic.language.besides``);
 * where a thing is not, said after the request ("where is the knitting bag? Is not on the rocking chair"), is
   no place to look (``knic.language.besides``);
 * a learner's "the laptop of me" is "my laptop"; "Dariush's laptop charger" is the laptop charger where
@@ -290,6 +291,12 @@ CASES = [
         ["OPERATING device=bedroom_blinds state=50", "OPERATING device=living_room_dimmer state=20"],
     ),
     ("erl", "annie", "get the living room dimmer to ten", ["OPERATING device=living_room_dimmer state=10"]),
+    (
+        "erl",
+        "annie",
+        "get the living room dimmer to ten and the hallway light off",
+        ["OPERATING device=living_room_dimmer state=10", "OPERATING device=hallway_light state=off"],
+    ),
     # where a thing is not
     (
         "semi",
