@@ -11,14 +11,15 @@ thing said first with a count of its container after ("soju bring me one bottle"
 from __future__ import annotations
 
 from knic.language.chunks import Chunk, past_determiners
-from knic.language.stepwise import steps_read
+from knic.language.stepwise import listed_unknown, steps_read
 from knic.language.tidy import unplaced
 from knic.language.vocabulary import Vocabulary
 
 
 def learners_read(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
     """The chunks with the orders of this module put as a command says them."""
-    said = source_first(thrown_to(state_as_verb(chunks, vocabulary), vocabulary), vocabulary)
+    said = listed_unknown(chunks, vocabulary)  # "the apple and the banana, bring them": no banana here
+    said = source_first(thrown_to(state_as_verb(said, vocabulary), vocabulary), vocabulary)
     said = subject_dropped(appositions_dropped(helped_to(said), vocabulary))
     said = gapped_given(out_the(carried_in(said, vocabulary), vocabulary), vocabulary)
     said = verb_last_moved(own_going_dropped(own_doing_dropped(room_told(it_me(said), vocabulary))))

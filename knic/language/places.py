@@ -84,7 +84,8 @@ class Places:
                 where = self.vocabulary.phrase_of(rooms[0].symbol)
                 plural = grouped or head.chunk.role == "plural"
                 there = "there are no" if plural else "there is no"  # "there are no lights in the nursery"
-                raise LanguageError(f"{there} {head.chunk.text} in the {where} in this world")
+                by = "in" if all(self.is_a(r, "room") for r in rooms) else place.prep_text or "by"
+                raise LanguageError(f"{there} {head.chunk.text} {by} the {where} in this world")
             kept = named_in_part(kept, head.chunk.text, place.chunk.text, rooms, self.vocabulary)  # open plan
             said_in = place.chunk.text if all(self.is_a(r, "room") for r in rooms) else ""  # not on a desk
             kept = called_so(kept, head.chunk.text, self.vocabulary, said_in)  # "the light in the attic"
@@ -181,6 +182,11 @@ class Places:
         rooms |= {p for r in landmarks for p in self.vocabulary.locations.get(r.symbol, ())}
         others = [t for t in candidates if t.symbol not in {r.symbol for r in landmarks}]
         kept = tuple(t for t in others if rooms & set(self.vocabulary.locations.get(t.symbol, ())))
+        if not kept:  # devices the world places nowhere are where their names say ("the light by the bed")
+            said = [t for t in self.vocabulary.terms if t.symbol in rooms]
+            kept = tuple(
+                t for t in others if self.is_a(t, "device") and any(self._within(t, r) for r in said)
+            )
         return kept or (tuple(candidates) if len(candidates) == 1 else ())
 
     def _members(self, terms: Sequence[Term]) -> tuple[Term, ...]:

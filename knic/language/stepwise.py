@@ -4,11 +4,13 @@ room, and grab the candle"), out of order ("bring me the coke, but first switch 
 kitchen, find the lemon"), or joined by a learner's words ("take the apple, and after you bring it to Sven",
 "you go to search Hugo").
 
-Called from :func:`knic.language.learners.learners_read` on the chunks of a command.
+Called from :func:`knic.language.learners.learners_read` on the chunks of a command (:func:`listed_unknown`
+first, before its other readings move the words).
 """
 
 from __future__ import annotations
 
+from core.errors import LanguageError
 from knic.language.chunks import Chunk
 from knic.language.vocabulary import Vocabulary
 
@@ -18,6 +20,29 @@ def steps_read(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
     said = first_put_first(after_you_in_order(gone_to_do(before_to(place_said_first(chunks, vocabulary)))))
     said = before_next(said)
     return came_back(each_given(goings_repeated(said, vocabulary), vocabulary))
+
+
+def listed_unknown(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
+    """ "the apple and the banana, bring them to me", "apple and banana, bring to me": a word the world does
+    not know, listed with "and" beside a thing before the verb, was meant as a thing too; it is named in the
+    refusal (the banana was dropped and the apple alone brought). Said first, it needs "the" before it ("oh
+    and the apple, ..." lists nothing).
+
+    Raises:
+        LanguageError: such a word was said.
+    """
+    first = next((i for i, c in enumerate(chunks) if c.kind == "verb"), 0)
+    said = [
+        (c, i > 0 and chunks[i - 1].kind == "det") for i, c in enumerate(chunks[:first]) if c.kind != "det"
+    ]
+    for i, (chunk, determined) in enumerate(said):
+        if chunk.kind != "unknown":
+            continue
+        pairs = [said[i - 2 : i], said[i + 1 : i + 3][::-1]] if determined else [said[i - 2 : i]]
+        for pair in pairs:
+            if len(pair) == 2 and pair[1][0].text == "and" and _names(pair[0][0], vocabulary, ("item",)):
+                raise LanguageError(f"there is no '{chunk.text}' here: this world has nothing called that")
+    return chunks
 
 
 def came_back(chunks: list[Chunk]) -> list[Chunk]:

@@ -150,3 +150,23 @@ def test_coming_back_needs_an_action_said_whole_before_it(vocabulary: Vocabulary
     # "go get back and take him ...", a mishearing of "go get jack and take him ...": no coming back to me
     result = understand("go get back and take him to the kitchen", vocabulary, speaker="annie")
     assert not result.accepted and not result.question
+
+
+@pytest.mark.parametrize(
+    "text",
+    [
+        "the apple and the banana, bring them to me",
+        "apple and banana, bring to me",
+        "the banana and the apple, bring them",
+    ],
+)
+def test_a_thing_the_world_lacks_listed_before_the_verb_is_named(vocabulary: Vocabulary, text: str) -> None:
+    result = understand(text, vocabulary, speaker="annie")
+    assert not result.accepted and not result.frames and "'banana'" in result.reason
+
+
+def test_a_light_by_a_piece_of_furniture_is_one_of_its_room(vocabulary: Vocabulary) -> None:
+    result = understand("turn on the light by the bed", vocabulary, speaker="annie")
+    assert not result.accepted and "left light or the right light" in result.question
+    result = understand("switch on the lamp on the coffee table", vocabulary, speaker="annie")
+    assert not result.accepted and "no lamp on the coffee table" in result.reason
