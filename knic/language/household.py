@@ -53,8 +53,11 @@ _TIME_WORDS = frozenset({"when", "once", "after", "until", "till"})
 _CONTRACTED = {"you're": ["you", "are"]}
 #: what says a device's state is a condition of the request after it ("if the hallway light is on, ...")
 _IF = frozenset({"if", "when", "whenever"})
-#: what a device is said to be before its state ("the blinds are still shut", "are stuck halfway")
-_STATE_WORDS = frozenset({"is", "are", "still", "already", "stuck", "left", "now", "all", "fully"})
+#: what a device is said to be before its state ("the blinds are still shut", "are stuck halfway", "is
+#: switched on")
+_STATE_WORDS = frozenset(
+    {"is", "are", "still", "already", "stuck", "left", "now", "all", "fully", "switched", "turned"}
+)
 #: subjects said with "be" contracted ("she's working in the study")
 _CONTRACTED_DOERS = frozenset({"i'm", "we're", "they're", "he's", "she's", "you're"})
 #: words that ask whether someone is about ("is bethan here yet", "is rhys up yet", "is dai back")

@@ -170,3 +170,18 @@ def test_a_light_by_a_piece_of_furniture_is_one_of_its_room(vocabulary: Vocabula
     assert not result.accepted and "left light or the right light" in result.question
     result = understand("switch on the lamp on the coffee table", vocabulary, speaker="annie")
     assert not result.accepted and "no lamp on the coffee table" in result.reason
+
+
+@pytest.mark.parametrize(
+    ("text", "state"),
+    [
+        ("if the hallway light is switched on, turn it off", "off"),
+        ("when the hallway light is turned off switch it on", "on"),
+    ],
+)
+def test_a_state_said_as_switched_in_a_condition_is_no_request(
+    vocabulary: Vocabulary, text: str, state: str
+) -> None:
+    assert frames_read(vocabulary, text) == [
+        {"frame": "OPERATING", "device": "hallway_light", "state": state}
+    ]
