@@ -70,7 +70,7 @@ def referent(
         if found:
             return found if chunk.text in ("them", "em") else found[-1:]  # "em": them, said short
     said = [f.get(r) for g in groups for f in g for r in _REFERRED_ROLES]
-    people = any(s and vocabulary.is_subtype(vocabulary.type_of(s) or "", "person") for s in said)
+    people = any(s and vocabulary.is_of(s, "person") for s in said)
     if wanted == "person" and "item" in categories and not people:  # "my teddy's on the sofa, put him ..."
         with contextlib.suppress(LanguageError):
             return referent(replace(chunk, role="item"), categories, groups, vocabulary)
@@ -78,19 +78,15 @@ def referent(
     unsaid = f"'{chunk.text}' does not refer to {thing} named earlier in the command"
     # "bring me the mug and switch it on": what it would be (the last action's first thing) is said too
     last = [f.get(r) for f in (groups[-1] if groups else []) for r in _REFERRED_ROLES if f.get(r) != SPEAKER]
-    other = next((s for s in last if s and (wanted != "person" or _is(vocabulary, s, "person"))), None)
+    other = next((s for s in last if s and (wanted != "person" or vocabulary.is_of(s, "person"))), None)
     if other is not None:
-        what, device = vocabulary.phrase_of(other), _is(vocabulary, other, "device")
+        what, device = vocabulary.phrase_of(other), vocabulary.is_of(other, "device")
         kinds = " or ".join(KIND_NAMES.get(c, c) for c in categories)
-        the = "" if _is(vocabulary, other, "person") else "the "
+        the = "" if vocabulary.is_of(other, "person") else "the "
         unsaid = f"'{chunk.text}' does not refer to {kinds} named earlier in the command: " + (
             not_of_kinds(what, categories, True) if device else f"{the}{what} is not one"
         )
     raise LanguageError(unsaid)
-
-
-def _is(vocabulary: Vocabulary, symbol: str, kind: str) -> bool:
-    return vocabulary.is_subtype(vocabulary.type_of(symbol) or "", kind)
 
 
 def settled(reading: Reading, vocabulary: Vocabulary) -> Reading:
@@ -189,7 +185,7 @@ def chain(
             role = "ground" if nxt.kind == "SEARCHING" else "source"
             theme = nxt.get("theme")
             said = nxt.get(role) in (None, frame["goal"])  # "go to the kitchen and find the cup (there)"
-            place = not vocabulary.is_subtype(vocabulary.type_of(frame["goal"]) or "", "person")
+            place = not vocabulary.is_of(frame["goal"], "person")
             if nxt.kind in ("SEARCHING", "TAKING", "BRINGING") and said and theme and place:
                 out[at] = CommandFrame(nxt.kind, {**nxt.args, role: frame["goal"]})
                 waypoints.add(index)

@@ -153,10 +153,10 @@ def _frame_goals(frame: CommandFrame, vocabulary: Vocabulary, speaker: str, note
         sourced = _sourced(frame, vocabulary, theme)
         # "to granny in the living room": handed to her where she is, not left in the room
         person, room = frame.get("beneficiary"), frame.get("goal") or ""
-        handed = person not in (None, SPEAKER) and _is(vocabulary, room, "room")
+        handed = person not in (None, SPEAKER) and vocabulary.is_of(room, "room")
         if frame.get("goal") is not None and not handed:
             place = need("goal")
-            if _is(vocabulary, place, "furniture"):
+            if vocabulary.is_of(place, "furniture"):
                 return [*sourced, Fact("object_on", (theme, place))]
             return [*sourced, Fact("object_at", (theme, place))]
         if kind == "PLACING":
@@ -173,7 +173,7 @@ def _frame_goals(frame: CommandFrame, vocabulary: Vocabulary, speaker: str, note
         if vocabulary.robot is None:
             raise LanguageError("the world has no robot to move")
         # "go to tracy": find where she is (the robot is then there)
-        if _is(vocabulary, need("goal"), "person"):
+        if vocabulary.is_of(need("goal"), "person"):
             return [Fact("found", (need("goal"),))]
         return [Fact("robot_at", (vocabulary.robot, room_of(need("goal"), vocabulary)))]
     if kind == "ACCOMPANYING":
@@ -195,7 +195,7 @@ def _operating_goals(
     frame: CommandFrame, vocabulary: Vocabulary, device: str, state: str, notes: list[str]
 ) -> list[Fact]:
     devices = vocabulary.members(device)
-    lights = all(_is(vocabulary, d, "light") for d in devices)
+    lights = all(vocabulary.is_of(d, "light") for d in devices)
     if state in ("on", "off") and lights:
         return [Fact(f"light_{state}", (d,)) for d in devices]
     if lights:
@@ -234,7 +234,7 @@ def nearest_level(percent: int, known: Sequence[int]) -> int | None:
 def _sourced(frame: CommandFrame, vocabulary: Vocabulary, theme: str) -> list[Fact]:
     """``(taken_from X f)`` for an object asked for from a piece of furniture, when the domain has it."""
     source = frame.get("source")
-    if source and "taken_from" in vocabulary.predicates and _is(vocabulary, source, "furniture"):
+    if source and "taken_from" in vocabulary.predicates and vocabulary.is_of(source, "furniture"):
         return [Fact("taken_from", (theme, source))]
     return []
 
@@ -245,9 +245,9 @@ def room_of(place: str, vocabulary: Vocabulary) -> str:
     Raises:
         LanguageError: the world does not say which room the furniture is in.
     """
-    if not _is(vocabulary, place, "furniture"):
+    if not vocabulary.is_of(place, "furniture"):
         return place
-    rooms = [p for p in vocabulary.locations.get(place, ()) if _is(vocabulary, p, "room")]
+    rooms = [p for p in vocabulary.locations.get(place, ()) if vocabulary.is_of(p, "room")]
     if len(rooms) != 1:
         raise LanguageError(f"this world does not say which room the {vocabulary.phrase_of(place)} is in")
     return rooms[0]
@@ -269,7 +269,7 @@ def hints(frames: Sequence[CommandFrame], vocabulary: Vocabulary) -> list[Fact]:
             theme, where = frame.get("beneficiary"), frame.get("goal")  # where the one it is for is
         if not theme or not where or theme == SPEAKER or vocabulary.locations.get(theme):
             continue
-        candidates = [Fact("possibly_on", (theme, where))] if _is(vocabulary, where, "furniture") else []
+        candidates = [Fact("possibly_on", (theme, where))] if vocabulary.is_of(where, "furniture") else []
         with contextlib.suppress(LanguageError):  # furniture in no known room: no room hint
             candidates.append(Fact("possibly_at", (theme, room_of(where, vocabulary))))
         for fact in candidates:
@@ -280,11 +280,6 @@ def hints(frames: Sequence[CommandFrame], vocabulary: Vocabulary) -> list[Fact]:
             if fact not in found:
                 found.append(fact)
     return found
-
-
-def _is(vocabulary: Vocabulary, symbol: str, type_name: str) -> bool:
-    symbol_type = vocabulary.type_of(symbol)
-    return symbol_type is not None and vocabulary.is_subtype(symbol_type, type_name)
 
 
 def _check_consistent(goals: Sequence[Fact]) -> None:

@@ -44,7 +44,7 @@ def _names(vocabulary: Vocabulary) -> tuple[dict[str, str], dict[str, str], dict
             heads.update({head: head, **({} if head.endswith("s") else {head + "s": head})})
     there: dict[str, list[str]] = {}
     for symbol, where in vocabulary.locations.items():
-        if vocabulary.is_subtype(vocabulary.type_of(symbol) or "", "item"):
+        if vocabulary.is_of(symbol, "item"):
             for place in where:
                 there.setdefault(place, []).append(symbol)
     return places, heads, there

@@ -74,7 +74,7 @@ def every_one(arg: Arg, symbols: Sequence[str], vocabulary: Vocabulary) -> list[
     Raises:
         AmbiguityError: which of them is meant, offering all of them.
     """
-    devices = [s for s in symbols if vocabulary.is_subtype(vocabulary.type_of(s) or "", "device")]
+    devices = [s for s in symbols if vocabulary.is_of(s, "device")]
     rooms = {r for s in devices for r in vocabulary.locations.get(s, ())}
     if not arg.plural or len(devices) != len(symbols) or len(rooms) < 2:
         return list(symbols)

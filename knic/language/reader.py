@@ -387,9 +387,7 @@ class Reader(Places):
         last: str | None = None
         for arg in args:
             symbols = {t.symbol for t in arg.chunk.terms}
-            items = sorted(
-                s for s in symbols if self.vocabulary.is_subtype(self.vocabulary.type_of(s) or "", "item")
-            )
+            items = sorted(s for s in symbols if self.vocabulary.is_of(s, "item"))
             if not arg.consumed and arg.prep is None and len(items) > 1 and len(items) == len(symbols):
                 unsettled = unsettled or f"which {arg.chunk.text} do you mean: {self._listed(items)}?"
             if arg.consumed or arg.chunk.kind != "entity" or len(symbols) != 1:

@@ -501,7 +501,7 @@ _BLINDS_STATES = {"on": "open", "off": "closed"}
 
 def _all_are(vocabulary: Vocabulary, symbols: list[str], kind: str) -> bool:
     """Whether each of the symbols is of type ``kind`` (or a subtype)."""
-    return all(vocabulary.is_subtype(vocabulary.type_of(s) or "", kind) for s in symbols)
+    return all(vocabulary.is_of(s, kind) for s in symbols)
 
 
 def _implicit(
@@ -529,7 +529,7 @@ def _ask_level(vocabulary: Vocabulary, devices: list[str]) -> None:
     """A level meant but not said ("turn the dimmer up a bit"): raise the question to ask back."""
     named = " and the ".join(vocabulary.phrase_of(d) for d in devices)
     members = [m for d in devices for m in vocabulary.members(d)]
-    if all(vocabulary.is_subtype(vocabulary.type_of(m) or "", "light") for m in members):
+    if all(vocabulary.is_of(m, "light") for m in members):
         raise AmbiguityError(f"the {named} can only be switched on or off: on or off?")
     levels = sorted(p for p in (level_percent(s) for s in vocabulary.instances) if p is not None)
     offered = ", ".join(str(p) for p in levels[:-1]) + f" or {levels[-1]}" if levels else "a level"

@@ -115,7 +115,7 @@ class _Walker:
         for frame in reversed(frames):
             for role in ("beneficiary", "theme"):
                 name = frame.get(role)
-                if name and self.vocabulary.is_subtype(self.vocabulary.type_of(name) or "", wanted):
+                if name and self.vocabulary.is_of(name, wanted):
                     return name
         return None
 

@@ -469,11 +469,8 @@ class Vocabulary:
 
     def terms_of(self, categories: Sequence[str], *, groups: bool = False) -> list[Term]:
         """The terms whose type falls under one of ``categories``; group terms only when ``groups``."""
-        return [
-            t
-            for t in self._terms
-            if (groups or not t.is_group) and any(self.is_subtype(t.type, c) for c in categories)
-        ]
+        wanted = [t for t in self._terms if groups or not t.is_group]
+        return [t for t in wanted if any(self.is_subtype(t.type, c) for c in categories)]
 
     def match(
         self, tokens: Sequence[str], start: int, categories: Sequence[str], *, groups: bool = False
@@ -494,10 +491,11 @@ class Vocabulary:
         """The type of an instance, constant or group name known to the vocabulary."""
         if symbol in self._instances:
             return self._instances[symbol]
-        for term in self._terms:
-            if term.symbol == symbol:
-                return term.type
-        return None
+        return next((term.type for term in self._terms if term.symbol == symbol), None)
+
+    def is_of(self, symbol: str, kind: str) -> bool:
+        """Whether a symbol's type is ``kind`` or derives from it (False for a symbol the world lacks)."""
+        return self.is_subtype(self.type_of(symbol) or "", kind)
 
     def members(self, symbol: str) -> tuple[str, ...]:
         """The symbols a name stands for: the group's members, or ``(symbol,)``."""
