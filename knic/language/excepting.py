@@ -162,8 +162,11 @@ def without(
 
 
 def _described(symbol: str, said: list[str], vocabulary: Vocabulary) -> bool:
-    """Whether every word said is a word of the thing's name or of the room the world places it in."""
-    words = {*vocabulary.phrase_of(symbol).split(), *symbol.split("_")}
+    """Whether every word said is a word of one of the thing's names ("second" of "cup2", said "cup two" and
+    "the second cup") or of the room the world places it in."""
+    words = {w for t in vocabulary.terms if t.symbol == symbol for w in t.phrase.split()} | set(
+        symbol.split("_")
+    )
     for place in vocabulary.locations.get(symbol, ()):
         words |= set(vocabulary.phrase_of(place).split())
     return all(w in words or w.rstrip("s") in words for w in said)

@@ -104,3 +104,15 @@ def test_a_name_leaves_out_that_thing_only_and_each_exception_its_own_action() -
     ]
     frames = frames_read(home, "turn off all the lights except the ones in the hallway", speaker="graham")
     assert not {"hallway_light", "porch_light"} & {f["device"] for f in frames}
+
+
+def test_a_thing_left_out_by_its_order_in_another_pddl_problem() -> None:
+    from knic.language.world import read_vocabulary
+
+    numbered = read_vocabulary(problem="tests/fixtures/language/numbered/numbered.pddl")
+    assert frames_read(numbered, "bring me all the cups except the second one", speaker="alice") == [
+        {"frame": "BRINGING", "theme": "cup1", "beneficiary": "me"}
+    ]
+    assert frames_read(numbered, "turn off every lamp but the first", speaker="alice") == [
+        {"frame": "OPERATING", "device": "lamp_02", "state": "off"}
+    ]
