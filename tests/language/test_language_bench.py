@@ -19,7 +19,8 @@ def test_the_development_set_is_understood() -> None:
 
 def test_the_held_out_set_stays_above_the_floor() -> None:
     figures = evaluate(SETS["test"])
-    assert figures["main_argument_accuracy"] >= 0.85, figures["errors"]
+    # no errors in the message: the held-out sentences are not to be read while working on the reader
+    assert figures["main_argument_accuracy"] >= 0.85, "the held-out set fell below its floor"
     assert figures["refusal_accuracy"] >= 0.9
 
 
