@@ -65,6 +65,7 @@ def test_bench_language_prints_dev_and_test(capsys: pytest.CaptureFixture[str]) 
         "people33-dev",
         "people34-dev",
         "people35-dev",
+        "people36-dev",
         "people38-dev",
     }
     for figures in data.values():
