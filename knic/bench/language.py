@@ -20,7 +20,9 @@ ordinary native speakers in a two-storey family house, weighted to relative plac
 ``people34`` a single-storey Texas ranch house with a walk-in pantry, a screened porch, a garage workshop
 and a guest casita; ``people35`` a semi-detached Toronto house with a finished basement, a mudroom, a
 sunroom and an attic office; ``people36`` a converted stone barn on an Irish farm with a boot room, a
-scullery, a snug, a sunroom, a loft bedroom and a granny flat off the yard; ``people38`` a two-storey duplex
+scullery, a snug, a sunroom, a loft bedroom and a granny flat off the yard; ``people37`` a ninth-floor
+retirement condo in Florida with a screened lanai, a den, a galley kitchen and a storage closet; ``people38``
+a two-storey duplex
 in Lagos with a boys' quarters, a store, a balcony and a master bedroom with its own bath and study,
 likewise). Each
 case is a command with its gold frames and goals, or with a word the refusal (``reject``) or the question back
@@ -93,6 +95,7 @@ SETS = {
     "people34-dev": FIXTURES / "people34" / "dev.yaml",
     "people35-dev": FIXTURES / "people35" / "dev.yaml",
     "people36-dev": FIXTURES / "people36" / "dev.yaml",
+    "people37-dev": FIXTURES / "people37" / "dev.yaml",
     "people38-dev": FIXTURES / "people38" / "dev.yaml",
 }
 OTHER_WORLD = FIXTURES / "other_world" / "problem.pddl"

@@ -66,6 +66,7 @@ def test_bench_language_prints_dev_and_test(capsys: pytest.CaptureFixture[str]) 
         "people34-dev",
         "people35-dev",
         "people36-dev",
+        "people37-dev",
         "people38-dev",
     }
     for figures in data.values():
