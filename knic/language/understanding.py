@@ -23,6 +23,7 @@ from knic.language.grammar import Grammar
 from knic.language.owned import owned_read
 from knic.language.plainspoken import lacked, plainly_said
 from knic.language.reader import AmbiguityError, Reader
+from knic.language.roundabout import roundabout_said
 from knic.language.vocabulary import Vocabulary
 from knowledge_base import Fact
 
@@ -173,10 +174,15 @@ def understand(
         reason = f"'{negative.group(0)}' is below zero: a level goes from 0 to 100 percent"
         return Understanding(text, reason=reason, speaker=speaker)
     reader = reader_for(vocabulary)
+
+    def unknown(word: str) -> bool:  # a word neither the world nor the command language knows
+        return [c.kind for c in reader.chunks([word])] == ["unknown"]
+
     try:
         # "it's dark in the study": its lights; "hoodie from my bed": the bed in the speaker's own room;
-        # "three zero percent", "do the light out": said plainly (plainspoken.py)
-        said = plainly_said(text, vocabulary, lambda w: [c.kind for c in reader.chunks([w])] == ["unknown"])
+        # "three zero percent", "do the light out": said plainly (plainspoken.py); "below in the boot room",
+        # "can I get the lamp on", "the bedroom of Tadhg" (roundabout.py)
+        said = plainly_said(roundabout_said(text, vocabulary, unknown), vocabulary, unknown)
         reading = reader.read(dark_read(owned_read(said, vocabulary, speaker)))
     except AmbiguityError as exc:
         question = str(exc)[:1].upper() + str(exc)[1:]
