@@ -38,6 +38,7 @@ from knic.language.dialects import dialect_words
 from knic.language.gathered import gathered
 from knic.language.gathered import gathered_up as gathered_up  # for the reader, whose module is full
 from knic.language.ordinary import ordinary_read, side_ones
+from knic.language.pidgin import pidgin_words
 from knic.language.placedones import ones_placed
 from knic.language.plainorder import asked_plainly
 from knic.language.procedure import procedure_read
@@ -169,7 +170,7 @@ def words_tidied(tokens: list[str]) -> list[str]:
     Ireland). A hesitation between a thing said after an article and the same article said again ("get me a
     cup of tea er a cup") is the speaker correcting the thing: it is read as "i mean"."""
     out: list[str] = []
-    tokens = gathered(binned(gone_asked(contracted(dialect_words(regional_words(tokens))))))
+    tokens = gathered(binned(gone_asked(contracted(dialect_words(regional_words(pidgin_words(tokens)))))))
     for i, token in enumerate(tokens):
         if token in HESITATIONS:
             nxt = tokens[i + 1] if i + 1 < len(tokens) else ""

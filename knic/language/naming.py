@@ -25,6 +25,7 @@ from collections.abc import Collection, Iterable, Sequence
 from functools import lru_cache
 
 from core.errors import LanguageError
+from knic.language.asides import spoken_to
 from knic.language.chains import AmbiguityError
 from knic.language.chunks import Chunk
 from knic.language.clauses import Arg
@@ -52,6 +53,7 @@ def said_named(segments: list[list[str]], vocabulary: Vocabulary, known: Collect
     Raises:
         AmbiguityError: a first name begins several people's names.
     """
+    segments = spoken_to(segments, vocabulary)  # "Ese, have you seen it? ...", "why is X off?" (asides.py)
     segments = regional_said(segments, vocabulary)  # "fetch us t'atlas", "where's me stick" (regional.py)
     phrases, people, rooms = _names(vocabulary)
     for segment in segments:

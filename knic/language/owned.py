@@ -27,6 +27,7 @@ from __future__ import annotations
 import re
 from functools import lru_cache
 
+from knic.language.asides import titles_dropped
 from knic.language.frames import CommandFrame
 from knic.language.regional import FOR_WHOM
 from knic.language.shortnames import contains
@@ -67,6 +68,7 @@ def owned_read(text: str, vocabulary: Vocabulary, speaker: str) -> str:
     """``text`` with a person's own things said by their names, and "my <furniture>" said as "the
     <furniture> in <the speaker's room>" where that tells one of several pieces of furniture of that name (see
     the module docstring); "his" or "her" likewise of the person named last before it; else ``text``."""
+    text = titles_dropped(text, vocabulary)  # "Mama Adunni's room" (asides.py)
     text = _ME_ROOM.sub(_my_room, _things_read(_OF_ME.sub(r"my \1", text), vocabulary, speaker))
     people = {t.phrase: t.symbol for t in vocabulary.terms if vocabulary.is_subtype(t.type, "person")}
 

@@ -49,7 +49,14 @@ class Places:
                     continue
             rooms = [t for t in place.chunk.terms if self.is_a(t, "room") or self.is_a(t, "furniture")]
             narrowable = [t for t in head.chunk.terms if self.is_a(t, "furniture") or self.is_a(t, "device")]
-            if not rooms or not narrowable or len(narrowable) != len(head.chunk.terms):
+            if rooms and narrowable and len(narrowable) != len(head.chunk.terms):
+                # "the light in the study" where a "torchlight" is a light too: the robot knows where
+                # furniture and devices are, not where things lie, so the place tells the study's light
+                inside = [t for t in narrowable if any(self._within(t, r) for r in rooms)]
+                if not inside or any(t.is_group for t in head.chunk.terms):
+                    continue
+                head.chunk = Chunk("entity", head.chunk.text, tuple(narrowable), role=head.chunk.role)
+            if not rooms or not narrowable:
                 continue
             grouped = any(t.is_group for t in head.chunk.terms)
             candidates = self._members(head.chunk.terms) if grouped else head.chunk.terms

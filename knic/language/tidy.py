@@ -7,6 +7,7 @@ import re
 from collections.abc import Callable, Collection, Mapping
 
 from knic.language.apologies import after_same_preposition
+from knic.language.asides import dashed_asides_dropped
 from knic.language.chunks import Chunk
 from knic.language.decimals import decimals_read, plain_typed
 
@@ -311,6 +312,7 @@ def cut_off_dropped(text: str) -> str:
     before it ("I-is Ellis in the k-kitchen?", "sw-sw-switch", "th-thirty": the word; "x-ray", "t-shirt"
     stay); and, said last, a tag urging the request on ("bring me the mug, go on"; :data:`_TAG`) or a pain
     giving the reason ("my tummy hurts"; :data:`_ACHE`)."""
+    text = dashed_asides_dropped(text)  # "bring me the — Tobi, leave that! — the palm oil" (asides.py)
     return _CUT_OFF.sub("", _ACHE.sub("", _TAG.sub("", _STAMMER.sub(_stammer_dropped, text))))
 
 

@@ -1,0 +1,121 @@
+"""What a speaker says to others, or about others, around a request to the robot:
+
+* a stretch set off by a pair of dashes in the middle of a sentence, where the sentence broke off (after an
+  article, a possessive or a preposition: "bring me the — Tobi, leave that! — the palm oil", "switch off
+  the — hold on, I'm on the phone — the store light") or that is an exclamation or a question ("... on the
+  shoe rack — Tobi, wear your shoes! — by the door") is an interruption, said to someone else or to no one:
+  dropped, and the sentence read on where it broke off (a signer's "ice pack — freezer take — Ottavio give"
+  stays). Kept are a description
+  of the thing ("the tea — the green one — from the kitchen") and a correction ("the plastic cup in the —
+  sorry, the enamel cup — in the sink"): what opens with an article or a possessive, after any word of
+  repair (:func:`dashed_asides_dropped`, on the text);
+* a title said before a person's name ("Mama Adunni", "Oga Olumide", "Aunty Funmilayo", "Pastor Ikenna",
+  "my sister Funmilayo") is dropped: the name says who (:func:`spoken_to`);
+* a person's name said alone, then a question to "you" ("Ese, have you seen it? Robbie, find it"), is said
+  to that person, when the command goes on to ask the robot something: dropped (:func:`spoken_to`);
+* "why is the X (still) off?" before a request says what is wrong, as "the X is still off" does ("why is
+  the security light still off? put it on"): read so (:func:`spoken_to`).
+"""
+
+from __future__ import annotations
+
+import re
+
+from knic.language.vocabulary import Vocabulary
+
+#: a pair of dashes (typographic, or a hyphen with spaces around it) and what they set off
+_DASHED = re.compile(r"\s*(?:—|–|\s-\s)\s*([^—–]+?)\s*(?:—|–|\s-\s)\s*(?=\S)")
+#: words that open a correction
+_REPAIR = r"(?:sorry|no|i mean|actually|rather|or rather|i meant|er|um)"
+#: what a kept aside opens with, after any word of repair: a description of a thing
+_DESCRIBES = re.compile(
+    rf"^(?:{_REPAIR}\W+)*(?:the|a|an|my|your|his|her|their|our|this|that|these|those|one)\b", re.IGNORECASE
+)
+#: words a sentence breaks off after, to be taken up again after the interruption
+_BROKEN_AFTER = frozenset(
+    {
+        "the",
+        "a",
+        "an",
+        "my",
+        "your",
+        "his",
+        "her",
+        "our",
+        "their",
+        "to",
+        "on",
+        "in",
+        "into",
+        "at",
+        "from",
+        "of",
+    }
+    | {"for", "and", "with", "off", "by", "some", "this", "that"}
+)
+#: titles said before a name
+_TITLES = frozenset(
+    {"mr", "mrs", "miss", "ms", "dr", "aunty", "auntie", "aunt", "uncle", "mama", "papa", "mummy", "daddy"}
+    | {"madam", "madame", "oga", "pastor", "reverend", "rev", "father", "sister", "brother", "grandma"}
+    | {"grandpa", "granny", "baba", "iya", "alhaji", "alhaja", "chief", "prof", "professor", "doctor"}
+    | {"cousin", "nanny", "sir", "ma", "mummy's", "lady", "mister", "brother's", "sister's"}
+)
+#: questions said to someone else after their name ("Ese, have you seen it?")
+_ASKED = frozenset({("have", "you"), ("did", "you"), ("do", "you"), ("are", "you"), ("were", "you")})
+_STATES = frozenset({"on", "off", "open", "closed", "shut", "up", "down"})
+
+
+def dashed_asides_dropped(text: str) -> str:
+    """``text`` without the interruptions set off by dashes (see the module docstring)."""
+
+    def aside(match: re.Match[str]) -> str:
+        said = match.group(1)
+        before = text[: match.start()].split()[-1:]
+        broken = before and before[0].lower() in _BROKEN_AFTER  # "bring me the — ..."
+        called = said.rstrip().endswith(("!", "?"))  # "... on the shoe rack — Tobi, wear your shoes! — ..."
+        if _DESCRIBES.match(said) or "." in said or not (broken or called):
+            return match.group(0)
+        return " "
+
+    return _DASHED.sub(aside, text)
+
+
+def spoken_to(segments: list[list[str]], vocabulary: Vocabulary) -> list[list[str]]:
+    """The sentences without titles before names, questions to other people and with "why is X off" read
+    as a complaint (see the module docstring)."""
+    people = [t.phrase.split() for t in vocabulary.terms if vocabulary.is_subtype(t.type, "person")]
+    firsts = {words[0] for words in people} | {words[0] + "'s" for words in people}
+    out = segments
+    kept: list[list[str]] = []
+    skip = False
+    for i, segment in enumerate(out):
+        if skip:
+            skip = False
+            continue
+        nxt = out[i + 1] if i + 1 < len(out) else []
+        named = len(segment) == 1 and segment[0] in firsts
+        if named and tuple(nxt[:2]) in _ASKED and i + 2 < len(out):
+            skip = True
+            continue
+        kept.append(_why_said(segment) if i + 1 < len(out) else segment)
+    return kept or out
+
+
+def titles_dropped(text: str, vocabulary: Vocabulary) -> str:
+    """``text`` without a title said before a person's name ("Mama Adunni's room": "Adunni's room")."""
+    people = {t.phrase.split()[0] for t in vocabulary.terms if vocabulary.is_subtype(t.type, "person")}
+    if not people:
+        return text
+    names = "|".join(re.escape(p) for p in sorted(people, key=len, reverse=True))
+    titles = "|".join(re.escape(t) for t in sorted(_TITLES, key=len, reverse=True))
+    said = rf"\b(?:(?:my|our)\s+(?=(?:{titles})\s+(?:{names})\b(?!')))?(?:{titles})\.?\s+(?=(?:{names})\b)"
+    return re.sub(said, "", text, flags=re.IGNORECASE)
+
+
+def _why_said(words: list[str]) -> list[str]:
+    """ "why is the x still off" -> "the x is still off": a complaint before a request."""
+    if words[:2] not in (["why", "is"], ["why", "are"]) or words[-1:] == [] or words[-1] not in _STATES:
+        return words
+    return (
+        [*words[2:-1], words[1], words[-1]] if words[-2] != "still" else [*words[2:-2], words[1], *words[-2:]]
+    )
