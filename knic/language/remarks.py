@@ -103,11 +103,27 @@ def _said_alone(segments: list[list[str]], chunks: Callable[[Sequence[str]], lis
         return None
     first, then = chunks(segments[0]), chunks(segments[1])
     if len(first) < 2 or first[0].kind != "det" or any(c.kind != "unknown" for c in first[1:]):
+        return _said_of(first, then)
+    return " ".join(c.text for c in first[1:]) if _acts_on_it(then) else None
+
+
+def _said_of(first: list[Chunk], then: list[Chunk]) -> str | None:
+    """The word for a thing a sentence that names nothing of the world says how it is ("the heating is on far
+    too high, turn it down", "you have the heating up too high, turn it down"), when the next one acts on
+    "it" or "them" before naming a thing; else None."""
+    if any(c.kind == "entity" and c.terms for c in first):
         return None
+    thing = next(
+        (k + 1 for k, c in enumerate(first[:-1]) if c.kind == "det" and first[k + 1].kind == "unknown"), 0
+    )
+    return first[thing].text if thing and _acts_on_it(then) else None
+
+
+def _acts_on_it(then: list[Chunk]) -> bool:
+    """Whether a sentence acts on "it" or "them" before it names a thing of the world."""
     pronoun = next((k for k, c in enumerate(then) if c.kind == "pronoun"), None)
     named = next((k for k, c in enumerate(then) if c.kind == "entity" and c.terms), len(then))
-    acts = any(c.kind == "verb" for c in then) and pronoun is not None and pronoun < named
-    return " ".join(c.text for c in first[1:]) if acts else None
+    return any(c.kind == "verb" for c in then) and pronoun is not None and pronoun < named
 
 
 #: what takes a request back when said last in a sentence of its own, after words of repair

@@ -21,6 +21,8 @@ understanding.understand` (people36's voices first, each rule as general as the 
 * "throw the ball over to Sadhbh", "chuck the keys over to me": to her, to me;
 * "... and the landing light off" after a request that is no switching ("put the hairdryer back on the
   vanity table and the loft bedroom light off"): "and turn the landing light off";
+* "before you go", "before you leave", said last: when, not where to ("feed the dog there before you go" is
+  no motion without a place);
 * "go out and wait by the trough", "run up and turn on the light": the second verb says what to do and
   where; the first is only the way there;
 * "the bedroom of Tadhg", "the bed of Sekuru Tadhg" (of with a person, as many learners of English say it,
@@ -88,6 +90,9 @@ _GO_AND = re.compile(
     re.I,
 )
 
+_BEFORE_YOU_GO = re.compile(
+    r",?\s+before\s+(?:you|ye)\s+(?:go|leave|head\s+(?:off|out)|go\s+out)\s*(?=$|[.!?])", re.I
+)
 _THROWN_OVER = re.compile(
     r"\b(throw|toss|chuck|lob|bung|fling|hoy|pass|hand)\b([^,.;!?]*?)\s+over\s+to\b", re.I
 )
@@ -109,7 +114,7 @@ def roundabout_said(text: str, vocabulary: Vocabulary, unknown: Callable[[str], 
     text = _GET_YOU_TO.sub("could you", text)
     text = _GET_PUT.sub(lambda m: f"{_PARTICIPLES[m.group(2).lower()]} {m.group(1)} ", text)
     text = _GET_SWITCHED.sub(r"turn \1 \2", text)
-    text = _GO_AND.sub("", text)
+    text = _BEFORE_YOU_GO.sub("", _GO_AND.sub("", text))
     text = _THROWN_OVER.sub(r"\1\2 to", text)
     return _switched_after(_of_someone(text, vocabulary, unknown), vocabulary)
 

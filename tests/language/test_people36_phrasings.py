@@ -15,7 +15,9 @@ got wrong, each tried in the ERL apartment as well (``knic.language.roundabout``
   "... and the loft bedroom light off" after a placing; "the whole way" is all the way (``commands.yaml``);
 * "go out and wait by the trough": the waiting; "throw the sliotar over to Sadhbh": to her; "wee Sadhbh":
   Sadhbh ("wee" is "little", "yous" is "you": ``commands.yaml``);
-* "the bedroom of Sekuru Tadhg": Tadhg's bedroom ("the curtains of tomasz room" stays tomasz's room's).
+* "the bedroom of Sekuru Tadhg": Tadhg's bedroom ("the curtains of tomasz room" stays tomasz's room's);
+* "feed the dog there before you go": "before you go" is when; "the heating is on far too high, turn it down"
+  names the heating the world lacks (``knic.language.remarks``).
 """
 
 from __future__ import annotations
@@ -24,6 +26,7 @@ from functools import lru_cache
 
 import pytest
 
+from knic.language import understand
 from knic.language.vocabulary import Vocabulary
 
 from .conftest import assert_asked, frames_read, world_of
@@ -304,3 +307,29 @@ def test_of_a_name_before_another_noun_is_left_alone() -> None:
     """ "the curtains of tomasz room" (people23) is tomasz's room's curtains, not "tomasz's curtains room"."""
     frames = frames_read(_world(STUDENTS), "please close the curtains of tomasz room", "mei")
     assert frames == [{"frame": "OPERATING", "device": "tomasz_room_curtains", "state": "closed"}]
+
+
+@pytest.mark.parametrize(
+    ("where", "text", "word"),
+    [
+        ("barn", "Yous have the heating on far too high, turn it down", "heating"),
+        ("barn", "The heating is on far too high, turn it down", "heating"),
+        ("erl", "the heater is up too high, turn it off", "heater"),
+        ("barn", "Feed the dog there before you go", "dog"),
+        ("erl", "feed the cat before you leave", "cat"),
+    ],
+)
+def test_a_thing_the_world_lacks_said_of_first_is_named(
+    barn: Vocabulary, vocabulary: Vocabulary, where: str, text: str, word: str
+) -> None:
+    """ "the heating is on too high, turn it down" names the heating (``knic.language.remarks``), not "'it'
+    does not refer to anything"; "before you go" said last is when, not a motion without a place."""
+    said = understand(
+        text, barn if where == "barn" else vocabulary, speaker="ciaran" if where == "barn" else "annie"
+    )
+    assert not said.accepted and not said.question and word in said.reason
+
+
+def test_a_thing_of_the_world_said_of_first_is_still_acted_on(vocabulary: Vocabulary) -> None:
+    frames = frames_read(vocabulary, "the tablet is on the table, bring it to me")
+    assert frames == [{"frame": "BRINGING", "theme": "tablet", "beneficiary": "me"}]
