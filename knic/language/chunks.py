@@ -40,13 +40,13 @@ class Chunk:
 
 
 def singulars(word: str) -> list[str]:
-    """The singular of a plural word beyond a dropped "s" ("lollies": lolly, "shelves": shelf, "boxes": box);
-    none for a word ending in "sses" ("glasses" may be a pair)."""
+    """The singular of a plural word beyond a dropped "s" ("lollies": lolly, "shelves": shelf, "boxes": box,
+    "mangoes": mango); none for a word ending in "sses" ("glasses" may be a pair)."""
     if word.endswith("ies") and len(word) > 4:
         return [word[:-3] + "y"]
     if word.endswith("lves"):
         return [word[:-3] + "f"]
-    if word.endswith(("xes", "ches", "shes")):
+    if word.endswith(("xes", "ches", "shes", "oes")):
         return [word[:-2]]
     return []
 

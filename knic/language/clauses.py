@@ -500,10 +500,11 @@ def add_to_clause(
             or nxt.kind in ("join", "prep", "verb")
             or (nxt.kind == "det" and clause.verb is not None)
         )
-        # "give bethan the plasters": a word between a verb that gives and a thing is whom it is for
+        # "give bethan the plasters", "take grandpa his ipad": a word between a verb that gives or takes and a
+        # thing is whom it is for
         given_to = (
             clause.verb is not None
-            and "BRINGING" in clause.verb.frames
+            and {"BRINGING", "TAKING"} & set(clause.verb.frames)
             and not (clause.args or clause.pending)
             and nxt is not None
             and nxt.kind == "det"

@@ -111,6 +111,10 @@ class CommandLanguage:
     digit_words: dict[str, str] = field(default_factory=dict)
     typed_words: dict[str, str] = field(default_factory=dict)
     homophones: dict[str, str] = field(default_factory=dict)
+    spoken_marks: dict[str, str] = field(default_factory=dict)
+    spanish_words: dict[str, str] = field(default_factory=dict)
+    spanish_articles: dict[str, str] = field(default_factory=dict)
+    verb_numbers: dict[str, str] = field(default_factory=dict)
 
     def verb_frames(self) -> dict[str, tuple[tuple[str, ...], str | None]]:
         """Verb phrase -> (frame kinds in order, implied state); a phrase in several classes gets all."""
@@ -262,6 +266,10 @@ def load_language(path: str | Path = DEFAULT_PATH) -> CommandLanguage:
         typed_words=_spellings(data, source, "typed_words"),
         homophones=_spellings(data, source, "homophones"),
         past_forms=_spellings(data, source, "past_forms"),
+        spoken_marks=_marks(data, source),
+        spanish_words=_spellings(data, source, "spanish_words"),
+        spanish_articles=_spellings(data, source, "spanish_articles"),
+        verb_numbers=_spellings(data, source, "verb_numbers"),
     )
     lists: dict[str, tuple[str, ...]] = {v.name: v.spoken for v in verbs}
     spoken = _phrases(data, "spoken_determiners", source) or language.determiners
@@ -289,6 +297,21 @@ def _spellings(data: dict[str, Any], source: str, key: str = "spellings") -> dic
     ):
         raise LanguageError(f"{source}: '{key}' maps single words to the words they stand for")
     return {k: " ".join(v.split()) for k, v in raw.items()}
+
+
+def _marks(data: dict[str, Any], source: str) -> dict[str, str]:
+    """The ``spoken_marks`` table: the words said for a punctuation mark -> the mark ("" for none).
+
+    Raises:
+        LanguageError: not a mapping of words to marks.
+    """
+    raw = data.get("spoken_marks") or {}
+    if not isinstance(raw, dict) or not all(
+        isinstance(k, str) and k.split() and isinstance(v, str) and not v.strip(".,?!;")
+        for k, v in raw.items()
+    ):
+        raise LanguageError(f"{source}: 'spoken_marks' maps words to the punctuation mark they name")
+    return {" ".join(k.lower().split()): v for k, v in raw.items()}
 
 
 def _parsed(path: Path) -> Any:

@@ -20,6 +20,7 @@ from knic.language.complaints import dark_read
 from knic.language.frames import CommandFrame
 from knic.language.goals import frames_to_goals, hints
 from knic.language.grammar import Grammar
+from knic.language.mixed import mixed_said
 from knic.language.owned import owned_read
 from knic.language.plainspoken import lacked, plainly_said
 from knic.language.reader import AmbiguityError, Reader
@@ -183,6 +184,8 @@ def understand(
         # "three zero percent", "do the light out": said plainly (plainspoken.py); "below in the boot room",
         # "can I get the lamp on", "the bedroom of Tadhg" (roundabout.py)
         said = plainly_said(roundabout_said(text, vocabulary, unknown), vocabulary, unknown)
+        # "... light period", "mis espejuelos", "86 the light": said in English first (mixed.py)
+        said = mixed_said(said, reader.language, vocabulary)
         reading = reader.read(dark_read(owned_read(said, vocabulary, speaker)))
     except AmbiguityError as exc:
         question = str(exc)[:1].upper() + str(exc)[1:]
