@@ -84,6 +84,7 @@ from knic.language.phoneloop import (
 from knic.language.reader import Reader
 from knic.language.understanding import reader_check, reader_for, reading_of
 from knic.language.vocabulary import Vocabulary
+from knic.language.whisperpair import PairedServer
 from knic.language.whisperpass import (
     Heard,
     Opinion,
@@ -292,7 +293,7 @@ class NgramRecognizer:
     def _server(self) -> WhisperServer:
         """Whisper's server, started on first use."""
         if self.whisper is None:
-            self.whisper = WhisperServer(self._prompt or "")
+            self.whisper = PairedServer(self._prompt or "")
         return self.whisper
 
     @property

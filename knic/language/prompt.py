@@ -1,13 +1,16 @@
 """The world's names told to Whisper before it hears a command (:mod:`knic.language.whisperpass`): its
 decoder takes them as the text said before, and writes names it would not guess ("Ffion", "the scullery")
 when they are said. A large world's names are more than the decoder has room for, so the prompt keeps those
-most worth telling."""
+most worth telling. Also how Whisper's text and a recogniser's words are written for each other
+(:func:`forced_text`, :func:`unrepeated`)."""
 
 from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
 if TYPE_CHECKING:
+    from collections.abc import Collection
+
     from knic.language.vocabulary import Vocabulary
 
 
@@ -78,3 +81,25 @@ MAX_PROMPT_TOKENS = 223
 #: which names a long prompt keeps first (after the people), by their kind: the devices last, whose names
 #: are mostly everyday words ("kitchen light") Whisper writes well unprompted
 _PROMPT_KINDS = ("room", "item", "furniture", "device")
+
+
+def forced_text(text: str, names: Collection[str] = ()) -> str:
+    """A recogniser's lowercase words as Whisper writes a sentence: capitalised, with a full stop, and "I"
+    ("i'm": "I'm") and the words of ``names`` (people's names: "rosa") capitalised too."""
+    said = " ".join(
+        w.capitalize() if w in names or w == "i" or w.startswith("i'") else w for w in text.split()
+    )
+    return said[:1].upper() + said[1:] + "." if said else ""
+
+
+def unrepeated(text: str) -> str:
+    """``text`` without the repeats of a phrase of two words or more that it starts with, when nothing but
+    that phrase's words follows: a decoder given silence after a short command sometimes writes the command
+    again and again ("Pick up my glasses. Pick up my glasses. Pick up my"), which the dev sets showed for 4
+    of 541 utterances ("take the cup, take the cup back" stays whole)."""
+    words = text.split()
+    plain = [word.strip(".,!?").lower() for word in words]
+    for size in range(2, len(words) // 2 + 1):
+        if plain[:size] == plain[size : 2 * size] and set(plain[size:]) <= set(plain[:size]):
+            return " ".join(words[:size])
+    return text

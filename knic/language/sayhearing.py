@@ -52,9 +52,10 @@ class Hearing:
         from knic.language.lmspeech import NgramRecognizer
         from knic.language.oneshot import decoder_for, remembered_model
         from knic.language.phoneloop import PhoneLoop
-        from knic.language.whisperpass import WhisperServer, world_prompt
+        from knic.language.whisperpair import PairedServer
+        from knic.language.whisperpass import world_prompt
 
-        self.whisper = WhisperServer(world_prompt(vocabulary))  # it loads the model meanwhile
+        self.whisper = PairedServer(world_prompt(vocabulary))  # it loads the model meanwhile
         # the recogniser's own passes only run when a child failed, in this process (parallel=False)
         members, model = ensemble_members(acoustic_model), remembered_model(key)
         self.recognizer = NgramRecognizer(

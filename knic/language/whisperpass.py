@@ -23,11 +23,12 @@ from __future__ import annotations
 
 import contextlib
 import json
+import os
 import struct
 import subprocess
 import sys
 import weakref
-from collections.abc import Callable, Collection, Sequence
+from collections.abc import Callable, Sequence
 from dataclasses import dataclass
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
@@ -35,7 +36,7 @@ from typing import TYPE_CHECKING, Any
 from core.errors import LanguageError
 from knic.language.logmel import SAMPLE_RATE, log_mel
 from knic.language.modelfolder import MODEL_ENV, MODEL_PACKAGE, model_dir
-from knic.language.prompt import MAX_PROMPT_TOKENS, told_people
+from knic.language.prompt import MAX_PROMPT_TOKENS, forced_text, told_people, unrepeated
 from knic.language.prompt import world_prompt as world_prompt  # the name its users import from here
 from knic.language.vocabulary import normalize
 
@@ -57,6 +58,10 @@ MAX_TOKENS = 60
 #: (:mod:`knic.language.lmspeech`). On the nine spoken dev sets every result was the same, and the time per
 #: utterance 10-20% less than with two (speech_people2/dev 300 -> 251 ms, speech_people3/dev 399 -> 318 ms).
 SERVER_THREADS = 1
+#: the server's environment: numpy's BLAS and OpenMP on one thread too. Left to start a thread per core,
+#: they kept the other core busy while the server worked (CPU time twice the wall time; the same wall time
+#: with one thread), so a second server beside it (:mod:`knic.language.whisperpair`) gained nothing
+ONE_THREAD = {"OPENBLAS_NUM_THREADS": "1", "OMP_NUM_THREADS": "1"}
 #: Whisper's beam (:meth:`WhisperPass.hear`); its other transcripts are candidates when Whisper is not sure
 #: of its best (:mod:`knic.language.judging`)
 BEAM = 5
@@ -143,6 +148,10 @@ class WhisperPass:
         self._last = (encoded, frames, found)
         self._audio = audio
         return found[0]
+
+    def keep(self, audio: npt.NDArray[np.int16]) -> None:
+        """Keep 16 kHz mono samples as the utterance :meth:`stretched` plays, unheard (none to score)."""
+        self._last, self._audio = None, audio
 
     def _beams(self, audios: Sequence[npt.NDArray[np.int16]]) -> tuple[Any, int, list[list[Heard]]]:
         """The encoder's output of some utterances (in one batch, each padded with silence to the same
@@ -231,28 +240,6 @@ class WhisperPass:
         ]
 
 
-def forced_text(text: str, names: Collection[str] = ()) -> str:
-    """A recogniser's lowercase words as Whisper writes a sentence: capitalised, with a full stop, and "I"
-    ("i'm": "I'm") and the words of ``names`` (people's names: "rosa") capitalised too."""
-    said = " ".join(
-        w.capitalize() if w in names or w == "i" or w.startswith("i'") else w for w in text.split()
-    )
-    return said[:1].upper() + said[1:] + "." if said else ""
-
-
-def unrepeated(text: str) -> str:
-    """``text`` without the repeats of a phrase of two words or more that it starts with, when nothing but
-    that phrase's words follows: a decoder given silence after a short command sometimes writes the command
-    again and again ("Pick up my glasses. Pick up my glasses. Pick up my"), which the dev sets showed for 4
-    of 541 utterances ("take the cup, take the cup back" stays whole)."""
-    words = text.split()
-    plain = [word.strip(".,!?").lower() for word in words]
-    for size in range(2, len(words) // 2 + 1):
-        if plain[:size] == plain[size : 2 * size] and set(plain[size:]) <= set(plain[:size]):
-            return " ".join(words[:size])
-    return text
-
-
 #: Mean log-probability per token above which Whisper is sure of its transcript. Set on the five spoken
 #: dev sets (407 commands in 20 voices, 134 other utterances) with the rule of :func:`settled` and a greedy
 #: search, frame+args / other speech rejected (pocketsphinx alone: 0.880 / 0.948): -0.3: 0.924 / 0.948;
@@ -312,7 +299,9 @@ class WhisperServer:
     def _start(self) -> None:
         command = [sys.executable, "-m", "knic.language.whisperpass", self.prompt, str(self.folder or "")]
         try:
-            process = subprocess.Popen(command, stdin=subprocess.PIPE, stdout=subprocess.PIPE)
+            process = subprocess.Popen(
+                command, stdin=subprocess.PIPE, stdout=subprocess.PIPE, env={**os.environ, **ONE_THREAD}
+            )
         except OSError:
             self._process = None
             return
@@ -342,6 +331,14 @@ class WhisperServer:
         """Whisper's hearing of the last utterance sent (replies to earlier ones skipped); None when the
         server died or failed on it."""
         return heard_of(self._last_reply())
+
+    def keep(self, samples: bytes) -> bool:
+        """Send an utterance to be kept unheard (:meth:`WhisperPass.keep`) for questions that need no
+        hearing of it (``stretch``); False when no server could take it."""
+        if self.pid is None or not self._send(FRAME.pack(len(samples) | KEEP) + samples):
+            return False
+        self._heard = _digest(samples)
+        return True
 
     def ask(self, samples: bytes, question: dict[str, Any]) -> bool:
         """Send a question about an utterance (:func:`answer_of`), the utterance first when it is not the
@@ -407,6 +404,8 @@ FRAME = struct.Struct("!I")
 #: the bit of a request's length that marks a question about the last utterance (:func:`answer_of`), not
 #: audio (requests are far shorter than 2 GiB)
 QUESTION = 1 << 31
+#: the bit that marks an utterance to keep unheard (:meth:`WhisperServer.keep`)
+KEEP = 1 << 30
 #: most texts one question may ask scores of, and their longest text
 MAX_TEXTS, MAX_TEXT_CHARS = 64, 1000
 #: most paces one question may ask the utterance heard at
@@ -434,6 +433,8 @@ def serve(prompt: str, folder: str) -> None:
     """The server's loop: utterances in on stdin, ``[text, mean log-prob]`` (or null) out on stdout, framed
     by :data:`FRAME`, until stdin closes."""
 
+    import numpy as np
+
     whisper = WhisperPass(prompt, folder=Path(folder) if folder else None, threads=SERVER_THREADS)
     requests, replies = sys.stdin.buffer, sys.stdout.buffer
     try:
@@ -447,6 +448,9 @@ def serve(prompt: str, folder: str) -> None:
         (size,) = FRAME.unpack(header)
         if size & QUESTION:
             found = answer_of(whisper, requests.read(size & ~QUESTION))
+        elif size & KEEP:
+            whisper.keep(np.frombuffer(requests.read(size & ~KEEP), dtype="<i2"))
+            found = None
         else:
             found = hearing_of(whisper, requests.read(size))
         answer = json.dumps(found).encode()

@@ -173,8 +173,9 @@ def test_a_say_through_the_daemon_prints_what_one_without_it_prints(
     assert text[1] == printed.getvalue() and text[1].startswith("heard: ")
     if wav == ACCEPTED:
         assert "goal: (has tracy mug)" in text[1]
-    else:  # Whisper judged pocketsphinx's transcript with the daemon's one server
-        assert _whisper_servers_of(world.daemon()) == 1
+    else:  # Whisper judged pocketsphinx's transcript with the daemon's one server (and the partner it
+        # starts for the stretched hearings, knic.language.whisperpair), not with servers of each say's own
+        assert _whisper_servers_of(world.daemon()) in (1, 2)
 
 
 def _whisper_servers_of(pid: int) -> int:
