@@ -12,11 +12,16 @@ understanding.understand` (people36's voices first, each rule as general as the 
   ("..., Sekuru Tadhg wants to sleep", "..., she's trying to read"): the reason, asked of nobody;
 * a negative question as a request (Irish and older speakers: "you didn't see my watch anywhere?", "you
   wouldn't have seen the keys?"): "have you seen ...";
+* "did anyone see my stick?", "has anybody seen the keys?": "have you seen"; "I don't know where I left my
+  glasses": "where is my glasses"; "you wouldn't have my slippers there?", "would you have the paper
+  handy?", "would yous have a wee bit of brown bread going" (Irish English: can you give me): "bring me";
+* "give us a hand and bring ...": the bringing;
 * asking again ("amn't I after asking you for the beads", "I've asked you for the post twice now"): "bring
   me ...";
 * "like a good man", "like a good lad", "like a good girl" (coaxing, as "there's a good lad" is): dropped;
 * what is in a thing, said with it ("the blue mug with the tea in it"): no thing of its own;
-* ordering as in a café ("can I get the lamp on", "could I get the holdall put on the bed", "can I get you to
+* ordering as in a café ("can I get the lamp on", "can I get the lights off in the bathroom", "could I get the
+  blind half open", "could I get the holdall put on the bed", "can I get you to
   go to ..."): the device switched, the thing put, and "could you";
 * "throw the ball over to Sadhbh", "chuck the keys over to me": to her, to me;
 * "... and the landing light off" after a request that is no switching ("put the hairdryer back on the
@@ -55,10 +60,28 @@ _WANTS_TO = re.compile(
     re.I,
 )
 _NOT_SEEN = re.compile(
-    r"(^|[.?!,]\s*)(?:you|ye)\s+(?:didn't|did not|never|wouldn't have|would not have|haven't|have not|"
-    r"wouldn't|would not)\s+(?:see|seen)\b",
+    r"(^|[.?!,]\s*)(?:(?:you|ye)\s+(?:didn't|did not|never|wouldn't have|would not have|haven't|have not|"
+    r"wouldn't|would not)|(?:did|has|have)\s+(?:anyone|anybody|someone|somebody)|would\s+(?:you|ye)\s+have)"
+    r"\s+(?:see|seen)\b",
     re.I,
 )
+_LEFT_WHERE = re.compile(
+    r"\bi\s+(?:don't|do not|can't|cannot|can not)\s+(?:know|remember|think)\s+where\s+i\s+"
+    r"(?:left|put|had)\s+",
+    re.I,
+)
+_WOULD_HAVE = re.compile(
+    r"(^|[.?!,]\s*)(?:(?:would|could)\s+(?:you|yous|ye)|(?:you|yous|ye)\s+(?:wouldn't|would not|couldn't))\s+"
+    r"have\s+(?!seen\b|been\b|got\b|to\b|a\s+look\b|a\s+minute\b|time\b)([^,.;!?]+?)"
+    r"(?:\s+(?:going|handy|to hand|there|on you))?(?=\s*(?:$|[,.;!?]))",
+    re.I,
+)
+#: what a thing is made, said after it ("could you have the cup brought ...", "have the light on")
+_MADE = frozenset(
+    {"brought", "put", "taken", "shut", "open", "on", "off", "done", "sent", "set", "left", "up", "down"}
+)
+_PLACE_WORDS = frozenset({"to", "in", "into", "on", "onto", "from", "at"})
+_A_HAND = re.compile(r"\bgive\s+(?:us|me)\s+a\s+hand(?:\s+here)?\s+and\s+", re.I)
 _ASKED_AGAIN = re.compile(
     r"\b(?:amn't i|aren't i|am i not|i'm|i am|i've|i have|i was|i)\s+(?:after\s+|been\s+|already\s+)*"
     r"ask(?:ing|ed)\s+you\s+for\b(?P<rest>[^,.;!?]*?)(?:\s+(?:twice|three times|again|already|before|"
@@ -74,10 +97,19 @@ _GOOD_ONE = re.compile(
 _GET_YOU_TO = re.compile(r"\b(?:can|could|may)\s+i\s+(?:get|have)\s+you\s+to\b", re.I)
 _DETERMINED = r"(?:the|my|our|your|his|her|their|that|this)\s+[^,.;!?]+?"
 _GET_SWITCHED = re.compile(
-    rf"\b(?:can|could|may)\s+i\s+(?:get|have)\s+({_DETERMINED})\s+(on|off)\b(?=\s*(?:$|[,.;!?]|and\b|"
-    r"please\b|thanks\b|thank you\b|then\b))",
+    rf"\b(?:can|could|may)\s+i\s+(?:get|have)\s+({_DETERMINED})\s+(on|off|open|closed|shut|half open)\b"
+    r"(?=\s*(?:$|[,.;!?]|and\b|please\b|thanks\b|thank you\b|then\b|in\b|on\b))",
     re.I,
 )
+#: a device's state said after it in an order, as the request to make it so
+_MADE_SO = {
+    "on": "turn {} on",
+    "off": "turn {} off",
+    "open": "open {}",
+    "closed": "close {}",
+    "shut": "close {}",
+}
+_MADE_SO["half open"] = "open {} halfway"
 _PARTICIPLES = {"put": "put", "placed": "put", "left": "leave", "moved": "move"}
 _GET_PUT = re.compile(
     rf"\b(?:can|could|may)\s+i\s+(?:get|have)\s+({_DETERMINED})\s+({'|'.join(_PARTICIPLES)})\s+(?=(?:back\s+)?"
@@ -108,12 +140,13 @@ def roundabout_said(text: str, vocabulary: Vocabulary, unknown: Callable[[str], 
     for reason in list(_WANTS_TO.finditer(text))[::-1]:  # "..., Tadhg wants to sleep": why, not what to do
         if unknown(reason.group(1).lower()):
             text = text[: reason.start()] + text[reason.end() :]
-    text = _NOT_SEEN.sub(r"\1have you seen", text)
+    text = _LEFT_WHERE.sub("where is ", _NOT_SEEN.sub(r"\1have you seen", text))
+    text = _A_HAND.sub("", _WOULD_HAVE.sub(_had, text))
     text = _ASKED_AGAIN.sub(lambda m: "bring me" + m.group("rest"), text)
     text = _GOOD_ONE.sub("", _WITH_IN_IT.sub("", text))
     text = _GET_YOU_TO.sub("could you", text)
     text = _GET_PUT.sub(lambda m: f"{_PARTICIPLES[m.group(2).lower()]} {m.group(1)} ", text)
-    text = _GET_SWITCHED.sub(r"turn \1 \2", text)
+    text = _GET_SWITCHED.sub(lambda m: _MADE_SO[m.group(2).lower()].format(m.group(1)), text)
     text = _BEFORE_YOU_GO.sub("", _GO_AND.sub("", text))
     text = _THROWN_OVER.sub(r"\1\2 to", text)
     return _switched_after(_of_someone(text, vocabulary, unknown), vocabulary)
@@ -133,6 +166,15 @@ def _switched_after(text: str, vocabulary: Vocabulary) -> str:
     return (
         f"{text[: match.start()]}{match.group(1)}turn {match.group(2)} {match.group(3)}{text[match.end() :]}"
     )
+
+
+def _had(match: re.Match[str]) -> str:
+    """ "would you have my slippers (there)?": "bring me my slippers"; not "could you have the blinds
+    closed" or "would you have the cup brought to the kitchen" (a thing to be made so: the reader reads
+    those)."""
+    words = match.group(2).lower().split()
+    made = words[-1] in _MADE or words[-1].endswith("ed") or any(w in _PLACE_WORDS for w in words)
+    return match.group(0) if made else f"{match.group(1)}bring me {match.group(2)}"
 
 
 def _of_someone(text: str, vocabulary: Vocabulary, unknown: Callable[[str], bool]) -> str:

@@ -8,10 +8,13 @@ got wrong, each tried in the ERL apartment as well (``knic.language.roundabout``
 * "let it be at seventy": set it to seventy;
 * what another person wants to do, said after a request with a verb the robot does not know ("...,
   Sekuru Tadhg wants to sleep"): a reason;
-* negative questions as requests ("you didn't see my pocket watch anywhere?"): "have you seen";
+* negative questions as requests ("you didn't see my pocket watch anywhere?", "did anyone see my stick?"):
+  "have you seen"; "I don't know where I left my glasses": where are they; "you wouldn't have my slippers
+  there?", "would yous have a wee bit of brown bread going": bring them; "give us a hand and": dropped;
 * asking again ("amn't I after asking you for the rosary beads twice now"): "bring me";
 * "the blue mug with the tea in it": the mug; "like a good man": dropped;
-* a café's ordering: "can I get the lamp on", "could I get the holdall put on the bed", "can I get you to";
+* a café's ordering: "can I get the lamp on", "could I get the velux blind half open", "could I get the
+  holdall put on the bed", "can I get you to";
   "... and the loft bedroom light off" after a placing; "the whole way" is all the way (``commands.yaml``);
 * "go out and wait by the trough": the waiting; "throw the sliotar over to Sadhbh": to her; "wee Sadhbh":
   Sadhbh ("wee" is "little", "yous" is "you": ``commands.yaml``);
@@ -333,3 +336,89 @@ def test_a_thing_the_world_lacks_said_of_first_is_named(
 def test_a_thing_of_the_world_said_of_first_is_still_acted_on(vocabulary: Vocabulary) -> None:
     frames = frames_read(vocabulary, "the tablet is on the table, bring it to me")
     assert frames == [{"frame": "BRINGING", "theme": "tablet", "beneficiary": "me"}]
+
+
+@pytest.mark.parametrize(
+    ("where", "text", "frames"),
+    [
+        ("barn", "Did anyone see my walking stick?", [{"frame": "SEARCHING", "theme": "walking_stick"}]),
+        ("erl", "has anybody seen the remote?", [{"frame": "SEARCHING", "theme": "remote"}]),
+        ("erl", "would you have seen my glasses?", [{"frame": "SEARCHING", "theme": "glasses"}]),
+        ("barn", "I don't know where I left my glasses", [{"frame": "SEARCHING", "theme": "tadhg_glasses"}]),
+        ("erl", "I can't remember where I put the tablet", [{"frame": "SEARCHING", "theme": "tablet"}]),
+        (
+            "barn",
+            "You wouldn't have my slippers there?",
+            [{"frame": "BRINGING", "theme": "slippers", "beneficiary": "me"}],
+        ),
+        (
+            "barn",
+            "Would yous have a wee bit of brown bread going",
+            [{"frame": "BRINGING", "theme": "brown_bread", "beneficiary": "me"}],
+        ),
+        (
+            "erl",
+            "would you have the tablet handy?",
+            [{"frame": "BRINGING", "theme": "tablet", "beneficiary": "me"}],
+        ),
+        (
+            "erl",
+            "would you have a minute to bring me the apple?",
+            [{"frame": "BRINGING", "theme": "apple", "beneficiary": "me"}],
+        ),
+        (
+            "barn",
+            "Give us a hand and bring the feed bucket over to the water trough",
+            [{"frame": "BRINGING", "theme": "feed_bucket", "goal": "water_trough"}],
+        ),
+        (
+            "erl",
+            "give me a hand and bring the cup to the kitchen",
+            [{"frame": "BRINGING", "theme": "cup", "goal": "kitchen"}],
+        ),
+    ],
+)
+def test_asked_round_about(
+    barn: Vocabulary, vocabulary: Vocabulary, where: str, text: str, frames: list[dict[str, str]]
+) -> None:
+    """Who has seen a thing, where the speaker left it, whether the robot would have it: looked for or
+    brought."""
+    assert _said(barn, vocabulary, where, text, "tadhg") == frames
+
+
+@pytest.mark.parametrize(
+    ("where", "text", "frames"),
+    [
+        (
+            "barn",
+            "Could I get the velux blind half open",
+            [{"frame": "OPERATING", "device": "velux_blind", "state": "50"}],
+        ),
+        (
+            "barn",
+            "Can I get the lights off in the loft bathroom",
+            [{"frame": "OPERATING", "device": "loft_bathroom_light", "state": "off"}],
+        ),
+        (
+            "barn",
+            "Can I get the kitchen blind shut, thanks",
+            [{"frame": "OPERATING", "device": "kitchen_blind", "state": "closed"}],
+        ),
+        (
+            "erl",
+            "could I get the blinds half open",
+            [{"frame": "OPERATING", "device": "bedroom_blinds", "state": "50"}],
+        ),
+    ],
+)
+def test_a_state_ordered_as_in_a_cafe(
+    barn: Vocabulary, vocabulary: Vocabulary, where: str, text: str, frames: list[dict[str, str]]
+) -> None:
+    assert _said(barn, vocabulary, where, text, "aoife") == frames
+
+
+def test_what_is_to_be_made_so_is_no_bringing(vocabulary: Vocabulary) -> None:
+    """ "could you have the blinds closed" (people25's passive) stays the closing, not "bring me the blinds"."""
+    assert frames_read(vocabulary, "could you have the bedroom blinds closed") == [
+        {"frame": "OPERATING", "device": "bedroom_blinds", "state": "closed"}
+    ]
