@@ -43,6 +43,7 @@ from knic.language.placedones import ones_placed
 from knic.language.plainorder import asked_plainly
 from knic.language.procedure import procedure_read
 from knic.language.regional import regional_words
+from knic.language.registers import register_words
 from knic.language.restating import restated
 from knic.language.trailing import restarts_read
 from knic.language.vocabulary import Vocabulary
@@ -170,7 +171,9 @@ def words_tidied(tokens: list[str]) -> list[str]:
     Ireland). A hesitation between a thing said after an article and the same article said again ("get me a
     cup of tea er a cup") is the speaker correcting the thing: it is read as "i mean"."""
     out: list[str] = []
-    tokens = gathered(binned(gone_asked(contracted(dialect_words(regional_words(pidgin_words(tokens)))))))
+    tokens = gathered(
+        binned(gone_asked(contracted(dialect_words(regional_words(pidgin_words(register_words(tokens)))))))
+    )
     for i, token in enumerate(tokens):
         if token in HESITATIONS:
             nxt = tokens[i + 1] if i + 1 < len(tokens) else ""

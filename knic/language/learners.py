@@ -72,17 +72,23 @@ def state_as_verb(chunks: list[Chunk], vocabulary: Vocabulary) -> list[Chunk]:
     """ "switch off the office light and on the desk lamp" (Indian English says "on the light", "off the
     fan"): "on" or "off" right after "and" and before a device, once a verb was said, is that verb again with
     this state ("and switch on the desk lamp"), not the earlier device's state; after a verb that switches
-    nothing ("go to kit's room and off his night light"), "switch"."""
+    nothing ("go to kit's room and off his night light"), "switch". So too straight after a device, where
+    a state was said before it ("off the kitchen light and the store light, on the security light": the
+    comma is gone by now); "switch the landing light on the hallway light off" stays."""
     out: list[Chunk] = []
     switch = Chunk("verb", "switch", frames=("OPERATING",))
     verb: Chunk | None = None
+    stated = False  # a state said since the verb, before the device ("off the kitchen light ...")
     if len(chunks) > 2 and _state_before_device(chunks, 0, vocabulary):  # "off the kitchen light and on ..."
         verb = switch
     for i, chunk in enumerate(chunks):
         out.append(chunk)
         if chunk.kind == "verb":
-            verb = chunk if "OPERATING" in chunk.frames else switch
-        if verb is not None and chunk.kind == "join" and _state_before_device(chunks, i + 1, vocabulary):
+            verb, stated = (chunk if "OPERATING" in chunk.frames else switch), False
+        stated = stated or (chunk.kind == "prep" and chunk.state in ("on", "off"))
+        after_device = stated and chunk.kind == "entity" and _is(chunk, vocabulary, "device")
+        again = chunk.kind == "join" or after_device
+        if verb is not None and again and _state_before_device(chunks, i + 1, vocabulary):
             out.append(verb)
     return out
 

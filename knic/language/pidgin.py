@@ -29,6 +29,8 @@ _PUTTING = frozenset({"put", "keep", "drop", "leave", "place", "hang", "set"})
 _CARRYING = frozenset({"carry", "bring", "take", "fetch", "send", "move"})
 #: verbs of working a device, after which "small" said last is "a bit"
 _WORKING = frozenset({"open", "close", "on", "off", "switch", "turn", "dim", "shut", "raise", "lower"})
+#: verbs after which "for" is English's ("look for", "wait for", "ask for")
+_OTHER_VERBS = frozenset({"look", "search", "hunt", "wait", "ask", "asking", "check", "find", "call"})
 #: words before "give" that make it a verb of its own ("... and give it to tracy")
 _JOINED = (["and"], ["then"], ["to"], ["please"], ["also"], ["or"], ["i"], ["you"], ["can"], ["and", "then"])
 #: what "give" as a verb of its own is said with
@@ -59,6 +61,8 @@ def pidgin_words(tokens: list[str]) -> list[str]:
         nxt = words[i + 1] if i + 1 < len(words) else ""
         if word in _CARRYING | _PUTTING | _WORKING and not verb:
             verb = word
+        elif word in _OTHER_VERBS or word in ("and", "then"):  # "... and also look for the remote"
+            verb = ""
         if word == "am" and out[-1:] != ["i"]:
             word = "it"
         elif word == "wetin":

@@ -10,6 +10,7 @@ from knic.language.apologies import after_same_preposition
 from knic.language.asides import dashed_asides_dropped
 from knic.language.chunks import Chunk
 from knic.language.decimals import decimals_read, plain_typed
+from knic.language.registers import to_be_put
 
 #: "is", "are": after words the world has no name for, what follows is talk, not part of the action
 COPULAS = frozenset({"is", "are", "was", "were"})
@@ -312,7 +313,7 @@ def cut_off_dropped(text: str) -> str:
     before it ("I-is Ellis in the k-kitchen?", "sw-sw-switch", "th-thirty": the word; "x-ray", "t-shirt"
     stay); and, said last, a tag urging the request on ("bring me the mug, go on"; :data:`_TAG`) or a pain
     giving the reason ("my tummy hurts"; :data:`_ACHE`)."""
-    text = dashed_asides_dropped(text)  # "bring me the — Tobi, leave that! — the palm oil" (asides.py)
+    text = to_be_put(dashed_asides_dropped(text))  # "bring me the — Tobi, no! — the oil", "X should be on Y"
     return _CUT_OFF.sub("", _ACHE.sub("", _TAG.sub("", _STAMMER.sub(_stammer_dropped, text))))
 
 

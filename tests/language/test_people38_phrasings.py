@@ -18,6 +18,11 @@ tried with sentences of its own in that house, in the family house of people24 o
 * a title before a person's name ("Mama Adunni's room", "Oga Olumide", "my sister Funmilayo", "Aunty
   Tracy") is dropped; "Ese, have you seen it?" before a request is said to Ese; "why is the X still off?"
   before "put it on" is a complaint, as "the X is still off" is (``knic.language.asides``);
+* "off the kitchen light and the store light, on the security light": "on" or "off" straight after a
+  device, where a state was said before it, is the verb again with that state (``knic.language.learners``);
+* office and pulpit English said plainly: "revert with" is "tell me"; a thing that "should be" or "must be"
+  on a place is to be put there, and "please see to it" asks nothing more; a purpose said formally ("that
+  the light may enter") is dropped; "let there be light" turns the light on (``knic.language.registers``).
 """
 
 from __future__ import annotations
@@ -239,4 +244,58 @@ def test_titles_in_the_erl_apartment(vocabulary: Vocabulary) -> None:
     ]
     assert frames_read(vocabulary, "why are the bedroom blinds still open? close them", "tracy") == [
         {"frame": "OPERATING", "device": "bedroom_blinds", "state": "closed"}
+    ]
+
+
+def test_a_state_straight_after_a_device_is_the_verb_again(house: Vocabulary, vocabulary: Vocabulary) -> None:
+    assert frames_read(house, "Off the kitchen light and the store light, on the security light", "musa") == [
+        {"frame": "OPERATING", "device": "kitchen_light", "state": "off"},
+        {"frame": "OPERATING", "device": "store_light", "state": "off"},
+        {"frame": "OPERATING", "device": "security_light", "state": "on"},
+    ]
+    assert frames_read(vocabulary, "switch off the hallway light, on the bedroom left light") == [
+        {"frame": "OPERATING", "device": "hallway_light", "state": "off"},
+        {"frame": "OPERATING", "device": "bedroom_left_light", "state": "on"},
+    ]
+    # a state said after each device stays each one's
+    assert frames_read(vocabulary, "switch the hallway light on, the bedroom left light off") == [
+        {"frame": "OPERATING", "device": "hallway_light", "state": "on"},
+        {"frame": "OPERATING", "device": "bedroom_left_light", "state": "off"},
+    ]
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        ("Kindly revert with the location of my car keys", [{"frame": "SEARCHING", "theme": "car_keys"}]),
+        (
+            "Per my earlier instruction, the calculator should be on the study desk, please see to it",
+            [{"frame": "PLACING", "theme": "calculator", "goal": "study_desk"}],
+        ),
+        (
+            "Let there be light in the children's room!",
+            [{"frame": "OPERATING", "device": "children_room_light", "state": "on"}],
+        ),
+        (
+            "Open the study blind to seventy-five percent, that the light may enter",
+            [{"frame": "OPERATING", "device": "study_blind", "state": "75"}],
+        ),
+    ],
+)
+def test_office_and_pulpit_english(house: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
+    assert frames_read(house, text, "olumide") == frames
+
+
+def test_office_and_pulpit_english_in_the_erl_apartment(vocabulary: Vocabulary) -> None:
+    assert frames_read(vocabulary, "please revert with the location of the tablet") == [
+        {"frame": "SEARCHING", "theme": "tablet"}
+    ]
+    assert frames_read(vocabulary, "the candle must be on the dining table") == [
+        {"frame": "PLACING", "theme": "candle", "goal": "dining_table"}
+    ]
+    assert frames_read(vocabulary, "the hallway light should be on") == [
+        {"frame": "OPERATING", "device": "hallway_light", "state": "on"}
+    ]
+    assert frames_read(vocabulary, "let there be light in the hallway") == [
+        {"frame": "OPERATING", "device": "hallway_light", "state": "on"}
     ]
