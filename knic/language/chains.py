@@ -211,6 +211,16 @@ def chain(
                 handed = out[j].kind != "PLACING"  # where a thing is put is all a placing says
                 if handed and out[j].get("source") is None and frame.get("source") is not None:
                     out[j] = CommandFrame(out[j].kind, {**out[j].args, "source": frame["source"]})
+            elif any(
+                f.kind == "BRINGING"
+                and f.get("theme") == frame.get("theme")
+                and f.get("beneficiary") != SPEAKER
+                for f in out[:index]
+                if f.get("beneficiary")
+            ):
+                dropped.add(
+                    index
+                )  # "tracy wants the apple, bring it": to her, as wanted; said twice, done once
             elif index in ask_where:
                 thing = vocabulary.phrase_of(frame["theme"])
                 raise AmbiguityError(f"where should I take the {thing}: to which room or piece of furniture?")

@@ -20,7 +20,8 @@ got wrong, each tried in the ERL apartment as well (``knic.language.roundabout``
   Sadhbh ("wee" is "little", "yous" is "you": ``commands.yaml``);
 * "the bedroom of Sekuru Tadhg": Tadhg's bedroom ("the curtains of tomasz room" stays tomasz's room's);
 * "feed the dog there before you go": "before you go" is when; "the heating is on far too high, turn it down"
-  names the heating the world lacks (``knic.language.remarks``).
+  names the heating the world lacks (``knic.language.remarks``);
+* "Sekuru Tadhg wants his radio, bring it": to him, once (``knic.language.chains``).
 """
 
 from __future__ import annotations
@@ -418,7 +419,44 @@ def test_a_state_ordered_as_in_a_cafe(
 
 
 def test_what_is_to_be_made_so_is_no_bringing(vocabulary: Vocabulary) -> None:
-    """ "could you have the blinds closed" (people25's passive) stays the closing, not "bring me the blinds"."""
+    """ "could you have the blinds closed" (people25's passive) stays the closing, not "bring me the
+    blinds"."""
     assert frames_read(vocabulary, "could you have the bedroom blinds closed") == [
         {"frame": "OPERATING", "device": "bedroom_blinds", "state": "closed"}
     ]
+
+
+@pytest.mark.parametrize(
+    ("where", "text", "frames"),
+    [
+        (
+            "barn",
+            "Sekuru Tadhg wants his radio, bring it",
+            [{"frame": "BRINGING", "theme": "radio", "beneficiary": "tadhg"}],
+        ),
+        (
+            "erl",
+            "Tracy wants the apple, bring it",
+            [{"frame": "BRINGING", "theme": "apple", "beneficiary": "tracy"}],
+        ),
+        (
+            "erl",
+            "Tracy needs her glasses, can you bring them",
+            [{"frame": "BRINGING", "theme": "glasses", "beneficiary": "tracy"}],
+        ),
+        (
+            "erl",
+            "give tracy the apple, then take it to the kitchen",
+            [
+                {"frame": "BRINGING", "theme": "apple", "beneficiary": "tracy"},
+                {"frame": "BRINGING", "theme": "apple", "goal": "kitchen"},
+            ],
+        ),
+    ],
+)
+def test_what_someone_wants_brought_goes_to_them(
+    barn: Vocabulary, vocabulary: Vocabulary, where: str, text: str, frames: list[dict[str, str]]
+) -> None:
+    """ "Tracy wants the apple, bring it": one bringing, to her, not a second one to the speaker
+    (``knic.language.chains``); a later action that says where still counts."""
+    assert _said(barn, vocabulary, where, text, "nyasha") == frames
