@@ -374,7 +374,7 @@ def places_before(
     """The places the earlier actions named, latest first (their goal, ground or source), as the rooms they
     are in when ``args`` name a device; a "there" after ``verb`` that carries to it is made where to
     (:func:`carried_there`)."""
-    places = [f.get(r) or "" for f in reversed(previous) for r in ("goal", "ground", "source") if f.get(r)]
+    places = [p for f in reversed(previous) for p in _places_of(f, vocabulary)]
     carried_there(verb.text if verb is not None else "", args, previous, places)
     if not names_device(args, vocabulary):
         return places
@@ -385,6 +385,18 @@ def places_before(
         except LanguageError:
             rooms.append(place)
     return rooms
+
+
+def _places_of(frame: CommandFrame, vocabulary: Vocabulary) -> list[str]:
+    """The places an action names (its goal, ground or source); for a device switched, the one room the world
+    puts it in ("switch on the bathroom light, then take me there": the bathroom)."""
+    named = [frame.get(r) or "" for r in ("goal", "ground", "source") if frame.get(r)]
+    if named or frame.kind != "OPERATING":
+        return named
+    rooms = [
+        p for p in vocabulary.locations.get(frame.get("device") or "", ()) if vocabulary.is_of(p, "room")
+    ]
+    return rooms if len(rooms) == 1 else []
 
 
 def carried_there(

@@ -21,7 +21,8 @@ got wrong, each tried in the ERL apartment as well (``knic.language.roundabout``
 * "the bedroom of Sekuru Tadhg": Tadhg's bedroom ("the curtains of tomasz room" stays tomasz's room's);
 * "feed the dog there before you go": "before you go" is when; "the heating is on far too high, turn it down"
   names the heating the world lacks (``knic.language.remarks``);
-* "Sekuru Tadhg wants his radio, bring it": to him, once (``knic.language.chains``).
+* "Sekuru Tadhg wants his radio, bring it": to him, once (``knic.language.chains``);
+* "switch on the bathroom light, then take me there": to the bathroom (``knic.language.naming``).
 """
 
 from __future__ import annotations
@@ -460,3 +461,35 @@ def test_what_someone_wants_brought_goes_to_them(
     """ "Tracy wants the apple, bring it": one bringing, to her, not a second one to the speaker
     (``knic.language.chains``); a later action that says where still counts."""
     assert _said(barn, vocabulary, where, text, "nyasha") == frames
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        (
+            "Switch on the light for the bathroom, then take me there",
+            [
+                {"frame": "OPERATING", "device": "bathroom_light", "state": "on"},
+                {"frame": "ACCOMPANYING", "theme": "me", "goal": "bathroom"},
+            ],
+        ),
+        (
+            "turn on the snug lamp and wait there",
+            [
+                {"frame": "OPERATING", "device": "snug_lamp", "state": "on"},
+                {"frame": "MOTION", "goal": "snug"},
+            ],
+        ),
+        (
+            "switch off the kitchen light and bring the teapot there",
+            [
+                {"frame": "OPERATING", "device": "kitchen_light", "state": "off"},
+                {"frame": "BRINGING", "theme": "teapot", "goal": "kitchen"},
+            ],
+        ),
+    ],
+)
+def test_there_after_a_device_is_its_room(barn: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
+    """ "there" after a device switched is the one room the world puts it in (``knic.language.naming``); the
+    ERL apartment's devices have no room in its world, so "there" is still what it was there."""
+    assert frames_read(barn, text, "nyasha") == frames
