@@ -2,8 +2,9 @@
 
 * a stretch set off by a pair of dashes in the middle of a sentence, where the sentence broke off (after an
   article, a possessive or a preposition: "bring me the — Tobi, leave that! — the palm oil", "switch off
-  the — hold on, I'm on the phone — the store light") or that is an exclamation or a question ("... on the
-  shoe rack — Tobi, wear your shoes! — by the door") is an interruption, said to someone else or to no one:
+  the — hold on, I'm on the phone — the store light"), that exclaims or asks ("... on the shoe rack — Tobi,
+  wear your shoes! — by the door") or that calls someone by name ("— Tobi, stop jumping on the sofa —") is
+  an interruption, said to someone else or to no one:
   dropped, and the sentence read on where it broke off (a signer's "ice pack — freezer take — Ottavio give"
   stays). Kept are a description
   of the thing ("the tea — the green one — from the kitchen") and a correction ("the plastic cup in the —
@@ -53,6 +54,8 @@ _BROKEN_AFTER = frozenset(
     }
     | {"for", "and", "with", "off", "by", "some", "this", "that"}
 )
+#: a name called at the start of an aside, written with its capital ("Tobi, stop jumping on the sofa")
+_CALLED = re.compile(r"^[A-Z][a-z]+,")
 #: titles said before a name
 _TITLES = frozenset(
     {"mr", "mrs", "miss", "ms", "dr", "aunty", "auntie", "aunt", "uncle", "mama", "papa", "mummy", "daddy"}
@@ -72,7 +75,8 @@ def dashed_asides_dropped(text: str) -> str:
         said = match.group(1)
         before = text[: match.start()].split()[-1:]
         broken = before and before[0].lower() in _BROKEN_AFTER  # "bring me the — ..."
-        called = said.rstrip().endswith(("!", "?"))  # "... on the shoe rack — Tobi, wear your shoes! — ..."
+        # "— Tobi, wear your shoes! —", "— hello? yes, I'm here —", "— Tobi, stop that —"
+        called = "!" in said or "?" in said or _CALLED.match(said) is not None
         if _DESCRIBES.match(said) or "." in said or not (broken or called):
             return match.group(0)
         return " "

@@ -34,9 +34,7 @@ _OTHER_VERBS = frozenset({"look", "search", "hunt", "wait", "ask", "asking", "ch
 #: words before "give" that make it a verb of its own ("... and give it to tracy")
 _JOINED = (["and"], ["then"], ["to"], ["please"], ["also"], ["or"], ["i"], ["you"], ["can"], ["and", "then"])
 #: what "give" as a verb of its own is said with
-_GIVEN = frozenset(
-    {"it", "them", "him", "her", "me", "us", "back", "you", "the", "a", "an", "this", "that", ""}
-)
+_GIVEN = frozenset({"it", "them", "back", "you", "the", "a", "an", "this", "that", ""})
 #: prepositions of place that leave "for" as it is ("put the candle on the shelf for books")
 _PLACED = frozenset({"on", "in", "into", "onto", "at", "under", "by", "to", "inside", "beside", "next"})
 #: words after "for" that keep it: who a thing is for

@@ -1,8 +1,9 @@
 """Words of the office and of the pulpit, put back as said plainly (used by
 :func:`knic.language.household.words_tidied`, one stretch of a command at a time):
 
-* "revert with" (office English for "reply with") is "tell me": "kindly revert with the location of my car
-  keys" asks where they are;
+* "revert with" (office English for "reply with") and "loop me in on" are "tell me": "kindly revert with the
+  location of my car keys" asks where they are; "FYI" and "for your information" opening a stretch are
+  dropped ("FYI the study light is on, switch it off");
 * a thing that "should be", "must be" or "needs to be" on or in a place, said as a stretch of its own ("per
   my earlier instruction, the calculator should be on the study desk"), is to be put there
   (:func:`to_be_put`, on the command's sentences), unless another sentence acts on it ("the atlas should be
@@ -34,7 +35,9 @@ _PURPOSE = frozenset({"may", "might"})
 
 def register_words(tokens: list[str]) -> list[str]:
     """One stretch of a command with the words of the module docstring said plainly."""
-    words = tokens
+    words = tokens[1:] if tokens[:1] == ["fyi"] else tokens  # "FYI the study light is on, switch it off"
+    if words[:4] == ["for", "your", "information", *words[3:4]] and len(words) > 3:
+        words = words[3:]
     if words[:4] == ["let", "there", "be", "light"]:
         return ["turn", "on", "the", "light", *words[4:]]
     if words[:1] in (["that"], ["so"]) and _PURPOSE & set(words[1:]) and len(words) > 2:
@@ -42,9 +45,11 @@ def register_words(tokens: list[str]) -> list[str]:
     if words[-3:] in (["see", "to", "it"], ["see", "to", "that"]) and len(words) <= 4:
         return []
     for i, word in enumerate(words[:-1]):
-        if word == "revert" and words[i + 1] in ("with", "back"):
+        if words[i : i + 4] == ["loop", "me", "in", "on"]:  # "please loop me in on where Musa is"
+            return [*words[:i], "tell", "me", *words[i + 4 :]]
+        if word == "revert" and words[i + 1] in ("with", "back", "on"):
             rest = words[i + 2 :]
-            rest = rest[1:] if rest[:1] == ["with"] else rest
+            rest = rest[1:] if rest[:1] in (["with"], ["on"]) else rest
             return [*words[:i], "tell", "me", *rest]
     return words
 

@@ -13,16 +13,18 @@ tried with sentences of its own in that house, in the family house of people24 o
   the X"; the particles "oya", "o", "sha", "jare", "abi", "ehen" and Yoruba "e jo", "omo mi" dropped; "small"
   said last after a device is "a bit" (``knic.language.pidgin``);
 * an interruption set off by two dashes where the sentence broke off, or that exclaims or asks ("bring me
-  the — Tobi, leave that thing! — the palm oil"), is dropped; a description or a correction between dashes
+  the — Tobi, leave that thing! — the palm oil"), or that calls someone by name ("— Tobi, stop jumping on the
+  sofa —"), is dropped; a description or a correction between dashes
   is kept (``knic.language.asides``);
 * a title before a person's name ("Mama Adunni's room", "Oga Olumide", "my sister Funmilayo", "Aunty
   Tracy") is dropped; "Ese, have you seen it?" before a request is said to Ese; "why is the X still off?"
   before "put it on" is a complaint, as "the X is still off" is (``knic.language.asides``);
 * "off the kitchen light and the store light, on the security light": "on" or "off" straight after a
   device, where a state was said before it, is the verb again with that state (``knic.language.learners``);
-* office and pulpit English said plainly: "revert with" is "tell me"; a thing that "should be" or "must be"
-  on a place is to be put there, and "please see to it" asks nothing more; a purpose said formally ("that
-  the light may enter") is dropped; "let there be light" turns the light on (``knic.language.registers``).
+* office and pulpit English said plainly: "revert with" and "loop me in on" are "tell me", "FYI" is
+  dropped; a thing that "should be" or "must be" on a place is to be put there, and "please see to it" asks
+  nothing more; a purpose said formally ("that the light may enter") is dropped; "let there be light" turns
+  the light on (``knic.language.registers``).
 """
 
 from __future__ import annotations
@@ -299,3 +301,30 @@ def test_office_and_pulpit_english_in_the_erl_apartment(vocabulary: Vocabulary) 
     assert frames_read(vocabulary, "let there be light in the hallway") == [
         {"frame": "OPERATING", "device": "hallway_light", "state": "on"}
     ]
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        ("Bring the umbrella give me", [{"frame": "BRINGING", "theme": "umbrella", "beneficiary": "me"}]),
+        (
+            "Close the parlour curtains — Tobi, stop jumping on the sofa — halfway",
+            [{"frame": "OPERATING", "device": "parlour_curtains", "state": "50"}],
+        ),
+        (
+            "Robbie, the palm oil, bring it — hello? yes, I'm here — bring it to the kitchen",
+            [{"frame": "BRINGING", "theme": "palm_oil", "goal": "kitchen"}],
+        ),
+        (
+            "FYI the study light is on, switch it off",
+            [{"frame": "OPERATING", "device": "study_light", "state": "off"}],
+        ),
+        ("Please loop me in on where Musa is", [{"frame": "SEARCHING", "theme": "musa"}]),
+        (
+            "Can you revert on the whereabouts of my sunglasses",
+            [{"frame": "SEARCHING", "theme": "sunglasses"}],
+        ),
+    ],
+)
+def test_the_voices_beyond_the_set(house: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
+    assert frames_read(house, text, "funmilayo") == frames
