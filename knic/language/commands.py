@@ -114,6 +114,7 @@ class CommandLanguage:
     spoken_marks: dict[str, str] = field(default_factory=dict)
     spanish_words: dict[str, str] = field(default_factory=dict)
     spanish_articles: dict[str, str] = field(default_factory=dict)
+    spanish_after_articles: dict[str, str] = field(default_factory=dict)
     verb_numbers: dict[str, str] = field(default_factory=dict)
 
     def verb_frames(self) -> dict[str, tuple[tuple[str, ...], str | None]]:
@@ -269,6 +270,7 @@ def load_language(path: str | Path = DEFAULT_PATH) -> CommandLanguage:
         spoken_marks=_marks(data, source),
         spanish_words=_spellings(data, source, "spanish_words"),
         spanish_articles=_spellings(data, source, "spanish_articles"),
+        spanish_after_articles=_spellings(data, source, "spanish_after_articles"),
         verb_numbers=_spellings(data, source, "verb_numbers"),
     )
     lists: dict[str, tuple[str, ...]] = {v.name: v.spoken for v in verbs}

@@ -9,7 +9,8 @@ the request is read (used by :meth:`knic.language.reader.Reader.read`):
   "the floor lamp to cincuenta"): the English words they stand for (:attr:`CommandLanguage.spanish_words`),
   accents or none ("azúcar", "azucar"); a Spanish article that is also a word of an English dialect
   (Liverpool's "la", Jamaican "mi") only right before a Spanish word of the table ("la cafetera";
-  :attr:`CommandLanguage.spanish_articles`);
+  :attr:`CommandLanguage.spanish_articles`), and a Spanish word that is an English word too only right after
+  a Spanish article ("el control": the remote; :attr:`CommandLanguage.spanish_after_articles`);
 * a number said as a verb in trade slang, with a thing after it ("86 the kitchen light": a restaurant
   kitchen's "eighty-six", take off; :attr:`CommandLanguage.verb_numbers`);
 * "den" for "then" before a verb, as Hawaiian Pidgin and Caribbean English say it ("take da chairs from da
@@ -33,6 +34,8 @@ from knic.language.vocabulary import Vocabulary
 _NOT_AFTER = frozenset(
     {"a", "an", "the", "this", "that", "one", "each", "every", "no", "any", "some", "of", "for", "in", "on"}
 )
+#: what a Spanish article of the tables stands for ("el": the, "mis": my, "del": of the)
+_ARTICLE_MEANINGS = frozenset({"the", "my", "your", "their", "of the"})
 #: what may follow a number said as a verb: a thing, not a unit or a count ("86 the light", not "86 percent")
 _THING_NEXT = frozenset(
     {"the", "da", "that", "those", "these", "this", "it", "them", "my", "all", "both", "your", "our"}
@@ -43,7 +46,12 @@ def mixed_said(text: str, language: CommandLanguage, vocabulary: Vocabulary | No
     """:func:`mixed_read` with the tables of a command language, then "stay" for "is" after the name of a
     person of ``vocabulary`` or "you" (see the module's docstring)."""
     text = mixed_read(
-        text, language.spoken_marks, language.spanish_words, language.spanish_articles, language.verb_numbers
+        text,
+        language.spoken_marks,
+        language.spanish_words,
+        language.spanish_articles,
+        language.verb_numbers,
+        language.spanish_after_articles,
     )
     text = _then_said(text, _verb_starts(language))
     return _stay(vocabulary).sub(r"\1is", text)
@@ -83,10 +91,12 @@ def mixed_read(
     spanish: Mapping[str, str],
     articles: Mapping[str, str],
     verb_numbers: Mapping[str, str],
+    after_articles: Mapping[str, str] | None = None,
 ) -> str:
     """``text`` with spoken punctuation, Spanish words and numbers said as verbs read as English (see the
     module's docstring): ``mixed_read("Oye, bring me mis espejuelos period", ...)`` is "Oye, bring me my
     glasses."."""
+    said_articles = {*articles, *(k for k, v in spanish.items() if v in _ARTICLE_MEANINGS)}
     tokens = text.split()
     longest = max((len(name.split()) for name in marks), default=0)
     out: list[str] = []
@@ -106,8 +116,11 @@ def mixed_read(
         word, tail = _split(tokens[i])
         key = plain_typed(word).lower()
         nxt = plain_typed(_split(tokens[i + 1])[0]).lower() if i + 1 < len(tokens) else ""
+        previous = plain_typed(_split(tokens[i - 1])[0]).lower() if i else ""
         if key in spanish:
             word = spanish[key]
+        elif after_articles and key in after_articles and previous in said_articles:
+            word = after_articles[key]
         elif key in articles and not tail and nxt in spanish:
             word = articles[key]
         elif key in verb_numbers and not tail and nxt in _THING_NEXT:

@@ -53,6 +53,8 @@ class Places:
                 # "the light in the study" where a "torchlight" is a light too: the robot knows where
                 # furniture and devices are, not where things lie, so the place tells the study's light
                 inside = [t for t in narrowable if any(self._within(t, r) for r in rooms)]
+                if not inside and all(self.is_a(t, "light") for t in narrowable):
+                    inside = list(self._dimmers_in(rooms))  # "the light in the dining room": its chandelier
                 if not inside or any(t.is_group for t in head.chunk.terms):
                     continue
                 head.chunk = Chunk("entity", head.chunk.text, tuple(narrowable), role=head.chunk.role)

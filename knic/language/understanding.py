@@ -180,12 +180,12 @@ def understand(
         return [c.kind for c in reader.chunks([word])] == ["unknown"]
 
     try:
-        # "it's dark in the study": its lights; "hoodie from my bed": the bed in the speaker's own room;
-        # "three zero percent", "do the light out": said plainly (plainspoken.py); "below in the boot room",
-        # "can I get the lamp on", "the bedroom of Tadhg" (roundabout.py)
-        said = plainly_said(roundabout_said(text, vocabulary, unknown), vocabulary, unknown)
-        # "... light period", "mis espejuelos", "86 the light": said in English first (mixed.py)
-        said = mixed_said(said, reader.language, vocabulary)
+        # "... light period", "mis espejuelos", "86 the light": said in English first (mixed.py); "it's dark
+        # in the study": its lights; "hoodie from my bed": the bed in the speaker's own room; "three zero
+        # percent", "do the light out": said plainly (plainspoken.py); "below in the boot room", "can I get
+        # the lamp on", "the bedroom of Tadhg" (roundabout.py)
+        said = mixed_said(text, reader.language, vocabulary)
+        said = plainly_said(roundabout_said(said, vocabulary, unknown), vocabulary, unknown)
         reading = reader.read(dark_read(owned_read(said, vocabulary, speaker)))
     except AmbiguityError as exc:
         question = str(exc)[:1].upper() + str(exc)[1:]

@@ -20,7 +20,12 @@ got wrong, each tried in the ERL apartment as well:
 * a plural in "-oes" said singular ("one mango" for the mangoes; ``knic.language.chunks``);
 * general names (``synonyms.yaml``): "schlep" carries (New York English, ``commands.yaml``), "the
   Frigidaire" is the fridge, "OJ" the orange juice, "a fishing pole" the fishing rod, "slippahs" the flip
-  flops, "my pills" the speaker's pill organizer, "the master bath" and "the guest bath" those bathrooms.
+  flops, "my pills" the speaker's pill organizer, "the master bath" and "the guest bath" those bathrooms;
+  "el control" (a Spanish word that is an English word too, after a Spanish article) is the remote;
+* spoken punctuation and Spanish are read before anything else, so a remark after a spoken "comma" is
+  talk as after a typed one ("..., comma Mateo sleeps on the sofa bed period"; ``understanding.py``);
+* "the light in the dining room" where the room's only light is a dimmer not called a light (a chandelier)
+  and a thing elsewhere is called a light too (a flashlight): that dimmer (``knic.language.places``).
 """
 
 from __future__ import annotations
@@ -286,3 +291,45 @@ def test_someone_the_world_does_not_name_given_a_thing_is_refused(
 def test_someone_unnamed_given_a_thing_is_refused_in_the_apartment(vocabulary: Vocabulary) -> None:
     result = understand("take grandpa his glasses", vocabulary, speaker="annie")
     assert not result.accepted and "grandpa" in result.reason
+
+
+@pytest.mark.parametrize(
+    ("text", "speaker", "frames"),
+    [
+        (
+            "turn off the light in the dining room",
+            "mirta",
+            [{"frame": "OPERATING", "device": "chandelier", "state": "off"}],
+        ),
+        (
+            "Oye, apaga la luz del comedor",
+            "mirta",
+            [{"frame": "OPERATING", "device": "chandelier", "state": "off"}],
+        ),
+        (
+            "turn off the light in the den",
+            "mirta",
+            [{"frame": "OPERATING", "device": "den_light", "state": "off"}],
+        ),
+        (
+            "Bring me el control del TV, the novela is starting",
+            "mirta",
+            [{"frame": "BRINGING", "theme": "tv_remote", "beneficiary": "me"}],
+        ),
+        (
+            "Take the cooler to the den comma Keoni sleeps on the chaise lounge period",
+            "dana",
+            [{"frame": "BRINGING", "theme": "cooler", "goal": "den"}],
+        ),
+    ],
+)
+def test_a_room_s_only_light_a_remote_and_a_remark_after_a_spoken_comma(
+    condo: Vocabulary, text: str, speaker: str, frames: list[dict[str, str]]
+) -> None:
+    assert frames_read(condo, text, speaker) == frames
+
+
+def test_el_control_is_the_remote_in_the_apartment(vocabulary: Vocabulary) -> None:
+    assert frames_read(vocabulary, "bring me el control comma please") == [
+        {"frame": "BRINGING", "theme": "remote", "beneficiary": "me"}
+    ]
