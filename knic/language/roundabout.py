@@ -23,6 +23,8 @@ understanding.understand` (people36's voices first, each rule as general as the 
 * ordering as in a café ("can I get the lamp on", "can I get the lights off in the bathroom", "could I get the
   blind half open", "could I get the holdall put on the bed", "can I get you to
   go to ..."): the device switched, the thing put, and "could you";
+* "bring the turf basket over beside the stove", "move the chair over next to the bed": where to, as "over
+  to" is; "away up to the loft landing and ..." (Scottish and Ulster English "away" for go): "go to";
 * "throw the ball over to Sadhbh", "chuck the keys over to me": to her, to me;
 * "... and the landing light off" after a request that is no switching ("put the hairdryer back on the
   vanity table and the loft bedroom light off"): "and turn the landing light off";
@@ -122,6 +124,10 @@ _GO_AND = re.compile(
     re.I,
 )
 
+_OVER_BESIDE = re.compile(r"\bover\s+(?:beside|next\s+to|alongside)\b", re.I)
+_AWAY_TO = re.compile(
+    r"(^|[.!?,;]\s*|\band\s+)away\s+(?:(?:up|down|over|out|in|back|round)\s+)?(?=to\b)", re.I
+)
 _BEFORE_YOU_GO = re.compile(
     r",?\s+before\s+(?:you|ye)\s+(?:go|leave|head\s+(?:off|out)|go\s+out)\s*(?=$|[.!?])", re.I
 )
@@ -148,6 +154,7 @@ def roundabout_said(text: str, vocabulary: Vocabulary, unknown: Callable[[str], 
     text = _GET_PUT.sub(lambda m: f"{_PARTICIPLES[m.group(2).lower()]} {m.group(1)} ", text)
     text = _GET_SWITCHED.sub(lambda m: _MADE_SO[m.group(2).lower()].format(m.group(1)), text)
     text = _BEFORE_YOU_GO.sub("", _GO_AND.sub("", text))
+    text = _AWAY_TO.sub(r"\1go ", _OVER_BESIDE.sub("over to", text))
     text = _THROWN_OVER.sub(r"\1\2 to", text)
     return _switched_after(_of_someone(text, vocabulary, unknown), vocabulary)
 

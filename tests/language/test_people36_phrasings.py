@@ -16,7 +16,8 @@ got wrong, each tried in the ERL apartment as well (``knic.language.roundabout``
 * a café's ordering: "can I get the lamp on", "could I get the velux blind half open", "could I get the
   holdall put on the bed", "can I get you to";
   "... and the loft bedroom light off" after a placing; "the whole way" is all the way (``commands.yaml``);
-* "go out and wait by the trough": the waiting; "throw the sliotar over to Sadhbh": to her; "wee Sadhbh":
+* "go out and wait by the trough": the waiting; "over beside the stove": to it; "away up to the loft
+  landing and ...": "go to"; "throw the sliotar over to Sadhbh": to her; "wee Sadhbh":
   Sadhbh ("wee" is "little", "yous" is "you": ``commands.yaml``);
 * "the bedroom of Sekuru Tadhg": Tadhg's bedroom ("the curtains of tomasz room" stays tomasz's room's);
 * "feed the dog there before you go": "before you go" is when; "the heating is on far too high, turn it down"
@@ -493,3 +494,47 @@ def test_there_after_a_device_is_its_room(barn: Vocabulary, text: str, frames: l
     """ "there" after a device switched is the one room the world puts it in (``knic.language.naming``); the
     ERL apartment's devices have no room in its world, so "there" is still what it was there."""
     assert frames_read(barn, text, "nyasha") == frames
+
+
+@pytest.mark.parametrize(
+    ("where", "text", "frames"),
+    [
+        (
+            "barn",
+            "Bring the turf basket over beside the stove",
+            [{"frame": "BRINGING", "theme": "turf_basket", "goal": "stove"}],
+        ),
+        (
+            "erl",
+            "bring the apple over next to the bed",
+            [{"frame": "BRINGING", "theme": "apple", "goal": "bed"}],
+        ),
+        (
+            "barn",
+            "Away up to the loft landing and switch the light on",
+            [
+                {"frame": "MOTION", "goal": "loft_landing"},
+                {"frame": "OPERATING", "device": "loft_landing_light", "state": "on"},
+            ],
+        ),
+        (
+            "erl",
+            "away up to the bedroom and close the blinds",
+            [
+                {"frame": "MOTION", "goal": "bedroom"},
+                {"frame": "OPERATING", "device": "bedroom_blinds", "state": "closed"},
+            ],
+        ),
+        (
+            "erl",
+            "put the apple away to the kitchen",
+            [{"frame": "PLACING", "theme": "apple", "goal": "kitchen"}],
+        ),
+    ],
+)
+def test_over_beside_and_away_up_to(
+    barn: Vocabulary, vocabulary: Vocabulary, where: str, text: str, frames: list[dict[str, str]]
+) -> None:
+    """ "over beside the stove" is where to; "away up to the loft landing" (Ulster and Scottish) is "go to";
+    "put the apple away to the kitchen" keeps its verb."""
+    assert _said(barn, vocabulary, where, text, "ciaran") == frames
