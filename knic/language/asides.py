@@ -14,6 +14,8 @@
   "my sister Funmilayo") is dropped: the name says who (:func:`spoken_to`);
 * a person's name said alone, then a question to "you" ("Ese, have you seen it? Robbie, find it"), is said
   to that person, when the command goes on to ask the robot something: dropped (:func:`spoken_to`);
+* "what is inside the deep freezer? check if the chicken is there", "the deep freezer, is the chicken
+  there?": "there" is the place asked about or named alone just before (:func:`spoken_to`);
 * "why is the X (still) off?" before a request says what is wrong, as "the X is still off" does ("why is
   the security light still off? put it on"): read so (:func:`spoken_to`).
 """
@@ -102,7 +104,30 @@ def spoken_to(segments: list[list[str]], vocabulary: Vocabulary) -> list[list[st
             skip = True
             continue
         kept.append(_why_said(segment) if i + 1 < len(out) else segment)
-    return kept or out
+    return _there_said(kept or out, vocabulary)
+
+
+def _there_said(segments: list[list[str]], vocabulary: Vocabulary) -> list[list[str]]:
+    """ "what is inside the deep freezer? check if the chicken is there", "the deep freezer, is the chicken
+    there?": "there" is the place the sentence before asked about or named alone, said in full ("... is in
+    the deep freezer"); the sentence before only pointed at it."""
+    places = {
+        t.phrase
+        for t in vocabulary.terms
+        if vocabulary.is_subtype(t.type, "furniture") or vocabulary.is_subtype(t.type, "room")
+    }
+    for i, segment in enumerate(segments[:-1]):
+        later = segments[i + 1]
+        if "there" not in later or "in" in later[later.index("there") - 1 : later.index("there")]:
+            continue
+        asked = segment[:3] in (["what", "is", "in"], ["what", "is", "inside"], ["what", "is", "on"])
+        place = segment[3:] if asked else segment
+        said = place[1:] if place[:1] in (["the"], ["my"]) else place
+        if said and " ".join(said) in places and (asked or len(segments) == 2):
+            at = later.index("there")
+            told = ["on" if segment[2:3] == ["on"] and asked else "in", *place]
+            return [*segments[:i], [*later[:at], *told, *later[at + 1 :]], *segments[i + 2 :]]
+    return segments
 
 
 def titles_dropped(text: str, vocabulary: Vocabulary) -> str:

@@ -18,7 +18,9 @@ tried with sentences of its own in that house, in the family house of people24 o
   is kept (``knic.language.asides``);
 * a title before a person's name ("Mama Adunni's room", "Oga Olumide", "my sister Funmilayo", "Aunty
   Tracy") is dropped; "Ese, have you seen it?" before a request is said to Ese; "why is the X still off?"
-  before "put it on" is a complaint, as "the X is still off" is (``knic.language.asides``);
+  before "put it on" is a complaint, as "the X is still off" is; "there" after "what is inside the deep
+  freezer?" or after a place said alone ("the closet, is the tablet there?") is that place
+  (``knic.language.asides``);
 * "off the kitchen light and the store light, on the security light": "on" or "off" straight after a
   device, where a state was said before it, is the verb again with that state (``knic.language.learners``);
 * office and pulpit English said plainly: "revert with" and "loop me in on" are "tell me", "FYI" is
@@ -328,3 +330,15 @@ def test_office_and_pulpit_english_in_the_erl_apartment(vocabulary: Vocabulary) 
 )
 def test_the_voices_beyond_the_set(house: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
     assert frames_read(house, text, "funmilayo") == frames
+
+
+def test_there_is_the_place_asked_about_before(house: Vocabulary, vocabulary: Vocabulary) -> None:
+    assert frames_read(
+        house, "Wetin dey inside the deep freezer? Check if the chicken dey there", "musa"
+    ) == [{"frame": "SEARCHING", "theme": "chicken", "ground": "deep_freezer"}]
+    assert frames_read(vocabulary, "what is on the kitchen table? is the apple there?") == [
+        {"frame": "SEARCHING", "theme": "apple", "ground": "kitchen_table"}
+    ]
+    assert frames_read(vocabulary, "the closet, is the tablet there?") == [
+        {"frame": "SEARCHING", "theme": "tablet", "ground": "closet"}
+    ]
