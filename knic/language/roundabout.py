@@ -28,6 +28,8 @@ understanding.understand` (people36's voices first, each rule as general as the 
 * "throw the ball over to Sadhbh", "chuck the keys over to me": to her, to me;
 * "... and the landing light off" after a request that is no switching ("put the hairdryer back on the
   vanity table and the loft bedroom light off"): "and turn the landing light off";
+* what a place is gone to or a thing taken there for, said last with a word the robot does not know ("take
+  me over to the kitchen for the tea", "bring the frisbee out to the garden for the kids"): why, not what;
 * "before you go", "before you leave", said last: when, not where to ("feed the dog there before you go" is
   no motion without a place);
 * "go out and wait by the trough", "run up and turn on the light": the second verb says what to do and
@@ -128,6 +130,11 @@ _OVER_BESIDE = re.compile(r"\bover\s+(?:beside|next\s+to|alongside)\b", re.I)
 _AWAY_TO = re.compile(
     r"(^|[.!?,;]\s*|\band\s+)away\s+(?:(?:up|down|over|out|in|back|round)\s+)?(?=to\b)", re.I
 )
+_FOR_WHAT = re.compile(
+    r"(\b(?:to|on|onto|in|into|at)\s+(?:the|my|our|your|his|her)\s+[\w' -]+?)\s+for\s+"
+    r"(?:the|a|an|my|our|some|your|his|her|their)\s+([a-z]+)(?=\s*(?:$|[,.;!?]))",
+    re.I,
+)
 _BEFORE_YOU_GO = re.compile(
     r",?\s+before\s+(?:you|ye)\s+(?:go|leave|head\s+(?:off|out)|go\s+out)\s*(?=$|[.!?])", re.I
 )
@@ -155,6 +162,9 @@ def roundabout_said(text: str, vocabulary: Vocabulary, unknown: Callable[[str], 
     text = _GET_SWITCHED.sub(lambda m: _MADE_SO[m.group(2).lower()].format(m.group(1)), text)
     text = _BEFORE_YOU_GO.sub("", _GO_AND.sub("", text))
     text = _AWAY_TO.sub(r"\1go ", _OVER_BESIDE.sub("over to", text))
+    for purpose in list(_FOR_WHAT.finditer(text))[::-1]:  # "... to the kitchen for the tea": why
+        if unknown(purpose.group(2).lower()):
+            text = text[: purpose.start()] + purpose.group(1) + text[purpose.end() :]
     text = _THROWN_OVER.sub(r"\1\2 to", text)
     return _switched_after(_of_someone(text, vocabulary, unknown), vocabulary)
 

@@ -16,6 +16,7 @@ got wrong, each tried in the ERL apartment as well (``knic.language.roundabout``
 * a café's ordering: "can I get the lamp on", "could I get the velux blind half open", "could I get the
   holdall put on the bed", "can I get you to";
   "... and the loft bedroom light off" after a placing; "the whole way" is all the way (``commands.yaml``);
+* "take me over to the kitchen for the tea": why, not what;
 * "go out and wait by the trough": the waiting; "over beside the stove": to it; "away up to the loft
   landing and ...": "go to"; "throw the sliotar over to Sadhbh": to her; "wee Sadhbh":
   Sadhbh ("wee" is "little", "yous" is "you": ``commands.yaml``);
@@ -538,3 +539,31 @@ def test_over_beside_and_away_up_to(
     """ "over beside the stove" is where to; "away up to the loft landing" (Ulster and Scottish) is "go to";
     "put the apple away to the kitchen" keeps its verb."""
     assert _said(barn, vocabulary, where, text, "ciaran") == frames
+
+
+@pytest.mark.parametrize(
+    ("where", "text", "frames"),
+    [
+        (
+            "barn",
+            "You wouldn't take me over to the kitchen for the tea?",
+            [{"frame": "ACCOMPANYING", "theme": "me", "goal": "kitchen"}],
+        ),
+        (
+            "erl",
+            "take me to the kitchen for a snack",
+            [{"frame": "ACCOMPANYING", "theme": "me", "goal": "kitchen"}],
+        ),
+        (
+            "erl",
+            "bring the apple to the kitchen for tracy",
+            [{"frame": "BRINGING", "theme": "apple", "goal": "kitchen", "beneficiary": "tracy"}],
+        ),
+    ],
+)
+def test_what_a_place_is_gone_to_for(
+    barn: Vocabulary, vocabulary: Vocabulary, where: str, text: str, frames: list[dict[str, str]]
+) -> None:
+    """ "... to the kitchen for the tea": why, said with a word the robot does not know; a person it knows
+    said so is still whom for."""
+    assert _said(barn, vocabulary, where, text, "tadhg") == frames
