@@ -6,8 +6,8 @@ understanding.understand` (people36's voices first, each rule as general as the 
   the adverb is the way there, not a place, and "from beyond in the snug" is from the snug;
 * a word held for a thing while the speaker finds its name ("where's the yoke, the head torch?", "the
   thingy, the remote"): the name said after it;
-* "let it be at seventy", "let the lamp be on forty" (as a carer from Zimbabwe or an Indian speaker may
-  say it): set it to that level;
+* "let it be at seventy", "let the lamp be on forty", "make the light to be at forty" (as a carer from
+  Zimbabwe or an Indian speaker may say it): set it to that level;
 * what another person wants or is trying to do, said after a request with a verb the robot does not know
   ("..., Sekuru Tadhg wants to sleep", "..., she's trying to read"): the reason, asked of nobody;
 * a negative question as a request (Irish and older speakers: "you didn't see my watch anywhere?", "you
@@ -21,8 +21,8 @@ understanding.understand` (people36's voices first, each rule as general as the 
 * "like a good man", "like a good lad", "like a good girl" (coaxing, as "there's a good lad" is): dropped;
 * what is in a thing, said with it ("the blue mug with the tea in it"): no thing of its own;
 * ordering as in a café ("can I get the lamp on", "can I get the lights off in the bathroom", "could I get the
-  blind half open", "could I get the holdall put on the bed", "can I get you to
-  go to ..."): the device switched, the thing put, and "could you";
+  yard light on for Ciaran", "could I get the blind half open", "could I get the holdall put on the bed",
+  "can I get you to go to ..."): the device switched, the thing put, and "could you";
 * "bring the turf basket over beside the stove", "move the chair over next to the bed": where to, as "over
   to" is; "away up to the loft landing and ..." (Scottish and Ulster English "away" for go): "go to";
 * "throw the ball over to Sadhbh", "chuck the keys over to me": to her, to me;
@@ -57,7 +57,9 @@ _PLACEHOLDER = re.compile(
     r"doohickey|gizmo)\s*[,:;-]+\s*(?=(?:the|my|your|his|her|our|their|that|this)\s)",
     re.I,
 )
-_LET_BE = re.compile(r"\blet\s+(it|them|(?:the|my|that|this)\s+[\w\s]+?)\s+be\s+(?:at|on)\s+", re.I)
+_LET_BE = re.compile(
+    r"\b(?:let|make)\s+(it|them|(?:the|my|that|this)\s+[\w\s]+?)\s+(?:to\s+)?be\s+(?:at|on)\s+(?=\w)", re.I
+)
 _WANTS_TO = re.compile(
     r"[,.;!]\s*(?:[\w']+\s+){0,2}?(?:wants|needs|would like|is wanting|is trying|'s trying|is going|'s going)"
     r"\s+to\s+([a-z]+)\b[^,.;!?]*",
@@ -101,8 +103,9 @@ _GOOD_ONE = re.compile(
 _GET_YOU_TO = re.compile(r"\b(?:can|could|may)\s+i\s+(?:get|have)\s+you\s+to\b", re.I)
 _DETERMINED = r"(?:the|my|our|your|his|her|their|that|this)\s+[^,.;!?]+?"
 _GET_SWITCHED = re.compile(
-    rf"\b(?:can|could|may)\s+i\s+(?:get|have)\s+({_DETERMINED})\s+(on|off|open|closed|shut|half open)\b"
-    r"(?=\s*(?:$|[,.;!?]|and\b|please\b|thanks\b|thank you\b|then\b|in\b|on\b))",
+    rf"\b(?:can|could|may)\s+i\s+(?:get|have)\s+({_DETERMINED})\s+"
+    r"(on|off|open|closed|shut|half open)\b"
+    r"(?=\s*(?:$|[,.;!?]|and\b|please\b|thanks\b|thank you\b|then\b|in\b|on\b|for\b|a\b|to\b|at\b))",
     re.I,
 )
 #: a device's state said after it in an order, as the request to make it so

@@ -5,7 +5,7 @@ got wrong, each tried in the ERL apartment as well (``knic.language.roundabout``
 * Irish English "below in", "beyond in", "within in", "above in", "beyond to" before a place or a person:
   the adverb is the way there ("the light below in the boot room", "from beyond in the snug");
 * a word held for a thing before its name ("where's the yoke, the head torch?", "the thingy, the remote");
-* "let it be at seventy": set it to seventy;
+* "let it be at seventy", "make the light to be at forty": set it to that level;
 * what another person wants to do, said after a request with a verb the robot does not know ("...,
   Sekuru Tadhg wants to sleep"): a reason;
 * negative questions as requests ("you didn't see my pocket watch anywhere?", "did anyone see my stick?"):
@@ -121,6 +121,11 @@ def test_where_a_place_lies_said_before_it(
             "erl",
             "let the dimmer be at forty",
             [{"frame": "OPERATING", "device": "living_room_dimmer", "state": "40"}],
+        ),
+        (
+            "barn",
+            "Make the granny flat light to be at forty",
+            [{"frame": "OPERATING", "device": "granny_flat_light", "state": "40"}],
         ),
         (
             "barn",
@@ -412,6 +417,16 @@ def test_asked_round_about(
             "erl",
             "could I get the blinds half open",
             [{"frame": "OPERATING", "device": "bedroom_blinds", "state": "50"}],
+        ),
+        (
+            "barn",
+            "Could I get the yard light on for Ciaran",
+            [{"frame": "OPERATING", "device": "yard_light", "state": "on"}],
+        ),
+        (
+            "barn",
+            "Can I get my laptop brought down to the sunroom",
+            [{"frame": "BRINGING", "theme": "laptop", "goal": "sunroom"}],
         ),
     ],
 )
