@@ -193,6 +193,7 @@ class WhisperPass:
         rates = [r for r in rates if MIN_RATE <= r <= MAX_RATE]
         if self._audio is None or not rates:
             return []
+        self._load()  # a kept utterance (:meth:`keep`) may be the first one
         audio = np.asarray(self._audio, dtype=np.float32)
         played = [
             np.interp(np.arange(int(len(audio) / r)) * r, np.arange(len(audio)), audio).astype(np.int16)

@@ -83,3 +83,16 @@ def test_a_kept_utterance_is_played_at_other_paces_but_not_heard(vocabulary, alo
         assert [text for text, _ in server.answer()] == [text for text, _ in alone]
     finally:
         server.close()
+
+
+def test_a_server_without_a_model_answers_a_kept_utterance_with_nothing_and_goes_on(tmp_path):
+    samples = pcm_bytes(BLINDS)
+    server = WhisperServer("", folder=tmp_path)  # no model.bin there: it warns and answers null
+    try:
+        assert server.keep(samples)
+        assert server.ask(samples, {"stretch": list(STRETCH)})
+        assert server.answer() is None
+        assert server.pid is not None  # still up
+        assert server.ask(samples, {"beam": 2}) and server.answer() == []  # nothing heard
+    finally:
+        server.close()
