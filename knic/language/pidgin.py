@@ -13,7 +13,9 @@ Y", "bring come X"):
   Tobi", "carry the umbrella go give Oga"; "... and give it to tracy" stays), as "go" before where to is
   (:mod:`knic.language.dialects`); "come" before "the" after a thing carried is "to" ("bring am come the
   compound");
-* "go the X" opening a stretch is "go to the X" ("go the store, ...");
+* "go the X" opening a stretch is "go to the X" ("go the store, ..."); "on it" and "off it" opening one are
+  "switch it on" and "switch it off" ("is the security light off? please on it"), and "help me on the fan"
+  is "help me switch on the fan";
 * the particles of Nigerian English and Pidgin that ask nothing ("oya", "o", "sha", "jare", "abi", "ehen",
   "shey", Yoruba "e jo" for "please", "omo mi", "my child" said to the listener) are dropped;
 * "small" said last after a device is "a bit" ("open the curtain small": how far?).
@@ -49,6 +51,22 @@ def pidgin_words(tokens: list[str]) -> list[str]:
     words = [w for w in words if w not in _PARTICLES] or words
     if words[:2] == ["make", "you"] and len(words) > 2:  # "make you carry the umbrella go give oga"
         words = ["please", *words[2:]]
+    lead = 1 if words[:1] in (["please"], ["abeg"]) else 0
+    if words[lead : lead + 1] in (["on"], ["off"]) and words[lead + 1 : lead + 2] in (
+        ["it"],
+        ["them"],
+        ["am"],
+    ):
+        it = "them" if words[lead + 1] == "them" else "it"
+        words = [*words[:lead], "switch", it, words[lead], *words[lead + 2 :]]  # "please on it"
+    for i in range(len(words) - 2):
+        if (
+            words[i : i + 2] == ["help", "me"]
+            and words[i + 2] in ("on", "off")
+            and words[i + 3 : i + 4] == ["the"]
+        ):
+            words = [*words[: i + 2], "switch", *words[i + 2 :]]  # "help me on the fan"
+            break
     if words[:2] == ["go", "the"]:  # "go the store"
         words = ["go", "to", *words[1:]]
     if words[:1] == ["where"] and "dey" in words[1:]:  # "where my sunglasses dey": where is

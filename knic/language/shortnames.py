@@ -199,6 +199,24 @@ def _room_kinds(words: list[str], room_words: frozenset[str]) -> list[str]:
     return [w for w in words if w in room_words] + ending
 
 
+#: two-letter words of English, never read as a room's initials
+_WORDS_OF_TWO = frozenset(
+    {"am", "an", "as", "at", "be", "by", "do", "go", "he", "hi", "if", "in", "is"}
+    | {"it", "me", "my", "no", "of", "oh", "ok", "on", "or", "so", "to", "up", "us"}
+    | {"we", "ya", "ye", "yo", "ah", "eh", "er", "um", "uh", "hm", "mm", "ha"}
+    # and what is written short in texts and before names ("bring me the hummus fr", "Dr", "St")
+    | {"fr", "rn", "ty", "np", "ig", "tv", "pc", "dm", "gg", "bf", "gf", "bc", "pm", "ps", "mr", "ms"}
+    | {"dr", "st"}
+)
+
+
+def _initials(words: list[str]) -> list[str]:
+    """The initials of a two-word room name, as rooms are called in many homes ("the BQ", the boys' quarters
+    of a Nigerian home; "the CR", a Filipino comfort room; "the LR"), unless they spell a word."""
+    said = "".join(w[0] for w in words)
+    return [said] if len(words) == 2 and said.isalpha() and said not in _WORDS_OF_TWO else []
+
+
 def _head(words: list[str], heads: Sequence[str]) -> list[str]:
     """The common noun a one-word compound name ends in ("newspaper" -> "paper")."""
     if len(words) != 1:
@@ -222,6 +240,7 @@ def short_names(
     units = _units()
     taken = {t.phrase for t in terms}
     said = frozenset(w for t in terms if is_room(t.type) for w in t.phrase.split())  # rooms' words
+    names = {t.phrase.split()[0] for t in terms if exclude(t.type) and t.phrase}  # people's first names
     out: list[tuple[str, N]] = []
     seen: set[tuple[str, str]] = set()
     for term in terms:
@@ -230,7 +249,9 @@ def short_names(
         words = term.phrase.split()
         phrases = _ordinal(words) + _head(words, heads)
         if is_room(term.type):
-            phrases += _room_kinds(words, room_words)
+            # not a synonym's initials, nor those of a room named after someone ("finn room")
+            own = term.phrase == getattr(term, "symbol", "").replace("_", " ") and words[0] not in names
+            phrases += _room_kinds(words, room_words) + (_initials(words) if own else [])
         else:
             phrases += _content(words, containers) + _made_of(words, units) + _store(words, room_words, said)
         for phrase in phrases:

@@ -11,7 +11,10 @@ tried with sentences of its own in that house, in the family house of people24 o
   carried ("put the umbrella for the shoe rack", "bring am for study"), "give" and "come" as "to" after a
   thing carried ("carry the football from the bench give Tobi", "bring the car keys come the compound"), "go
   the X"; the particles "oya", "o", "sha", "jare", "abi", "ehen" and Yoruba "e jo", "omo mi" dropped; "small"
-  said last after a device is "a bit" (``knic.language.pidgin``);
+  said last after a device is "a bit"; "on it" and "off it" opening a stretch switch it ("is the security
+  light off? please on it"), and "help me on the fan" names the fan the home lacks (``knic.language.pidgin``);
+* a two-word room's initials name it ("the BQ", the boys' quarters; "the LR"), unless they spell a word
+  (``knic.language.shortnames``);
 * an interruption set off by two dashes where the sentence broke off, or that exclaims or asks ("bring me
   the — Tobi, leave that thing! — the palm oil"), or that calls someone by name ("— Tobi, stop jumping on the
   sofa —"), is dropped; a description or a correction between dashes
@@ -341,4 +344,24 @@ def test_there_is_the_place_asked_about_before(house: Vocabulary, vocabulary: Vo
     ]
     assert frames_read(vocabulary, "the closet, is the tablet there?") == [
         {"frame": "SEARCHING", "theme": "tablet", "ground": "closet"}
+    ]
+
+
+def test_on_it_and_help_me_on(house: Vocabulary) -> None:
+    assert frames_read(house, "Is the security light off? Please on it", "ese") == [
+        {"frame": "OPERATING", "device": "security_light", "state": "on"}
+    ]
+    result = understand("Abeg help me on the fan", house, speaker="ese")
+    assert not result.accepted and "fan" in result.reason
+
+
+def test_a_room_called_by_its_initials(house: Vocabulary, family: Vocabulary) -> None:
+    assert frames_read(house, "Please go and bring the bucket from the BQ", "ese") == [
+        {"frame": "BRINGING", "theme": "bucket", "source": "boys_quarters", "beneficiary": "me"}
+    ]
+    assert frames_read(house, "switch off the BQ light", "ese") == [
+        {"frame": "OPERATING", "device": "bq_light", "state": "off"}
+    ]
+    assert frames_read(family, "take the newspaper to the LR", "mark") == [
+        {"frame": "BRINGING", "theme": "newspaper", "goal": "living_room"}
     ]
