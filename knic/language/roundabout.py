@@ -62,7 +62,7 @@ _LET_BE = re.compile(
 )
 _WANTS_TO = re.compile(
     r"[,.;!]\s*(?:[\w']+\s+){0,2}?(?:wants|needs|would like|is wanting|is trying|'s trying|is going|'s going)"
-    r"\s+to\s+([a-z]+)\b[^,.;!?]*",
+    r"\s+to\s+(?P<word>[a-z]+)\b[^,.;!?]*",
     re.I,
 )
 _NOT_SEEN = re.compile(
@@ -134,8 +134,8 @@ _AWAY_TO = re.compile(
     r"(^|[.!?,;]\s*|\band\s+)away\s+(?:(?:up|down|over|out|in|back|round)\s+)?(?=to\b)", re.I
 )
 _FOR_WHAT = re.compile(
-    r"(\b(?:to|on|onto|in|into|at)\s+(?:the|my|our|your|his|her)\s+[\w' -]+?)\s+for\s+"
-    r"(?:the|a|an|my|our|some|your|his|her|their)\s+([a-z]+)(?=\s*(?:$|[,.;!?]))",
+    r"(?P<kept>\b(?:to|on|onto|in|into|at)\s+(?:the|my|our|your|his|her)\s+[\w' -]+?)\s+for\s+"
+    r"(?:the|a|an|my|our|some|your|his|her|their)\s+(?P<word>[a-z]+)(?=\s*(?:$|[,.;!?]))",
     re.I,
 )
 _BEFORE_YOU_GO = re.compile(
@@ -153,9 +153,7 @@ def roundabout_said(text: str, vocabulary: Vocabulary, unknown: Callable[[str], 
     text = _FROM_IN.sub("from ", _LIE_OF_LAND.sub("", text))
     text = _PLACEHOLDER.sub("", text)
     text = _LET_BE.sub(r"set \1 to ", text)
-    for reason in list(_WANTS_TO.finditer(text))[::-1]:  # "..., Tadhg wants to sleep": why, not what to do
-        if unknown(reason.group(1).lower()):
-            text = text[: reason.start()] + text[reason.end() :]
+    text = _why_dropped(_WANTS_TO, text, unknown)  # "..., Tadhg wants to sleep": why, not what to do
     text = _LEFT_WHERE.sub("where is ", _NOT_SEEN.sub(r"\1have you seen", text))
     text = _A_HAND.sub("", _WOULD_HAVE.sub(_had, text))
     text = _ASKED_AGAIN.sub(lambda m: "bring me" + m.group("rest"), text)
@@ -165,11 +163,19 @@ def roundabout_said(text: str, vocabulary: Vocabulary, unknown: Callable[[str], 
     text = _GET_SWITCHED.sub(lambda m: _MADE_SO[m.group(2).lower()].format(m.group(1)), text)
     text = _BEFORE_YOU_GO.sub("", _GO_AND.sub("", text))
     text = _AWAY_TO.sub(r"\1go ", _OVER_BESIDE.sub("over to", text))
-    for purpose in list(_FOR_WHAT.finditer(text))[::-1]:  # "... to the kitchen for the tea": why
-        if unknown(purpose.group(2).lower()):
-            text = text[: purpose.start()] + purpose.group(1) + text[purpose.end() :]
+    text = _why_dropped(_FOR_WHAT, text, unknown)  # "... to the kitchen for the tea": why
     text = _THROWN_OVER.sub(r"\1\2 to", text)
     return _switched_after(_of_someone(text, vocabulary, unknown), vocabulary)
+
+
+def _why_dropped(pattern: re.Pattern[str], text: str, unknown: Callable[[str], bool]) -> str:
+    """``text`` without each match of ``pattern`` whose group ``word`` the robot does not know, but for its
+    group ``kept`` if it has one."""
+    for match in list(pattern.finditer(text))[::-1]:
+        if unknown(match.group("word").lower()):
+            kept = match.groupdict().get("kept") or ""
+            text = text[: match.start()] + kept + text[match.end() :]
+    return text
 
 
 def _switched_after(text: str, vocabulary: Vocabulary) -> str:
