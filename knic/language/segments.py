@@ -138,11 +138,15 @@ def statements_dropped(
 
 
 def _stated(said: list[Chunk]) -> bool:
-    """Whether a segment says something unknown is somewhere or something ("the sun is in my eyes") and asks
-    for nothing."""
-    return not any(c.kind == "verb" for c in said) and any(
-        a.kind == "unknown" and b.kind == "unknown" and b.text in _COPULAS for a, b in pairwise(said)
-    )
+    """Whether a segment says something unknown is somewhere or something ("the sun is in my eyes"), or where
+    or how a person is ("take the cooler to the den, keoni is sleeping on the chaise lounge", "..., mateo is
+    in the kitchen"), and asks for nothing."""
+    if any(c.kind == "verb" for c in said):
+        return False
+    person = bool(said) and said[0].kind == "entity" and all(t.type == "person" for t in said[0].terms)
+    if person and len(said) > 1 and said[1].kind == "unknown" and said[1].text in _COPULAS:
+        return True
+    return any(a.kind == "unknown" and b.kind == "unknown" and b.text in _COPULAS for a, b in pairwise(said))
 
 
 def operates_it(segment: Sequence[str], chunks: Callable[[Sequence[str]], list[Chunk]]) -> bool:

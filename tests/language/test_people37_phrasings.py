@@ -25,7 +25,10 @@ got wrong, each tried in the ERL apartment as well:
 * spoken punctuation and Spanish are read before anything else, so a remark after a spoken "comma" is
   talk as after a typed one ("..., comma Mateo sleeps on the sofa bed period"; ``understanding.py``);
 * "the light in the dining room" where the room's only light is a dimmer not called a light (a chandelier)
-  and a thing elsewhere is called a light too (a flashlight): that dimmer (``knic.language.places``).
+  and a thing elsewhere is called a light too (a flashlight): that dimmer (``knic.language.places``);
+* where or how a person is, said beside a request ("take the cooler to the den, Keoni is sleeping on the
+  chaise lounge", "bring me the apple, tracy is in the bedroom"), asks nothing: talk, unless a pronoun of
+  the request points back to it (``knic.language.segments``).
 """
 
 from __future__ import annotations
@@ -184,6 +187,10 @@ def test_someone_unnamed_given_a_thing_is_refused_in_the_apartment(vocabulary: V
             [{"frame": "BRINGING", "theme": "cardboard_box", "goal": "bedroom"}],
         ),
         ("bring me el control comma please", [{"frame": "BRINGING", "theme": "remote", "beneficiary": "me"}]),
+        (
+            "bring me the apple, tracy is in the bedroom",
+            [{"frame": "BRINGING", "theme": "apple", "beneficiary": "me"}],
+        ),
     ],
 )
 def test_read_in_the_apartment(vocabulary: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
@@ -270,6 +277,11 @@ def test_read_in_the_apartment(vocabulary: Vocabulary, text: str, frames: list[d
             "Bring me el control del TV, the novela is starting",
             "mirta",
             [{"frame": "BRINGING", "theme": "tv_remote", "beneficiary": "me"}],
+        ),
+        (
+            "Take the cooler to the den, Keoni is sleeping on the chaise lounge",
+            "dana",
+            [{"frame": "BRINGING", "theme": "cooler", "goal": "den"}],
         ),
         (
             "Take the cooler to the den comma Keoni sleeps on the chaise lounge period",
