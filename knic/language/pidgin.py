@@ -18,7 +18,9 @@ Y", "bring come X"):
   is "help me switch on the fan";
 * the particles of Nigerian English and Pidgin that ask nothing ("oya", "o", "sha", "jare", "abi", "ehen",
   "shey", Yoruba "e jo" for "please", "omo mi", "my child" said to the listener) are dropped;
-* "small" said last after a device is "a bit" ("open the curtain small": how far?).
+* "small" said last after a device is "a bit" ("open the curtain small": how far?);
+* "light" for the mains power, said bare after taking or bringing it or opening a remark ("NEPA has taken
+  light again", "light don go", "there is no light"): "power", no device to ask about.
 """
 
 from __future__ import annotations
@@ -71,6 +73,7 @@ def pidgin_words(tokens: list[str]) -> list[str]:
         words = ["go", "to", *words[1:]]
     if words[:1] == ["where"] and "dey" in words[1:]:  # "where my sunglasses dey": where is
         words = ["where", "is", *[w for w in words[1:] if w != "dey"]]
+    words = _power_said(words)
     out: list[str] = []
     verb = ""  # the last verb of carrying, putting or working said
     for i, word in enumerate(words):
@@ -125,4 +128,31 @@ def _yoruba_dropped(tokens: list[str]) -> list[str]:
             continue
         out.append(tokens[i])
         i += 1
+    return out
+
+
+#: verbs after which a bare "light" is the mains power ("NEPA has taken light", "they have brought light")
+_POWER_VERBS = frozenset(
+    {"take", "takes", "took", "taken", "bring", "brings", "brought", "restore", "restored"}
+)
+#: what may follow that "light": the stretch ends, or says when
+_AFTER_POWER = frozenset(
+    {"", "again", "since", "now", "today", "yesterday", "o", "for", "this", "at", "finally"}
+)
+#: what follows "light" opening a stretch when it is the power ("light don go", "light has gone")
+_POWER_GONE = frozenset({"don", "has", "is", "came", "come", "went", "just"})
+
+
+def _power_said(words: list[str]) -> list[str]:
+    """Nigerian English "light" for the mains power, said bare after taking or bringing it ("NEPA has taken
+    light again") or opening a remark ("light don go", "light has come back"): "power", no device."""
+    out = list(words)
+    for i, word in enumerate(words):
+        if word != "light":
+            continue
+        nxt = words[i + 1] if i + 1 < len(words) else ""
+        taken = i > 0 and words[i - 1] in _POWER_VERBS and nxt in _AFTER_POWER
+        gone = i == 0 and nxt in _POWER_GONE and len(words) > 2
+        if taken or gone or (i > 0 and words[i - 1] == "no" and nxt in _AFTER_POWER):
+            out[i] = "power"
     return out

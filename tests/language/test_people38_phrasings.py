@@ -13,6 +13,8 @@ tried with sentences of its own in that house, in the family house of people24 o
   the X"; the particles "oya", "o", "sha", "jare", "abi", "ehen" and Yoruba "e jo", "omo mi" dropped; "small"
   said last after a device is "a bit"; "on it" and "off it" opening a stretch switch it ("is the security
   light off? please on it"), and "help me on the fan" names the fan the home lacks (``knic.language.pidgin``);
+* Nigerian English "light" for the mains power, bare after taking or bringing it or opening a remark ("NEPA
+  has taken light again", "light don go"): no device to ask about (``knic.language.pidgin``);
 * a two-word room's initials name it ("the BQ", the boys' quarters; "the LR"), unless they spell a word
   (``knic.language.shortnames``);
 * an interruption set off by two dashes where the sentence broke off, or that exclaims or asks ("bring me
@@ -365,3 +367,15 @@ def test_a_room_called_by_its_initials(house: Vocabulary, family: Vocabulary) ->
     assert frames_read(family, "take the newspaper to the LR", "mark") == [
         {"frame": "BRINGING", "theme": "newspaper", "goal": "living_room"}
     ]
+
+
+def test_light_for_the_mains_power(house: Vocabulary, vocabulary: Vocabulary) -> None:
+    result = understand("Ah, NEPA has taken light again", house, speaker="funmilayo")
+    assert not result.accepted and not result.question and "action" in result.reason
+    assert frames_read(house, "light has gone, bring the torchlight", "musa") == [
+        {"frame": "BRINGING", "theme": "torchlight", "beneficiary": "me"}
+    ]
+    result = understand("there is no light since morning", vocabulary, speaker="annie")
+    assert not result.accepted and not result.question
+    # a light said with its article is still a device
+    assert_asked(vocabulary, "turn on the light", "light")
