@@ -30,6 +30,8 @@ understanding.understand` (people36's voices first, each rule as general as the 
   vanity table and the loft bedroom light off"): "and turn the landing light off";
 * what a place is gone to or a thing taken there for, said last with a word the robot does not know ("take
   me over to the kitchen for the tea", "bring the frisbee out to the garden for the kids"): why, not what;
+* a place said first, then asked about with "it" or "there" ("the locker beside the double bed, is my hand
+  cream on it?", "the locker in our bedroom, are the keys in there?"): asked of that place;
 * "before you go", "before you leave", said last: when, not where to ("feed the dog there before you go" is
   no motion without a place);
 * "go out and wait by the trough", "run up and turn on the light": the second verb says what to do and
@@ -138,6 +140,11 @@ _FOR_WHAT = re.compile(
     r"(?:the|a|an|my|our|some|your|his|her|their)\s+(?P<word>[a-z]+)(?=\s*(?:$|[,.;!?]))",
     re.I,
 )
+_PLACE_FIRST = re.compile(
+    r"^(\s*)((?:the|my|our|your|his|her)\s+[^,.;!?]+?)\s*[,:;-]+\s*(is|are)\s+([^,.;!?]+?)\s+"
+    r"(on|in|inside|under|at)\s+(?:it|there|them)\s*(?=[?.!]|$)",
+    re.I,
+)
 _BEFORE_YOU_GO = re.compile(
     r",?\s+before\s+(?:you|ye)\s+(?:go|leave|head\s+(?:off|out)|go\s+out)\s*(?=$|[.!?])", re.I
 )
@@ -164,6 +171,7 @@ def roundabout_said(text: str, vocabulary: Vocabulary, unknown: Callable[[str], 
     text = _BEFORE_YOU_GO.sub("", _GO_AND.sub("", text))
     text = _AWAY_TO.sub(r"\1go ", _OVER_BESIDE.sub("over to", text))
     text = _why_dropped(_FOR_WHAT, text, unknown)  # "... to the kitchen for the tea": why
+    text = _PLACE_FIRST.sub(r"\1\3 \4 \5 \2", text)
     text = _THROWN_OVER.sub(r"\1\2 to", text)
     return _switched_after(_of_someone(text, vocabulary, unknown), vocabulary)
 

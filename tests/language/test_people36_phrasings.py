@@ -16,7 +16,8 @@ got wrong, each tried in the ERL apartment as well (``knic.language.roundabout``
 * a café's ordering: "can I get the lamp on", "could I get the velux blind half open", "could I get the
   holdall put on the bed", "can I get you to";
   "... and the loft bedroom light off" after a placing; "the whole way" is all the way (``commands.yaml``);
-* "take me over to the kitchen for the tea": why, not what;
+* "take me over to the kitchen for the tea": why, not what; "the locker beside the double bed, is my hand
+  cream on it?": asked of that place;
 * "go out and wait by the trough": the waiting; "over beside the stove": to it; "away up to the loft
   landing and ...": "go to"; "throw the sliotar over to Sadhbh": to her; "wee Sadhbh":
   Sadhbh ("wee" is "little", "yous" is "you": ``commands.yaml``);
@@ -582,3 +583,31 @@ def test_what_a_place_is_gone_to_for(
     """ "... to the kitchen for the tea": why, said with a word the robot does not know; a person it knows
     said so is still whom for."""
     assert _said(barn, vocabulary, where, text, "tadhg") == frames
+
+
+@pytest.mark.parametrize(
+    ("where", "text", "frames"),
+    [
+        (
+            "barn",
+            "The locker beside the double bed, is my hand cream on it?",
+            [{"frame": "SEARCHING", "theme": "hand_cream", "ground": "bedside_locker"}],
+        ),
+        (
+            "erl",
+            "the table by the bed, is the apple on it?",
+            [{"frame": "SEARCHING", "theme": "apple", "ground": "bedside_table"}],
+        ),
+        (
+            "erl",
+            "the kitchen, is tracy in there?",
+            [{"frame": "SEARCHING", "theme": "tracy", "ground": "kitchen"}],
+        ),
+    ],
+)
+def test_a_place_said_first_then_asked_about(
+    barn: Vocabulary, vocabulary: Vocabulary, where: str, text: str, frames: list[dict[str, str]]
+) -> None:
+    """ "the locker beside the double bed, is my hand cream on it?": asked of the place said first, however it
+    was told."""
+    assert _said(barn, vocabulary, where, text, "roisin") == frames
