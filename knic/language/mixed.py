@@ -15,6 +15,9 @@ the request is read (used by :meth:`knic.language.reader.Reader.read`):
   kitchen's "eighty-six", take off; :attr:`CommandLanguage.verb_numbers`);
 * "den" for "then" before a verb, as Hawaiian Pidgin and Caribbean English say it ("take da chairs from da
   closet, den put 'em by da table"); after a determiner or a preposition it is the room ("to da den");
+* "you'll" or "you will" right before a verb that carries, puts or switches, as New York English says a
+  request (Yiddish "du vest mir brengen"; "from the Frigidaire you'll bring me the orange juice"): the verb
+  alone, so what is said before it (where from) stays the request's; "you'll be taking ..." is no such;
 * "stay" for "is" after a person's name or "you", as Hawaiian Pidgin says it ("Mateo stay in da kitchen?",
   "go check if Lucia stay in the guest room", "Lucia stay sleeping"; "where stay" is a search of its own):
   said of someone, it asks nothing of the robot's staying.
@@ -54,6 +57,9 @@ def mixed_said(text: str, language: CommandLanguage, vocabulary: Vocabulary | No
         language.spanish_after_articles,
     )
     text = _then_said(text, _verb_starts(language))
+    text = _YOU_LL.sub(
+        lambda m: "" if m.group(1).lower() in _verb_starts(language, _ASKING) else m.group(0), text
+    )
     return _stay(vocabulary).sub(r"\1is", text)
 
 
@@ -68,9 +74,17 @@ def _stay(vocabulary: Vocabulary | None) -> re.Pattern[str]:
     return re.compile(rf"\b((?:{names})\s+)stay\b(?!\s+(?:put|here|there|with|for)\b)", re.IGNORECASE)
 
 
-def _verb_starts(language: CommandLanguage) -> frozenset[str]:
-    """The first words of the command language's verbs ("put", "bring", "turn", ...)."""
-    return frozenset(p.split()[0] for verb in language.verbs for p in verb.phrases)
+def _verb_starts(language: CommandLanguage, frames: frozenset[str] | None = None) -> frozenset[str]:
+    """The first words of the command language's verbs ("put", "bring", "turn", ...), of those that may start
+    one of ``frames`` when given."""
+    verbs = [v for v in language.verbs if frames is None or frames & set(v.frames)]
+    return frozenset(p.split()[0] for verb in verbs for p in verb.phrases)
+
+
+#: "you'll" said before a verb (the verb kept)
+_YOU_LL = re.compile(r"\byou(?:'ll|\s+will)\s+(?=([a-z]+)\b)", re.IGNORECASE)
+#: the frames of the verbs a request is said with after "you'll" ("you'll bring me ...", not "you'll find")
+_ASKING = frozenset({"BRINGING", "PLACING", "OPERATING", "TAKING"})
 
 
 def _then_said(text: str, verbs: frozenset[str]) -> str:

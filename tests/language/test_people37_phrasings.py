@@ -26,6 +26,9 @@ got wrong, each tried in the ERL apartment as well:
   talk as after a typed one ("..., comma Mateo sleeps on the sofa bed period"; ``understanding.py``);
 * "the light in the dining room" where the room's only light is a dimmer not called a light (a chandelier)
   and a thing elsewhere is called a light too (a flashlight): that dimmer (``knic.language.places``);
+* "you'll bring me" (New York English, after Yiddish) is "bring me", so where from said first stays the
+  request's ("from the Frigidaire you'll bring me the orange juice"); "you'll be putting ..." is left to the
+  reading of such questions (``knic.language.mixed``);
 * where or how a person is, said beside a request ("take the cooler to the den, Keoni is sleeping on the
   chaise lounge", "bring me the apple, tracy is in the bedroom"), asks nothing: talk, unless a pronoun of
   the request points back to it (``knic.language.segments``).
@@ -188,6 +191,10 @@ def test_someone_unnamed_given_a_thing_is_refused_in_the_apartment(vocabulary: V
         ),
         ("bring me el control comma please", [{"frame": "BRINGING", "theme": "remote", "beneficiary": "me"}]),
         (
+            "from the kitchen table you'll bring me the apple",
+            [{"frame": "BRINGING", "theme": "apple", "source": "kitchen_table", "beneficiary": "me"}],
+        ),
+        (
             "bring me the apple, tracy is in the bedroom",
             [{"frame": "BRINGING", "theme": "apple", "beneficiary": "me"}],
         ),
@@ -277,6 +284,16 @@ def test_read_in_the_apartment(vocabulary: Vocabulary, text: str, frames: list[d
             "Bring me el control del TV, the novela is starting",
             "mirta",
             [{"frame": "BRINGING", "theme": "tv_remote", "beneficiary": "me"}],
+        ),
+        (
+            "From the Frigidaire you'll bring me the orange juice",
+            "murray",
+            [{"frame": "BRINGING", "theme": "orange_juice", "source": "fridge", "beneficiary": "me"}],
+        ),
+        (
+            "you will turn off the den light",
+            "murray",
+            [{"frame": "OPERATING", "device": "den_light", "state": "off"}],
         ),
         (
             "Take the cooler to the den, Keoni is sleeping on the chaise lounge",
