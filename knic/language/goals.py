@@ -81,12 +81,32 @@ def frames_to_goals(
             made = _sourced(frame, vocabulary, frame.get("theme") or "")
         else:
             made = _frame_goals(frame, vocabulary, speaker, notes if notes is not None else [])
-        for goal in made:
+        for goal in map(lambda made_goal: fitted(made_goal, vocabulary), made):
             validate_goal(goal, vocabulary)
             if goal not in goals:
                 goals.append(goal)
     _check_consistent(goals)
     return goals
+
+
+def fitted(goal: Fact, vocabulary: Vocabulary) -> Fact:
+    """``goal`` as a domain of other predicates says it: the goals above are named as the ERL domain names
+    them, and when the domain lacks the predicate, the one predicate whose parameters take the goal's
+    arguments, in their order or, of two, the other way round, says the same ("bring the teapot to grandpa":
+    ``(has grandpa teapot)`` is ``(handed teapot grandpa)`` in a domain with ``(handed ?i - item ?p -
+    person)``, ``(object_at book lounge)`` its ``(item_at book lounge)``). The goal is unchanged when the
+    domain has its predicate, or none or several others fit (its check then names the predicate missing)."""
+    if goal.predicate in vocabulary.predicates or any(a not in vocabulary.instances for a in goal.args):
+        return goal
+    orders = [goal.args, goal.args[::-1]] if len(goal.args) == 2 else [goal.args]
+    fits = [
+        Fact(name, args)
+        for name, signature in vocabulary.predicates.items()
+        for args in orders
+        if len(signature) == len(args)
+        and all(vocabulary.is_of(arg, kind) for arg, (_, kind) in zip(args, signature, strict=True))
+    ]
+    return fits[0] if len(fits) == 1 else goal
 
 
 def validate_goal(goal: Fact, vocabulary: Vocabulary) -> None:

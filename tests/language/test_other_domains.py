@@ -1,0 +1,79 @@
+"""Goals in a domain whose predicates are named otherwise than the ERL domain's
+(``tests/fixtures/language/delivery``: ``(handed ?i - item ?p - person)``, ``(item_at ?i - item ?l - room)``):
+each goal is said with the one predicate that takes its arguments (``knic.language.goals.fitted``), and the
+planner plans it."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from knic.language import understand
+from knic.language.goals import fitted
+from knic.language.vocabulary import Vocabulary
+from knic.language.world import read_vocabulary
+from knowledge_base import Fact
+
+FOLDER = Path(__file__).resolve().parents[1] / "fixtures" / "language" / "delivery"
+
+
+@pytest.fixture(scope="module")
+def delivery() -> Vocabulary:
+    return read_vocabulary(FOLDER / "domain.pddl", FOLDER / "problem.pddl")
+
+
+@pytest.mark.parametrize(
+    ("said", "goal"),
+    [
+        ("bring the teapot to grandpa", "(handed teapot grandpa)"),
+        ("could you give nurse joy the book", "(handed book nurse_joy)"),
+        ("fetch me the remote control", "(handed remote_control grandpa)"),
+        ("take the book to the lounge", "(item_at book lounge)"),
+        ("go to the study", "(robot_at tiago study)"),  # the domain has this one
+        ("pick up the teapot", "(holding tiago teapot)"),
+    ],
+)
+def test_each_goal_is_said_with_the_predicate_that_takes_its_arguments(
+    delivery: Vocabulary, said: str, goal: str
+) -> None:
+    assert [str(g) for g in understand(said, delivery, speaker="grandpa").goals] == [goal]
+
+
+def test_a_goal_no_predicate_takes_is_refused_by_name(delivery: Vocabulary) -> None:
+    found = understand("find the book", delivery, speaker="grandpa")
+    assert not found.accepted and "no predicate 'reported'" in (found.reason or "")
+
+
+def test_a_goal_two_predicates_take_is_left_as_said(tmp_path: Path) -> None:
+    domain = (FOLDER / "domain.pddl").read_text(encoding="utf-8")
+    domain = domain.replace("(free ?r - robot))", "(free ?r - robot) (admired ?p - person ?i - item))")
+    (tmp_path / "domain.pddl").write_text(domain, encoding="utf-8")
+    vocabulary = read_vocabulary(tmp_path / "domain.pddl", FOLDER / "problem.pddl")
+    assert fitted(Fact("has", ("grandpa", "teapot")), vocabulary) == Fact("has", ("grandpa", "teapot"))
+    found = understand("bring the teapot to grandpa", vocabulary, speaker="grandpa")
+    assert not found.accepted and "no predicate 'has'" in (found.reason or "")
+
+
+def test_the_erl_goals_keep_their_own_predicates(vocabulary: Vocabulary) -> None:
+    assert fitted(Fact("has", ("annie", "mug")), vocabulary) == Fact("has", ("annie", "mug"))
+
+
+def test_the_planner_plans_the_goal_said_in_the_domains_words(delivery: Vocabulary, tmp_path: Path) -> None:
+    from unified_planning.io import PDDLReader
+
+    from planner.general import solve_problem
+    from planner.plan import PlanStatus
+
+    goals = understand(
+        "bring the teapot to grandpa, then take the book to the lounge", delivery, speaker="grandpa"
+    ).goals
+    assert [str(g) for g in goals] == ["(handed teapot grandpa)", "(item_at book lounge)"]
+    problem = (FOLDER / "problem.pddl").read_text(encoding="utf-8")
+    head = problem[: problem.index("(:goal")]
+    (tmp_path / "problem.pddl").write_text(f"{head}(:goal (and {' '.join(map(str, goals))})))\n", "utf-8")
+    parsed = PDDLReader().parse_problem(str(FOLDER / "domain.pddl"), str(tmp_path / "problem.pddl"))
+    result = solve_problem(parsed, engine="fast-downward")
+    assert result.status == PlanStatus.SOLVED
+    assert [step.name for step in result.plan].count("give") == 1
+    assert "(drop tiago book lounge)" in [str(step) for step in result.plan]
