@@ -12,9 +12,11 @@ understanding.understand` (people36's voices first, each rule as general as the 
   ("..., Sekuru Tadhg wants to sleep", "..., she's trying to read"): the reason, asked of nobody;
 * a negative question as a request (Irish and older speakers: "you didn't see my watch anywhere?", "you
   wouldn't have seen the keys?"): "have you seen ...";
-* "did anyone see my stick?", "has anybody seen the keys?": "have you seen"; "I don't know where I left my
-  glasses": "where is my glasses"; "you wouldn't have my slippers there?", "would you have the paper
-  handy?", "would yous have a wee bit of brown bread going" (Irish English: can you give me): "bring me";
+* "did anyone see my stick?", "has anybody seen the keys?", "has nobody seen my glasses?": "have you seen";
+  "I'm after leaving the tablet in the bedroom" (Irish English, just now): "I left ..."; "I don't know
+  where I left my glasses": "where is my glasses"; "you wouldn't have my slippers there?", "would you have
+  the paper handy?", "would yous have a wee bit of brown bread going" (Irish English: can you give me):
+  "bring me";
 * "give us a hand and bring ...": the bringing;
 * asking again ("amn't I after asking you for the beads", "I've asked you for the post twice now"): "bring
   me ...";
@@ -69,10 +71,11 @@ _WANTS_TO = re.compile(
 )
 _NOT_SEEN = re.compile(
     r"(^|[.?!,]\s*)(?:(?:you|ye)\s+(?:didn't|did not|never|wouldn't have|would not have|haven't|have not|"
-    r"wouldn't|would not)|(?:did|has|have)\s+(?:anyone|anybody|someone|somebody)|would\s+(?:you|ye)\s+have)"
-    r"\s+(?:see|seen)\b",
+    r"wouldn't|would not)|(?:did|has|have)\s+(?:anyone|anybody|someone|somebody)|would\s+(?:you|ye)\s+have|"
+    r"(?:(?:did|has|have)\s+)?(?:nobody|no one|no-one))\s+(?:see|seen|saw)\b",
     re.I,
 )
+_AFTER_LEAVING = re.compile(r"\b(?:i'm|i am)\s+(?:only\s+|just\s+)?after\s+leaving\b", re.I)
 _LEFT_WHERE = re.compile(
     r"\bi\s+(?:don't|do not|can't|cannot|can not)\s+(?:know|remember|think)\s+where\s+i\s+"
     r"(?:left|put|had)\s+",
@@ -162,6 +165,7 @@ def roundabout_said(text: str, vocabulary: Vocabulary, unknown: Callable[[str], 
     text = _LET_BE.sub(r"set \1 to ", text)
     text = _why_dropped(_WANTS_TO, text, unknown)  # "..., Tadhg wants to sleep": why, not what to do
     text = _LEFT_WHERE.sub("where is ", _NOT_SEEN.sub(r"\1have you seen", text))
+    text = _AFTER_LEAVING.sub("I left", text)
     text = _A_HAND.sub("", _WOULD_HAVE.sub(_had, text))
     text = _ASKED_AGAIN.sub(lambda m: "bring me" + m.group("rest"), text)
     text = _GOOD_ONE.sub("", _WITH_IN_IT.sub("", text))

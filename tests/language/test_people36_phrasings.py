@@ -8,14 +8,15 @@ got wrong, each tried in the ERL apartment as well (``knic.language.roundabout``
 * "let it be at seventy", "make the light to be at forty": set it to that level;
 * what another person wants to do, said after a request with a verb the robot does not know ("...,
   Sekuru Tadhg wants to sleep"): a reason;
-* negative questions as requests ("you didn't see my pocket watch anywhere?", "did anyone see my stick?"):
-  "have you seen"; "I don't know where I left my glasses": where are they; "you wouldn't have my slippers
-  there?", "would yous have a wee bit of brown bread going": bring them; "give us a hand and": dropped;
+* negative questions as requests ("you didn't see my pocket watch anywhere?", "did anyone see my stick?",
+  "has nobody seen my glasses?"): "have you seen"; "I'm after leaving the tablet in the bedroom": I left it
+  there; "I don't know where I left my glasses": where are they; "you wouldn't have my slippers there?",
+  "would yous have a wee bit of brown bread going": bring them; "give us a hand and": dropped;
 * asking again ("amn't I after asking you for the rosary beads twice now"): "bring me";
 * "the blue mug with the tea in it": the mug; "like a good man": dropped;
 * a café's ordering: "can I get the lamp on", "could I get the velux blind half open", "could I get the
-  holdall put on the bed", "can I get you to";
-  "... and the loft bedroom light off" after a placing; "the whole way" is all the way (``commands.yaml``);
+  holdall put on the bed", "can I get you to"; "... and the loft bedroom light off" after a placing; "the
+  whole way" is all the way (``commands.yaml``);
 * "take me over to the kitchen for the tea": why, not what; "the locker beside the double bed, is my hand
   cream on it?": asked of that place;
 * "go out and wait by the trough": the waiting; "over beside the stove": to it; "away up to the loft
@@ -354,6 +355,18 @@ def test_a_thing_of_the_world_said_of_first_is_still_acted_on(vocabulary: Vocabu
         ("barn", "Did anyone see my walking stick?", [{"frame": "SEARCHING", "theme": "walking_stick"}]),
         ("erl", "has anybody seen the remote?", [{"frame": "SEARCHING", "theme": "remote"}]),
         ("erl", "would you have seen my glasses?", [{"frame": "SEARCHING", "theme": "glasses"}]),
+        ("erl", "has nobody seen my glasses?", [{"frame": "SEARCHING", "theme": "glasses"}]),
+        ("erl", "nobody saw the remote?", [{"frame": "SEARCHING", "theme": "remote"}]),
+        (
+            "barn",
+            "I'm after leaving my cap beyond in the snug, bring it out to me",
+            [{"frame": "BRINGING", "theme": "flat_cap", "source": "snug", "beneficiary": "me"}],
+        ),
+        (
+            "erl",
+            "I'm after leaving the tablet in the bedroom, bring it to me",
+            [{"frame": "BRINGING", "theme": "tablet", "source": "bedroom", "beneficiary": "me"}],
+        ),
         ("barn", "I don't know where I left my glasses", [{"frame": "SEARCHING", "theme": "tadhg_glasses"}]),
         ("erl", "I can't remember where I put the tablet", [{"frame": "SEARCHING", "theme": "tablet"}]),
         (
