@@ -12,6 +12,9 @@
   repair (:func:`dashed_asides_dropped`, on the text);
 * a title said before a person's name ("Mama Adunni", "Oga Olumide", "Aunty Funmilayo", "Pastor Ikenna",
   "my sister Funmilayo") is dropped: the name says who (:func:`spoken_to`);
+* a stretch that calls someone by name or waits ("wait", "hold on", "hello"), cutting into a sentence broken
+  off after an article or a preposition that goes on after it ("put the mug on the, Jack stop it, on the
+  dining table"), is dropped too (:func:`spoken_to`);
 * a person's name said alone, then a question to "you" ("Ese, have you seen it? Robbie, find it"), is said
   to that person, when the command goes on to ask the robot something: dropped (:func:`spoken_to`);
 * "what is inside the deep freezer? check if the chicken is there", "the deep freezer, is the chicken
@@ -27,7 +30,7 @@ import re
 from knic.language.vocabulary import Vocabulary
 
 #: a pair of dashes (typographic, or a hyphen with spaces around it) and what they set off
-_DASHED = re.compile(r"\s*(?:—|–|\s-\s)\s*([^—–]+?)\s*(?:—|–|\s-\s)\s*(?=\S)")
+_DASHED = re.compile(r"\s*(?:—|–|\s-{1,2}\s|--)\s*([^—–]+?)\s*(?:—|–|\s-{1,2}\s|--)\s*(?=\S)")
 #: words that open a correction
 _REPAIR = r"(?:sorry|no|i mean|actually|rather|or rather|i meant|er|um)"
 #: what a kept aside opens with, after any word of repair: a description of a thing
@@ -58,6 +61,8 @@ _BROKEN_AFTER = frozenset(
 )
 #: a name called at the start of an aside, written with its capital ("Tobi, stop jumping on the sofa")
 _CALLED = re.compile(r"^[A-Z][a-z]+,")
+#: words that open a stretch cutting into a sentence to wait or to answer someone
+_WAITING = frozenset({"wait", "hold", "hang", "hello", "hi", "yes", "coming"})
 #: titles said before a name
 _TITLES = frozenset(
     {"mr", "mrs", "miss", "ms", "dr", "aunty", "auntie", "aunt", "uncle", "mama", "papa", "mummy", "daddy"}
@@ -98,6 +103,8 @@ def spoken_to(segments: list[list[str]], vocabulary: Vocabulary) -> list[list[st
         if skip:
             skip = False
             continue
+        if _cut_in(out, i, kept, firsts):  # "put the mug on the, Jack stop it, on the dining table"
+            continue
         nxt = out[i + 1] if i + 1 < len(out) else []
         named = len(segment) == 1 and segment[0] in firsts
         if named and tuple(nxt[:2]) in _ASKED and i + 2 < len(out):
@@ -105,6 +112,16 @@ def spoken_to(segments: list[list[str]], vocabulary: Vocabulary) -> list[list[st
             continue
         kept.append(_why_said(segment) if i + 1 < len(out) else segment)
     return _there_said(kept or out, vocabulary)
+
+
+def _cut_in(segments: list[list[str]], i: int, kept: list[list[str]], firsts: set[str]) -> bool:
+    """Whether the stretch at ``i`` cuts into a sentence broken off after an article or a preposition, to call
+    someone or to wait ("put the mug on the, Jack stop it, on the dining table", "switch on the, wait, Tobi
+    come here, switch on the chandelier"), the sentence going on after it."""
+    if not kept or not kept[-1] or kept[-1][-1] not in _BROKEN_AFTER or i + 1 >= len(segments):
+        return False
+    said = segments[i]
+    return bool(said) and ((said[0] in firsts and not said[0].endswith("'s")) or said[0] in _WAITING)
 
 
 def _there_said(segments: list[list[str]], vocabulary: Vocabulary) -> list[list[str]]:

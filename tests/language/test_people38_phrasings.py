@@ -19,7 +19,9 @@ tried with sentences of its own in that house, in the family house of people24 o
   (``knic.language.shortnames``);
 * an interruption set off by two dashes where the sentence broke off, or that exclaims or asks ("bring me
   the — Tobi, leave that thing! — the palm oil"), or that calls someone by name ("— Tobi, stop jumping on the
-  sofa —"), is dropped; a description or a correction between dashes
+  sofa —"), is dropped, with dashes typed as "--" too; so is a stretch between commas that calls someone or
+  waits, cutting into a sentence broken off after an article ("put the mug on the, Jack stop it, on the
+  dining table"); a description or a correction between dashes
   is kept (``knic.language.asides``);
 * a title before a person's name ("Mama Adunni's room", "Oga Olumide", "my sister Funmilayo", "Aunty
   Tracy") is dropped; "Ese, have you seen it?" before a request is said to Ese; "why is the X still off?"
@@ -379,3 +381,32 @@ def test_light_for_the_mains_power(house: Vocabulary, vocabulary: Vocabulary) ->
     assert not result.accepted and not result.question
     # a light said with its article is still a device
     assert_asked(vocabulary, "turn on the light", "light")
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        (
+            "bring me the -- Jack, stop that! -- the remote",
+            [{"frame": "BRINGING", "theme": "remote", "beneficiary": "me"}],
+        ),
+        (
+            "put the mug on the, Jack stop it, on the dining table",
+            [{"frame": "PLACING", "theme": "mug", "goal": "dining_table"}],
+        ),
+        (
+            "bring me the, hold on, the remote",
+            [{"frame": "BRINGING", "theme": "remote", "beneficiary": "me"}],
+        ),
+    ],
+)
+def test_a_sentence_cut_into_in_the_erl_apartment(
+    vocabulary: Vocabulary, text: str, frames: list[dict[str, str]]
+) -> None:
+    assert frames_read(vocabulary, text) == frames
+
+
+def test_a_sentence_cut_into_twice(house: Vocabulary) -> None:
+    assert frames_read(
+        house, "Switch on the, wait, Tobi come here, switch on the chandelier", "funmilayo"
+    ) == [{"frame": "OPERATING", "device": "chandelier", "state": "on"}]
