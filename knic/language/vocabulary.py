@@ -21,6 +21,7 @@ from typing import Any, Protocol
 from core.errors import LanguageError
 from core.inputs import read_yaml
 from knic.language.decimals import decimals_read, digits_apart, plain_typed
+from knic.language.kinds import aliased
 from knic.language.shortnames import contains, english_nearer, own_phrases, short_names
 
 #: Number words for 0..100, enough for percent levels.
@@ -298,7 +299,7 @@ class Vocabulary:
         #: symbol -> the places (rooms, furniture) the world says it is in or on (furniture_in, object_on,
         #: object_at facts); used to tell "the table in the kitchen" from the other tables.
         self.locations: dict[str, tuple[str, ...]] = {k: tuple(v) for k, v in (locations or {}).items()}
-        self._types = dict(types)
+        self._types = aliased(types)  # a domain's "location" is a room (knic.language.kinds)
         self._instances = dict(instances)
         #: predicate -> ((parameter, type), ...) from the domain; goals are checked against it.
         self.predicates: dict[str, tuple[tuple[str, str], ...]] = dict(predicates or {})

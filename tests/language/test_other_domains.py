@@ -11,6 +11,7 @@ import pytest
 
 from knic.language import understand
 from knic.language.goals import fitted
+from knic.language.kinds import aliased
 from knic.language.vocabulary import Vocabulary
 from knic.language.world import read_vocabulary
 from knowledge_base import Fact
@@ -77,3 +78,62 @@ def test_the_planner_plans_the_goal_said_in_the_domains_words(delivery: Vocabula
     assert result.status == PlanStatus.SOLVED
     assert [step.name for step in result.plan].count("give") == 1
     assert "(drop tiago book lounge)" in [str(step) for step in result.plan]
+
+
+ERRANDS = FOLDER.parent / "errands"
+
+
+@pytest.fixture(scope="module")
+def errands() -> Vocabulary:
+    """A domain whose rooms are ``location``, people ``human`` and things ``thing``."""
+    return read_vocabulary(ERRANDS / "domain.pddl", ERRANDS / "problem.pddl")
+
+
+@pytest.mark.parametrize(
+    ("said", "goal"),
+    [
+        ("bring the coffee mug to ada", "(delivered coffee_mug ada)"),
+        ("go to the garage", "(at_robot pepper garage)"),
+        ("take the wrench to the office", "(thing_at wrench office)"),
+        ("could you fetch the mug for me", "(delivered coffee_mug bram)"),
+        ("pick up the wrench", "(carrying pepper wrench)"),
+    ],
+)
+def test_a_domains_own_names_for_rooms_people_and_things_are_read_as_them(
+    errands: Vocabulary, said: str, goal: str
+) -> None:
+    assert [str(g) for g in understand(said, errands, speaker="bram").goals] == [goal]
+
+
+def test_the_kinds_sit_above_the_domains_types_which_stay_as_written() -> None:
+    types = {"object": None, "location": "object", "waypoint": "location", "human": "object", "room2": None}
+    assert aliased(types) == {
+        "object": None,
+        "location": "room",
+        "room": "object",
+        "waypoint": "location",
+        "human": "person",
+        "person": "object",
+        "room2": None,
+    }
+    erl = {"object": None, "room": "object", "location": "object"}
+    assert aliased(erl) == erl  # the domain names rooms itself: its "location" is something else
+
+
+def test_the_planner_plans_a_command_in_the_errands_domain(errands: Vocabulary, tmp_path: Path) -> None:
+    from unified_planning.io import PDDLReader
+
+    from planner.general import solve_problem
+    from planner.plan import PlanStatus
+
+    goals = understand(
+        "take the wrench to the office and bring ada the coffee mug", errands, speaker="bram"
+    ).goals
+    assert [str(g) for g in goals] == ["(thing_at wrench office)", "(delivered coffee_mug ada)"]
+    problem = (ERRANDS / "problem.pddl").read_text(encoding="utf-8")
+    head = problem[: problem.index("(:goal")]
+    (tmp_path / "problem.pddl").write_text(f"{head}(:goal (and {' '.join(map(str, goals))})))\n", "utf-8")
+    parsed = PDDLReader().parse_problem(str(ERRANDS / "domain.pddl"), str(tmp_path / "problem.pddl"))
+    result = solve_problem(parsed, engine="fast-downward")
+    assert result.status == PlanStatus.SOLVED
+    assert "(put_down pepper wrench office)" in [str(step) for step in result.plan]

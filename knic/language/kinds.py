@@ -1,0 +1,50 @@
+"""The kinds of thing commands name (rooms, furniture, items, people, devices) under the names other domains
+give them.
+
+The reader and the goals ask whether a symbol is a ``room``, an ``item`` or a ``person``: the ERL domain's
+type names. A domain written elsewhere may call its rooms ``location`` and its people ``human``; without this
+its every place was "not a room or a piece of furniture". :func:`aliased` puts the kind above such a type when
+the domain declares no type of the kind's own name, so the domain's types and predicates stay as written.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Mapping
+
+#: each kind a command names, and the type names other domains give it (in the order tried)
+ALIASES: dict[str, tuple[str, ...]] = {
+    "room": ("location", "place", "area", "zone", "waypoint"),
+    "person": ("human", "people", "guest", "resident", "customer"),
+    "item": ("thing", "obj", "physobj", "graspable", "pickable", "movable", "portable"),
+    "furniture": ("surface", "furnishing"),
+    "device": ("appliance", "switchable"),
+}
+
+
+def aliased(types: Mapping[str, str | None]) -> dict[str, str | None]:
+    """``{type: parent type}`` with each kind of :data:`ALIASES` the domain lacks by name put between the
+    domain's types of its other names and their parent (``location - object`` becomes ``location - room``,
+    ``room - object``); a type below another of the same kind's names keeps its parent (``waypoint -
+    location`` stays). Unchanged when the domain names each kind itself or none otherwise."""
+    out = dict(types)
+    for kind, names in ALIASES.items():
+        found = [name for name in names if name in out]
+        if kind in out or not found:
+            continue
+        tops = [name for name in found if not _below(out, name, set(found) - {name})]
+        out[kind] = out[tops[0]]
+        for name in tops:
+            out[name] = kind
+    return out
+
+
+def _below(types: Mapping[str, str | None], name: str, others: set[str]) -> bool:
+    """Whether ``name`` derives from one of ``others``."""
+    seen: set[str] = set()
+    current = types.get(name)
+    while current is not None and current not in seen:
+        if current in others:
+            return True
+        seen.add(current)
+        current = types.get(current)
+    return False
