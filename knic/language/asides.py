@@ -15,6 +15,8 @@
 * a stretch that calls someone by name or waits ("wait", "hold on", "hello"), cutting into a sentence broken
   off after an article or a preposition that goes on after it ("put the mug on the, Jack stop it, on the
   dining table"), is dropped too (:func:`spoken_to`);
+* "Jack said the hallway light should be off", said last: what Jack said, passed on, is the request
+  (:func:`spoken_to`);
 * a person's name said alone, then a question to "you" ("Ese, have you seen it? Robbie, find it"), is said
   to that person, when the command goes on to ask the robot something: dropped (:func:`spoken_to`);
 * "what is inside the deep freezer? check if the chicken is there", "the deep freezer, is the chicken
@@ -108,10 +110,21 @@ def spoken_to(segments: list[list[str]], vocabulary: Vocabulary) -> list[list[st
         nxt = out[i + 1] if i + 1 < len(out) else []
         named = len(segment) == 1 and segment[0] in firsts
         if named and tuple(nxt[:2]) in _ASKED and i + 2 < len(out):
-            skip = True
+            # "Ese, have you seen it?": said to Ese; "Jack, have you seen the remote? ..., find it": the
+            # question names what "it" is, and stays
+            skip = not {"the", "my", "a", "an", "your", "his", "her"} & set(nxt[2:])
             continue
-        kept.append(_why_said(segment) if i + 1 < len(out) else segment)
+        kept.append(_why_said(segment) if i + 1 < len(out) else _told(segment, firsts))
     return _there_said(kept or out, vocabulary)
+
+
+def _told(words: list[str], firsts: set[str]) -> list[str]:
+    """ "Jack said the hallway light should be off": what Jack said is asked of the robot, passed on; the
+    words after "said" are the request (only where they open with "the": "her laptop" needs who said it)."""
+    rest = words[3:] if words[2:3] == ["that"] else words[2:]
+    if words[:1] and words[0] in firsts and words[1:2] in (["said"], ["says"]) and rest[:1] == ["the"]:
+        return rest
+    return words
 
 
 def _cut_in(segments: list[list[str]], i: int, kept: list[list[str]], firsts: set[str]) -> bool:

@@ -10,7 +10,8 @@
   on the dining table; bring it here" says where it is, hedged); "please see to it" after it asks nothing
   more (a device that "should be on" stays a state: no place follows);
 * a purpose said formally after a request, "that the light may enter", "so that we might see": dropped;
-* "let there be light" (Genesis, said in jest or from the pulpit) is "turn on the light".
+* "let there be light" (Genesis, said in jest or from the pulpit) is "turn on the light"; the name a request
+  is made in ("..., in Jesus' name", "in the name of Jesus, ...") is dropped.
 """
 
 from __future__ import annotations
@@ -38,6 +39,7 @@ def register_words(tokens: list[str]) -> list[str]:
     words = tokens[1:] if tokens[:1] == ["fyi"] else tokens  # "FYI the study light is on, switch it off"
     if words[:4] == ["for", "your", "information", *words[3:4]] and len(words) > 3:
         words = words[3:]
+    words = _oath_dropped(words)
     if words[:4] == ["let", "there", "be", "light"]:
         return ["turn", "on", "the", "light", *words[4:]]
     if words[:1] in (["that"], ["so"]) and _PURPOSE & set(words[1:]) and len(words) > 2:
@@ -84,4 +86,15 @@ def _to_be_put(words: list[str]) -> list[str]:
                 and after[1] in _OPENING
             ):
                 return ["put", *words[:i], *words[i + n :]]
+    return words
+
+
+def _oath_dropped(words: list[str]) -> list[str]:
+    """A stretch without the name it is asked in, said last ("..., in Jesus' name", "in Jesus name", "in God's
+    name") or opening it ("in the name of Jesus, bring me ..."): it asks nothing."""
+    n = len(words)
+    if n > 3 and words[-3] == "in" and words[-1] == "name":
+        return words[:-3]
+    if words[:4] == ["in", "the", "name", "of"]:
+        return [] if n <= 6 else words  # the name is the whole stretch, as it is when said with a comma
     return words

@@ -24,7 +24,9 @@ tried with sentences of its own in that house, in the family house of people24 o
   dining table"); a description or a correction between dashes
   is kept (``knic.language.asides``);
 * a title before a person's name ("Mama Adunni's room", "Oga Olumide", "my sister Funmilayo", "Aunty
-  Tracy") is dropped; "Ese, have you seen it?" before a request is said to Ese; "why is the X still off?"
+  Tracy") is dropped; "Ese, have you seen it?" before a request is said to Ese (but "Jack, have you seen the
+  remote? ... find it" names what "it" is); "Jack said the hallway light should be off" passes the request
+  on; "why is the X still off?"
   before "put it on" is a complaint, as "the X is still off" is; "there" after "what is inside the deep
   freezer?" or after a place said alone ("the closet, is the tablet there?") is that place
   (``knic.language.asides``);
@@ -33,7 +35,7 @@ tried with sentences of its own in that house, in the family house of people24 o
 * office and pulpit English said plainly: "revert with" and "loop me in on" are "tell me", "FYI" is
   dropped; a thing that "should be" or "must be" on a place is to be put there, and "please see to it" asks
   nothing more; a purpose said formally ("that the light may enter") is dropped; "let there be light" turns
-  the light on (``knic.language.registers``).
+  the light on; the name a request is made in ("in Jesus name") is dropped (``knic.language.registers``).
 """
 
 from __future__ import annotations
@@ -410,3 +412,30 @@ def test_a_sentence_cut_into_twice(house: Vocabulary) -> None:
     assert frames_read(
         house, "Switch on the, wait, Tobi come here, switch on the chandelier", "funmilayo"
     ) == [{"frame": "OPERATING", "device": "chandelier", "state": "on"}]
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        (
+            "Jack said the light in the hallway should be off",
+            [{"frame": "OPERATING", "device": "hallway_light", "state": "off"}],
+        ),
+        (
+            "Jack, have you seen the remote? Robot, find it please",
+            [{"frame": "SEARCHING", "theme": "remote"}],
+        ),
+        (
+            "Brethren, I decree that the hallway light be switched off in Jesus name",
+            [{"frame": "OPERATING", "device": "hallway_light", "state": "off"}],
+        ),
+        (
+            "in the name of Jesus, bring me the water",
+            [{"frame": "BRINGING", "theme": "water", "beneficiary": "me"}],
+        ),
+    ],
+)
+def test_words_passed_on_and_said_in_a_name(
+    vocabulary: Vocabulary, text: str, frames: list[dict[str, str]]
+) -> None:
+    assert frames_read(vocabulary, text, "tracy") == frames
