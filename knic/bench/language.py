@@ -24,6 +24,8 @@ scullery, a snug, a sunroom, a loft bedroom and a granny flat off the yard; ``pe
 retirement condo in Florida with a screened lanai, a den, a galley kitchen and a storage closet; ``people38``
 a two-storey duplex
 in Lagos with a boys' quarters, a store, a balcony and a master bedroom with its own bath and study,
+``people40`` a Swiss chalet on three levels with a ski room, a sauna, a cellar, a stube, an attic bedroom
+and a balcony,
 likewise). Each
 case is a command with its gold frames and goals, or with a word the refusal (``reject``) or the question back
 (``question``) must contain. Cases run against the ERL apartment or, with ``world: other``, against a
@@ -97,6 +99,8 @@ SETS = {
     "people36-dev": FIXTURES / "people36" / "dev.yaml",
     "people37-dev": FIXTURES / "people37" / "dev.yaml",
     "people38-dev": FIXTURES / "people38" / "dev.yaml",
+    "people39-dev": FIXTURES / "people39" / "dev.yaml",
+    "people40-dev": FIXTURES / "people40" / "dev.yaml",
 }
 OTHER_WORLD = FIXTURES / "other_world" / "problem.pddl"
 _MAIN = {"MOTION": ("goal",), "OPERATING": ("device", "state")}
