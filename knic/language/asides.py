@@ -28,7 +28,9 @@
 from __future__ import annotations
 
 import re
+from functools import lru_cache
 
+from knic.language.kinds import phrases_of
 from knic.language.vocabulary import Vocabulary
 
 #: a pair of dashes (typographic, or a hyphen with spaces around it) and what they set off
@@ -96,7 +98,7 @@ def dashed_asides_dropped(text: str) -> str:
 def spoken_to(segments: list[list[str]], vocabulary: Vocabulary) -> list[list[str]]:
     """The sentences without titles before names, questions to other people and with "why is X off" read
     as a complaint (see the module docstring)."""
-    people = [t.phrase.split() for t in vocabulary.terms if vocabulary.is_subtype(t.type, "person")]
+    people = [phrase.split() for phrase in phrases_of(vocabulary, "person")]
     firsts = {words[0] for words in people} | {words[0] + "'s" for words in people}
     out = segments
     kept: list[list[str]] = []
@@ -141,11 +143,7 @@ def _there_said(segments: list[list[str]], vocabulary: Vocabulary) -> list[list[
     """ "what is inside the deep freezer? check if the chicken is there", "the deep freezer, is the chicken
     there?": "there" is the place the sentence before asked about or named alone, said in full ("... is in
     the deep freezer"); the sentence before only pointed at it."""
-    places = {
-        t.phrase
-        for t in vocabulary.terms
-        if vocabulary.is_subtype(t.type, "furniture") or vocabulary.is_subtype(t.type, "room")
-    }
+    places = phrases_of(vocabulary, "furniture", "room")
     for i, segment in enumerate(segments[:-1]):
         later = segments[i + 1]
         if "there" not in later or "in" in later[later.index("there") - 1 : later.index("there")]:
@@ -162,13 +160,21 @@ def _there_said(segments: list[list[str]], vocabulary: Vocabulary) -> list[list[
 
 def titles_dropped(text: str, vocabulary: Vocabulary) -> str:
     """``text`` without a title said before a person's name ("Mama Adunni's room": "Adunni's room")."""
-    people = {t.phrase.split()[0] for t in vocabulary.terms if vocabulary.is_subtype(t.type, "person")}
+    said = _titled(vocabulary)
+    return said.sub("", text) if said is not None else text
+
+
+@lru_cache(maxsize=16)
+def _titled(vocabulary: Vocabulary) -> re.Pattern[str] | None:
+    """A title before one of the world's people's first names (None: the world has no people); built once
+    per vocabulary."""
+    people = {phrase.split()[0] for phrase in phrases_of(vocabulary, "person")}
     if not people:
-        return text
+        return None
     names = "|".join(re.escape(p) for p in sorted(people, key=len, reverse=True))
     titles = "|".join(re.escape(t) for t in sorted(_TITLES, key=len, reverse=True))
     said = rf"\b(?:(?:my|our)\s+(?=(?:{titles})\s+(?:{names})\b(?!')))?(?:{titles})\.?\s+(?=(?:{names})\b)"
-    return re.sub(said, "", text, flags=re.IGNORECASE)
+    return re.compile(said, re.IGNORECASE)
 
 
 def _why_said(words: list[str]) -> list[str]:

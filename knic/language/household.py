@@ -31,6 +31,7 @@ from __future__ import annotations
 import re
 from collections.abc import Callable, Sequence
 from dataclasses import replace
+from functools import lru_cache
 
 from knic.language.chunks import Chunk, Chunker, past_determiners, singulars
 from knic.language.contracted import contracted
@@ -489,8 +490,7 @@ def ones_named(segments: list[list[str]], vocabulary: Vocabulary) -> list[list[s
     (the last word of a name said before, with the word said before "one"); then what is said again more
     exactly is put where it was said (:mod:`knic.language.restating`: "I want the light off. The hallway
     one.")."""
-    names = {t.phrase for t in vocabulary.terms if len(t.phrase.split()) == 2}
-    sided = {t.phrase: t.symbol for t in vocabulary.terms if t.phrase in names and not t.is_group}
+    names, sided = _two_word_names(vocabulary)
     said: list[str] = []
     out: list[list[str]] = []
     for segment in segments:
@@ -507,6 +507,13 @@ def ones_named(segments: list[list[str]], vocabulary: Vocabulary) -> list[list[s
 
 #: what says a thing is to be taken along ("don't forget the glasses", "do not forget", "remember the keys")
 _NOT_FORGOTTEN = (("don't", "forget"), ("dont", "forget"), ("do", "not", "forget"), ("remember",))
+
+
+@lru_cache(maxsize=16)
+def _two_word_names(vocabulary: Vocabulary) -> tuple[frozenset[str], dict[str, str]]:
+    """The world's names of two words, and the symbol of each that names one thing (once per vocabulary)."""
+    names = frozenset(t.phrase for t in vocabulary.terms if len(t.phrase.split()) == 2)
+    return names, {t.phrase: t.symbol for t in vocabulary.terms if t.phrase in names and not t.is_group}
 
 
 def _taken_along(chunks: list[Chunk], is_a: Callable[[Chunk, str], bool], take: Chunk) -> list[Chunk]:

@@ -9,7 +9,9 @@ the domain declares no type of the kind's own name, so the domain's types and pr
 
 from __future__ import annotations
 
-from collections.abc import Mapping
+from collections.abc import Mapping, Sequence
+from functools import lru_cache
+from typing import Any, Protocol
 
 #: each kind a command names, and the type names other domains give it (in the order tried)
 ALIASES: dict[str, tuple[str, ...]] = {
@@ -48,3 +50,22 @@ def _below(types: Mapping[str, str | None], name: str, others: set[str]) -> bool
         seen.add(current)
         current = types.get(current)
     return False
+
+
+class Kinded(Protocol):
+    """What :func:`phrases_of` needs of a vocabulary (:class:`~knic.language.vocabulary.Vocabulary`, which
+    imports this module)."""
+
+    @property
+    def terms(self) -> Sequence[Any]: ...
+
+    def is_subtype(self, type_name: str, ancestor: str) -> bool: ...
+
+
+@lru_cache(maxsize=64)
+def phrases_of(vocabulary: Kinded, *kinds: str) -> frozenset[str]:
+    """The phrases of a vocabulary that name things of any of ``kinds`` (``"person"``; ``"furniture",
+    "room"``), found once per vocabulary: the reader's rules ask on every read, and the vocabulary does not
+    change."""
+    kind_of = vocabulary.is_subtype
+    return frozenset(t.phrase for t in vocabulary.terms if any(kind_of(t.type, k) for k in kinds))

@@ -55,7 +55,7 @@ def said_named(segments: list[list[str]], vocabulary: Vocabulary, known: Collect
     """
     segments = spoken_to(segments, vocabulary)  # "Ese, have you seen it? ...", "why is X off?" (asides.py)
     segments = regional_said(segments, vocabulary)  # "fetch us t'atlas", "where's me stick" (regional.py)
-    phrases, people, rooms = _names(vocabulary)
+    phrases, people, _ = _names(vocabulary)
     for segment in segments:
         _opposite_refused(segment, phrases)
     canon, told = _canonical_names(vocabulary), _told_by_first_word(vocabulary)
@@ -64,7 +64,9 @@ def said_named(segments: list[list[str]], vocabulary: Vocabulary, known: Collect
         _synonyms_said(_contents(_turned_round(s, phrases, canon), phrases), phrases, canon) for s in segments
     ]
     out = [_asked_for(_first_names(s, people, phrases, known), people) for s in out]
-    return signed_read(_persons_rooms(out, people, rooms), vocabulary)  # "freezer take" (signorder.py)
+    return signed_read(
+        _persons_rooms(out, _owned_rooms(vocabulary)), vocabulary
+    )  # "freezer take" (signorder.py)
 
 
 @lru_cache(maxsize=16)
@@ -287,11 +289,16 @@ def _first_names(
     return out
 
 
-def _persons_rooms(
-    segments: list[list[str]], people: list[list[str]], rooms: list[list[str]]
-) -> list[list[str]]:
-    """ "rhys's room" and, once rhys was named, "his bedroom" as the room named after him."""
-    owned = {" ".join(p): r for p in people for r in rooms if len(r) > len(p) and contains(r, p)}
+@lru_cache(maxsize=16)
+def _owned_rooms(vocabulary: Vocabulary) -> dict[str, list[str]]:
+    """Each person's name and the words of the room named after them ("rhys": "rhys's room")."""
+    _, people, rooms = _names(vocabulary)
+    return {" ".join(p): r for p in people for r in rooms if len(r) > len(p) and contains(r, p)}
+
+
+def _persons_rooms(segments: list[list[str]], owned: dict[str, list[str]]) -> list[list[str]]:
+    """ "rhys's room" and, once rhys was named, "his bedroom" as the room named after him (``owned``:
+    :func:`_owned_rooms`)."""
     if not owned:
         return segments
     last = ""  # the person named latest

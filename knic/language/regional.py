@@ -65,6 +65,7 @@ from __future__ import annotations
 import re
 from functools import lru_cache
 
+from knic.language.kinds import phrases_of
 from knic.language.vocabulary import Vocabulary
 
 #: a Yorkshire "t'" before its noun; "gi'", "an'", "o'"; a dropped "g" ("fixin'")
@@ -294,8 +295,7 @@ def regional_said(segments: list[list[str]], vocabulary: Vocabulary) -> list[lis
         or segments
     )
     segments = _said_after(_aside_in_question(segments), things | firsts)
-    people = {t.phrase for t in vocabulary.terms if vocabulary.is_subtype(t.type, "person")}
-    items = frozenset(t.phrase for t in vocabulary.terms if vocabulary.is_subtype(t.type, "item"))
+    people, items = phrases_of(vocabulary, "person"), phrases_of(vocabulary, "item")
     for n, segment in enumerate(segments):
         words = list(segment)
         if words[:1] and words[0] in _STEP and words[1:2] and words[1] in _NUMBERS:
@@ -331,7 +331,7 @@ def regional_said(segments: list[list[str]], vocabulary: Vocabulary) -> list[lis
 _SETTINGS = frozenset({"percent", "on", "off", "open", "closed", "shut", "half", "halfway", "full", "fully"})
 
 
-def _purpose_dropped(words: list[str], names: frozenset[str], people: set[str]) -> list[str]:
+def _purpose_dropped(words: list[str], names: frozenset[str], people: frozenset[str]) -> list[str]:
     """ "reading lamp to forty percent for the assessment": what a device is set for, said last with words
     that name nothing of the world, is left out (not a thing the world lacks); "for the half" (a Dutch
     speaker's "voor de helft") is the setting itself, no purpose."""
