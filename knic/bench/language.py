@@ -24,6 +24,8 @@ scullery, a snug, a sunroom, a loft bedroom and a granny flat off the yard; ``pe
 retirement condo in Florida with a screened lanai, a den, a galley kitchen and a storage closet; ``people38``
 a two-storey duplex
 in Lagos with a boys' quarters, a store, a balcony and a master bedroom with its own bath and study,
+``people39`` a third-floor Mumbai flat of a joint family with a puja room, a servant's room, a utility
+balcony, a hall, a kitchen with a loft and two bedrooms with attached baths,
 ``people40`` a Swiss chalet on three levels with a ski room, a sauna, a cellar, a stube, an attic bedroom
 and a balcony,
 likewise). Each
