@@ -27,7 +27,8 @@ in Lagos with a boys' quarters, a store, a balcony and a master bedroom with its
 ``people39`` a third-floor Mumbai flat of a joint family with a puja room, a servant's room, a utility
 balcony, a hall, a kitchen with a loft and two bedrooms with attached baths,
 ``people40`` a Swiss chalet on three levels with a ski room, a sauna, a cellar, a stube, an attic bedroom
-and a balcony,
+and a balcony, ``people41`` one wing of a care home with residents' rooms, a day lounge, a dining room, a
+quiet room, a nurses' station, an assisted bathroom and a garden room,
 likewise). Each
 case is a command with its gold frames and goals, or with a word the refusal (``reject``) or the question back
 (``question``) must contain. Cases run against the ERL apartment or, with ``world: other``, against a
@@ -103,6 +104,7 @@ SETS = {
     "people38-dev": FIXTURES / "people38" / "dev.yaml",
     "people39-dev": FIXTURES / "people39" / "dev.yaml",
     "people40-dev": FIXTURES / "people40" / "dev.yaml",
+    "people41-dev": FIXTURES / "people41" / "dev.yaml",
 }
 OTHER_WORLD = FIXTURES / "other_world" / "problem.pddl"
 _MAIN = {"MOTION": ("goal",), "OPERATING": ("device", "state")}
