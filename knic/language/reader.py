@@ -33,7 +33,7 @@ from collections.abc import Sequence
 
 from core.errors import LanguageError
 from knic.language.chains import AmbiguityError, Reading, chain, referent, settled
-from knic.language.chunks import Chunk, Chunker
+from knic.language.chunkmemo import Chunk, RememberedChunker
 from knic.language.clauses import Arg, Clause, split_clauses
 from knic.language.commands import CommandLanguage, command_language
 from knic.language.excepting import read_excepting
@@ -88,7 +88,7 @@ class Reader(Places):
     def __init__(self, vocabulary: Vocabulary, language: CommandLanguage | None = None):
         self.vocabulary = vocabulary
         self.language = language or command_language()
-        self.chunker = Chunker(vocabulary, self.language)
+        self.chunker = RememberedChunker(vocabulary, self.language)
         # what makes a typed digit a number, not a word it sounds like ("to 2 percent", not "to to percent")
         self._units = frozenset(p.split()[0] for p in self.language.percent)
         level_words = self.language.prepositions.get("level", ())
