@@ -73,8 +73,16 @@ _PART_OF = re.compile(
     re.IGNORECASE,
 )
 
-#: where a thing lies that is no place of any world: the floor, the ground
-_OFF_THE_FLOOR = re.compile(r"\s+(?:off\s+of|off|from)\s+the\s+(?:floor|ground)\b", re.IGNORECASE)
+#: where a thing lies that is no place of any world: the floor, the ground; not the first word of a thing's
+#: name ("switch off the floor lamp", "take the rug from the ground floor"), so said last in its clause, or
+#: before a word that carries the sentence on (a joiner, a preposition, a filler)
+_OFF_THE_FLOOR = re.compile(
+    r"\s+(?:off\s+of|off|from)\s+the\s+(?:floor|ground)\b"
+    r"(?=\s*(?:$|[,.;:!?&]|(?:and|then|to|into|onto|on|in|by|near|next|under|over|for|please|now|too|first|so|"
+    r"as|before|after|again|back|behind|beside|with|there|here|while|because|if|or|but|yeah|ok|okay|thanks|"
+    r"thank)\b))",
+    re.IGNORECASE,
+)
 
 
 def ordinary_read(text: str) -> str:

@@ -106,6 +106,8 @@ _PARTICIPLES = {
     "located": "locate",
     "set": "set",
 }
+#: the same, for the passives other modules read (knic.language.clerical)
+PARTICIPLES = _PARTICIPLES
 
 #: a request in the passive: the thing, a "to be" that asks ("is to be", "should be", "needs to be"), the
 #: participle and the rest of the sentence
@@ -215,4 +217,4 @@ def procedure_read(text: str) -> str:
     return text
 
 
-__all__ = ["procedure_read"]
+__all__ = ["PARTICIPLES", "procedure_read"]
