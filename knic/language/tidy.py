@@ -11,6 +11,7 @@ from knic.language.asides import dashed_asides_dropped
 from knic.language.chunks import Chunk
 from knic.language.decimals import decimals_read, plain_typed
 from knic.language.registers import to_be_put
+from knic.language.said_loosely import loosely_said
 
 #: "is", "are": after words the world has no name for, what follows is talk, not part of the action
 COPULAS = frozenset({"is", "are", "was", "were"})
@@ -313,7 +314,7 @@ def cut_off_dropped(text: str) -> str:
     before it ("I-is Ellis in the k-kitchen?", "sw-sw-switch", "th-thirty": the word; "x-ray", "t-shirt"
     stay); and, said last, a tag urging the request on ("bring me the mug, go on"; :data:`_TAG`) or a pain
     giving the reason ("my tummy hurts"; :data:`_ACHE`)."""
-    text = to_be_put(dashed_asides_dropped(text))  # "bring me the — Tobi, no! — the oil", "X should be on Y"
+    text = to_be_put(dashed_asides_dropped(loosely_said(text)))  # "bring me the — Tobi, no! — the oil"
     return _CUT_OFF.sub("", _ACHE.sub("", _TAG.sub("", _STAMMER.sub(_stammer_dropped, text))))
 
 

@@ -1,0 +1,53 @@
+"""Loose ways of speaking around a request, put into the plain words the reader knows (people40: a chalet
+let to a holiday group; a hedging British guest, a Swiss caretaker, a guest who runs requests together):
+
+* "but" opening a question after a hedge ("I'm probably being silly, but is the camera still in the chest of
+  drawers?", "sorry, but are the keys on the hall chest?"): the question, as "..., but could you ..." already
+  is; "but" inside a sentence ("all the lights but the kitchen one") stays;
+* a close said last that asks nothing ("... and put the bedside lamp on at thirty and that's it really",
+  "..., that's all", "just go to the bunk room and leave me alone", "... and leave me in peace"): dropped, so
+  that no empty step is read after the last one;
+* "wait on me" (Swiss, German and American English for "wait for me", "wait there on me"): "wait for me";
+* a thing that "needs to go" somewhere, said as the request ("the white mug on the stube table needs to go
+  to the sink and the bread basket needs to go back to the kitchen table"): "take" it there. Only a thing
+  said with a determiner at the start of a clause, going "to" a place; "I need to go to the kitchen" stays,
+  and so does "the remote needs to go on the tv table", already put there (:mod:`knic.language.household`).
+
+Text only, before the words are split into sentences (:func:`knic.language.tidy.cut_off_dropped`).
+"""
+
+from __future__ import annotations
+
+import re
+
+#: "but" at the start of a sentence or after a break, before a verb that opens a yes/no question
+_BUT_ASKING = re.compile(
+    r"(^|[,;:.!?—–]\s*|\s-\s)but\s+(?=(?:is|are|was|were|has|have|had|do|does|did|is there|are there)\b)",
+    re.IGNORECASE,
+)
+#: a close said last: "and that's it (really)", ", that's all then", "and leave me alone"
+_CLOSE = re.compile(
+    r"(?:\s*,\s*|\s+and\s+|\s+)(?:that'?s (?:it|all)(?: really| then| for now| thanks)?"
+    r"|(?:just )?leave me (?:alone|be|in peace))\s*[.!]*\s*$",
+    re.IGNORECASE,
+)
+#: "wait on me", "wait there on us": waiting for the speaker
+_WAIT_ON = re.compile(r"\bwait((?:\s+(?:there|here))?)\s+on\s+(me|us)\b", re.IGNORECASE)
+#: "the mug needs to go (back) to the sink" at the start of a clause
+_NEEDS_TO_GO = re.compile(
+    r"(^|[,;:.!?]\s*|\b(?:and|then|so|also)\s+)((?:the|my|your|our|this|that|these|those)\s+[^,;:.!?]+?)\s+"
+    r"(?:needs|need|has|have|ought|should)\s+(?:to\s+)?go\s+(back\s+)?(?=to\b)",
+    re.IGNORECASE,
+)
+
+
+def loosely_said(text: str) -> str:
+    """``text`` with the loose turns above put plainly ("sorry, but is X in Y?" -> "sorry, is X in Y?")."""
+    if "but" in text or "But" in text:
+        text = _BUT_ASKING.sub(r"\1", text)
+    text = _CLOSE.sub("", text)
+    if " on " in text:
+        text = _WAIT_ON.sub(r"wait\1 for \2", text)
+    if " go " in text:
+        text = _NEEDS_TO_GO.sub(lambda m: f"{m.group(1)}take {m.group(2)} {m.group(3) or ''}", text)
+    return text
