@@ -33,6 +33,7 @@ from collections.abc import Callable, Sequence
 from dataclasses import replace
 from functools import lru_cache
 
+from knic.language.askedfor import asked_for_read
 from knic.language.chunks import Chunk, Chunker, past_determiners, singulars
 from knic.language.clerical import clerical_read
 from knic.language.contracted import contracted
@@ -106,7 +107,7 @@ def where_last(text: str) -> str:
     questions said in another order put back (:mod:`knic.language.plainorder`)."""
     # "ah go on, ...", "off the floor" (ordinary.py); "to my location", "is to be brought" (procedure.py);
     # "in here... in the nursery", "... no, leave it. ..." (trailing.py)
-    text = asked_plainly(ordinary_read(procedure_read(clerical_read(restarts_read(text)))))
+    text = asked_plainly(ordinary_read(procedure_read(clerical_read(restarts_read(asked_for_read(text))))))
     match = _WHERE_LAST.match(text.lower())
     words = match.group("thing").split() if match else []
     if len(words) > 1 and words[-1] in ("is", "are"):  # "annie is where?", "the keys are where?": asked back

@@ -144,9 +144,14 @@ def _placed_named(vocabulary: Vocabulary, said: str) -> list[str]:
         for t in vocabulary.terms
         if not t.is_group
         and (vocabulary.is_subtype(t.type, "furniture") or vocabulary.is_subtype(t.type, "device"))
-        and (t.phrase == said or t.phrase.endswith(" " + said))
+        and any(t.phrase == s or t.phrase.endswith(" " + s) for s in _numbers(said))
     }
     return sorted(found)
+
+
+def _numbers(said: str) -> tuple[str, ...]:
+    """``said`` and its last word in the other number: "my blind" is one of the "... blinds" as well."""
+    return (said, said.removesuffix("s")) if said.endswith("s") else (said, f"{said}s")
 
 
 @lru_cache(maxsize=16)

@@ -1,0 +1,86 @@
+"""Requests said the long way round, put as the plain request (used by
+:func:`knic.language.household.where_last` on a command's text, before it is cut into sentences):
+
+* being shown a place is being taken there: "can you show me where the dining room is", "show me the way to
+  the quiet room" are "take me to the dining room", "... to the quiet room";
+* the speaker asking to be taken in the passive ("I should like to be taken to the garden room", "I'd like to
+  be taken to my room", "could I be taken to the lounge"): "take me to ...";
+* "where do you keep the sugar?" (as said by someone new to a house) asks where the sugar is, not to keep it
+  anywhere;
+* a place asked after and then gone to ("where's the assisted bathroom? can you take me there"): "take me to
+  the assisted bathroom";
+* who asked for the request, said after it ("bring the pill pot to Lionel, Fenella said to", "..., as mum
+  said", "..., nan told me to"): left out, as the request is the same;
+* whether someone is "still here" or "here" ("is Clementine still here?", "is jack here?"), one word for whom:
+  where they are, as "is jack around" asks;
+* a thing moved "off" one place "and onto" or ", to" another, often without a verb ("care folder off the
+  filing cabinet and onto the desk", "pill pot off the trolley, to Wilfred"): "from" the one "to" the other,
+  as "pill pot from the trolley to Wilfred" is read;
+* what someone is due, said after a request ("thermometer to the lounge, Hortense is due her obs", "..., he's
+  due a bath"): a reason, left out.
+"""
+
+from __future__ import annotations
+
+import re
+
+#: "show me where the dining room is", "show me the way to the lounge"
+_SHOWN = re.compile(
+    r"\bshow me (?:where (?P<place>(?:the|my|your|our) [a-z' ]+?) (?:is|are)\b|the way (?:to|into) )",
+    re.IGNORECASE,
+)
+#: "I should like to be taken to", "I'd like to be taken to", "could I be taken to"
+_TAKEN = re.compile(
+    r"\b(?:i(?:'d| should| would| want to| need to| wish to)? (?:like |love )?to be|(?:can|could|may) i be)"
+    r" (?:taken|brought|walked|shown) (?:to|into|back to)\b",
+    re.IGNORECASE,
+)
+#: "where do you keep the sugar", "where do we keep the towels"
+_KEPT = re.compile(
+    r"\bwhere do (?:you|we|they|people|the staff) (?:usually |normally )?keep\b", re.IGNORECASE
+)
+#: "where's the assisted bathroom? can you take me there"
+_THERE = re.compile(
+    r"\bwhere(?:'s| is) (?P<place>(?:the|my) [a-z' ]+?)\s*\?\s*(?:(?:can|could|would|will) you )?"
+    r"(?:please )?(?P<verb>take|bring|walk) me there\b",
+    re.IGNORECASE,
+)
+#: "..., Fenella said to", "..., as mum said", "..., nan told me to": who asked for it, said last
+_ASKED_BY = re.compile(
+    r",\s*(?:as |like )?[a-z]+ (?:said(?: to| so)?|says(?: to| so)?|told me(?: to)?|asked me(?: to)?|asked"
+    r"(?: for it)?)\s*[.!]?\s*$",
+    re.IGNORECASE,
+)
+#: "is Clementine still here", "is jack here": one word for whom, then a question's end
+_STILL_HERE = re.compile(r"\bis (?P<who>[a-z]+) (?:still )?here\b(?=\s*(?:[?.!,;]|$))", re.IGNORECASE)
+#: words that are not someone asked after ("is it here", "is everyone here")
+_NOT_WHOM = frozenset(
+    {"it", "this", "that", "there", "everyone", "everybody", "anyone", "anybody", "he", "she"}
+)
+
+
+#: "off the trolley, to Wilfred", "off the filing cabinet and onto the desk"
+_OFF_ONTO = re.compile(
+    r"\boff (?P<source>(?:the|my|his|her|their|your) [a-z' ]+?)(?:,\s*|\s+and\s+)(?:on)?to"
+    r" (?P<goal>(?:the|my|his|her|their|your|me|him)\b|[A-Z])"
+)
+#: ", Hortense is due her obs", ", he's due a bath": said last
+_DUE = re.compile(
+    r",\s*(?:[a-z]+ is|he's|she's|they're|they are|he is|she is) (?:now |also )?(?:over)?due\b"
+    r"[^,.;?!]*[.!]?\s*$",
+    re.IGNORECASE,
+)
+
+
+def asked_for_read(text: str) -> str:
+    """``text`` with the requests of the module docstring said plainly; else ``text``."""
+    text = _THERE.sub(lambda m: f"{m.group('verb')} me to {m.group('place')}", text)
+    text = _SHOWN.sub(lambda m: f"take me to {m.group('place')}" if m.group("place") else "take me to ", text)
+    text = _TAKEN.sub("take me to", text)
+    text = _KEPT.sub("where is", text)
+    text = _DUE.sub("", _ASKED_BY.sub("", text))
+    text = _OFF_ONTO.sub(lambda m: f"from {m.group('source')} to {m.group('goal')}", text)
+    who = _STILL_HERE.search(text)
+    if who is None or who.group("who").lower() in _NOT_WHOM:
+        return text
+    return f"{text[: who.start()]}is {who.group('who')} around{text[who.end() :]}"
