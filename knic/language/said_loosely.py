@@ -7,6 +7,9 @@ let to a holiday group; a hedging British guest, a Swiss caretaker, a guest who 
 * a close said last that asks nothing ("... and put the bedside lamp on at thirty and that's it really",
   "..., that's all", "just go to the bunk room and leave me alone", "... and leave me in peace"): dropped, so
   that no empty step is read after the last one;
+* "need" or "want" opening a sentence with no one said to need it, after a thing said alone ("plasters...
+  need plasters from the bathroom shelf", a tired speaker's; "headlamp. want my headlamp"): "I need", so
+  that the thing said first is not read as the one who needs; "need to ..." stays;
 * "wait on me" (Swiss, German and American English for "wait for me", "wait there on me"): "wait for me";
 * a thing that "needs to go" somewhere, said as the request ("the white mug on the stube table needs to go
   to the sink and the bread basket needs to go back to the kitchen table"): "take" it there. Only a thing
@@ -31,6 +34,8 @@ _CLOSE = re.compile(
     r"|(?:just )?leave me (?:alone|be|in peace))\s*[.!]*\s*$",
     re.IGNORECASE,
 )
+#: "need"/"want" opening a sentence after another, not "need to"
+_SUBJECTLESS_WISH = re.compile(r"([.!?;…]\s*)(need|want)\s+(?!to\b)", re.IGNORECASE)
 #: "wait on me", "wait there on us": waiting for the speaker
 _WAIT_ON = re.compile(r"\bwait((?:\s+(?:there|here))?)\s+on\s+(me|us)\b", re.IGNORECASE)
 #: "the mug needs to go (back) to the sink" at the start of a clause
@@ -46,6 +51,8 @@ def loosely_said(text: str) -> str:
     if "but" in text or "But" in text:
         text = _BUT_ASKING.sub(r"\1", text)
     text = _CLOSE.sub("", text)
+    if "need" in text or "want" in text:
+        text = _SUBJECTLESS_WISH.sub(r"\1I \2 ", text)
     if " on " in text:
         text = _WAIT_ON.sub(r"wait\1 for \2", text)
     if " go " in text:

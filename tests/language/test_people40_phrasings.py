@@ -9,7 +9,9 @@ tried with sentences of other speakers and in the ERL apartment as well:
   possible to" is polite as "would it be possible to" is (``commands.yaml``);
 * "but" opening a yes/no question after a hedge ("I'm probably being silly, but is the camera ...?"); a close
   said last that asks nothing ("... and that's it really", "... and leave me alone"); "wait on me" for "wait
-  for me"; a thing that "needs to go" somewhere is taken there (``knic.language.said_loosely``).
+  for me"; a thing that "needs to go" somewhere is taken there; "need" or "want" opening a sentence after a
+  thing said alone ("plasters... need plasters from the bathroom shelf") is the speaker's
+  (``knic.language.said_loosely``).
 """
 
 from __future__ import annotations
@@ -83,6 +85,11 @@ def _read(file: str, text: str) -> list[dict[str, str]]:
                 {"frame": "OPERATING", "device": "bedside_lamp", "state": "30"},
             ],
         ),
+        (
+            "plasters... need plasters from the bathroom shelf, my heel's wrecked",
+            [{"frame": "BRINGING", "theme": "plasters", "source": "bathroom_shelf", "beneficiary": "me"}],
+        ),
+        ("headlamp. want my headlamp", [{"frame": "BRINGING", "theme": "headlamp", "beneficiary": "me"}]),
         ("just go to the bunk room and leave me alone", [{"frame": "MOTION", "goal": "bunk_room"}]),
         ("go to the sauna and leave me in peace", [{"frame": "MOTION", "goal": "sauna"}]),
         ("go down to the lower hall and wait there on me", [{"frame": "MOTION", "goal": "lower_hall"}]),
@@ -110,6 +117,7 @@ def test_chalet(text: str, frames: list[dict[str, str]]) -> None:
             [{"frame": "SEARCHING", "theme": "glasses", "ground": "bedroom"}],
         ),
         ("go to the kitchen and wait on me", [{"frame": "MOTION", "goal": "kitchen"}]),
+        ("glasses. need my glasses", [{"frame": "BRINGING", "theme": "glasses", "beneficiary": "me"}]),
         (
             "bring me the glasses, that's all",
             [{"frame": "BRINGING", "theme": "glasses", "beneficiary": "me"}],
@@ -130,6 +138,7 @@ def test_student_house_mislaid() -> None:
         ("all the lights but the kitchen one", "all the lights but the kitchen one"),  # "but" inside stays
         ("I need to go to the kitchen", "I need to go to the kitchen"),  # no thing that needs to go
         ("wait on the landing", "wait on the landing"),
+        ("goggles. need to go to the ski room", "goggles. need to go to the ski room"),
         ("the mug needs to go to the sink", "take the mug to the sink"),
         ("the mug needs to go in the sink", "the mug needs to go in the sink"),  # put there elsewhere
         ("that's it, the blue mug", "that's it, the blue mug"),  # not said last
