@@ -17,7 +17,10 @@
   filing cabinet and onto the desk", "pill pot off the trolley, to Wilfred"): "from" the one "to" the other,
   as "pill pot from the trolley to Wilfred" is read;
 * what someone is due, said after a request ("thermometer to the lounge, Hortense is due her obs", "..., he's
-  due a bath"): a reason, left out.
+  due a bath"), and what two people want to do ("put the jigsaw on the table, Gran and Mabel want to do it
+  after lunch"): a reason, left out;
+* someone said by who they are and then by name ("where's that nurse, Fenella?", "the lady, Mabel"): by
+  name.
 """
 
 from __future__ import annotations
@@ -71,6 +74,16 @@ _DUE = re.compile(
     re.IGNORECASE,
 )
 
+#: ", Gran and Mabel want to do it after lunch": two people's purpose, said last
+_THEY_WANT = re.compile(
+    r",\s*[a-z]+ and [a-z]+ (?:want|need|would like|'d like|are going) to\b[^.;?!]*[.!]?\s*$", re.IGNORECASE
+)
+#: "that nurse, Fenella": who someone is, said before their name (a capital: the name as written)
+_ROLE_THEN_NAME = re.compile(
+    r"\b(?:[Tt]hat|[Tt]he|[Tt]his|[Oo]ur|[Mm]y) (?:nurse|carer|doctor|lady|man|woman|gentleman|girl|boy|lad"
+    r"|chap|fellow|cleaner|visitor|resident|neighbour|neighbor),\s+(?=[A-Z])"
+)
+
 
 def asked_for_read(text: str) -> str:
     """``text`` with the requests of the module docstring said plainly; else ``text``."""
@@ -78,7 +91,7 @@ def asked_for_read(text: str) -> str:
     text = _SHOWN.sub(lambda m: f"take me to {m.group('place')}" if m.group("place") else "take me to ", text)
     text = _TAKEN.sub("take me to", text)
     text = _KEPT.sub("where is", text)
-    text = _DUE.sub("", _ASKED_BY.sub("", text))
+    text = _THEY_WANT.sub("", _DUE.sub("", _ASKED_BY.sub("", _ROLE_THEN_NAME.sub("", text))))
     text = _OFF_ONTO.sub(lambda m: f"from {m.group('source')} to {m.group('goal')}", text)
     who = _STILL_HERE.search(text)
     if who is None or who.group("who").lower() in _NOT_WHOM:

@@ -13,7 +13,10 @@ apartment as well:
 * a nurse's words: "query whether" asks as "check whether" does, so does "do you know if"; "stat" is at once
   (``commands.yaml``); "meds" and "medication" are medicine, "BP" blood pressure (``synonyms.yaml``);
 * "my blind" (or "her blind" of the person named before it) is the one in the owner's room when the others
-  are named in the plural ("the lounge blinds") (``knic.language.owned``).
+  are named in the plural ("the lounge blinds") (``knic.language.owned``);
+* how a thing is to be done, said around a request ("shut, quietly", "softly", "gently") is no word of it;
+  someone said by who they are and then by name ("that nurse, Fenella") is them; what two people want to do
+  after the request ("..., Gran and Mabel want to do it after lunch") is a reason.
 """
 
 from __future__ import annotations
@@ -166,3 +169,24 @@ def test_my_blind_beside_blinds_named_in_the_plural(
     wing: Vocabulary, text: str, speaker: str, state: str
 ) -> None:
     assert frames_read(wing, text, speaker)[0] == _one("OPERATING", device="hortense_room_blind", state=state)
+
+
+@pytest.mark.parametrize(
+    ("world", "text", "frames"),
+    [
+        (WING, "Blinds in the lounge, shut, quietly.", [
+            _one("OPERATING", device="lounge_blinds", state="closed")]),
+        (WING, "Where's that nurse, Fenella? I want a word with her", [_one("SEARCHING", theme="fenella")]),
+        (WING, "Put the jigsaw on the dining table, Gran and Mabel want to do it after lunch", [
+            _one("PLACING", theme="jigsaw", goal="dining_table")]),
+        ("erl", "bedroom blinds down, softly", [_one("OPERATING", device="bedroom_blinds", state="closed")]),
+        ("erl", "where is the lady, Tracy?", [_one("SEARCHING", theme="tracy")]),
+        ("erl", "put the apple on the kitchen table, Jack and Tracy want to share it", [
+            _one("PLACING", theme="apple", goal="kitchen_table")]),
+    ],
+)  # fmt: skip
+def test_how_who_and_why_said_around(
+    vocabulary: Vocabulary, world: str, text: str, frames: list[dict[str, str]]
+) -> None:
+    speaker = "annie" if world == "erl" else "kwame"
+    assert frames_read(vocabulary if world == "erl" else _wing(), text, speaker) == frames
