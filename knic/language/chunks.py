@@ -512,12 +512,12 @@ def _told_apart(noun: str, things: list[Term], vocabulary: Vocabulary) -> list[T
 def _owned_noun(out: list[Chunk], before: str) -> bool:
     """Whether a verb's word said next is a noun: it follows "my", "your", "our", "their" or "the" said just
     before it (``before``, the word said before; "the robot heads to" has a dropped word between), or such a
-    word read as a noun ("my walking stick")."""
+    word read as a noun ("my walking stick"), or the possessive "'s" ("gopal's stick")."""
     last = out[-1] if out else None
     if last is None or before != last.text.split()[-1]:
         return False
     return (last.kind == "det" and last.text in _NOUN_DETERMINERS) or (
-        last.kind == "unknown" and last.role == _NOUN
+        last.kind == "unknown" and (last.role == _NOUN or last.text == _OWNER)
     )
 
 

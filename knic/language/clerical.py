@@ -12,7 +12,9 @@ whose retired railway clerk, commerce student and Hinglish-speaking family asked
 * "with immediate effect", "on priority basis", "on an urgent basis", "at the earliest", and "as per my
   instructions (of this morning)," opening a sentence say no more than "now";
 * "thereafter" between steps is "then"; "&" typed between words is "and" ("hall light dim to 40 & floor
-  lamp on").
+  lamp on");
+* an honorific said after a name before the possessive ("take Savitri ji's medicine box to her", "Gopal
+  sahib's stick"), as Hindi and Urdu speakers say it: the name's ("Savitri's"), where "ji's" was no one.
 
 Each works on the text as said, before :func:`knic.language.procedure.procedure_read`
 (:func:`clerical_read`).
@@ -91,9 +93,13 @@ _THEREAFTER = re.compile(r"\b(?:and\s+)?thereafter\b", re.IGNORECASE)
 _AMPERSAND = re.compile(r"\s+&\s+")
 
 
+#: an honorific between a name and its possessive
+_HONOURED_OWNER = re.compile(r"\b(?P<name>[a-z]+)\s+(?:ji|sahib|saheb|sahab)'s\b", re.IGNORECASE)
+
+
 def clerical_read(text: str) -> str:
     """``text`` with the turns of phrase of this module put plainly (see the module docstring)."""
-    text = _AMPERSAND.sub(" and ", text)
+    text = _HONOURED_OWNER.sub(lambda m: f"{m.group('name')}'s", _AMPERSAND.sub(" and ", text))
     if "undersigned" in text.lower():
         text = _UNDERSIGNED_FIRST.sub(lambda m: f"{m.group('gap')}I", text)
         text = _UNDERSIGNED.sub("me", text)

@@ -49,6 +49,7 @@ from knic.language.regional import regional_words
 from knic.language.registers import register_words
 from knic.language.restating import restated
 from knic.language.trailing import restarts_read
+from knic.language.twice import asked_twice
 from knic.language.vocabulary import Vocabulary
 
 #: hesitations, dropped even inside a phrase (they are fillers wherever they stand)
@@ -504,7 +505,7 @@ def ones_named(segments: list[list[str]], vocabulary: Vocabulary) -> list[list[s
                 kept[i] = heads[-1]
         said += kept
         out.append(kept)
-    return restated(out, vocabulary)
+    return restated(asked_twice(out), vocabulary)  # "bring my gita, bring it" (twice.py)
 
 
 #: what says a thing is to be taken along ("don't forget the glasses", "do not forget", "remember the keys")

@@ -15,7 +15,12 @@ tried in the ERL apartment as well:
 * Hinglish said around an English request ("arre", "yaar", "accha", "zara", "jaldi", "suno", "beta",
   "haan", "abhi"; "karo", "kar do" after an English word; "thoda" and "thoda aur" a vague amount that asks
   how far), Indian English "one time" (once) and a call centre's "so basically what I need is for you to"
-  are dropped (``commands.yaml``).
+  are dropped (``commands.yaml``);
+* a request said again at once with only "it" ("beta, suno, bring my gita, bring it") asks nothing more
+  (``knic.language.twice``), where it was read as a taking and a bringing;
+* an honorific between a name and its possessive ("Savitri ji's medicine box", "Gopal sahib's stick") is the
+  name's (``knic.language.clerical``), and a verb's word after a possessive is a noun ("Gopal's stick", as "my
+  stick"; ``knic.language.chunks``).
 """
 
 from __future__ import annotations
@@ -240,3 +245,37 @@ def test_thoda_aur_asks_how_far(flat: Vocabulary) -> None:
 def test_a_remark_with_hinglish_asks_nothing(flat: Vocabulary) -> None:
     result = understand("Arre yaar, traffic on the highway was too much today", flat, speaker="kavita")
     assert not result.accepted and "action" in result.reason
+
+
+@pytest.mark.parametrize(
+    ("text", "frames"),
+    [
+        (
+            "Beta, suno, bring my gita, bring it",
+            [{"frame": "BRINGING", "theme": "gita", "beneficiary": "me"}],
+        ),
+        (
+            "Beta, the walking stick, Gopal ji's stick, give it to him",
+            [{"frame": "BRINGING", "theme": "walking_stick", "beneficiary": "gopal"}],
+        ),
+        (
+            "Take Savitri ji's medicine box to her",
+            [{"frame": "BRINGING", "theme": "medicine_box", "beneficiary": "savitri"}],
+        ),
+        (
+            "bring the gita and bring it to the hall",
+            [{"frame": "TAKING", "theme": "gita"}, {"frame": "BRINGING", "theme": "gita", "goal": "hall"}],
+        ),
+    ],
+)
+def test_said_twice_and_honoured_owners(flat: Vocabulary, text: str, frames: list[dict[str, str]]) -> None:
+    assert frames_read(flat, text, "savitri") == frames
+
+
+def test_said_twice_in_the_erl_apartment(vocabulary: Vocabulary) -> None:
+    assert frames_read(vocabulary, "bring me the glasses, bring them here") == [
+        {"frame": "BRINGING", "theme": "glasses", "beneficiary": "me"}
+    ]
+    assert frames_read(vocabulary, "bring the mug, bring it now") == [
+        {"frame": "BRINGING", "theme": "mug", "beneficiary": "me"}
+    ]
