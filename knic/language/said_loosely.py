@@ -10,6 +10,9 @@ let to a holiday group; a hedging British guest, a Swiss caretaker, a guest who 
 * "need" or "want" opening a sentence with no one said to need it, after a thing said alone ("plasters...
   need plasters from the bathroom shelf", a tired speaker's; "headlamp. want my headlamp"): "I need", so
   that the thing said first is not read as the one who needs; "need to ..." stays;
+* a bystander's "which?" set off by dashes, answered after it ("bring the wine — which wine? — the red one,
+  to the stube", a group talking at once): a comma, so that the answer describes the thing said before it,
+  as "bring the wine, the red one, to the stube" does;
 * "wait on me" (Swiss, German and American English for "wait for me", "wait there on me"): "wait for me";
 * a thing that "needs to go" somewhere, said as the request ("the white mug on the stube table needs to go
   to the sink and the bread basket needs to go back to the kitchen table"): "take" it there. Only a thing
@@ -36,6 +39,10 @@ _CLOSE = re.compile(
 )
 #: "need"/"want" opening a sentence after another, not "need to"
 _SUBJECTLESS_WISH = re.compile(r"([.!?;…]\s*)(need|want)\s+(?!to\b)", re.IGNORECASE)
+#: "— which wine? —", "— which one? —": a question of which, set off by a pair of dashes
+_WHICH_ASIDE = re.compile(
+    r"\s*(?:—|–|\s-{1,2}\s|--)\s*which\b[^—–?!.]{0,30}\?\s*(?:—|–|\s-{1,2}\s|--)\s*", re.IGNORECASE
+)
 #: "wait on me", "wait there on us": waiting for the speaker
 _WAIT_ON = re.compile(r"\bwait((?:\s+(?:there|here))?)\s+on\s+(me|us)\b", re.IGNORECASE)
 #: "the mug needs to go (back) to the sink" at the start of a clause
@@ -51,6 +58,8 @@ def loosely_said(text: str) -> str:
     if "but" in text or "But" in text:
         text = _BUT_ASKING.sub(r"\1", text)
     text = _CLOSE.sub("", text)
+    if "which" in text or "Which" in text:
+        text = _WHICH_ASIDE.sub(", ", text)
     if "need" in text or "want" in text:
         text = _SUBJECTLESS_WISH.sub(r"\1I \2 ", text)
     if " on " in text:

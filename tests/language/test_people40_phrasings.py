@@ -10,7 +10,8 @@ tried with sentences of other speakers and in the ERL apartment as well:
 * "but" opening a yes/no question after a hedge ("I'm probably being silly, but is the camera ...?"); a close
   said last that asks nothing ("... and that's it really", "... and leave me alone"); "wait on me" for "wait
   for me"; a thing that "needs to go" somewhere is taken there; "need" or "want" opening a sentence after a
-  thing said alone ("plasters... need plasters from the bathroom shelf") is the speaker's
+  thing said alone ("plasters... need plasters from the bathroom shelf") is the speaker's; a bystander's
+  "— which wine? —" answered after it ("the red one") describes the thing said before it
   (``knic.language.said_loosely``).
 """
 
@@ -90,6 +91,14 @@ def _read(file: str, text: str) -> list[dict[str, str]]:
             [{"frame": "BRINGING", "theme": "plasters", "source": "bathroom_shelf", "beneficiary": "me"}],
         ),
         ("headlamp. want my headlamp", [{"frame": "BRINGING", "theme": "headlamp", "beneficiary": "me"}]),
+        (
+            "Bring the wine — which wine? — the red one, the red wine, to the stube",
+            [{"frame": "BRINGING", "theme": "red_wine", "goal": "stube"}],
+        ),
+        (
+            "put the blanket -- which one? -- the fleece one, on the armchair",
+            [{"frame": "PLACING", "theme": "fleece_blanket", "goal": "armchair"}],
+        ),
         ("just go to the bunk room and leave me alone", [{"frame": "MOTION", "goal": "bunk_room"}]),
         ("go to the sauna and leave me in peace", [{"frame": "MOTION", "goal": "sauna"}]),
         ("go down to the lower hall and wait there on me", [{"frame": "MOTION", "goal": "lower_hall"}]),
@@ -138,6 +147,8 @@ def test_student_house_mislaid() -> None:
         ("all the lights but the kitchen one", "all the lights but the kitchen one"),  # "but" inside stays
         ("I need to go to the kitchen", "I need to go to the kitchen"),  # no thing that needs to go
         ("wait on the landing", "wait on the landing"),
+        ("bring the mug — which one? — the green one", "bring the mug, the green one"),
+        ("which mug is on the table?", "which mug is on the table?"),
         ("goggles. need to go to the ski room", "goggles. need to go to the ski room"),
         ("the mug needs to go to the sink", "take the mug to the sink"),
         ("the mug needs to go in the sink", "the mug needs to go in the sink"),  # put there elsewhere
