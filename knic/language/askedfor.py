@@ -21,11 +21,19 @@
   after lunch"): a reason, left out;
 * someone said by who they are and then by name ("where's that nurse, Fenella?", "the lady, Mabel"): by
   name.
+
+And :func:`returned_read`, on the command's text with the world's names (from
+:func:`knic.language.understanding.understand`): a thing "returned to" a piece of furniture ("be so good as to
+return the poetry book to the bookshelf", "return the walking stick to the armchair") is put back on it, as
+a thing returned to a person is given and one returned to a room brought there.
 """
 
 from __future__ import annotations
 
 import re
+from functools import lru_cache
+
+from knic.language.vocabulary import Vocabulary
 
 #: "show me where the dining room is", "show me the way to the lounge"
 _SHOWN = re.compile(
@@ -97,3 +105,32 @@ def asked_for_read(text: str) -> str:
     if who is None or who.group("who").lower() in _NOT_WHOM:
         return text
     return f"{text[: who.start()]}is {who.group('who')} around{text[who.end() :]}"
+
+
+#: "return the poetry book to the bookshelf": the thing, then where to
+_RETURNED = re.compile(
+    r"\breturn (?P<thing>(?:the|my|his|her|their|your|this|that) [a-z' ]+?) (?:back )?to "
+    r"(?P<det>the|my|his|her|their|your) (?P<place>[a-z' ]+?)"
+    r"(?=\s*(?:[,.;!?]|$)| (?:in|on|by|and|then|please)\b)",
+    re.IGNORECASE,
+)
+
+
+def returned_read(text: str, vocabulary: Vocabulary) -> str:
+    """ "return X to the <furniture>" -> "put X back on the <furniture>"; else ``text``."""
+    if "return" not in text.lower():
+        return text
+    furniture = _furniture_said(vocabulary)
+
+    def put(match: re.Match[str]) -> str:
+        if match.group("place").lower() not in furniture:
+            return match.group(0)
+        return f"put {match.group('thing')} back on {match.group('det')} {match.group('place')}"
+
+    return _RETURNED.sub(put, text)
+
+
+@lru_cache(maxsize=16)
+def _furniture_said(vocabulary: Vocabulary) -> frozenset[str]:
+    """What the world's furniture is called (whole names and their synonyms), once per vocabulary."""
+    return frozenset(t.phrase for t in vocabulary.terms if vocabulary.is_subtype(t.type, "furniture"))

@@ -15,6 +15,7 @@ from functools import lru_cache
 from typing import TYPE_CHECKING, Any
 
 from core.errors import LanguageError
+from knic.language.askedfor import returned_read
 from knic.language.commands import command_grammar
 from knic.language.complaints import dark_read
 from knic.language.frames import CommandFrame
@@ -184,7 +185,7 @@ def understand(
         # in the study": its lights; "hoodie from my bed": the bed in the speaker's own room; "three zero
         # percent", "do the light out": said plainly (plainspoken.py); "below in the boot room", "can I get
         # the lamp on", "the bedroom of Tadhg" (roundabout.py)
-        said = mixed_said(text, reader.language, vocabulary)
+        said = returned_read(mixed_said(text, reader.language, vocabulary), vocabulary)  # askedfor.py
         said = plainly_said(roundabout_said(said, vocabulary, unknown), vocabulary, unknown)
         reading = reader.read(dark_read(owned_read(said, vocabulary, speaker)))
     except AmbiguityError as exc:

@@ -16,7 +16,9 @@ apartment as well:
   are named in the plural ("the lounge blinds") (``knic.language.owned``);
 * how a thing is to be done, said around a request ("shut, quietly", "softly", "gently") is no word of it;
   someone said by who they are and then by name ("that nurse, Fenella") is them; what two people want to do
-  after the request ("..., Gran and Mabel want to do it after lunch") is a reason.
+  after the request ("..., Gran and Mabel want to do it after lunch") is a reason;
+* a thing "returned to" a piece of furniture is put back on it ("return the poetry book to the bookshelf");
+  returned to a person or a room, it is given or brought as before (``knic.language.askedfor.returned_read``).
 """
 
 from __future__ import annotations
@@ -189,4 +191,24 @@ def test_how_who_and_why_said_around(
     vocabulary: Vocabulary, world: str, text: str, frames: list[dict[str, str]]
 ) -> None:
     speaker = "annie" if world == "erl" else "kwame"
+    assert frames_read(vocabulary if world == "erl" else _wing(), text, speaker) == frames
+
+
+@pytest.mark.parametrize(
+    ("world", "text", "frames"),
+    [
+        (WING, "Be so good as to return the poetry book to the bookshelf in my room.", [
+            _one("PLACING", theme="poetry_book", goal="bookshelf")]),
+        (WING, "return the bible to the side table", [_one("PLACING", theme="bible", goal="side_table")]),
+        (WING, "return the bible to Lionel", [_one("BRINGING", theme="bible", beneficiary="lionel")]),
+        (WING, "return the bible to the quiet room", [_one("BRINGING", theme="bible", goal="quiet_room")]),
+        ("erl", "return the apple to the kitchen table", [
+            _one("PLACING", theme="apple", goal="kitchen_table")]),
+        ("erl", "return the mug to the kitchen", [_one("BRINGING", theme="mug", goal="kitchen")]),
+    ],
+)  # fmt: skip
+def test_a_thing_returned_to_furniture_is_put_back(
+    vocabulary: Vocabulary, world: str, text: str, frames: list[dict[str, str]]
+) -> None:
+    speaker = "annie" if world == "erl" else "hortense"
     assert frames_read(vocabulary if world == "erl" else _wing(), text, speaker) == frames
