@@ -20,7 +20,10 @@ tried in the ERL apartment as well:
   (``knic.language.twice``), where it was read as a taking and a bringing;
 * an honorific between a name and its possessive ("Savitri ji's medicine box", "Gopal sahib's stick") is the
   name's (``knic.language.clerical``), and a verb's word after a possessive is a noun ("Gopal's stick", as "my
-  stick"; ``knic.language.chunks``).
+  stick"; ``knic.language.chunks``);
+* a learner's "you please" before the verb ("the tube light is off, you please put it on") is "please", where
+  "you put it on" was read as said of the past; a call centre's "let me put you on hold" asks nothing
+  (``commands.yaml``).
 """
 
 from __future__ import annotations
@@ -279,3 +282,21 @@ def test_said_twice_in_the_erl_apartment(vocabulary: Vocabulary) -> None:
     assert frames_read(vocabulary, "bring the mug, bring it now") == [
         {"frame": "BRINGING", "theme": "mug", "beneficiary": "me"}
     ]
+
+
+def test_you_please_before_the_verb(flat: Vocabulary) -> None:
+    assert frames_read(flat, "Tube light is off, you please put it on", "lakshmi") == [
+        {"frame": "OPERATING", "device": "tube_light", "state": "on"}
+    ]
+    assert frames_read(flat, "you please bring the shawl from the cot", "lakshmi") == [
+        {"frame": "BRINGING", "theme": "shawl", "source": "cot", "beneficiary": "me"}
+    ]
+
+
+def test_on_hold_asks_nothing(flat: Vocabulary, vocabulary: Vocabulary) -> None:
+    for world, text in (
+        (flat, "Let me put you on hold for a second"),
+        (vocabulary, "let me put you on hold"),
+    ):
+        result = understand(text, world, speaker="rohit" if world is flat else "annie")
+        assert not result.accepted and "action" in result.reason
