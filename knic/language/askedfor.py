@@ -20,7 +20,10 @@
   due a bath"), and what two people want to do ("put the jigsaw on the table, Gran and Mabel want to do it
   after lunch"): a reason, left out;
 * someone said by who they are and then by name ("where's that nurse, Fenella?", "the lady, Mabel"): by
-  name.
+  name;
+* a thing that "may remain where it is" (or "can stay there", "is to be left as it is"), said after a
+  request ("I require the bible from the quiet room; the chess set may remain where it is"): asks nothing,
+  left out.
 
 And :func:`returned_read`, on the command's text with the world's names (from
 :func:`knic.language.understanding.understand`): a thing "returned to" a piece of furniture ("be so good as to
@@ -92,6 +95,13 @@ _ROLE_THEN_NAME = re.compile(
     r"|chap|fellow|cleaner|visitor|resident|neighbour|neighbor),\s+(?=[A-Z])"
 )
 
+#: "; the chess set may remain where it is", ", the rest can stay there": said last
+_LEFT_BE = re.compile(
+    r"[;,.]\s*(?:the|my|his|her|their|your|that|this) [a-z' ]+? (?:may|can|should|will|is to|are to) "
+    r"(?:remain|stay|be left|rest)(?: where it is| where they are| there| as it is| as they are)\s*[.!]?\s*$",
+    re.IGNORECASE,
+)
+
 
 def asked_for_read(text: str) -> str:
     """``text`` with the requests of the module docstring said plainly; else ``text``."""
@@ -100,6 +110,7 @@ def asked_for_read(text: str) -> str:
     text = _TAKEN.sub("take me to", text)
     text = _KEPT.sub("where is", text)
     text = _THEY_WANT.sub("", _DUE.sub("", _ASKED_BY.sub("", _ROLE_THEN_NAME.sub("", text))))
+    text = _LEFT_BE.sub("", text)
     text = _OFF_ONTO.sub(lambda m: f"from {m.group('source')} to {m.group('goal')}", text)
     who = _STILL_HERE.search(text)
     if who is None or who.group("who").lower() in _NOT_WHOM:

@@ -18,7 +18,8 @@ apartment as well:
   someone said by who they are and then by name ("that nurse, Fenella") is them; what two people want to do
   after the request ("..., Gran and Mabel want to do it after lunch") is a reason;
 * a thing "returned to" a piece of furniture is put back on it ("return the poetry book to the bookshelf");
-  returned to a person or a room, it is given or brought as before (``knic.language.askedfor.returned_read``).
+  returned to a person or a room, it is given or brought as before (``knic.language.askedfor.returned_read``);
+* a thing that "may remain where it is", said after a request, asks nothing.
 """
 
 from __future__ import annotations
@@ -208,6 +209,24 @@ def test_how_who_and_why_said_around(
     ],
 )  # fmt: skip
 def test_a_thing_returned_to_furniture_is_put_back(
+    vocabulary: Vocabulary, world: str, text: str, frames: list[dict[str, str]]
+) -> None:
+    speaker = "annie" if world == "erl" else "hortense"
+    assert frames_read(vocabulary if world == "erl" else _wing(), text, speaker) == frames
+
+
+@pytest.mark.parametrize(
+    ("world", "text", "frames"),
+    [
+        (WING, "I require the bible from the quiet room; the chess set may remain where it is.", [
+            _one("BRINGING", theme="bible", source="quiet_room", beneficiary="me")]),
+        ("erl", "bring me the apple from the kitchen, the mug can stay where it is", [
+            _one("BRINGING", theme="apple", source="kitchen", beneficiary="me")]),
+        ("erl", "take the mug to the kitchen. the glasses can stay there.", [
+            _one("BRINGING", theme="mug", goal="kitchen")]),
+    ],
+)  # fmt: skip
+def test_what_may_remain_where_it_is_asks_nothing(
     vocabulary: Vocabulary, world: str, text: str, frames: list[dict[str, str]]
 ) -> None:
     speaker = "annie" if world == "erl" else "hortense"
