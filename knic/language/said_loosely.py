@@ -13,6 +13,9 @@ let to a holiday group; a hedging British guest, a Swiss caretaker, a guest who 
 * a bystander's "which?" set off by dashes, answered after it ("bring the wine — which wine? — the red one,
   to the stube", a group talking at once): a comma, so that the answer describes the thing said before it,
   as "bring the wine, the red one, to the stube" does;
+* "it has" for "there is", as German ("es hat"), Swiss German ("es hät") and French ("il y a") speakers
+  say it, opening a sentence before "no", "no more", "still", "some" or an article ("it has no more milk in
+  the fridge"): "there is", a remark that asks nothing, not "it" for a thing never named;
 * "wait on me" (Swiss, German and American English for "wait for me", "wait there on me"): "wait for me";
 * a thing that "needs to go" somewhere, said as the request ("the white mug on the stube table needs to go
   to the sink and the bread basket needs to go back to the kitchen table"): "take" it there. Only a thing
@@ -43,6 +46,11 @@ _SUBJECTLESS_WISH = re.compile(r"([.!?;…]\s*)(need|want)\s+(?!to\b)", re.IGNOR
 _WHICH_ASIDE = re.compile(
     r"\s*(?:—|–|\s-{1,2}\s|--)\s*which\b[^—–?!.]{0,30}\?\s*(?:—|–|\s-{1,2}\s|--)\s*", re.IGNORECASE
 )
+#: "it has no more milk", opening a sentence
+_IT_HAS = re.compile(
+    r"(^|[.!?;,]\s*)it has (?=(?:no|not any|still|some|a|an|any|enough|too much|too many|nothing)\b)",
+    re.IGNORECASE,
+)
 #: "wait on me", "wait there on us": waiting for the speaker
 _WAIT_ON = re.compile(r"\bwait((?:\s+(?:there|here))?)\s+on\s+(me|us)\b", re.IGNORECASE)
 #: "the mug needs to go (back) to the sink" at the start of a clause
@@ -58,6 +66,8 @@ def loosely_said(text: str) -> str:
     if "but" in text or "But" in text:
         text = _BUT_ASKING.sub(r"\1", text)
     text = _CLOSE.sub("", text)
+    if "it has" in text or "It has" in text:
+        text = _IT_HAS.sub(r"\1there is ", text)
     if "which" in text or "Which" in text:
         text = _WHICH_ASIDE.sub(", ", text)
     if "need" in text or "want" in text:

@@ -11,7 +11,8 @@ tried with sentences of other speakers and in the ERL apartment as well:
   said last that asks nothing ("... and that's it really", "... and leave me alone"); "wait on me" for "wait
   for me"; a thing that "needs to go" somewhere is taken there; "need" or "want" opening a sentence after a
   thing said alone ("plasters... need plasters from the bathroom shelf") is the speaker's; a bystander's
-  "— which wine? —" answered after it ("the red one") describes the thing said before it
+  "— which wine? —" answered after it ("the red one") describes the thing said before it; "it has no more
+  milk" (German "es hat", French "il y a") is "there is", a remark
   (``knic.language.said_loosely``).
 """
 
@@ -21,6 +22,7 @@ from functools import lru_cache
 
 import pytest
 
+from knic.language import understand
 from knic.language.said_loosely import loosely_said
 from knic.language.vocabulary import Vocabulary
 
@@ -137,6 +139,15 @@ def test_erl_apartment(vocabulary: Vocabulary, text: str, frames: list[dict[str,
     assert frames_read(vocabulary, text) == frames
 
 
+@pytest.mark.parametrize(
+    "text", ["It has no more milk in the fridge", "it has still gratin in the oven, no?"]
+)
+def test_it_has_for_there_is_asks_nothing(text: str) -> None:
+    result = understand(text, _world(CHALET), speaker="ueli")
+    assert not result.accepted
+    assert "no action" in result.reason
+
+
 def test_student_house_mislaid() -> None:
     assert _read(STUDENTS, "I seem to have mislaid the kettle") == [{"frame": "SEARCHING", "theme": "kettle"}]
 
@@ -147,6 +158,8 @@ def test_student_house_mislaid() -> None:
         ("all the lights but the kitchen one", "all the lights but the kitchen one"),  # "but" inside stays
         ("I need to go to the kitchen", "I need to go to the kitchen"),  # no thing that needs to go
         ("wait on the landing", "wait on the landing"),
+        ("take the bag, it has a strap", "take the bag, there is a strap"),
+        ("the fridge, it has the milk in it", "the fridge, it has the milk in it"),
         ("bring the mug — which one? — the green one", "bring the mug, the green one"),
         ("which mug is on the table?", "which mug is on the table?"),
         ("goggles. need to go to the ski room", "goggles. need to go to the ski room"),
