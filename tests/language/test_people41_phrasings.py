@@ -85,28 +85,82 @@ def test_where_something_is_kept_asks_where_it_is(vocabulary: Vocabulary, wing: 
     ]
 
 
-@pytest.mark.parametrize(
-    ("world", "text", "speaker", "frames"),
-    [
-        (WING, "Bring the pill pot to Lionel, Fenella said to", "delphine", [
-            _one("BRINGING", theme="pill_pot", beneficiary="lionel")]),
-        (WING, "Thermometer to Mabel stat, she's spiking a temp", "fenella", [
-            _one("BRINGING", theme="thermometer", beneficiary="mabel")]),
-        (WING, "Hopper, BP cuff to the quiet room please, Hortense is due her obs", "fenella", [
-            _one("BRINGING", theme="blood_pressure_cuff", goal="quiet_room")]),
-        (WING, "Is Clementine still here? Visiting's finished.", "kwame", [
-            _one("SEARCHING", theme="clementine")]),
-        ("erl", "bring me the glasses, Tracy said to", "annie", [
-            _one("BRINGING", theme="glasses", beneficiary="me")]),
-        ("erl", "bring the apple to Jack, as Tracy said", "annie", [
-            _one("BRINGING", theme="apple", beneficiary="jack")]),
-        ("erl", "bring the mug to the kitchen, Jack is due his tea", "annie", [
-            _one("BRINGING", theme="mug", goal="kitchen")]),
-        ("erl", "is Tracy still here?", "annie", [_one("SEARCHING", theme="tracy")]),
-        ("erl", "glasses to Annie stat", "jack", [_one("BRINGING", theme="glasses", beneficiary="annie")]),
-    ],
-)  # fmt: skip
-def test_who_asked_and_what_is_due_are_left_out(
+#: commands read in the wing and in the ERL apartment, each with its speaker and its frames
+READ = [
+    # who asked for the request, what someone is due, "is ... still here"
+    (WING, "Bring the pill pot to Lionel, Fenella said to", "delphine", [
+        _one("BRINGING", theme="pill_pot", beneficiary="lionel")]),
+    (WING, "Thermometer to Mabel stat, she's spiking a temp", "fenella", [
+        _one("BRINGING", theme="thermometer", beneficiary="mabel")]),
+    (WING, "Hopper, BP cuff to the quiet room please, Hortense is due her obs", "fenella", [
+        _one("BRINGING", theme="blood_pressure_cuff", goal="quiet_room")]),
+    (WING, "Is Clementine still here? Visiting's finished.", "kwame", [
+        _one("SEARCHING", theme="clementine")]),
+    ("erl", "bring me the glasses, Tracy said to", "annie", [
+        _one("BRINGING", theme="glasses", beneficiary="me")]),
+    ("erl", "bring the apple to Jack, as Tracy said", "annie", [
+        _one("BRINGING", theme="apple", beneficiary="jack")]),
+    ("erl", "bring the mug to the kitchen, Jack is due his tea", "annie", [
+        _one("BRINGING", theme="mug", goal="kitchen")]),
+    ("erl", "is Tracy still here?", "annie", [_one("SEARCHING", theme="tracy")]),
+    ("erl", "glasses to Annie stat", "jack", [_one("BRINGING", theme="glasses", beneficiary="annie")]),
+    # off one place and onto another
+    (WING, "Care folder off the filing cabinet and onto the station desk please", "fenella", [
+        _one("BRINGING", theme="care_folder", source="filing_cabinet", goal="station_desk")]),
+    (WING, "Pill pot off the meds trolley, to Wilfred. Shh.", "kwame", [
+        _one("BRINGING", theme="pill_pot", source="medicine_trolley", beneficiary="wilfred")]),
+    (WING, "switch off the reading lamp, to save power", "hortense", [
+        _one("OPERATING", device="reading_lamp", state="off")]),
+    ("erl", "apple off the kitchen table and onto the dining table", "annie", [
+        _one("BRINGING", theme="apple", source="kitchen_table", goal="dining_table")]),
+    # a nurse's words
+    (WING, "Query whether Wilfred is still in the garden room", "fenella", [
+        _one("SEARCHING", theme="wilfred", ground="garden_room")]),
+    (WING, "Do you know if Mabel is in the day lounge", "lionel", [
+        _one("SEARCHING", theme="mabel", ground="day_lounge")]),
+    (WING, "Barrier cream from the meds trolley to the assisted bathroom please", "fenella", [
+        _one("BRINGING", theme="barrier_cream", source="medicine_trolley", goal="assisted_bathroom")]),
+    (WING, "bring the bp cuff to the nurses' station", "delphine", [
+        _one("BRINGING", theme="blood_pressure_cuff", goal="nurses_station")]),
+    ("erl", "query whether Jack is in the kitchen", "annie", [
+        _one("SEARCHING", theme="jack", ground="kitchen")]),
+    ("erl", "do you know if the remote is in the living room", "annie", [
+        _one("SEARCHING", theme="remote", ground="living_room")]),
+    # how, who and why said around the request
+    (WING, "Blinds in the lounge, shut, quietly.", "kwame", [
+        _one("OPERATING", device="lounge_blinds", state="closed")]),
+    (WING, "Where's that nurse, Fenella? I want a word with her", "lionel", [
+        _one("SEARCHING", theme="fenella")]),
+    (WING, "Put the jigsaw on the dining table, Gran and Mabel want to do it after lunch", "clementine", [
+        _one("PLACING", theme="jigsaw", goal="dining_table")]),
+    ("erl", "bedroom blinds down, softly", "annie", [
+        _one("OPERATING", device="bedroom_blinds", state="closed")]),
+    ("erl", "where is the lady, Tracy?", "annie", [_one("SEARCHING", theme="tracy")]),
+    ("erl", "put the apple on the kitchen table, Jack and Tracy want to share it", "annie", [
+        _one("PLACING", theme="apple", goal="kitchen_table")]),
+    # returned to furniture, a person, a room
+    (WING, "Be so good as to return the poetry book to the bookshelf in my room.", "hortense", [
+        _one("PLACING", theme="poetry_book", goal="bookshelf")]),
+    (WING, "return the bible to the side table", "hortense", [
+        _one("PLACING", theme="bible", goal="side_table")]),
+    (WING, "return the bible to Lionel", "hortense", [_one("BRINGING", theme="bible", beneficiary="lionel")]),
+    (WING, "return the bible to the quiet room", "hortense", [
+        _one("BRINGING", theme="bible", goal="quiet_room")]),
+    ("erl", "return the apple to the kitchen table", "annie", [
+        _one("PLACING", theme="apple", goal="kitchen_table")]),
+    ("erl", "return the mug to the kitchen", "annie", [_one("BRINGING", theme="mug", goal="kitchen")]),
+    # what may remain where it is
+    (WING, "I require the bible from the quiet room; the chess set may remain where it is.", "hortense", [
+        _one("BRINGING", theme="bible", source="quiet_room", beneficiary="me")]),
+    ("erl", "bring me the apple from the kitchen, the mug can stay where it is", "annie", [
+        _one("BRINGING", theme="apple", source="kitchen", beneficiary="me")]),
+    ("erl", "take the mug to the kitchen. the glasses can stay there.", "annie", [
+        _one("BRINGING", theme="mug", goal="kitchen")]),
+]  # fmt: skip
+
+
+@pytest.mark.parametrize(("world", "text", "speaker", "frames"), READ)
+def test_read_in_the_wing_and_the_apartment(
     vocabulary: Vocabulary, world: str, text: str, speaker: str, frames: list[dict[str, str]]
 ) -> None:
     assert frames_read(vocabulary if world == "erl" else _wing(), text, speaker) == frames
@@ -114,50 +168,6 @@ def test_who_asked_and_what_is_due_are_left_out(
 
 def test_is_it_here_is_still_no_one(vocabulary: Vocabulary) -> None:
     assert not understand("is it here?", vocabulary, speaker="annie").accepted
-
-
-@pytest.mark.parametrize(
-    ("world", "text", "frames"),
-    [
-        (WING, "Care folder off the filing cabinet and onto the station desk please", [
-            _one("BRINGING", theme="care_folder", source="filing_cabinet", goal="station_desk")]),
-        (WING, "Pill pot off the meds trolley, to Wilfred. Shh.", [
-            _one("BRINGING", theme="pill_pot", source="medicine_trolley", beneficiary="wilfred")]),
-        ("erl", "apple off the kitchen table and onto the dining table", [
-            _one("BRINGING", theme="apple", source="kitchen_table", goal="dining_table")]),
-    ],
-)  # fmt: skip
-def test_a_thing_moved_off_one_place_onto_another(
-    vocabulary: Vocabulary, world: str, text: str, frames: list[dict[str, str]]
-) -> None:
-    speaker = "annie" if world == "erl" else "fenella"
-    assert frames_read(vocabulary if world == "erl" else _wing(), text, speaker) == frames
-
-
-def test_switching_off_for_a_reason_is_no_moving(wing: Vocabulary) -> None:
-    result = understand("switch off the reading lamp, to save power", wing, speaker="hortense")
-    assert [f.to_dict() for f in result.frames] == [_one("OPERATING", device="reading_lamp", state="off")]
-
-
-@pytest.mark.parametrize(
-    ("world", "text", "frames"),
-    [
-        (WING, "Query whether Wilfred is still in the garden room", [
-            _one("SEARCHING", theme="wilfred", ground="garden_room")]),
-        (WING, "Do you know if Mabel is in the day lounge", [
-            _one("SEARCHING", theme="mabel", ground="day_lounge")]),
-        (WING, "Barrier cream from the meds trolley to the assisted bathroom please", [
-            _one("BRINGING", theme="barrier_cream", source="medicine_trolley", goal="assisted_bathroom")]),
-        (WING, "bring the bp cuff to the nurses' station", [
-            _one("BRINGING", theme="blood_pressure_cuff", goal="nurses_station")]),
-        ("erl", "query whether Jack is in the kitchen", [_one("SEARCHING", theme="jack", ground="kitchen")]),
-        ("erl", "do you know if the remote is in the living room", [
-            _one("SEARCHING", theme="remote", ground="living_room")]),
-    ],
-)  # fmt: skip
-def test_a_nurses_words(vocabulary: Vocabulary, world: str, text: str, frames: list[dict[str, str]]) -> None:
-    speaker = "annie" if world == "erl" else "fenella"
-    assert frames_read(vocabulary if world == "erl" else _wing(), text, speaker) == frames
 
 
 @pytest.mark.parametrize(
@@ -172,62 +182,3 @@ def test_my_blind_beside_blinds_named_in_the_plural(
     wing: Vocabulary, text: str, speaker: str, state: str
 ) -> None:
     assert frames_read(wing, text, speaker)[0] == _one("OPERATING", device="hortense_room_blind", state=state)
-
-
-@pytest.mark.parametrize(
-    ("world", "text", "frames"),
-    [
-        (WING, "Blinds in the lounge, shut, quietly.", [
-            _one("OPERATING", device="lounge_blinds", state="closed")]),
-        (WING, "Where's that nurse, Fenella? I want a word with her", [_one("SEARCHING", theme="fenella")]),
-        (WING, "Put the jigsaw on the dining table, Gran and Mabel want to do it after lunch", [
-            _one("PLACING", theme="jigsaw", goal="dining_table")]),
-        ("erl", "bedroom blinds down, softly", [_one("OPERATING", device="bedroom_blinds", state="closed")]),
-        ("erl", "where is the lady, Tracy?", [_one("SEARCHING", theme="tracy")]),
-        ("erl", "put the apple on the kitchen table, Jack and Tracy want to share it", [
-            _one("PLACING", theme="apple", goal="kitchen_table")]),
-    ],
-)  # fmt: skip
-def test_how_who_and_why_said_around(
-    vocabulary: Vocabulary, world: str, text: str, frames: list[dict[str, str]]
-) -> None:
-    speaker = "annie" if world == "erl" else "kwame"
-    assert frames_read(vocabulary if world == "erl" else _wing(), text, speaker) == frames
-
-
-@pytest.mark.parametrize(
-    ("world", "text", "frames"),
-    [
-        (WING, "Be so good as to return the poetry book to the bookshelf in my room.", [
-            _one("PLACING", theme="poetry_book", goal="bookshelf")]),
-        (WING, "return the bible to the side table", [_one("PLACING", theme="bible", goal="side_table")]),
-        (WING, "return the bible to Lionel", [_one("BRINGING", theme="bible", beneficiary="lionel")]),
-        (WING, "return the bible to the quiet room", [_one("BRINGING", theme="bible", goal="quiet_room")]),
-        ("erl", "return the apple to the kitchen table", [
-            _one("PLACING", theme="apple", goal="kitchen_table")]),
-        ("erl", "return the mug to the kitchen", [_one("BRINGING", theme="mug", goal="kitchen")]),
-    ],
-)  # fmt: skip
-def test_a_thing_returned_to_furniture_is_put_back(
-    vocabulary: Vocabulary, world: str, text: str, frames: list[dict[str, str]]
-) -> None:
-    speaker = "annie" if world == "erl" else "hortense"
-    assert frames_read(vocabulary if world == "erl" else _wing(), text, speaker) == frames
-
-
-@pytest.mark.parametrize(
-    ("world", "text", "frames"),
-    [
-        (WING, "I require the bible from the quiet room; the chess set may remain where it is.", [
-            _one("BRINGING", theme="bible", source="quiet_room", beneficiary="me")]),
-        ("erl", "bring me the apple from the kitchen, the mug can stay where it is", [
-            _one("BRINGING", theme="apple", source="kitchen", beneficiary="me")]),
-        ("erl", "take the mug to the kitchen. the glasses can stay there.", [
-            _one("BRINGING", theme="mug", goal="kitchen")]),
-    ],
-)  # fmt: skip
-def test_what_may_remain_where_it_is_asks_nothing(
-    vocabulary: Vocabulary, world: str, text: str, frames: list[dict[str, str]]
-) -> None:
-    speaker = "annie" if world == "erl" else "hortense"
-    assert frames_read(vocabulary if world == "erl" else _wing(), text, speaker) == frames
