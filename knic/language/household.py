@@ -336,8 +336,9 @@ def _doings(chunks: list[Chunk], is_a: Callable[[Chunk, str], bool]) -> list[Chu
 
 
 def _given(said: list[Chunk], is_a: Callable[[Chunk, str], bool]) -> bool:
-    """Whether a person was named and no search was asked for in what was said."""
-    person = any(c.kind == "entity" and is_a(c, "person") for c in said)
+    """Whether a person was named (or said as whose a thing is: "take Savitri's box to her") and no search
+    was asked for in what was said."""
+    person = any(c.kind == "owner" or (c.kind == "entity" and is_a(c, "person")) for c in said)
     return person and not any(c.kind == "verb" and c.frames[:1] == ("SEARCHING",) for c in said)
 
 

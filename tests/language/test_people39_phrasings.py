@@ -23,7 +23,10 @@ tried in the ERL apartment as well:
   stick"; ``knic.language.chunks``);
 * a learner's "you please" before the verb ("the tube light is off, you please put it on") is "please", where
   "you put it on" was read as said of the past; a call centre's "let me put you on hold" asks nothing
-  (``commands.yaml``).
+  (``commands.yaml``);
+* where a person is, said after a thing of theirs is given to them ("take Savitri's medicine box to her,
+  she is in the puja room"), is talk, as after "take the box to Savitri": the puja room is not where to
+  (``knic.language.household``).
 """
 
 from __future__ import annotations
@@ -300,3 +303,12 @@ def test_on_hold_asks_nothing(flat: Vocabulary, vocabulary: Vocabulary) -> None:
     ):
         result = understand(text, world, speaker="rohit" if world is flat else "annie")
         assert not result.accepted and "action" in result.reason
+
+
+def test_where_the_owner_given_a_thing_is_is_talk(flat: Vocabulary, vocabulary: Vocabulary) -> None:
+    assert frames_read(flat, "Take Savitri ji's medicine box to her, she is in the puja room", "kavita") == [
+        {"frame": "BRINGING", "theme": "medicine_box", "beneficiary": "savitri"}
+    ]
+    assert frames_read(vocabulary, "take tracy's glasses to her, she's in the bedroom") == [
+        {"frame": "BRINGING", "theme": "glasses", "beneficiary": "tracy"}
+    ]
