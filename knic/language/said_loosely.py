@@ -28,6 +28,7 @@ Text only, before the words are split into sentences (:func:`knic.language.tidy.
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 
 #: "but" at the start of a sentence or after a break, before a verb that opens a yes/no question
 _BUT_ASKING = re.compile(
@@ -61,19 +62,27 @@ _NEEDS_TO_GO = re.compile(
 )
 
 
+def _taken_there(match: re.Match[str]) -> str:
+    return f"{match.group(1)}take {match.group(2)} {match.group(3) or ''}"
+
+
+#: each turn, after a word it cannot be without (looked for first: most commands have none), and what it
+#: becomes
+_TURNS: tuple[tuple[str, re.Pattern[str], str | Callable[[re.Match[str]], str]], ...] = (
+    ("but", _BUT_ASKING, r"\1"),
+    ("", _CLOSE, ""),
+    ("it has", _IT_HAS, r"\1there is "),
+    ("which", _WHICH_ASIDE, ", "),
+    ("", _SUBJECTLESS_WISH, r"\1I \2 "),
+    (" on ", _WAIT_ON, r"wait\1 for \2"),
+    (" go ", _NEEDS_TO_GO, _taken_there),
+)
+
+
 def loosely_said(text: str) -> str:
     """``text`` with the loose turns above put plainly ("sorry, but is X in Y?" -> "sorry, is X in Y?")."""
-    if "but" in text or "But" in text:
-        text = _BUT_ASKING.sub(r"\1", text)
-    text = _CLOSE.sub("", text)
-    if "it has" in text or "It has" in text:
-        text = _IT_HAS.sub(r"\1there is ", text)
-    if "which" in text or "Which" in text:
-        text = _WHICH_ASIDE.sub(", ", text)
-    if "need" in text or "want" in text:
-        text = _SUBJECTLESS_WISH.sub(r"\1I \2 ", text)
-    if " on " in text:
-        text = _WAIT_ON.sub(r"wait\1 for \2", text)
-    if " go " in text:
-        text = _NEEDS_TO_GO.sub(lambda m: f"{m.group(1)}take {m.group(2)} {m.group(3) or ''}", text)
+    lowered = text.lower()
+    for word, pattern, plain in _TURNS:
+        if word in lowered:
+            text = pattern.sub(plain, text)
     return text
