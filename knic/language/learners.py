@@ -383,7 +383,9 @@ def verb_last_moved(chunks: list[Chunk]) -> list[Chunk]:
                 after += 1
         if after < len(out) and out[after].kind not in ("join", "verb"):
             continue
-        out = [*out[:start], *said, *before, *out[after:]]
+        # how the device is set goes after it, as said in order: "hall light dim to 40 and floor lamp on" is
+        # "dim hall light to 40 and ...", not a level the floor lamp shares
+        out = [*out[:start], said[0], *before, *said[1:], *out[after:]]
     return out
 
 

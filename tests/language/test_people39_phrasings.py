@@ -26,7 +26,9 @@ tried in the ERL apartment as well:
   (``commands.yaml``);
 * where a person is, said after a thing of theirs is given to them ("take Savitri's medicine box to her,
   she is in the puja room"), is talk, as after "take the box to Savitri": the puja room is not where to
-  (``knic.language.household``).
+  (``knic.language.household``);
+* a device said before its verb and level ("hall light dim to 40 & floor lamp on"): the level stays with
+  that device, where the floor lamp was dimmed to 40 too (``knic.language.learners``).
 """
 
 from __future__ import annotations
@@ -311,4 +313,21 @@ def test_where_the_owner_given_a_thing_is_is_talk(flat: Vocabulary, vocabulary: 
     ]
     assert frames_read(vocabulary, "take tracy's glasses to her, she's in the bedroom") == [
         {"frame": "BRINGING", "theme": "glasses", "beneficiary": "tracy"}
+    ]
+
+
+def test_a_level_said_after_a_verb_said_last_stays_with_its_device(
+    flat: Vocabulary, vocabulary: Vocabulary
+) -> None:
+    assert frames_read(flat, "floor lamp on and hall light dim to 40", "tanvi") == [
+        {"frame": "OPERATING", "device": "floor_lamp", "state": "on"},
+        {"frame": "OPERATING", "device": "hall_light", "state": "40"},
+    ]
+    assert frames_read(flat, "hall light dim to 40 & floor lamp on", "tanvi") == [
+        {"frame": "OPERATING", "device": "hall_light", "state": "40"},
+        {"frame": "OPERATING", "device": "floor_lamp", "state": "on"},
+    ]
+    assert frames_read(vocabulary, "close the blinds and the bedroom lights switch on") == [
+        {"frame": "OPERATING", "device": "bedroom_blinds", "state": "closed"},
+        {"frame": "OPERATING", "device": "bedroom_lights", "state": "on"},
     ]
