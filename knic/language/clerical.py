@@ -6,7 +6,8 @@ whose retired railway clerk, commerce student and Hinglish-speaking family asked
 * a request in the passive said with "may", "can", "might" or "shall" ("the glasses may be brought", "the
   lamp may be put on", "the newspaper lying on the diwan may be brought to me"): the verb said first, as
   :mod:`knic.language.procedure` reads "is to be brought";
-* "I wish to be escorted to the puja room", "we would like to be taken to the hall": "escort me to ...";
+* "I wish to be escorted to the puja room", "we would like to be taken to the hall", "the undersigned may
+  kindly be escorted to the hall": "escort me to ...";
 * a thing "is required by me" ("the bath towel on the stool is required by the undersigned"): bring it to me;
 * "the whereabouts of X may kindly be intimated", "kindly intimate the whereabouts of X": where X is;
 * "with immediate effect", "on priority basis", "on an urgent basis", "at the earliest", and "as per my
@@ -54,7 +55,8 @@ _BE_LED = {
     "guided": "guide",
 }
 _WISH_LED = re.compile(
-    r"\b(?:i|we)\s+(?:wish|wishes|would\s+like|want|wants|need|needs|should\s+like)\s+to\s+be\s+"
+    r"\b(?:i|we)\s+(?:(?:wish|wishes|would\s+like|want|wants|need|needs|should\s+like)\s+to|may)\s+"
+    r"(?:kindly\s+)?be\s+"
     rf"(?P<part>{'|'.join(_BE_LED)})\b",
     re.IGNORECASE,
 )

@@ -102,6 +102,10 @@ def test_the_floor_is_a_place_only_where_it_ends_the_place(
             [{"frame": "ACCOMPANYING", "theme": "me", "goal": "puja_room"}],
         ),
         (
+            "The undersigned may kindly be escorted to the hall",
+            [{"frame": "ACCOMPANYING", "theme": "me", "goal": "hall"}],
+        ),
+        (
             "Whereabouts of my walking stick may kindly be intimated",
             [{"frame": "SEARCHING", "theme": "walking_stick"}],
         ),
