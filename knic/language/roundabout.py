@@ -129,7 +129,7 @@ _GET_PUT = re.compile(
     re.I,
 )
 _GO_AND = re.compile(
-    r"\b(?:go|come|run|nip|pop|head)\s+(?:out|over|up|down|in|back|along|round|across)\s+and\s+(?=wait\b|"
+    r"\b(?:go|come|run|nip|pop|head)\s+(?:out|over|up|down|in|along|round|across)\s+and\s+(?=wait\b|"
     r"stay\b|turn\b|switch\b|get\b|grab\b|fetch\b|bring\b|take\b|put\b|open\b|close\b)",
     re.I,
 )

@@ -169,17 +169,17 @@ def test_goal_in_a_domain_whose_types_no_command_names_is_one_line(
 ) -> None:
     domain, problem = tmp_path / "office.pddl", tmp_path / "office_problem.pddl"
     domain.write_text(
-        "(define (domain office) (:requirements :strips :typing) (:types place thing agent)\n"
-        "  (:predicates (at ?a - agent ?p - place) (in ?t - thing ?p - place)))\n"
+        "(define (domain office) (:requirements :strips :typing) (:types bay widget drone)\n"
+        "  (:predicates (at ?a - drone ?p - bay) (in ?t - widget ?p - bay)))\n"
     )
     problem.write_text(
-        "(define (problem p) (:domain office) (:objects lobby - place stapler - thing bot - agent)\n"
+        "(define (problem p) (:domain office) (:objects lobby - bay stapler - widget bot - drone)\n"
         "  (:init (at bot lobby) (in stapler lobby)) (:goal (at bot lobby)))\n"
     )
     code = main(["goal", "--domain", str(domain), "--problem", str(problem), "bring me the stapler"])
     err = capsys.readouterr().err.strip()
     assert code == 4 and len(err.splitlines()) == 1
-    assert str(domain) in err and "declares none" in err and "agent, place, thing" in err
+    assert str(domain) in err and "declares none" in err and "bay, drone, widget" in err
 
 
 def test_goal_in_a_problem_without_annie_is_for_its_first_person(capsys: pytest.CaptureFixture[str]) -> None:
