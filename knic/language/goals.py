@@ -81,7 +81,7 @@ def frames_to_goals(
             made = _sourced(frame, vocabulary, frame.get("theme") or "")
         else:
             made = _frame_goals(frame, vocabulary, speaker, notes if notes is not None else [])
-        for goal in map(lambda made_goal: fitted(made_goal, vocabulary), made):
+        for goal in (fitted(one, vocabulary) for one in made):
             validate_goal(goal, vocabulary)
             if goal not in goals:
                 goals.append(goal)

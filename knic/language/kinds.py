@@ -40,16 +40,21 @@ def aliased(types: Mapping[str, str | None]) -> dict[str, str | None]:
     return out
 
 
+def is_subtype(types: Mapping[str, str | None], type_name: str, ancestor: str) -> bool:
+    """Whether ``type_name`` is ``ancestor`` or derives from it in ``{type: parent type}`` (every type derives
+    from ``object``; a cycle of parents ends the walk)."""
+    current: str | None = type_name
+    for _ in range(len(types) + 1):  # longer than any chain of parents
+        if current is None or current == ancestor:
+            break
+        current = types.get(current)
+    return current == ancestor or ancestor == "object"
+
+
 def _below(types: Mapping[str, str | None], name: str, others: set[str]) -> bool:
     """Whether ``name`` derives from one of ``others``."""
-    seen: set[str] = set()
-    current = types.get(name)
-    while current is not None and current not in seen:
-        if current in others:
-            return True
-        seen.add(current)
-        current = types.get(current)
-    return False
+    parent = types.get(name)
+    return parent is not None and any(is_subtype(types, parent, other) for other in others)
 
 
 class Kinded(Protocol):

@@ -19,7 +19,7 @@ from typing import Any, Protocol
 from core.errors import LanguageError
 from core.inputs import read_yaml
 from knic.language.decimals import decimals_read, digits_apart, plain_typed
-from knic.language.kinds import aliased
+from knic.language.kinds import aliased, is_subtype
 from knic.language.shortnames import contains, english_nearer, own_phrases, short_names
 
 #: Number words for 0..100, enough for percent levels.
@@ -341,7 +341,7 @@ class Vocabulary:
                     symbol,
                     lexicon.names.get(symbol) or (normalize(symbol),),
                     instances,
-                    _is_subtype(types, type_name, "room"),
+                    is_subtype(types, type_name, "room"),
                 )
             terms.extend(Term(p, symbol, type_name, (symbol,)) for p in phrases)
         terms += _synonym_variants(terms, english_synonyms() if synonyms is None else synonyms)
@@ -349,13 +349,13 @@ class Vocabulary:
             Term(phrase, t.symbol, t.type, t.members, given=True)
             for phrase, t in short_names(
                 terms,
-                lambda k: _is_subtype(types, k, "room"),
-                exclude=lambda k: k == "level" or _is_subtype(types, k, "person"),
+                lambda k: is_subtype(types, k, "room"),
+                exclude=lambda k: k == "level" or is_subtype(types, k, "person"),
             )
         ]
         for group in lexicon.groups:
             if group.type is not None:
-                members = tuple(s for s, t in sorted(instances.items()) if _is_subtype(types, t, group.type))
+                members = tuple(s for s, t in sorted(instances.items()) if is_subtype(types, t, group.type))
                 group_type = group.type
             else:
                 members = tuple(m for m in group.members if m in instances)
@@ -467,7 +467,7 @@ class Vocabulary:
         """Whether ``type_name`` is ``ancestor`` or derives from it (remembered: asked 1,200 times a read)."""
         found = self._subtypes.get((type_name, ancestor))
         if found is None:
-            found = self._subtypes[type_name, ancestor] = _is_subtype(self._types, type_name, ancestor)
+            found = self._subtypes[type_name, ancestor] = is_subtype(self._types, type_name, ancestor)
         return found
 
     def terms_of(self, categories: Sequence[str], *, groups: bool = False) -> list[Term]:
@@ -525,15 +525,6 @@ class Vocabulary:
     def words(self) -> set[str]:
         """Every word used by a phrase."""
         return {w for t in self._terms for w in t.phrase.split()}
-
-
-def _is_subtype(types: Mapping[str, str | None], type_name: str, ancestor: str) -> bool:
-    current: str | None = type_name
-    for _ in range(len(types) + 1):  # longer than any chain of parents: a cycle ends here
-        if current is None or current == ancestor:
-            break
-        current = types.get(current)
-    return current == ancestor or ancestor == "object"
 
 
 def _constants(constants: Any) -> dict[str, str]:
