@@ -1,5 +1,5 @@
-"""The kinds of thing commands name (rooms, furniture, items, people, devices) under the names other domains
-give them.
+"""The kinds of thing commands name (rooms, furniture, items, people, devices) and the robot, under the names
+other domains give them.
 
 The reader and the goals ask whether a symbol is a ``room``, an ``item`` or a ``person``: the ERL domain's
 type names. A domain written elsewhere may call its rooms ``location`` and its people ``human``; without this
@@ -20,6 +20,7 @@ ALIASES: dict[str, tuple[str, ...]] = {
     "item": ("thing", "obj", "physobj", "graspable", "pickable", "movable", "portable"),
     "furniture": ("surface", "furnishing"),
     "device": ("appliance", "switchable"),
+    "robot": ("bot", "mobile_robot", "mobile_base"),
 }
 
 

@@ -131,3 +131,14 @@ def test_the_planner_plans_a_command_in_the_errands_domain(errands: Vocabulary, 
     goals = understand(said, errands, speaker="bram").goals
     assert [str(g) for g in goals] == ["(thing_at wrench office)", "(delivered coffee_mug ada)"]
     assert "(put_down pepper wrench office)" in _planned(ERRANDS, goals, tmp_path)
+
+
+def test_a_world_without_people_takes_commands_that_name_no_one() -> None:
+    tidy = FOLDER.parent / "tidy"
+    vocabulary = read_vocabulary(tidy / "domain.pddl", tidy / "problem.pddl")
+    assert [str(g) for g in understand("head to the den please", vocabulary).goals] == ["(bot_in hsr den)"]
+    placed = understand("could you put the stapler on the sideboard", vocabulary).goals
+    assert [str(g) for g in placed] == ["(on_surface stapler sideboard)"]
+    assert [str(g) for g in understand("grab the lunchbox", vocabulary).goals] == ["(gripping hsr lunchbox)"]
+    brought = understand("bring me the stapler", vocabulary)  # "me" is no one here
+    assert not brought.accepted and "not a person of this world" in brought.reason
