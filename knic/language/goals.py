@@ -68,8 +68,11 @@ def frames_to_goals(
         LanguageError: a frame lacks an argument its kind needs, names something of the wrong type, asks
             for a level the domain has no constant for, or the goals contradict each other.
     """
-    said_me = any(SPEAKER in frame.args.values() for frame in frames)  # "go to the den" needs no speaker
-    if said_me and not vocabulary.is_of(speaker, "person"):
+    # a world of no people ("go to the den" in a tidying domain) asks for a speaker only when "me" is said
+    needed = any(SPEAKER in f.args.values() for f in frames) or any(
+        vocabulary.is_subtype(kind, "person") for kind in vocabulary.instances.values()
+    )
+    if needed and not vocabulary.is_of(speaker, "person"):
         raise LanguageError(f"speaker {speaker!r} is not a person of this world")
     goals: list[Fact] = []
     skip = set(waypoints)

@@ -142,3 +142,8 @@ def test_a_world_without_people_takes_commands_that_name_no_one() -> None:
     assert [str(g) for g in understand("grab the lunchbox", vocabulary).goals] == ["(gripping hsr lunchbox)"]
     brought = understand("bring me the stapler", vocabulary)  # "me" is no one here
     assert not brought.accepted and "not a person of this world" in brought.reason
+
+
+def test_a_speaker_the_world_lacks_is_refused_where_the_world_has_people(delivery: Vocabulary) -> None:
+    found = understand("go to the study", delivery, speaker="priya")
+    assert not found.accepted and "speaker 'priya' is not a person of this world" in found.reason
